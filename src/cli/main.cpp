@@ -1,0 +1,2 @@
+// Placeholder entry point until the command modules land.
+int main() { return 0; }

@@ -1,0 +1,24 @@
+// Ball of a vertex (the elements around it) and shell of an edge (the elements around it), found
+// by walking face adjacency from Mesh::vertex_element. Needs Mesh::build_topology().
+#pragma once
+
+#include <vector>
+
+#include "mesh/mesh.hpp"
+
+namespace hocav {
+
+// Fills `ball` with the elements that contain vertex v (empty for an unused vertex). Elements
+// are reached through faces around v, so a vertex pinching two parts of the mesh lists one part.
+template <int D>
+void collect_ball(const Mesh<D>& mesh, Index v, std::vector<Index>& ball);
+
+// Fills `shell` with the elements that contain both a and b (empty when (a, b) is not an edge).
+template <int D>
+void collect_shell(const Mesh<D>& mesh, Index a, Index b, std::vector<Index>& shell);
+
+// The local index of vertex v in element k, or -1.
+template <int D>
+int local_vertex(const Mesh<D>& mesh, Index k, Index v);
+
+}  // namespace hocav

@@ -1,0 +1,164 @@
+#include "mesh/consistency.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "mesh/ball_and_shell.hpp"
+#include "mesh/measure.hpp"
+
+namespace hocav {
+namespace {
+
+std::string id(Index i) { return std::to_string(i + 1); }
+
+template <int D>
+std::array<Index, D> sorted_face(const typename Mesh<D>::Element& element, int face) {
+  std::array<Index, D> out;
+  for (int i = 0; i < D; ++i) out[i] = element[face_vertices<D>(face)[i]];
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+template <int D>
+class Checker {
+ public:
+  Checker(const Mesh<D>& mesh, const ConsistencyOptions& options) : mesh_(mesh), options_(options) {}
+
+  std::vector<std::string> run() {
+    if (!check_elements()) return problems_;
+    check_adjacency();
+    check_vertex_elements();
+    check_facets();
+    if (mesh_.is_p2() || mesh_.edge_count() > 0) check_edges();
+    return problems_;
+  }
+
+ private:
+  bool full() const { return problems_.size() >= options_.max_problems; }
+  void report(std::string problem) {
+    if (!full()) problems_.push_back(std::move(problem));
+  }
+
+  bool check_elements() {
+    for (Index k = 0; k < mesh_.element_count() && !full(); ++k) {
+      auto e = mesh_.element(k);
+      std::sort(e.begin(), e.end());
+      if (std::adjacent_find(e.begin(), e.end()) != e.end()) report("element " + id(k) + " repeats a vertex");
+      else if (options_.require_positive_orientation && !(element_measure(mesh_, k) > 0))
+        report("element " + id(k) + " has non-positive P1 measure " + std::to_string(element_measure(mesh_, k)));
+    }
+    if (!mesh_.has_topology() && mesh_.element_count() > 0) report("topology was not built");
+    return problems_.empty() || mesh_.has_topology();
+  }
+
+  void check_adjacency() {
+    for (Index k = 0; k < mesh_.element_count() && !full(); ++k)
+      for (int face = 0; face <= D; ++face) {
+        Index n = mesh_.neighbor(k, face);
+        if (n == kNoIndex) {
+          if (options_.require_boundary_facets && mesh_.element_face_facet(k, face) == kNoIndex)
+            report("boundary face " + std::to_string(face + 1) + " of element " + id(k) + " has no boundary facet");
+          continue;
+        }
+        if (n < 0 || n >= mesh_.element_count()) {
+          report("element " + id(k) + " has neighbor " + id(n) + " out of range");
+          continue;
+        }
+        int back = -1;
+        for (int g = 0; g <= D; ++g)
+          if (mesh_.neighbor(n, g) == k) back = g;
+        if (back < 0) report("adjacency is not symmetric between elements " + id(k) + " and " + id(n));
+        else if (sorted_face<D>(mesh_.element(k), face) != sorted_face<D>(mesh_.element(n), back))
+          report("elements " + id(k) + " and " + id(n) + " are neighbors but do not share the face");
+        else if (!opposite_orientation(ordered_face(k, face), ordered_face(n, back)))
+          report("elements " + id(k) + " and " + id(n) + " are not consistently oriented across their face");
+      }
+  }
+
+  std::array<Index, D> ordered_face(Index k, int face) const {
+    std::array<Index, D> out;
+    for (int i = 0; i < D; ++i) out[i] = mesh_.element(k)[face_vertices<D>(face)[i]];
+    return out;
+  }
+
+  // Two elements oriented alike see their common face in opposite cyclic orders.
+  static bool opposite_orientation(const std::array<Index, D>& a, const std::array<Index, D>& b) {
+    if constexpr (D == 2) return a[0] == b[1] && a[1] == b[0];  // an edge has a direction, not a cycle
+    for (int shift = 0; shift < D; ++shift) {
+      bool reversed = true;
+      for (int i = 0; i < D; ++i) reversed = reversed && a[i] == b[(shift + D - i) % D];
+      if (reversed) return true;
+    }
+    return false;
+  }
+
+  void check_vertex_elements() {
+    std::vector<bool> used(static_cast<std::size_t>(mesh_.vertex_count()), false);
+    for (const auto& e : mesh_.elements())
+      for (Index v : e) used[v] = true;
+    for (Index v = 0; v < mesh_.vertex_count() && !full(); ++v) {
+      Index k = mesh_.vertex_element(v);
+      if (k == kNoIndex) {
+        if (used[v]) report("vertex " + id(v) + " is used but has no incident element");
+      } else if (k < 0 || k >= mesh_.element_count() || local_vertex(mesh_, k, v) < 0) {
+        report("vertex " + id(v) + " points to element " + id(k) + " which does not contain it");
+      }
+    }
+  }
+
+  void check_facets() {
+    for (Index f = 0; f < mesh_.facet_count() && !full(); ++f) {
+      Index slot = mesh_.facet_element_face(f);
+      if (slot == kNoIndex) {
+        report("boundary facet " + id(f) + " lies on no element face");
+        continue;
+      }
+      Index k = slot / (D + 1);
+      int face = static_cast<int>(slot % (D + 1));
+      auto facet = mesh_.facet(f);
+      std::sort(facet.begin(), facet.end());
+      if (k >= mesh_.element_count() || sorted_face<D>(mesh_.element(k), face) != facet)
+        report("boundary facet " + id(f) + " does not match face " + std::to_string(face + 1) + " of element " + id(k));
+      else if (mesh_.element_face_facet(k, face) != f)
+        report("face " + std::to_string(face + 1) + " of element " + id(k) + " does not lead back to boundary facet " + id(f));
+    }
+  }
+
+  void check_edges() {
+    for (Index k = 0; k < mesh_.element_count() && !full(); ++k)
+      for (int e = 0; e < Mesh<D>::kElementEdges; ++e) {
+        Index a = mesh_.element(k)[edge_vertices<D>(e)[0]], b = mesh_.element(k)[edge_vertices<D>(e)[1]];
+        Index edge = mesh_.element_edge(k, e);
+        if (edge < 0 || edge >= mesh_.edge_count()) {
+          report("element " + id(k) + " has edge id " + id(edge) + " out of range");
+          continue;
+        }
+        // Every element of an edge refers to the one edge record, hence to the one P2 node.
+        const auto& ends = mesh_.edge_vertices(edge);
+        if (ends[0] != std::min(a, b) || ends[1] != std::max(a, b))
+          report("local edge " + std::to_string(e + 1) + " of element " + id(k) + " refers to edge " + id(edge) +
+                 " of other vertices");
+        else if (mesh_.find_edge(a, b) != edge)
+          report("edge (" + id(a) + ", " + id(b) + ") of element " + id(k) + " is not the one the edge table finds");
+      }
+    if (mesh_.is_p2())
+      for (Index edge = 0; edge < mesh_.edge_count() && !full(); ++edge)
+        if (!is_finite(mesh_.edge_node(edge))) report("the P2 node of edge " + id(edge) + " is not finite");
+  }
+
+  const Mesh<D>& mesh_;
+  const ConsistencyOptions& options_;
+  std::vector<std::string> problems_;
+};
+
+}  // namespace
+
+template <int D>
+std::vector<std::string> check_consistency(const Mesh<D>& mesh, const ConsistencyOptions& options) {
+  return Checker<D>(mesh, options).run();
+}
+
+template std::vector<std::string> check_consistency(const Mesh<2>&, const ConsistencyOptions&);
+template std::vector<std::string> check_consistency(const Mesh<3>&, const ConsistencyOptions&);
+
+}  // namespace hocav

@@ -1,0 +1,201 @@
+// Mesh<D> storage, the P2 edge table and the derived topology.
+#include "mesh/mesh.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "base/error.hpp"
+
+namespace hocav {
+
+template <int D>
+Index Mesh<D>::add_vertex(const Point& point, int ref) {
+  Index id = checked_index(vertices_.size(), "vertices");
+  vertices_.push_back(point);
+  vertex_refs_.push_back(ref);
+  return id;
+}
+
+template <int D>
+Index Mesh<D>::add_element(const Element& vertices, int ref) {
+  for (Index v : vertices)
+    if (v < 0 || v >= vertex_count()) throw Error("element " + std::to_string(elements_.size() + 1) + " has vertex " + std::to_string(v + 1) + " out of range");
+  Index id = checked_index(elements_.size(), "elements");
+  elements_.push_back(vertices);
+  element_refs_.push_back(ref);
+  return id;
+}
+
+template <int D>
+Index Mesh<D>::add_facet(const Facet& vertices, int ref) {
+  for (Index v : vertices)
+    if (v < 0 || v >= vertex_count()) throw Error("boundary facet " + std::to_string(facets_.size() + 1) + " has vertex " + std::to_string(v + 1) + " out of range");
+  Index id = checked_index(facets_.size(), "boundary facets");
+  facets_.push_back(vertices);
+  facet_refs_.push_back(ref);
+  return id;
+}
+
+template <int D>
+Index Mesh<D>::add_line(const Line& vertices, int ref) {
+  for (Index v : vertices)
+    if (v < 0 || v >= vertex_count()) throw Error("edge " + std::to_string(lines_.size() + 1) + " has vertex " + std::to_string(v + 1) + " out of range");
+  Index id = checked_index(lines_.size(), "edges");
+  lines_.push_back(vertices);
+  line_refs_.push_back(ref);
+  return id;
+}
+
+template <int D>
+Index Mesh<D>::insert_edge(Index a, Index b) {
+  Index candidate = static_cast<Index>(edge_vertices_.size());
+  Index id = edge_ids_.insert(edge_key(a, b), candidate);
+  if (id == candidate) {
+    checked_index(edge_vertices_.size() + 1, "edges");
+    edge_vertices_.push_back({std::min(a, b), std::max(a, b)});
+  }
+  return id;
+}
+
+template <int D>
+void Mesh<D>::build_edges() {
+  edge_vertices_.clear();
+  edge_ids_.clear();
+  // Euler: a tetrahedral mesh has about 1.2 edges per element, a triangular one about 1.5.
+  edge_ids_.reserve(elements_.size() * (D == 3 ? 13 : 16) / 10 + facets_.size() + lines_.size());
+  edge_vertices_.reserve(elements_.size() * (D == 3 ? 13 : 16) / 10);
+  element_edges_.resize(elements_.size());
+  for (std::size_t k = 0; k < elements_.size(); ++k)
+    for (int e = 0; e < kElementEdges; ++e) {
+      const auto& local = hocav::edge_vertices<D>(e);
+      element_edges_[k][e] = insert_edge(elements_[k][local[0]], elements_[k][local[1]]);
+    }
+  // Boundary and feature edges are element edges in a conforming mesh; inserting them too keeps
+  // the table complete for meshes that carry a facet or line no element touches.
+  for (const Facet& f : facets_)
+    for (int i = 0; i < D; ++i)
+      if (D == 3 || i == 0) insert_edge(f[i], f[(i + 1) % D]);
+  for (const Line& l : lines_) insert_edge(l[0], l[1]);
+}
+
+template <int D>
+void Mesh<D>::make_p2() {
+  if (order_ == 2 && edge_nodes_.size() == edge_vertices_.size()) return;
+  build_edges();
+  edge_nodes_.resize(edge_vertices_.size());
+  for (std::size_t e = 0; e < edge_vertices_.size(); ++e)
+    edge_nodes_[e] = 0.5 * (vertices_[edge_vertices_[e][0]] + vertices_[edge_vertices_[e][1]]);
+  order_ = 2;
+}
+
+template <int D>
+void Mesh<D>::make_p1() {
+  edge_nodes_.clear();
+  edge_nodes_.shrink_to_fit();
+  order_ = 1;
+}
+
+namespace {
+
+// Vertex -> incident elements in compressed rows (offsets, then element ids).
+template <int D>
+void build_vertex_elements(const Mesh<D>& mesh, std::vector<Index>& offsets, std::vector<Index>& incident) {
+  offsets.assign(static_cast<std::size_t>(mesh.vertex_count()) + 1, 0);
+  for (const auto& element : mesh.elements())
+    for (Index v : element) ++offsets[static_cast<std::size_t>(v) + 1];
+  for (std::size_t v = 0; v + 1 < offsets.size(); ++v) offsets[v + 1] += offsets[v];
+  incident.resize(static_cast<std::size_t>(offsets.back()));
+  std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (Index v : mesh.element(k)) incident[static_cast<std::size_t>(fill[v]++)] = k;
+}
+
+template <int D>
+bool element_has_vertices(const typename Mesh<D>::Element& element, const Index* vertices, int count) {
+  for (int i = 0; i < count; ++i)
+    if (std::find(element.begin(), element.end(), vertices[i]) == element.end()) return false;
+  return true;
+}
+
+// The local face of `element` made of exactly these D vertices, or -1.
+template <int D>
+int local_face_of(const typename Mesh<D>::Element& element, const Index* vertices) {
+  for (int face = 0; face <= D; ++face)
+    if (std::find(vertices, vertices + D, element[face]) == vertices + D &&
+        element_has_vertices<D>(element, vertices, D))
+      return face;
+  return -1;
+}
+
+}  // namespace
+
+template <int D>
+void Mesh<D>::build_topology() {
+  std::vector<Index> offsets, incident;
+  build_vertex_elements(*this, offsets, incident);
+
+  adjacency_.assign(elements_.size(), Element{});
+  for (auto& row : adjacency_) row.fill(kNoIndex - 1);  // "not yet searched"
+  for (Index k = 0; k < element_count(); ++k) {
+    for (int face = 0; face <= D; ++face) {
+      if (adjacency_[k][face] != kNoIndex - 1) continue;
+      Index face_vertices[D];
+      for (int i = 0; i < D; ++i) face_vertices[i] = elements_[k][hocav::face_vertices<D>(face)[i]];
+      // Candidates: elements around the face's first vertex that hold the whole face.
+      Index found = kNoIndex;
+      int found_face = -1;
+      Index v = face_vertices[0];
+      for (Index slot = offsets[v]; slot < offsets[v + 1]; ++slot) {
+        Index other = incident[slot];
+        if (other == k) continue;
+        int other_face = local_face_of<D>(elements_[other], face_vertices);
+        if (other_face < 0) continue;
+        if (found != kNoIndex)
+          throw Error("non-manifold mesh: the face of element " + std::to_string(k + 1) + " opposite its vertex " +
+                      std::to_string(face + 1) + " is shared by more than two elements");
+        found = other;
+        found_face = other_face;
+      }
+      adjacency_[k][face] = found;
+      if (found != kNoIndex) {
+        if (adjacency_[found][found_face] != kNoIndex - 1)
+          throw Error("non-manifold mesh: element " + std::to_string(found + 1) + " meets more than one element across one face");
+        adjacency_[found][found_face] = k;
+      }
+    }
+  }
+
+  vertex_element_.assign(vertices_.size(), kNoIndex);
+  for (Index v = 0; v < vertex_count(); ++v)
+    if (offsets[v] < offsets[v + 1]) vertex_element_[v] = incident[offsets[v]];
+
+  facet_element_face_.assign(facets_.size(), kNoIndex);
+  element_face_facets_.clear();
+  element_face_facets_.reserve(facets_.size());
+  for (Index f = 0; f < facet_count(); ++f) {
+    const Facet& facet = facets_[f];
+    Index v = facet[0];
+    for (Index slot = offsets[v]; slot < offsets[v + 1] && facet_element_face_[f] == kNoIndex; ++slot) {
+      int face = local_face_of<D>(elements_[incident[slot]], facet.data());
+      if (face >= 0) facet_element_face_[f] = incident[slot] * (D + 1) + face;
+    }
+    if (facet_element_face_[f] == kNoIndex)
+      throw Error("boundary facet " + std::to_string(f + 1) + " is not a face of any element");
+    element_face_facets_.assign(static_cast<std::uint64_t>(facet_element_face_[f]), f);
+  }
+}
+
+template <int D>
+std::size_t Mesh<D>::memory_bytes() const {
+  auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+  return bytes(vertices_) + bytes(vertex_refs_) + bytes(elements_) + bytes(element_refs_) + bytes(facets_) +
+         bytes(facet_refs_) + bytes(lines_) + bytes(line_refs_) + bytes(corners_) + bytes(ridges_) +
+         bytes(required_vertices_) + bytes(edge_vertices_) + bytes(edge_nodes_) + bytes(element_edges_) +
+         edge_ids_.memory_bytes() + bytes(adjacency_) + bytes(vertex_element_) + bytes(facet_element_face_) +
+         element_face_facets_.memory_bytes();
+}
+
+template class Mesh<2>;
+template class Mesh<3>;
+
+}  // namespace hocav

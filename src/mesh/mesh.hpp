@@ -1,0 +1,142 @@
+// Mesh<D>: the front mesh of hocav — triangles (D = 2) or tetrahedra (D = 3), P1 or P2.
+//
+// Storage is data-oriented (arrays of fixed-size records, 32-bit indices, no per-entity heap
+// objects). P2 mid nodes live on edges: an edge table gives every edge an id, found in O(1) from its
+// two vertices (hash) or from an element's local edge (element_edges), and holds its node.
+// Topology (face adjacency, vertex -> element, boundary facet <-> element face) is derived data,
+// built by build_topology() and kept right by the operators that change the mesh.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "base/index.hpp"
+#include "base/index_hash_map.hpp"
+#include "geom/vec.hpp"
+#include "mesh/simplex.hpp"
+
+namespace hocav {
+
+template <int D>
+class Mesh {
+ public:
+  static constexpr int kElementVertices = D + 1;
+  static constexpr int kFacetVertices = D;
+  static constexpr int kElementEdges = Simplex<D>::kEdges;
+  using Point = Vec<D>;
+  using Element = std::array<Index, D + 1>;
+  using Facet = std::array<Index, D>;
+  using Line = std::array<Index, 2>;
+  using ElementEdges = std::array<Index, Simplex<D>::kEdges>;
+
+  // ---- vertices (element corners; P2 mid nodes are not vertices, they live on edges) ----
+  Index vertex_count() const { return static_cast<Index>(vertices_.size()); }
+  const Point& vertex(Index v) const { return vertices_[v]; }
+  Point& vertex(Index v) { return vertices_[v]; }
+  int vertex_ref(Index v) const { return vertex_refs_[v]; }
+  std::span<const Point> vertices() const { return vertices_; }
+  Index add_vertex(const Point& point, int ref = 0);
+
+  // ---- elements (triangles in 2D, tetrahedra in 3D) ----
+  Index element_count() const { return static_cast<Index>(elements_.size()); }
+  const Element& element(Index k) const { return elements_[k]; }
+  int element_ref(Index k) const { return element_refs_[k]; }
+  std::span<const Element> elements() const { return elements_; }
+  Index add_element(const Element& vertices, int ref = 0);
+
+  // ---- boundary facets (edges in 2D, triangles in 3D) ----
+  Index facet_count() const { return static_cast<Index>(facets_.size()); }
+  const Facet& facet(Index f) const { return facets_[f]; }
+  int facet_ref(Index f) const { return facet_refs_[f]; }
+  std::span<const Facet> facets() const { return facets_; }
+  Index add_facet(const Facet& vertices, int ref = 0);
+
+  // ---- feature lines: the Edges keyword of a 3D mesh (in 2D the Edges are the facets) ----
+  Index line_count() const { return static_cast<Index>(lines_.size()); }
+  const Line& line(Index l) const { return lines_[l]; }
+  int line_ref(Index l) const { return line_refs_[l]; }
+  Index add_line(const Line& vertices, int ref = 0);
+
+  // ---- geometric tags carried through (Corners, RequiredVertices: vertex ids; Ridges: ids of
+  // the entities of the Edges keyword, i.e. facets in 2D and lines in 3D) ----
+  std::vector<Index>& corners() { return corners_; }
+  const std::vector<Index>& corners() const { return corners_; }
+  std::vector<Index>& ridges() { return ridges_; }
+  const std::vector<Index>& ridges() const { return ridges_; }
+  std::vector<Index>& required_vertices() { return required_vertices_; }
+  const std::vector<Index>& required_vertices() const { return required_vertices_; }
+
+  // ---- P2: edges and their mid nodes ----
+  int order() const { return order_; }
+  bool is_p2() const { return order_ == 2; }
+  // Builds the edge table of all element, facet and line edges; nodes start at the straight
+  // midpoints. Makes the mesh P2. Idempotent on an unchanged mesh.
+  void make_p2();
+  // Forgets the P2 nodes (the mesh becomes P1); the edge table stays.
+  void make_p1();
+  // Builds (or rebuilds) the edge table without changing the order (for edge loops on P1 meshes).
+  void build_edges();
+  bool has_edges() const { return !edge_vertices_.empty() || elements_.empty(); }
+  Index edge_count() const { return static_cast<Index>(edge_vertices_.size()); }
+  const Line& edge_vertices(Index e) const { return edge_vertices_[e]; }
+  Index find_edge(Index a, Index b) const { return edge_ids_.find(edge_key(a, b)); }
+  Index element_edge(Index k, int local_edge) const { return element_edges_[k][local_edge]; }
+  const ElementEdges& element_edges(Index k) const { return element_edges_[k]; }
+  const Point& edge_node(Index e) const { return edge_nodes_[e]; }
+  Point& edge_node(Index e) { return edge_nodes_[e]; }
+
+  // ---- topology (derived) ----
+  // Face adjacency, vertex -> element and boundary facet <-> element face. Throws Error on a face
+  // shared by more than two elements or a facet that is no element face.
+  void build_topology();
+  bool has_topology() const { return adjacency_.size() == elements_.size() && !elements_.empty(); }
+  // The element across face `face` of element k, or kNoIndex on the boundary of the domain.
+  Index neighbor(Index k, int face) const { return adjacency_[k][face]; }
+  // An element incident to vertex v (kNoIndex for a vertex no element uses).
+  Index vertex_element(Index v) const { return vertex_element_[v]; }
+  // The element face a facet lies on, encoded as element * (D + 1) + local face.
+  Index facet_element_face(Index f) const { return facet_element_face_[f]; }
+  // The boundary facet on face `face` of element k, or kNoIndex.
+  Index element_face_facet(Index k, int face) const {
+    return element_face_facets_.find(static_cast<std::uint64_t>(k) * (D + 1) + static_cast<std::uint64_t>(face));
+  }
+
+  // Bytes held by the mesh's arrays (capacity, not size), for the memory figures in the docs.
+  std::size_t memory_bytes() const;
+
+  static std::uint64_t edge_key(Index a, Index b) {
+    auto lo = static_cast<std::uint64_t>(a < b ? a : b), hi = static_cast<std::uint64_t>(a < b ? b : a);
+    return (lo << 32) | hi;
+  }
+
+ private:
+  Index insert_edge(Index a, Index b);
+
+  std::vector<Point> vertices_;
+  std::vector<int> vertex_refs_;
+  std::vector<Element> elements_;
+  std::vector<int> element_refs_;
+  std::vector<Facet> facets_;
+  std::vector<int> facet_refs_;
+  std::vector<Line> lines_;
+  std::vector<int> line_refs_;
+  std::vector<Index> corners_, ridges_, required_vertices_;
+
+  int order_ = 1;
+  std::vector<Line> edge_vertices_;
+  std::vector<Point> edge_nodes_;
+  std::vector<ElementEdges> element_edges_;
+  IndexHashMap edge_ids_;
+
+  std::vector<Element> adjacency_;
+  std::vector<Index> vertex_element_;
+  std::vector<Index> facet_element_face_;
+  IndexHashMap element_face_facets_;
+};
+
+extern template class Mesh<2>;
+extern template class Mesh<3>;
+
+}  // namespace hocav

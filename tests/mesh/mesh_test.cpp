@@ -1,0 +1,147 @@
+#include "mesh/mesh.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <set>
+
+#include "base/error.hpp"
+#include "cases/structured.hpp"
+#include "mesh/ball_and_shell.hpp"
+#include "mesh/consistency.hpp"
+#include "mesh/measure.hpp"
+
+namespace hocav {
+namespace {
+
+TEST(Mesh, CubeCountsAndConsistency) {
+  Mesh<3> mesh = generate_cube(3);
+  EXPECT_EQ(mesh.vertex_count(), 64);
+  EXPECT_EQ(mesh.element_count(), 6 * 27);
+  EXPECT_EQ(mesh.facet_count(), 6 * 9 * 2);
+  EXPECT_EQ(mesh.line_count(), 12 * 3);
+  ConsistencyOptions options;
+  options.require_boundary_facets = true;
+  EXPECT_EQ(check_consistency(mesh, options), std::vector<std::string>{});
+  double volume = 0;
+  for (Index k = 0; k < mesh.element_count(); ++k) volume += element_measure(mesh, k);
+  EXPECT_NEAR(volume, 1.0, 1e-12);
+}
+
+TEST(Mesh, SquareCountsAndConsistency) {
+  Mesh<2> mesh = generate_square(4);
+  EXPECT_EQ(mesh.element_count(), 32);
+  EXPECT_EQ(mesh.facet_count(), 16);
+  ConsistencyOptions options;
+  options.require_boundary_facets = true;
+  EXPECT_EQ(check_consistency(mesh, options), std::vector<std::string>{});
+}
+
+TEST(Mesh, EulerCharacteristicOfTheEdgeTable) {
+  Mesh<3> mesh = generate_cube(4);
+  mesh.make_p2();
+  // V - E + F - T = 1 for a ball; count interior faces from the adjacency.
+  Index faces = 0;
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (int f = 0; f < 4; ++f) faces += (mesh.neighbor(k, f) == kNoIndex || mesh.neighbor(k, f) > k) ? 1 : 0;
+  EXPECT_EQ(mesh.vertex_count() - mesh.edge_count() + faces - mesh.element_count(), 1);
+  EXPECT_EQ(check_consistency(mesh), std::vector<std::string>{});
+}
+
+TEST(Mesh, P2NodesAreFoundFromVerticesAndFromLocalEdges) {
+  Mesh<3> mesh = generate_cube(2);
+  mesh.make_p2();
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (int e = 0; e < 6; ++e) {
+      Index a = mesh.element(k)[edge_vertices<3>(e)[0]], b = mesh.element(k)[edge_vertices<3>(e)[1]];
+      Index edge = mesh.element_edge(k, e);
+      EXPECT_EQ(mesh.find_edge(a, b), edge);
+      EXPECT_EQ(mesh.find_edge(b, a), edge);
+      Vec3 mid = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
+      EXPECT_EQ(mesh.edge_node(edge), mid);
+    }
+  EXPECT_EQ(mesh.find_edge(0, mesh.vertex_count() - 1), kNoIndex);  // the cube's long diagonal is no edge at n = 2
+}
+
+TEST(Mesh, BallAndShellAgreeWithBruteForce) {
+  Mesh<3> mesh = generate_cube(3);
+  mesh.build_edges();
+  std::vector<Index> ball, shell;
+  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+    collect_ball(mesh, v, ball);
+    std::set<Index> expected;
+    for (Index k = 0; k < mesh.element_count(); ++k)
+      if (local_vertex(mesh, k, v) >= 0) expected.insert(k);
+    EXPECT_EQ(std::set<Index>(ball.begin(), ball.end()), expected) << "vertex " << v;
+    EXPECT_EQ(ball.size(), expected.size());
+  }
+  for (Index e = 0; e < mesh.edge_count(); ++e) {
+    auto [a, b] = mesh.edge_vertices(e);
+    collect_shell(mesh, a, b, shell);
+    std::set<Index> expected;
+    for (Index k = 0; k < mesh.element_count(); ++k)
+      if (local_vertex(mesh, k, a) >= 0 && local_vertex(mesh, k, b) >= 0) expected.insert(k);
+    EXPECT_EQ(std::set<Index>(shell.begin(), shell.end()), expected);
+  }
+}
+
+TEST(Mesh, CheckerFindsBrokenInvariants) {
+  Mesh<2> mesh;
+  mesh.add_vertex({{0, 0}});
+  mesh.add_vertex({{1, 0}});
+  mesh.add_vertex({{0, 1}});
+  mesh.add_vertex({{1, 1}});
+  mesh.add_element({0, 1, 2});
+  mesh.add_element({1, 2, 3});  // clockwise: inverted and inconsistently oriented with its neighbour
+  mesh.build_topology();
+  auto problems = check_consistency(mesh);
+  ASSERT_FALSE(problems.empty());
+  EXPECT_NE(problems[0].find("element 2"), std::string::npos);
+  ConsistencyOptions no_orientation;
+  no_orientation.require_positive_orientation = false;
+  problems = check_consistency(mesh, no_orientation);
+  ASSERT_EQ(problems.size(), 2u);  // seen from each side of the shared edge
+  for (const auto& problem : problems) EXPECT_NE(problem.find("not consistently oriented"), std::string::npos);
+}
+
+TEST(Mesh, NonManifoldFaceIsAnError) {
+  Mesh<2> mesh;
+  for (Vec2 p : {Vec2{{0, 0}}, Vec2{{1, 0}}, Vec2{{0, 1}}, Vec2{{0, -1}}, Vec2{{-1, 0}}}) mesh.add_vertex(p);
+  mesh.add_element({0, 1, 2});
+  mesh.add_element({1, 0, 3});
+  mesh.add_element({0, 1, 4});  // a third triangle on edge (0, 1)
+  EXPECT_THROW(mesh.build_topology(), Error);
+}
+
+TEST(Mesh, OutOfRangeVertexIsRefused) {
+  Mesh<2> mesh;
+  mesh.add_vertex({{0, 0}});
+  EXPECT_THROW(mesh.add_element({0, 1, 2}), Error);
+  EXPECT_THROW(mesh.add_facet({0, -1}), Error);
+}
+
+TEST(IndexHashMap, MatchesAStandardMapUnderRandomInsertAndErase) {
+  IndexHashMap map;
+  std::map<std::uint64_t, Index> reference;
+  std::mt19937_64 random(7);
+  for (int step = 0; step < 200000; ++step) {
+    std::uint64_t key = random() % 5000;
+    if (random() % 3 == 0) {
+      EXPECT_EQ(map.erase(key), reference.erase(key) == 1);
+    } else {
+      Index value = static_cast<Index>(random() % 1000);
+      Index stored = map.insert(key, value);
+      auto [it, inserted] = reference.emplace(key, value);
+      EXPECT_EQ(stored, it->second);
+    }
+  }
+  EXPECT_EQ(map.size(), reference.size());
+  for (std::uint64_t key = 0; key < 5000; ++key) {
+    auto it = reference.find(key);
+    EXPECT_EQ(map.find(key), it == reference.end() ? kNoIndex : it->second);
+  }
+}
+
+}  // namespace
+}  // namespace hocav
