@@ -1,0 +1,49 @@
+#include "io/mesh_file.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include "base/error.hpp"
+#include "io/gamma_mesh.hpp"
+#include "io/gmsh_msh.hpp"
+#include "io/vtu_file.hpp"
+
+namespace hocav {
+
+std::string file_extension(const std::string& path) {
+  auto slash = path.find_last_of('/');
+  auto dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string extension = path.substr(dot);
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  return extension;
+}
+
+MeshFileContent read_mesh_file(const std::string& path) {
+  std::string extension = file_extension(path);
+  if (extension == ".mesh" || extension == ".meshb") return read_gamma_mesh(path);
+  if (extension == ".msh") return read_gmsh_msh(path);
+  throw Error(path + ": unknown mesh format '" + extension + "' (readable: .mesh .meshb .msh)");
+}
+
+int mesh_file_dimension(const std::string& path) {
+  std::string extension = file_extension(path);
+  if (extension == ".mesh" || extension == ".meshb") return gamma_mesh_dimension(path);
+  if (extension == ".msh") return gmsh_msh_dimension(path);
+  throw Error(path + ": unknown mesh format '" + extension + "' (readable: .mesh .meshb .msh)");
+}
+
+template <int D>
+void write_mesh_file(const std::string& path, const Mesh<D>& mesh, const MeshWriteOptions& options) {
+  std::string extension = file_extension(path);
+  if (extension == ".mesh") return write_gamma_mesh(path, mesh, false, 2);
+  if (extension == ".meshb") return write_gamma_mesh(path, mesh, true, options.gamma_version);
+  if (extension == ".msh") return write_gmsh_msh(path, mesh);
+  if (extension == ".vtu") return write_vtu(path, mesh);
+  throw Error(path + ": unknown mesh format '" + extension + "' (writable: .mesh .meshb .msh .vtu)");
+}
+
+template void write_mesh_file(const std::string&, const Mesh<2>&, const MeshWriteOptions&);
+template void write_mesh_file(const std::string&, const Mesh<3>&, const MeshWriteOptions&);
+
+}  // namespace hocav

@@ -1,0 +1,43 @@
+// Gamma solution files .sol (ASCII) / .solb (binary): SolAtVertices fields, one row per file node.
+// Symmetric matrices are kept in the on-disk order m11 m12 m22 (2D) and m11 m12 m22 m13 m23 m33
+// (3D), i.e. the lower triangle row by row; the metric module converts to its own type.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "base/index.hpp"
+
+namespace hocav {
+
+enum class SolutionKind { kScalar = 1, kVector = 2, kSymmetricMatrix = 3, kMatrix = 4 };
+
+struct SolutionField {
+  SolutionKind kind = SolutionKind::kScalar;
+  int dimension = 3;
+  std::vector<double> values;  // count() rows of components() values
+
+  int components() const;
+  Index count() const;
+};
+
+struct SolutionFileContent {
+  int dimension = 3;
+  Index count = 0;  // the number of rows (file nodes)
+  std::vector<SolutionField> fields;
+};
+
+// Reads a .sol/.solb file. Throws Error naming file, keyword and line/entity on malformed input.
+SolutionFileContent read_solution_file(const std::string& path);
+
+// Writes a .sol/.solb file (all fields must have the same count); temporary name, then rename.
+// Binary version: 0 picks 3 (4 when counts need 64 bits).
+void write_solution_file(const std::string& path, const SolutionFileContent& content, int gamma_version = 0);
+
+// Checks a metric field against the mesh it goes with: a symmetric-matrix field of the mesh's
+// dimension, one row per file node, every matrix finite and positive definite. Throws Error
+// "<file>: SolAtVertices: <what> at vertex N" otherwise. Returns the field.
+const SolutionField& checked_metric_field(const SolutionFileContent& content, const std::string& path,
+                                          int dimension, Index file_node_count);
+
+}  // namespace hocav
