@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs the Debian packages hocav needs to build, test and run (only those missing).
+set -euo pipefail
+
+packages=(
+  cmake g++ make pkg-config
+  libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libgmsh-dev python3-gmsh python3-meshio python3-numpy
+  clang libclang-rt-14-dev
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}" >&2
+  sudo_cmd=()
+  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi

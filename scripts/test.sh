@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Everything from a fresh Debian machine to a full test run: packages, the optimized build and
+# its tests (unit, end-to-end, third-party readers), the sanitizer build and its tests, and a
+# bounded fuzzing run of the file readers.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+fuzz_seconds=${HOCAV_FUZZ_SECONDS:-60}
+
+bash scripts/setup.sh
+
+echo "== release build and tests"
+bash scripts/build.sh release
+ctest --test-dir build/release --output-on-failure -j "$(nproc)"
+
+echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
+bash scripts/build.sh asan
+ctest --test-dir build/asan --output-on-failure -j "$(nproc)" -E '^python\.'
+
+echo "== fuzzing the file readers (${fuzz_seconds}s)"
+bash scripts/build.sh fuzz
+bash scripts/fuzz.sh "$fuzz_seconds"
