@@ -1,0 +1,205 @@
+#include "metric/point_locator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+
+#include "geom/closest_point.hpp"
+#include "mesh/ball_and_shell.hpp"
+
+namespace hocav {
+namespace {
+
+// Barycentrics this far below zero still count as inside: points on faces must not bounce.
+constexpr double kInsideTolerance = 1e-12;
+// A walk longer than this is taken as cycling (possible on non-Delaunay meshes).
+constexpr int kMaxWalkSteps = 20000;
+
+template <int D>
+int most_negative(const Barycentrics<D>& lambda) {
+  return static_cast<int>(std::min_element(lambda.begin(), lambda.end()) - lambda.begin());
+}
+
+}  // namespace
+
+template <int D>
+PointLocator<D>::PointLocator(const Mesh<D>& mesh) : mesh_(mesh) {
+  if (mesh.element_count() == 0) return;
+  Vec<D> low = mesh.vertex(0), high = mesh.vertex(0);
+  for (const auto& p : mesh.vertices())
+    for (int i = 0; i < D; ++i) {
+      low[i] = std::min(low[i], p[i]);
+      high[i] = std::max(high[i], p[i]);
+    }
+  // About two elements per cell: a cold start walks a few steps at most.
+  double box = 1;
+  for (int i = 0; i < D; ++i) box *= std::max(high[i] - low[i], 1e-300);
+  double target_cells = std::max(1.0, mesh.element_count() / 2.0);
+  grid_cell_size_ = std::pow(box / target_cells, 1.0 / D);
+  std::size_t cells = 1;
+  for (int i = 0; i < D; ++i) {
+    grid_cells_[i] = std::clamp(static_cast<int>(std::ceil((high[i] - low[i]) / grid_cell_size_)), 1, 1 << 20);
+    cells *= static_cast<std::size_t>(grid_cells_[i]);
+  }
+  grid_origin_ = low;
+  grid_elements_.assign(cells, kNoIndex);
+
+  auto cell_of = [&](const Vec<D>& x) {
+    std::size_t cell = 0;
+    for (int i = D - 1; i >= 0; --i) {
+      int c = std::clamp(static_cast<int>((x[i] - grid_origin_[i]) / grid_cell_size_), 0, grid_cells_[i] - 1);
+      cell = cell * static_cast<std::size_t>(grid_cells_[i]) + static_cast<std::size_t>(c);
+    }
+    return cell;
+  };
+  std::deque<std::size_t> filled;
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    Vec<D> centroid{};
+    for (Index v : mesh.element(k)) centroid += mesh.vertex(v) * (1.0 / (D + 1));
+    std::size_t cell = cell_of(centroid);
+    if (grid_elements_[cell] == kNoIndex) filled.push_back(cell);
+    grid_elements_[cell] = k;
+  }
+  // Empty cells borrow an element from the nearest filled cell (breadth-first over the grid).
+  while (!filled.empty()) {
+    std::size_t cell = filled.front();
+    filled.pop_front();
+    std::size_t stride = 1;
+    for (int i = 0; i < D; ++i) {
+      auto n = static_cast<std::size_t>(grid_cells_[i]);
+      std::size_t coordinate = (cell / stride) % n;
+      if (coordinate > 0 && grid_elements_[cell - stride] == kNoIndex) {
+        grid_elements_[cell - stride] = grid_elements_[cell];
+        filled.push_back(cell - stride);
+      }
+      if (coordinate + 1 < n && grid_elements_[cell + stride] == kNoIndex) {
+        grid_elements_[cell + stride] = grid_elements_[cell];
+        filled.push_back(cell + stride);
+      }
+      stride *= n;
+    }
+  }
+}
+
+template <int D>
+SimplexPoints<D> PointLocator<D>::element_points(Index k) const {
+  SimplexPoints<D> points;
+  for (int i = 0; i <= D; ++i) points[i] = mesh_.vertex(mesh_.element(k)[i]);
+  return points;
+}
+
+template <int D>
+Index PointLocator<D>::grid_element(const Vec<D>& x) const {
+  std::size_t cell = 0;
+  for (int i = D - 1; i >= 0; --i) {
+    double position = (x[i] - grid_origin_[i]) / grid_cell_size_;
+    int c = std::isfinite(position) ? static_cast<int>(std::clamp(position, 0.0, grid_cells_[i] - 1.0)) : 0;
+    cell = cell * static_cast<std::size_t>(grid_cells_[i]) + static_cast<std::size_t>(c);
+  }
+  return grid_elements_[cell];
+}
+
+template <int D>
+Index PointLocator<D>::walk(const Vec<D>& x, Index start, Barycentrics<D>& lambda, int& exit_face) const {
+  Index k = start, previous = kNoIndex;
+  for (int step = 0; step < kMaxWalkSteps; ++step) {
+    lambda = barycentric_coordinates<D>(element_points(k), x);
+    int face = most_negative<D>(lambda);
+    if (lambda[face] >= -kInsideTolerance) {
+      exit_face = -1;
+      return k;
+    }
+    Index next = mesh_.neighbor(k, face);
+    if (next == previous) {
+      // Going straight back would cycle: take the next most negative face instead.
+      Barycentrics<D> others = lambda;
+      others[face] = std::numeric_limits<double>::infinity();
+      int second = most_negative<D>(others);
+      if (others[second] < -kInsideTolerance) {
+        face = second;
+        next = mesh_.neighbor(k, face);
+      }
+    }
+    if (next == kNoIndex) {
+      exit_face = face;
+      return k;
+    }
+    previous = k;
+    k = next;
+  }
+  return kNoIndex;
+}
+
+template <int D>
+Localization<D> PointLocator<D>::localize(const Vec<D>& x, Index hint) const {
+  Barycentrics<D> lambda;
+  int exit_face = -1;
+  Index grid_start = grid_element(x);
+  Index k = walk(x, hint != kNoIndex ? hint : grid_start, lambda, exit_face);
+  if (k != kNoIndex && exit_face >= 0 && hint != kNoIndex && hint != grid_start) {
+    // A walk from afar may hit a concave boundary: retry from an element near x.
+    k = walk(x, grid_start, lambda, exit_face);
+  }
+  if (k == kNoIndex) return exhaustive_search(x);
+  if (exit_face < 0) return {k, lambda, true};
+  return closest_boundary_element(x, k, exit_face);
+}
+
+template <int D>
+Localization<D> PointLocator<D>::closest_boundary_element(const Vec<D>& x, Index near_element,
+                                                          int near_face) const {
+  std::vector<Index> candidates, ball;
+  for (int i = 0; i < D; ++i) {
+    collect_ball(mesh_, mesh_.element(near_element)[face_vertices<D>(near_face)[i]], ball);
+    candidates.insert(candidates.end(), ball.begin(), ball.end());
+  }
+  return closest_among(x, candidates);
+}
+
+template <int D>
+Localization<D> PointLocator<D>::closest_among(const Vec<D>& x, const std::vector<Index>& candidates) const {
+  Index best = kNoIndex;
+  double best_distance2 = std::numeric_limits<double>::infinity();
+  for (Index k : candidates)
+    for (int face = 0; face <= D; ++face) {
+      if (mesh_.neighbor(k, face) != kNoIndex) continue;
+      std::array<Vec<D>, D> corners;
+      for (int i = 0; i < D; ++i) corners[i] = mesh_.vertex(mesh_.element(k)[face_vertices<D>(face)[i]]);
+      Vec<D> closest{};
+      if constexpr (D == 2) {
+        auto w = closest_on_segment<2>(corners[0], corners[1], x);
+        closest = w[0] * corners[0] + w[1] * corners[1];
+      } else {
+        auto w = closest_on_triangle(corners[0], corners[1], corners[2], x);
+        closest = w[0] * corners[0] + w[1] * corners[1] + w[2] * corners[2];
+      }
+      double distance2 = dot(closest - x, closest - x);
+      if (distance2 < best_distance2) {
+        best_distance2 = distance2;
+        best = k;
+      }
+    }
+  if (best == kNoIndex) return {};
+  return {best, barycentric_coordinates<D>(element_points(best), x), false};
+}
+
+template <int D>
+Localization<D> PointLocator<D>::exhaustive_search(const Vec<D>& x) const {
+  std::vector<Index> boundary_elements;
+  for (Index k = 0; k < mesh_.element_count(); ++k) {
+    auto lambda = barycentric_coordinates<D>(element_points(k), x);
+    if (lambda[most_negative<D>(lambda)] >= -kInsideTolerance) return {k, lambda, true};
+    for (int face = 0; face <= D; ++face)
+      if (mesh_.neighbor(k, face) == kNoIndex) {
+        boundary_elements.push_back(k);
+        break;
+      }
+  }
+  return closest_among(x, boundary_elements);
+}
+
+template class PointLocator<2>;
+template class PointLocator<3>;
+
+}  // namespace hocav

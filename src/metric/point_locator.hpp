@@ -1,0 +1,60 @@
+// Localization of points in the back mesh (math.md §2, step 1): the back element containing a
+// point and the point's barycentric coordinates there.
+//
+// A walk from a hint element moves across the face with the most negative barycentric coordinate
+// until all are non-negative. Cold starts (no hint) begin at an element from a uniform grid over
+// the bounding box. Points outside the back mesh (curved boundary nodes lie up to ~h²/8 outside a
+// convex P1 boundary) get the documented closest-element rule: the boundary element, among those
+// around the boundary face where the walk left the mesh, whose boundary face is closest to the
+// point (the last-resort exhaustive search takes the closest over all boundary faces); its barycentrics are returned unclamped, so the log-metric is extended affinely (and stays
+// differentiable) just outside the mesh.
+#pragma once
+
+#include <vector>
+
+#include "geom/barycentric.hpp"
+#include "mesh/mesh.hpp"
+
+namespace hocav {
+
+template <int D>
+struct Localization {
+  Index element = kNoIndex;
+  Barycentrics<D> barycentrics{};  // of the point in `element`; some negative when !inside
+  bool inside = true;
+};
+
+template <int D>
+class PointLocator {
+ public:
+  // The mesh must be P1-valid (positive elements), have its topology, and outlive the locator.
+  explicit PointLocator(const Mesh<D>& mesh);
+
+  // Thread-safe: reads only. `hint` is an element near x (e.g. where a nearby point was found).
+  Localization<D> localize(const Vec<D>& x, Index hint = kNoIndex) const;
+
+  const Mesh<D>& mesh() const { return mesh_; }
+  SimplexPoints<D> element_points(Index k) const;
+
+ private:
+  Index grid_element(const Vec<D>& x) const;
+  // Walks from `start`; returns the element reached and, when the walk left the mesh, the
+  // boundary face it left through (else -1).
+  Index walk(const Vec<D>& x, Index start, Barycentrics<D>& lambda, int& exit_face) const;
+  Localization<D> closest_boundary_element(const Vec<D>& x, Index near_element, int near_face) const;
+  // The element whose boundary face is closest to x, among `candidates`.
+  Localization<D> closest_among(const Vec<D>& x, const std::vector<Index>& candidates) const;
+  // Every element, then every boundary face: the last resort when a walk cycles.
+  Localization<D> exhaustive_search(const Vec<D>& x) const;
+
+  const Mesh<D>& mesh_;
+  Vec<D> grid_origin_{};
+  double grid_cell_size_ = 1;
+  std::array<int, D> grid_cells_{};
+  std::vector<Index> grid_elements_;
+};
+
+extern template class PointLocator<2>;
+extern template class PointLocator<3>;
+
+}  // namespace hocav
