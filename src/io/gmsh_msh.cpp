@@ -1,0 +1,560 @@
+// Gmsh MSH 4.1 ASCII: reading into RawMesh (then the shared assembly) and writing with one entity
+// per ref, so that gmsh and meshio see refs as physical tags. Node orders: shared design formats.md.
+#include "io/gmsh_msh.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <climits>
+#include <cstdint>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <numeric>
+#include <string_view>
+#include <type_traits>
+
+#include "base/error.hpp"
+#include "base/index_hash_map.hpp"
+#include "io/atomic_output.hpp"
+#include "io/mesh_assembly.hpp"
+#include "io/text_scanner.hpp"
+
+namespace hocav {
+namespace {
+
+constexpr std::string_view kConvertHint = "convert with: gmsh IN.msh -0 -format msh41 -save_all -o OUT.msh";
+constexpr std::string_view kSupportedTypes = "15 point, 1 line2, 8 line3, 2 tri3, 9 tri6, 4 tet4, 11 tet10";
+
+struct ElementType {
+  int gmsh_type;
+  int dimension;
+  int order;
+  int node_count;
+  std::string_view name;
+  // The hocav local position of the node at each Gmsh position. Only tet10 differs from hocav's
+  // order (Gmsh lists m23 before m13); a swap is its own inverse, so writing uses the same table.
+  std::array<int, 10> hocav_position;
+};
+
+constexpr std::array<int, 10> kSameOrder{0, 1, 2, 3, 4, 5, 6, 7, 8, 9};
+constexpr std::array<ElementType, 7> kElementTypes{{
+    {15, 0, 1, 1, "point", kSameOrder},
+    {1, 1, 1, 2, "line2", kSameOrder},
+    {8, 1, 2, 3, "line3", kSameOrder},
+    {2, 2, 1, 3, "tri3", kSameOrder},
+    {9, 2, 2, 6, "tri6", kSameOrder},
+    {4, 3, 1, 4, "tet4", kSameOrder},
+    {11, 3, 2, 10, "tet10", {0, 1, 2, 3, 4, 5, 6, 7, 9, 8}},
+}};
+
+const ElementType* find_element_type(std::int64_t gmsh_type) {
+  for (const ElementType& type : kElementTypes)
+    if (type.gmsh_type == gmsh_type) return &type;
+  return nullptr;
+}
+
+const ElementType& element_type(int dimension, int order) {
+  for (const ElementType& type : kElementTypes)
+    if (type.dimension == dimension && type.order == order) return type;
+  throw Error("no Gmsh element type of dimension " + std::to_string(dimension));
+}
+
+// Shape names of the Gmsh element types hocav refuses, so the message says what was found.
+std::string_view unsupported_type_name(std::int64_t gmsh_type) {
+  switch (gmsh_type) {
+    case 3: case 10: case 16: return "quadrangle";
+    case 5: case 12: case 17: case 92: case 93: return "hexahedron";
+    case 6: case 13: case 18: case 90: case 91: return "prism";
+    case 7: case 14: case 19: case 118: case 119: return "pyramid";
+    case 20: case 21: case 22: case 23: case 24: case 25: return "triangle of order 3 or more";
+    case 26: case 27: case 28: return "line of order 3 or more";
+    case 29: case 30: case 31: return "tetrahedron of order 3 or more";
+    default: return "unknown";
+  }
+}
+
+// Everything hocav keeps from a .msh file: nodes in file order, and per dimension one list of
+// elements of a single type, with node file ids in hocav's local order and their refs.
+struct ElementList {
+  const ElementType* type = nullptr;
+  std::vector<Index> nodes;
+  std::vector<int> refs;
+};
+
+struct MshContent {
+  std::vector<Vec3> nodes;
+  std::array<ElementList, 4> lists;  // by dimension: points, lines, triangles, tetrahedra
+  std::size_t first_nonzero_z_line = 0;
+  double first_nonzero_z = 0;
+};
+
+// Reserving from a count read in the file: never more than this before the data proves it.
+constexpr std::int64_t kMaxUncheckedReserve = 1 << 20;
+
+template <typename T>
+void bounded_reserve(std::vector<T>& vector, std::int64_t count) {
+  vector.reserve(vector.size() + static_cast<std::size_t>(std::min(count, kMaxUncheckedReserve)));
+}
+
+class MshReader {
+ public:
+  explicit MshReader(const std::string& path) : in_(path) {}
+
+  MshContent read() {
+    if (in_.next_token() != "$MeshFormat") in_.fail("$MeshFormat", "not a Gmsh .msh file (it must start with $MeshFormat)");
+    read_format();
+    bool have_nodes = false, have_elements = false;
+    for (std::string_view token = in_.next_token(); !token.empty(); token = in_.next_token()) {
+      std::string section(token);
+      if (section == "$Entities") {
+        if (have_elements) in_.fail(section, "comes after $Elements");
+        read_entities();
+      } else if (section == "$Nodes") {
+        if (have_nodes) in_.fail(section, "a second $Nodes section");
+        read_nodes();
+        have_nodes = true;
+      } else if (section == "$Elements") {
+        if (!have_nodes) in_.fail(section, "comes before $Nodes");
+        if (have_elements) in_.fail(section, "a second $Elements section");
+        read_elements();
+        have_elements = true;
+      } else if (section == "$PhysicalNames") {
+        skip_section(section);  // names are not kept; the physical tags themselves are in $Entities
+      } else if (section.size() > 1 && section[0] == '$' && section.compare(0, 4, "$End") != 0) {
+        std::cerr << in_.path() << ": warning: skipping section " << section << " (not used by hocav), line " << in_.line()
+                  << "\n";
+        skip_section(section);
+      } else {
+        in_.fail("file", "expected a section such as $Nodes, found '" + std::string(token.substr(0, 40)) + "'");
+      }
+    }
+    if (!have_nodes) in_.fail("file", "no $Nodes section");
+    if (!have_elements) in_.fail("file", "no $Elements section");
+    return std::move(content_);
+  }
+
+ private:
+  void expect(std::string_view expected, std::string_view section) {
+    std::string_view token = in_.next_token();
+    if (token.empty()) in_.fail(section, "unexpected end of file, expected " + std::string(expected));
+    if (token != expected)
+      in_.fail(section, "expected " + std::string(expected) + ", found '" + std::string(token.substr(0, 40)) + "'");
+  }
+
+  void skip_section(const std::string& section) {
+    std::string end = "$End" + section.substr(1);
+    for (std::string_view token = in_.next_token(); token != end; token = in_.next_token())
+      if (token.empty()) in_.fail(section, "no " + end + " (truncated file?)");
+  }
+
+  std::int64_t read_count(std::string_view section) {
+    std::int64_t count = in_.next_integer(section);
+    if (count < 0) in_.fail(section, "negative count " + std::to_string(count));
+    return count;
+  }
+
+  int read_int(std::string_view section) {
+    std::int64_t value = in_.next_integer(section);
+    if (value < INT_MIN || value > INT_MAX) in_.fail(section, "integer out of range " + std::to_string(value));
+    return static_cast<int>(value);
+  }
+
+  void read_format() {
+    const std::string_view section = "$MeshFormat";
+    std::string version(in_.next_token());
+    if (version != "4.1")
+      in_.fail(section, "version '" + version.substr(0, 20) + "' is not supported: hocav reads MSH 4.1 ASCII; " +
+                            std::string(kConvertHint));
+    std::int64_t file_type = in_.next_integer(section);
+    if (file_type == 1)
+      in_.fail(section, "binary .msh is not supported: hocav reads MSH 4.1 ASCII; " + std::string(kConvertHint) +
+                            " (without -bin)");
+    if (file_type != 0) in_.fail(section, "file type " + std::to_string(file_type) + " is neither 0 (ASCII) nor 1 (binary)");
+    in_.next_integer(section);  // data size: meaningful for binary files only
+    expect("$EndMeshFormat", section);
+  }
+
+  // Entity (dimension, tag) -> its first physical tag, which becomes the ref of its elements.
+  void read_entities() {
+    const std::string_view section = "$Entities";
+    std::array<std::int64_t, 4> counts{};
+    for (auto& count : counts) count = read_count(section);
+    for (int dimension = 0; dimension < 4; ++dimension)
+      for (std::int64_t i = 0; i < counts[dimension]; ++i) {
+        int tag = read_int(section);
+        for (int r = 0; r < (dimension == 0 ? 3 : 6); ++r) in_.next_real(section);  // position or bounding box
+        std::int64_t physical_count = read_count(section);
+        for (std::int64_t p = 0; p < physical_count; ++p) {
+          int physical = read_int(section);
+          if (p == 0) physical_tags_[{dimension, tag}] = physical;
+        }
+        if (dimension > 0)
+          for (std::int64_t b = read_count(section); b > 0; --b) in_.next_integer(section);  // bounding entities
+      }
+    expect("$EndEntities", section);
+  }
+
+  void read_nodes() {
+    const std::string_view section = "$Nodes";
+    std::int64_t block_count = read_count(section), node_count = read_count(section);
+    in_.next_integer(section);  // min and max node tags: the tags themselves are checked
+    in_.next_integer(section);
+    bounded_reserve(content_.nodes, node_count);
+    node_ids_.reserve(static_cast<std::size_t>(std::min(node_count, kMaxUncheckedReserve)));
+    for (std::int64_t block = 0; block < block_count; ++block) {
+      int entity_dimension = read_int(section);
+      if (entity_dimension < 0 || entity_dimension > 3) in_.fail(section, "entity dimension " + std::to_string(entity_dimension));
+      read_int(section);  // entity tag: nodes are not classified in hocav
+      int parametric = read_int(section);
+      if (parametric != 0 && parametric != 1) in_.fail(section, "parametric flag must be 0 or 1");
+      std::int64_t count = read_count(section);
+      std::size_t first = content_.nodes.size();
+      for (std::int64_t i = 0; i < count; ++i) {
+        std::int64_t tag = in_.next_integer(section);
+        if (tag < 1) in_.fail(section, "node tag " + std::to_string(tag) + " is not positive");
+        Index id = checked_index(first + static_cast<std::size_t>(i), "nodes");
+        if (node_ids_.insert(static_cast<std::uint64_t>(tag), id) != id)
+          in_.fail(section, "node tag " + std::to_string(tag) + " is defined twice");
+      }
+      for (std::int64_t i = 0; i < count; ++i) {
+        Vec3 point;
+        for (int c = 0; c < 3; ++c) point[c] = in_.next_real(section);
+        if (point[2] != 0 && content_.first_nonzero_z_line == 0) {
+          content_.first_nonzero_z_line = in_.line();
+          content_.first_nonzero_z = point[2];
+        }
+        for (int u = 0; u < parametric * entity_dimension; ++u) in_.next_real(section);
+        content_.nodes.push_back(point);
+      }
+    }
+    if (static_cast<std::int64_t>(content_.nodes.size()) != node_count)
+      in_.fail(section, "the header announces " + std::to_string(node_count) + " nodes, the blocks hold " +
+                            std::to_string(content_.nodes.size()));
+    expect("$EndNodes", section);
+  }
+
+  void read_elements() {
+    const std::string_view section = "$Elements";
+    std::int64_t block_count = read_count(section), element_count = read_count(section), read_so_far = 0;
+    in_.next_integer(section);  // min and max element tags: hocav renumbers elements
+    in_.next_integer(section);
+    for (std::int64_t block = 0; block < block_count; ++block) {
+      int entity_dimension = read_int(section), entity_tag = read_int(section);
+      std::int64_t gmsh_type = in_.next_integer(section);
+      const ElementType* type = find_element_type(gmsh_type);
+      if (type == nullptr)
+        in_.fail(section, "element type " + std::to_string(gmsh_type) + " (" + std::string(unsupported_type_name(gmsh_type)) +
+                              ") is not supported; hocav reads " + std::string(kSupportedTypes));
+      if (type->dimension != entity_dimension)
+        in_.fail(section, std::string(type->name) + " elements in a block of dimension " + std::to_string(entity_dimension));
+      ElementList& list = content_.lists[type->dimension];
+      if (list.type != nullptr && list.type != type)
+        in_.fail(section, "mixes " + std::string(list.type->name) + " and " + std::string(type->name) +
+                              " elements (P1 and P2 elements of one dimension cannot be mixed)");
+      list.type = type;
+      int ref = entity_tag;
+      if (auto physical = physical_tags_.find({entity_dimension, entity_tag}); physical != physical_tags_.end())
+        ref = physical->second;
+      std::int64_t count = read_count(section);
+      bounded_reserve(list.nodes, count * type->node_count);
+      bounded_reserve(list.refs, count);
+      for (std::int64_t i = 0; i < count; ++i) {
+        in_.next_integer(section);  // element tag
+        std::size_t first = list.nodes.size();
+        list.nodes.resize(first + static_cast<std::size_t>(type->node_count));
+        for (int position = 0; position < type->node_count; ++position)
+          list.nodes[first + static_cast<std::size_t>(type->hocav_position[position])] = node_id(section);
+        list.refs.push_back(ref);
+      }
+      read_so_far += count;
+    }
+    if (read_so_far != element_count)
+      in_.fail(section, "the header announces " + std::to_string(element_count) + " elements, the blocks hold " +
+                            std::to_string(read_so_far));
+    expect("$EndElements", section);
+  }
+
+  Index node_id(std::string_view section) {
+    std::int64_t tag = in_.next_integer(section);
+    Index id = tag < 1 ? kNoIndex : node_ids_.find(static_cast<std::uint64_t>(tag));
+    if (id == kNoIndex) in_.fail(section, "node tag " + std::to_string(tag) + " is not defined");
+    return id;
+  }
+
+  TextScanner in_;
+  MshContent content_;
+  IndexHashMap node_ids_;  // node tag -> position in the file
+  std::map<std::pair<int, int>, int> physical_tags_;
+};
+
+// 3 when there are tetrahedra; 2 for triangles in the plane z = 0; anything else is refused.
+int mesh_dimension(const MshContent& content, const std::string& path) {
+  if (content.lists[3].type != nullptr) return 3;
+  if (content.lists[2].type == nullptr) throw Error(path + ": $Elements: no triangles or tetrahedra");
+  if (content.first_nonzero_z_line != 0)
+    throw Error(path + ": $Nodes: triangles with z = " + std::to_string(content.first_nonzero_z) +
+                " make a surface mesh, which hocav does not support (it reads planar triangle meshes with z = 0 and "
+                "tetrahedral meshes), line " + std::to_string(content.first_nonzero_z_line));
+  return 2;
+}
+
+std::string list_keyword(const ElementList& list) {
+  return list.type == nullptr ? "$Elements" : "$Elements (" + std::string(list.type->name) + ")";
+}
+
+template <int D>
+MeshFileContent assemble(MshContent&& content, const std::string& path) {
+  RawMesh<D> raw;
+  if constexpr (D == 3) {
+    raw.nodes = std::move(content.nodes);
+  } else {
+    raw.nodes.reserve(content.nodes.size());
+    for (const Vec3& node : content.nodes) raw.nodes.push_back({{node[0], node[1]}});
+  }
+  raw.node_refs.assign(raw.nodes.size(), 0);
+  ElementList &elements = content.lists[D], &facets = content.lists[D - 1], &points = content.lists[0];
+  raw.order = elements.type->order;
+  raw.element_keyword = list_keyword(elements);
+  raw.element_nodes = std::move(elements.nodes);
+  raw.element_refs = std::move(elements.refs);
+  auto order_of = [&](const ElementList& list) {
+    int order = list.type == nullptr ? 1 : list.type->order;
+    if (order > raw.order)
+      throw Error(path + ": " + list_keyword(list) + ": P2 elements of lower dimension in a P1 mesh of " +
+                  std::string(elements.type->name));
+    return order;
+  };
+  raw.facet_order = order_of(facets);
+  raw.facet_keyword = list_keyword(facets);
+  raw.facet_nodes = std::move(facets.nodes);
+  raw.facet_refs = std::move(facets.refs);
+  if constexpr (D == 3) {
+    ElementList& lines = content.lists[1];
+    raw.line_order = order_of(lines);
+    raw.line_keyword = list_keyword(lines);
+    raw.line_nodes = std::move(lines.nodes);
+    raw.line_refs = std::move(lines.refs);
+  }
+  // Points carry their ref to their node, so a corner's vertex ref survives a round trip.
+  for (std::size_t i = 0; i < points.nodes.size(); ++i) raw.node_refs[points.nodes[i]] = points.refs[i];
+  raw.corners = std::move(points.nodes);
+  return assemble_mesh(std::move(raw), path);
+}
+
+// Buffered text output: numbers through std::to_chars (shortest form that reads back exactly).
+class TextWriter {
+ public:
+  explicit TextWriter(std::ostream& out) : out_(out) { buffer_.reserve(kFlushSize + 256); }
+
+  TextWriter& operator<<(std::string_view text) {
+    buffer_ += text;
+    return flush_if_full();
+  }
+  TextWriter& operator<<(char c) {
+    buffer_ += c;
+    return flush_if_full();
+  }
+  template <typename Number>
+    requires std::is_arithmetic_v<Number>
+  TextWriter& operator<<(Number value) {
+    char digits[32];
+    auto result = std::to_chars(digits, digits + sizeof digits, value);
+    buffer_.append(digits, result.ptr);
+    return flush_if_full();
+  }
+  void flush() {
+    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    buffer_.clear();
+  }
+
+ private:
+  static constexpr std::size_t kFlushSize = 1 << 16;
+  TextWriter& flush_if_full() {
+    if (buffer_.size() >= kFlushSize) flush();
+    return *this;
+  }
+  std::ostream& out_;
+  std::string buffer_;
+};
+
+// One kind of entity written (points, lines, facets or elements), grouped by ref: Gmsh entity
+// i + 1 holds the entities by_ref[entity_begin[i] .. entity_begin[i + 1]), all of one ref, in
+// mesh order.
+struct WrittenGroup {
+  const ElementType* type = nullptr;
+  // The node ids of an entity in hocav's local order (file numbering: vertices, then edge nodes).
+  std::function<void(Index, Index*)> nodes;
+  std::vector<int> refs;
+  std::vector<Index> by_ref;
+  std::vector<std::size_t> entity_begin;
+
+  WrittenGroup() = default;
+  WrittenGroup(const ElementType& element_type, Index count, const std::function<int(Index)>& ref,
+               std::function<void(Index, Index*)> node_ids)
+      : type(&element_type), nodes(std::move(node_ids)), refs(static_cast<std::size_t>(count)) {
+    for (Index i = 0; i < count; ++i) refs[i] = ref(i);
+    by_ref.resize(refs.size());
+    std::iota(by_ref.begin(), by_ref.end(), 0);
+    std::stable_sort(by_ref.begin(), by_ref.end(), [&](Index a, Index b) { return refs[a] < refs[b]; });
+    for (std::size_t i = 0; i < by_ref.size(); ++i)
+      if (i == 0 || refs[by_ref[i]] != refs[by_ref[i - 1]]) entity_begin.push_back(i);
+    entity_begin.push_back(by_ref.size());
+  }
+
+  std::size_t entity_count() const { return entity_begin.empty() ? 0 : entity_begin.size() - 1; }
+  int entity_ref(std::size_t entity) const { return refs[by_ref[entity_begin[entity]]]; }
+};
+
+// The groups by dimension (points, lines, facets, elements); absent ones have no type.
+template <int D>
+std::array<WrittenGroup, 4> written_groups(const Mesh<D>& mesh) {
+  const int order = mesh.order();
+  const Index vertex_count = mesh.vertex_count();
+  auto edge_node = [&mesh, vertex_count](Index a, Index b) { return vertex_count + mesh.find_edge(a, b); };
+  std::array<WrittenGroup, 4> groups;
+  // Corners have no ref of their own: their vertex ref stands in.
+  groups[0] = WrittenGroup(
+      element_type(0, 1), static_cast<Index>(mesh.corners().size()), [&mesh](Index i) { return mesh.vertex_ref(mesh.corners()[i]); },
+      [&mesh](Index i, Index* nodes) { nodes[0] = mesh.corners()[i]; });
+  groups[D] = WrittenGroup(element_type(D, order), mesh.element_count(), [&mesh](Index k) { return mesh.element_ref(k); },
+                           [&mesh, order, vertex_count](Index k, Index* nodes) {
+                             std::copy(mesh.element(k).begin(), mesh.element(k).end(), nodes);
+                             if (order == 2)
+                               for (int e = 0; e < Simplex<D>::kEdges; ++e) nodes[D + 1 + e] = vertex_count + mesh.element_edge(k, e);
+                           });
+  groups[D - 1] = WrittenGroup(element_type(D - 1, order), mesh.facet_count(), [&mesh](Index f) { return mesh.facet_ref(f); },
+                               [&mesh, order, edge_node](Index f, Index* nodes) {
+                                 const auto& facet = mesh.facet(f);
+                                 std::copy(facet.begin(), facet.end(), nodes);
+                                 if (order == 2)  // a facet's edges in triangle order; a segment has (0, 1)
+                                   for (int e = 0; e < (D == 3 ? 3 : 1); ++e)
+                                     nodes[D + e] = edge_node(facet[edge_vertices<2>(e)[0]], facet[edge_vertices<2>(e)[1]]);
+                               });
+  if constexpr (D == 3)
+    groups[1] = WrittenGroup(element_type(1, order), mesh.line_count(), [&mesh](Index l) { return mesh.line_ref(l); },
+                             [&mesh, order, edge_node](Index l, Index* nodes) {
+                               nodes[0] = mesh.line(l)[0];
+                               nodes[1] = mesh.line(l)[1];
+                               if (order == 2) nodes[2] = edge_node(nodes[0], nodes[1]);
+                             });
+  return groups;
+}
+
+template <int D>
+void write_point(TextWriter& out, const Vec<D>& point) {
+  out << point[0] << ' ' << point[1] << ' ';
+  if constexpr (D == 3)
+    out << point[2];
+  else
+    out << '0';
+}
+
+// Entity i + 1 of each dimension has physical tag = its ref. Every curve, surface and volume gets
+// the mesh's bounding box: a valid bound, and neither gmsh nor meshio uses it for a mesh.
+template <int D>
+void write_entities(TextWriter& out, const Mesh<D>& mesh, const std::array<WrittenGroup, 4>& groups) {
+  Vec<D> low, high;
+  if (mesh.vertex_count() > 0) low = high = mesh.vertex(0);
+  for (const auto& vertex : mesh.vertices())
+    for (int c = 0; c < D; ++c) {
+      low[c] = std::min(low[c], vertex[c]);
+      high[c] = std::max(high[c], vertex[c]);
+    }
+  out << "$Entities\n";
+  for (int dimension = 0; dimension < 4; ++dimension)
+    out << groups[dimension].entity_count() << (dimension < 3 ? ' ' : '\n');
+  for (int dimension = 0; dimension < 4; ++dimension) {
+    const WrittenGroup& group = groups[dimension];
+    for (std::size_t entity = 0; entity < group.entity_count(); ++entity) {
+      out << entity + 1 << ' ';
+      if (dimension == 0) {
+        Index node;  // a point entity sits at its first point
+        group.nodes(group.by_ref[group.entity_begin[entity]], &node);
+        write_point(out, mesh.vertex(node));
+      } else {
+        write_point(out, low);
+        out << ' ';
+        write_point(out, high);
+      }
+      out << " 1 " << group.entity_ref(entity) << (dimension > 0 ? " 0\n" : "\n");
+    }
+  }
+  out << "$EndEntities\n";
+}
+
+template <int D>
+void write_nodes(TextWriter& out, const Mesh<D>& mesh) {
+  const Index node_count = mesh.vertex_count() + (mesh.is_p2() ? mesh.edge_count() : 0);
+  out << "$Nodes\n";
+  if (node_count == 0) {
+    out << "0 0 0 0\n$EndNodes\n";
+    return;
+  }
+  // All nodes in one block on the first element entity: gmsh and meshio accept nodes classified on
+  // an entity of higher dimension than the elements that use them.
+  out << "1 " << node_count << " 1 " << node_count << '\n' << D << " 1 0 " << node_count << '\n';
+  for (Index node = 1; node <= node_count; ++node) out << node << '\n';
+  for (const auto& vertex : mesh.vertices()) {
+    write_point(out, vertex);
+    out << '\n';
+  }
+  for (Index e = 0; mesh.is_p2() && e < mesh.edge_count(); ++e) {
+    write_point(out, mesh.edge_node(e));
+    out << '\n';
+  }
+  out << "$EndNodes\n";
+}
+
+void write_elements(TextWriter& out, const std::array<WrittenGroup, 4>& groups) {
+  std::size_t block_count = 0, element_count = 0;
+  for (const WrittenGroup& group : groups) {
+    block_count += group.entity_count();
+    element_count += group.by_ref.size();
+  }
+  out << "$Elements\n" << block_count << ' ' << element_count << ' ' << (element_count > 0 ? 1 : 0) << ' ' << element_count << '\n';
+  std::size_t tag = 1;
+  std::array<Index, 10> nodes;
+  for (int dimension = 0; dimension < 4; ++dimension) {
+    const WrittenGroup& group = groups[dimension];
+    for (std::size_t entity = 0; entity < group.entity_count(); ++entity) {
+      std::size_t begin = group.entity_begin[entity], end = group.entity_begin[entity + 1];
+      out << dimension << ' ' << entity + 1 << ' ' << group.type->gmsh_type << ' ' << end - begin << '\n';
+      for (std::size_t i = begin; i < end; ++i) {
+        group.nodes(group.by_ref[i], nodes.data());
+        out << tag++;
+        for (int position = 0; position < group.type->node_count; ++position)
+          out << ' ' << nodes[static_cast<std::size_t>(group.type->hocav_position[position])] + 1;
+        out << '\n';
+      }
+    }
+  }
+  out << "$EndElements\n";
+}
+
+}  // namespace
+
+MeshFileContent read_gmsh_msh(const std::string& path) {
+  MshContent content = MshReader(path).read();
+  return mesh_dimension(content, path) == 3 ? assemble<3>(std::move(content), path) : assemble<2>(std::move(content), path);
+}
+
+int gmsh_msh_dimension(const std::string& path) { return mesh_dimension(MshReader(path).read(), path); }
+
+template <int D>
+void write_gmsh_msh(const std::string& path, const Mesh<D>& mesh) {
+  std::array<WrittenGroup, 4> groups = written_groups(mesh);
+  AtomicOutput output(path);
+  TextWriter out(output.stream());
+  out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+  write_entities(out, mesh, groups);
+  write_nodes(out, mesh);
+  write_elements(out, groups);
+  out.flush();
+  output.commit();
+}
+
+template void write_gmsh_msh(const std::string&, const Mesh<2>&);
+template void write_gmsh_msh(const std::string&, const Mesh<3>&);
+
+}  // namespace hocav
