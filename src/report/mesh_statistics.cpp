@@ -1,0 +1,242 @@
+#include "report/mesh_statistics.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <iomanip>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "base/error.hpp"
+#include "mesh/consistency.hpp"
+#include "mesh/measure.hpp"
+#include "metric/straight_edge_length.hpp"
+#include "report/json_writer.hpp"
+
+namespace hocav {
+namespace {
+
+template <class RefOf>
+std::vector<RefCount> count_refs(Index count, RefOf ref_of) {
+  std::map<int, Index> counts;
+  for (Index i = 0; i < count; ++i) ++counts[ref_of(i)];
+  std::vector<RefCount> out;
+  for (const auto& [ref, n] : counts) out.push_back({ref, n});
+  return out;
+}
+
+template <int D>
+EdgeLengthStatistics edge_length_statistics(const Mesh<D>& mesh, std::span<const double> vertex_metrics) {
+  constexpr std::size_t kComponents = D * (D + 1) / 2;
+  if (vertex_metrics.size() != kComponents * static_cast<std::size_t>(mesh.vertex_count()))
+    throw Error("the metric has " + std::to_string(vertex_metrics.size() / kComponents) + " rows for " +
+                std::to_string(mesh.vertex_count()) + " vertices");
+  auto metric_of = [&vertex_metrics](Index v) { return vertex_metrics.subspan(v * kComponents, kComponents); };
+  EdgeLengthStatistics s;
+  s.edge_count = mesh.edge_count();
+  if (s.edge_count == 0) return s;
+  s.min = std::numeric_limits<double>::infinity();
+  s.max = -s.min;
+  double sum = 0;
+  for (Index e = 0; e < mesh.edge_count(); ++e) {
+    auto [a, b] = mesh.edge_vertices(e);
+    double length = straight_edge_length(mesh.vertex(a), mesh.vertex(b), metric_of(a), metric_of(b));
+    s.min = std::min(s.min, length);
+    s.max = std::max(s.max, length);
+    sum += length;
+    ++s.histogram[edge_length_bin(length)];
+  }
+  s.mean = sum / s.edge_count;
+  s.unit_share = static_cast<double>(s.histogram[kUnitEdgeBin]) / s.edge_count;
+  return s;
+}
+
+std::string number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", value);
+  return buffer;
+}
+
+std::string bound(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", value);
+  return buffer;
+}
+
+// "[0.3, 0.5)": bins below the unit bin are closed on the left, those above on the right.
+std::string bin_label(std::size_t bin) {
+  const auto& bounds = kEdgeLengthBinBounds;
+  std::string label(1, bin <= kUnitEdgeBin ? '[' : '(');
+  label.append(bin == 0 ? "0" : bound(bounds[bin - 1])).append(", ");
+  label.append(bin == bounds.size() ? "inf" : bound(bounds[bin]));
+  label.push_back(bin < kUnitEdgeBin || bin == bounds.size() ? ')' : ']');
+  return label;
+}
+
+std::string refs_text(const std::vector<RefCount>& refs) {
+  if (refs.empty()) return "none";
+  std::string text;
+  for (const RefCount& r : refs) text += (text.empty() ? "" : "  ") + std::to_string(r.ref) + " (" + std::to_string(r.count) + ")";
+  return text;
+}
+
+std::string memory_text(std::size_t bytes) {
+  static constexpr const char* kUnits[] = {"KiB", "MiB", "GiB"};
+  double amount = static_cast<double>(bytes) / 1024;
+  std::size_t unit = 0;
+  for (; unit + 1 < std::size(kUnits) && amount >= 1024; ++unit) amount /= 1024;
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%zu bytes (%.1f %s)", bytes, amount, kUnits[unit]);
+  return buffer;
+}
+
+std::string percent(double share) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.1f%%", 100 * share);
+  return buffer;
+}
+
+void write_refs_json(JsonWriter& json, std::string_view name, const std::vector<RefCount>& refs) {
+  json.key(name).begin_array();
+  for (const RefCount& r : refs) json.begin_object().member("ref", r.ref).member("count", r.count).end_object();
+  json.end_array();
+}
+
+}  // namespace
+
+std::size_t edge_length_bin(double length) {
+  std::size_t bin = 0;
+  for (std::size_t i = 0; i < kEdgeLengthBinBounds.size(); ++i)
+    if (i < kUnitEdgeBin ? length >= kEdgeLengthBinBounds[i] : length > kEdgeLengthBinBounds[i]) bin = i + 1;
+  return bin;
+}
+
+template <int D>
+MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> vertex_metrics) {
+  MeshStatistics s;
+  s.memory_bytes = mesh.memory_bytes();
+  if (!mesh.has_edges()) mesh.build_edges();
+  s.dimension = D;
+  s.order = mesh.order();
+  s.vertices = mesh.vertex_count();
+  s.elements = mesh.element_count();
+  s.boundary_facets = mesh.facet_count();
+  s.lines = mesh.line_count();
+  s.edges = mesh.edge_count();
+  s.p2_nodes = mesh.is_p2() ? mesh.edge_count() : 0;
+  s.corners = static_cast<Index>(mesh.corners().size());
+  s.ridges = static_cast<Index>(mesh.ridges().size());
+  s.required_vertices = static_cast<Index>(mesh.required_vertices().size());
+  s.element_refs = count_refs(mesh.element_count(), [&mesh](Index k) { return mesh.element_ref(k); });
+  s.facet_refs = count_refs(mesh.facet_count(), [&mesh](Index f) { return mesh.facet_ref(f); });
+
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    double measure = element_measure(mesh, k);
+    s.min_measure = k == 0 ? measure : std::min(s.min_measure, measure);
+    s.max_measure = k == 0 ? measure : std::max(s.max_measure, measure);
+    s.total_measure += measure;
+    if (!(measure > 0)) ++s.non_positive_elements;
+  }
+  if (mesh.has_topology())
+    for (Index k = 0; k < mesh.element_count(); ++k)
+      for (int face = 0; face <= D; ++face)
+        if (mesh.neighbor(k, face) == kNoIndex && mesh.element_face_facet(k, face) == kNoIndex) ++s.open_boundary_faces;
+
+  ConsistencyOptions options;
+  options.require_positive_orientation = !mesh.is_p2();  // a valid curved element may be an inverted P1 one
+  s.consistency_problems = check_consistency(mesh, options);
+  if (!vertex_metrics.empty()) s.edge_lengths = edge_length_statistics(mesh, vertex_metrics);
+  return s;
+}
+
+template MeshStatistics compute_mesh_statistics(Mesh<2>&, std::span<const double>);
+template MeshStatistics compute_mesh_statistics(Mesh<3>&, std::span<const double>);
+
+void write_statistics_table(std::ostream& out, const MeshStatistics& s, const std::string& mesh_name,
+                            const std::string& metric_name) {
+  auto row = [&out](const std::string& label, const std::string& value) {
+    out << std::left << std::setw(22) << label << value << '\n';
+  };
+  const char* measure_name = s.dimension == 2 ? "area" : "volume";
+  row("mesh", mesh_name);
+  row("dimension", std::to_string(s.dimension));
+  row("order", std::string("P").append(std::to_string(s.order)));
+  row("vertices", std::to_string(s.vertices));
+  row("elements", std::to_string(s.elements) + (s.dimension == 2 ? " triangles" : " tetrahedra"));
+  row("boundary facets", std::to_string(s.boundary_facets) + (s.dimension == 2 ? " edges" : " triangles"));
+  row("lines", std::to_string(s.lines));
+  row("edges", std::to_string(s.edges));
+  row("P2 nodes", std::to_string(s.p2_nodes));
+  row("corners", std::to_string(s.corners));
+  row("ridges", std::to_string(s.ridges));
+  row("required vertices", std::to_string(s.required_vertices));
+  row("element refs", refs_text(s.element_refs));
+  row("facet refs", refs_text(s.facet_refs));
+  row(std::string("P1 ") + measure_name,
+      "min " + number(s.min_measure) + "  max " + number(s.max_measure) + "  total " + number(s.total_measure));
+  row("non-positive P1", std::to_string(s.non_positive_elements));
+  row("open boundary faces", std::to_string(s.open_boundary_faces));
+  if (s.consistency_problems.empty()) {
+    row("consistency", "ok");
+  } else {
+    row("consistency", "FAILED (" + std::to_string(s.consistency_problems.size()) + " problems listed)");
+    for (const std::string& problem : s.consistency_problems) row("", problem);
+  }
+  row("memory", memory_text(s.memory_bytes));
+  if (!s.edge_lengths) return;
+  const EdgeLengthStatistics& lengths = *s.edge_lengths;
+  row("metric", metric_name);
+  row("edge length", "min " + number(lengths.min) + "  mean " + number(lengths.mean) + "  max " + number(lengths.max) +
+                         "  (" + std::to_string(lengths.edge_count) + " edges)");
+  for (std::size_t bin = 0; bin < lengths.histogram.size(); ++bin) {
+    double share = lengths.edge_count > 0 ? static_cast<double>(lengths.histogram[bin]) / lengths.edge_count : 0.0;
+    std::ostringstream counts;
+    counts << std::right << std::setw(10) << lengths.histogram[bin] << std::setw(9) << percent(share);
+    row(std::string(2, ' ').append(bin_label(bin)), counts.str());
+  }
+  row("unit edges", percent(lengths.unit_share) + " in " + bin_label(kUnitEdgeBin));
+}
+
+void write_statistics_json(std::ostream& out, const MeshStatistics& s, const std::string& mesh_name,
+                           const std::string& metric_name) {
+  JsonWriter json(out);
+  json.begin_object();
+  json.member("mesh", mesh_name).member("dimension", s.dimension).member("order", s.order);
+  json.key("counts").begin_object();
+  json.member("vertices", s.vertices).member("elements", s.elements).member("boundary_facets", s.boundary_facets);
+  json.member("lines", s.lines).member("edges", s.edges).member("p2_nodes", s.p2_nodes);
+  json.member("corners", s.corners).member("ridges", s.ridges).member("required_vertices", s.required_vertices);
+  json.end_object();
+  write_refs_json(json, "element_refs", s.element_refs);
+  write_refs_json(json, "facet_refs", s.facet_refs);
+  json.key("p1_measure").begin_object();
+  json.member("min", s.min_measure).member("max", s.max_measure).member("total", s.total_measure);
+  json.member("non_positive", s.non_positive_elements);
+  json.end_object();
+  json.member("open_boundary_faces", s.open_boundary_faces);
+  json.key("consistency").begin_object().member("consistent", s.consistency_problems.empty());
+  json.key("problems").begin_array();
+  for (const std::string& problem : s.consistency_problems) json.value(problem);
+  json.end_array().end_object();
+  json.member("memory_bytes", s.memory_bytes);
+  if (s.edge_lengths) {
+    const EdgeLengthStatistics& lengths = *s.edge_lengths;
+    json.key("metric").begin_object().member("file", metric_name).member("edges", lengths.edge_count);
+    json.key("length").begin_object();
+    json.member("min", lengths.min).member("mean", lengths.mean).member("max", lengths.max).end_object();
+    json.key("histogram").begin_array();
+    for (std::size_t bin = 0; bin < lengths.histogram.size(); ++bin) {
+      json.begin_object().member("bin", bin_label(bin));
+      json.member("from", bin == 0 ? 0.0 : kEdgeLengthBinBounds[bin - 1]);
+      json.key("to");
+      if (bin < kEdgeLengthBinBounds.size()) json.value(kEdgeLengthBinBounds[bin]);
+      else json.null();
+      json.member("count", lengths.histogram[bin]).end_object();
+    }
+    json.end_array();
+    json.member("unit_share", lengths.unit_share).end_object();
+  }
+  json.end_object();
+}
+
+}  // namespace hocav

@@ -1,0 +1,67 @@
+// The figures `hocav stats` reports about a mesh (and optionally the metric that goes with it),
+// and their two renderings: an aligned table for people and one JSON object for scripts.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <ostream>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+
+namespace hocav {
+
+struct RefCount {
+  int ref = 0;
+  Index count = 0;
+};
+
+// Edge lengths in the metric, binned at these bounds; the bin [1/sqrt(2), sqrt(2)] of unit edges
+// is closed at both ends, so its share is the "unit edges" figure of the literature.
+inline const std::array<double, 6> kEdgeLengthBinBounds{0.3, 0.5, 1 / std::sqrt(2.0), std::sqrt(2.0), 2.0, 3.0};
+inline constexpr std::size_t kUnitEdgeBin = 3;
+
+struct EdgeLengthStatistics {
+  Index edge_count = 0;
+  double min = 0, mean = 0, max = 0;
+  std::array<Index, kEdgeLengthBinBounds.size() + 1> histogram{};
+  double unit_share = 0;  // share of edges with length in [1/sqrt(2), sqrt(2)]
+};
+
+struct MeshStatistics {
+  int dimension = 2;
+  int order = 1;
+  Index vertices = 0, elements = 0, boundary_facets = 0, lines = 0, edges = 0, p2_nodes = 0;
+  Index corners = 0, ridges = 0, required_vertices = 0;
+  std::vector<RefCount> element_refs, facet_refs;  // by increasing ref
+  // Signed P1 measures (area or volume of the straight elements).
+  double min_measure = 0, max_measure = 0, total_measure = 0;
+  Index non_positive_elements = 0;
+  // Element faces on the domain boundary without a boundary facet (allowed, but worth knowing).
+  Index open_boundary_faces = 0;
+  // The consistency checker's verdict (P1 orientation is required of P1 meshes only).
+  std::vector<std::string> consistency_problems;
+  std::size_t memory_bytes = 0;
+  std::optional<EdgeLengthStatistics> edge_lengths;
+};
+
+// Computes the statistics; builds the mesh's edge table when it has none (so memory_bytes is taken
+// first). `vertex_metrics`, when not empty, holds one symmetric matrix per vertex in .sol order
+// (D (D + 1) / 2 values each) for the edge lengths.
+template <int D>
+MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> vertex_metrics = {});
+
+// The bin of an edge length (index into EdgeLengthStatistics::histogram).
+std::size_t edge_length_bin(double length);
+
+// The mesh and metric file names head the report; metric_name is empty when there is no metric.
+void write_statistics_table(std::ostream& out, const MeshStatistics& statistics, const std::string& mesh_name,
+                            const std::string& metric_name);
+void write_statistics_json(std::ostream& out, const MeshStatistics& statistics, const std::string& mesh_name,
+                           const std::string& metric_name);
+
+}  // namespace hocav

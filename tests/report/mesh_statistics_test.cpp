@@ -1,0 +1,122 @@
+#include "report/mesh_statistics.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "cases/structured.hpp"
+
+namespace hocav {
+namespace {
+
+// n x n square, metric (n scale)^2 I at every vertex: axis edges of length scale, diagonals scale sqrt 2.
+MeshStatistics square_statistics(int n, double scale) {
+  Mesh<2> mesh = generate_square(n);
+  double m = n * n * scale * scale;
+  std::vector<double> metrics;
+  for (Index v = 0; v < mesh.vertex_count(); ++v) metrics.insert(metrics.end(), {m, 0, m});
+  return compute_mesh_statistics(mesh, metrics);
+}
+
+TEST(MeshStatistics, CountsRefsAndMeasuresOfTheSquare) {
+  Mesh<2> mesh = generate_square(4);
+  MeshStatistics s = compute_mesh_statistics(mesh);
+  EXPECT_EQ(s.dimension, 2);
+  EXPECT_EQ(s.order, 1);
+  EXPECT_EQ(s.vertices, 25);
+  EXPECT_EQ(s.elements, 32);
+  EXPECT_EQ(s.boundary_facets, 16);
+  EXPECT_EQ(s.edges, 56);  // Euler: V + T - 1
+  EXPECT_EQ(s.p2_nodes, 0);
+  EXPECT_EQ(s.corners, 4);
+  ASSERT_EQ(s.element_refs.size(), 1u);
+  EXPECT_EQ(s.element_refs[0].ref, 1);
+  EXPECT_EQ(s.element_refs[0].count, 32);
+  ASSERT_EQ(s.facet_refs.size(), 4u);
+  for (int side = 0; side < 4; ++side) {
+    EXPECT_EQ(s.facet_refs[side].ref, side + 1);
+    EXPECT_EQ(s.facet_refs[side].count, 4);
+  }
+  EXPECT_DOUBLE_EQ(s.min_measure, 1.0 / 32);
+  EXPECT_DOUBLE_EQ(s.max_measure, 1.0 / 32);
+  EXPECT_NEAR(s.total_measure, 1.0, 1e-14);
+  EXPECT_EQ(s.non_positive_elements, 0);
+  EXPECT_EQ(s.open_boundary_faces, 0);
+  EXPECT_TRUE(s.consistency_problems.empty());
+  EXPECT_GT(s.memory_bytes, 0u);
+  EXPECT_FALSE(s.edge_lengths.has_value());
+}
+
+TEST(MeshStatistics, P2CubeCountsItsNodesAndStaysConsistent) {
+  Mesh<3> mesh = generate_cube(2);
+  mesh.make_p2();
+  MeshStatistics s = compute_mesh_statistics(mesh);
+  EXPECT_EQ(s.order, 2);
+  EXPECT_EQ(s.p2_nodes, s.edges);
+  EXPECT_EQ(s.lines, 24);
+  EXPECT_EQ(s.ridges, 24);
+  EXPECT_NEAR(s.total_measure, 1.0, 1e-14);
+  EXPECT_TRUE(s.consistency_problems.empty());
+}
+
+TEST(MeshStatistics, ReportsInvertedElementsAndOpenFaces) {
+  Mesh<2> mesh;
+  mesh.add_vertex({{0, 0}});
+  mesh.add_vertex({{1, 0}});
+  mesh.add_vertex({{0, 1}});
+  mesh.add_element({0, 2, 1}, 7);  // clockwise
+  mesh.build_topology();
+  MeshStatistics s = compute_mesh_statistics(mesh);
+  EXPECT_EQ(s.non_positive_elements, 1);
+  EXPECT_DOUBLE_EQ(s.min_measure, -0.5);
+  EXPECT_EQ(s.open_boundary_faces, 3);
+  EXPECT_FALSE(s.consistency_problems.empty());
+  EXPECT_EQ(s.element_refs[0].ref, 7);
+}
+
+TEST(MeshStatistics, EdgeLengthsInAUniformMetric) {
+  MeshStatistics unit = square_statistics(4, 1.0);
+  ASSERT_TRUE(unit.edge_lengths.has_value());
+  EXPECT_EQ(unit.edge_lengths->edge_count, 56);
+  EXPECT_NEAR(unit.edge_lengths->min, 1.0, 1e-14);
+  EXPECT_NEAR(unit.edge_lengths->max, std::sqrt(2.0), 1e-14);
+  EXPECT_NEAR(unit.edge_lengths->mean, (40 + 16 * std::sqrt(2.0)) / 56, 1e-14);
+  EXPECT_EQ(unit.edge_lengths->histogram[kUnitEdgeBin], 56);
+  EXPECT_EQ(unit.edge_lengths->unit_share, 1.0);
+
+  MeshStatistics long_edges = square_statistics(4, 2.0);  // axis edges 2, diagonals 2.83
+  EXPECT_EQ(long_edges.edge_lengths->histogram[4], 40);
+  EXPECT_EQ(long_edges.edge_lengths->histogram[5], 16);
+  EXPECT_EQ(long_edges.edge_lengths->unit_share, 0.0);
+}
+
+TEST(MeshStatistics, BinsAreClosedTowardsTheUnitBin) {
+  EXPECT_EQ(edge_length_bin(0.0), 0u);
+  EXPECT_EQ(edge_length_bin(0.3), 1u);
+  EXPECT_EQ(edge_length_bin(0.5), 2u);
+  EXPECT_EQ(edge_length_bin(1 / std::sqrt(2.0)), kUnitEdgeBin);
+  EXPECT_EQ(edge_length_bin(1.0), kUnitEdgeBin);
+  EXPECT_EQ(edge_length_bin(std::sqrt(2.0)), kUnitEdgeBin);
+  EXPECT_EQ(edge_length_bin(1.5), 4u);
+  EXPECT_EQ(edge_length_bin(2.0), 4u);
+  EXPECT_EQ(edge_length_bin(3.0), 5u);
+  EXPECT_EQ(edge_length_bin(3.5), 6u);
+}
+
+TEST(MeshStatistics, TableAndJsonCarryTheFigures) {
+  MeshStatistics s = square_statistics(2, 1.0);
+  std::ostringstream table, json;
+  write_statistics_table(table, s, "square.mesh", "square.sol");
+  write_statistics_json(json, s, "square.mesh", "square.sol");
+  EXPECT_NE(table.str().find("consistency           ok"), std::string::npos) << table.str();
+  EXPECT_NE(table.str().find("elements              8 triangles"), std::string::npos) << table.str();
+  EXPECT_NE(table.str().find("unit edges            100.0% in [0.707, 1.41]"), std::string::npos) << table.str();
+  EXPECT_NE(json.str().find("\"elements\": 8,"), std::string::npos) << json.str();
+  EXPECT_NE(json.str().find("\"consistent\": true"), std::string::npos) << json.str();
+  EXPECT_NE(json.str().find("\"unit_share\": 1"), std::string::npos) << json.str();
+  EXPECT_NE(json.str().find("\"file\": \"square.sol\""), std::string::npos) << json.str();
+  EXPECT_EQ(json.str().back(), '\n');
+}
+
+}  // namespace
+}  // namespace hocav
