@@ -11,6 +11,7 @@
 #include <iostream>
 #include <map>
 #include <numeric>
+#include <sstream>
 #include <string_view>
 #include <type_traits>
 
@@ -126,11 +127,12 @@ class MshReader {
                   << "\n";
         skip_section(section);
       } else {
-        in_.fail("file", "expected a section such as $Nodes, found '" + std::string(token.substr(0, 40)) + "'");
+        throw Error(in_.path() + ": expected a section such as $Nodes, found '" + std::string(token.substr(0, 40)) +
+                    "', line " + std::to_string(in_.line()));
       }
     }
-    if (!have_nodes) in_.fail("file", "no $Nodes section");
-    if (!have_elements) in_.fail("file", "no $Elements section");
+    if (!have_nodes) throw Error(in_.path() + ": no $Nodes section");
+    if (!have_elements) throw Error(in_.path() + ": no $Elements section");
     return std::move(content_);
   }
 
@@ -292,10 +294,13 @@ class MshReader {
 int mesh_dimension(const MshContent& content, const std::string& path) {
   if (content.lists[3].type != nullptr) return 3;
   if (content.lists[2].type == nullptr) throw Error(path + ": $Elements: no triangles or tetrahedra");
-  if (content.first_nonzero_z_line != 0)
-    throw Error(path + ": $Nodes: triangles with z = " + std::to_string(content.first_nonzero_z) +
+  if (content.first_nonzero_z_line != 0) {
+    std::ostringstream z;
+    z << content.first_nonzero_z;
+    throw Error(path + ": $Nodes: triangles with z = " + z.str() +
                 " make a surface mesh, which hocav does not support (it reads planar triangle meshes with z = 0 and "
                 "tetrahedral meshes), line " + std::to_string(content.first_nonzero_z_line));
+  }
   return 2;
 }
 
@@ -451,16 +456,19 @@ void write_point(TextWriter& out, const Vec<D>& point) {
 }
 
 // Entity i + 1 of each dimension has physical tag = its ref. Every curve, surface and volume gets
-// the mesh's bounding box: a valid bound, and neither gmsh nor meshio uses it for a mesh.
+// the bounding box of all nodes: a valid bound, and neither gmsh nor meshio uses it for a mesh.
 template <int D>
 void write_entities(TextWriter& out, const Mesh<D>& mesh, const std::array<WrittenGroup, 4>& groups) {
   Vec<D> low, high;
   if (mesh.vertex_count() > 0) low = high = mesh.vertex(0);
-  for (const auto& vertex : mesh.vertices())
+  auto extend = [&low, &high](const Vec<D>& point) {
     for (int c = 0; c < D; ++c) {
-      low[c] = std::min(low[c], vertex[c]);
-      high[c] = std::max(high[c], vertex[c]);
+      low[c] = std::min(low[c], point[c]);
+      high[c] = std::max(high[c], point[c]);
     }
+  };
+  for (const auto& vertex : mesh.vertices()) extend(vertex);
+  for (Index e = 0; mesh.is_p2() && e < mesh.edge_count(); ++e) extend(mesh.edge_node(e));
   out << "$Entities\n";
   for (int dimension = 0; dimension < 4; ++dimension)
     out << groups[dimension].entity_count() << (dimension < 3 ? ' ' : '\n');
