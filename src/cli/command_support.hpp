@@ -1,0 +1,23 @@
+// What the commands share: the dimension of a mesh read from a file, the metric that goes with a
+// mesh file (checked and renumbered to hocav's node order), and a one-line mesh summary.
+#pragma once
+
+#include <string>
+
+#include "io/mesh_file.hpp"
+#include "io/solution_file.hpp"
+
+namespace hocav {
+
+inline int dimension_of(const AnyMesh& mesh) { return std::holds_alternative<Mesh<2>>(mesh) ? 2 : 3; }
+
+// Reads the metric file given with a mesh file and checks it against that file (a symmetric matrix
+// per file node, finite and positive definite). Returns its rows in the node order every writer
+// uses: the mesh's vertices, then, when with_edge_nodes (a P2 mesh read as P2), each edge's node.
+SolutionField read_metric_for_mesh(const std::string& metric_path, const MeshFileContent& mesh_file, bool with_edge_nodes);
+
+// "2D P1: 356 vertices, 605 triangles, 95 boundary edges"
+template <int D>
+std::string mesh_summary(const Mesh<D>& mesh);
+
+}  // namespace hocav

@@ -1,0 +1,116 @@
+// hocav convert IN OUT [--metric SOL] [--metric-out SOL] [--order 1|2] [--meshb-version N]
+// Reads any supported mesh, writes it in the format of OUT's extension. A metric given with the
+// mesh is checked and carried to the output's node numbering; everything is validated before the
+// first byte is written, and a failure while writing the metric removes the mesh just written.
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "base/error.hpp"
+#include "cli/command_support.hpp"
+#include "cli/commands.hpp"
+#include "io/vtu_file.hpp"
+
+namespace hocav {
+namespace {
+
+struct ConvertOptions {
+  std::string input, output, metric, metric_output;
+  int order = 0;  // 0 keeps the input's order
+  int gamma_version = 0;
+};
+
+// Where the metric goes: --metric-out, or beside OUT as .sol (.solb for a .meshb OUT); a .vtu OUT
+// carries the metric as point data, so no solution file unless asked for.
+std::string metric_output_path(const ConvertOptions& options) {
+  if (options.metric.empty()) return "";
+  std::string path = options.metric_output;
+  if (path.empty()) {
+    std::string extension = file_extension(options.output);
+    if (extension == ".vtu") return "";
+    path = options.output.substr(0, options.output.size() - extension.size()) + (extension == ".meshb" ? ".solb" : ".sol");
+  }
+  std::string extension = file_extension(path);
+  if (extension != ".sol" && extension != ".solb")
+    throw Error(path + ": a metric is written as .sol or .solb, not '" + extension + "'");
+  return path;
+}
+
+template <int D>
+void change_order(Mesh<D>& mesh, int order, bool with_metric) {
+  if (order == 1) mesh.make_p1();
+  if (order == 2 && !mesh.is_p2()) {
+    if (with_metric)
+      throw Error("--order 2 with --metric: the metric has no values at the new P2 nodes (convert the mesh alone)");
+    mesh.make_p2();
+  }
+}
+
+// The metric as ParaView tensors (9 components, row-major; the z row and column are 0 in 2D).
+template <int D>
+VtuField metric_tensor_field(const SolutionField& metric) {
+  VtuField field{"metric", 9, {}};
+  auto components = static_cast<std::size_t>(metric.components());
+  for (std::size_t first = 0; first < metric.values.size(); first += components)
+    for (int row = 0; row < 3; ++row)
+      for (int column = 0; column < 3; ++column) {
+        int high = std::max(row, column), low = std::min(row, column);
+        bool inside = row < D && column < D;
+        field.values.push_back(inside ? metric.values[first + static_cast<std::size_t>(high * (high + 1) / 2 + low)] : 0.0);
+      }
+  return field;
+}
+
+template <int D>
+void convert(Mesh<D>& mesh, const MeshFileContent& file, const ConvertOptions& options) {
+  std::string metric_output = metric_output_path(options);
+  change_order(mesh, options.order, !options.metric.empty());
+  std::optional<SolutionField> metric;
+  if (!options.metric.empty()) metric = read_metric_for_mesh(options.metric, file, mesh.is_p2());
+
+  if (file_extension(options.output) == ".vtu") {
+    VtuData data;
+    if (metric) data.point_fields.push_back(metric_tensor_field<D>(*metric));
+    write_vtu(options.output, mesh, data);
+  } else {
+    write_mesh_file(options.output, mesh, {options.gamma_version});
+  }
+  if (metric && !metric_output.empty()) {
+    try {
+      write_solution_file(metric_output, {D, metric->count(), {*metric}}, options.gamma_version);
+    } catch (...) {
+      std::remove(options.output.c_str());  // the mesh without its metric would be a partial result
+      throw;
+    }
+  }
+  std::cout << "wrote " << options.output << (metric_output.empty() ? "" : " and " + metric_output) << ": "
+            << mesh_summary(mesh) << '\n';
+}
+
+}  // namespace
+
+void add_convert_command(CLI::App& app) {
+  auto options = std::make_shared<ConvertOptions>();
+  CLI::App* command = app.add_subcommand(
+      "convert", "Convert a mesh (and its metric) between formats: .mesh .meshb .msh -> .mesh .meshb .msh .vtu");
+  command->add_option("input", options->input, "mesh to read (.mesh, .meshb, .msh)")->required();
+  command->add_option("output", options->output, "mesh to write; the format follows the extension (.mesh, .meshb, .msh, .vtu)")
+      ->required();
+  command->add_option("--metric", options->metric, "metric of the input mesh (.sol/.solb, one matrix per file node)");
+  command->add_option("--metric-out", options->metric_output,
+                      "where to write the metric (default: OUT with extension .sol, .solb for a .meshb OUT; "
+                      "none for a .vtu OUT, which carries the metric as point data)");
+  command->add_option("--order", options->order, "element order of the output: 1 drops the P2 nodes, 2 adds straight ones")
+      ->check(CLI::IsMember({1, 2}));
+  command->add_option("--meshb-version", options->gamma_version,
+                      "version of binary .meshb/.solb output: 1-4 (default: 3, or 4 when counts need 64 bits)")
+      ->check(CLI::Range(1, 4));
+  command->callback([options] {
+    MeshFileContent file = read_mesh_file(options->input);
+    std::visit([&](auto& mesh) { convert(mesh, file, *options); }, file.mesh);
+  });
+}
+
+}  // namespace hocav
