@@ -1,0 +1,222 @@
+#include "io/solution_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "base/error.hpp"
+#include "gamma_test_support.hpp"
+#include "io/gamma_mesh.hpp"
+
+namespace hocav {
+namespace {
+
+using testing_support::GammaBinaryBuilder;
+using testing_support::read_file;
+using testing_support::temporary_path;
+using testing_support::write_file;
+
+// Every kind of field, with values that need all 17 digits.
+SolutionFileContent every_kind_of_field(int dimension, Index count) {
+  SolutionFileContent content{dimension, count, {}};
+  int seed = 0;
+  for (SolutionKind kind : {SolutionKind::kScalar, SolutionKind::kSymmetricMatrix, SolutionKind::kVector, SolutionKind::kMatrix}) {
+    SolutionField& field = content.fields.emplace_back(SolutionField{kind, dimension, {}});
+    for (Index i = 0; i < count * field.components(); ++i) field.values.push_back(std::sin(0.7 * ++seed) * 1e3);
+  }
+  return content;
+}
+
+void expect_same_content(const SolutionFileContent& expected, const SolutionFileContent& actual, bool single_precision) {
+  EXPECT_EQ(actual.dimension, expected.dimension);
+  EXPECT_EQ(actual.count, expected.count);
+  ASSERT_EQ(actual.fields.size(), expected.fields.size());
+  for (std::size_t f = 0; f < expected.fields.size(); ++f) {
+    EXPECT_EQ(actual.fields[f].kind, expected.fields[f].kind);
+    EXPECT_EQ(actual.fields[f].count(), expected.count);
+    ASSERT_EQ(actual.fields[f].values.size(), expected.fields[f].values.size());
+    for (std::size_t i = 0; i < expected.fields[f].values.size(); ++i) {
+      double wanted = expected.fields[f].values[i];
+      if (single_precision) wanted = static_cast<float>(wanted);
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(actual.fields[f].values[i]), std::bit_cast<std::uint64_t>(wanted))
+          << "field " << f << " value " << i;
+    }
+  }
+}
+
+TEST(SolutionFile, RoundTripsEveryKindOfField) {
+  for (int dimension : {2, 3})
+    for (int version = 0; version <= 4; ++version)
+      for (const char* extension : {".sol", ".solb"}) {
+        SCOPED_TRACE(std::string(extension) + " " + std::to_string(dimension) + "D version " + std::to_string(version));
+        SolutionFileContent content = every_kind_of_field(dimension, 7);
+        std::string path = temporary_path("fields" + std::to_string(version) + extension);
+        write_solution_file(path, content, version);
+        expect_same_content(content, read_solution_file(path), version == 1 && std::string(extension) == ".solb");
+      }
+}
+
+TEST(SolutionFile, KeepsTheTypeHeader32BitInVersion4) {
+  // Header 8, Dimension 4+8+4, SolAtVertices 4+8 + count 8 + types 4 * (1 + 2), rows 5 * (1 + 3) * 8, End 4+8.
+  SolutionFileContent content{2, 5, {}};
+  content.fields.push_back({SolutionKind::kScalar, 2, std::vector<double>(5, 1.0)});
+  content.fields.push_back({SolutionKind::kSymmetricMatrix, 2, std::vector<double>(15, 2.0)});
+  std::string path = temporary_path("v4.solb");
+  write_solution_file(path, content, 4);
+  EXPECT_EQ(read_file(path).size(), 8u + 16 + 20 + 12 + 160 + 12);
+}
+
+TEST(SolutionFile, WritesAsciiAsLibMeshbDoes) {
+  SolutionFileContent content{2, 2, {}};
+  content.fields.push_back({SolutionKind::kSymmetricMatrix, 2, {1, 0.5, 2, 3, 0, 0.1}});
+  std::string path = temporary_path("layout.sol");
+  write_solution_file(path, content);
+  EXPECT_EQ(read_file(path),
+            "MeshVersionFormatted 2\n\nDimension 2\n\nSolAtVertices\n2\n1 3\n1 0.5 2\n3 0 0.1\n\nEnd\n");
+}
+
+TEST(SolutionFile, ReadsByteSwappedBinary) {
+  GammaBinaryBuilder file(2, true);
+  file.dimension(3);
+  file.begin_keyword(62);
+  file.count(1);
+  file.int32(1);
+  file.int32(3);
+  for (double value : {1.0, 0.0, 2.0, 0.0, 0.0, 3.0}) file.real(value);
+  file.end_keyword();
+  file.end();
+  SolutionFileContent content = read_solution_file(write_file("swapped.solb", file.bytes()));
+  ASSERT_EQ(content.fields.size(), 1u);
+  EXPECT_EQ(content.fields[0].values, (std::vector<double>{1, 0, 2, 0, 0, 3}));
+  EXPECT_NO_THROW(checked_metric_field(content, "swapped.solb", 3, 1));
+}
+
+// ---- the third-party metrics ----
+
+void expect_metric_of_mesh(const std::string& mesh_path, const std::string& sol_path, Index count, double first_m11) {
+  ::testing::internal::CaptureStderr();
+  MeshFileContent mesh = read_gamma_mesh(mesh_path);
+  ::testing::internal::GetCapturedStderr();
+  SolutionFileContent content = read_solution_file(sol_path);
+  EXPECT_EQ(content.count, count);
+  const SolutionField& metric = checked_metric_field(content, sol_path, 3, mesh.file_node_count);
+  EXPECT_EQ(metric.count(), count);
+  EXPECT_EQ(metric.values[0], first_m11);
+}
+
+TEST(SolutionFile, ReadsTheThirdPartyMetricsAsPositiveDefinite) {
+  const std::string data = HOCAV_SHARED_DATA_DIR;
+  expect_metric_of_mesh(data + "/mmg-torus/torus.mesh", data + "/mmg-torus/torus-met.sol", 4351, 32.5918);
+  expect_metric_of_mesh(data + "/ugawg-linear/linear.mesh", data + "/ugawg-linear/linear.sol", 9476, 99.999999999999986);
+}
+
+// ---- checks of a metric against its mesh ----
+
+std::string error_of(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const Error& error) {
+    return error.what();
+  }
+  return "no error";
+}
+
+SolutionFileContent metric_field(int dimension, std::vector<double> values) {
+  SolutionFileContent content{dimension, 0, {}};
+  content.fields.push_back({SolutionKind::kSymmetricMatrix, dimension, std::move(values)});
+  content.count = content.fields[0].count();
+  return content;
+}
+
+TEST(SolutionFile, ChecksMetricsAgainstTheirMesh) {
+  // 2D: [[1, 2], [2, 1]] has a positive diagonal but is indefinite.
+  SolutionFileContent indefinite = metric_field(2, {1, 0, 1, /**/ 1, 2, 1});
+  EXPECT_EQ(error_of([&] { checked_metric_field(indefinite, "m.sol", 2, 2); }),
+            "m.sol: SolAtVertices: metric at vertex 2 is not positive definite");
+  // 3D, order m11 m12 m22 m13 m23 m33: leading minors 1 and 1 but a negative determinant.
+  SolutionFileContent negative_determinant = metric_field(3, {1, 0, 1, 0.9, 0.9, 1});
+  EXPECT_EQ(error_of([&] { checked_metric_field(negative_determinant, "m.sol", 3, 1); }),
+            "m.sol: SolAtVertices: metric at vertex 1 is not positive definite");
+  // The same off-diagonal terms with a larger m33 are fine.
+  SolutionFileContent definite = metric_field(3, {1, 0, 1, 0.9, 0.9, 2});
+  EXPECT_EQ(&checked_metric_field(definite, "m.sol", 3, 1), &definite.fields[0]);
+  // diag(1, 0.01, 1) on disk; read as the upper triangle row by row it would have m22 = 0.
+  SolutionFileContent small_m22 = metric_field(3, {1, 0, 0.01, 0, 0, 1});
+  EXPECT_NO_THROW(checked_metric_field(small_m22, "m.sol", 3, 1));
+
+  SolutionFileContent not_finite = metric_field(2, {1, 0, 1, 1, 0, std::numeric_limits<double>::quiet_NaN()});
+  EXPECT_EQ(error_of([&] { checked_metric_field(not_finite, "m.sol", 2, 2); }), "m.sol: SolAtVertices: metric at vertex 2 is not finite");
+  std::string counts = error_of([&] { checked_metric_field(definite, "m.sol", 3, 7); });
+  EXPECT_EQ(counts.rfind("m.sol: SolAtVertices: ", 0), 0u) << counts;
+  EXPECT_NE(counts.find(" 1 "), std::string::npos) << counts;
+  EXPECT_NE(counts.find(" 7 "), std::string::npos) << counts;
+  EXPECT_EQ(error_of([&] { checked_metric_field(definite, "m.sol", 2, 1); }), "m.sol: Dimension: the solution is 3D but the mesh is 2D");
+
+  SolutionFileContent scalar_first = every_kind_of_field(2, 3);
+  scalar_first.fields.erase(scalar_first.fields.begin() + 1);  // no symmetric matrix left
+  EXPECT_NE(error_of([&] { checked_metric_field(scalar_first, "m.sol", 2, 3); }).find("no symmetric-matrix field"), std::string::npos);
+}
+
+TEST(SolutionFile, PicksTheFirstSymmetricMatrixField) {
+  SolutionFileContent content{2, 1, {}};
+  content.fields.push_back({SolutionKind::kScalar, 2, {5}});
+  content.fields.push_back({SolutionKind::kSymmetricMatrix, 2, {1, 0, 1}});
+  content.fields.push_back({SolutionKind::kSymmetricMatrix, 2, {4, 0, 4}});
+  EXPECT_EQ(&checked_metric_field(content, "m.sol", 2, 1), &content.fields[1]);
+}
+
+// ---- malformed input ----
+
+void expect_read_error(const std::string& name, const std::string& bytes, std::initializer_list<std::string> parts) {
+  std::string path = write_file(name, bytes);
+  ::testing::internal::CaptureStderr();
+  std::string message = error_of([&] { read_solution_file(path); });
+  ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
+  for (const std::string& part : parts) EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
+}
+
+TEST(SolutionFile, RefusesMalformedFiles) {
+  const std::string header = "MeshVersionFormatted 2\nDimension 2\n";
+  expect_read_error("missing.sol", header + "Time\n0.5\n", {"SolAtVertices: missing"});
+  expect_read_error("no_dimension.sol", "SolAtVertices\n1\n1 1\n2\n", {"SolAtVertices: ", "no Dimension"});
+  expect_read_error("type.sol", header + "SolAtVertices\n1\n1 7\n2\n", {"SolAtVertices: ", "unknown solution type 7"});
+  expect_read_error("fields.sol", header + "SolAtVertices\n1\n0\n", {"SolAtVertices: ", "field count 0"});
+  expect_read_error("truncated.sol", header + "SolAtVertices\n2\n1 3\n1 0 1\n1 0\n", {"SolAtVertices: ", "end of file"});
+  expect_read_error("twice.sol", header + "SolAtVertices\n1\n1 1\n2\nSolAtVertices\n1\n1 1\n2\n", {"appears twice"});
+  expect_read_error("negative.sol", header + "SolAtVertices\n-1\n1 1\n", {"SolAtVertices: ", "negative count"});
+
+  GammaBinaryBuilder truncated(3);
+  truncated.dimension(2);
+  truncated.begin_keyword(62);
+  truncated.count(3);
+  truncated.int32(1);
+  truncated.int32(1);
+  truncated.real(1.0);
+  expect_read_error("truncated.solb", truncated.bytes(), {"SolAtVertices: truncated file, entity 2"});
+  GammaBinaryBuilder infinite(2);
+  infinite.dimension(2);
+  infinite.begin_keyword(62);
+  infinite.count(2);
+  infinite.int32(1);
+  infinite.int32(1);
+  infinite.real(1.0);
+  infinite.real(std::numeric_limits<double>::infinity());
+  infinite.end_keyword();
+  infinite.end();
+  expect_read_error("infinite.solb", infinite.bytes(), {"SolAtVertices: ", "not finite", "entity 2"});
+}
+
+TEST(SolutionFile, RefusesToWriteInconsistentContent) {
+  SolutionFileContent content = every_kind_of_field(3, 4);
+  EXPECT_THROW(write_solution_file(temporary_path("x.txt"), content), Error);
+  content.fields[1].values.pop_back();
+  EXPECT_THROW(write_solution_file(temporary_path("short.sol"), content), Error);
+  EXPECT_THROW(write_solution_file(temporary_path("missing/dir.solb"), every_kind_of_field(3, 4)), Error);
+}
+
+}  // namespace
+}  // namespace hocav
