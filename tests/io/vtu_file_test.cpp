@@ -8,7 +8,6 @@
 #include <cstring>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <sstream>
 
 #include "base/error.hpp"
@@ -37,6 +36,14 @@ struct VtuContent {
 
 std::string temporary_path(const std::string& name) { return ::testing::TempDir() + "hocav_vtu_" + name; }
 
+// The value of attribute `name` in an XML element's text, or "".
+std::string attribute(const std::string& element, const std::string& name) {
+  std::size_t at = element.find(" " + name + "=\"");
+  if (at == std::string::npos) return "";
+  at += name.size() + 3;
+  return element.substr(at, element.find('"', at) - at);
+}
+
 VtuContent read_vtu(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream buffer;
@@ -47,17 +54,18 @@ VtuContent read_vtu(const std::string& path) {
   EXPECT_NE(text.find(opening), std::string::npos);
   EXPECT_TRUE(text.ends_with(closing));
   VtuContent content{text.substr(0, data), {}};
-  std::regex array_pattern(
-      "<DataArray type=\"(\\w+)\" Name=\"([^\"]+)\"(?: NumberOfComponents=\"(\\d+)\")? format=\"appended\" offset=\"(\\d+)\"/>");
   std::size_t data_end = data;
-  for (std::sregex_iterator match(content.header.begin(), content.header.end(), array_pattern), end; match != end; ++match) {
-    VtuArray array{(*match)[1], (*match)[3].matched ? std::stoi((*match)[3]) : 1, {}};
-    std::size_t offset = data + std::stoull((*match)[4]);
+  for (std::size_t at = content.header.find("<DataArray "); at != std::string::npos; at = content.header.find("<DataArray ", at + 1)) {
+    std::string element = content.header.substr(at, content.header.find("/>", at) - at);
+    EXPECT_EQ(attribute(element, "format"), "appended");
+    std::string components = attribute(element, "NumberOfComponents");
+    VtuArray array{attribute(element, "type"), components.empty() ? 1 : std::stoi(components), {}};
+    std::size_t offset = data + std::stoull(attribute(element, "offset"));
     std::uint64_t size = 0;
     std::memcpy(&size, text.data() + offset, sizeof size);
     array.bytes = text.substr(offset + sizeof size, size);
     data_end = std::max<std::size_t>(data_end, offset + sizeof size + size);
-    content.arrays[(*match)[2]] = array;
+    content.arrays[attribute(element, "Name")] = array;
   }
   // The arrays fill the appended block exactly.
   EXPECT_EQ(data_end, text.size() - closing.size());
