@@ -1,0 +1,78 @@
+#include "metric/metric_field.hpp"
+
+#include <string>
+
+#include "base/error.hpp"
+#include "geom/sym_functions.hpp"
+#include "mesh/measure.hpp"
+
+namespace hocav {
+namespace {
+
+template <int D>
+std::unique_ptr<Mesh<D>> straight_copy(const Mesh<D>& mesh) {
+  auto back = std::make_unique<Mesh<D>>();
+  for (Index v = 0; v < mesh.vertex_count(); ++v) back->add_vertex(mesh.vertex(v), mesh.vertex_ref(v));
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    back->add_element(mesh.element(k), mesh.element_ref(k));
+    if (!(element_measure(*back, k) > 0))
+      throw Error("back mesh: element " + std::to_string(k + 1) +
+                  " has non-positive straight (P1) measure; the metric's back mesh must be a valid P1 mesh");
+  }
+  for (Index f = 0; f < mesh.facet_count(); ++f) back->add_facet(mesh.facet(f), mesh.facet_ref(f));
+  back->build_topology();
+  return back;
+}
+
+template <int D>
+std::vector<SymMat<D>> logarithms(const std::vector<SymMat<D>>& metrics) {
+  std::vector<SymMat<D>> logs(metrics.size());
+  for (std::size_t v = 0; v < metrics.size(); ++v) {
+    if (!is_spd(metrics[v])) throw Error("metric at vertex " + std::to_string(v + 1) + " is not positive definite");
+    logs[v] = log_spd(metrics[v]);
+  }
+  return logs;
+}
+
+}  // namespace
+
+template <int D>
+MetricField<D>::MetricField(const Mesh<D>& mesh, std::vector<SymMat<D>> log_metrics, bool)
+    : back_mesh_(straight_copy(mesh)), log_metrics_(std::move(log_metrics)) {
+  if (log_metrics_.size() != static_cast<std::size_t>(back_mesh_->vertex_count()))
+    throw Error("metric field: " + std::to_string(log_metrics_.size()) + " metrics for " +
+                std::to_string(back_mesh_->vertex_count()) + " vertices");
+  locator_ = std::make_unique<PointLocator<D>>(*back_mesh_);
+}
+
+template <int D>
+MetricField<D>::MetricField(const Mesh<D>& mesh, const std::vector<SymMat<D>>& metrics)
+    : MetricField(mesh, logarithms(metrics), true) {}
+
+template <int D>
+MetricField<D> MetricField<D>::from_log_metrics(const Mesh<D>& mesh, std::vector<SymMat<D>> log_metrics) {
+  return MetricField(mesh, std::move(log_metrics), true);
+}
+
+template <int D>
+typename MetricField<D>::Sample MetricField<D>::sample(const Vec<D>& x, Index hint) const {
+  Sample result{locator_->localize(x, hint), {}};
+  const auto& element = back_mesh_->element(result.where.element);
+  for (int i = 0; i <= D; ++i) result.log_metric += result.where.barycentrics[i] * log_metrics_[element[i]];
+  return result;
+}
+
+template <int D>
+std::array<SymMat<D>, D> MetricField<D>::log_metric_gradient(Index back_element) const {
+  auto gradients = barycentric_gradients<D>(locator_->element_points(back_element));
+  const auto& element = back_mesh_->element(back_element);
+  std::array<SymMat<D>, D> result{};
+  for (int i = 0; i < D; ++i)
+    for (int j = 0; j <= D; ++j) result[i] += gradients[j][i] * log_metrics_[element[j]];
+  return result;
+}
+
+template class MetricField<2>;
+template class MetricField<3>;
+
+}  // namespace hocav

@@ -1,0 +1,52 @@
+// MetricField<D>: the metric known on a back mesh (math.md §2). The back mesh is a P1 copy of the
+// input mesh, never modified, with the log-metric R_i = log M_i at each of its vertices; the metric
+// anywhere is M(X) = exp(Σ λ_i(X) R_i) in the back element that contains X (log-Euclidean
+// interpolation, eq 2), so repeated interpolation never dissipates anisotropy.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "geom/sym_mat.hpp"
+#include "metric/point_locator.hpp"
+
+namespace hocav {
+
+template <int D>
+class MetricField {
+ public:
+  // Copies the corners, elements and boundary facets of `mesh` as the back mesh and takes one
+  // metric per vertex. Throws Error naming the vertex for a metric that is not SPD, and the
+  // element for a back element of non-positive P1 measure.
+  MetricField(const Mesh<D>& mesh, const std::vector<SymMat<D>>& metrics);
+  // The same from log-metrics (any symmetric matrices), e.g. from an analytic field.
+  static MetricField from_log_metrics(const Mesh<D>& mesh, std::vector<SymMat<D>> log_metrics);
+
+  const Mesh<D>& back_mesh() const { return *back_mesh_; }
+  const PointLocator<D>& locator() const { return *locator_; }
+  const SymMat<D>& vertex_log_metric(Index back_vertex) const { return log_metrics_[back_vertex]; }
+
+  struct Sample {
+    Localization<D> where;
+    SymMat<D> log_metric;  // Σ λ_i R_i (affine extension just outside the back mesh)
+  };
+  // Thread-safe. `hint`: a back element near x, e.g. where the previous sample of an edge fell.
+  Sample sample(const Vec<D>& x, Index hint = kNoIndex) const;
+  SymMat<D> log_metric_at(const Vec<D>& x, Index hint = kNoIndex) const { return sample(x, hint).log_metric; }
+
+  // ∂(log M)/∂x_i = Σ_j (∂λ_j/∂x_i) R_j in back element k (constant inside it, math.md §6).
+  std::array<SymMat<D>, D> log_metric_gradient(Index back_element) const;
+
+ private:
+  MetricField(const Mesh<D>& mesh, std::vector<SymMat<D>> log_metrics, bool);
+
+  std::unique_ptr<Mesh<D>> back_mesh_;  // behind a pointer: the locator refers to it across moves
+  std::vector<SymMat<D>> log_metrics_;
+  std::unique_ptr<PointLocator<D>> locator_;
+};
+
+extern template class MetricField<2>;
+extern template class MetricField<3>;
+
+}  // namespace hocav

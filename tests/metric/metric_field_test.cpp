@@ -1,0 +1,85 @@
+#include "metric/metric_field.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "base/error.hpp"
+#include "cases/structured.hpp"
+#include "geom/sym_functions.hpp"
+
+namespace hocav {
+namespace {
+
+template <int D>
+SymMat<D> random_symmetric(std::mt19937& random, double scale) {
+  std::uniform_real_distribution<double> entry(-scale, scale);
+  SymMat<D> s;
+  for (double& e : s.entries) e = entry(random);
+  return s;
+}
+
+// A log-metric affine in x: log-Euclidean interpolation on any mesh reproduces it exactly, inside
+// the mesh and (affine extension) just outside.
+template <int D>
+void expect_affine_log_metric_is_reproduced(const Mesh<D>& mesh) {
+  std::mt19937 random(11);
+  SymMat<D> base = random_symmetric<D>(random, 4);
+  std::array<SymMat<D>, D> slope;
+  for (auto& s : slope) s = random_symmetric<D>(random, 2);
+  auto exact = [&](const Vec<D>& x) {
+    SymMat<D> value = base;
+    for (int i = 0; i < D; ++i) value += x[i] * slope[i];
+    return value;
+  };
+  std::vector<SymMat<D>> metrics;
+  for (const auto& p : mesh.vertices()) metrics.push_back(exp_sym(exact(p)));
+  MetricField<D> field(mesh, metrics);
+  std::uniform_real_distribution<double> coordinate(-0.01, 1.01);
+  for (int trial = 0; trial < 500; ++trial) {
+    Vec<D> x;
+    for (int i = 0; i < D; ++i) x[i] = coordinate(random);
+    auto sample = field.sample(x);
+    EXPECT_LT(frobenius_norm(sample.log_metric - exact(x)), 1e-9) << "trial " << trial;
+    auto gradient = field.log_metric_gradient(sample.where.element);
+    for (int i = 0; i < D; ++i) EXPECT_LT(frobenius_norm(gradient[i] - slope[i]), 1e-9);
+  }
+}
+
+TEST(MetricField, ReproducesAnAffineLogMetricIn2D) { expect_affine_log_metric_is_reproduced(generate_square(7)); }
+TEST(MetricField, ReproducesAnAffineLogMetricIn3D) { expect_affine_log_metric_is_reproduced(generate_cube(4)); }
+
+TEST(MetricField, InterpolationIsLogEuclideanNotLinear) {
+  // Two vertex metrics diag(1, 1e8) and diag(1e8, 1): the log-Euclidean mean at the midpoint is
+  // 1e4·I (a linear mean would be about 5e7·I).
+  Mesh<2> mesh;
+  mesh.add_vertex({{0, 0}});
+  mesh.add_vertex({{1, 0}});
+  mesh.add_vertex({{0, 1}});
+  mesh.add_element({0, 1, 2});
+  mesh.build_topology();
+  SymMat<2> a = SymMat<2>::from_diagonal({{1, 1e8}}), b = SymMat<2>::from_diagonal({{1e8, 1}});
+  MetricField<2> field(mesh, {a, b, b});
+  SymMat<2> middle = exp_sym(field.log_metric_at({{0.5, 0.25}}));
+  // λ = (0.25, 0.5, 0.25): exp(0.25 log a + 0.75 log b) = diag(1e6, 1e2).
+  EXPECT_NEAR(middle(0, 0) / 1e6, 1, 1e-12);
+  EXPECT_NEAR(middle(1, 1) / 1e2, 1, 1e-12);
+  EXPECT_NEAR(middle(0, 1), 0, 1e-9);
+}
+
+TEST(MetricField, RefusesNonSpdMetricsAndWrongCounts) {
+  Mesh<2> mesh = generate_square(1);
+  std::vector<SymMat<2>> metrics(4, SymMat<2>::identity());
+  metrics[2](1, 1) = -1;
+  try {
+    MetricField<2> field(mesh, metrics);
+    FAIL() << "accepted a non-SPD metric";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("vertex 3"), std::string::npos);
+  }
+  metrics.pop_back();
+  EXPECT_THROW(MetricField<2>(mesh, metrics), Error);
+}
+
+}  // namespace
+}  // namespace hocav
