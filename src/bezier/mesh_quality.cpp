@@ -1,0 +1,59 @@
+// Curved-element quality over a whole mesh (math.md §8, §11).
+#include "bezier/mesh_quality.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "bezier/p2_element.hpp"
+
+namespace hocav {
+
+template <int D>
+std::vector<JacobianQuality> mesh_jacobian_quality(const Mesh<D>& mesh, const RefinementOptions& options) {
+  std::vector<JacobianQuality> qualities(mesh.element_count());
+  for (Index k = 0; k < mesh.element_count(); ++k) qualities[k] = jacobian_quality(gather_p2_element(mesh, k), options);
+  return qualities;
+}
+
+ValueSummary summarize_values(std::span<const double> values, int bin_count, double histogram_lower,
+                              double histogram_upper) {
+  ValueSummary summary;
+  summary.histogram_lower = histogram_lower;
+  summary.histogram_upper = histogram_upper;
+  summary.histogram.assign(std::max(bin_count, 1), 0);
+  if (values.empty()) return summary;
+  summary.count = checked_index(values.size(), "values");
+  summary.min = summary.max = values[0];
+  double sum = 0.0;
+  const double bin_width = (histogram_upper - histogram_lower) / double(summary.histogram.size());
+  for (double value : values) {
+    summary.min = std::min(summary.min, value);
+    summary.max = std::max(summary.max, value);
+    sum += value;
+    if (!(value > 0.0)) ++summary.invalid_count;  // NaN included
+    if (value < histogram_lower) {
+      ++summary.below;
+    } else if (value > histogram_upper) {
+      ++summary.above;
+    } else if (!std::isnan(value)) {
+      const auto bin = static_cast<std::size_t>((value - histogram_lower) / bin_width);
+      ++summary.histogram[std::min(bin, summary.histogram.size() - 1)];
+    }
+  }
+  summary.average = sum / double(values.size());
+  return summary;
+}
+
+MeshJacobianSummary summarize_jacobian_quality(std::span<const JacobianQuality> qualities, int bin_count) {
+  std::vector<double> min_normalized(qualities.size()), scaled(qualities.size());
+  for (std::size_t k = 0; k < qualities.size(); ++k) {
+    min_normalized[k] = qualities[k].min_normalized_jacobian;
+    scaled[k] = qualities[k].scaled_jacobian;
+  }
+  return {summarize_values(min_normalized, bin_count, 0.0, 1.0), summarize_values(scaled, bin_count, 0.0, 1.0)};
+}
+
+template std::vector<JacobianQuality> mesh_jacobian_quality(const Mesh<2>&, const RefinementOptions&);
+template std::vector<JacobianQuality> mesh_jacobian_quality(const Mesh<3>&, const RefinementOptions&);
+
+}  // namespace hocav
