@@ -1,0 +1,100 @@
+#include "curve/edge_length.hpp"
+
+#include <cmath>
+
+#include "geom/sym_functions.hpp"
+
+namespace hocav {
+namespace {
+
+// The P2 Lagrange basis along the edge (math.md §4).
+struct EdgeBasis {
+  double a, middle, b;
+};
+EdgeBasis edge_basis(double t) { return {(1 - t) * (1 - 2 * t), 4 * t * (1 - t), t * (2 * t - 1)}; }
+
+template <int D>
+SymMat<D> outer(const Vec<D>& u, const Vec<D>& v) {
+  SymMat<D> s;
+  for (int i = 0; i < D; ++i)
+    for (int j = 0; j <= i; ++j) s(i, j) = 0.5 * (u[i] * v[j] + u[j] * v[i]);
+  return s;
+}
+
+}  // namespace
+
+template <int D>
+EdgeLengthFunction<D>::EdgeLengthFunction(const Vec<D>& a, const Vec<D>& b, const SymMat<D>& log_a,
+                                          const SymMat<D>& log_b, const QuadratureRule& rule)
+    : a_(a), b_(b), log_a_(log_a), log_b_(log_b), rule_(rule), fixed_metrics_(rule.nodes.size()) {
+  for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
+    EdgeBasis phi = edge_basis(rule.nodes[q]);
+    if (phi.middle == 0) fixed_metrics_[q] = exp_sym(phi.a * log_a + phi.b * log_b);
+  }
+}
+
+template <int D>
+EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const SymMat<D>& log_node,
+                                                   const std::array<SymMat<D>, D>& log_node_gradient,
+                                                   Order order) const {
+  EdgeLengthValue<D> result;
+  for (std::size_t q = 0; q < rule_.nodes.size(); ++q) {
+    const double t = rule_.nodes[q], w = rule_.weights[q];
+    const EdgeBasis phi = edge_basis(t);
+    const double du = 4 * (1 - 2 * t);  // ∂γ'(t)/∂X = du · I
+    const Vec<D> u = (4 * t - 3) * a_ + du * node + (4 * t - 1) * b_;
+
+    // g = uᵀ E u; ∂_i g = 2 du (E u)_i + uᵀ ∂_iE u; ∂_ij g = 2 du² E_ij + 2 du ((∂_jE u)_i + (∂_iE u)_j) + uᵀ ∂_ijE u.
+    double g;
+    Vec<D> dg{};
+    SymMat<D> d2g{};
+    if (phi.middle == 0) {
+      const SymMat<D>& e = fixed_metrics_[q];
+      const Vec<D> eu = e * u;
+      g = dot(u, eu);
+      if (order != Order::kValue) dg = (2 * du) * eu;
+      if (order == Order::kHessian) d2g = (2 * du * du) * e;
+    } else {
+      ExpFrechet<D> exp_t(phi.a * log_a_ + phi.middle * log_node + phi.b * log_b_);
+      const SymMat<D>& e = exp_t.value();
+      const Vec<D> eu = e * u;
+      g = dot(u, eu);
+      if (order != Order::kValue) {
+        // uᵀ Dexp[H] u = <Dexp[u uᵀ], H> (Dexp is self-adjoint): one derivative serves every direction.
+        const SymMat<D> adjoint = exp_t.derivative(outer(u, u));
+        std::array<SymMat<D>, D> directions;
+        for (int i = 0; i < D; ++i) {
+          directions[i] = phi.middle * log_node_gradient[i];
+          dg[i] = 2 * du * eu[i] + frobenius_dot(adjoint, directions[i]);
+        }
+        if (order == Order::kHessian) {
+          std::array<Vec<D>, D> de_u;  // ∂_iE u
+          for (int i = 0; i < D; ++i) de_u[i] = exp_t.derivative(directions[i]) * u;
+          for (int i = 0; i < D; ++i)
+            for (int j = 0; j <= i; ++j)
+              d2g(i, j) = 2 * du * du * e(i, j) + 2 * du * (de_u[j][i] + de_u[i][j]) +
+                          dot(u, exp_t.second_derivative(directions[i], directions[j]) * u);
+        }
+      }
+    }
+    // ℓ = Σ w sqrt(g): ∂ℓ = w ∂g / (2√g), ∂²ℓ = w (∂²g / (2√g) − ∂g ∂gᵀ / (4 g^{3/2})).
+    const double root = std::sqrt(g);
+    result.length += w * root;
+    if (order == Order::kValue || root == 0) continue;
+    result.gradient += (w / (2 * root)) * dg;
+    if (order == Order::kHessian)
+      for (int i = 0; i < D; ++i)
+        for (int j = 0; j <= i; ++j) result.hessian(i, j) += w * (d2g(i, j) / (2 * root) - dg[i] * dg[j] / (4 * g * root));
+  }
+  return result;
+}
+
+template <int D>
+double EdgeLengthFunction<D>::length(const Vec<D>& node, const SymMat<D>& log_node) const {
+  return evaluate(node, log_node, {}, Order::kValue).length;
+}
+
+template class EdgeLengthFunction<2>;
+template class EdgeLengthFunction<3>;
+
+}  // namespace hocav

@@ -1,0 +1,162 @@
+#include "curve/edge_optimizer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geom/sym_functions.hpp"
+
+namespace hocav {
+namespace {
+
+// Solves H p = −g for a symmetric positive definite H by Cholesky; false when H is not.
+template <int D>
+bool newton_direction(const SymMat<D>& h, const Vec<D>& g, Vec<D>& p) {
+  double l[D][D] = {};
+  for (int j = 0; j < D; ++j) {
+    double diagonal = h(j, j);
+    for (int k = 0; k < j; ++k) diagonal -= l[j][k] * l[j][k];
+    if (!(diagonal > 0)) return false;
+    l[j][j] = std::sqrt(diagonal);
+    for (int i = j + 1; i < D; ++i) {
+      double value = h(i, j);
+      for (int k = 0; k < j; ++k) value -= l[i][k] * l[j][k];
+      l[i][j] = value / l[j][j];
+    }
+  }
+  Vec<D> y;
+  for (int i = 0; i < D; ++i) {
+    double value = -g[i];
+    for (int k = 0; k < i; ++k) value -= l[i][k] * y[k];
+    y[i] = value / l[i][i];
+  }
+  for (int i = D - 1; i >= 0; --i) {
+    double value = y[i];
+    for (int k = i + 1; k < D; ++k) value -= l[k][i] * p[k];
+    p[i] = value / l[i][i];
+  }
+  return true;
+}
+
+}  // namespace
+
+template <int D>
+EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b,
+                                         const SymMat<D>& log_a, const SymMat<D>& log_b, const Vec<D>& start,
+                                         Index hint, const EdgeOptimizerOptions& options) {
+  using Order = typename EdgeLengthFunction<D>::Order;
+  const EdgeLengthFunction<D> function(a, b, log_a, log_b, *options.rule);
+  const double edge_size = norm(b - a);
+  const Vec<D> midpoint = 0.5 * (a + b);
+  const double max_displacement = options.max_displacement * edge_size;
+  EdgeOptimization<D> result;
+  // The node moves in the bisector plane of the edge: sliding it along the edge changes only the
+  // parametrization, which the 3-point rule cannot see (a flat valley in a uniform metric).
+  const Vec<D> direction = (1 / edge_size) * (b - a);
+  auto onto_plane = [&](const Vec<D>& v) { return v - dot(v, direction) * direction; };
+  const Vec<D> first = midpoint + onto_plane(start - midpoint);
+
+  auto sample = field.sample(first, hint);
+  result.node = first;
+  result.back_element = sample.where.element;
+  auto value = function.evaluate(first, sample.log_metric, field.log_metric_gradient(sample.where.element),
+                                 Order::kHessian);
+  ++result.evaluations;
+  double trust = 0.25 * edge_size;
+
+  for (; result.iterations < options.max_iterations; ++result.iterations) {
+    // Newton in the plane: project gradient and Hessian, and make the Hessian regular along the
+    // edge so the step has no component there.
+    const Vec<D> gradient = onto_plane(value.gradient);
+    SymMat<D> projected;
+    for (int i = 0; i < D; ++i) {
+      Vec<D> unit{};
+      unit[i] = 1;
+      Vec<D> column = onto_plane(value.hessian * onto_plane(unit));
+      for (int j = 0; j <= i; ++j) projected(i, j) = column[j];
+    }
+    double scale = std::max(1e-300, std::abs(trace(projected)));
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j <= i; ++j) projected(i, j) += scale * direction[i] * direction[j];
+    // Shift the Hessian until it is positive definite: between Newton and gradient descent.
+    Vec<D> step;
+    SymMat<D> h = projected;
+    double shift = 0;
+    while (!newton_direction(h, gradient, step)) {
+      shift = shift == 0 ? 1e-8 * scale : 10 * shift;
+      h = projected + shift * SymMat<D>::identity();
+      if (!std::isfinite(shift)) return result;
+    }
+    step = onto_plane(step);
+    double step_size = norm(step);
+    if (step_size > trust) step = (trust / step_size) * step, step_size = trust;
+
+    // Backtracking: accept the first trial that decreases ℓ (kinks rule out stricter tests).
+    bool accepted = false;
+    for (int halving = 0; halving < 12 && !accepted; ++halving, step = 0.5 * step, step_size *= 0.5) {
+      Vec<D> trial = result.node + step;
+      Vec<D> offset = trial - midpoint;
+      double displacement = norm(offset);
+      if (displacement > max_displacement) trial = midpoint + (max_displacement / displacement) * offset;
+      auto trial_sample = field.sample(trial, result.back_element);
+      ++result.evaluations;
+      double trial_length = function.length(trial, trial_sample.log_metric);
+      if (trial_length < value.length) {
+        accepted = true;
+        result.node = trial;
+        result.back_element = trial_sample.where.element;
+        value = function.evaluate(trial, trial_sample.log_metric,
+                                  field.log_metric_gradient(trial_sample.where.element), Order::kHessian);
+      }
+    }
+    if (!accepted || step_size < options.step_tolerance * edge_size) {
+      if (accepted) ++result.iterations;
+      break;
+    }
+    trust = std::min(0.5 * edge_size, 2 * step_size);
+  }
+  result.length = value.length;
+
+  if (options.measure_gain) {
+    result.straight_length = high_precision_edge_length(field, a, b, log_a, log_b, midpoint, hint);
+    result.optimized_length = high_precision_edge_length(field, a, b, log_a, log_b, result.node, result.back_element);
+    result.gain = 1 - result.optimized_length / result.straight_length;
+  }
+  return result;
+}
+
+template <int D>
+double high_precision_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b,
+                                  const SymMat<D>& log_a, const SymMat<D>& log_b, const Vec<D>& node, Index hint) {
+  EdgeLengthFunction<D> function(a, b, log_a, log_b, high_precision_rule());
+  return function.length(node, field.log_metric_at(node, hint));
+}
+
+template <int D>
+double true_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b, const Vec<D>& node,
+                        const QuadratureRule& rule) {
+  double length = 0;
+  Index hint = kNoIndex;
+  for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
+    const double t = rule.nodes[q];
+    const Vec<D> point = (1 - t) * (1 - 2 * t) * a + 4 * t * (1 - t) * node + t * (2 * t - 1) * b;
+    const Vec<D> tangent = (4 * t - 3) * a + 4 * (1 - 2 * t) * node + (4 * t - 1) * b;
+    auto sample = field.sample(point, hint);
+    hint = sample.where.element;
+    length += rule.weights[q] * std::sqrt(quadratic_form(exp_sym(sample.log_metric), tangent));
+  }
+  return length;
+}
+
+#define HOCAV_INSTANTIATE(D)                                                                                        \
+  template EdgeOptimization<D> optimize_edge_length(const MetricField<D>&, const Vec<D>&, const Vec<D>&,            \
+                                                    const SymMat<D>&, const SymMat<D>&, const Vec<D>&, Index,        \
+                                                    const EdgeOptimizerOptions&);                                   \
+  template double high_precision_edge_length(const MetricField<D>&, const Vec<D>&, const Vec<D>&, const SymMat<D>&, \
+                                             const SymMat<D>&, const Vec<D>&, Index);                               \
+  template double true_edge_length(const MetricField<D>&, const Vec<D>&, const Vec<D>&, const Vec<D>&,             \
+                                   const QuadratureRule&);
+HOCAV_INSTANTIATE(2)
+HOCAV_INSTANTIATE(3)
+#undef HOCAV_INSTANTIATE
+
+}  // namespace hocav

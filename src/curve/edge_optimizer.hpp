@@ -1,0 +1,56 @@
+// Length optimization of one P2 edge (math.md §7): minimize ℓ(X) over the Lagrange node X in the
+// bisector plane of the edge (sliding along the edge only reparametrizes it), endpoints fixed, re-localizing X in the back mesh at every iterate. ℓ is only piecewise smooth
+// (∇λ jumps across back-mesh faces), so the method is a safeguarded Newton iteration: Newton steps
+// where the Hessian is positive definite (shifted towards gradient descent where it is not), a
+// trust radius tied to the edge's length, and backtracking that accepts only decrease.
+#pragma once
+
+#include "curve/edge_length.hpp"
+#include "metric/metric_field.hpp"
+
+namespace hocav {
+
+struct EdgeOptimizerOptions {
+  const QuadratureRule* rule = &trapezoid_rule();
+  int max_iterations = 30;
+  // Stop when a step moves the node less than this fraction of |B − A|.
+  double step_tolerance = 1e-7;
+  // Largest distance of the node from the straight midpoint, as a fraction of |B − A|.
+  double max_displacement = 0.5;
+  // Also compute the high-precision straight and optimized lengths (and the gain).
+  bool measure_gain = false;
+};
+
+template <int D>
+struct EdgeOptimization {
+  Vec<D> node{};
+  Index back_element = kNoIndex;  // where the node was last localized (a hint for neighbours)
+  double length = 0;              // ℓ(node) in the optimizer's rule
+  double straight_length = 0;     // high-precision ℓ of the straight edge (measure_gain)
+  double optimized_length = 0;    // high-precision ℓ at the optimum (measure_gain)
+  double gain = 0;                // 1 − optimized / straight (measure_gain)
+  int iterations = 0;
+  int evaluations = 0;            // back-mesh localizations + length evaluations
+};
+
+// The edge is (a, b) with vertex log-metrics (log_a, log_b); `start` is the first node (the
+// current one, or the straight midpoint); `hint` a back element near it.
+template <int D>
+EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b,
+                                         const SymMat<D>& log_a, const SymMat<D>& log_b, const Vec<D>& start,
+                                         Index hint = kNoIndex, const EdgeOptimizerOptions& options = {});
+
+// High-precision ℓ of the P2 edge (a, node, b) in the closed form of eq 12 (metric from the back
+// mesh at the node only).
+template <int D>
+double high_precision_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b,
+                                  const SymMat<D>& log_a, const SymMat<D>& log_b, const Vec<D>& node,
+                                  Index hint = kNoIndex);
+
+// The "true" Riemannian length of the curve in the back-mesh field: every quadrature point of the
+// rule is localized and its metric interpolated from the back mesh (a diagnostic, math.md §5).
+template <int D>
+double true_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b, const Vec<D>& node,
+                        const QuadratureRule& rule);
+
+}  // namespace hocav

@@ -1,0 +1,112 @@
+#include "curve/edge_optimizer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cases/structured.hpp"
+#include "geom/sym_functions.hpp"
+#include "metric/analytic_metric.hpp"
+
+namespace hocav {
+namespace {
+
+// The square [−1, 1]² with n cells per side.
+Mesh<2> centred_square(int n) {
+  Mesh<2> mesh = generate_square(n);
+  for (Index v = 0; v < mesh.vertex_count(); ++v) mesh.vertex(v) = 2.0 * mesh.vertex(v) - Vec2{{1, 1}};
+  return mesh;
+}
+
+struct ShearCase {
+  AnalyticMetricSpec spec;
+  Mesh<2> back = centred_square(120);
+  std::unique_ptr<MetricField<2>> field;
+  Vec2 a, b;
+  SymMat<2> log_a, log_b;
+
+  explicit ShearCase(double h_min) {
+    spec.name = "shear-circle";
+    spec.h_min = h_min;
+    spec.h_max = 0.1;
+    spec.radius = 0.75;
+    spec.width = 0.05;
+    field = std::make_unique<MetricField<2>>(back, analytic_metric_at_vertices(spec, back));
+    // An edge whose ends lie on the layer's circle, about one h_max long.
+    double half_angle = std::asin(0.05 / spec.radius);
+    a = Vec2{{spec.radius * std::cos(half_angle), -spec.radius * std::sin(half_angle)}};
+    b = Vec2{{spec.radius * std::cos(half_angle), spec.radius * std::sin(half_angle)}};
+    log_a = field->log_metric_at(a);
+    log_b = field->log_metric_at(b);
+  }
+
+  double objective(const Vec2& node) const {
+    EdgeLengthFunction<2> f(a, b, log_a, log_b, trapezoid_rule());
+    return f.length(node, field->log_metric_at(node));
+  }
+
+  // Brute force over the bisector line of the edge: the best node on ever finer grids.
+  Vec2 brute_force_minimum() const {
+    Vec2 normal = (1 / norm(b - a)) * Vec2{{a[1] - b[1], b[0] - a[0]}};
+    Vec2 best = 0.5 * (a + b);
+    double best_value = objective(best), radius = 0.5 * norm(b - a);
+    for (int level = 0; level < 20; ++level) {
+      Vec2 centre = best;
+      for (int i = -50; i <= 50; ++i) {
+        Vec2 node = centre + (radius * i / 50) * normal;
+        double value = objective(node);
+        if (value < best_value) best_value = value, best = node;
+      }
+      radius *= 0.1;
+    }
+    return best;
+  }
+};
+
+TEST(EdgeOptimizer, UniformMetricGivesTheStraightEdgeAndNoGain) {
+  Mesh<3> back = generate_cube(4);
+  AnalyticMetricSpec uniform;
+  uniform.h = 0.25;
+  MetricField<3> field(back, analytic_metric_at_vertices(uniform, back));
+  Vec3 a{{0.1, 0.2, 0.3}}, b{{0.6, 0.5, 0.9}};
+  SymMat<3> log_metric = field.log_metric_at(a);
+  EdgeOptimizerOptions options;
+  options.measure_gain = true;
+  // Start away from the midpoint: the optimizer must come back to it.
+  auto result = optimize_edge_length(field, a, b, log_metric, log_metric, 0.5 * (a + b) + Vec3{{0.05, -0.04, 0.03}},
+                                     kNoIndex, options);
+  EXPECT_LT(norm(result.node - 0.5 * (a + b)), 1e-8 * norm(b - a));
+  EXPECT_NEAR(result.gain, 0, 1e-12);
+  EXPECT_NEAR(result.optimized_length, norm(b - a) / 0.25, 1e-12);
+}
+
+TEST(EdgeOptimizer, EdgeTangentToTheShearLayerBendsAlongIt) {
+  ShearCase shear(0.01);
+  EdgeOptimizerOptions options;
+  options.measure_gain = true;
+  auto result = optimize_edge_length(*shear.field, shear.a, shear.b, shear.log_a, shear.log_b,
+                                     0.5 * (shear.a + shear.b), kNoIndex, options);
+  // The chord lies inside the circle; the optimal node moves out towards the circle.
+  EXPECT_GT(norm(result.node), norm(0.5 * (shear.a + shear.b)) + 1e-3);
+  EXPECT_LT(std::abs(result.node[1]), 1e-6);  // symmetric edge, symmetric optimum
+  EXPECT_GT(result.gain, 0.05);
+  // It is the minimum a brute-force search finds.
+  Vec2 brute = shear.brute_force_minimum();
+  EXPECT_LT(norm(result.node - brute), 1e-6 * norm(shear.b - shear.a));
+  EXPECT_LE(result.length, shear.objective(brute) * (1 + 1e-10));
+}
+
+TEST(EdgeOptimizer, AnisotropyTenThousandDoesNotBreakIt) {
+  ShearCase shear(1e-5);  // h_max / h_min = 1e4
+  EdgeOptimizerOptions options;
+  options.measure_gain = true;
+  auto result = optimize_edge_length(*shear.field, shear.a, shear.b, shear.log_a, shear.log_b,
+                                     0.5 * (shear.a + shear.b), kNoIndex, options);
+  ASSERT_TRUE(std::isfinite(result.length));
+  EXPECT_GT(result.gain, 0.5);
+  Vec2 brute = shear.brute_force_minimum();
+  EXPECT_LE(result.length, shear.objective(brute) * (1 + 1e-8));
+}
+
+}  // namespace
+}  // namespace hocav
