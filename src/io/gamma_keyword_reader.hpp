@@ -6,6 +6,8 @@
 //   read_count()           the entity count that opens a keyword's data
 //   read_header_integer()  a small integer of a keyword header (solution type codes)
 //   expect_records(...)    before reading `count` records: binary checks they fit in the block
+//   reserve_hint(count)    how many records to reserve once expected: all of them when the binary
+//                          block holds them, at most 2^20 for text (vectors grow past it)
 //   read_integer(entity), read_real(entity)
 //   fail(what, entity)     throws Error "<file>: <keyword>: <what>, entity N[, line L]"
 // The binary layout (endianness code, 32/64-bit positions, counts, integers and reals by version) is
@@ -13,6 +15,7 @@
 // allocated from them; NextPos must move forward inside the file, so a corrupt chain cannot loop.
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <cstring>
@@ -34,6 +37,8 @@ bool is_binary_file(const std::string& path);
 // What the two readers share: the file header, the current keyword, warnings.
 class KeywordReaderState {
  public:
+  KeywordReaderState(const KeywordReaderState&) = delete;  // the text reader keeps views into its buffer
+  KeywordReaderState& operator=(const KeywordReaderState&) = delete;
   const std::string& path() const { return path_; }
   int version() const { return version_; }
   int dimension() const { return dimension_; }  // 0 until a Dimension keyword was read
@@ -68,6 +73,7 @@ class TextKeywordReader : public KeywordReaderState {
   Index read_count();
   int read_header_integer();
   void expect_records(Index, int, int) {}  // text has no sizes to check ahead
+  std::size_t reserve_hint(Index count) const { return std::min(static_cast<std::size_t>(count), std::size_t{1} << 20); }
   std::int64_t read_integer(Index) { return scanner_.next_integer(keyword_); }
   double read_real(Index) { return scanner_.next_real(keyword_); }
   [[noreturn]] void fail(std::string_view what, Index entity = kNoIndex) const;
@@ -86,6 +92,7 @@ class BinaryKeywordReader : public KeywordReaderState {
   Index read_count();
   int read_header_integer();
   void expect_records(Index count, int integers, int reals);
+  std::size_t reserve_hint(Index count) const { return static_cast<std::size_t>(count); }
   std::int64_t read_integer(Index) { return version_ >= 4 ? read_word<std::int64_t>() : read_word<std::int32_t>(); }
   double read_real(Index) { return version_ == 1 ? read_word<float>() : read_word<double>(); }
   [[noreturn]] void fail(std::string_view what, Index entity = kNoIndex) const;

@@ -3,11 +3,15 @@
 // once over the ASCII and binary keyword readers, the writing once over the two writers.
 #include "io/gamma_mesh.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <set>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "base/error.hpp"
 #include "io/gamma_keyword_reader.hpp"
@@ -33,12 +37,6 @@ struct MeshRecords {
   std::map<int, std::vector<int>> orderings;  // by ordering keyword code: a Bézier index row per node
   std::vector<Index> corners, ridges, required_vertices;
 };
-
-// Reserve at most this many entities from a count before the data proves it (text files cannot be
-// checked ahead); vectors grow past it as the data comes.
-constexpr Index kMaxReserve = 1 << 20;
-
-std::size_t bounded(Index count) { return static_cast<std::size_t>(std::min(count, kMaxReserve)); }
 
 // The width of a row of an ordering keyword, as libMeshb defines them: the full Bézier multi-index
 // for triangles and tetrahedra, a single integer (the weight of the first vertex) for edges.
@@ -71,8 +69,8 @@ void read_vertices(Reader& reader, MeshRecords& records) {
   if (dimension == 0) reader.fail("no Dimension before the vertices");
   const Index count = reader.read_count();
   reader.expect_records(count, 1, dimension);
-  records.coordinates.reserve(bounded(count) * dimension);
-  records.node_refs.reserve(bounded(count));
+  records.coordinates.reserve(reader.reserve_hint(count) * dimension);
+  records.node_refs.reserve(reader.reserve_hint(count));
   for (Index v = 0; v < count; ++v) {
     for (int i = 0; i < dimension; ++i) {
       double x = reader.read_real(v);
@@ -87,8 +85,8 @@ template <class Reader>
 void read_simplices(Reader& reader, const SimplexKeyword& keyword, NodeTable& table) {
   const Index count = reader.read_count();
   reader.expect_records(count, keyword.node_count + 1, 0);
-  table.nodes.reserve(bounded(count) * keyword.node_count);
-  table.refs.reserve(bounded(count));
+  table.nodes.reserve(reader.reserve_hint(count) * keyword.node_count);
+  table.refs.reserve(reader.reserve_hint(count));
   for (Index k = 0; k < count; ++k) {
     for (int i = 0; i < keyword.node_count; ++i) table.nodes.push_back(read_id(reader, k, "vertex"));
     table.refs.push_back(read_ref(reader, k));
@@ -99,7 +97,7 @@ template <class Reader>
 void read_id_list(Reader& reader, std::vector<Index>& ids, const char* what) {
   const Index count = reader.read_count();
   reader.expect_records(count, 1, 0);
-  ids.reserve(bounded(count));
+  ids.reserve(reader.reserve_hint(count));
   for (Index i = 0; i < count; ++i) ids.push_back(read_id(reader, i, what));
 }
 
@@ -262,6 +260,7 @@ std::pair<int, MeshRecords> read_file(Reader&& reader) {
   return {reader.dimension(), std::move(records)};
 }
 
+// Reads no further than the Dimension keyword (usually the first).
 template <class Reader>
 int declared_dimension(Reader&& reader) {
   while (reader.dimension() == 0 && reader.next_keyword())
@@ -315,12 +314,12 @@ void write_records(Writer& out, const Mesh<D>& mesh, const std::string& path) {
     const std::array<int, 2> ends = local_edge(static_cast<int>(vertices.size()) - 1, e);
     return edge_node_of(vertices[ends[0]], vertices[ends[1]]);
   };
-  auto facets = [&](Index f) -> const auto& { return mesh.facet(f); };
-  auto facet_ref = [&](Index f) { return mesh.facet_ref(f); };
+  // By dimension, as Gamma files usually are: (3D) feature lines, facets, elements.
   if constexpr (D == 3)
     write_simplices(1, mesh.line_count(), [&](Index l) -> const auto& { return mesh.line(l); },
                     [&](Index l) { return mesh.line_ref(l); }, mid_node_by_search);
-  write_simplices(D - 1, mesh.facet_count(), facets, facet_ref, mid_node_by_search);
+  write_simplices(D - 1, mesh.facet_count(), [&](Index f) -> const auto& { return mesh.facet(f); },
+                  [&](Index f) { return mesh.facet_ref(f); }, mid_node_by_search);
   write_simplices(D, mesh.element_count(), [&](Index k) -> const auto& { return mesh.element(k); },
                   [&](Index k) { return mesh.element_ref(k); },
                   [&](Index k, const auto&, int e) { return vertex_count + mesh.element_edge(k, e) + 1; });

@@ -1,7 +1,6 @@
 // Gamma solution files: SolAtVertices through the shared keyword readers and writers.
 #include "io/solution_file.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 #include "base/error.hpp"
@@ -14,7 +13,6 @@ namespace hocav {
 namespace {
 
 constexpr int kMaxFields = 1000;  // libMeshb's limit on the types of one keyword
-constexpr Index kMaxReserve = 1 << 20;
 
 template <class Reader>
 void read_sol_at_vertices(Reader& reader, SolutionFileContent& content) {
@@ -32,7 +30,7 @@ void read_sol_at_vertices(Reader& reader, SolutionFileContent& content) {
   }
   reader.expect_records(content.count, 0, reals_per_row);
   for (SolutionField& field : content.fields)
-    field.values.reserve(static_cast<std::size_t>(std::min(content.count, kMaxReserve)) * field.components());
+    field.values.reserve(reader.reserve_hint(content.count) * field.components());
   for (Index row = 0; row < content.count; ++row)
     for (SolutionField& field : content.fields)
       for (int c = 0; c < field.components(); ++c) {
