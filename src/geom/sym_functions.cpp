@@ -1,0 +1,164 @@
+// Spectral functions of symmetric matrices and the Fréchet derivatives of exp (math.md §1, §6).
+#include "geom/sym_functions.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "base/error.hpp"
+
+namespace hocav {
+namespace {
+
+// Below this spread the difference quotients (e^a − e^b)/(a − b) and (exp[a,b] − exp[b,c])/(a − c) would cancel
+// more than a factor ~4, so closer arguments go through expm1 or a Taylor series instead.
+constexpr double kDirectQuotientSpread = 1.0;
+
+template <int D, class Function>
+SymMat<D> spectral_map(const SymEigen<D>& eigen, Function f) {
+  Vec<D> mapped;
+  for (int k = 0; k < D; ++k) mapped[k] = f(eigen.values[k]);
+  return SymMat<D>::from_eigen(eigen.vectors, mapped);
+}
+
+template <int D>
+SymEigen<D> checked_spd_eigen(const SymMat<D>& m, const char* caller) {
+  SymEigen<D> eigen = spd_eigen(m);
+  if (!is_positive_definite(eigen)) {
+    char smallest[32];
+    std::snprintf(smallest, sizeof smallest, "%.3g", eigen.values[0]);
+    throw Error(std::string(caller) + ": the matrix is not symmetric positive definite (smallest eigenvalue " +
+                smallest + ")");
+  }
+  return eigen;
+}
+
+// exp[a, b] from e^a and e^b.
+double first_difference(double a, double b, double exp_a, double exp_b) {
+  double delta = a - b;
+  if (std::abs(delta) >= kDirectQuotientSpread) return (exp_a - exp_b) / delta;
+  return delta == 0.0 ? exp_b : exp_b * (std::expm1(delta) / delta);
+}
+
+// exp[lo, mid, hi] for lo ≤ mid ≤ hi, given upper = exp[hi, mid] and lower = exp[mid, lo].
+double second_difference(double lo, double mid, double hi, double upper, double lower) {
+  if (hi - lo >= kDirectQuotientSpread) return (upper - lower) / (hi - lo);
+  // exp[x, y, z] = Σ_k h_k(x, y, z)/(k+2)! with h_k the complete homogeneous polynomials, about the centre so
+  // that |x|, |y|, |z| ≤ 1/2: the terms fall below 1e-17 of the sum by k = 16.
+  constexpr int kTerms = 16;
+  double centre = 0.5 * (lo + hi);
+  double x = hi - centre, y = mid - centre, z = lo - centre;
+  double power_x = 1.0, h_xy = 1.0, h_xyz = 1.0, inverse_factorial = 0.5, sum = 0.5;
+  for (int k = 1; k <= kTerms; ++k) {
+    power_x *= x;
+    h_xy = power_x + y * h_xy;  // h_k(x, y) = x^k + y h_{k−1}(x, y)
+    h_xyz = h_xy + z * h_xyz;   // h_k(x, y, z) = h_k(x, y) + z h_{k−1}(x, y, z)
+    inverse_factorial /= k + 2;
+    sum += h_xyz * inverse_factorial;
+  }
+  return std::exp(centre) * sum;
+}
+
+}  // namespace
+
+template <int D>
+bool is_spd(const SymMat<D>& m) {
+  return is_positive_definite(spd_eigen(m));
+}
+
+template <int D>
+SymMat<D> log_spd(const SymMat<D>& m) {
+  return spectral_map(checked_spd_eigen(m, "log_spd"), [](double x) { return std::log(x); });
+}
+
+template <int D>
+SymMat<D> exp_sym(const SymMat<D>& t) {
+  return spectral_map(sym_eigen(t), [](double x) { return std::exp(x); });
+}
+
+template <int D>
+SymMat<D> pow_spd(const SymMat<D>& m, double p) {
+  return spectral_map(checked_spd_eigen(m, "pow_spd"), [p](double x) { return std::pow(x, p); });
+}
+
+template <int D>
+SymMat<D> sqrt_spd(const SymMat<D>& m) {
+  return spectral_map(checked_spd_eigen(m, "sqrt_spd"), [](double x) { return std::sqrt(x); });
+}
+
+double exp_divided_difference(double a, double b) { return first_difference(a, b, std::exp(a), std::exp(b)); }
+
+double exp_divided_difference(double a, double b, double c) {
+  std::array<double, 3> sorted = {a, b, c};
+  std::sort(sorted.begin(), sorted.end());
+  auto [lo, mid, hi] = sorted;
+  return second_difference(lo, mid, hi, exp_divided_difference(hi, mid), exp_divided_difference(mid, lo));
+}
+
+template <int D>
+ExpFrechet<D>::ExpFrechet(const SymMat<D>& log_metric) : eigen_(sym_eigen(log_metric)) {
+  Vec<D> exp_values;
+  for (int k = 0; k < D; ++k) exp_values[k] = std::exp(eigen_.values[k]);
+  value_ = SymMat<D>::from_eigen(eigen_.vectors, exp_values);
+  for (int k = 0; k < D; ++k)
+    for (int l = 0; l <= k; ++l)
+      first_differences_(k, l) = first_difference(eigen_.values[k], eigen_.values[l], exp_values[k], exp_values[l]);
+}
+
+template <int D>
+SymMat<D> ExpFrechet<D>::derivative(const SymMat<D>& direction) const {
+  SymMat<D> in_eigenbasis = congruence_transposed(eigen_.vectors, direction);
+  for (int k = 0; k < SymMat<D>::kEntryCount; ++k) in_eigenbasis.entries[k] *= first_differences_.entries[k];
+  return congruence(eigen_.vectors, in_eigenbasis);
+}
+
+template <int D>
+SymMat<D> ExpFrechet<D>::second_derivative(const SymMat<D>& direction1, const SymMat<D>& direction2) const {
+  // exp[θi, θj, θk] is symmetric in its arguments: compute it for i ≤ j ≤ k (ascending θ) and copy it to the
+  // permutations.
+  std::array<std::array<std::array<double, D>, D>, D> second;
+  const Vec<D>& theta = eigen_.values;
+  for (int i = 0; i < D; ++i)
+    for (int j = i; j < D; ++j)
+      for (int k = j; k < D; ++k) {
+        double f = second_difference(theta[i], theta[j], theta[k], first_differences_(k, j), first_differences_(j, i));
+        second[i][j][k] = second[i][k][j] = second[j][i][k] = second[j][k][i] = second[k][i][j] = second[k][j][i] = f;
+      }
+  SymMat<D> a = congruence_transposed(eigen_.vectors, direction1);
+  SymMat<D> b = congruence_transposed(eigen_.vectors, direction2);
+  SymMat<D> in_eigenbasis;
+  for (int k = 0; k < D; ++k)
+    for (int l = 0; l <= k; ++l)
+      for (int m = 0; m < D; ++m) in_eigenbasis(k, l) += second[k][m][l] * (a(k, m) * b(m, l) + b(k, m) * a(m, l));
+  return congruence(eigen_.vectors, in_eigenbasis);
+}
+
+template <int D>
+SymMat<D> dexp(const SymMat<D>& t, const SymMat<D>& h) {
+  return ExpFrechet<D>(t).derivative(h);
+}
+
+template <int D>
+SymMat<D> d2exp(const SymMat<D>& t, const SymMat<D>& h1, const SymMat<D>& h2) {
+  return ExpFrechet<D>(t).second_derivative(h1, h2);
+}
+
+template bool is_spd(const SymMat<2>&);
+template bool is_spd(const SymMat<3>&);
+template SymMat<2> log_spd(const SymMat<2>&);
+template SymMat<3> log_spd(const SymMat<3>&);
+template SymMat<2> exp_sym(const SymMat<2>&);
+template SymMat<3> exp_sym(const SymMat<3>&);
+template SymMat<2> pow_spd(const SymMat<2>&, double);
+template SymMat<3> pow_spd(const SymMat<3>&, double);
+template SymMat<2> sqrt_spd(const SymMat<2>&);
+template SymMat<3> sqrt_spd(const SymMat<3>&);
+template class ExpFrechet<2>;
+template class ExpFrechet<3>;
+template SymMat<2> dexp(const SymMat<2>&, const SymMat<2>&);
+template SymMat<3> dexp(const SymMat<3>&, const SymMat<3>&);
+template SymMat<2> d2exp(const SymMat<2>&, const SymMat<2>&, const SymMat<2>&);
+template SymMat<3> d2exp(const SymMat<3>&, const SymMat<3>&, const SymMat<3>&);
+
+}  // namespace hocav

@@ -1,0 +1,74 @@
+// Functions of symmetric matrices through their spectral form f(M) = R f(Λ) Rᵀ: the logarithm and
+// exponential that move metrics to and from log form (math.md §1, §2, §4), powers and square roots
+// (for intersections and sizes, §1, §10), and the first and second Fréchet derivatives of exp that the
+// edge-length derivatives are built on (§6).
+//
+// Which eigen-solver: functions of SPD inputs (log_spd, pow_spd, sqrt_spd, is_spd) use spd_eigen, so the
+// small eigenvalues of a metric keep their relative accuracy; exp_sym and ExpFrechet take a log-metric T and
+// use the fast sym_eigen, whose absolute accuracy on θ is the relative accuracy of e^θ.
+//
+// Conditioning, a property of the data and not of the code: an explicit metric M whose eigenvalues span
+// κ = λmax/λmin holds its small eigenvalues only to about eps·κ relative when its eigenvectors are not the
+// axes, since each entry is rounded relative to λmax. At a size ratio of 1e8 (κ = 1e16) that is all of λmin.
+// Keep metrics in log form once they are read; log(exp(T)) returns T to about eps·(|θ| + κ).
+#pragma once
+
+#include "geom/sym_eigen.hpp"
+#include "geom/sym_mat.hpp"
+
+namespace hocav {
+
+// True when every eigenvalue found by spd_eigen is finite and > 0 (so false for NaN or infinite entries):
+// exactly when log_spd, pow_spd and sqrt_spd succeed.
+template <int D>
+bool is_spd(const SymMat<D>& m);
+
+// log M; throws Error unless is_spd(m).
+template <int D>
+SymMat<D> log_spd(const SymMat<D>& m);
+
+// exp T for any symmetric T (SPD result).
+template <int D>
+SymMat<D> exp_sym(const SymMat<D>& t);
+
+// M^p for SPD M and any real p; throws Error unless is_spd(m).
+template <int D>
+SymMat<D> pow_spd(const SymMat<D>& m, double p);
+
+// M^{1/2} for SPD M; throws Error unless is_spd(m).
+template <int D>
+SymMat<D> sqrt_spd(const SymMat<D>& m);
+
+// Divided differences of exp, exp[a, b] = (e^a − e^b)/(a − b) and exp[a, b, c] = (exp[a, b] − exp[b, c])/(a − c),
+// accurate to a few ulps for every argument, the confluent cases (equal arguments: e^a, e^a/2) included.
+double exp_divided_difference(double a, double b);
+double exp_divided_difference(double a, double b, double c);
+
+// exp(T) and its Fréchet derivatives at one T, sharing one eigendecomposition T = V diag(θ) Vᵀ (Daleckii–Krein):
+//   Dexp(T)[H]        = V (Γ ∘ (Vᵀ H V)) Vᵀ,                       Γ_kl = exp[θk, θl],
+//   D²exp(T)[H1, H2]_kl = Σ_m exp[θk, θm, θl] (H1'_km H2'_ml + H2'_km H1'_ml)   in the eigenbasis, H' = Vᵀ H V.
+// Build one per evaluation point and ask for as many directions as needed. Dexp(T) is self-adjoint for the
+// Frobenius product, so the gradient of a squared length uᵀ exp(T) u along every direction H is
+// frobenius_dot(derivative(outer(u)), H): one derivative serves all directions.
+template <int D>
+class ExpFrechet {
+ public:
+  explicit ExpFrechet(const SymMat<D>& log_metric);
+
+  const SymMat<D>& value() const { return value_; }
+  SymMat<D> derivative(const SymMat<D>& direction) const;
+  SymMat<D> second_derivative(const SymMat<D>& direction1, const SymMat<D>& direction2) const;
+
+ private:
+  SymEigen<D> eigen_;
+  SymMat<D> value_;
+  SymMat<D> first_differences_;  // Γ_kl = exp[θk, θl]
+};
+
+// One-off forms of the above.
+template <int D>
+SymMat<D> dexp(const SymMat<D>& t, const SymMat<D>& h);
+template <int D>
+SymMat<D> d2exp(const SymMat<D>& t, const SymMat<D>& h1, const SymMat<D>& h2);
+
+}  // namespace hocav
