@@ -3,7 +3,9 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <array>
 #include <clocale>
+#include <cmath>
 #include <map>
 #include <tuple>
 
@@ -99,7 +101,7 @@ Mesh<D> extract(const std::vector<GmshBoundaryEntity>& boundary, int element_ref
     typename Mesh<D>::Element element;
     for (int i = 0; i <= D; ++i) element[i] = vertex_of_tag[element_node_tags[first + i]];
     double measure = signed_measure_of(mesh, element);
-    if (!(measure != 0.0)) throw Error("gmsh: element " + std::to_string(mesh.element_count() + 1) + " is flat");
+    if (measure == 0.0 || !std::isfinite(measure)) throw Error("gmsh: element " + std::to_string(mesh.element_count() + 1) + " is flat");
     if (measure < 0) std::swap(element[D - 1], element[D]);
     mesh.add_element(element, element_ref);
   }

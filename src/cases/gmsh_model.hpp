@@ -13,7 +13,7 @@
 namespace hocav {
 
 // Holds gmsh for the lifetime of one generation: gmsh keeps one global model, so sessions are
-// serialized by a process-wide mutex. Reads no user configuration file and fixes the options that
+// serialized by a process-wide mutex (every use of the gmsh API in hocav goes through one). Reads no user configuration file and fixes the options that
 // decide the result (one thread, fixed seed), so that the same inputs give the same mesh. Messages
 // are silenced; gmsh's errors come back as Error. Restores the C locale gmsh changes.
 class GmshSession {
@@ -30,7 +30,13 @@ class GmshSession {
 
 // Runs a call into gmsh, turning what gmsh throws (a std::string in 4.8) into Error("gmsh: ...").
 template <class Call>
-decltype(auto) call_gmsh(Call&& call);
+decltype(auto) call_gmsh(Call&& call) {
+  try {
+    return std::forward<Call>(call)();
+  } catch (const std::string& message) {
+    throw Error("gmsh: " + message);
+  }
+}
 
 // A boundary entity of the gmsh model (dimension D - 1) and the ref its facets get.
 struct GmshBoundaryEntity {
@@ -44,14 +50,5 @@ struct GmshBoundaryEntity {
 // with the ref of the listed boundary entity that holds it (Error when none does). Topology built.
 template <int D>
 Mesh<D> extract_gmsh_mesh(const std::vector<GmshBoundaryEntity>& boundary, int element_ref);
-
-template <class Call>
-decltype(auto) call_gmsh(Call&& call) {
-  try {
-    return std::forward<Call>(call)();
-  } catch (const std::string& message) {
-    throw Error("gmsh: " + message);
-  }
-}
 
 }  // namespace hocav
