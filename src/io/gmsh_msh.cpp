@@ -93,9 +93,11 @@ struct MshContent {
 // Reserving from a count read in the file: never more than this before the data proves it.
 constexpr std::int64_t kMaxUncheckedReserve = 1 << 20;
 
+// Makes room for `count` more entries, growing geometrically so that many small blocks stay linear.
 template <typename T>
 void bounded_reserve(std::vector<T>& vector, std::int64_t count) {
-  vector.reserve(vector.size() + static_cast<std::size_t>(std::min(count, kMaxUncheckedReserve)));
+  std::size_t needed = vector.size() + static_cast<std::size_t>(std::min(count, kMaxUncheckedReserve));
+  if (needed > vector.capacity()) vector.reserve(std::max(needed, 2 * vector.capacity()));
 }
 
 class MshReader {
@@ -259,7 +261,7 @@ class MshReader {
       if (auto physical = physical_tags_.find({entity_dimension, entity_tag}); physical != physical_tags_.end())
         ref = physical->second;
       std::int64_t count = read_count(section);
-      bounded_reserve(list.nodes, count * type->node_count);
+      bounded_reserve(list.nodes, std::min(count, kMaxUncheckedReserve) * type->node_count);
       bounded_reserve(list.refs, count);
       for (std::int64_t i = 0; i < count; ++i) {
         in_.next_integer(section);  // element tag
