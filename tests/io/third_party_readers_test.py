@@ -25,6 +25,7 @@ GMSH_MID_EDGES = {"line3": [(0, 1)], "triangle6": [(0, 1), (1, 2), (2, 0)],
                   "tetra10": [(0, 1), (1, 2), (2, 0), (3, 0), (3, 2), (3, 1)]}
 VTK_MID_EDGES = {"line3": [(0, 1)], "triangle6": [(0, 1), (1, 2), (2, 0)],
                  "tetra10": [(0, 1), (1, 2), (2, 0), (0, 3), (1, 3), (2, 3)]}
+STRAIGHT_TYPE = {"tetra10": "tetra", "triangle6": "triangle", "line3": "line"}
 GMSH_TYPE_NAMES = {15: "vertex", 1: "line", 8: "line3", 2: "triangle", 9: "triangle6", 4: "tetra", 11: "tetra10"}
 TOLERANCE = 1e-12
 
@@ -175,6 +176,20 @@ def check_dimension(hocav, directory, dim):
     compare(f"meshio reads hocav's {dim}D .msh (gmsh:physical)", reference,
             read_with_meshio(outputs[".msh"], "gmsh:physical"), lower)
     compare(f"meshio reads hocav's {dim}D .vtu (ref)", reference, read_with_meshio(outputs[".vtu"], "ref"), [element])
+    # The straight (P1) version: `--order 1` drops the mid nodes; the reference keeps the corners.
+    straight = {extension: os.path.join(directory, f"out{dim}_p1{extension}") for extension in (".msh", ".vtu")}
+    for output in straight.values():
+        run_hocav(hocav, "convert", source, output, "--order", "1")
+    for p2_type, p1_type in STRAIGHT_TYPE.items():
+        rows, refs = reference.cells[p2_type]
+        reference.cells[p1_type] = ([row[:CORNERS[p1_type]] for row in rows], refs)
+    p1_element, p1_facet = STRAIGHT_TYPE[element], STRAIGHT_TYPE[facet]
+    compare(f"gmsh reads hocav's {dim}D P1 .msh", reference, read_with_gmsh(straight[".msh"]),
+            [p1_element, p1_facet], same_node_count=False)
+    compare(f"meshio reads hocav's {dim}D P1 .msh", reference, read_with_meshio(straight[".msh"], "gmsh:physical"),
+            [p1_element, p1_facet], same_node_count=False)
+    compare(f"meshio reads hocav's {dim}D P1 .vtu", reference, read_with_meshio(straight[".vtu"], "ref"), [p1_element],
+            same_node_count=False)
     # gmsh's .mesh reader makes each ref an elementary entity; it has no physical groups. gmsh 4.8.4
     # reads every Vertices line as "x y z ref", so in 2D a vertex's ref lands in z: drop z.
     compare(f"gmsh reads hocav's {dim}D .mesh", reference,
