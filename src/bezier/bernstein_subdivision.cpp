@@ -39,17 +39,55 @@ constexpr SubdivisionMatrices<D> make_subdivision_matrices() {
 }
 
 template <int D>
-constexpr auto kSubdivisionMatrices = make_subdivision_matrices<D>();
+constexpr int count_nonzero_weights() {
+  constexpr auto kMatrices = make_subdivision_matrices<D>();
+  int count = 0;
+  for (const auto& matrix : kMatrices)
+    for (const auto& row : matrix)
+      for (double weight : row) count += weight != 0.0 ? 1 : 0;
+  return count;
+}
+
+// The same weights without the zeros (three quarters of them in 3D), row after row.
+template <int D>
+struct SparseSubdivision {
+  struct Weight {
+    int parent;  // α
+    double value;
+  };
+  std::array<int, kSubdivisionChildCount<D> * kJacobianCoefficientCount<D> + 1> row_start{};
+  std::array<Weight, count_nonzero_weights<D>()> weights{};
+};
+
+template <int D>
+constexpr SparseSubdivision<D> make_sparse_subdivision() {
+  constexpr auto kMatrices = make_subdivision_matrices<D>();
+  SparseSubdivision<D> sparse{};
+  int row = 0, next = 0;
+  for (const auto& matrix : kMatrices)
+    for (const auto& dense_row : matrix) {
+      sparse.row_start[row++] = next;
+      for (int alpha = 0; alpha < kJacobianCoefficientCount<D>; ++alpha)
+        if (dense_row[alpha] != 0.0) sparse.weights[next++] = {alpha, dense_row[alpha]};
+    }
+  sparse.row_start[row] = next;
+  return sparse;
+}
+
+template <int D>
+constexpr auto kSubdivision = make_sparse_subdivision<D>();
 
 }  // namespace
 
 template <int D>
 void subdivide_bernstein(const JacobianCoefficients<D>& parent, SubdivisionChildren<D>& children) {
+  const auto& subdivision = kSubdivision<D>;
+  int row = 0;
   for (int child = 0; child < kSubdivisionChildCount<D>; ++child)
-    for (int beta = 0; beta < kJacobianCoefficientCount<D>; ++beta) {
-      const auto& row = kSubdivisionMatrices<D>[child][beta];
+    for (int beta = 0; beta < kJacobianCoefficientCount<D>; ++beta, ++row) {
       double sum = 0.0;
-      for (int alpha = 0; alpha < kJacobianCoefficientCount<D>; ++alpha) sum += row[alpha] * parent[alpha];
+      for (int entry = subdivision.row_start[row]; entry < subdivision.row_start[row + 1]; ++entry)
+        sum += subdivision.weights[entry].value * parent[subdivision.weights[entry].parent];
       children[child][beta] = sum;
     }
 }

@@ -11,7 +11,7 @@
 // decides the other way (J reaches it there). If the depth or split budget runs out first, the
 // answer is "undecided", and undecided is NOT certified: a valid element may be refused, an invalid
 // one is never accepted. Floating-point rounding is covered by raising the threshold by a bound of
-// the coefficients' rounding error (jacobian_rounding_margin, ~1e-13 of the element's size^D).
+// the coefficients' rounding error (ElementJacobian::rounding_margin, ~1e-13 of the element's size^D).
 #pragma once
 
 #include "bezier/jacobian_coefficients.hpp"

@@ -77,9 +77,25 @@ constexpr int jacobian_coefficient_index(const BernsteinMultiIndex<D>& gamma) {
   return -1;
 }
 
-// N_γ of J (not normalized), in the order above.
+// J of one element: its coefficients and what is needed to read them.
 template <int D>
-JacobianCoefficients<D> jacobian_coefficients(const P2Element<D>& element);
+struct ElementJacobian {
+  JacobianCoefficients<D> coefficients{};  // N_γ in the order above, not normalized
+  double straight_jacobian = 0.0;          // det(P_1 − P_0, …); normalization divides by its magnitude
+  // An upper bound of the rounding error of the coefficients and of their subdivisions:
+  // 1024 u (L^D + max |N_γ|), u = 2^-53, L the largest coordinate offset of a node from vertex 0.
+  // (Everything is computed from offsets to vertex 0, so the error scales with the element, not
+  // with its distance to the origin; measured errors stay below 40 u L^D.)
+  double rounding_margin = 0.0;
+};
+
+template <int D>
+ElementJacobian<D> element_jacobian(const P2Element<D>& element);
+
+template <int D>
+JacobianCoefficients<D> jacobian_coefficients(const P2Element<D>& element) {
+  return element_jacobian(element).coefficients;
+}
 
 // N_γ / |det(P_1 − P_0, …)|; see normalize_jacobian for a flat straight element.
 template <int D>
@@ -88,13 +104,6 @@ JacobianCoefficients<D> normalized_jacobian_coefficients(const P2Element<D>& ele
 // value / |straight_jacobian|. When the straight element is flat (all vertices on a line or plane,
 // possible for a valid curved element) the ratio is +inf, −inf or 0 by the sign of value.
 double normalize_jacobian(double value, double straight_jacobian);
-
-// An upper bound of the rounding error of the computed coefficients and of their subdivisions:
-// 1024 u (L^D + max |N_γ|), u = 2^-53, L the largest coordinate offset of a node from vertex 0.
-// (The coefficients are computed from offsets to vertex 0, so the error scales with the element,
-// not with its distance to the origin; measured errors stay below 40 u L^D.)
-template <int D>
-double jacobian_rounding_margin(const P2Element<D>& element, const JacobianCoefficients<D>& coefficients);
 
 // Σ N_γ B_γ(λ): the polynomial the coefficients stand for, at barycentrics λ.
 template <int D>

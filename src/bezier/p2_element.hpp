@@ -20,13 +20,19 @@ inline constexpr int kP2NodeCount = (D + 1) * (D + 2) / 2;
 // The local node on the pair of vertices (i, j): vertex i when i == j, else the node of edge {i, j}.
 // In Bézier terms it holds the control node of multi-index e_i + e_j.
 template <int D>
-constexpr int p2_node_of_pair(int i, int j) {
-  if (i == j) return i;
+inline constexpr auto kP2NodeOfPair = [] {
+  std::array<std::array<int, D + 1>, D + 1> node{};
+  for (int i = 0; i <= D; ++i) node[i][i] = i;
   for (int edge = 0; edge < Simplex<D>::kEdges; ++edge) {
     const auto& ends = edge_vertices<D>(edge);
-    if ((ends[0] == i && ends[1] == j) || (ends[0] == j && ends[1] == i)) return D + 1 + edge;
+    node[ends[0]][ends[1]] = node[ends[1]][ends[0]] = D + 1 + edge;
   }
-  return -1;
+  return node;
+}();
+
+template <int D>
+constexpr int p2_node_of_pair(int i, int j) {
+  return kP2NodeOfPair<D>[i][j];
 }
 
 // Lagrange nodes: the vertices and the points of the curved edges at their parameter 1/2.
