@@ -321,6 +321,10 @@ TEST(GmshMsh, RefusesBadInputWithClearMessages) {
       {"not_a_real", tet_file(tet4).replace(tet_file(tet4).find(".5 .5 0"), 7, ".5 x 0"), {"$Nodes", "expected a real, found 'x'"}},
       {"nan", tet_file(tet4).replace(tet_file(tet4).find(".5 .5 0"), 7, ".5 nan 0"), {"$Nodes", "not finite"}},
       {"entities_counts", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n1 0 0 0\n1 0 0\n", {"$Entities", "unexpected end of file"}},
+      {"huge_node_count", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 4000000000000000000 1 1\n0 1 0 4000000000000000000\n1\n",
+       {"$Nodes", "unexpected end of file"}},
+      {"huge_element_count", tet_file("1 1 1 1\n3 1 11 4000000000000000000\n1 1 2 3 4"),
+       {"$Elements", "expected an integer, found '$EndElements'"}},
       {"parametric_flag", tet_file(tet4, "1 10 1 10\n3 1 7 10"), {"$Nodes", "parametric flag"}},
   };
   testing::internal::CaptureStderr();
