@@ -141,9 +141,17 @@ class Checker {
         else if (mesh_.find_edge(a, b) != edge)
           report("edge (" + id(a) + ", " + id(b) + ") of element " + id(k) + " is not the one the edge table finds");
       }
-    if (mesh_.is_p2())
-      for (Index edge = 0; edge < mesh_.edge_count() && !full(); ++edge)
-        if (!is_finite(mesh_.edge_node(edge))) report("the P2 node of edge " + id(edge) + " is not finite");
+    std::vector<bool> used(static_cast<std::size_t>(mesh_.edge_count()), false);
+    for (Index k = 0; k < mesh_.element_count(); ++k)
+      for (Index edge : mesh_.element_edges(k))
+        if (edge >= 0 && edge < mesh_.edge_count()) used[edge] = true;
+    for (Index edge = 0; edge < mesh_.edge_count() && !full(); ++edge) {
+      auto [a, b] = mesh_.edge_vertices(edge);
+      if (a == kNoIndex) continue;  // a removed edge's id, waiting for reuse
+      if (!used[edge]) report("edge " + id(edge) + " (" + id(a) + ", " + id(b) + ") belongs to no element");
+      else if (mesh_.find_edge(a, b) != edge) report("edge " + id(edge) + " is not where the edge table finds it");
+      else if (mesh_.is_p2() && !is_finite(mesh_.edge_node(edge))) report("the P2 node of edge " + id(edge) + " is not finite");
+    }
   }
 
   const Mesh<D>& mesh_;

@@ -13,7 +13,15 @@ Index Mesh<D>::add_vertex(const Point& point, int ref) {
   Index id = checked_index(vertices_.size(), "vertices");
   vertices_.push_back(point);
   vertex_refs_.push_back(ref);
+  if (vertex_element_.size() + 1 == vertices_.size()) vertex_element_.push_back(kNoIndex);
   return id;
+}
+
+template <int D>
+void Mesh<D>::pop_vertex() {
+  vertices_.pop_back();
+  vertex_refs_.pop_back();
+  if (vertex_element_.size() > vertices_.size()) vertex_element_.pop_back();
 }
 
 template <int D>
@@ -61,6 +69,7 @@ template <int D>
 void Mesh<D>::build_edges() {
   edge_vertices_.clear();
   edge_ids_.clear();
+  free_edges_.clear();
   // Euler: a tetrahedral mesh has about 1.2 edges per element, a triangular one about 1.5.
   edge_ids_.reserve(elements_.size() * (D == 3 ? 13 : 16) / 10 + facets_.size() + lines_.size());
   edge_vertices_.reserve(elements_.size() * (D == 3 ? 13 : 16) / 10);
@@ -183,6 +192,108 @@ void Mesh<D>::build_topology() {
       throw Error("boundary facet " + std::to_string(f + 1) + " is not a face of any element");
     element_face_facets_.assign(static_cast<std::uint64_t>(facet_element_face_[f]), f);
   }
+}
+
+template <int D>
+Index Mesh<D>::append_element(const Element& vertices, int ref) {
+  // Derived arrays that were complete before stay complete.
+  bool had_topology = adjacency_.size() == elements_.size();
+  bool had_edges = element_edges_.size() == elements_.size() && !edge_vertices_.empty();
+  Index k = add_element(vertices, ref);
+  if (had_topology) {
+    Element none;
+    none.fill(kNoIndex);
+    adjacency_.push_back(none);
+  }
+  if (had_edges) {
+    ElementEdges none;
+    none.fill(kNoIndex);
+    element_edges_.push_back(none);
+  }
+  return k;
+}
+
+template <int D>
+void Mesh<D>::move_element(Index from, Index to) {
+  elements_[to] = elements_[from];
+  element_refs_[to] = element_refs_[from];
+  if (!element_edges_.empty()) element_edges_[to] = element_edges_[from];
+  adjacency_[to] = adjacency_[from];
+  for (int face = 0; face <= D; ++face) {
+    Index n = adjacency_[to][face];
+    if (n != kNoIndex)
+      for (int back = 0; back <= D; ++back)
+        if (adjacency_[n][back] == from) adjacency_[n][back] = to;
+    Index f = element_face_facet(from, face);
+    if (f != kNoIndex) {
+      element_face_facets_.erase(static_cast<std::uint64_t>(from) * (D + 1) + face);
+      attach_facet(f, to, face);
+    }
+  }
+  for (Index v : elements_[to])
+    if (vertex_element_[v] == from) vertex_element_[v] = to;
+}
+
+template <int D>
+void Mesh<D>::pop_element() {
+  elements_.pop_back();
+  element_refs_.pop_back();
+  adjacency_.pop_back();
+  if (!element_edges_.empty()) element_edges_.pop_back();
+}
+
+template <int D>
+void Mesh<D>::attach_facet(Index f, Index k, int face) {
+  Index old = facet_element_face_[f];
+  if (old != kNoIndex && element_face_facets_.find(static_cast<std::uint64_t>(old)) == f)
+    element_face_facets_.erase(static_cast<std::uint64_t>(old));
+  facet_element_face_[f] = k * (D + 1) + face;
+  element_face_facets_.assign(static_cast<std::uint64_t>(facet_element_face_[f]), f);
+}
+
+template <int D>
+Index Mesh<D>::add_edge(Index a, Index b, const Point& node) {
+  Index id;
+  if (!free_edges_.empty()) {
+    id = free_edges_.back();
+    free_edges_.pop_back();
+    edge_vertices_[id] = {std::min(a, b), std::max(a, b)};
+  } else {
+    id = checked_index(edge_vertices_.size(), "edges");
+    edge_vertices_.push_back({std::min(a, b), std::max(a, b)});
+    if (order_ == 2) edge_nodes_.emplace_back();
+  }
+  if (order_ == 2) edge_nodes_[id] = node;
+  edge_ids_.assign(edge_key(a, b), id);
+  return id;
+}
+
+template <int D>
+void Mesh<D>::remove_edge(Index e) {
+  edge_ids_.erase(edge_key(edge_vertices_[e][0], edge_vertices_[e][1]));
+  edge_vertices_[e] = {kNoIndex, kNoIndex};
+  free_edges_.push_back(e);
+}
+
+template <int D>
+void Mesh<D>::compact_edges() {
+  if (free_edges_.empty()) return;
+  std::vector<Index> new_id(edge_vertices_.size(), kNoIndex);
+  Index next = 0;
+  for (std::size_t e = 0; e < edge_vertices_.size(); ++e) {
+    if (edge_vertices_[e][0] == kNoIndex) continue;
+    new_id[e] = next;
+    edge_vertices_[next] = edge_vertices_[e];
+    if (order_ == 2) edge_nodes_[next] = edge_nodes_[e];
+    ++next;
+  }
+  edge_vertices_.resize(static_cast<std::size_t>(next));
+  if (order_ == 2) edge_nodes_.resize(static_cast<std::size_t>(next));
+  for (auto& row : element_edges_)
+    for (Index& e : row) e = new_id[e];
+  edge_ids_.clear();
+  for (Index e = 0; e < next; ++e) edge_ids_.assign(edge_key(edge_vertices_[e][0], edge_vertices_[e][1]), e);
+  free_edges_.clear();
 }
 
 template <int D>

@@ -38,6 +38,8 @@ class Mesh {
   int vertex_ref(Index v) const { return vertex_refs_[v]; }
   std::span<const Point> vertices() const { return vertices_; }
   Index add_vertex(const Point& point, int ref = 0);
+  // Removes the last vertex (an insertion that was refused); no element may use it.
+  void pop_vertex();
 
   // ---- elements (triangles in 2D, tetrahedra in 3D) ----
   Index element_count() const { return static_cast<Index>(elements_.size()); }
@@ -103,6 +105,33 @@ class Mesh {
     return element_face_facets_.find(static_cast<std::uint64_t>(k) * (D + 1) + static_cast<std::uint64_t>(face));
   }
 
+  // ---- local changes, for the cavity operators: each keeps only the invariant it names; the
+  // operator that calls them restores the others before it returns ----
+  void set_element(Index k, const Element& vertices, int ref) {
+    elements_[k] = vertices;
+    element_refs_[k] = ref;
+  }
+  // Appends an element with no neighbours and (when the edge table exists) no edges yet.
+  Index append_element(const Element& vertices, int ref);
+  // Moves element `from` into slot `to` (whose old content is dropped), re-pointing its
+  // neighbours, its vertices, its facets and its edge ids at the new slot.
+  void move_element(Index from, Index to);
+  // Drops the last element (after move_element has emptied it).
+  void pop_element();
+  void set_neighbor(Index k, int face, Index neighbor) { adjacency_[k][face] = neighbor; }
+  void set_vertex_element(Index v, Index k) { vertex_element_[v] = k; }
+  // Puts facet f on face `face` of element k (both directions of the link).
+  void attach_facet(Index f, Index k, int face);
+  // A new edge (reusing a removed edge's id) with its P2 node (ignored on a P1 mesh).
+  Index add_edge(Index a, Index b, const Point& node);
+  // Removes an edge from the table; its id is reused by the next add_edge.
+  void remove_edge(Index e);
+  void set_element_edge(Index k, int local_edge, Index e) { element_edges_[k][local_edge] = e; }
+  // True when no removed edge leaves a hole in the edge ids (file writers need it).
+  bool edges_are_compact() const { return free_edges_.empty(); }
+  // Renumbers the edges so their ids are 0..edge_count()-1 again.
+  void compact_edges();
+
   // Bytes held by the mesh's arrays (capacity, not size), for the memory figures in the docs.
   std::size_t memory_bytes() const;
 
@@ -129,6 +158,7 @@ class Mesh {
   std::vector<Point> edge_nodes_;
   std::vector<ElementEdges> element_edges_;
   IndexHashMap edge_ids_;
+  std::vector<Index> free_edges_;  // ids of removed edges, reused first
 
   std::vector<Element> adjacency_;
   std::vector<Index> vertex_element_;

@@ -1,0 +1,112 @@
+#include "cavity/cavity_operations.hpp"
+
+#include <algorithm>
+
+#include "geom/barycentric.hpp"
+#include "mesh/ball_and_shell.hpp"
+
+namespace hocav {
+namespace {
+
+template <int D>
+CavityStatus plan_and_commit(Mesh<D>& mesh, CavityWorkspace<D>& work, Index vertex, const CavityOptions& options) {
+  CavityStatus status = work.cavity_operator.plan(mesh, work.cavity, vertex, options);
+  if (status == CavityStatus::kAccepted) work.cavity_operator.commit(mesh);
+  return status;
+}
+
+// Whether x lies strictly inside the circumsphere of element k, distances measured in `metric`.
+template <int D>
+bool in_circumsphere(const Mesh<D>& mesh, Index k, const Vec<D>& x, const SymMat<D>& metric) {
+  // The centre c solves (p_i − p_0)ᵀ M (c − p_0) = |p_i − p_0|²_M / 2 for i = 1..D.
+  const auto& e = mesh.element(k);
+  double a[D][D + 1];
+  for (int i = 0; i < D; ++i) {
+    Vec<D> edge = mesh.vertex(e[i + 1]) - mesh.vertex(e[0]);
+    Vec<D> row = metric * edge;
+    for (int j = 0; j < D; ++j) a[i][j] = row[j];
+    a[i][D] = 0.5 * quadratic_form(metric, edge);
+  }
+  // Gaussian elimination with partial pivoting on the D × (D + 1) system.
+  for (int col = 0; col < D; ++col) {
+    int pivot = col;
+    for (int r = col + 1; r < D; ++r)
+      if (std::abs(a[r][col]) > std::abs(a[pivot][col])) pivot = r;
+    if (a[pivot][col] == 0) return false;
+    std::swap(a[pivot], a[col]);
+    for (int r = 0; r < D; ++r) {
+      if (r == col) continue;
+      double factor = a[r][col] / a[col][col];
+      for (int j = col; j <= D; ++j) a[r][j] -= factor * a[col][j];
+    }
+  }
+  Vec<D> offset;  // c − p_0
+  for (int i = 0; i < D; ++i) offset[i] = a[i][D] / a[i][i];
+  double radius2 = quadratic_form(metric, offset);
+  return quadratic_form(metric, x - mesh.vertex(e[0]) - offset) < radius2 * (1 - 1e-12);
+}
+
+}  // namespace
+
+template <int D>
+CavityStatus reinsert_vertex(Mesh<D>& mesh, CavityWorkspace<D>& work, Index v, const CavityOptions& options) {
+  collect_ball(mesh, v, work.cavity);
+  return plan_and_commit(mesh, work, v, options);
+}
+
+template <int D>
+CavityStatus collapse_edge(Mesh<D>& mesh, CavityWorkspace<D>& work, Index removed, Index kept,
+                           CavityOptions options) {
+  collect_ball(mesh, removed, work.cavity);
+  options.removable_vertex = removed;
+  return plan_and_commit(mesh, work, kept, options);
+}
+
+template <int D>
+CavityStatus swap_edge(Mesh<D>& mesh, CavityWorkspace<D>& work, Index a, Index b, Index apex,
+                       const CavityOptions& options) {
+  collect_shell(mesh, a, b, work.cavity);
+  return plan_and_commit(mesh, work, apex, options);
+}
+
+template <int D>
+CavityStatus insert_vertex(Mesh<D>& mesh, CavityWorkspace<D>& work, const Vec<D>& x, Index hint,
+                           const SymMat<D>& metric, const CavityOptions& options, Index* inserted) {
+  // The element containing x, by a walk from the hint.
+  Index k = hint;
+  for (int step = 0; step < 100000; ++step) {
+    SimplexPoints<D> points;
+    for (int i = 0; i <= D; ++i) points[i] = mesh.vertex(mesh.element(k)[i]);
+    auto lambda = barycentric_coordinates<D>(points, x);
+    int face = static_cast<int>(std::min_element(lambda.begin(), lambda.end()) - lambda.begin());
+    if (lambda[face] >= 0) break;
+    Index next = mesh.neighbor(k, face);
+    if (next == kNoIndex) return CavityStatus::kNotStarShaped;  // outside the mesh
+    k = next;
+  }
+  work.cavity.assign(1, k);
+  for (std::size_t next = 0; next < work.cavity.size(); ++next)
+    for (int face = 0; face <= D; ++face) {
+      Index n = mesh.neighbor(work.cavity[next], face);
+      if (n == kNoIndex || std::find(work.cavity.begin(), work.cavity.end(), n) != work.cavity.end()) continue;
+      if (mesh.element_face_facet(work.cavity[next], face) != kNoIndex) continue;  // stay on one side of surfaces
+      if (in_circumsphere(mesh, n, x, metric)) work.cavity.push_back(n);
+    }
+  Index vertex = mesh.add_vertex(x);
+  CavityStatus status = plan_and_commit(mesh, work, vertex, options);
+  if (status != CavityStatus::kAccepted) mesh.pop_vertex();
+  else if (inserted) *inserted = vertex;
+  return status;
+}
+
+#define HOCAV_INSTANTIATE(D)                                                                                      \
+  template CavityStatus reinsert_vertex(Mesh<D>&, CavityWorkspace<D>&, Index, const CavityOptions&);              \
+  template CavityStatus collapse_edge(Mesh<D>&, CavityWorkspace<D>&, Index, Index, CavityOptions);                \
+  template CavityStatus swap_edge(Mesh<D>&, CavityWorkspace<D>&, Index, Index, Index, const CavityOptions&);      \
+  template CavityStatus insert_vertex(Mesh<D>&, CavityWorkspace<D>&, const Vec<D>&, Index, const SymMat<D>&,      \
+                                      const CavityOptions&, Index*);
+HOCAV_INSTANTIATE(2)
+HOCAV_INSTANTIATE(3)
+#undef HOCAV_INSTANTIATE
+
+}  // namespace hocav

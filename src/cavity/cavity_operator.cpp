@@ -1,0 +1,264 @@
+#include "cavity/cavity_operator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mesh/measure.hpp"
+
+namespace hocav {
+
+const char* to_string(CavityStatus status) {
+  switch (status) {
+    case CavityStatus::kAccepted: return "accepted";
+    case CavityStatus::kNotStarShaped: return "not star-shaped";
+    case CavityStatus::kCrossesBoundary: return "crosses a boundary facet";
+    case CavityStatus::kMixedRefs: return "mixed element refs";
+    case CavityStatus::kRemovesVertex: return "would remove a vertex";
+    case CavityStatus::kNonPositiveMeasure: return "non-positive straight measure";
+    case CavityStatus::kRejectedByCurving: return "no valid curving";
+  }
+  return "?";
+}
+
+namespace {
+
+// Key of the D − 1 vertices of a face other than the starred vertex (sorted; fits 64 bits).
+template <int D>
+std::uint64_t ridge_key(const Index* vertices, Index skip) {
+  Index kept[2] = {kNoIndex, kNoIndex};
+  int count = 0;
+  for (int i = 0; i < D; ++i)
+    if (vertices[i] != skip) kept[count++] = vertices[i];
+  if constexpr (D == 2) return static_cast<std::uint64_t>(kept[0]);
+  return Mesh<3>::edge_key(kept[0], kept[1]);
+}
+
+template <int D>
+double longest_edge(const Mesh<D>& mesh, const typename Mesh<D>::Element& element, const Vec<D>& extra,
+                    bool use_extra) {
+  double longest = 0;
+  for (int i = 0; i <= D; ++i)
+    for (int j = 0; j < i; ++j) {
+      Vec<D> p = (use_extra && i == 0) ? extra : mesh.vertex(element[i]);
+      longest = std::max(longest, norm(p - mesh.vertex(element[j])));
+    }
+  return longest;
+}
+
+}  // namespace
+
+template <int D>
+bool CavityOperator<D>::in_cavity(Index k) const {
+  return std::binary_search(cavity_.begin(), cavity_.end(), k);
+}
+
+template <int D>
+CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index> cavity, Index vertex,
+                                     const CavityOptions& options) {
+  cavity_.assign(cavity.begin(), cavity.end());
+  std::sort(cavity_.begin(), cavity_.end());
+  vertex_ = vertex;
+  new_elements_.clear();
+  new_inner_edges_.clear();
+  start_nodes_.clear();
+  boundary_edge_ids_.clear();
+  removed_edges_.clear();
+  if (cavity_.empty()) return CavityStatus::kNotStarShaped;
+
+  ref_ = mesh.element_ref(cavity_.front());
+  for (Index k : cavity_)
+    if (mesh.element_ref(k) != ref_) return CavityStatus::kMixedRefs;
+  if (CavityStatus status = collect_boundary(mesh); status != CavityStatus::kAccepted) return status;
+
+  // One new element per boundary face not containing the vertex: (vertex, face) is positive when
+  // the vertex sees the face from inside, since faces are oriented outward.
+  starred_faces_.clear();
+  for (std::size_t f = 0; f < boundary_faces_.size(); ++f) {
+    const auto& face = boundary_faces_[f].vertices;
+    if (std::find(face.begin(), face.end(), vertex) != face.end()) continue;
+    Element element;
+    element[0] = vertex;
+    for (int i = 0; i < D; ++i) element[i + 1] = face[i];
+    new_elements_.push_back(element);
+    starred_faces_.push_back(static_cast<Index>(f));
+  }
+  if (new_elements_.empty()) return CavityStatus::kNotStarShaped;
+  if (CavityStatus status = match_ridges(); status != CavityStatus::kAccepted) return status;
+
+  // Vertices of the cavity on no boundary face disappear.
+  scratch_.clear();
+  for (const auto& face : boundary_faces_) scratch_.insert(scratch_.end(), face.vertices.begin(), face.vertices.end());
+  std::sort(scratch_.begin(), scratch_.end());
+  vanishing_vertices_.clear();
+  for (Index k : cavity_)
+    for (Index v : mesh.element(k))
+      if (v != vertex && !std::binary_search(scratch_.begin(), scratch_.end(), v) &&
+          std::find(vanishing_vertices_.begin(), vanishing_vertices_.end(), v) == vanishing_vertices_.end())
+        vanishing_vertices_.push_back(v);
+  for (Index v : vanishing_vertices_)
+    if (v != options.removable_vertex) return CavityStatus::kRemovesVertex;
+
+  if (options.check_straight_measure)
+    for (const Element& element : new_elements_) {
+      typename Mesh<D>::Point p[D + 1];
+      for (int i = 0; i <= D; ++i) p[i] = mesh.vertex(element[i]);
+      double measure;
+      if constexpr (D == 2) measure = signed_measure(p[0], p[1], p[2]);
+      else measure = signed_measure(p[0], p[1], p[2], p[3]);
+      if (!(measure > options.min_relative_measure * std::pow(longest_edge(mesh, element, p[0], false), D)))
+        return CavityStatus::kNonPositiveMeasure;
+    }
+
+  if (mesh.has_edges() && mesh.edge_count() > 0) plan_edges(mesh);
+  return CavityStatus::kAccepted;
+}
+
+template <int D>
+CavityStatus CavityOperator<D>::collect_boundary(const Mesh<D>& mesh) {
+  boundary_faces_.clear();
+  for (Index k : cavity_)
+    for (int face = 0; face <= D; ++face) {
+      Index outer = mesh.neighbor(k, face);
+      Index facet = mesh.element_face_facet(k, face);
+      if (outer != kNoIndex && in_cavity(outer)) {
+        if (facet != kNoIndex) return CavityStatus::kCrossesBoundary;
+        continue;
+      }
+      BoundaryFace boundary{{}, outer, -1, facet};
+      for (int i = 0; i < D; ++i) boundary.vertices[i] = mesh.element(k)[face_vertices<D>(face)[i]];
+      if (outer != kNoIndex)
+        for (int back = 0; back <= D; ++back)
+          if (mesh.neighbor(outer, back) == k) boundary.outer_face = back;
+      boundary_faces_.push_back(boundary);
+    }
+  return CavityStatus::kAccepted;
+}
+
+template <int D>
+CavityStatus CavityOperator<D>::match_ridges() {
+  // Faces through the vertex pair up: two new elements, or a new element and a kept boundary
+  // face; anything else leaves a hole or a fold, so the star is refused.
+  ridge_faces_.clear();
+  for (std::size_t n = 0; n < new_elements_.size(); ++n)
+    for (int face = 1; face <= D; ++face) {
+      Index vertices[D];
+      for (int i = 0; i < D; ++i) vertices[i] = new_elements_[n][face_vertices<D>(face)[i]];
+      ridge_faces_.push_back({ridge_key<D>(vertices, vertex_), static_cast<Index>(n), face});
+    }
+  for (std::size_t f = 0; f < boundary_faces_.size(); ++f) {
+    const auto& face = boundary_faces_[f].vertices;
+    if (std::find(face.begin(), face.end(), vertex_) == face.end()) continue;
+    ridge_faces_.push_back({ridge_key<D>(face.data(), vertex_), kNoIndex, static_cast<int>(f)});
+  }
+  std::sort(ridge_faces_.begin(), ridge_faces_.end(), [](const RidgeFace& x, const RidgeFace& y) { return x.key < y.key; });
+  links_.clear();
+  for (std::size_t i = 0; i < ridge_faces_.size(); i += 2) {
+    if (i + 1 >= ridge_faces_.size() || ridge_faces_[i + 1].key != ridge_faces_[i].key ||
+        (i + 2 < ridge_faces_.size() && ridge_faces_[i + 2].key == ridge_faces_[i].key))
+      return CavityStatus::kNotStarShaped;
+    RidgeFace first = ridge_faces_[i], second = ridge_faces_[i + 1];
+    if (first.new_element == kNoIndex) std::swap(first, second);
+    if (first.new_element == kNoIndex) return CavityStatus::kNotStarShaped;  // two kept faces: a hole
+    if (second.new_element == kNoIndex)
+      links_.push_back({first.new_element, first.face, kNoIndex, -1, second.face});
+    else
+      links_.push_back({first.new_element, first.face, second.new_element, second.face, -1});
+  }
+  return CavityStatus::kAccepted;
+}
+
+template <int D>
+void CavityOperator<D>::plan_edges(const Mesh<D>& mesh) {
+  boundary_edge_keys_.clear();
+  for (const auto& face : boundary_faces_)
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < i; ++j) boundary_edge_keys_.push_back(Mesh<D>::edge_key(face.vertices[i], face.vertices[j]));
+  std::sort(boundary_edge_keys_.begin(), boundary_edge_keys_.end());
+  boundary_edge_keys_.erase(std::unique(boundary_edge_keys_.begin(), boundary_edge_keys_.end()), boundary_edge_keys_.end());
+  auto on_boundary = [&](Index a, Index b) {
+    return std::binary_search(boundary_edge_keys_.begin(), boundary_edge_keys_.end(), Mesh<D>::edge_key(a, b));
+  };
+  for (std::uint64_t key : boundary_edge_keys_)
+    boundary_edge_ids_.push_back(mesh.find_edge(static_cast<Index>(key >> 32), static_cast<Index>(key & 0xffffffffu)));
+
+  scratch_.clear();
+  for (Index k : cavity_)
+    for (Index e : mesh.element_edges(k)) scratch_.push_back(e);
+  std::sort(scratch_.begin(), scratch_.end());
+  scratch_.erase(std::unique(scratch_.begin(), scratch_.end()), scratch_.end());
+  for (Index e : scratch_)
+    if (!on_boundary(mesh.edge_vertices(e)[0], mesh.edge_vertices(e)[1])) removed_edges_.push_back(e);
+
+  for (std::size_t f : starred_faces_)
+    for (Index v : boundary_faces_[f].vertices) {
+      if (on_boundary(vertex_, v)) continue;
+      std::array<Index, 2> edge{vertex_, v};
+      if (std::find(new_inner_edges_.begin(), new_inner_edges_.end(), edge) != new_inner_edges_.end()) continue;
+      new_inner_edges_.push_back(edge);
+      Index old = mesh.find_edge(vertex_, v);
+      start_nodes_.push_back(old != kNoIndex && mesh.is_p2() ? mesh.edge_node(old)
+                                                             : 0.5 * (mesh.vertex(vertex_) + mesh.vertex(v)));
+    }
+}
+
+template <int D>
+void CavityOperator<D>::commit(Mesh<D>& mesh, std::span<const Point> inner_edge_nodes,
+                               std::span<const std::pair<Index, Point>> changed_boundary_nodes) {
+  const bool with_edges = mesh.has_edges() && mesh.edge_count() > 0;
+  if (with_edges) {
+    for (Index e : removed_edges_) mesh.remove_edge(e);
+    for (std::size_t i = 0; i < new_inner_edges_.size(); ++i)
+      mesh.add_edge(new_inner_edges_[i][0], new_inner_edges_[i][1],
+                    i < inner_edge_nodes.size() ? inner_edge_nodes[i] : start_nodes_[i]);
+    for (const auto& [edge, node] : changed_boundary_nodes) mesh.edge_node(edge) = node;
+  }
+
+  // New elements take the cavity's slots first, then new slots.
+  scratch_.assign(new_elements_.size(), kNoIndex);
+  for (std::size_t n = 0; n < new_elements_.size(); ++n) {
+    if (n < cavity_.size()) {
+      scratch_[n] = cavity_[n];
+      mesh.set_element(cavity_[n], new_elements_[n], ref_);
+    } else {
+      scratch_[n] = mesh.append_element(new_elements_[n], ref_);
+    }
+  }
+  const std::vector<Index>& slot = scratch_;
+  for (std::size_t n = 0; n < new_elements_.size(); ++n) {
+    const BoundaryFace& face = boundary_faces_[starred_faces_[n]];
+    mesh.set_neighbor(slot[n], 0, face.outer_element);
+    if (face.outer_element != kNoIndex) mesh.set_neighbor(face.outer_element, face.outer_face, slot[n]);
+    if (face.facet != kNoIndex) mesh.attach_facet(face.facet, slot[n], 0);
+    for (Index v : new_elements_[n]) mesh.set_vertex_element(v, slot[n]);
+  }
+  for (const Link& link : links_) {
+    Index k = slot[link.new_element];
+    if (link.other_new_element != kNoIndex) {
+      mesh.set_neighbor(k, link.face, slot[link.other_new_element]);
+      mesh.set_neighbor(slot[link.other_new_element], link.other_face, k);
+      continue;
+    }
+    const BoundaryFace& kept = boundary_faces_[link.kept_face];
+    mesh.set_neighbor(k, link.face, kept.outer_element);
+    if (kept.outer_element != kNoIndex) mesh.set_neighbor(kept.outer_element, kept.outer_face, k);
+    if (kept.facet != kNoIndex) mesh.attach_facet(kept.facet, k, link.face);
+  }
+  for (Index v : vanishing_vertices_) mesh.set_vertex_element(v, kNoIndex);
+  if (with_edges)
+    for (std::size_t n = 0; n < new_elements_.size(); ++n)
+      for (int e = 0; e < Mesh<D>::kElementEdges; ++e)
+        mesh.set_element_edge(slot[n], e,
+                              mesh.find_edge(new_elements_[n][edge_vertices<D>(e)[0]], new_elements_[n][edge_vertices<D>(e)[1]]));
+
+  // Cavity slots left over: fill each from the end of the array, highest first.
+  for (std::size_t i = cavity_.size(); i-- > new_elements_.size();) {
+    Index last = mesh.element_count() - 1;
+    if (cavity_[i] != last) mesh.move_element(last, cavity_[i]);
+    mesh.pop_element();
+  }
+}
+
+template class CavityOperator<2>;
+template class CavityOperator<3>;
+
+}  // namespace hocav

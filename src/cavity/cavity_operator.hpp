@@ -1,0 +1,111 @@
+// The P1 cavity operator (the paper's §III.A): remove a set of elements (the cavity) and star the
+// boundary of the hole from one vertex. Insertion, collapse, swap and reinsertion are all this one
+// operation with different cavities and vertices (see cavity_operations.hpp).
+//
+// It works in two phases so a rejection leaves the mesh exactly as it was: plan() reads the mesh
+// and decides (topology, refs, boundary facets, straight measures when asked), commit() writes.
+// Between the two, the P2 operator curves the new inner edges and certifies the new elements.
+#pragma once
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+
+namespace hocav {
+
+struct CavityOptions {
+  // P1 mode: every new element must have a straight measure above min_relative_measure ×
+  // (longest edge)^D. Off in P2 mode, where a valid curved element may be an inverted P1 element.
+  bool check_straight_measure = true;
+  double min_relative_measure = 1e-12;
+  // The one vertex inside the cavity that may disappear (collapse), or kNoIndex.
+  Index removable_vertex = kNoIndex;
+};
+
+enum class CavityStatus {
+  kAccepted,
+  kNotStarShaped,       // the star of the boundary from the vertex is not a closed, manifold set
+  kCrossesBoundary,     // a boundary facet lies inside the cavity
+  kMixedRefs,           // the cavity's elements carry different refs
+  kRemovesVertex,       // a vertex other than the removable one would disappear
+  kNonPositiveMeasure,  // P1 mode: a new element is flat or inverted
+  kRejectedByCurving,   // the P2 operator found no valid curved configuration
+};
+const char* to_string(CavityStatus status);
+
+template <int D>
+class CavityOperator {
+ public:
+  using Element = typename Mesh<D>::Element;
+  using Point = Vec<D>;
+
+  // Plans the star of `cavity` (element ids, no repeats) from `vertex`; reads the mesh only.
+  CavityStatus plan(const Mesh<D>& mesh, std::span<const Index> cavity, Index vertex, const CavityOptions& options);
+
+  // ---- the plan (valid until the next plan or commit) ----
+  Index vertex() const { return vertex_; }
+  std::span<const Element> new_elements() const { return new_elements_; }
+  int new_elements_ref() const { return ref_; }
+  // Inner edges (vertex, boundary vertex) the star creates, and for each the node it had when it
+  // existed before (reinsertion) or the straight midpoint: the start of its curving.
+  std::span<const std::array<Index, 2>> new_inner_edges() const { return new_inner_edges_; }
+  std::span<const Point> new_inner_edge_start_nodes() const { return start_nodes_; }
+  // Edges on the cavity's boundary, kept by the commit (P2: their nodes may be replaced).
+  std::span<const Index> boundary_edges() const { return boundary_edge_ids_; }
+  std::span<const Index> cavity() const { return cavity_; }
+
+  // Applies the plan. On a P2 mesh `inner_edge_nodes[i]` is the node of new_inner_edges()[i], and
+  // `changed_boundary_nodes` replaces the nodes of some boundary edges (edge id, node).
+  void commit(Mesh<D>& mesh, std::span<const Point> inner_edge_nodes = {},
+              std::span<const std::pair<Index, Point>> changed_boundary_nodes = {});
+
+ private:
+  struct BoundaryFace {
+    std::array<Index, D> vertices;  // oriented as seen from inside the cavity
+    Index outer_element;            // the neighbour outside, or kNoIndex
+    int outer_face;
+    Index facet;                    // the boundary facet on the face, or kNoIndex
+  };
+  // A face containing the vertex, keyed by its other D − 1 vertices: a new element's face or a
+  // kept boundary face; matched in pairs.
+  struct RidgeFace {
+    std::uint64_t key;
+    Index new_element;  // index in new_elements_, or kNoIndex for a kept boundary face
+    int face;           // local face of the new element, or index in boundary_faces_
+  };
+  struct Link {
+    Index new_element;
+    int face;
+    Index other_new_element;  // kNoIndex: linked to the kept boundary face `kept_face`
+    int other_face;
+    int kept_face;
+  };
+
+  bool in_cavity(Index k) const;
+  CavityStatus collect_boundary(const Mesh<D>& mesh);
+  CavityStatus match_ridges();
+  void plan_edges(const Mesh<D>& mesh);
+
+  std::vector<Index> cavity_;
+  Index vertex_ = kNoIndex;
+  int ref_ = 0;
+  std::vector<BoundaryFace> boundary_faces_;
+  std::vector<Index> starred_faces_;  // boundary face of each new element
+  std::vector<Element> new_elements_;
+  std::vector<RidgeFace> ridge_faces_;
+  std::vector<Link> links_;
+  std::vector<Index> vanishing_vertices_;
+  std::vector<std::uint64_t> boundary_edge_keys_;
+  std::vector<Index> boundary_edge_ids_;
+  std::vector<Index> removed_edges_;
+  std::vector<std::array<Index, 2>> new_inner_edges_;
+  std::vector<Point> start_nodes_;
+  std::vector<Index> scratch_;
+};
+
+extern template class CavityOperator<2>;
+extern template class CavityOperator<3>;
+
+}  // namespace hocav

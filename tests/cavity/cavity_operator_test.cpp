@@ -1,0 +1,139 @@
+#include "cavity/cavity_operator.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "cases/structured.hpp"
+#include "cavity/cavity_operations.hpp"
+#include "mesh/ball_and_shell.hpp"
+#include "mesh/consistency.hpp"
+#include "mesh/measure.hpp"
+
+namespace hocav {
+namespace {
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int kOperations = 60000;  // the sanitizer build runs ~10x slower
+#else
+constexpr int kOperations = 600000;
+#endif
+
+template <int D>
+double total_measure(const Mesh<D>& mesh) {
+  double sum = 0;
+  for (Index k = 0; k < mesh.element_count(); ++k) sum += element_measure(mesh, k);
+  return sum;
+}
+
+template <int D>
+void expect_consistent(const Mesh<D>& mesh, double measure, int operation) {
+  ConsistencyOptions options;
+  options.require_boundary_facets = true;
+  ASSERT_EQ(check_consistency(mesh, options), std::vector<std::string>{}) << "after operation " << operation;
+  ASSERT_NEAR(total_measure(mesh), measure, 1e-9) << "after operation " << operation;
+}
+
+// Random reinsertions, insertions, collapses and swaps, with the checker run along the way.
+template <int D>
+void run_random_operations(Mesh<D> mesh, std::uint32_t seed) {
+  mesh.make_p2();  // keeps the edge table (and straight P2 nodes) up to date through every operation
+  const double measure = total_measure(mesh);
+  const Index facets = mesh.facet_count();
+  std::vector<bool> on_boundary(static_cast<std::size_t>(mesh.vertex_count()), false);
+  for (const auto& facet : mesh.facets())
+    for (Index v : facet) on_boundary[v] = true;
+
+  CavityWorkspace<D> work;
+  CavityOptions options;
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Index> shell;
+  int accepted[4] = {}, tried[4] = {};
+  for (int operation = 0; operation < kOperations; ++operation) {
+    int kind = static_cast<int>(random() % 4);
+    Index k = static_cast<Index>(random() % static_cast<unsigned>(mesh.element_count()));
+    const auto element = mesh.element(k);
+    Index a = element[random() % (D + 1)], b = a;
+    while (b == a) b = element[random() % (D + 1)];
+    CavityStatus status = CavityStatus::kNotStarShaped;
+    if (kind == 0) {
+      status = reinsert_vertex(mesh, work, a, options);
+      ASSERT_EQ(status, CavityStatus::kAccepted) << "a vertex can always be reinserted in its own ball";
+    } else if (kind == 1) {
+      Vec<D> x;
+      for (int i = 0; i < D; ++i) x[i] = 0.02 + 0.96 * unit(random);
+      SymMat<D> metric = SymMat<D>::identity();
+      metric(0, 0) = 1 + 20 * unit(random);  // an anisotropic Delaunay criterion now and then
+      Index before = mesh.vertex_count(), inserted = kNoIndex;
+      status = insert_vertex(mesh, work, x, k, metric, options, &inserted);
+      if (status == CavityStatus::kAccepted) {
+        ASSERT_EQ(inserted, before);
+        on_boundary.push_back(false);
+      } else {
+        ASSERT_EQ(mesh.vertex_count(), before);
+      }
+    } else if (kind == 2) {
+      if (on_boundary[a]) continue;
+      status = collapse_edge(mesh, work, a, b, options);
+      if (status == CavityStatus::kAccepted) {
+        ASSERT_EQ(mesh.vertex_element(a), kNoIndex);
+      }
+    } else {
+      collect_shell(mesh, a, b, shell);
+      // A boundary edge stays (its boundary face is starred again): swap interior edges only.
+      bool boundary_edge = false;
+      for (Index s : shell)
+        for (int face = 0; face <= D; ++face) {
+          int holds = 0;
+          for (int i = 0; i < D; ++i) {
+            Index v = mesh.element(s)[face_vertices<D>(face)[i]];
+            holds += v == a || v == b;
+          }
+          boundary_edge = boundary_edge || (holds == 2 && mesh.neighbor(s, face) == kNoIndex);
+        }
+      if (boundary_edge) continue;
+      Index apex = kNoIndex;
+      const auto& other = mesh.element(shell[random() % shell.size()]);
+      for (Index v : other)
+        if (v != a && v != b) apex = v;
+      status = swap_edge(mesh, work, a, b, apex, options);
+      if (status == CavityStatus::kAccepted) {
+        ASSERT_EQ(mesh.find_edge(a, b), kNoIndex) << "the swapped edge is gone";
+      }
+    }
+    ++tried[kind];
+    accepted[kind] += status == CavityStatus::kAccepted;
+    if (operation % 5000 == 0) expect_consistent(mesh, measure, operation);
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  expect_consistent(mesh, measure, kOperations);
+  EXPECT_EQ(mesh.facet_count(), facets);
+  // Every kind of operation must have happened many times, not just been tried.
+  for (int kind = 0; kind < 4; ++kind) EXPECT_GT(accepted[kind], tried[kind] / 50) << "operation kind " << kind;
+  std::printf("%dD: accepted reinsert %d/%d insert %d/%d collapse %d/%d swap %d/%d; %d elements\n", D, accepted[0],
+              tried[0], accepted[1], tried[1], accepted[2], tried[2], accepted[3], tried[3], mesh.element_count());
+}
+
+TEST(CavityOperator, RandomOperationsKeepTheTriangleMeshConsistent) { run_random_operations(generate_square(10), 1); }
+TEST(CavityOperator, RandomOperationsKeepTheTetrahedralMeshConsistent) { run_random_operations(generate_cube(4), 2); }
+
+TEST(CavityOperator, RefusedPlansLeaveNoTrace) {
+  Mesh<3> mesh = generate_cube(3);
+  CavityOperator<3> op;
+  // Starring a ball from a vertex outside it folds the mesh: refused by the measure check.
+  std::vector<Index> ball;
+  collect_ball(mesh, 21, ball);  // an interior vertex of the 4x4x4 grid
+  CavityOptions options;
+  EXPECT_NE(op.plan(mesh, ball, 0, options), CavityStatus::kAccepted);
+  // A cavity whose elements carry different refs is refused.
+  Mesh<2> square = generate_square(2);
+  std::vector<Index> two = {0, 1};
+  Mesh<2> copy = square;
+  copy.set_element(1, copy.element(1), 7);
+  CavityOperator<2> op2;
+  EXPECT_EQ(op2.plan(copy, two, copy.element(0)[0], options), CavityStatus::kMixedRefs);
+}
+
+}  // namespace
+}  // namespace hocav
