@@ -21,33 +21,6 @@ namespace {
 
 constexpr int factorial(int n) { return n <= 1 ? 1 : n * factorial(n - 1); }
 
-// The kernel below writes the coefficients family by family; this is the order it assumes.
-template <int D>
-constexpr bool order_is_corners_edges_faces() {
-  int next = 0;
-  bool ok = true;
-  for (int i = 0; i <= D; ++i) {
-    BernsteinMultiIndex<D> corner{};
-    corner[i] = D;
-    ok = ok && kJacobianMultiIndices<D>[next++] == corner;
-  }
-  for (int edge = 0; edge < Simplex<D>::kEdges; ++edge)
-    for (int first_weight = (D == 2 ? 1 : 2); first_weight >= 1; --first_weight) {
-      BernsteinMultiIndex<D> gamma{};
-      gamma[edge_vertices<D>(edge)[0]] = first_weight;
-      gamma[edge_vertices<D>(edge)[1]] = D - first_weight;
-      ok = ok && kJacobianMultiIndices<D>[next++] == gamma;
-    }
-  if constexpr (D == 3)
-    for (int face = 0; face <= D; ++face) {
-      BernsteinMultiIndex<D> gamma{1, 1, 1, 1};
-      gamma[face] = 0;
-      ok = ok && kJacobianMultiIndices<D>[next++] == gamma;
-    }
-  return ok && next == kJacobianCoefficientCount<D>;
-}
-static_assert(order_is_corners_edges_faces<2>() && order_is_corners_edges_faces<3>());
-
 }  // namespace
 
 template <int D>
@@ -68,6 +41,7 @@ ElementJacobian<D> element_jacobian(const P2Element<D>& element) {
   for (int k = 1; k <= D; ++k)
     for (int i = 0; i <= D; ++i) d[k - 1][i] = net.of_pair(i, k) - net.of_pair(i, 0);
 
+  // Written family by family in the order of kJacobianMultiIndices: corners, edges, faces.
   JacobianCoefficients<D>& coefficients = result.coefficients;
   if constexpr (D == 2) {
     for (int i = 0; i <= D; ++i) coefficients[i] = 4 * determinant(d[0][i], d[1][i]);
