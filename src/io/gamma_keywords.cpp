@@ -86,7 +86,7 @@ int keyword_code(std::string_view name) {
 
 std::string keyword_name(int code) {
   const KnownKeyword* keyword = known_keyword(code);
-  return keyword ? std::string(keyword->name) : "keyword " + std::to_string(code);
+  return keyword ? std::string(keyword->name) : "code " + std::to_string(code);
 }
 
 bool is_unsupported_element(int code) {

@@ -33,7 +33,7 @@ enum Keyword : int {
 // skips (Normals, Tangents, Quadrilaterals...) so that binary warnings can name them.
 int keyword_code(std::string_view name);
 
-// The name of a keyword code; "keyword <code>" when the table does not know it.
+// The name of a keyword code; "code <code>" when the table does not know it.
 std::string keyword_name(int code);
 
 // Element kinds hocav cannot represent (quadrilaterals, hexahedra, prisms, pyramids, orders above

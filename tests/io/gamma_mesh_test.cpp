@@ -334,6 +334,24 @@ TEST(GammaMesh, ReadsByteSwappedBinaryFiles) {
   }
 }
 
+TEST(GammaMesh, SkipsUnknownBinaryKeywordsByNextPos) {
+  GammaBinaryBuilder file = binary_tet_vertices(3);
+  for (int code : {60, 200}) {  // Normals, then a code no table knows, each with data to jump over
+    file.begin_keyword(code);
+    file.count(2);
+    for (int i = 0; i < 6; ++i) file.real(0.25);
+    file.end_keyword();
+  }
+  add_tetrahedron(file);
+  file.end();
+  ::testing::internal::CaptureStderr();
+  MeshFileContent content = read_gamma_mesh(write_file("unknown_keywords.meshb", file.bytes()));
+  std::string warnings = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(std::get<Mesh<3>>(content.mesh).element_count(), 1);
+  EXPECT_NE(warnings.find("skipping keyword Normals "), std::string::npos) << warnings;
+  EXPECT_NE(warnings.find("skipping keyword code 200 "), std::string::npos) << warnings;
+}
+
 TEST(GammaMesh, RefusesMalformedBinaryFiles) {
   auto finished = [](GammaBinaryBuilder file) {
     file.end();
