@@ -88,7 +88,7 @@ JacobianCertificate certify_bernstein_above(const JacobianCoefficients<D>& coeff
                                             const SubdivisionLimits& limits) {
   if (!all_finite<D>(coefficients)) return {false, true, 0};
   JacobianCertificate certificate{true, true, 0};
-  certificate.subdivisions = walk_subdivision<D>(coefficients, limits, [&](const auto& c, double minimum, bool can_split) {
+  auto visit = [&](const JacobianCoefficients<D>& c, double minimum, bool can_split) {
     if (minimum > threshold) return Visit::kLeaf;
     if (min_corner<D>(c) <= threshold) {
       certificate = {false, true, 0};
@@ -97,7 +97,8 @@ JacobianCertificate certify_bernstein_above(const JacobianCoefficients<D>& coeff
     if (can_split) return Visit::kSplit;
     certificate = {false, false, 0};
     return Visit::kStop;
-  });
+  };
+  certificate.subdivisions = walk_subdivision<D>(coefficients, limits, visit);
   return certificate;
 }
 
@@ -119,7 +120,7 @@ template <int D>
 MinimumBounds bound_bernstein_minimum(const JacobianCoefficients<D>& coefficients, double tolerance,
                                       const SubdivisionLimits& limits) {
   MinimumBounds bounds{kInfinity, min_corner<D>(coefficients), false, 0};
-  bounds.subdivisions = walk_subdivision<D>(coefficients, limits, [&](const auto& c, double minimum, bool can_split) {
+  auto visit = [&](const JacobianCoefficients<D>& c, double minimum, bool can_split) {
     bounds.upper = std::min(bounds.upper, min_corner<D>(c));
     // A sub-simplex that cannot lower the bounds' gap below the tolerance is final.
     if (minimum >= bounds.upper - tolerance || !can_split) {
@@ -127,7 +128,8 @@ MinimumBounds bound_bernstein_minimum(const JacobianCoefficients<D>& coefficient
       return Visit::kLeaf;
     }
     return Visit::kSplit;
-  });
+  };
+  bounds.subdivisions = walk_subdivision<D>(coefficients, limits, visit);
   bounds.converged = bounds.upper - bounds.lower <= tolerance;
   return bounds;
 }
@@ -138,14 +140,16 @@ JacobianRange normalized_jacobian_range(const P2Element<D>& element, const Refin
   const JacobianRange range = jacobian_range<D>(jacobian.coefficients, options);
   const double straight = jacobian.straight_jacobian;
   return {normalize_jacobian(range.min_lower, straight), normalize_jacobian(range.min_upper, straight),
-          normalize_jacobian(range.max_lower, straight), normalize_jacobian(range.max_upper, straight), range.converged};
+          normalize_jacobian(range.max_lower, straight), normalize_jacobian(range.max_upper, straight),
+          range.converged};
 }
 
 template <int D>
 JacobianQuality jacobian_quality(const P2Element<D>& element, const RefinementOptions& options) {
   const ElementJacobian<D> jacobian = element_jacobian(element);
   const JacobianRange range = jacobian_range<D>(jacobian.coefficients, options);
-  return {normalize_jacobian(range.min_lower, jacobian.straight_jacobian), scaled_jacobian(range.min_lower, range.max_upper)};
+  return {normalize_jacobian(range.min_lower, jacobian.straight_jacobian),
+          scaled_jacobian(range.min_lower, range.max_upper)};
 }
 
 double scaled_jacobian(double min_lower, double max_upper) {

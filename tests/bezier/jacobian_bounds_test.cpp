@@ -112,7 +112,8 @@ TYPED_TEST(JacobianBoundsTest, MildlyCurvedElementsAreCertifiedOnTheFastPath) {
   constexpr int D = TypeParam::value;
   std::mt19937 random(21);
   for (int trial = 0; trial < 200; ++trial) {
-    const JacobianCertificate certificate = certify_min_normalized_jacobian(random_curved_element<D>(0.05, random), 0.01);
+    const P2Element<D> element = random_curved_element<D>(0.05, random);
+    const JacobianCertificate certificate = certify_min_normalized_jacobian(element, 0.01);
     EXPECT_TRUE(certificate.certified);
     EXPECT_EQ(certificate.subdivisions, 0);
   }
@@ -242,7 +243,8 @@ TYPED_TEST(JacobianBoundsTest, SmallNegativeRegionIsRejected) {
 // J of this triangle vanishes on edge 20 at λ = (1/4, 0, 3/4) and is positive elsewhere. No rounding
 // of its coefficients may certify J > 0 there.
 TEST(JacobianBounds, JacobianTouchingZeroIsNotCertifiedAboveZero) {
-  const P2Element<2> element = reference_element<2>({{0, Vec2{{0.0, -0.1}}}, {1, Vec2{{0.1, 0.1}}}, {2, Vec2{{0.5, 0.0}}}});
+  const P2Element<2> element =
+      reference_element<2>({{0, Vec2{{0.0, -0.1}}}, {1, Vec2{{0.1, 0.1}}}, {2, Vec2{{0.5, 0.0}}}});
   EXPECT_NEAR(reference_jacobian(element, {0.25, 0.0, 0.75}), 0.0, 1e-15);
   EXPECT_GT(sample_jacobian(element, 200).min, -1e-15);
   EXPECT_FALSE(certify_min_normalized_jacobian_above(element, 0.0, {kMaxSubdivisionDepth, 100000}));

@@ -66,7 +66,8 @@ TYPED_TEST(JacobianCoefficientsTest, ControlNodeOfAnEdgeIsTwiceItsNodeMinusTheMe
   for (int edge = 0; edge < Simplex<D>::kEdges; ++edge) {
     const auto& ends = edge_vertices<D>(edge);
     // The quadratic curve through the control node passes through the Lagrange node at t = 1/2.
-    const Vec<D> at_half = 0.25 * element.vertex(ends[0]) + 0.5 * net.of_pair(ends[0], ends[1]) + 0.25 * element.vertex(ends[1]);
+    const Vec<D> at_half =
+        0.25 * element.vertex(ends[0]) + 0.5 * net.of_pair(ends[0], ends[1]) + 0.25 * element.vertex(ends[1]);
     EXPECT_LT(norm(at_half - element.edge_node(edge)), 1e-14);
     EXPECT_EQ(net.of_pair(ends[1], ends[0]), net.of_pair(ends[0], ends[1]));
   }
