@@ -1,0 +1,37 @@
+// The paper's §IV algorithm: curve an adapted mesh by reinserting every volume vertex with the P2
+// cavity operator, its ball as the cavity. Boundary curvature, proposed beforehand from the
+// surface geometry, enters through the cavities whose boundary holds a surface edge.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "cavity/p2_cavity_operator.hpp"
+
+namespace hocav {
+
+struct ReinsertionOptions {
+  P2CavityOptions cavity{};
+  int passes = 1;
+  // Called now and then with the fraction of the work done (for progress on long runs).
+  std::function<void(double)> progress;
+};
+
+struct ReinsertionResult {
+  P2CavityCounters counters;
+  double seconds = 0;          // the reinsertion passes (no I/O)
+  Index vertices_reinserted = 0;
+};
+
+// Makes `mesh` P2 (straight nodes) when it is P1, then curves it. `vertex_metrics[v]` is the
+// metric at vertex v (the field's back mesh must be this mesh's P1 copy, so both number vertices
+// alike). `boundary` may be null.
+template <int D>
+ReinsertionResult curve_by_reinsertion(Mesh<D>& mesh, const MetricField<D>& field, BoundaryNodeSource<D>* boundary,
+                                       const ReinsertionOptions& options = {});
+
+// The vertices on no boundary facet: the ones the algorithm reinserts.
+template <int D>
+std::vector<Index> volume_vertices(const Mesh<D>& mesh);
+
+}  // namespace hocav

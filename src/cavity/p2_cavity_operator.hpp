@@ -1,0 +1,100 @@
+// The P2 cavity operator (the paper's §III.B), on top of the P1 operator:
+//  1. plan the star with the straight-element checks off (a valid P2 element may be an inverted
+//     P1 element); curve every new inner edge (vertex, boundary vertex) by minimizing its
+//     Riemannian length; give the cavity's boundary edges that have a waiting boundary proposal
+//     their proposed node;
+//  2. certify every new element, and every element outside the cavity around a boundary edge whose
+//     node changed, with the Bézier Jacobian test: min normalized Jacobian > floor;
+//  3. correct instead of relaxing blindly: for an element that fails, scale the displacement of its
+//     changed edges (straight midpoint → target) by the largest factor, found by bisection, that
+//     certifies it — inner edges first, boundary edges only if that is not enough; reject the
+//     cavity (mesh untouched) only when no factor works;
+//  4. commit.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "bezier/p2_element.hpp"
+#include "cavity/boundary_node_source.hpp"
+#include "cavity/cavity_operator.hpp"
+#include "curve/edge_optimizer.hpp"
+#include "metric/metric_field.hpp"
+
+namespace hocav {
+
+struct P2CavityOptions {
+  // Every element the operator creates or changes ends with min normalized Jacobian above this.
+  double jacobian_floor = 0.01;
+  EdgeOptimizerOptions optimizer{};
+  // Bisection steps of the correction factor (resolution 2^-steps).
+  int correction_steps = 10;
+};
+
+struct P2CavityCounters {
+  long long cavities = 0, accepted = 0;
+  long long rejected_topology = 0, rejected_curving = 0;
+  long long edges_optimized = 0, optimizer_iterations = 0;
+  long long boundary_nodes_applied = 0;
+  long long corrections = 0;           // elements that needed their edges pulled back
+  long long elements_certified = 0;
+  double seconds_plan = 0, seconds_optimize = 0, seconds_certify = 0, seconds_commit = 0;
+
+  P2CavityCounters& operator+=(const P2CavityCounters& other);
+};
+
+template <int D>
+class P2CavityOperator {
+ public:
+  // `vertex_log_metrics[v]` is log M at front vertex v; `vertex_hints[v]` a back element near it
+  // (both grow with the mesh: the caller owns them). `boundary` may be null (no surface curving).
+  P2CavityOperator(const MetricField<D>& field, std::vector<SymMat<D>>& vertex_log_metrics,
+                   std::vector<Index>& vertex_hints, BoundaryNodeSource<D>* boundary, const P2CavityOptions& options);
+
+  // Replaces `cavity` by the star of its boundary from `vertex`, curved and certified. The mesh
+  // must be P2 with its topology; it is unchanged unless the result is kAccepted.
+  CavityStatus apply(Mesh<D>& mesh, std::span<const Index> cavity, Index vertex);
+
+  const P2CavityCounters& counters() const { return counters_; }
+
+ private:
+  struct CurvedEdge {
+    Index a, b;
+    Vec<D> straight, target;
+    double scale = 1;  // node = straight + scale · (target − straight)
+    bool inner;        // a new inner edge (else a boundary edge taking a proposal)
+    Index id;          // index in the plan's inner edges, or the mesh edge id
+    Vec<D> node() const { return straight + scale * (target - straight); }
+  };
+  // An element to certify: a new one (its vertices) or one outside the cavity (its mesh id).
+  struct Candidate {
+    typename Mesh<D>::Element vertices;
+    Index mesh_element;  // kNoIndex for a new element
+  };
+
+  void curve_inner_edges(const Mesh<D>& mesh);
+  void take_boundary_proposals(const Mesh<D>& mesh);
+  void collect_candidates(const Mesh<D>& mesh);
+  P2Element<D> element_of(const Mesh<D>& mesh, const Candidate& candidate) const;
+  bool certified(const Mesh<D>& mesh, const Candidate& candidate);
+  // Pulls back the changed edges of a failing candidate; false when nothing certifies it.
+  bool correct(const Mesh<D>& mesh, const Candidate& candidate);
+
+  const MetricField<D>& field_;
+  std::vector<SymMat<D>>& vertex_log_metrics_;
+  std::vector<Index>& vertex_hints_;
+  BoundaryNodeSource<D>* boundary_;
+  P2CavityOptions options_;
+  CavityOperator<D> p1_;
+  P2CavityCounters counters_;
+  std::vector<CurvedEdge> curved_;
+  std::vector<Candidate> candidates_;
+  std::vector<Index> shell_;
+  std::vector<Vec<D>> inner_nodes_;
+  std::vector<std::pair<Index, Vec<D>>> boundary_nodes_;
+};
+
+extern template class P2CavityOperator<2>;
+extern template class P2CavityOperator<3>;
+
+}  // namespace hocav
