@@ -107,13 +107,12 @@ void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh) {
   const auto starts = p1_.new_inner_edge_start_nodes();
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const auto [a, b] = edges[i];
-    const Vec<D> straight = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
     auto result = optimize_edge_length(field_, mesh.vertex(a), mesh.vertex(b), vertex_log_metrics_[a],
                                        vertex_log_metrics_[b], starts[i], vertex_hints_[a], options_.optimizer);
     ++counters_.edges_optimized;
     counters_.optimizer_iterations += result.iterations;
     vertex_hints_[a] = result.back_element;  // near a: the next walk from a starts close
-    curved_.push_back({a, b, straight, result.node, 1, true, static_cast<Index>(i)});
+    curved_.push_back({a, b, starts[i], result.node, 1, true, static_cast<Index>(i)});
   }
 }
 

@@ -6,9 +6,11 @@
 //  2. certify every new element, and every element outside the cavity around a boundary edge whose
 //     node changed, with the Bézier Jacobian test: min normalized Jacobian > floor;
 //  3. correct instead of relaxing blindly: for an element that fails, scale the displacement of its
-//     changed edges (straight midpoint → target) by the largest factor, found by bisection, that
-//     certifies it — inner edges first, boundary edges only if that is not enough; reject the
-//     cavity (mesh untouched) only when no factor works;
+//     changed edges (fallback → target) by the largest factor, found by bisection, that certifies
+//     it — inner edges first, boundary edges only if that is not enough; reject the cavity (mesh
+//     untouched) only when no factor works. The fallback is the node the edge had before (a
+//     reinsertion recreates its edges) or the straight midpoint for a new edge, so a reinsertion
+//     can always fall back to the configuration that was already certified;
 //  4. commit.
 #pragma once
 
@@ -60,11 +62,11 @@ class P2CavityOperator {
  private:
   struct CurvedEdge {
     Index a, b;
-    Vec<D> straight, target;
-    double scale = 1;  // node = straight + scale · (target − straight)
+    Vec<D> fallback, target;
+    double scale = 1;  // node = fallback + scale · (target − fallback)
     bool inner;        // a new inner edge (else a boundary edge taking a proposal)
     Index id;          // index in the plan's inner edges, or the mesh edge id
-    Vec<D> node() const { return straight + scale * (target - straight); }
+    Vec<D> node() const { return fallback + scale * (target - fallback); }
   };
   // An element to certify: a new one (its vertices) or one outside the cavity (its mesh id).
   struct Candidate {

@@ -1,5 +1,7 @@
 #include "cli/command_support.hpp"
 
+#include <algorithm>
+
 namespace hocav {
 
 SolutionField read_metric_for_mesh(const std::string& metric_path, const MeshFileContent& mesh_file, bool with_edge_nodes) {
@@ -29,6 +31,22 @@ std::string mesh_summary(const Mesh<D>& mesh) {
   return summary;
 }
 
+template <int D>
+VtuField metric_tensor_field(const SolutionField& metric) {
+  VtuField field{"metric", 9, {}};
+  auto components = static_cast<std::size_t>(metric.components());
+  for (std::size_t first = 0; first < metric.values.size(); first += components)
+    for (int row = 0; row < 3; ++row)
+      for (int column = 0; column < 3; ++column) {
+        int high = std::max(row, column), low = std::min(row, column);
+        bool inside = row < D && column < D;
+        field.values.push_back(inside ? metric.values[first + static_cast<std::size_t>(high * (high + 1) / 2 + low)] : 0.0);
+      }
+  return field;
+}
+
+template VtuField metric_tensor_field<2>(const SolutionField&);
+template VtuField metric_tensor_field<3>(const SolutionField&);
 template std::string mesh_summary(const Mesh<2>&);
 template std::string mesh_summary(const Mesh<3>&);
 

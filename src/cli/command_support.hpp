@@ -6,6 +6,7 @@
 
 #include "io/mesh_file.hpp"
 #include "io/solution_file.hpp"
+#include "io/vtu_file.hpp"
 
 namespace hocav {
 
@@ -15,6 +16,11 @@ inline int dimension_of(const AnyMesh& mesh) { return std::holds_alternative<Mes
 // per file node, finite and positive definite). Returns its rows in the node order every writer
 // uses: the mesh's vertices, then, when with_edge_nodes (a P2 mesh read as P2), each edge's node.
 SolutionField read_metric_for_mesh(const std::string& metric_path, const MeshFileContent& mesh_file, bool with_edge_nodes);
+
+// Metric rows (SolutionField, .sol order) as a ParaView tensor field (9 components, row-major; the
+// z row and column are 0 in 2D).
+template <int D>
+VtuField metric_tensor_field(const SolutionField& metric);
 
 // "2D P1: 356 vertices, 605 triangles, 95 boundary edges"
 template <int D>

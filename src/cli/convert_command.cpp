@@ -48,21 +48,6 @@ void change_order(Mesh<D>& mesh, int order, bool with_metric) {
   }
 }
 
-// The metric as ParaView tensors (9 components, row-major; the z row and column are 0 in 2D).
-template <int D>
-VtuField metric_tensor_field(const SolutionField& metric) {
-  VtuField field{"metric", 9, {}};
-  auto components = static_cast<std::size_t>(metric.components());
-  for (std::size_t first = 0; first < metric.values.size(); first += components)
-    for (int row = 0; row < 3; ++row)
-      for (int column = 0; column < 3; ++column) {
-        int high = std::max(row, column), low = std::min(row, column);
-        bool inside = row < D && column < D;
-        field.values.push_back(inside ? metric.values[first + static_cast<std::size_t>(high * (high + 1) / 2 + low)] : 0.0);
-      }
-  return field;
-}
-
 template <int D>
 void convert(Mesh<D>& mesh, const MeshFileContent& file, const ConvertOptions& options) {
   std::string metric_output = metric_output_path(options);

@@ -61,6 +61,7 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<
   auto value = function.evaluate(first, sample.log_metric, field.log_metric_gradient(sample.where.element),
                                  Order::kHessian);
   ++result.evaluations;
+  const double initial_length = value.length;
   double trust = 0.25 * edge_size;
 
   for (; result.iterations < options.max_iterations; ++result.iterations) {
@@ -115,6 +116,14 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<
     trust = std::min(0.5 * edge_size, 2 * step_size);
   }
   result.length = value.length;
+
+  // Worth curving? Compare with the straight edge in the same rule.
+  double straight_length =
+      norm(first - midpoint) == 0 ? initial_length : function.length(midpoint, field.log_metric_at(midpoint, hint));
+  if (result.length > (1 - options.min_relative_decrease) * straight_length) {
+    result.node = midpoint;
+    result.length = straight_length;
+  }
 
   if (options.measure_gain) {
     result.straight_length = high_precision_edge_length(field, a, b, log_a, log_b, midpoint, hint);

@@ -11,12 +11,15 @@
 namespace hocav {
 
 struct EdgeOptimizerOptions {
-  const QuadratureRule* rule = &trapezoid_rule();
+  const QuadratureRule* rule = &default_optimizer_rule();
   int max_iterations = 30;
   // Stop when a step moves the node less than this fraction of |B − A|.
   double step_tolerance = 1e-7;
   // Largest distance of the node from the straight midpoint, as a fraction of |B − A|.
   double max_displacement = 0.5;
+  // An edge whose length (in the optimizer's rule) drops by less than this fraction stays
+  // straight: bending an edge distorts its elements, which a negligible gain does not pay for.
+  double min_relative_decrease = 1e-3;
   // Also compute the high-precision straight and optimized lengths (and the gain).
   bool measure_gain = false;
 };

@@ -12,6 +12,11 @@ const QuadratureRule& trapezoid_rule() {
   return rule;
 }
 
+const QuadratureRule& simpson_rule() {
+  static const QuadratureRule rule{"simpson-3", {0.0, 0.5, 1.0}, {1.0 / 6, 4.0 / 6, 1.0 / 6}};
+  return rule;
+}
+
 QuadratureRule gauss_legendre_rule(int points) {
   if (points < 1 || points > 128) throw Error("Gauss-Legendre rule: 1 to 128 points, got " + std::to_string(points));
   QuadratureRule rule{"gauss-legendre-" + std::to_string(points), std::vector<double>(points), std::vector<double>(points)};
@@ -42,6 +47,21 @@ QuadratureRule gauss_legendre_rule(int points) {
 const QuadratureRule& high_precision_rule() {
   static const QuadratureRule rule = gauss_legendre_rule(16);
   return rule;
+}
+
+}  // namespace hocav
+
+namespace hocav {
+
+const QuadratureRule& default_optimizer_rule() { return simpson_rule(); }
+
+QuadratureRule quadrature_rule_named(const std::string& name) {
+  if (name == "trapezoid") return trapezoid_rule();
+  if (name == "simpson") return simpson_rule();
+  if (name.starts_with("gauss-") && name.size() > 6 && name.find_first_not_of("0123456789", 6) == std::string::npos &&
+      name.size() < 10)
+    return gauss_legendre_rule(std::stoi(name.substr(6)));
+  throw Error("unknown quadrature '" + name + "' (trapezoid, simpson, gauss-N)");
 }
 
 }  // namespace hocav

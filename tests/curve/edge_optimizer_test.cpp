@@ -40,8 +40,10 @@ struct ShearCase {
     log_b = field->log_metric_at(b);
   }
 
+  const QuadratureRule* rule = &default_optimizer_rule();
+
   double objective(const Vec2& node) const {
-    EdgeLengthFunction<2> f(a, b, log_a, log_b, trapezoid_rule());
+    EdgeLengthFunction<2> f(a, b, log_a, log_b, *rule);
     return f.length(node, field->log_metric_at(node));
   }
 
@@ -80,9 +82,14 @@ TEST(EdgeOptimizer, UniformMetricGivesTheStraightEdgeAndNoGain) {
   EXPECT_NEAR(result.optimized_length, norm(b - a) / 0.25, 1e-12);
 }
 
-TEST(EdgeOptimizer, EdgeTangentToTheShearLayerBendsAlongIt) {
+class EdgeOptimizerRule : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(EdgeOptimizerRule, EdgeTangentToTheShearLayerBendsAlongIt) {
   ShearCase shear(0.01);
+  const QuadratureRule rule = quadrature_rule_named(GetParam());
+  shear.rule = &rule;
   EdgeOptimizerOptions options;
+  options.rule = &rule;
   options.measure_gain = true;
   auto result = optimize_edge_length(*shear.field, shear.a, shear.b, shear.log_a, shear.log_b,
                                      0.5 * (shear.a + shear.b), kNoIndex, options);
@@ -95,6 +102,8 @@ TEST(EdgeOptimizer, EdgeTangentToTheShearLayerBendsAlongIt) {
   EXPECT_LT(norm(result.node - brute), 1e-6 * norm(shear.b - shear.a));
   EXPECT_LE(result.length, shear.objective(brute) * (1 + 1e-10));
 }
+
+INSTANTIATE_TEST_SUITE_P(Rules, EdgeOptimizerRule, ::testing::Values("simpson", "trapezoid", "gauss-3"));
 
 TEST(EdgeOptimizer, AnisotropyTenThousandDoesNotBreakIt) {
   ShearCase shear(1e-5);  // h_max / h_min = 1e4

@@ -1,0 +1,121 @@
+// hocav curve IN --metric SOL -o OUT [--surface none] [--jacobian-floor X] [--passes N]
+//                [--report R.json] [--vtu V.vtu]
+// The paper's algorithm: propose boundary curvature, then reinsert every volume vertex with the P2
+// cavity operator, and write the curved P2 mesh with the Table-1 figures.
+#include <iostream>
+#include <memory>
+
+#include "adapt/reinsertion_curving.hpp"
+#include "base/error.hpp"
+#include "bezier/mesh_quality.hpp"
+#include "cli/command_support.hpp"
+#include "cli/commands.hpp"
+#include "geom/sym_functions.hpp"
+#include "io/atomic_output.hpp"
+#include "mesh/consistency.hpp"
+#include "report/curving_report.hpp"
+
+namespace hocav {
+namespace {
+
+struct CurveOptions {
+  std::string input, metric, output, report, vtu, surface = "none", quadrature = "simpson";
+  double jacobian_floor = 0.01;
+  int passes = 1;
+  bool quiet = false;
+};
+
+template <int D>
+std::vector<SymMat<D>> metrics_of(const SolutionField& rows) {
+  std::vector<SymMat<D>> metrics(rows.values.size() / SymMat<D>::kEntryCount);
+  for (std::size_t v = 0; v < metrics.size(); ++v)
+    for (int c = 0; c < SymMat<D>::kEntryCount; ++c) metrics[v].entries[c] = rows.values[v * SymMat<D>::kEntryCount + c];
+  return metrics;
+}
+
+// The metric at every output node (vertices, then P2 nodes from the back mesh), for the .vtu.
+template <int D>
+SolutionField metric_at_nodes(const Mesh<D>& mesh, const MetricField<D>& field) {
+  SolutionField rows{SolutionKind::kSymmetricMatrix, D, {}};
+  auto append = [&](const SymMat<D>& metric) { rows.values.insert(rows.values.end(), metric.entries.begin(), metric.entries.end()); };
+  for (Index v = 0; v < mesh.vertex_count(); ++v) append(exp_sym(field.vertex_log_metric(v)));
+  for (Index e = 0; e < mesh.edge_count(); ++e) append(exp_sym(field.log_metric_at(mesh.edge_node(e))));
+  return rows;
+}
+
+template <int D>
+void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& options) {
+  if (options.surface != "none")
+    throw Error("--surface " + options.surface + ": only 'none' is available in this build");
+  const SolutionField rows = read_metric_for_mesh(options.metric, file, false);
+  const MetricField<D> field(mesh, metrics_of<D>(rows));
+  const Index points_before = mesh.vertex_count();
+
+  ReinsertionOptions reinsertion;
+  reinsertion.cavity.jacobian_floor = options.jacobian_floor;
+  reinsertion.passes = options.passes;
+  const QuadratureRule rule = quadrature_rule_named(options.quadrature);
+  reinsertion.cavity.optimizer.rule = &rule;
+  int reported = 0;
+  if (!options.quiet && mesh.vertex_count() > 20000)
+    reinsertion.progress = [&](double fraction) {
+      for (; reported < static_cast<int>(10 * fraction); ++reported) std::cerr << "curving: " << 10 * (reported + 1) << "%\n";
+    };
+  ReinsertionResult result = curve_by_reinsertion<D>(mesh, field, nullptr, reinsertion);
+
+  ConsistencyOptions consistency;
+  consistency.require_positive_orientation = false;
+  if (auto problems = check_consistency(mesh, consistency); !problems.empty())
+    throw Error("internal error: the curved mesh is inconsistent: " + problems.front());
+  CurvingReport report = make_curving_report(mesh, field, points_before, result, 0);
+
+  write_mesh_file(options.output, mesh);
+  if (!options.vtu.empty()) {
+    VtuData data;
+    data.point_fields.push_back(metric_tensor_field<D>(metric_at_nodes(mesh, field)));
+    VtuField jacobian{"min_normalized_jacobian", 1, {}};
+    for (const auto& quality : mesh_jacobian_quality(mesh)) jacobian.values.push_back(quality.min_normalized_jacobian);
+    data.cell_fields.push_back(std::move(jacobian));
+    write_vtu(options.vtu, mesh, data);
+  }
+  if (!options.report.empty()) {
+    AtomicOutput out(options.report);
+    write_curving_report_json(out.stream(), report);
+    out.commit();
+  }
+  if (!options.quiet) {
+    std::cout << "curved " << options.input << " -> " << options.output << '\n';
+    write_curving_report_table(std::cout, report);
+  }
+}
+
+}  // namespace
+
+void add_curve_command(CLI::App& app) {
+  auto options = std::make_shared<CurveOptions>();
+  CLI::App* command = app.add_subcommand(
+      "curve", "Curve a mesh in its metric: reinsert every volume vertex with the P2 cavity operator");
+  command->add_option("input", options->input, "mesh to curve (.mesh, .meshb, .msh; P1 or P2)")->required();
+  command->add_option("--metric", options->metric, "metric at the input's nodes (.sol/.solb)")->required();
+  command->add_option("-o,--output", options->output, "curved P2 mesh to write (.mesh, .meshb, .msh, .vtu)")->required();
+  command->add_option("--surface", options->surface, "boundary curvature source: none")->capture_default_str();
+  command->add_option("--jacobian-floor", options->jacobian_floor,
+                      "every element the operator creates keeps its min normalized Jacobian above this")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  command->add_option("--quadrature", options->quadrature,
+                      "rule of the length the optimizer minimizes: simpson, trapezoid (the paper's), gauss-N")
+      ->capture_default_str();
+  command->add_option("--passes", options->passes, "reinsertion passes over the volume vertices")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
+  command->add_option("--report", options->report, "write the run's figures (Table-1 columns, counters) as JSON");
+  command->add_option("--vtu", options->vtu, "also write a .vtu for ParaView (metric and min normalized Jacobian)");
+  command->add_flag("-q,--quiet", options->quiet, "print nothing on success");
+  command->callback([options] {
+    MeshFileContent file = read_mesh_file(options->input);
+    std::visit([&](auto& mesh) { curve(mesh, file, *options); }, file.mesh);
+  });
+}
+
+}  // namespace hocav

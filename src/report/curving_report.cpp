@@ -1,0 +1,131 @@
+#include "report/curving_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+
+#include "curve/edge_optimizer.hpp"
+#include "geom/sym_eigen.hpp"
+#include "report/json_writer.hpp"
+
+namespace hocav {
+
+template <int D>
+CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& field, Index points_before,
+                                  const ReinsertionResult& result, Index boundary_proposals_left) {
+  CurvingReport report;
+  report.dimension = D;
+  report.elements = mesh.element_count();
+  report.points_before = points_before;
+  report.points_after = mesh.vertex_count() + mesh.edge_count();
+  report.seconds = result.seconds;
+  report.counters = result.counters;
+  report.edges_optimized_per_second =
+      result.seconds > 0 ? static_cast<double>(result.counters.edges_optimized) / result.seconds : 0;
+  report.boundary_proposals_left = boundary_proposals_left;
+
+  for (Index v = 0; v < field.back_mesh().vertex_count(); ++v) {
+    auto eigen = sym_eigen(field.vertex_log_metric(v));
+    // Sizes are e^(−θ/2): their ratio is e^((θmax − θmin)/2).
+    report.max_anisotropy = std::max(report.max_anisotropy, std::exp(0.5 * (eigen.values[D - 1] - eigen.values[0])));
+  }
+
+  // Bounds refined tightly, so an element certified just above the floor does not read below it.
+  RefinementOptions tight;
+  tight.relative_tolerance = 1e-6;
+  tight.limits = {16, 1 << 14};
+  auto summary = summarize_jacobian_quality(mesh_jacobian_quality(mesh, tight));
+  report.normalized_jacobian = summary.min_normalized_jacobian;
+  report.scaled_jacobian = summary.scaled_jacobian;
+
+  std::vector<bool> on_boundary(static_cast<std::size_t>(mesh.vertex_count()), false);
+  for (const auto& facet : mesh.facets())
+    for (Index v : facet) on_boundary[v] = true;
+  double gain_sum = 0;
+  Index gains = 0;
+  for (Index e = 0; e < mesh.edge_count(); ++e) {
+    auto [a, b] = mesh.edge_vertices(e);
+    if (a == kNoIndex || (on_boundary[a] && on_boundary[b])) continue;  // volume edges only
+    const Vec<D> straight = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
+    const auto &log_a = field.vertex_log_metric(a), &log_b = field.vertex_log_metric(b);
+    double straight_length = high_precision_edge_length(field, mesh.vertex(a), mesh.vertex(b), log_a, log_b, straight);
+    double curved_length =
+        high_precision_edge_length(field, mesh.vertex(a), mesh.vertex(b), log_a, log_b, mesh.edge_node(e));
+    double gain = 1 - curved_length / straight_length;
+    gain_sum += gain;
+    report.max_gain = std::max(report.max_gain, gain);
+    ++gains;
+  }
+  report.average_gain = gains > 0 ? gain_sum / static_cast<double>(gains) : 0;
+  return report;
+}
+
+namespace {
+
+void write_summary(JsonWriter& json, std::string_view name, const ValueSummary& summary) {
+  json.key(name).begin_object();
+  json.member("min", summary.min).member("avg", summary.average).member("max", summary.max);
+  json.member("invalid", summary.invalid_count);
+  json.end_object();
+}
+
+}  // namespace
+
+void write_curving_report_json(std::ostream& out, const CurvingReport& report) {
+  JsonWriter json(out);
+  json.begin_object();
+  json.member("dimension", report.dimension);
+  json.member("elements", report.elements);
+  json.member("points_before", report.points_before);
+  json.member("points_after", report.points_after);
+  json.member("max_anisotropy", report.max_anisotropy);
+  json.member("edges_optimized_per_second", report.edges_optimized_per_second);
+  json.member("seconds_without_io", report.seconds);
+  json.member("threads", report.threads);
+  write_summary(json, "normalized_jacobian", report.normalized_jacobian);
+  write_summary(json, "scaled_jacobian", report.scaled_jacobian);
+  json.member("average_gain", report.average_gain);
+  json.member("max_gain", report.max_gain);
+  json.member("boundary_proposals_left", report.boundary_proposals_left);
+  const P2CavityCounters& c = report.counters;
+  json.key("cavities").begin_object();
+  json.member("tried", c.cavities).member("accepted", c.accepted);
+  json.member("rejected_topology", c.rejected_topology).member("rejected_curving", c.rejected_curving);
+  json.member("edges_optimized", c.edges_optimized).member("optimizer_iterations", c.optimizer_iterations);
+  json.member("boundary_nodes_applied", c.boundary_nodes_applied).member("corrections", c.corrections);
+  json.member("elements_certified", c.elements_certified);
+  json.end_object();
+  json.key("seconds_per_phase").begin_object();
+  json.member("plan", c.seconds_plan).member("optimize", c.seconds_optimize);
+  json.member("certify", c.seconds_certify).member("commit", c.seconds_commit);
+  json.end_object();
+  json.end_object();
+  out << '\n';
+}
+
+void write_curving_report_table(std::ostream& out, const CurvingReport& report) {
+  char line[160];
+  auto row = [&](const char* name, const char* format, auto... values) {
+    std::snprintf(line, sizeof line, format, values...);
+    out << "  " << name << std::string(std::max<std::size_t>(1, 32 - std::string_view(name).size()), ' ') << line << '\n';
+  };
+  row(report.dimension == 3 ? "tetrahedra" : "triangles", "%d", report.elements);
+  row("points before / after", "%d / %d", report.points_before, report.points_after);
+  row("max anisotropy", "%.3g", report.max_anisotropy);
+  row("edges optimized per second", "%.0f", report.edges_optimized_per_second);
+  row("time without I/O", "%.3f s", report.seconds);
+  row("normalized Jacobian min/avg/max", "%.3g / %.3g / %.3g", report.normalized_jacobian.min,
+      report.normalized_jacobian.average, report.normalized_jacobian.max);
+  row("scaled Jacobian min", "%.3g", report.scaled_jacobian.min);
+  row("gain avg / max", "%.2f%% / %.1f%%", 100 * report.average_gain, 100 * report.max_gain);
+  row("cavities accepted / tried", "%lld / %lld", report.counters.accepted, report.counters.cavities);
+  row("rejected (topology / curving)", "%lld / %lld", report.counters.rejected_topology, report.counters.rejected_curving);
+  row("corrections", "%lld", report.counters.corrections);
+  row("boundary nodes applied / left", "%lld / %d", report.counters.boundary_nodes_applied, report.boundary_proposals_left);
+}
+
+template CurvingReport make_curving_report(const Mesh<2>&, const MetricField<2>&, Index, const ReinsertionResult&, Index);
+template CurvingReport make_curving_report(const Mesh<3>&, const MetricField<3>&, Index, const ReinsertionResult&, Index);
+
+}  // namespace hocav

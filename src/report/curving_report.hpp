@@ -1,0 +1,38 @@
+// The figures of a curving run in the columns of the paper's Table 1 (math.md §11,
+// shared design benchmarks.md), measured on the output mesh, plus the operator's counters.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+
+#include "adapt/reinsertion_curving.hpp"
+#include "bezier/mesh_quality.hpp"
+
+namespace hocav {
+
+struct CurvingReport {
+  int dimension = 3;
+  Index elements = 0;
+  Index points_before = 0;  // P1 points of the input
+  Index points_after = 0;   // P1 points + P2 nodes of the output
+  double max_anisotropy = 0;  // largest ratio of largest to smallest metric size at a vertex
+  double seconds = 0;         // curving time, no I/O
+  double edges_optimized_per_second = 0;  // over the whole curving time
+  ValueSummary normalized_jacobian;       // per element: min of J / |J_straight|
+  ValueSummary scaled_jacobian;           // per element: min J / max J (gmsh's measure)
+  double average_gain = 0, max_gain = 0;  // over volume edges: 1 − ℓ(curved) / ℓ(straight), 16-point Gauss
+  Index boundary_proposals_left = 0;      // proposals no cavity consumed
+  P2CavityCounters counters;
+  int threads = 1;
+};
+
+// Measures the output (Jacobians, gains) and gathers the run's figures.
+template <int D>
+CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& field, Index points_before,
+                                  const ReinsertionResult& result, Index boundary_proposals_left);
+
+void write_curving_report_json(std::ostream& out, const CurvingReport& report);
+// A short aligned table for the terminal.
+void write_curving_report_table(std::ostream& out, const CurvingReport& report);
+
+}  // namespace hocav
