@@ -1,6 +1,8 @@
 // Signed P1 measure (area in 2D, volume in 3D) of a straight simplex; positive when the vertices
-// are in the orientation of the reference element.
+// are in the orientation of the reference element. And the size of a mesh's bounding box.
 #pragma once
+
+#include <algorithm>
 
 #include "mesh/mesh.hpp"
 
@@ -21,6 +23,19 @@ double element_measure(const Mesh<D>& mesh, Index k) {
     return signed_measure(mesh.vertex(e[0]), mesh.vertex(e[1]), mesh.vertex(e[2]));
   else
     return signed_measure(mesh.vertex(e[0]), mesh.vertex(e[1]), mesh.vertex(e[2]), mesh.vertex(e[3]));
+}
+
+// The length of the diagonal of the vertices' axis-aligned bounding box (0 for no vertex).
+template <int D>
+double bounding_box_diagonal(const Mesh<D>& mesh) {
+  if (mesh.vertex_count() == 0) return 0;
+  Vec<D> low = mesh.vertex(0), high = low;
+  for (const auto& x : mesh.vertices())
+    for (int i = 0; i < D; ++i) {
+      low[i] = std::min(low[i], x[i]);
+      high[i] = std::max(high[i], x[i]);
+    }
+  return norm(high - low);
 }
 
 }  // namespace hocav
