@@ -1,0 +1,49 @@
+// Meshes and metrics shared by the tests of the metric sources (implied, surface, gradation, Hessian).
+#pragma once
+
+#include <random>
+
+#include "../geom/random_matrices.hpp"
+#include "cases/structured.hpp"
+#include "geom/sym_mat.hpp"
+
+namespace hocav::metric_test {
+
+template <int D>
+Mesh<D> unit_mesh(int cells_per_side) {
+  if constexpr (D == 2)
+    return generate_square(cells_per_side);
+  else
+    return generate_cube(cells_per_side);
+}
+
+// The structured unit square or cube with its interior vertices moved at random by up to
+// `amplitude` cells along each axis (amplitude < 0.25 keeps every element positive).
+template <int D>
+Mesh<D> perturbed_unit_mesh(int cells_per_side, double amplitude, unsigned seed = 7) {
+  Mesh<D> mesh = unit_mesh<D>(cells_per_side);
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> shift(-amplitude / cells_per_side, amplitude / cells_per_side);
+  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+    Vec<D>& x = mesh.vertex(v);
+    bool interior = true;
+    for (int i = 0; i < D; ++i) interior = interior && x[i] > 1e-12 && x[i] < 1 - 1e-12;
+    if (interior)
+      for (int i = 0; i < D; ++i) x[i] += shift(random);
+  }
+  return mesh;
+}
+
+// A random SPD metric with sizes between h and h · size_ratio along random axes.
+template <int D>
+SymMat<D> random_metric(std::mt19937_64& random, double h, double size_ratio) {
+  std::uniform_real_distribution<double> log_size(0, std::log(size_ratio));
+  Vec<D> eigenvalues;
+  for (int i = 0; i < D; ++i) {
+    double size = h * std::exp(log_size(random));
+    eigenvalues[i] = 1 / (size * size);
+  }
+  return geom_test::random_with_eigenvalues<D>(random, eigenvalues);
+}
+
+}  // namespace hocav::metric_test
