@@ -1,0 +1,112 @@
+#include "metric/surface_metric.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "base/error.hpp"
+#include "metric_test_support.hpp"
+
+namespace hocav {
+namespace {
+
+template <int D>
+Index vertex_at(const Mesh<D>& mesh, const Vec<D>& x) {
+  for (Index v = 0; v < mesh.vertex_count(); ++v)
+    if (norm(mesh.vertex(v) - x) < 1e-12) return v;
+  return kNoIndex;
+}
+
+template <int D>
+void expect_near(const Vec<D>& actual, const Vec<D>& expected) {
+  for (int i = 0; i < D; ++i) EXPECT_NEAR(actual[i], expected[i], 1e-14);
+}
+
+TEST(SurfaceMetric, NormalsOfTheSquareAreOutwardAndAreaWeighted) {
+  Mesh<2> mesh = generate_square(4);
+  auto normals = boundary_vertex_normals(mesh);
+  expect_near(normals[vertex_at(mesh, Vec2{{0.5, 0}})], Vec2{{0, -1}});
+  expect_near(normals[vertex_at(mesh, Vec2{{1, 0.25}})], Vec2{{1, 0}});
+  expect_near(normals[vertex_at(mesh, Vec2{{0.75, 1}})], Vec2{{0, 1}});
+  expect_near(normals[vertex_at(mesh, Vec2{{0, 0.5}})], Vec2{{-1, 0}});
+  expect_near(normals[vertex_at(mesh, Vec2{{1, 1}})], Vec2{{std::sqrt(0.5), std::sqrt(0.5)}});
+  expect_near(normals[vertex_at(mesh, Vec2{{0.5, 0.5}})], Vec2{});
+}
+
+// The cube with its boundary facets listed in both orientations at random: normals are outward anyway.
+Mesh<3> cube_with_shuffled_facets(int cells) {
+  Mesh<3> cube = generate_cube(cells), mesh;
+  for (const auto& x : cube.vertices()) mesh.add_vertex(x);
+  for (const auto& element : cube.elements()) mesh.add_element(element, 1);
+  for (Index f = 0; f < cube.facet_count(); ++f) {
+    auto facet = cube.facet(f);
+    if (f % 3 == 0) std::swap(facet[1], facet[2]);
+    mesh.add_facet(facet, cube.facet_ref(f));
+  }
+  mesh.build_topology();
+  return mesh;
+}
+
+TEST(SurfaceMetric, NormalsOfTheCubeAreOutwardWhateverTheFacetOrientation) {
+  Mesh<3> mesh = cube_with_shuffled_facets(2);
+  auto normals = boundary_vertex_normals(mesh);
+  expect_near(normals[vertex_at(mesh, Vec3{{0.5, 0.5, 0}})], Vec3{{0, 0, -1}});
+  expect_near(normals[vertex_at(mesh, Vec3{{1, 0.5, 0.5}})], Vec3{{1, 0, 0}});
+  expect_near(normals[vertex_at(mesh, Vec3{{0.5, 1, 0.5}})], Vec3{{0, 1, 0}});
+  expect_near(normals[vertex_at(mesh, Vec3{{0.5, 0.5, 0.5}})], Vec3{});
+  // On a cube edge, the two faces count by their facets' areas around the vertex.
+  Vec3 edge_normal = normals[vertex_at(mesh, Vec3{{0.5, 0, 0}})];
+  EXPECT_LT(edge_normal[0], 1e-14);
+  EXPECT_LT(edge_normal[1], 0);
+  EXPECT_LT(edge_normal[2], 0);
+  EXPECT_NEAR(norm(edge_normal), 1, 1e-14);
+}
+
+TEST(SurfaceMetric, SizesAlongTheNormalInTheTangentPlaneAndInside) {
+  Mesh<3> mesh = generate_cube(2);
+  SurfaceSizes sizes{0.01, 0.2, 3};
+  auto metrics = surface_metric_at_vertices(mesh, sizes);
+  const SymMat3& face = metrics[vertex_at(mesh, Vec3{{0.5, 0.5, 0}})];
+  EXPECT_NEAR(quadratic_form(face, Vec3{{0, 0, 0.01}}), 1, 1e-12);
+  EXPECT_NEAR(quadratic_form(face, Vec3{{0.2, 0, 0}}), 1, 1e-12);
+  EXPECT_NEAR(quadratic_form(face, Vec3{{0, 0.2, 0}}), 1, 1e-12);
+  EXPECT_NEAR(face(2, 0), 0, 1e-12);
+  const SymMat3& inside = metrics[vertex_at(mesh, Vec3{{0.5, 0.5, 0.5}})];
+  EXPECT_EQ(inside, (1 / 9.0) * SymMat3::identity());
+  // At a corner the normal is the diagonal of the three faces.
+  Vec3 diagonal{{1 / std::sqrt(3.0), 1 / std::sqrt(3.0), 1 / std::sqrt(3.0)}};
+  EXPECT_NEAR(quadratic_form(metrics[vertex_at(mesh, Vec3{{1, 1, 1}})], 0.01 * diagonal), 1, 1e-12);
+
+  Mesh<2> square = generate_square(2);
+  auto square_metrics = surface_metric_at_vertices(square, sizes);
+  const SymMat2& side = square_metrics[vertex_at(square, Vec2{{0, 0.5}})];
+  EXPECT_NEAR(side(0, 0), 1e4, 1e-8);
+  EXPECT_NEAR(side(1, 1), 25, 1e-12);
+  EXPECT_NEAR(side(1, 0), 0, 1e-12);
+}
+
+TEST(SurfaceMetric, OpposedFacetsLeaveTheSmallSizeInEveryDirection) {
+  // A bow tie: two triangles touching at vertex 0 only, whose boundary edges there face opposite ways.
+  Mesh<2> mesh;
+  for (Vec2 x : {Vec2{{0, 0}}, Vec2{{-1, -1}}, Vec2{{-1, 1}}, Vec2{{1, 1}}, Vec2{{1, -1}}}) mesh.add_vertex(x);
+  mesh.add_element({0, 2, 1});
+  mesh.add_element({0, 4, 3});
+  for (Mesh<2>::Facet facet : {Mesh<2>::Facet{0, 2}, Mesh<2>::Facet{2, 1}, Mesh<2>::Facet{1, 0}, Mesh<2>::Facet{0, 4},
+                               Mesh<2>::Facet{4, 3}, Mesh<2>::Facet{3, 0}})
+    mesh.add_facet(facet);
+  mesh.build_topology();
+  auto metrics = surface_metric_at_vertices(mesh, SurfaceSizes{0.5, 1, 1});
+  EXPECT_EQ(boundary_vertex_normals(mesh)[0], Vec2{});
+  EXPECT_EQ(metrics[0], 4 * SymMat2::identity());
+  expect_near(boundary_vertex_normals(mesh)[1], Vec2{{-std::sqrt(0.5), -std::sqrt(0.5)}});
+}
+
+TEST(SurfaceMetric, RefusesNonPositiveSizes) {
+  Mesh<2> mesh = generate_square(1);
+  EXPECT_THROW(surface_metric_at_vertices(mesh, SurfaceSizes{0, 1, 1}), Error);
+  EXPECT_THROW(surface_metric_at_vertices(mesh, SurfaceSizes{1, -1, 1}), Error);
+  EXPECT_THROW(surface_metric_at_vertices(mesh, SurfaceSizes{1, 1, std::nan("")}), Error);
+}
+
+}  // namespace
+}  // namespace hocav
