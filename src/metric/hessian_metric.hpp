@@ -1,0 +1,40 @@
+// The Hessian-based Lp metric (math.md §10), optimal for the Lp norm of the P1 interpolation error
+// of a field with Hessian H at a target complexity N:
+//   |H| = R |Λ| Rᵀ, the eigenvalues' absolute values clamped to [h_max⁻², h_min⁻²],
+//   M = D_N det(|H|)^{−1/(2p+d)} |H|,   D_N = N^{2/d} ( ∫ det(|H|)^{p/(2p+d)} )^{−2/d}.
+// The clamp keeps det(|H|) > 0 where the field is linear (H = 0) and caps the anisotropy of |H| at
+// (h_max/h_min)², reading H as the metric of a field of order one (error 1); the sizes of M itself
+// follow from N. Integrals over the mesh use P1 vertex values on the straight elements:
+//   ∫ f = Σ_v f_v w_v,  w_v = Σ_{K ∋ v} |K| / (d + 1),
+// and with this rule the complexity ∫ sqrt(det M) of the result is N exactly (to round-off).
+#pragma once
+
+#include <vector>
+
+#include "geom/sym_mat.hpp"
+#include "mesh/mesh.hpp"
+
+namespace hocav {
+
+struct LpMetricOptions {
+  double complexity = 1000;  // N > 0
+  double norm = 2;           // p > 0
+  double h_min = 1e-6;       // 0 < h_min <= h_max
+  double h_max = 1;
+};
+
+// The P1 quadrature weights w_v (the absolute straight measures of the elements, shared equally).
+template <int D>
+std::vector<double> vertex_volumes(const Mesh<D>& mesh);
+
+// ∫ sqrt(det M) with the P1 vertex rule: the number of vertices a unit mesh of M would have, up to a
+// constant factor of the element shape.
+template <int D>
+double metric_complexity(const Mesh<D>& mesh, const std::vector<SymMat<D>>& metrics);
+
+// One metric per vertex from one Hessian per vertex. Throws Error for invalid options or a mesh of
+// zero measure.
+template <int D>
+std::vector<SymMat<D>> lp_metric(const Mesh<D>& mesh, const std::vector<SymMat<D>>& hessians, const LpMetricOptions& options);
+
+}  // namespace hocav
