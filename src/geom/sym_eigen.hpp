@@ -4,17 +4,18 @@
 // - sym_eigen: fast, for log-metrics T (the hot loop: exp and its Fréchet derivatives). Accuracy is ABSOLUTE,
 //   every eigenvalue within a few eps·‖M‖, residual ‖MV − VΛ‖ of the same order; that is all a log-metric
 //   needs, since an absolute error δ on θ is a relative error δ on the metric eigenvalue e^θ.
-//   3×3: the best separated eigenvalue in closed form (Cardano's trigonometric form on the shifted and
-//   scaled matrix), its eigenvector as a null vector by cross products, and the remaining 2×2 block in the
-//   orthogonal complement by one exact Jacobi rotation, which keeps repeated eigenvalues well behaved.
+//   3×3: the best separated eigenvalue in closed form (trigonometric solution of the characteristic cubic of
+//   the deviatoric part), its eigenvector as the longest cross product of two rows of M − λI, and the other two
+//   eigenpairs from the 2×2 block in the orthogonal complement, solved exactly, so repeated and nearly
+//   repeated eigenvalues keep orthonormal eigenvectors. 2×2: mean ∓ radius.
 //
 // - spd_eigen: cyclic Jacobi with the Demmel–Veselić stopping rule, for metrics M (SPD, eigenvalues up to
-//   1e16 apart). Each eigenvalue is found to RELATIVE accuracy eps·κ(Δ⁻¹MΔ⁻¹), Δ = diag(M)^{1/2}: small
-//   eigenvalues of graded or axis-aligned metrics stay accurate where any closed form loses them. About
-//   three times slower; use it once per input metric (log_spd, pow_spd, intersection), not in hot loops.
+//   1e16 apart). Each eigenvalue is found to RELATIVE accuracy ~eps·κ(Δ⁻¹MΔ⁻¹), Δ = diag(M)^{1/2}: small
+//   eigenvalues of graded or axis-aligned metrics stay accurate where any closed form loses them. Two to
+//   three times slower in 3D; use it once per input metric (log_spd, pow_spd, intersection), not in hot loops.
 //
-// Both return the eigenvalues in ascending order, with orthonormal eigenvectors (to ~1e-15) in the
-// matching columns of `vectors`. For 2×2 matrices both are one exact Jacobi rotation.
+// Both return the eigenvalues in ascending order, with orthonormal eigenvectors (to a few eps) in the matching
+// columns of `vectors`.
 #pragma once
 
 #include <cmath>
