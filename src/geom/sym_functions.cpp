@@ -114,6 +114,22 @@ SymMat<D> ExpFrechet<D>::derivative(const SymMat<D>& direction) const {
 }
 
 template <int D>
+double ExpFrechet<D>::squared_length(const Vec<D>& u) const {
+  Vec<D> w = transpose_times(eigen_.vectors, u);
+  double sum = 0.0;
+  for (int k = 0; k < D; ++k) sum += first_differences_(k, k) * w[k] * w[k];
+  return sum;
+}
+
+template <int D>
+SymMat<D> ExpFrechet<D>::squared_length_gradient(const Vec<D>& u) const {
+  Vec<D> w = transpose_times(eigen_.vectors, u);
+  SymMat<D> in_eigenbasis = outer(w);
+  for (int k = 0; k < SymMat<D>::kEntryCount; ++k) in_eigenbasis.entries[k] *= first_differences_.entries[k];
+  return congruence(eigen_.vectors, in_eigenbasis);
+}
+
+template <int D>
 SymMat<D> ExpFrechet<D>::second_derivative(const SymMat<D>& direction1, const SymMat<D>& direction2) const {
   // exp[θi, θj, θk] is symmetric in its arguments: compute it for i ≤ j ≤ k (ascending θ) and copy it to the
   // permutations.

@@ -47,9 +47,10 @@ double exp_divided_difference(double a, double b, double c);
 // exp(T) and its Fréchet derivatives at one T, sharing one eigendecomposition T = V diag(θ) Vᵀ (Daleckii–Krein):
 //   Dexp(T)[H]        = V (Γ ∘ (Vᵀ H V)) Vᵀ,                       Γ_kl = exp[θk, θl],
 //   D²exp(T)[H1, H2]_kl = Σ_m exp[θk, θm, θl] (H1'_km H2'_ml + H2'_km H1'_ml)   in the eigenbasis, H' = Vᵀ H V.
-// Build one per evaluation point and ask for as many directions as needed. Dexp(T) is self-adjoint for the
-// Frobenius product, so the gradient of a squared length uᵀ exp(T) u along every direction H is
-// frobenius_dot(derivative(outer(u)), H): one derivative serves all directions.
+// Build one per evaluation point and ask for as many directions as needed.
+// For metric lengths prefer squared_length and squared_length_gradient: they work in the eigenbasis, so they keep
+// the relative accuracy of lengths along the small eigenvalues, which the explicit matrix value() rounds away
+// (each entry is rounded relative to λmax: a relative error eps·κ on uᵀ value() u, all of it at κ = 1e16).
 template <int D>
 class ExpFrechet {
  public:
@@ -59,10 +60,16 @@ class ExpFrechet {
   SymMat<D> derivative(const SymMat<D>& direction) const;
   SymMat<D> second_derivative(const SymMat<D>& direction1, const SymMat<D>& direction2) const;
 
+  // uᵀ exp(T) u = Σ_k e^θk (v_kᵀu)², a sum of positive terms each relatively accurate.
+  double squared_length(const Vec<D>& u) const;
+  // G = Dexp(T)[u uᵀ] = V (Γ ∘ w wᵀ) Vᵀ with w = Vᵀu. Dexp(T) is self-adjoint for the Frobenius product, so the
+  // derivative of uᵀ exp(T) u along any H is frobenius_dot(G, H): one G serves all directions of a gradient.
+  SymMat<D> squared_length_gradient(const Vec<D>& u) const;
+
  private:
   SymEigen<D> eigen_;
   SymMat<D> value_;
-  SymMat<D> first_differences_;  // Γ_kl = exp[θk, θl]
+  SymMat<D> first_differences_;  // Γ_kl = exp[θk, θl]; Γ_kk = e^θk
 };
 
 // One-off forms of the above.

@@ -48,7 +48,8 @@ auto central_difference(Function f) {
 TYPED_TEST(SymFunctionsTest, DiagonalMatricesWithHugeRatios) {
   constexpr int D = TypeParam::value;
   Vec<D> theta, lambda;
-  for (int i = 0; i < D; ++i) theta[i] = kLogEigenvalueBound * (1.0 - 2.0 * i / (D - 1)), lambda[i] = std::exp(theta[i]);
+  for (int i = 0; i < D; ++i)
+    theta[i] = kLogEigenvalueBound * (1.0 - 2.0 * i / (D - 1)), lambda[i] = std::exp(theta[i]);
   SymMat<D> m = SymMat<D>::from_diagonal(lambda), t = SymMat<D>::from_diagonal(theta);
   for (int i = 0; i < D; ++i) {
     EXPECT_NEAR(log_spd(m)(i, i), theta[i], 4 * kEpsilon * kLogEigenvalueBound);
@@ -141,8 +142,7 @@ TEST(SymFunctions, ExpDividedDifferences) {
     EXPECT_NEAR(exp_divided_difference(a, a) / std::exp(a), 1.0, 2 * kEpsilon);
     EXPECT_NEAR(exp_divided_difference(a, a, a) / std::exp(a), 0.5, 2 * kEpsilon);
     double b = a + 3.0;
-    EXPECT_NEAR(exp_divided_difference(a, b, a) / ((std::exp(b) - std::exp(a) - 3.0 * std::exp(a)) / 9.0), 1.0,
-                1e-14);
+    EXPECT_NEAR(exp_divided_difference(a, b, a) / ((std::exp(b) - std::exp(a) - 3.0 * std::exp(a)) / 9.0), 1.0, 1e-14);
   }
   // Against long double quotients wherever their cancellation stays below 1e-16 (spreads ≥ 0.1), on both sides
   // of the switch between the series and the quotients.
@@ -210,16 +210,35 @@ TYPED_TEST(SymFunctionsTest, FrechetDerivativesAtAMultipleOfTheIdentity) {
 
 // Dexp(T) is self-adjoint, so the derivative of the squared length uᵀexp(T)u along any H is
 // frobenius_dot(Dexp(T)[u uᵀ], H): what the edge optimizer uses to get a gradient from one derivative.
-TYPED_TEST(SymFunctionsTest, DerivativeOfASquaredLengthFromOneDerivative) {
+TYPED_TEST(SymFunctionsTest, SquaredLengthAndItsGradient) {
   constexpr int D = TypeParam::value;
   std::mt19937_64 rng(10);
   for (int trial = 0; trial < 1000; ++trial) {
-    ExpFrechet<D> at_t(random_with_eigenvalues<D>(rng, log_eigenvalues_case<D>(rng, trial)));
+    SymMat<D> t = random_with_eigenvalues<D>(rng, log_eigenvalues_case<D>(rng, trial));
+    ExpFrechet<D> at_t(t);
+    double scale = max_abs_entry(at_t.value());
     Vec<D> u = random_vec<D>(rng, -1, 1);
-    SymMat<D> gradient = at_t.derivative(outer(u));
+    EXPECT_NEAR(at_t.squared_length(u), quadratic_form(at_t.value(), u), 1e-14 * scale);
+    SymMat<D> gradient = at_t.squared_length_gradient(u);
+    EXPECT_LE(max_abs_entry(gradient - at_t.derivative(outer(u))), 1e-14 * scale);
     SymMat<D> h = random_direction<D>(rng);
-    double direct = quadratic_form(at_t.derivative(h), u);
-    EXPECT_NEAR(frobenius_dot(gradient, h), direct, 1e-13 * max_abs_entry(at_t.value()));
+    EXPECT_NEAR(frobenius_dot(gradient, h), quadratic_form(at_t.derivative(h), u), 1e-13 * scale);
+    double difference = central_difference([&](double s) { return ExpFrechet<D>(t + s * h).squared_length(u); });
+    EXPECT_NEAR(frobenius_dot(gradient, h), difference, 1e-9 * scale);
+  }
+}
+
+// Along the eigenvector of the smallest eigenvalue (sizes 1e8 times larger than along the largest), the
+// squared length keeps its relative accuracy: it is e^θmin to rounding.
+TYPED_TEST(SymFunctionsTest, SquaredLengthIsRelativelyAccurateAtAnyAnisotropy) {
+  constexpr int D = TypeParam::value;
+  std::mt19937_64 rng(11);
+  for (int trial = 0; trial < 1000; ++trial) {
+    Vec<D> theta = random_vec<D>(rng, -kLogEigenvalueBound, kLogEigenvalueBound);
+    theta[0] = -kLogEigenvalueBound, theta[D - 1] = kLogEigenvalueBound;
+    Mat<D> rotation = random_rotation<D>(rng);
+    ExpFrechet<D> at_t(SymMat<D>::from_eigen(rotation, theta));
+    for (int k = 0; k < D; ++k) EXPECT_NEAR(at_t.squared_length(rotation.column(k)) / std::exp(theta[k]), 1.0, 1e-13);
   }
 }
 
