@@ -1,11 +1,21 @@
 #include "adapt/reinsertion_curving.hpp"
 
 #include <chrono>
+#include <memory>
 
+#include "adapt/independent_batches.hpp"
 #include "base/error.hpp"
+#include "base/thread_pool.hpp"
 #include "mesh/ball_and_shell.hpp"
+#include "mesh/vertex_graph.hpp"
 
 namespace hocav {
+namespace {
+
+// Cavities prepared together. Fixed, so the work does not depend on the thread count.
+constexpr std::size_t kCavitiesPerRound = 512;
+
+}  // namespace
 
 template <int D>
 std::vector<Index> volume_vertices(const Mesh<D>& mesh) {
@@ -35,23 +45,38 @@ ReinsertionResult curve_by_reinsertion(Mesh<D>& mesh, const MetricField<D>& fiel
     log_metrics[v] = field.vertex_log_metric(v);
     hints[v] = field.back_mesh().vertex_element(v);
   }
-  P2CavityOperator<D> cavity_operator(field, log_metrics, hints, boundary, options.cavity);
+  std::vector<std::unique_ptr<P2CavityOperator<D>>> operators;
+  for (std::size_t i = 0; i < kCavitiesPerRound; ++i)
+    operators.push_back(std::make_unique<P2CavityOperator<D>>(field, log_metrics, hints, boundary, options.cavity));
+  std::vector<std::vector<Index>> balls(kCavitiesPerRound);
+  std::vector<CavityStatus> statuses(kCavitiesPerRound);
+  ThreadPool pool(std::max(1, options.threads));
 
   ReinsertionResult result;
   const std::vector<Index> vertices = volume_vertices(mesh);
+  const auto batches = independent_batches(vertex_graph(mesh), vertices, boundary ? 4 : 3);
   const auto start = std::chrono::steady_clock::now();
-  std::vector<Index> ball;
-  const double total = double(vertices.size()) * options.passes;
-  const std::size_t report_every = std::max<std::size_t>(1, vertices.size() / 50);
+  const double total = static_cast<double>(vertices.size()) * options.passes;
+  double done = 0, reported = 0;
   for (int pass = 0; pass < options.passes; ++pass)
-    for (std::size_t i = 0; i < vertices.size(); ++i) {
-      collect_ball(mesh, vertices[i], ball);
-      cavity_operator.apply(mesh, ball, vertices[i]);
-      ++result.vertices_reinserted;
-      if (options.progress && i % report_every == 0) options.progress((pass * double(vertices.size()) + static_cast<double>(i)) / total);
-    }
+    for (const auto& batch : batches)
+      for (std::size_t first = 0; first < batch.size(); first += kCavitiesPerRound) {
+        const std::size_t count = std::min(kCavitiesPerRound, batch.size() - first);
+        pool.run(count, [&](std::size_t i) {
+          collect_ball(mesh, batch[first + i], balls[i]);
+          statuses[i] = operators[i]->prepare(mesh, balls[i], batch[first + i]);
+        });
+        for (std::size_t i = 0; i < count; ++i)
+          if (statuses[i] == CavityStatus::kAccepted) operators[i]->commit(mesh);
+        result.vertices_reinserted += static_cast<Index>(count);
+        done += static_cast<double>(count);
+        if (options.progress && done - reported >= 0.02 * total) {
+          options.progress(done / total);
+          reported = done;
+        }
+      }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.counters = cavity_operator.counters();
+  for (const auto& cavity_operator : operators) result.counters += cavity_operator->counters();
   mesh.compact_edges();
   return result;
 }

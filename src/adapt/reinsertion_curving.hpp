@@ -1,6 +1,11 @@
 // The paper's §IV algorithm: curve an adapted mesh by reinserting every volume vertex with the P2
 // cavity operator, its ball as the cavity. Boundary curvature, proposed beforehand from the
 // surface geometry, enters through the cavities whose boundary holds a surface edge.
+//
+// Threads: the volume vertices are split into batches whose balls share no vertex
+// (independent_batches.hpp); a fixed number of cavities of a batch is prepared at once, on all
+// threads, then committed in order. The order of work depends on the mesh only, so the output is
+// the same whatever the thread count.
 #pragma once
 
 #include <functional>
@@ -13,6 +18,7 @@ namespace hocav {
 struct ReinsertionOptions {
   P2CavityOptions cavity{};
   int passes = 1;
+  int threads = 1;
   // Called now and then with the fraction of the work done (for progress on long runs).
   std::function<void(double)> progress;
 };

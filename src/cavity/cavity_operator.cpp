@@ -60,6 +60,7 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
   vertex_ = vertex;
   new_elements_.clear();
   new_inner_edges_.clear();
+  recreated_ids_.clear();
   start_nodes_.clear();
   boundary_edge_ids_.clear();
   removed_edges_.clear();
@@ -109,7 +110,7 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
         return CavityStatus::kNonPositiveMeasure;
     }
 
-  if (mesh.has_edges() && mesh.edge_count() > 0) plan_edges(mesh);
+  if (mesh.has_edges() && mesh.edge_count() > 0) return plan_edges(mesh);
   return CavityStatus::kAccepted;
 }
 
@@ -168,7 +169,7 @@ CavityStatus CavityOperator<D>::match_ridges() {
 }
 
 template <int D>
-void CavityOperator<D>::plan_edges(const Mesh<D>& mesh) {
+CavityStatus CavityOperator<D>::plan_edges(const Mesh<D>& mesh) {
   boundary_edge_keys_.clear();
   for (const auto& face : boundary_faces_)
     for (int i = 0; i < D; ++i)
@@ -195,10 +196,20 @@ void CavityOperator<D>::plan_edges(const Mesh<D>& mesh) {
       std::array<Index, 2> edge{vertex_, v};
       if (std::find(new_inner_edges_.begin(), new_inner_edges_.end(), edge) != new_inner_edges_.end()) continue;
       new_inner_edges_.push_back(edge);
-      Index old = mesh.find_edge(vertex_, v);
+      // An inner edge the star recreates (a reinsertion) keeps its id: no edge-table churn. One
+      // that exists outside the cavity would be created twice: the star folds over the mesh.
+      Index old = mesh.find_edge(vertex_, v), kept = kNoIndex;
+      if (old != kNoIndex) {
+        auto removed = std::find(removed_edges_.begin(), removed_edges_.end(), old);
+        if (removed == removed_edges_.end()) return CavityStatus::kNotStarShaped;
+        removed_edges_.erase(removed);
+        kept = old;
+      }
+      recreated_ids_.push_back(kept);
       start_nodes_.push_back(old != kNoIndex && mesh.is_p2() ? mesh.edge_node(old)
                                                              : 0.5 * (mesh.vertex(vertex_) + mesh.vertex(v)));
     }
+  return CavityStatus::kAccepted;
 }
 
 template <int D>
@@ -207,9 +218,13 @@ void CavityOperator<D>::commit(Mesh<D>& mesh, std::span<const Point> inner_edge_
   const bool with_edges = mesh.has_edges() && mesh.edge_count() > 0;
   if (with_edges) {
     for (Index e : removed_edges_) mesh.remove_edge(e);
-    for (std::size_t i = 0; i < new_inner_edges_.size(); ++i)
-      mesh.add_edge(new_inner_edges_[i][0], new_inner_edges_[i][1],
-                    i < inner_edge_nodes.size() ? inner_edge_nodes[i] : start_nodes_[i]);
+    for (std::size_t i = 0; i < new_inner_edges_.size(); ++i) {
+      const Point& node = i < inner_edge_nodes.size() ? inner_edge_nodes[i] : start_nodes_[i];
+      if (recreated_ids_[i] == kNoIndex)
+        mesh.add_edge(new_inner_edges_[i][0], new_inner_edges_[i][1], node);
+      else if (mesh.is_p2())
+        mesh.edge_node(recreated_ids_[i]) = node;
+    }
     for (const auto& [edge, node] : changed_boundary_nodes) mesh.edge_node(edge) = node;
   }
 

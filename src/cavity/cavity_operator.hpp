@@ -86,7 +86,7 @@ class CavityOperator {
   bool in_cavity(Index k) const;
   CavityStatus collect_boundary(const Mesh<D>& mesh);
   CavityStatus match_ridges();
-  void plan_edges(const Mesh<D>& mesh);
+  CavityStatus plan_edges(const Mesh<D>& mesh);
 
   std::vector<Index> cavity_;
   Index vertex_ = kNoIndex;
@@ -101,6 +101,7 @@ class CavityOperator {
   std::vector<Index> boundary_edge_ids_;
   std::vector<Index> removed_edges_;
   std::vector<std::array<Index, 2>> new_inner_edges_;
+  std::vector<Index> recreated_ids_;  // per new inner edge: its old id when it existed (kept), else kNoIndex
   std::vector<Point> start_nodes_;
   std::vector<Index> scratch_;
 };

@@ -45,7 +45,7 @@ P2CavityOperator<D>::P2CavityOperator(const MetricField<D>& field, std::vector<S
       options_(options) {}
 
 template <int D>
-CavityStatus P2CavityOperator<D>::apply(Mesh<D>& mesh, std::span<const Index> cavity, Index vertex) {
+CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const Index> cavity, Index vertex) {
   ++counters_.cavities;
   auto start = Clock::now();
   CavityOptions topology_only;
@@ -80,8 +80,12 @@ CavityStatus P2CavityOperator<D>::apply(Mesh<D>& mesh, std::span<const Index> ca
     ++counters_.rejected_curving;
     return CavityStatus::kRejectedByCurving;
   }
+  return CavityStatus::kAccepted;
+}
 
-  start = Clock::now();
+template <int D>
+void P2CavityOperator<D>::commit(Mesh<D>& mesh) {
+  auto start = Clock::now();
   inner_nodes_.assign(p1_.new_inner_edges().size(), Vec<D>{});
   boundary_nodes_.clear();
   for (const CurvedEdge& edge : curved_) {
@@ -98,7 +102,6 @@ CavityStatus P2CavityOperator<D>::apply(Mesh<D>& mesh, std::span<const Index> ca
   p1_.commit(mesh, inner_nodes_, boundary_nodes_);
   counters_.seconds_commit += seconds_since(start);
   ++counters_.accepted;
-  return CavityStatus::kAccepted;
 }
 
 template <int D>

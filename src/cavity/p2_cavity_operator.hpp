@@ -55,7 +55,16 @@ class P2CavityOperator {
 
   // Replaces `cavity` by the star of its boundary from `vertex`, curved and certified. The mesh
   // must be P2 with its topology; it is unchanged unless the result is kAccepted.
-  CavityStatus apply(Mesh<D>& mesh, std::span<const Index> cavity, Index vertex);
+  CavityStatus apply(Mesh<D>& mesh, std::span<const Index> cavity, Index vertex) {
+    CavityStatus status = prepare(mesh, cavity, vertex);
+    if (status == CavityStatus::kAccepted) commit(mesh);
+    return status;
+  }
+  // The two halves of apply: prepare reads the mesh only (plan, curve, certify, correct), so
+  // cavities that share no vertex can be prepared at once on threads; commit writes the prepared
+  // cavity (only after an accepted prepare, on the mesh it was prepared on).
+  CavityStatus prepare(const Mesh<D>& mesh, std::span<const Index> cavity, Index vertex);
+  void commit(Mesh<D>& mesh);
 
   const P2CavityCounters& counters() const { return counters_; }
 

@@ -1,5 +1,5 @@
 // hocav curve IN --metric SOL -o OUT [--surface none] [--jacobian-floor X] [--passes N]
-//                [--report R.json] [--vtu V.vtu]
+//                [--threads N] [--quadrature RULE] [--report R.json] [--vtu V.vtu]
 // The paper's algorithm: propose boundary curvature, then reinsert every volume vertex with the P2
 // cavity operator, and write the curved P2 mesh with the Table-1 figures.
 #include <iostream>
@@ -22,6 +22,7 @@ struct CurveOptions {
   std::string input, metric, output, report, vtu, surface = "none", quadrature = "simpson";
   double jacobian_floor = 0.01;
   int passes = 1;
+  int threads = 1;
   bool quiet = false;
 };
 
@@ -54,6 +55,7 @@ void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& optio
   ReinsertionOptions reinsertion;
   reinsertion.cavity.jacobian_floor = options.jacobian_floor;
   reinsertion.passes = options.passes;
+  reinsertion.threads = options.threads;
   const QuadratureRule rule = quadrature_rule_named(options.quadrature);
   reinsertion.cavity.optimizer.rule = &rule;
   int reported = 0;
@@ -68,6 +70,7 @@ void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& optio
   if (auto problems = check_consistency(mesh, consistency); !problems.empty())
     throw Error("internal error: the curved mesh is inconsistent: " + problems.front());
   CurvingReport report = make_curving_report(mesh, field, points_before, result, 0);
+  report.threads = options.threads;
 
   write_mesh_file(options.output, mesh);
   if (!options.vtu.empty()) {
@@ -108,6 +111,10 @@ void add_curve_command(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--passes", options->passes, "reinsertion passes over the volume vertices")
       ->check(CLI::Range(1, 100))
+      ->capture_default_str();
+  command->add_option("--threads", options->threads,
+                      "threads that prepare independent cavities at once (the output does not depend on it)")
+      ->check(CLI::Range(1, 256))
       ->capture_default_str();
   command->add_option("--report", options->report, "write the run's figures (Table-1 columns, counters) as JSON");
   command->add_option("--vtu", options->vtu, "also write a .vtu for ParaView (metric and min normalized Jacobian)");

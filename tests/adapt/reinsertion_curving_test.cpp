@@ -11,17 +11,24 @@
 namespace hocav {
 namespace {
 
-// The square [−1, 1]² in the circular shear layer of radius 0.6: edges must curve along it.
-TEST(ReinsertionCurving, ShearLayerCurvesEdgesAndKeepsEveryElementValid) {
+// The square [−1, 1]² and the circular shear layer of radius 0.6 on it.
+struct ShearSquare {
   Mesh<2> mesh = generate_square(24);
-  for (Index v = 0; v < mesh.vertex_count(); ++v) mesh.vertex(v) = 2.0 * mesh.vertex(v) - Vec2{{1, 1}};
   AnalyticMetricSpec spec;
-  spec.name = "shear-circle";
-  spec.radius = 0.6;
-  spec.width = 0.08;
-  spec.h_min = 0.01;
-  spec.h_max = 0.1;
-  MetricField<2> field(mesh, analytic_metric_at_vertices(spec, mesh));
+  ShearSquare() {
+    for (Index v = 0; v < mesh.vertex_count(); ++v) mesh.vertex(v) = 2.0 * mesh.vertex(v) - Vec2{{1, 1}};
+    spec.name = "shear-circle";
+    spec.radius = 0.6;
+    spec.width = 0.08;
+    spec.h_min = 0.01;
+    spec.h_max = 0.1;
+  }
+};
+
+TEST(ReinsertionCurving, ShearLayerCurvesEdgesAndKeepsEveryElementValid) {
+  ShearSquare square;
+  Mesh<2>& mesh = square.mesh;
+  MetricField<2> field(mesh, analytic_metric_at_vertices(square.spec, mesh));
   ReinsertionOptions options;
   auto result = curve_by_reinsertion<2>(mesh, field, nullptr, options);
 
@@ -56,6 +63,22 @@ TEST(ReinsertionCurving, ShearLayerCurvesEdgesAndKeepsEveryElementValid) {
   EXPECT_GT(curved, edges / 20);
   EXPECT_GT(total_gain / edges, 0);
   EXPECT_GT(max_gain, 0.02);
+}
+
+TEST(ReinsertionCurving, OutputDoesNotDependOnTheThreadCount) {
+  ShearSquare one, three;
+  MetricField<2> field(one.mesh, analytic_metric_at_vertices(one.spec, one.mesh));
+  ReinsertionOptions options;
+  curve_by_reinsertion<2>(one.mesh, field, nullptr, options);
+  options.threads = 3;
+  curve_by_reinsertion<2>(three.mesh, field, nullptr, options);
+  ASSERT_EQ(one.mesh.element_count(), three.mesh.element_count());
+  ASSERT_EQ(one.mesh.edge_count(), three.mesh.edge_count());
+  for (Index k = 0; k < one.mesh.element_count(); ++k) ASSERT_EQ(one.mesh.element(k), three.mesh.element(k));
+  for (Index e = 0; e < one.mesh.edge_count(); ++e) {
+    ASSERT_EQ(one.mesh.edge_vertices(e), three.mesh.edge_vertices(e));
+    ASSERT_EQ(one.mesh.edge_node(e), three.mesh.edge_node(e)) << "edge " << e;  // bit for bit
+  }
 }
 
 }  // namespace

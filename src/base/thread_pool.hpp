@@ -1,0 +1,42 @@
+// A fixed set of worker threads for parallel loops: run(count, work) calls work(i) for every i in
+// [0, count) across the pool and the calling thread, and returns when all are done. Indices are
+// handed out one at a time, so uneven items balance themselves.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <cstddef>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace hocav {
+
+class ThreadPool {
+ public:
+  // `threads` counts the caller: 1 runs everything on the calling thread.
+  explicit ThreadPool(int threads);
+  ~ThreadPool();
+  ThreadPool(const ThreadPool&) = delete;
+  ThreadPool& operator=(const ThreadPool&) = delete;
+
+  int thread_count() const { return static_cast<int>(workers_.size()) + 1; }
+  void run(std::size_t count, const std::function<void(std::size_t)>& work);
+
+ private:
+  void work_on_current_loop();
+  void worker();
+
+  std::vector<std::thread> workers_;
+  std::mutex mutex_;
+  std::condition_variable wake_, done_;
+  const std::function<void(std::size_t)>* work_ = nullptr;
+  std::size_t count_ = 0;
+  std::atomic<std::size_t> next_{0};
+  std::size_t generation_ = 0;
+  int busy_ = 0;
+  bool stopping_ = false;
+};
+
+}  // namespace hocav
