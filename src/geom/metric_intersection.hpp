@@ -12,7 +12,8 @@
 
 namespace hocav {
 
-// M1∩M2 for SPD M1, M2; throws Error unless is_spd holds for both.
+// M1∩M2 for SPD M1, M2; throws Error when is_spd fails for either (a non-SPD M2 that rounding of the reduction
+// makes look SPD, possible only near κ = 1/eps, is accepted).
 template <int D>
 SymMat<D> intersect_metrics(const SymMat<D>& m1, const SymMat<D>& m2);
 
