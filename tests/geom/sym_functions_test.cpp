@@ -209,7 +209,8 @@ TYPED_TEST(SymFunctionsTest, FrechetDerivativesAtAMultipleOfTheIdentity) {
 }
 
 // Dexp(T) is self-adjoint, so the derivative of the squared length uᵀexp(T)u along any H is
-// frobenius_dot(Dexp(T)[u uᵀ], H): what the edge optimizer uses to get a gradient from one derivative.
+// frobenius_dot(Dexp(T)[u uᵀ], H): what the edge optimizer uses to get a gradient from one derivative; the same
+// symmetry holds for the second derivative.
 TYPED_TEST(SymFunctionsTest, SquaredLengthAndItsGradient) {
   constexpr int D = TypeParam::value;
   std::mt19937_64 rng(10);
@@ -225,6 +226,9 @@ TYPED_TEST(SymFunctionsTest, SquaredLengthAndItsGradient) {
     EXPECT_NEAR(frobenius_dot(gradient, h), quadratic_form(at_t.derivative(h), u), 1e-13 * scale);
     double difference = central_difference([&](double s) { return ExpFrechet<D>(t + s * h).squared_length(u); });
     EXPECT_NEAR(frobenius_dot(gradient, h), difference, 1e-9 * scale);
+    SymMat<D> other = random_direction<D>(rng);
+    EXPECT_NEAR(frobenius_dot(at_t.second_derivative(h, outer(u)), other),
+                quadratic_form(at_t.second_derivative(h, other), u), 1e-13 * scale);
   }
 }
 
