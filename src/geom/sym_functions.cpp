@@ -107,10 +107,14 @@ ExpFrechet<D>::ExpFrechet(const SymMat<D>& log_metric) : eigen_(sym_eigen(log_me
 }
 
 template <int D>
+SymMat<D> ExpFrechet<D>::derivative_from_eigenbasis(SymMat<D> direction_in_eigenbasis) const {
+  for (int k = 0; k < SymMat<D>::kEntryCount; ++k) direction_in_eigenbasis.entries[k] *= first_differences_.entries[k];
+  return congruence(eigen_.vectors, direction_in_eigenbasis);
+}
+
+template <int D>
 SymMat<D> ExpFrechet<D>::derivative(const SymMat<D>& direction) const {
-  SymMat<D> in_eigenbasis = congruence_transposed(eigen_.vectors, direction);
-  for (int k = 0; k < SymMat<D>::kEntryCount; ++k) in_eigenbasis.entries[k] *= first_differences_.entries[k];
-  return congruence(eigen_.vectors, in_eigenbasis);
+  return derivative_from_eigenbasis(congruence_transposed(eigen_.vectors, direction));
 }
 
 template <int D>
@@ -123,10 +127,7 @@ double ExpFrechet<D>::squared_length(const Vec<D>& u) const {
 
 template <int D>
 SymMat<D> ExpFrechet<D>::squared_length_gradient(const Vec<D>& u) const {
-  Vec<D> w = transpose_times(eigen_.vectors, u);
-  SymMat<D> in_eigenbasis = outer(w);
-  for (int k = 0; k < SymMat<D>::kEntryCount; ++k) in_eigenbasis.entries[k] *= first_differences_.entries[k];
-  return congruence(eigen_.vectors, in_eigenbasis);
+  return derivative_from_eigenbasis(outer(transpose_times(eigen_.vectors, u)));
 }
 
 template <int D>

@@ -69,6 +69,9 @@ class ExpFrechet {
   SymMat<D> squared_length_gradient(const Vec<D>& u) const;
 
  private:
+  // V (Γ ∘ H') Vᵀ for a direction H' = Vᵀ H V already in the eigenbasis.
+  SymMat<D> derivative_from_eigenbasis(SymMat<D> direction_in_eigenbasis) const;
+
   SymEigen<D> eigen_;
   SymMat<D> value_;
   SymMat<D> first_differences_;  // Γ_kl = exp[θk, θl]; Γ_kk = e^θk
