@@ -1,0 +1,65 @@
+// Boundary-node proposals (math.md §9).
+#include "surface/boundary_proposals.hpp"
+
+#include "surface/cubic_patch.hpp"
+
+namespace hocav {
+
+template <int D>
+BoundaryProposals<D>::BoundaryProposals(const Mesh<D>& mesh, const BoundaryGeometry<D>& geometry) {
+  // Each boundary edge once, with the refs of (up to two different) facets around it.
+  std::vector<BoundaryEdge<D>> edges;
+  slot_of_edge_.reserve(static_cast<std::size_t>(mesh.facet_count()) * CubicPatch<D>::kEdges);
+  for (Index f = 0; f < mesh.facet_count(); ++f) {
+    const int ref = mesh.facet_ref(f);
+    for (const auto& ends : kPatchEdges<D>) {  // the facet's edges
+      const Index a = mesh.facet(f)[ends[0]], b = mesh.facet(f)[ends[1]];
+      const Index slot = slot_of_edge_.insert(Mesh<D>::edge_key(a, b), static_cast<Index>(edges.size()));
+      if (slot < static_cast<Index>(edges.size())) {
+        edges[slot].refs[1] = ref;
+        continue;
+      }
+      const Index mesh_edge = mesh.is_p2() ? mesh.find_edge(a, b) : kNoIndex;
+      const Vec<D> node = mesh_edge != kNoIndex ? mesh.edge_node(mesh_edge) : 0.5 * (mesh.vertex(a) + mesh.vertex(b));
+      edges.push_back({a, b, node, {ref, ref}});
+    }
+  }
+  nodes_.resize(edges.size());
+  for (std::size_t i = 0; i < edges.size(); ++i) nodes_[i] = geometry.propose_edge_node(edges[i]);
+}
+
+template <int D>
+std::optional<Vec<D>> BoundaryProposals<D>::find(Index a, Index b) const {
+  const Index slot = slot_of_edge_.find(Mesh<D>::edge_key(a, b));
+  if (slot == kNoIndex) return std::nullopt;
+  return nodes_[slot];
+}
+
+template <int D>
+std::optional<Vec<D>> BoundaryProposals<D>::take(Index a, Index b) {
+  std::optional<Vec<D>> node = find(a, b);
+  if (node) slot_of_edge_.erase(Mesh<D>::edge_key(a, b));
+  return node;
+}
+
+template <int D>
+Index apply_boundary_proposals(Mesh<D>& mesh, BoundaryProposals<D>& proposals) {
+  if (!mesh.is_p2()) mesh.make_p2();
+  Index curved = 0;
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    for (const auto& ends : kPatchEdges<D>) {
+      const Index a = mesh.facet(f)[ends[0]], b = mesh.facet(f)[ends[1]];
+      if (std::optional<Vec<D>> node = proposals.take(a, b)) {
+        mesh.edge_node(mesh.find_edge(a, b)) = *node;
+        ++curved;
+      }
+    }
+  return curved;
+}
+
+template class BoundaryProposals<2>;
+template class BoundaryProposals<3>;
+template Index apply_boundary_proposals(Mesh<2>&, BoundaryProposals<2>&);
+template Index apply_boundary_proposals(Mesh<3>&, BoundaryProposals<3>&);
+
+}  // namespace hocav

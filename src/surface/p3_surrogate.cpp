@@ -1,0 +1,170 @@
+// The P3 surrogate of the boundary: construction and projection (math.md §9).
+#include "surface/p3_surrogate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "base/error.hpp"
+
+namespace hocav {
+namespace {
+
+// Ridge sides whose normals are this close to parallel have no ridge tangent; their mean normal
+// serves both (sides closer than the smooth-ridge angle are merged, so this is a degenerate case).
+constexpr double kMinRidgeSine = 1e-6;
+// Patches a hinted search may walk through before it falls back to the tree.
+constexpr int kMaxWalk = 8;
+// A patch barycentric at most this small puts the closest point on the patch's side (clamping
+// makes those zeros exact up to the rounding of λ_0 = 1 − Σ).
+constexpr double kOnSide = 1e-12;
+
+template <int D>
+Vec<D> unit(const Vec<D>& v) {
+  return v * (1 / norm(v));
+}
+
+}  // namespace
+
+template <int D>
+P3Surrogate<D>::P3Surrogate(const Mesh<D>& mesh, const VertexNormalOptions<D>& options)
+    : topology_(build_surface_topology(mesh, options.feature_angle_degrees)),
+      normals_(compute_vertex_normals(mesh, topology_, options)) {
+  const Index count = mesh.facet_count();
+  patches_.resize(count);
+  refs_.resize(count);
+  boxes_.resize(count);
+  edge_patches_.reserve(static_cast<std::size_t>(count) * CubicPatch<D>::kEdges);
+  for (Index f = 0; f < count; ++f) {
+    build_patch(mesh, f);
+    refs_[f] = mesh.facet_ref(f);
+    boxes_[f] = Box<D>::empty();
+    for (const Vec<D>& point : patches_[f].control) boxes_[f].add(point);
+    for (int e = 0; e < CubicPatch<D>::kEdges; ++e) {
+      const auto& ends = kPatchEdges<D>[e];
+      edge_patches_.insert(Mesh<D>::edge_key(mesh.facet(f)[ends[0]], mesh.facet(f)[ends[1]]),
+                           CubicPatch<D>::kEdges * f + e);
+    }
+  }
+  tree_ = PatchTree<D>(boxes_);
+}
+
+template <int D>
+void P3Surrogate<D>::build_patch(const Mesh<D>& mesh, Index f) {
+  const auto& facet = mesh.facet(f);
+  CubicPatch<D>& patch = patches_[f];
+  for (int i = 0; i < D; ++i) patch.control[i] = mesh.vertex(facet[i]);
+  // b_ij of the patch edge from local vertex i to local vertex j.
+  auto edge_control_point = [&](int i, int j) {
+    const Vec<D>& from = patch.vertex(i);
+    const Vec<D>& to = patch.vertex(j);
+    const Vec<D>& normal = normals_.at(f, i);
+    if constexpr (D == 3) {
+      const Index neighbor = topology_.neighbors[f][3 - i - j];
+      if (neighbor == kNoIndex) return from + (to - from) * (1.0 / 3.0);
+      const int local_in_neighbor = facet_local_vertex(mesh, neighbor, facet[i]);
+      if (normals_.corner_sides[neighbor][local_in_neighbor] != normals_.corner_sides[f][i]) {
+        // A ridge: the curve follows t = n_A × n_B, in both sides' tangent planes.
+        const Vec3& other_normal = normals_.at(neighbor, local_in_neighbor);
+        const Vec3 tangent = cross(normal, other_normal);
+        if (norm(tangent) > kMinRidgeSine) return tangent_line_control_point(from, to, unit(tangent));
+        return tangent_plane_control_point(from, to, unit(normal + other_normal));
+      }
+    }
+    return tangent_plane_control_point(from, to, normal);
+  };
+  for (int e = 0; e < CubicPatch<D>::kEdges; ++e) {
+    const auto& ends = kPatchEdges<D>[e];
+    patch.edge_point(e, 0) = edge_control_point(ends[0], ends[1]);
+    patch.edge_point(e, 1) = edge_control_point(ends[1], ends[0]);
+  }
+  if constexpr (D == 3) place_centre_control_point(patch);
+}
+
+template <int D>
+std::optional<typename P3Surrogate<D>::Closest> P3Surrogate<D>::walk_from(Index patch, const Vec<D>& x,
+                                                                           const ProjectionQuery& query) const {
+  auto allowed = [&](Index p) { return !query.ref || refs_[p] == *query.ref; };
+  if (!allowed(patch)) return std::nullopt;
+  std::array<Index, kMaxWalk> visited{};
+  std::optional<Closest> best;
+  for (int step = 0; step < kMaxWalk; ++step) {
+    visited[step] = patch;
+    const PatchClosestPoint<D> on_patch = closest_point_on_patch(patches_[patch], x);
+    if (!best || on_patch.distance2 < best->on_patch.distance2) best = Closest{patch, on_patch};
+    const auto lambda = on_patch.barycentrics();
+    const auto is_on_side = [](double l) { return l <= kOnSide; };
+    const auto side_count = std::count_if(lambda.begin(), lambda.end(), is_on_side);
+    if (side_count > 1) return std::nullopt;  // at a vertex: which patch is next is not a single choice
+    bool local_minimum = true;
+    if (side_count == 1) {
+      // Clamped to one side: go across it, unless nothing (allowed) is there or we came from there.
+      const auto side = std::find_if(lambda.begin(), lambda.end(), is_on_side) - lambda.begin();
+      const Index next = topology_.neighbors[patch][side];
+      const auto walked_end = visited.begin() + step + 1;
+      local_minimum = next == kNoIndex || !allowed(next) || std::find(visited.begin(), walked_end, next) != walked_end;
+      patch = next;
+    }
+    if (local_minimum) {
+      // A local minimum is the closest point for points near the surface; farther points use the tree.
+      const Box<D>& box = boxes_[best->patch];
+      const Vec<D> diagonal = box.upper - box.lower;
+      if (best->on_patch.distance2 > dot(diagonal, diagonal)) return std::nullopt;
+      return best;
+    }
+  }
+  return std::nullopt;
+}
+
+template <int D>
+typename P3Surrogate<D>::Closest P3Surrogate<D>::closest(const Vec<D>& x, const ProjectionQuery& query) const {
+  if (query.hint >= 0 && query.hint < patch_count())
+    if (std::optional<Closest> walked = walk_from(query.hint, x, query)) return *walked;
+  Closest best;
+  best.on_patch.distance2 = std::numeric_limits<double>::infinity();
+  tree_.nearest(x, [&](Index p, double) {
+    if (query.ref && refs_[p] != *query.ref) return std::numeric_limits<double>::infinity();
+    const PatchClosestPoint<D> on_patch = closest_point_on_patch(patches_[p], x);
+    if (on_patch.distance2 < best.on_patch.distance2) best = {p, on_patch};
+    return on_patch.distance2;
+  });
+  if (best.patch == kNoIndex)
+    throw Error(query.ref ? "the boundary surrogate has no patch with ref " + std::to_string(*query.ref)
+                          : std::string("the boundary surrogate has no patch"));
+  return best;
+}
+
+template <int D>
+BoundaryPoint<D> P3Surrogate<D>::project(const Vec<D>& x, const ProjectionQuery& query) const {
+  const Closest found = closest(x, query);
+  return {found.on_patch.point, std::sqrt(found.on_patch.distance2), found.patch, refs_[found.patch]};
+}
+
+template <int D>
+Vec<D> P3Surrogate<D>::normal(const Vec<D>& x, const ProjectionQuery& query) const {
+  const Closest found = closest(x, query);
+  const PatchJet<D> jet = evaluate_jet(patches_[found.patch], found.on_patch.parameters);
+  if constexpr (D == 2)
+    return unit(Vec2{{jet.first[0][1], -jet.first[0][0]}});
+  else
+    return unit(cross(jet.first[0], jet.first[1]));
+}
+
+template <int D>
+std::optional<Vec<D>> P3Surrogate<D>::edge_midpoint(Index a, Index b) const {
+  const Index id = edge_patches_.find(Mesh<D>::edge_key(a, b));
+  if (id == kNoIndex) return std::nullopt;
+  return edge_curve_midpoint(patches_[id / CubicPatch<D>::kEdges], id % CubicPatch<D>::kEdges);
+}
+
+template <int D>
+Vec<D> P3Surrogate<D>::propose_edge_node(const BoundaryEdge<D>& edge) const {
+  if (std::optional<Vec<D>> midpoint = edge_midpoint(edge.a, edge.b)) return *midpoint;
+  return BoundaryGeometry<D>::propose_edge_node(edge);
+}
+
+template class P3Surrogate<2>;
+template class P3Surrogate<3>;
+
+}  // namespace hocav

@@ -1,0 +1,77 @@
+// The P3 surrogate of the boundary (math.md §9): the input boundary's facets lifted once to cubic
+// Bézier patches that stand in for the CAD during the whole run.
+//
+// Per facet one patch (cubic_patch.hpp): the vertices, two control points per edge and (3D) the
+// centre. Edge control points follow the vertex normals (vertex_normals.hpp): on a smooth edge the
+// tangent-plane rule b_ij = (2 P_i + P_j − ((P_j − P_i)·n_i) n_i) / 3; on a ridge edge (3D: its two
+// facets are on different sides at P_i) the ridge rule b_ij = P_i + ((P_j − P_i)·t_i) t_i / 3 along
+// t_i = n_i^A × n_i^B, so that the edge curve lies in both sides' tangent planes; an edge that does
+// not join exactly two facets stays straight. Each edge control
+// point depends only on the edge's two vertices and on normals both facets of the edge share, so
+// the two patches of an edge have the same edge curve (C0 across edges), and every patch at a
+// vertex is tangent to its side's plane there (G1 at vertices).
+//
+// Projection: candidate patches from a bounding-box tree, Newton with clamping on each
+// (patch_closest_point.hpp), the closest kept. With a hint, the search first walks from the hinted
+// patch to the neighbour across the side its closest point is clamped to, and stops at a patch whose
+// closest point is interior (a local minimum of the distance, taken as the closest when it lies
+// within a patch diameter of the point); a walk that ends at a vertex falls back to the tree.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+#include "surface/boundary_geometry.hpp"
+#include "surface/cubic_patch.hpp"
+#include "surface/patch_closest_point.hpp"
+#include "surface/patch_tree.hpp"
+#include "surface/surface_topology.hpp"
+#include "surface/vertex_normals.hpp"
+
+namespace hocav {
+
+template <int D>
+class P3Surrogate final : public BoundaryGeometry<D> {
+ public:
+  // Built from the mesh's boundary facets and vertices (P2 nodes are not used); patch p is facet p.
+  explicit P3Surrogate(const Mesh<D>& mesh, const VertexNormalOptions<D>& options = {});
+
+  BoundaryPoint<D> project(const Vec<D>& x, const ProjectionQuery& query = {}) const override;
+  // The patch normal at the projection, outward like the facets.
+  Vec<D> normal(const Vec<D>& x, const ProjectionQuery& query = {}) const override;
+  // The midpoint of the surrogate's edge curve when (a, b) is an edge of the surrogate: it lies on
+  // the surrogate exactly, ridge edges included. Other edges: the default projection.
+  Vec<D> propose_edge_node(const BoundaryEdge<D>& edge) const override;
+
+  Index patch_count() const { return static_cast<Index>(patches_.size()); }
+  const CubicPatch<D>& patch(Index p) const { return patches_[p]; }
+  int patch_ref(Index p) const { return refs_[p]; }
+  const SurfaceTopology<D>& topology() const { return topology_; }
+  const VertexNormals<D>& vertex_normals() const { return normals_; }
+  // The point of the edge curve of mesh edge (a, b) at its parameter 1/2, when (a, b) is a boundary
+  // edge of the mesh the surrogate was built from.
+  std::optional<Vec<D>> edge_midpoint(Index a, Index b) const;
+
+ private:
+  struct Closest {
+    Index patch = kNoIndex;
+    PatchClosestPoint<D> on_patch;
+  };
+  Closest closest(const Vec<D>& x, const ProjectionQuery& query) const;
+  std::optional<Closest> walk_from(Index patch, const Vec<D>& x, const ProjectionQuery& query) const;
+  void build_patch(const Mesh<D>& mesh, Index f);
+
+  std::vector<CubicPatch<D>> patches_;
+  std::vector<int> refs_;
+  std::vector<Box<D>> boxes_;
+  SurfaceTopology<D> topology_;
+  VertexNormals<D> normals_;
+  PatchTree<D> tree_;
+  IndexHashMap edge_patches_;  // mesh edge key -> CubicPatch<D>::kEdges * patch + local edge
+};
+
+extern template class P3Surrogate<2>;
+extern template class P3Surrogate<3>;
+
+}  // namespace hocav

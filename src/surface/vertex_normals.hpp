@@ -1,0 +1,57 @@
+// Vertex normals of the boundary, one per smooth side of each vertex (math.md §9: "a normal n_i at
+// each surface vertex ... split at ridges/feature edges").
+//
+// The facets around a vertex fall into sides: two facets sharing a side through the vertex that is
+// not a ridge (surface_topology.hpp) are on the same side. Two sides that meet at a ridge with
+// normals less than a smooth-ridge angle apart (a ref boundary or a tagged ridge across a smooth
+// part of the surface) are merged into one: the surface does not fold there, and the ridge rule
+// would need a well-defined tangent n_A × n_B. Each side gets one normal, the weighted
+// mean of its facets' unit normals, or the normal of a given geometry (analytic or CAD) at the
+// vertex when that one agrees with the facets within the feature angle (at a ridge, where the
+// geometry's single normal cannot serve both sides, the facets' normal is kept). Facets of one side
+// thus use the very same normal at the vertex, which is what keeps the surrogate free of cracks.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+#include "surface/boundary_geometry.hpp"
+#include "surface/surface_topology.hpp"
+
+namespace hocav {
+
+// How the facets of a side are weighted at a vertex.
+enum class NormalWeights {
+  kAngle,  // by the facet's angle at the vertex (3D; 2D: equal weights)
+  kArea,   // by the facet's area (2D: length)
+  // N. Max (1999): sin(angle) / (|e_1| |e_2|) for a triangle with edges e_1, e_2 at the vertex
+  // (2D: 1 / length): exact when the vertex and its neighbours lie on one sphere (circle).
+  kMax,
+};
+
+template <int D>
+struct VertexNormalOptions {
+  // Facets meeting at more than this angle are on different sides.
+  double feature_angle_degrees = 45;
+  // Ridges (refs, tags) where the sides' normals differ by less than this are smooth there. Half
+  // fans of a smooth surface differ by about h / (curvature radius), hence a margin.
+  double smooth_ridge_angle_degrees = 20;
+  NormalWeights weights = NormalWeights::kAngle;
+  // When set, normals come from this geometry (with the facet's ref) where it agrees with the facets.
+  const BoundaryGeometry<D>* normal_source = nullptr;
+};
+
+template <int D>
+struct VertexNormals {
+  std::vector<Vec<D>> normals;                    // unit, outward like the facets; one per side
+  std::vector<std::array<Index, D>> corner_sides;  // per facet and local vertex: its side's normal
+
+  const Vec<D>& at(Index f, int local_vertex) const { return normals[corner_sides[f][local_vertex]]; }
+};
+
+template <int D>
+VertexNormals<D> compute_vertex_normals(const Mesh<D>& mesh, const SurfaceTopology<D>& topology,
+                                        const VertexNormalOptions<D>& options);
+
+}  // namespace hocav

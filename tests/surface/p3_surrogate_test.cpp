@@ -1,0 +1,281 @@
+#include "surface/p3_surrogate.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <set>
+
+#include "base/error.hpp"
+#include "cases/structured.hpp"
+#include "surface/analytic_boundary.hpp"
+#include "surface_test_meshes.hpp"
+
+namespace hocav {
+namespace {
+
+using testing::circle_polygon;
+using testing::icosphere;
+using testing::max_distance_to_sphere;
+using testing::patch_edge_parameters;
+
+template <int D>
+Vec<D> unit(const Vec<D>& v) {
+  return v * (1 / norm(v));
+}
+
+// The boundary facets of a mesh alone, every facet with ref `ref` (no ridge tags).
+template <int D>
+Mesh<D> facets_only(const Mesh<D>& mesh, int ref) {
+  Mesh<D> copy;
+  for (const Vec<D>& point : mesh.vertices()) copy.add_vertex(point);
+  for (const auto& facet : mesh.facets()) copy.add_facet(facet, ref);
+  return copy;
+}
+
+// Splits a sphere's facets into ref 1 (centroid below z = 0) and ref 2 (above).
+Mesh<3> two_hemispheres(const Mesh<3>& sphere) {
+  Mesh<3> mesh;
+  for (const Vec3& point : sphere.vertices()) mesh.add_vertex(point);
+  for (const auto& facet : sphere.facets()) {
+    const double z = sphere.vertex(facet[0])[2] + sphere.vertex(facet[1])[2] + sphere.vertex(facet[2])[2];
+    mesh.add_facet(facet, z > 0 ? 2 : 1);
+  }
+  return mesh;
+}
+
+// The surrogate's normal at local vertex i of patch p, from its derivatives there.
+template <int D>
+Vec<D> patch_normal_at_vertex(const CubicPatch<D>& patch, int i) {
+  PatchParameters<D> parameters{};
+  if (i > 0) parameters[i - 1] = 1;
+  const PatchJet<D> jet = evaluate_jet(patch, parameters);
+  if constexpr (D == 2)
+    return unit(Vec2{{jet.first[0][1], -jet.first[0][0]}});
+  else
+    return unit(cross(jet.first[0], jet.first[1]));
+}
+
+// Interpolation and G1: every patch passes through its vertices, tangent to its side's normal there.
+template <int D>
+void expect_interpolating_and_tangent(const Mesh<D>& mesh, const P3Surrogate<D>& surrogate) {
+  ASSERT_EQ(surrogate.patch_count(), mesh.facet_count());
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    for (int i = 0; i < D; ++i) {
+      PatchParameters<D> parameters{};
+      if (i > 0) parameters[i - 1] = 1;
+      EXPECT_EQ(evaluate(surrogate.patch(f), parameters), mesh.vertex(mesh.facet(f)[i]));
+      const Vec<D> normal = patch_normal_at_vertex(surrogate.patch(f), i);
+      const Vec<D>& vertex_normal = surrogate.vertex_normals().at(f, i);
+      EXPECT_GT(dot(normal, vertex_normal), 1 - 1e-12) << "facet " << f << " vertex " << i;
+    }
+}
+
+// The control points of the edge curve of patch f from mesh vertex a to mesh vertex b.
+template <int D>
+std::array<Vec<D>, 4> edge_curve(const Mesh<D>& mesh, const P3Surrogate<D>& surrogate, Index f, Index a, Index b) {
+  const CubicPatch<D>& patch = surrogate.patch(f);
+  for (int e = 0; e < CubicPatch<D>::kEdges; ++e) {
+    const auto& ends = kPatchEdges<D>[e];
+    const Index first = mesh.facet(f)[ends[0]], second = mesh.facet(f)[ends[1]];
+    if (first == a && second == b) return {patch.vertex(ends[0]), patch.edge_point(e, 0), patch.edge_point(e, 1), patch.vertex(ends[1])};
+    if (first == b && second == a) return {patch.vertex(ends[1]), patch.edge_point(e, 1), patch.edge_point(e, 0), patch.vertex(ends[0])};
+  }
+  ADD_FAILURE() << "facet " << f << " has no edge " << a << "-" << b;
+  return {};
+}
+
+// C0: the two patches of every edge have the same edge curve — the same control points, bit for
+// bit — and evaluating either patch along the edge gives that curve.
+void expect_no_cracks(const Mesh<3>& mesh, const P3Surrogate<3>& surrogate) {
+  Index shared = 0;
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    for (int side = 0; side < 3; ++side) {
+      const Index g = surrogate.topology().neighbors[f][side];
+      if (g == kNoIndex) continue;
+      const Index a = mesh.facet(f)[(side + 1) % 3], b = mesh.facet(f)[(side + 2) % 3];
+      const auto curve = edge_curve(mesh, surrogate, f, a, b);
+      EXPECT_EQ(curve, edge_curve(mesh, surrogate, g, a, b)) << "facets " << f << " and " << g;
+      const int local_edge = (side + 1) % 3;  // kPatchEdges: edge e joins local vertices e and e + 1
+      for (double s : {0.1, 0.5, 0.9}) {
+        const double w = 1 - s;
+        const Vec3 bezier = w * w * w * curve[0] + 3 * w * w * s * curve[1] + 3 * w * s * s * curve[2] + s * s * s * curve[3];
+        EXPECT_LT(norm(evaluate(surrogate.patch(f), patch_edge_parameters<3>(local_edge, s)) - bezier), 1e-15);
+      }
+      ++shared;
+    }
+  EXPECT_EQ(shared, 3 * mesh.facet_count());  // closed surfaces: every side joins two facets
+}
+
+TEST(SurfaceSurrogate, SphereInterpolatesIsTangentAndHasNoCracks) {
+  const Mesh<3> mesh = icosphere(2, 1.0, 0.2);
+  for (NormalWeights weights : {NormalWeights::kAngle, NormalWeights::kArea, NormalWeights::kMax}) {
+    const P3Surrogate<3> surrogate(mesh, {.weights = weights});
+    expect_interpolating_and_tangent(mesh, surrogate);
+    expect_no_cracks(mesh, surrogate);
+  }
+}
+
+// Two refs on one smooth sphere: the equator is a ridge of refs, but the surface does not fold
+// there, so the sides merge and the surrogate is that of the single-ref sphere.
+TEST(SurfaceSurrogate, SmoothRefBoundaryIsNotARidge) {
+  const Mesh<3> sphere = icosphere(2, 1.0, 0.2);
+  const Mesh<3> mesh = two_hemispheres(sphere);
+  const P3Surrogate<3> surrogate(mesh), single_ref(sphere);
+  Index ridge_sides = 0;
+  for (const auto& ridges : surrogate.topology().ridges) ridge_sides += ridges[0] + ridges[1] + ridges[2];
+  EXPECT_GT(ridge_sides, 0);
+  EXPECT_EQ(Index(surrogate.vertex_normals().normals.size()), mesh.vertex_count());
+  for (Index f = 0; f < mesh.facet_count(); ++f) EXPECT_EQ(surrogate.patch(f).control, single_ref.patch(f).control);
+}
+
+// A crease along a curve: the rims of a closed cylinder (refs 1 side, 2 and 3 caps, at 90°). The
+// rim vertices have a normal per side, the rim edges follow the circles (ridge rule), the caps
+// stay flat and nothing cracks.
+TEST(SurfaceSurrogate, CylinderRimsAreCurvedRidges) {
+  std::array<double, 2> rim_error{};
+  for (int refinement = 0; refinement < 2; ++refinement) {
+    const Mesh<3> mesh = testing::capped_cylinder(16 << refinement);
+    const P3Surrogate<3> surrogate(mesh);
+    expect_interpolating_and_tangent(mesh, surrogate);
+    expect_no_cracks(mesh, surrogate);
+    for (Index f = 0; f < mesh.facet_count(); ++f) {
+      if (mesh.facet_ref(f) == 1) continue;
+      const double z = mesh.facet_ref(f) == 2 ? 0.0 : 1.0;
+      for (const Vec3& point : surrogate.patch(f).control) EXPECT_EQ(point[2], z) << "cap facet " << f;
+    }
+    for (Index f = 0; f < mesh.facet_count(); ++f)
+      for (int side = 0; side < 3; ++side) {
+        const Index g = surrogate.topology().neighbors[f][side];
+        if (mesh.facet_ref(f) != 1 || mesh.facet_ref(g) == 1) continue;
+        const Vec3 middle = *surrogate.edge_midpoint(mesh.facet(f)[(side + 1) % 3], mesh.facet(f)[(side + 2) % 3]);
+        rim_error[refinement] = std::max(rim_error[refinement], std::abs(std::hypot(middle[0], middle[1]) - 1));
+      }
+  }
+  std::printf("cylinder rim edge midpoints: distance to the circle %.3e (h) %.3e (h/2), order %.2f\n", rim_error[0],
+              rim_error[1], std::log2(rim_error[0] / rim_error[1]));
+  EXPECT_LT(rim_error[1], 1e-4);
+  EXPECT_GT(std::log2(rim_error[0] / rim_error[1]), 3.5);
+}
+
+TEST(SurfaceSurrogate, CircleInterpolatesAndIsTangent) {
+  const Mesh<2> mesh = circle_polygon(17, 1.0, 0.2);
+  expect_interpolating_and_tangent(mesh, P3Surrogate<2>(mesh));
+  EXPECT_EQ(P3Surrogate<2>(mesh).vertex_normals().normals.size(), 17u);  // one side per vertex
+}
+
+// A planar boundary gives flat patches: the surrogate is the facets, exactly.
+template <int D>
+double max_distance_to_facets(const Mesh<D>& mesh, const P3Surrogate<D>& surrogate) {
+  double worst = 0;
+  const int n = 8;
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= (D == 3 ? n - i : 0); ++j) {
+        PatchParameters<D> parameters{};
+        parameters[0] = double(i) / n;
+        if constexpr (D == 3) parameters[1] = double(j) / n;
+        Vec<D> linear = mesh.vertex(mesh.facet(f)[0]);
+        for (int k = 1; k < D; ++k) linear += parameters[k - 1] * (mesh.vertex(mesh.facet(f)[k]) - mesh.vertex(mesh.facet(f)[0]));
+        worst = std::max(worst, norm(evaluate(surrogate.patch(f), parameters) - linear));
+      }
+  return worst;
+}
+
+TEST(SurfaceSurrogate, CubeIsItsFacetsAndItsNormalsSplitAtRidges) {
+  const Mesh<3> cube = generate_cube(3);
+  // Refs and Ridges tag the cube's edges; on a single-ref copy without tags the feature angle does.
+  for (const Mesh<3>& mesh : {cube, facets_only(cube, 1)}) {
+    const P3Surrogate<3> surrogate(mesh);
+    EXPECT_LT(max_distance_to_facets(mesh, surrogate), 1e-15);
+    expect_interpolating_and_tangent(mesh, surrogate);
+    expect_no_cracks(mesh, surrogate);
+    // Sides per vertex: 3 at the cube's corners, 2 along its edges, 1 inside its faces.
+    std::vector<std::set<Index>> sides(mesh.vertex_count());
+    for (Index f = 0; f < mesh.facet_count(); ++f)
+      for (int i = 0; i < 3; ++i) sides[mesh.facet(f)[i]].insert(surrogate.vertex_normals().corner_sides[f][i]);
+    for (Index v = 0; v < mesh.vertex_count(); ++v) {
+      if (sides[v].empty()) continue;
+      int on_faces = 0;
+      for (int axis = 0; axis < 3; ++axis) on_faces += mesh.vertex(v)[axis] == 0.0 || mesh.vertex(v)[axis] == 1.0;
+      EXPECT_EQ(Index(sides[v].size()), on_faces) << "vertex " << v;
+      for (Index side : sides[v]) {
+        const Vec3& normal = surrogate.vertex_normals().normals[side];
+        EXPECT_NEAR(std::abs(normal[0]) + std::abs(normal[1]) + std::abs(normal[2]), 1.0, 1e-15);  // an axis
+      }
+    }
+    // The ridge edge curves are the straight edges: their midpoints are the straight midpoints.
+    EXPECT_EQ(*surrogate.edge_midpoint(0, 1), 0.5 * (mesh.vertex(0) + mesh.vertex(1)));
+  }
+  // Without a split (feature angle above the cube's 90°, one ref) the normals bend round the edges.
+  const Mesh<3> smooth = facets_only(cube, 1);
+  EXPECT_GT(max_distance_to_facets(smooth, P3Surrogate<3>(smooth, {.feature_angle_degrees = 100})), 0.01);
+}
+
+TEST(SurfaceSurrogate, SquareIsItsSegments) {
+  const Mesh<2> square = generate_square(4);
+  EXPECT_LT(max_distance_to_facets(square, P3Surrogate<2>(square)), 1e-15);
+  const Mesh<2> one_ref = facets_only(square, 1);
+  EXPECT_LT(max_distance_to_facets(one_ref, P3Surrogate<2>(one_ref)), 1e-15);
+}
+
+// Distance of the surrogate to the sphere at two sizes h and h/2, and the observed order.
+struct Convergence {
+  double coarse = 0, fine = 0;
+  double order() const { return std::log2(coarse / fine); }
+};
+
+Convergence sphere_convergence(int coarse_levels, double jitter, const VertexNormalOptions<3>& options) {
+  Convergence result;
+  for (int level : {coarse_levels, coarse_levels + 1}) {
+    const Mesh<3> mesh = icosphere(level, 1.0, jitter);
+    (level == coarse_levels ? result.coarse : result.fine) = max_distance_to_sphere<3>(P3Surrogate<3>(mesh, options), 1.0, 12);
+  }
+  return result;
+}
+
+template <int D>
+AnalyticBoundary<D> unit_sphere() {
+  AnalyticBoundary<D> sphere;
+  sphere.add(1, AnalyticSurface<D>::sphere({}, 1.0));
+  return sphere;
+}
+
+// An error δ in the vertex normals moves the surface by about h δ / 8. On the regular icosphere the
+// weighted face normals err by O(h^2) (surface order 3); moving the vertices at random by 20% of h
+// (jitter) leaves them O(h) (order 2). Max's weights and the exact normals are exact on a sphere
+// whatever the mesh: order 4, the cubic patches' own.
+TEST(SurfaceSurrogate, SphereConvergence) {
+  const AnalyticBoundary<3> sphere = unit_sphere<3>();
+  struct Variant {
+    const char* name;
+    VertexNormalOptions<3> options;
+    std::array<double, 2> min_order;  // regular, jittered
+  };
+  for (const Variant& variant : {Variant{"angle", {.weights = NormalWeights::kAngle}, {2.5, 1.4}},
+                                 Variant{"area", {.weights = NormalWeights::kArea}, {2.3, 1.3}},
+                                 Variant{"max", {.weights = NormalWeights::kMax}, {3.7, 3.2}},
+                                 Variant{"analytic", {.normal_source = &sphere}, {3.7, 3.2}}})
+    for (int jittered : {0, 1}) {
+      const Convergence c = sphere_convergence(2, 0.2 * jittered, variant.options);
+      std::printf("sphere%s, %-8s normals: max distance %.3e (h) %.3e (h/2), order %.2f\n", jittered ? " jittered" : "",
+                  variant.name, c.coarse, c.fine, c.order());
+      EXPECT_GT(c.order(), variant.min_order[jittered]) << variant.name << (jittered ? " jittered" : "");
+    }
+}
+
+TEST(SurfaceSurrogate, CircleConvergence) {
+  const AnalyticBoundary<2> circle = unit_sphere<2>();
+  for (const VertexNormalOptions<2>& options :
+       {VertexNormalOptions<2>{.weights = NormalWeights::kAngle}, VertexNormalOptions<2>{.normal_source = &circle}}) {
+    const double coarse = max_distance_to_sphere<2>(P3Surrogate<2>(circle_polygon(16, 1.0, 0.2), options), 1.0, 50);
+    const double fine = max_distance_to_sphere<2>(P3Surrogate<2>(circle_polygon(32, 1.0, 0.2), options), 1.0, 50);
+    std::printf("circle, %s normals: max distance %.3e (h) %.3e (h/2), order %.2f\n",
+                options.normal_source ? "analytic" : "angle", coarse, fine, std::log2(coarse / fine));
+    EXPECT_GT(std::log2(coarse / fine), options.normal_source ? 3.7 : 1.5);
+  }
+}
+
+}  // namespace
+}  // namespace hocav
