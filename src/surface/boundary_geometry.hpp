@@ -17,7 +17,7 @@ namespace hocav {
 
 struct ProjectionQuery {
   // Only the part of the boundary with this facet ref; every part when empty.
-  std::optional<int> ref;
+  std::optional<int> ref = std::nullopt;
   // The patch of an earlier projection near the point (BoundaryPoint::patch, from the same
   // geometry): a backend may search from there first. For the P3 surrogate, patch p is facet p of
   // the mesh it was built from.
