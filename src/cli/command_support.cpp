@@ -2,6 +2,11 @@
 
 #include <algorithm>
 
+#include "bezier/mesh_quality.hpp"
+#include <cmath>
+
+#include "base/error.hpp"
+
 namespace hocav {
 
 SolutionField read_metric_for_mesh(const std::string& metric_path, const MeshFileContent& mesh_file, bool with_edge_nodes) {
@@ -18,6 +23,45 @@ SolutionField read_metric_for_mesh(const std::string& metric_path, const MeshFil
   for (Index file_node : mesh_file.vertex_file_ids) append_row(file_node);
   if (with_edge_nodes)
     for (Index file_node : mesh_file.edge_node_file_ids) append_row(file_node);
+  return rows;
+}
+
+std::vector<double> read_scalar_for_mesh(const std::string& solution_path, const MeshFileContent& mesh_file) {
+  SolutionFileContent content = read_solution_file(solution_path);
+  if (content.dimension != dimension_of(mesh_file.mesh))
+    throw Error(solution_path + ": Dimension: the solution is " + std::to_string(content.dimension) + "D but the mesh is " +
+                std::to_string(dimension_of(mesh_file.mesh)) + "D");
+  auto scalar = std::find_if(content.fields.begin(), content.fields.end(),
+                             [](const SolutionField& field) { return field.kind == SolutionKind::kScalar; });
+  if (scalar == content.fields.end()) throw Error(solution_path + ": SolAtVertices: no scalar field (type 1)");
+  if (scalar->count() != mesh_file.file_node_count)
+    throw Error(solution_path + ": SolAtVertices: " + std::to_string(scalar->count()) + " values for a mesh of " +
+                std::to_string(mesh_file.file_node_count) + " nodes");
+  std::vector<double> values;
+  values.reserve(mesh_file.vertex_file_ids.size());
+  for (Index file_node : mesh_file.vertex_file_ids) {
+    double value = scalar->values[static_cast<std::size_t>(file_node)];
+    if (!std::isfinite(value))
+      throw Error(solution_path + ": SolAtVertices: value at node " + std::to_string(file_node + 1) + " is not finite");
+    values.push_back(value);
+  }
+  return values;
+}
+
+template <int D>
+std::vector<SymMat<D>> metrics_of_rows(const SolutionField& rows) {
+  std::vector<SymMat<D>> metrics(rows.values.size() / SymMat<D>::kEntryCount);
+  for (std::size_t v = 0; v < metrics.size(); ++v)
+    std::copy_n(rows.values.begin() + static_cast<std::ptrdiff_t>(v * SymMat<D>::kEntryCount), SymMat<D>::kEntryCount,
+                metrics[v].entries.begin());
+  return metrics;
+}
+
+template <int D>
+SolutionField rows_of_metrics(const std::vector<SymMat<D>>& metrics) {
+  SolutionField rows{SolutionKind::kSymmetricMatrix, D, {}};
+  rows.values.reserve(metrics.size() * SymMat<D>::kEntryCount);
+  for (const SymMat<D>& metric : metrics) rows.values.insert(rows.values.end(), metric.entries.begin(), metric.entries.end());
   return rows;
 }
 
@@ -45,6 +89,22 @@ VtuField metric_tensor_field(const SolutionField& metric) {
   return field;
 }
 
+template std::vector<SymMat<2>> metrics_of_rows(const SolutionField&);
+template std::vector<SymMat<3>> metrics_of_rows(const SolutionField&);
+template SolutionField rows_of_metrics(const std::vector<SymMat<2>>&);
+template SolutionField rows_of_metrics(const std::vector<SymMat<3>>&);
+template <int D>
+std::vector<VtuField> jacobian_cell_fields(const Mesh<D>& mesh) {
+  VtuField minimum{"min_normalized_jacobian", 1, {}}, scaled{"scaled_jacobian", 1, {}};
+  for (const auto& quality : mesh_jacobian_quality(mesh, kReportedRefinement)) {
+    minimum.values.push_back(quality.min_normalized_jacobian);
+    scaled.values.push_back(quality.scaled_jacobian);
+  }
+  return {std::move(minimum), std::move(scaled)};
+}
+
+template std::vector<VtuField> jacobian_cell_fields(const Mesh<2>&);
+template std::vector<VtuField> jacobian_cell_fields(const Mesh<3>&);
 template VtuField metric_tensor_field<2>(const SolutionField&);
 template VtuField metric_tensor_field<3>(const SolutionField&);
 template std::string mesh_summary(const Mesh<2>&);

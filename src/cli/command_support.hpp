@@ -1,9 +1,12 @@
-// What the commands share: the dimension of a mesh read from a file, the metric that goes with a
-// mesh file (checked and renumbered to hocav's node order), and a one-line mesh summary.
+// What the commands share: the dimension of a mesh read from a file, the metric (or scalar field)
+// that goes with a mesh file (checked and renumbered to hocav's node order), and a one-line mesh
+// summary.
 #pragma once
 
 #include <string>
+#include <vector>
 
+#include "geom/sym_mat.hpp"
 #include "io/mesh_file.hpp"
 #include "io/solution_file.hpp"
 #include "io/vtu_file.hpp"
@@ -17,10 +20,25 @@ inline int dimension_of(const AnyMesh& mesh) { return std::holds_alternative<Mes
 // uses: the mesh's vertices, then, when with_edge_nodes (a P2 mesh read as P2), each edge's node.
 SolutionField read_metric_for_mesh(const std::string& metric_path, const MeshFileContent& mesh_file, bool with_edge_nodes);
 
+// The scalar field of a solution file given with a mesh file (the first scalar field, one finite
+// value per file node), at the mesh's vertices.
+std::vector<double> read_scalar_for_mesh(const std::string& solution_path, const MeshFileContent& mesh_file);
+
+// Metric rows in .sol order and the matrices they hold, both ways.
+template <int D>
+std::vector<SymMat<D>> metrics_of_rows(const SolutionField& rows);
+template <int D>
+SolutionField rows_of_metrics(const std::vector<SymMat<D>>& metrics);
+
 // Metric rows (SolutionField, .sol order) as a ParaView tensor field (9 components, row-major; the
 // z row and column are 0 in 2D).
 template <int D>
 VtuField metric_tensor_field(const SolutionField& metric);
+
+// Per element: "min_normalized_jacobian" (min of J / |J_straight|) and "scaled_jacobian" (min J /
+// max J, gmsh's measure), refined bounds, for the .vtu cell data.
+template <int D>
+std::vector<VtuField> jacobian_cell_fields(const Mesh<D>& mesh);
 
 // "2D P1: 356 vertices, 605 triangles, 95 boundary edges"
 template <int D>

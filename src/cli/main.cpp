@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   hocav::add_convert_command(app);
   hocav::add_stats_command(app);
   hocav::add_generate_command(app);
+  hocav::add_metric_command(app);
   hocav::add_curve_command(app);
   try {
     app.parse(argc, argv);

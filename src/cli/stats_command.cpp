@@ -1,5 +1,6 @@
 // hocav stats MESH [--metric SOL] [--json]: counts, refs, P1 measures, the consistency verdict and
-// memory of a mesh; with a metric, the edge lengths in it. A table for people or one JSON object.
+// memory of a mesh; with a metric, the edge lengths in it and its largest anisotropy. A table for
+// people or one JSON object.
 #include <iostream>
 #include <memory>
 
@@ -17,10 +18,13 @@ struct StatsOptions {
 
 void run_stats(const StatsOptions& options) {
   MeshFileContent file = read_mesh_file(options.mesh);
-  std::vector<double> vertex_metrics;
-  if (!options.metric.empty()) vertex_metrics = read_metric_for_mesh(options.metric, file, false).values;
-  MeshStatistics statistics =
-      std::visit([&vertex_metrics](auto& mesh) { return compute_mesh_statistics(mesh, vertex_metrics); }, file.mesh);
+  MeshStatistics statistics = std::visit(
+      [&](auto& mesh) {
+        std::vector<double> node_metrics;  // vertices, then P2 nodes
+        if (!options.metric.empty()) node_metrics = read_metric_for_mesh(options.metric, file, mesh.is_p2()).values;
+        return compute_mesh_statistics(mesh, node_metrics);
+      },
+      file.mesh);
   if (options.json)
     write_statistics_json(std::cout, statistics, options.mesh, options.metric);
   else
@@ -35,8 +39,8 @@ void add_stats_command(CLI::App& app) {
       "stats", "Report a mesh: counts, refs, P1 measures, consistency, memory; edge lengths in a metric");
   command->add_option("mesh", options->mesh, "mesh to read (.mesh, .meshb, .msh)")->required();
   command->add_option("--metric", options->metric,
-                      "metric of the mesh (.sol/.solb): adds edge lengths in the metric (min/mean/max, histogram, "
-                      "share in [1/sqrt(2), sqrt(2)])");
+                      "metric of the mesh (.sol/.solb): adds the Riemannian edge lengths in the metric (min/mean/max, "
+                      "histogram, share in [1/sqrt(2), sqrt(2)]) and the max anisotropy");
   command->add_flag("--json", options->json, "print one JSON object instead of the table");
   command->callback([options] { run_stats(*options); });
 }

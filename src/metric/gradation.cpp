@@ -56,7 +56,7 @@ double largest_relative_eigenvalue(const SymMat<D>& a, const SymMat<D>& b) {
 template <int D>
 GradationReport grade_metrics(const Mesh<D>& mesh, std::vector<SymMat<D>>& metrics, const GradationOptions& options) {
   if (!(options.growth > 1) || !std::isfinite(options.growth))
-    throw Error("gradation: the growth factor must be > 1, not " + std::to_string(options.growth));
+    throw Error("gradation: the growth factor must be > 1");
   if (!(options.tolerance >= 0)) throw Error("gradation: the tolerance must be >= 0");
   if (metrics.size() != static_cast<std::size_t>(mesh.vertex_count()))
     throw Error("gradation: " + std::to_string(metrics.size()) + " metrics for " + std::to_string(mesh.vertex_count()) +

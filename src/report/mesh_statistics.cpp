@@ -8,9 +8,10 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "curve/edge_length.hpp"
+#include "geom/sym_functions.hpp"
 #include "mesh/consistency.hpp"
 #include "mesh/measure.hpp"
-#include "metric/straight_edge_length.hpp"
 #include "report/json_writer.hpp"
 
 namespace hocav {
@@ -26,13 +27,28 @@ std::vector<RefCount> count_refs(Index count, RefOf ref_of) {
 }
 
 template <int D>
-EdgeLengthStatistics edge_length_statistics(const Mesh<D>& mesh, std::span<const double> vertex_metrics) {
-  constexpr std::size_t kComponents = D * (D + 1) / 2;
-  if (vertex_metrics.size() != kComponents * static_cast<std::size_t>(mesh.vertex_count()))
-    throw Error("the metric has " + std::to_string(vertex_metrics.size() / kComponents) + " rows for " +
-                std::to_string(mesh.vertex_count()) + " vertices");
-  auto metric_of = [&vertex_metrics](Index v) { return vertex_metrics.subspan(v * kComponents, kComponents); };
-  EdgeLengthStatistics s;
+MetricStatistics metric_statistics(const Mesh<D>& mesh, std::span<const double> node_metrics) {
+  constexpr std::size_t kComponents = SymMat<D>::kEntryCount;
+  const auto vertex_count = static_cast<std::size_t>(mesh.vertex_count());
+  const std::size_t rows = node_metrics.size() / kComponents;
+  const bool with_edge_nodes = mesh.is_p2() && rows == vertex_count + static_cast<std::size_t>(mesh.edge_count());
+  if (node_metrics.size() % kComponents != 0 || (rows != vertex_count && !with_edge_nodes))
+    throw Error("the metric has " + std::to_string(rows) + " rows for " + std::to_string(vertex_count) + " vertices" +
+                (mesh.is_p2() ? " and " + std::to_string(mesh.edge_count()) + " P2 nodes" : ""));
+  auto log_metric_of_row = [&node_metrics](std::size_t row) {
+    SymMat<D> metric;
+    std::copy_n(node_metrics.begin() + static_cast<std::ptrdiff_t>(row * kComponents), kComponents, metric.entries.begin());
+    return log_spd(metric);
+  };
+  MetricStatistics s;
+  std::vector<SymMat<D>> vertex_logs(vertex_count);
+  for (std::size_t v = 0; v < vertex_count; ++v) {
+    vertex_logs[v] = log_metric_of_row(v);
+    // Sizes are e^{−θ/2} for the eigenvalues θ of log M.
+    Vec<D> theta = sym_eigen(vertex_logs[v]).values;
+    s.max_anisotropy = std::max(s.max_anisotropy, std::exp(0.5 * (theta[D - 1] - theta[0])));
+  }
+
   s.edge_count = mesh.edge_count();
   if (s.edge_count == 0) return s;
   s.min = std::numeric_limits<double>::infinity();
@@ -40,7 +56,12 @@ EdgeLengthStatistics edge_length_statistics(const Mesh<D>& mesh, std::span<const
   double sum = 0;
   for (Index e = 0; e < mesh.edge_count(); ++e) {
     auto [a, b] = mesh.edge_vertices(e);
-    double length = straight_edge_length(mesh.vertex(a), mesh.vertex(b), metric_of(a), metric_of(b));
+    const SymMat<D>& log_a = vertex_logs[static_cast<std::size_t>(a)];
+    const SymMat<D>& log_b = vertex_logs[static_cast<std::size_t>(b)];
+    EdgeLengthFunction<D> edge(mesh.vertex(a), mesh.vertex(b), log_a, log_b, high_precision_rule());
+    Vec<D> node = mesh.is_p2() ? mesh.edge_node(e) : 0.5 * (mesh.vertex(a) + mesh.vertex(b));
+    SymMat<D> log_node = with_edge_nodes ? log_metric_of_row(vertex_count + static_cast<std::size_t>(e)) : 0.5 * (log_a + log_b);
+    double length = edge.length(node, log_node);
     s.min = std::min(s.min, length);
     s.max = std::max(s.max, length);
     sum += length;
@@ -106,13 +127,17 @@ void write_refs_json(JsonWriter& json, std::string_view name, const std::vector<
 
 std::size_t edge_length_bin(double length) {
   std::size_t bin = 0;
-  for (std::size_t i = 0; i < kEdgeLengthBinBounds.size(); ++i)
-    if (i < kUnitEdgeBin ? length >= kEdgeLengthBinBounds[i] : length > kEdgeLengthBinBounds[i]) bin = i + 1;
+  for (std::size_t i = 0; i < kEdgeLengthBinBounds.size(); ++i) {
+    double bound = kEdgeLengthBinBounds[i];
+    if (i + 1 == kUnitEdgeBin) bound *= 1 - kUnitBinSlack;
+    if (i == kUnitEdgeBin) bound *= 1 + kUnitBinSlack;
+    if (i < kUnitEdgeBin ? length >= bound : length > bound) bin = i + 1;
+  }
   return bin;
 }
 
 template <int D>
-MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> vertex_metrics) {
+MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> node_metrics) {
   MeshStatistics s;
   s.memory_bytes = mesh.memory_bytes();
   if (!mesh.has_edges()) mesh.build_edges();
@@ -145,7 +170,7 @@ MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> ve
   ConsistencyOptions options;
   options.require_positive_orientation = !mesh.is_p2();  // a valid curved element may be an inverted P1 one
   s.consistency_problems = check_consistency(mesh, options);
-  if (!vertex_metrics.empty()) s.edge_lengths = edge_length_statistics(mesh, vertex_metrics);
+  if (!node_metrics.empty()) s.metric = metric_statistics(mesh, node_metrics);
   return s;
 }
 
@@ -183,18 +208,19 @@ void write_statistics_table(std::ostream& out, const MeshStatistics& s, const st
     for (const std::string& problem : s.consistency_problems) row("", problem);
   }
   row("memory", memory_text(s.memory_bytes));
-  if (!s.edge_lengths) return;
-  const EdgeLengthStatistics& lengths = *s.edge_lengths;
+  if (!s.metric) return;
+  const MetricStatistics& metric = *s.metric;
   row("metric", metric_name);
-  row("edge length", "min " + number(lengths.min) + "  mean " + number(lengths.mean) + "  max " + number(lengths.max) +
-                         "  (" + std::to_string(lengths.edge_count) + " edges)");
-  for (std::size_t bin = 0; bin < lengths.histogram.size(); ++bin) {
-    double share = lengths.edge_count > 0 ? static_cast<double>(lengths.histogram[bin]) / lengths.edge_count : 0.0;
+  row("edge length", "min " + number(metric.min) + "  mean " + number(metric.mean) + "  max " + number(metric.max) +
+                         "  (" + std::to_string(metric.edge_count) + " edges)");
+  for (std::size_t bin = 0; bin < metric.histogram.size(); ++bin) {
+    double share = metric.edge_count > 0 ? static_cast<double>(metric.histogram[bin]) / metric.edge_count : 0.0;
     std::ostringstream counts;
-    counts << std::right << std::setw(10) << lengths.histogram[bin] << std::setw(9) << percent(share);
+    counts << std::right << std::setw(10) << metric.histogram[bin] << std::setw(9) << percent(share);
     row(std::string(2, ' ').append(bin_label(bin)), counts.str());
   }
-  row("unit edges", percent(lengths.unit_share) + " in " + bin_label(kUnitEdgeBin));
+  row("unit edges", percent(metric.unit_share) + " in " + bin_label(kUnitEdgeBin));
+  row("max anisotropy", number(metric.max_anisotropy) + " (largest / smallest size at a vertex)");
 }
 
 void write_statistics_json(std::ostream& out, const MeshStatistics& s, const std::string& mesh_name,
@@ -219,22 +245,23 @@ void write_statistics_json(std::ostream& out, const MeshStatistics& s, const std
   for (const std::string& problem : s.consistency_problems) json.value(problem);
   json.end_array().end_object();
   json.member("memory_bytes", s.memory_bytes);
-  if (s.edge_lengths) {
-    const EdgeLengthStatistics& lengths = *s.edge_lengths;
-    json.key("metric").begin_object().member("file", metric_name).member("edges", lengths.edge_count);
+  if (s.metric) {
+    const MetricStatistics& metric = *s.metric;
+    json.key("metric").begin_object().member("file", metric_name).member("edges", metric.edge_count);
     json.key("length").begin_object();
-    json.member("min", lengths.min).member("mean", lengths.mean).member("max", lengths.max).end_object();
+    json.member("min", metric.min).member("mean", metric.mean).member("max", metric.max).end_object();
     json.key("histogram").begin_array();
-    for (std::size_t bin = 0; bin < lengths.histogram.size(); ++bin) {
+    for (std::size_t bin = 0; bin < metric.histogram.size(); ++bin) {
       json.begin_object().member("bin", bin_label(bin));
       json.member("from", bin == 0 ? 0.0 : kEdgeLengthBinBounds[bin - 1]);
       json.key("to");
       if (bin < kEdgeLengthBinBounds.size()) json.value(kEdgeLengthBinBounds[bin]);
       else json.null();
-      json.member("count", lengths.histogram[bin]).end_object();
+      json.member("count", metric.histogram[bin]).end_object();
     }
     json.end_array();
-    json.member("unit_share", lengths.unit_share).end_object();
+    json.member("unit_share", metric.unit_share);
+    json.member("max_anisotropy", metric.max_anisotropy).end_object();
   }
   json.end_object();
 }

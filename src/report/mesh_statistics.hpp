@@ -21,15 +21,21 @@ struct RefCount {
 };
 
 // Edge lengths in the metric, binned at these bounds; the bin [1/sqrt(2), sqrt(2)] of unit edges
-// is closed at both ends, so its share is the "unit edges" figure of the literature.
+// is closed at both ends, so its share is the "unit edges" figure of the literature. Its ends are
+// compared with a relative slack of kUnitBinSlack: a quadrature rounds, and the diagonals of a unit
+// mesh are sqrt(2) exactly.
 inline const std::array<double, 6> kEdgeLengthBinBounds{0.3, 0.5, 1 / std::sqrt(2.0), std::sqrt(2.0), 2.0, 3.0};
 inline constexpr std::size_t kUnitEdgeBin = 3;
+inline constexpr double kUnitBinSlack = 1e-12;
 
-struct EdgeLengthStatistics {
+// The metric figures: edge lengths in the metric and the largest anisotropy.
+struct MetricStatistics {
   Index edge_count = 0;
-  double min = 0, mean = 0, max = 0;
+  double min = 0, mean = 0, max = 0;  // edge lengths
   std::array<Index, kEdgeLengthBinBounds.size() + 1> histogram{};
   double unit_share = 0;  // share of edges with length in [1/sqrt(2), sqrt(2)]
+  // max over the vertices of sqrt(λmax/λmin): the ratio of the largest to the smallest size.
+  double max_anisotropy = 0;
 };
 
 struct MeshStatistics {
@@ -46,16 +52,20 @@ struct MeshStatistics {
   // The consistency checker's verdict (P1 orientation is required of P1 meshes only).
   std::vector<std::string> consistency_problems;
   std::size_t memory_bytes = 0;
-  std::optional<EdgeLengthStatistics> edge_lengths;
+  std::optional<MetricStatistics> metric;
 };
 
 // Computes the statistics; builds the mesh's edge table when it has none (so memory_bytes is taken
-// first). `vertex_metrics`, when not empty, holds one symmetric matrix per vertex in .sol order
-// (D (D + 1) / 2 values each) for the edge lengths.
+// first). `node_metrics`, when not empty, holds symmetric matrices in .sol order (D (D + 1) / 2
+// values each): one per vertex, then, for a P2 mesh, optionally one per edge node.
+// The length of an edge is its Riemannian length as a P2 edge (math.md §5, eq 12) with the 16-point
+// Gauss rule: log M varies along it as the P2 interpolation of the log-metrics at its ends and at its
+// node. A P1 edge is straight, its node the midpoint with log M the mean of its ends' (so log M is
+// linear along it); a P2 edge has its node, with the metric given there or else that mean.
 template <int D>
-MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> vertex_metrics = {});
+MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> node_metrics = {});
 
-// The bin of an edge length (index into EdgeLengthStatistics::histogram).
+// The bin of an edge length (index into MetricStatistics::histogram).
 std::size_t edge_length_bin(double length);
 
 // The mesh and metric file names head the report; metric_name is empty when there is no metric.

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "cases/structured.hpp"
@@ -44,7 +46,7 @@ TEST(MeshStatistics, CountsRefsAndMeasuresOfTheSquare) {
   EXPECT_EQ(s.open_boundary_faces, 0);
   EXPECT_TRUE(s.consistency_problems.empty());
   EXPECT_GT(s.memory_bytes, 0u);
-  EXPECT_FALSE(s.edge_lengths.has_value());
+  EXPECT_FALSE(s.metric.has_value());
 }
 
 TEST(MeshStatistics, P2CubeCountsItsNodesAndStaysConsistent) {
@@ -76,18 +78,71 @@ TEST(MeshStatistics, ReportsInvertedElementsAndOpenFaces) {
 
 TEST(MeshStatistics, EdgeLengthsInAUniformMetric) {
   MeshStatistics unit = square_statistics(4, 1.0);
-  ASSERT_TRUE(unit.edge_lengths.has_value());
-  EXPECT_EQ(unit.edge_lengths->edge_count, 56);
-  EXPECT_NEAR(unit.edge_lengths->min, 1.0, 1e-14);
-  EXPECT_NEAR(unit.edge_lengths->max, std::sqrt(2.0), 1e-14);
-  EXPECT_NEAR(unit.edge_lengths->mean, (40 + 16 * std::sqrt(2.0)) / 56, 1e-14);
-  EXPECT_EQ(unit.edge_lengths->histogram[kUnitEdgeBin], 56);
-  EXPECT_EQ(unit.edge_lengths->unit_share, 1.0);
+  ASSERT_TRUE(unit.metric.has_value());
+  EXPECT_EQ(unit.metric->edge_count, 56);
+  EXPECT_NEAR(unit.metric->min, 1.0, 1e-14);
+  EXPECT_NEAR(unit.metric->max, std::sqrt(2.0), 1e-14);
+  EXPECT_NEAR(unit.metric->mean, (40 + 16 * std::sqrt(2.0)) / 56, 1e-14);
+  EXPECT_EQ(unit.metric->histogram[kUnitEdgeBin], 56);
+  EXPECT_EQ(unit.metric->unit_share, 1.0);
 
   MeshStatistics long_edges = square_statistics(4, 2.0);  // axis edges 2, diagonals 2.83
-  EXPECT_EQ(long_edges.edge_lengths->histogram[4], 40);
-  EXPECT_EQ(long_edges.edge_lengths->histogram[5], 16);
-  EXPECT_EQ(long_edges.edge_lengths->unit_share, 0.0);
+  EXPECT_EQ(long_edges.metric->histogram[4], 40);
+  EXPECT_EQ(long_edges.metric->histogram[5], 16);
+  EXPECT_EQ(long_edges.metric->unit_share, 0.0);
+}
+
+TEST(MeshStatistics, MaxAnisotropyIsTheLargestSizeRatio) {
+  Mesh<2> mesh = generate_square(2);
+  std::vector<double> metrics;
+  for (Index v = 0; v < mesh.vertex_count(); ++v) metrics.insert(metrics.end(), {4, 0, 4});
+  // Sizes 0.001 and 0.1 along rotated axes at one vertex: M = R diag(1e6, 100) Rᵀ at 30 degrees.
+  const double c = std::cos(0.5), s = std::sin(0.5), large = 1e6, small = 100;
+  std::copy_n(std::array<double, 3>{c * c * large + s * s * small, c * s * (large - small), s * s * large + c * c * small}.begin(), 3,
+              metrics.begin() + 12);
+  MeshStatistics statistics = compute_mesh_statistics(mesh, metrics);
+  EXPECT_NEAR(statistics.metric->max_anisotropy, 100, 1e-9);
+}
+
+// With la, lb the lengths of e in the end metrics, an isotropic metric whose log varies linearly gives
+// the logarithmic mean (lb − la) / log(lb / la).
+TEST(MeshStatistics, EdgeLengthIsRiemannianWithTheLogMetricLinearAlongAStraightEdge) {
+  Mesh<2> mesh;
+  for (Vec2 x : {Vec2{{0, 0}}, Vec2{{1, 0}}, Vec2{{0, 1}}}) mesh.add_vertex(x);
+  mesh.add_element({0, 1, 2});
+  mesh.build_topology();
+  std::vector<double> metrics{1, 0, 1, 16, 0, 16, 1, 0, 1};  // sizes 1, 1/4, 1
+  MeshStatistics statistics = compute_mesh_statistics(mesh, metrics);
+  const double la = 1, lb = 4, diagonal = std::sqrt(2.0);
+  EXPECT_NEAR(statistics.metric->min, 1, 1e-14);  // the edge (0, 2)
+  EXPECT_NEAR(statistics.metric->max, diagonal * (lb - la) / std::log(lb / la), 1e-12);
+  EXPECT_NEAR(statistics.metric->mean, (1 + 2 * (lb - la) / std::log(lb / la) * (1 + diagonal) / 2) / 3, 1e-12);
+}
+
+TEST(MeshStatistics, P2EdgesAreMeasuredAlongTheirCurveWithTheMetricAtTheirNode) {
+  Mesh<2> mesh;
+  for (Vec2 x : {Vec2{{0, 0}}, Vec2{{1, 0}}, Vec2{{0.5, 0.3}}}) mesh.add_vertex(x);
+  mesh.add_element({0, 1, 2});
+  mesh.build_topology();
+  mesh.make_p2();
+  Index bottom = mesh.find_edge(0, 1);
+  mesh.edge_node(bottom) = Vec2{{0.5, -0.25}};  // the parabola y = x² − x, the longest edge
+  std::vector<double> identity{1, 0, 1, 1, 0, 1, 1, 0, 1};
+  std::vector<double> with_nodes = identity;
+  for (Index e = 0; e < mesh.edge_count(); ++e) with_nodes.insert(with_nodes.end(), {1, 0, 1});
+  // Arc length of y = x² − x on [0, 1]: ∫ sqrt(1 + (2x − 1)²) dx = (sqrt 2 + asinh 1) / 2.
+  const double arc = (std::sqrt(2.0) + std::asinh(1.0)) / 2;
+  EXPECT_NEAR(compute_mesh_statistics(mesh, identity).metric->max, arc, 1e-9);
+  EXPECT_NEAR(compute_mesh_statistics(mesh, with_nodes).metric->max, arc, 1e-9);
+  // A metric of 4 I at the bottom node only: log M = φ_M(t) log 4 I along it, |γ'(t)| scaled by 2^{φ_M(t)}.
+  with_nodes[9 + 3 * static_cast<std::size_t>(bottom)] = with_nodes[9 + 3 * static_cast<std::size_t>(bottom) + 2] = 4;
+  double expected = 0;
+  const int steps = 200000;
+  for (int i = 0; i < steps; ++i) {
+    double t = (i + 0.5) / steps;
+    expected += std::sqrt(1 + (2 * t - 1) * (2 * t - 1)) * std::pow(2.0, 4 * t * (1 - t)) / steps;
+  }
+  EXPECT_NEAR(compute_mesh_statistics(mesh, with_nodes).metric->max, expected, 1e-8);
 }
 
 TEST(MeshStatistics, BinsAreClosedTowardsTheUnitBin) {
@@ -97,6 +152,10 @@ TEST(MeshStatistics, BinsAreClosedTowardsTheUnitBin) {
   EXPECT_EQ(edge_length_bin(1 / std::sqrt(2.0)), kUnitEdgeBin);
   EXPECT_EQ(edge_length_bin(1.0), kUnitEdgeBin);
   EXPECT_EQ(edge_length_bin(std::sqrt(2.0)), kUnitEdgeBin);
+  // Quadrature rounding does not push a unit mesh's diagonals out of the unit bin.
+  EXPECT_EQ(edge_length_bin(std::sqrt(2.0) * (1 + 1e-14)), kUnitEdgeBin);
+  EXPECT_EQ(edge_length_bin(std::sqrt(0.5) * (1 - 1e-14)), kUnitEdgeBin);
+  EXPECT_EQ(edge_length_bin(std::sqrt(2.0) * (1 + 1e-9)), 4u);
   EXPECT_EQ(edge_length_bin(1.5), 4u);
   EXPECT_EQ(edge_length_bin(2.0), 4u);
   EXPECT_EQ(edge_length_bin(3.0), 5u);

@@ -1,0 +1,259 @@
+// hocav metric MESH -o OUT.sol|.solb SOURCE [--gradation BETA] [source options]
+//   SOURCE: --analytic NAME | --implied | --surface HN,HT | --hessian FIELD.sol|analytic:NAME | --input SOL
+// A metric field on a mesh from one of the sources of math.md §10, optionally graded, written with
+// one row per node of the mesh file in the file's own node numbering. P2 mid nodes get the analytic
+// field at the node, or the input's row there; otherwise (and after gradation) the log-Euclidean
+// mean of the metrics of their edge's two vertices.
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "base/error.hpp"
+#include "cli/command_support.hpp"
+#include "cli/commands.hpp"
+#include "geom/sym_functions.hpp"
+#include "mesh/measure.hpp"
+#include "metric/analytic_field.hpp"
+#include "metric/analytic_metric.hpp"
+#include "metric/gradation.hpp"
+#include "metric/hessian_metric.hpp"
+#include "metric/hessian_recovery.hpp"
+#include "metric/implied_metric.hpp"
+#include "metric/surface_metric.hpp"
+
+namespace hocav {
+namespace {
+
+enum class Source { kAnalytic, kImplied, kSurface, kHessian, kInput };
+
+constexpr const char* kAnalyticFieldPrefix = "analytic:";
+// Default h-min of --hessian, as a fraction of h-max: a bound on |H| that only extreme fields reach.
+constexpr double kHessianSizeRange = 1e-6;
+
+struct MetricOptions {
+  std::string mesh, output;
+  std::string analytic, hessian, input;
+  bool implied = false;
+  std::vector<double> surface;  // h_n, h_t
+  std::optional<double> gradation;
+  std::optional<double> h, h_min, h_max, center, radius, width, complexity, norm;
+  std::string axis;
+  std::vector<double> origin;
+};
+
+Source chosen_source(const MetricOptions& options) {
+  std::vector<Source> given;
+  if (!options.analytic.empty()) given.push_back(Source::kAnalytic);
+  if (options.implied) given.push_back(Source::kImplied);
+  if (!options.surface.empty()) given.push_back(Source::kSurface);
+  if (!options.hessian.empty()) given.push_back(Source::kHessian);
+  if (!options.input.empty()) given.push_back(Source::kInput);
+  if (given.size() != 1)
+    throw Error("give exactly one metric source: --analytic NAME, --implied, --surface HN,HT, --hessian FIELD or --input SOL");
+  return given.front();
+}
+
+bool is_analytic_field(const std::string& hessian) { return hessian.starts_with(kAnalyticFieldPrefix); }
+
+// Options that belong to other sources are refused rather than silently ignored.
+void check_options_apply(const MetricOptions& options, Source source) {
+  const bool analytic = source == Source::kAnalytic;
+  const bool hessian = source == Source::kHessian;
+  const bool shaped = analytic || (hessian && is_analytic_field(options.hessian));
+  auto refuse_unless = [](bool given, bool applies, const char* what) {
+    if (given && !applies) throw Error(std::string(what) + " does not apply to this metric source");
+  };
+  refuse_unless(options.h.has_value() || options.center.has_value() || !options.axis.empty(), analytic, "--h, --center, --axis");
+  refuse_unless(options.radius.has_value() || options.width.has_value() || !options.origin.empty(), shaped,
+                "--radius, --width, --origin");
+  refuse_unless(options.h_min.has_value(), analytic || hessian, "--h-min");
+  refuse_unless(options.h_max.has_value(), analytic || hessian || source == Source::kSurface, "--h-max");
+  refuse_unless(options.complexity.has_value() || options.norm.has_value(), hessian, "--complexity, --norm");
+  if (hessian && !options.complexity) throw Error("--hessian needs --complexity N");
+  if (source == Source::kSurface && !options.gradation)
+    throw Error("--surface needs --gradation BETA to carry the boundary sizes into the volume");
+}
+
+template <int D>
+std::array<double, 3> origin_of(const MetricOptions& options) {
+  std::array<double, 3> origin{0, 0, 0};
+  if (options.origin.empty()) return origin;
+  if (options.origin.size() != static_cast<std::size_t>(D))
+    throw Error("--origin needs " + std::to_string(D) + " coordinates for a " + std::to_string(D) + "D mesh");
+  std::copy(options.origin.begin(), options.origin.end(), origin.begin());
+  return origin;
+}
+
+template <int D>
+AnalyticMetricSpec analytic_metric_spec(const MetricOptions& options) {
+  AnalyticMetricSpec spec;
+  spec.name = options.analytic;
+  spec.h = options.h.value_or(spec.h);
+  spec.h_min = options.h_min.value_or(spec.h_min);
+  spec.h_max = options.h_max.value_or(spec.h_max);
+  if (!options.axis.empty()) spec.axis = options.axis[0] - 'x';
+  spec.center = options.center.value_or(spec.center);
+  spec.radius = options.radius.value_or(spec.radius);
+  spec.width = options.width.value_or(spec.width);
+  spec.origin = origin_of<D>(options);
+  return spec;
+}
+
+template <int D>
+AnalyticFieldSpec analytic_field_spec(const MetricOptions& options) {
+  AnalyticFieldSpec spec;
+  spec.name = options.hessian.substr(std::string(kAnalyticFieldPrefix).size());
+  spec.radius = options.radius.value_or(spec.radius);
+  spec.width = options.width.value_or(spec.width);
+  spec.origin = origin_of<D>(options);
+  return spec;
+}
+
+// The metric at the vertices and, when the source knows them exactly, at the P2 nodes (else empty).
+template <int D>
+struct SourceMetrics {
+  std::vector<SymMat<D>> vertices, edge_nodes;
+};
+
+template <int D>
+SourceMetrics<D> hessian_metrics(const Mesh<D>& mesh, const MeshFileContent& file, const MetricOptions& options) {
+  std::vector<SymMat<D>> hessians;
+  if (is_analytic_field(options.hessian)) {
+    AnalyticFieldSpec spec = analytic_field_spec<D>(options);
+    for (const auto& x : mesh.vertices()) hessians.push_back(analytic_field_hessian<D>(spec, x));
+  } else {
+    hessians = recover_hessians(mesh, read_scalar_for_mesh(options.hessian, file));
+  }
+  LpMetricOptions lp;
+  lp.complexity = *options.complexity;
+  lp.norm = options.norm.value_or(lp.norm);
+  lp.h_max = options.h_max.value_or(bounding_box_diagonal(mesh));
+  lp.h_min = options.h_min.value_or(kHessianSizeRange * lp.h_max);
+  return {lp_metric(mesh, hessians, lp), {}};
+}
+
+template <int D>
+SourceMetrics<D> source_metrics(const Mesh<D>& mesh, const MeshFileContent& file, const MetricOptions& options, Source source) {
+  switch (source) {
+    case Source::kAnalytic: {
+      AnalyticMetricSpec spec = analytic_metric_spec<D>(options);
+      SourceMetrics<D> metrics{analytic_metric_at_vertices(spec, mesh), {}};
+      if (mesh.is_p2())
+        for (Index e = 0; e < mesh.edge_count(); ++e) metrics.edge_nodes.push_back(analytic_metric<D>(spec, mesh.edge_node(e)));
+      return metrics;
+    }
+    case Source::kImplied: return {implied_metric_at_vertices(mesh), {}};
+    case Source::kSurface: {
+      SurfaceSizes sizes{options.surface[0], options.surface[1], options.h_max.value_or(bounding_box_diagonal(mesh))};
+      return {surface_metric_at_vertices(mesh, sizes), {}};
+    }
+    case Source::kHessian: return hessian_metrics(mesh, file, options);
+    case Source::kInput: {
+      std::vector<SymMat<D>> rows = metrics_of_rows<D>(read_metric_for_mesh(options.input, file, mesh.is_p2()));
+      auto first_node = rows.begin() + mesh.vertex_count();
+      return {std::vector<SymMat<D>>(rows.begin(), first_node), std::vector<SymMat<D>>(first_node, rows.end())};
+    }
+  }
+  throw Error("internal error: unknown metric source");
+}
+
+// The rows of the output: one per node of the mesh file, in the file's numbering.
+template <int D>
+SolutionField rows_in_file_order(const Mesh<D>& mesh, const MeshFileContent& file, const SourceMetrics<D>& metrics) {
+  std::vector<SymMat<D>> rows(static_cast<std::size_t>(file.file_node_count));
+  std::vector<bool> filled(rows.size(), false);
+  auto put = [&](Index file_node, const SymMat<D>& metric) {
+    rows[static_cast<std::size_t>(file_node)] = metric;
+    filled[static_cast<std::size_t>(file_node)] = true;
+  };
+  for (Index v = 0; v < mesh.vertex_count(); ++v) put(file.vertex_file_ids[v], metrics.vertices[v]);
+  if (mesh.is_p2()) {
+    std::vector<SymMat<D>> logs;
+    if (metrics.edge_nodes.empty())
+      for (const SymMat<D>& metric : metrics.vertices) logs.push_back(log_spd(metric));
+    for (Index e = 0; e < mesh.edge_count(); ++e) {
+      auto [a, b] = mesh.edge_vertices(e);
+      put(file.edge_node_file_ids[e], metrics.edge_nodes.empty() ? exp_sym(0.5 * (logs[a] + logs[b])) : metrics.edge_nodes[e]);
+    }
+  }
+  for (std::size_t node = 0; node < filled.size(); ++node)
+    if (!filled[node]) throw Error(std::to_string(node + 1) + ": node of the mesh file that is neither a vertex nor a P2 node");
+  return rows_of_metrics(rows);
+}
+
+template <int D>
+void write_metric(const Mesh<D>& mesh, const MeshFileContent& file, const MetricOptions& options, Source source) {
+  SourceMetrics<D> metrics = source_metrics(mesh, file, options, source);
+  if (options.gradation) {
+    grade_metrics(mesh, metrics.vertices, GradationOptions{*options.gradation});
+    metrics.edge_nodes.clear();  // an exact value at a node would ignore the gradation
+  }
+  SolutionField rows = rows_in_file_order(mesh, file, metrics);
+  write_solution_file(options.output, {D, rows.count(), {rows}});
+  std::cout << "wrote " << options.output << ": " << rows.count() << " metrics, complexity "
+            << metric_complexity(mesh, metrics.vertices) << " (" << mesh_summary(mesh) << ")\n";
+}
+
+void run_metric(const MetricOptions& options) {
+  Source source = chosen_source(options);
+  check_options_apply(options, source);
+  std::string extension = file_extension(options.output);
+  if (extension != ".sol" && extension != ".solb")
+    throw Error(options.output + ": a metric is written as .sol or .solb, not '" + extension + "'");
+  MeshFileContent file = read_mesh_file(options.mesh);
+  std::visit([&](const auto& mesh) { write_metric(mesh, file, options, source); }, file.mesh);
+}
+
+std::string names_text(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+}  // namespace
+
+void add_metric_command(CLI::App& app) {
+  auto options = std::make_shared<MetricOptions>();
+  CLI::App* command = app.add_subcommand(
+      "metric", "Compute a metric on a mesh: analytic, implied, surface, Hessian-based or given; optionally graded");
+  command->add_option("mesh", options->mesh, "mesh to read (.mesh, .meshb, .msh)")->required();
+  command->add_option("-o,--output", options->output, "metric to write (.sol, .solb), one row per node of MESH")->required();
+
+  command->add_option("--analytic", options->analytic, "source: an analytic metric (" + names_text(analytic_metric_names()) + ")");
+  command->add_flag("--implied", options->implied, "source: the metric in which MESH is a unit mesh");
+  command->add_option("--surface", options->surface,
+                      "source: size HN along the boundary normal and HT along the boundary, carried inside by "
+                      "--gradation (required)")
+      ->delimiter(',')
+      ->expected(2)
+      ->check(CLI::PositiveNumber);
+  command->add_option("--hessian", options->hessian,
+                      "source: the Lp metric of the Hessian of a scalar field, FIELD.sol(b) at the nodes or "
+                      "analytic:NAME (" + names_text(analytic_field_names()) + ")");
+  command->add_option("--input", options->input, "source: an existing metric of MESH (.sol/.solb), e.g. to grade it");
+  command->add_option("--gradation", options->gradation, "grade the metric: sizes grow by at most BETA > 1 per unit length");
+
+  command->add_option("--h", options->h, "analytic uniform: size (0.1)")->check(CLI::PositiveNumber);
+  command->add_option("--h-min", options->h_min,
+                      "analytic: smallest size (0.001); hessian: bound on |H| (1e-6 h-max)")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--h-max", options->h_max,
+                      "analytic: largest size (0.1); hessian: bound on |H|, surface: initial interior size "
+                      "(both: the bounding-box diagonal)")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--axis", options->axis, "analytic linear: the axis the size varies along (x, y, z; default the last)")
+      ->check(CLI::IsMember({"x", "y", "z"}));
+  command->add_option("--center", options->center, "analytic linear: the coordinate of the smallest size (0.5)");
+  command->add_option("--radius", options->radius, "analytic shear-*, tanh-shock: radius of the layer (0.75)");
+  command->add_option("--width", options->width, "analytic shear-*, tanh-shock: width of the layer (0.05)")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--origin", options->origin, "analytic shear-*, tanh-shock: centre X,Y[,Z] of the layer (0)")
+      ->delimiter(',')
+      ->expected(2, 3);
+  command->add_option("--complexity", options->complexity, "hessian: target complexity N (about the vertex count)")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--norm", options->norm, "hessian: the p of the Lp norm of the error (2)")->check(CLI::PositiveNumber);
+  command->callback([options] { run_metric(*options); });
+}
+
+}  // namespace hocav
