@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cases/gmsh_model.hpp"
+#include "io/mesh_file.hpp"
 
 namespace hocav {
 namespace {
@@ -41,40 +42,56 @@ void check_parameters(const ShellParameters& p) {
     throw Error("size h = " + text(p.size) + " is too small: the mesh would exceed 50 million elements");
 }
 
-// Builds the shell in gmsh, meshes it and returns the boundary entities with their refs.
+}  // namespace
+
 template <int D>
-std::vector<GmshBoundaryEntity> mesh_shell_in_gmsh(const ShellParameters& p) {
-  namespace occ = gmsh::model::occ;
-  auto add_ball = [](double radius) { return D == 2 ? occ::addDisk(0, 0, 0, radius, radius) : occ::addSphere(0, 0, 0, radius); };
-  int outer = add_ball(p.outer_radius);
-  int inner = add_ball(p.inner_radius);
-  gmsh::vectorpair shell;
-  std::vector<gmsh::vectorpair> ancestry;
-  occ::cut({{D, outer}}, {{D, inner}}, shell, ancestry);
-  occ::synchronize();
+std::vector<GmshBoundaryEntity> build_shell_model(const ShellParameters& p) {
+  check_parameters<D>(p);
+  return call_gmsh([&p] {
+    namespace occ = gmsh::model::occ;
+    auto add_ball = [](double radius) { return D == 2 ? occ::addDisk(0, 0, 0, radius, radius) : occ::addSphere(0, 0, 0, radius); };
+    int outer = add_ball(p.outer_radius);
+    int inner = add_ball(p.inner_radius);
+    gmsh::vectorpair shell;
+    std::vector<gmsh::vectorpair> ancestry;
+    occ::cut({{D, outer}}, {{D, inner}}, shell, ancestry);
+    occ::synchronize();
 
-  gmsh::option::setNumber("Mesh.MeshSizeMin", p.size);
-  gmsh::option::setNumber("Mesh.MeshSizeMax", p.size);
-  gmsh::model::mesh::generate(D);
-
-  // Each boundary entity is one whole circle or sphere: its bounding box tells which.
-  gmsh::vectorpair boundary_entities;
-  gmsh::model::getEntities(boundary_entities, D - 1);
-  std::vector<GmshBoundaryEntity> boundary;
-  for (const auto& [dimension, tag] : boundary_entities) {
-    double x_min, y_min, z_min, x_max, y_max, z_max;
-    gmsh::model::getBoundingBox(dimension, tag, x_min, y_min, z_min, x_max, y_max, z_max);
-    bool inner_side = std::abs(x_max - p.inner_radius) < std::abs(x_max - p.outer_radius);
-    boundary.push_back({tag, inner_side ? 1 : 2});
-  }
-  return boundary;
+    // Each boundary entity is one whole circle or sphere: its bounding box tells which.
+    gmsh::vectorpair boundary_entities;
+    gmsh::model::getEntities(boundary_entities, D - 1);
+    std::vector<GmshBoundaryEntity> boundary;
+    for (const auto& [dimension, tag] : boundary_entities) {
+      double x_min, y_min, z_min, x_max, y_max, z_max;
+      gmsh::model::getBoundingBox(dimension, tag, x_min, y_min, z_min, x_max, y_max, z_max);
+      bool inner_side = std::abs(x_max - p.inner_radius) < std::abs(x_max - p.outer_radius);
+      boundary.push_back({tag, inner_side ? 1 : 2});
+    }
+    return boundary;
+  });
 }
 
 template <int D>
+void write_shell_cad(const ShellParameters& p, const std::string& path) {
+  const std::string extension = file_extension(path);
+  if (extension != ".brep" && extension != ".step" && extension != ".stp")
+    throw Error(path + ": a CAD file must end in .brep, .step or .stp");
+  GmshSession session(D == 2 ? "annulus" : "sphere-shell");
+  build_shell_model<D>(p);
+  call_gmsh([&path] { gmsh::write(path); });
+}
+
+namespace {
+
+template <int D>
 Mesh<D> generate_shell(const ShellParameters& p, const std::string& name) {
-  check_parameters<D>(p);
   GmshSession session(name);
-  auto boundary = call_gmsh([&p] { return mesh_shell_in_gmsh<D>(p); });
+  auto boundary = build_shell_model<D>(p);
+  call_gmsh([&p] {
+    gmsh::option::setNumber("Mesh.MeshSizeMin", p.size);
+    gmsh::option::setNumber("Mesh.MeshSizeMax", p.size);
+    gmsh::model::mesh::generate(D);
+  });
   Mesh<D> mesh = extract_gmsh_mesh<D>(boundary, 1);
   // gmsh evaluates boundary nodes on the CAD surface; projecting them radially removes the last
   // rounding so that "on the boundary" holds exactly for the curving code and the tests.
@@ -92,5 +109,10 @@ Mesh<2> generate_annulus(const ShellParameters& parameters) { return generate_sh
 Mesh<3> generate_sphere_shell(const ShellParameters& parameters) {
   return generate_shell<3>(parameters, "sphere-shell");
 }
+
+template std::vector<GmshBoundaryEntity> build_shell_model<2>(const ShellParameters&);
+template std::vector<GmshBoundaryEntity> build_shell_model<3>(const ShellParameters&);
+template void write_shell_cad<2>(const ShellParameters&, const std::string&);
+template void write_shell_cad<3>(const ShellParameters&, const std::string&);
 
 }  // namespace hocav

@@ -3,6 +3,10 @@
 // curved boundaries and known measure: the test bed for curving boundary edges.
 #pragma once
 
+#include <string>
+#include <vector>
+
+#include "cases/gmsh_model.hpp"
 #include "mesh/mesh.hpp"
 
 namespace hocav {
@@ -20,5 +24,17 @@ struct ShellParameters {
 // small that the mesh would exceed 50 million elements.
 Mesh<2> generate_annulus(const ShellParameters& parameters);
 Mesh<3> generate_sphere_shell(const ShellParameters& parameters);
+
+// Builds the shell's CAD model with OpenCASCADE in the current gmsh model (a GmshSession must be
+// open) and returns its boundary entities (circles in 2D, spheres in 3D) with the facet refs above.
+// Error for bad parameters, as the generators.
+template <int D>
+std::vector<GmshBoundaryEntity> build_shell_model(const ShellParameters& parameters);
+
+// Writes the shell's CAD model to a .brep or .step/.stp file. Read back, its boundary entities
+// are numbered by OpenCASCADE (the outer one first: tags 1 outer, 2 inner — not the facet refs),
+// so a CAD boundary maps the refs by proximity (surface/cad_boundary_gmsh.hpp).
+template <int D>
+void write_shell_cad(const ShellParameters& parameters, const std::string& path);
 
 }  // namespace hocav

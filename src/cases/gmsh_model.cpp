@@ -21,6 +21,15 @@ namespace hocav {
 namespace {
 
 std::mutex gmsh_mutex;
+// A second session in the thread that holds the mutex would wait for itself forever: refuse it.
+thread_local bool thread_holds_gmsh = false;
+
+std::unique_lock<std::mutex> lock_gmsh() {
+  if (thread_holds_gmsh) throw Error("gmsh is already in use in this thread (a gmsh session or CAD boundary is open)");
+  std::unique_lock<std::mutex> lock(gmsh_mutex);
+  thread_holds_gmsh = true;
+  return lock;
+}
 
 // gmsh element types: 2-node line, 3-node triangle, 4-node tetrahedron.
 constexpr int kGmshLine = 1, kGmshTriangle = 2, kGmshTetrahedron = 4;
@@ -127,9 +136,11 @@ Mesh<D> extract(const std::vector<GmshBoundaryEntity>& boundary, int element_ref
 }  // namespace
 
 GmshSession::GmshSession(const std::string& model_name)
-    : lock_(gmsh_mutex), saved_locale_(std::setlocale(LC_ALL, nullptr)) {
-  call_gmsh([] { gmsh::initialize(0, nullptr, /*readConfigFiles=*/false); });
+    : lock_(lock_gmsh()), saved_locale_(std::setlocale(LC_ALL, nullptr)) {
+  bool initialized = false;
   try {
+    call_gmsh([] { gmsh::initialize(0, nullptr, /*readConfigFiles=*/false); });
+    initialized = true;
     call_gmsh([&model_name] {
       gmsh::option::setNumber("General.Terminal", 0);
       gmsh::option::setNumber("General.Verbosity", 0);
@@ -139,8 +150,9 @@ GmshSession::GmshSession(const std::string& model_name)
       gmsh::model::add(model_name);
     });
   } catch (...) {
-    gmsh::finalize();
+    if (initialized) gmsh::finalize();
     std::setlocale(LC_ALL, saved_locale_.c_str());
+    thread_holds_gmsh = false;
     throw;
   }
 }
@@ -152,6 +164,7 @@ GmshSession::~GmshSession() {
     // Nothing useful to do about a failing cleanup in a destructor.
   }
   std::setlocale(LC_ALL, saved_locale_.c_str());
+  thread_holds_gmsh = false;
 }
 
 template <int D>

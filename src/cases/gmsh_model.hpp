@@ -13,9 +13,11 @@
 namespace hocav {
 
 // Holds gmsh for the lifetime of one generation: gmsh keeps one global model, so sessions are
-// serialized by a process-wide mutex (every use of the gmsh API in hocav goes through one). Reads no user configuration file and fixes the options that
-// decide the result (one thread, fixed seed), so that the same inputs give the same mesh. Messages
-// are silenced; gmsh's errors come back as Error. Restores the C locale gmsh changes.
+// serialized by a process-wide mutex (every use of the gmsh API in hocav goes through one); a
+// second session in the thread that holds one is an Error rather than a deadlock. Reads no user
+// configuration file and fixes the options that decide the result (one thread, fixed seed), so
+// that the same inputs give the same mesh. Messages are silenced; gmsh's errors come back as
+// Error. Restores the C locale gmsh changes.
 class GmshSession {
  public:
   explicit GmshSession(const std::string& model_name);
