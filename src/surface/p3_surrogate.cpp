@@ -28,16 +28,16 @@ Vec<D> unit(const Vec<D>& v) {
 }  // namespace
 
 template <int D>
-P3Surrogate<D>::P3Surrogate(const Mesh<D>& mesh, const VertexNormalOptions<D>& options)
-    : topology_(build_surface_topology(mesh, options.feature_angle_degrees)),
-      normals_(compute_vertex_normals(mesh, topology_, options)) {
+P3Surrogate<D>::P3Surrogate(const Mesh<D>& mesh, const SurrogateOptions<D>& options)
+    : topology_(build_surface_topology(mesh, options.normals.feature_angle_degrees)),
+      normals_(compute_vertex_normals(mesh, topology_, options.normals)) {
   const Index count = mesh.facet_count();
   patches_.resize(count);
   refs_.resize(count);
   boxes_.resize(count);
   edge_patches_.reserve(static_cast<std::size_t>(count) * CubicPatch<D>::kEdges);
   for (Index f = 0; f < count; ++f) {
-    build_patch(mesh, f);
+    build_patch(mesh, f, options.tangent_length);
     refs_[f] = mesh.facet_ref(f);
     boxes_[f] = Box<D>::empty();
     for (const Vec<D>& point : patches_[f].control) boxes_[f].add(point);
@@ -51,33 +51,33 @@ P3Surrogate<D>::P3Surrogate(const Mesh<D>& mesh, const VertexNormalOptions<D>& o
 }
 
 template <int D>
-void P3Surrogate<D>::build_patch(const Mesh<D>& mesh, Index f) {
+void P3Surrogate<D>::build_patch(const Mesh<D>& mesh, Index f, TangentLength tangent_length) {
   const auto& facet = mesh.facet(f);
   CubicPatch<D>& patch = patches_[f];
   for (int i = 0; i < D; ++i) patch.control[i] = mesh.vertex(facet[i]);
-  // b_ij of the patch edge from local vertex i to local vertex j.
-  auto edge_control_point = [&](int i, int j) {
+  // The unit tangent of the patch edge from local vertex i toward local vertex j, at P_i.
+  auto edge_tangent = [&](int i, int j) {
     const Vec<D>& from = patch.vertex(i);
     const Vec<D>& to = patch.vertex(j);
     const Vec<D>& normal = normals_.at(f, i);
     if constexpr (D == 3) {
       const Index neighbor = topology_.neighbors[f][3 - i - j];
-      if (neighbor == kNoIndex) return from + (to - from) * (1.0 / 3.0);
+      if (neighbor == kNoIndex) return unit(to - from);
       const int local_in_neighbor = facet_local_vertex(mesh, neighbor, facet[i]);
       if (normals_.corner_sides[neighbor][local_in_neighbor] != normals_.corner_sides[f][i]) {
-        // A ridge: the curve follows t = n_A × n_B, in both sides' tangent planes.
+        // A ridge: the curve follows n_A × n_B, in both sides' tangent planes.
         const Vec3& other_normal = normals_.at(neighbor, local_in_neighbor);
-        const Vec3 tangent = cross(normal, other_normal);
-        if (norm(tangent) > kMinRidgeSine) return tangent_line_control_point(from, to, unit(tangent));
-        return tangent_plane_control_point(from, to, unit(normal + other_normal));
+        const Vec3 ridge = cross(normal, other_normal);
+        if (norm(ridge) > kMinRidgeSine) return tangent_on_line(from, to, unit(ridge));
+        return tangent_in_plane(from, to, unit(normal + other_normal));
       }
     }
-    return tangent_plane_control_point(from, to, normal);
+    return tangent_in_plane(from, to, normal);
   };
   for (int e = 0; e < CubicPatch<D>::kEdges; ++e) {
-    const auto& ends = kPatchEdges<D>[e];
-    patch.edge_point(e, 0) = edge_control_point(ends[0], ends[1]);
-    patch.edge_point(e, 1) = edge_control_point(ends[1], ends[0]);
+    const auto& [i, j] = kPatchEdges<D>[e];
+    patch.edge_point(e, 0) = edge_control_point(patch.vertex(i), patch.vertex(j), edge_tangent(i, j), tangent_length);
+    patch.edge_point(e, 1) = edge_control_point(patch.vertex(j), patch.vertex(i), edge_tangent(j, i), tangent_length);
   }
   if constexpr (D == 3) place_centre_control_point(patch);
 }

@@ -2,11 +2,13 @@
 // Bézier patches that stand in for the CAD during the whole run.
 //
 // Per facet one patch (cubic_patch.hpp): the vertices, two control points per edge and (3D) the
-// centre. Edge control points follow the vertex normals (vertex_normals.hpp): on a smooth edge the
-// tangent-plane rule b_ij = (2 P_i + P_j − ((P_j − P_i)·n_i) n_i) / 3; on a ridge edge (3D: its two
-// facets are on different sides at P_i) the ridge rule b_ij = P_i + ((P_j − P_i)·t_i) t_i / 3 along
-// t_i = n_i^A × n_i^B, so that the edge curve lies in both sides' tangent planes; an edge that does
-// not join exactly two facets stays straight. Each edge control
+// centre. Edge control points b_ij = P_i + d t_i follow the vertex normals (vertex_normals.hpp): on
+// a smooth edge t_i is the edge projected on the tangent plane of n_i; on a ridge edge (3D: its two
+// facets are on different sides at P_i) t_i runs along n_i^A × n_i^B, so that the edge curve lies
+// in both sides' tangent planes; an edge that does not join exactly two facets stays straight. The
+// length d is math.md's third of the projected edge, b_ij = (2 P_i + P_j − ((P_j − P_i)·n_i) n_i) / 3,
+// or by default the circular-arc length (cubic_patch.hpp: TangentLength), which removes the
+// O(θ⁴) error the third leaves at edge midpoints on curved surfaces. Each edge control
 // point depends only on the edge's two vertices and on normals both facets of the edge share, so
 // the two patches of an edge have the same edge curve (C0 across edges), and every patch at a
 // vertex is tangent to its side's plane there (G1 at vertices).
@@ -32,10 +34,16 @@
 namespace hocav {
 
 template <int D>
+struct SurrogateOptions {
+  VertexNormalOptions<D> normals{};
+  TangentLength tangent_length = TangentLength::kCircularArc;
+};
+
+template <int D>
 class P3Surrogate final : public BoundaryGeometry<D> {
  public:
   // Built from the mesh's boundary facets and vertices (P2 nodes are not used); patch p is facet p.
-  explicit P3Surrogate(const Mesh<D>& mesh, const VertexNormalOptions<D>& options = {});
+  explicit P3Surrogate(const Mesh<D>& mesh, const SurrogateOptions<D>& options = {});
 
   BoundaryPoint<D> project(const Vec<D>& x, const ProjectionQuery& query = {}) const override;
   // The patch normal at the projection, outward like the facets.
@@ -60,7 +68,7 @@ class P3Surrogate final : public BoundaryGeometry<D> {
   };
   Closest closest(const Vec<D>& x, const ProjectionQuery& query) const;
   std::optional<Closest> walk_from(Index patch, const Vec<D>& x, const ProjectionQuery& query) const;
-  void build_patch(const Mesh<D>& mesh, Index f);
+  void build_patch(const Mesh<D>& mesh, Index f, TangentLength tangent_length);
 
   std::vector<CubicPatch<D>> patches_;
   std::vector<int> refs_;

@@ -1,12 +1,18 @@
 // Vertex normals per smooth side (math.md §9).
 #include "surface/vertex_normals.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <numeric>
 
+#include "surface/quadric_fit.hpp"
+
 namespace hocav {
 namespace {
+
+// A fitted normal that turns further than this from the weighted one is a failed fit.
+const double kMaxFitTurn = 30 * std::numbers::pi / 180;
 
 // Union-find over facet corners (corner = D * facet + local vertex), path halving.
 class CornerSets {
@@ -72,6 +78,47 @@ VertexNormals<D> weighted_side_normals(const Mesh<D>& mesh, CornerSets& sets, No
   return result;
 }
 
+// Replaces each side's normal by the quadric fitted to its neighbourhood: the vertices of the
+// side's facets and of the facets next to them on the same side (sharing a normal at a vertex of
+// the side between them).
+template <int D>
+void fit_quadric_normals(const Mesh<D>& mesh, const SurfaceTopology<D>& topology, VertexNormals<D>& normals) {
+  // The facet corners of each side, in compressed rows.
+  const std::size_t side_count = normals.normals.size();
+  std::vector<Index> offsets(side_count + 1, 0), corners(static_cast<std::size_t>(D) * mesh.facet_count());
+  for (const auto& sides : normals.corner_sides)
+    for (Index side : sides) ++offsets[side + 1];
+  for (std::size_t side = 0; side < side_count; ++side) offsets[side + 1] += offsets[side];
+  std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
+  for (Index c = 0; c < static_cast<Index>(corners.size()); ++c) corners[fill[normals.corner_sides[c / D][c % D]]++] = c;
+
+  std::vector<Index> vertices;
+  std::vector<Vec<D>> neighbors;
+  for (std::size_t side = 0; side < side_count; ++side) {
+    vertices.clear();
+    const Index vertex = mesh.facet(corners[offsets[side]] / D)[corners[offsets[side]] % D];
+    auto add_facet_vertices = [&](Index f) {
+      for (Index v : mesh.facet(f))
+        if (v != vertex) vertices.push_back(v);
+    };
+    for (Index k = offsets[side]; k < offsets[side + 1]; ++k) {
+      const Index f = corners[k] / D;
+      add_facet_vertices(f);
+      for (int s = 0; s < D; ++s) {
+        const Index g = topology.neighbors[f][s];
+        if (g == kNoIndex) continue;
+        const int i = (s + 1) % D;  // a vertex of side s
+        if (normals.corner_sides[f][i] == normals.corner_sides[g][facet_local_vertex(mesh, g, mesh.facet(f)[i])]) add_facet_vertices(g);
+      }
+    }
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    neighbors.clear();
+    for (Index v : vertices) neighbors.push_back(mesh.vertex(v));
+    normals.normals[side] = quadric_fitted_normal<D>(mesh.vertex(vertex), neighbors, normals.normals[side], kMaxFitTurn);
+  }
+}
+
 }  // namespace
 
 template <int D>
@@ -101,6 +148,7 @@ VertexNormals<D> compute_vertex_normals(const Mesh<D>& mesh, const SurfaceTopolo
           if (dot(separate.at(a / D, a % D), separate.at(b / D, b % D)) >= cos_smooth_angle) sets.unite(a, b);
         });
   VertexNormals<D> result = weighted_side_normals(mesh, sets, options.weights);
+  if (options.quadric_fit) fit_quadric_normals(mesh, topology, result);
 
   if (options.normal_source != nullptr) {
     const double cos_feature_angle = std::cos(options.feature_angle_degrees * std::numbers::pi / 180);

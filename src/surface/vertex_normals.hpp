@@ -38,6 +38,10 @@ struct VertexNormalOptions {
   // fans of a smooth surface differ by about h / (curvature radius), hence a margin.
   double smooth_ridge_angle_degrees = 20;
   NormalWeights weights = NormalWeights::kAngle;
+  // Refine each side's weighted normal by a least-squares quadric (quadric_fit.hpp) through the
+  // vertices of its facets and of their neighbours on the same side. Off, the weighted normals err
+  // by O(h) on irregular meshes; the measured effect is in docs/surface.md.
+  bool quadric_fit = true;
   // When set, normals come from this geometry (with the facet's ref) where it agrees with the facets.
   const BoundaryGeometry<D>* normal_source = nullptr;
 };

@@ -85,12 +85,39 @@ void expect_vertices_and_edge_midpoints() {
 TEST(SurfaceCubicPatch, CurveEdgeIsACubicBezierCurve) { expect_vertices_and_edge_midpoints<2>(); }
 TEST(SurfaceCubicPatch, TriangleEdgesAreCubicBezierCurves) { expect_vertices_and_edge_midpoints<3>(); }
 
-TEST(SurfaceCubicPatch, TangentPlaneAndLineRules) {
+TEST(SurfaceCubicPatch, TangentRules) {
   const Vec3 from{{1, 2, 3}}, to{{2, 2.5, 2}}, normal = Vec3{{1, 1, 1}} * (1 / std::sqrt(3.0));
-  EXPECT_NEAR(dot(tangent_plane_control_point(from, to, normal) - from, normal), 0.0, 1e-15);
-  // The edge projected on the plane z = 3, a third of the way.
-  EXPECT_LT(norm(tangent_plane_control_point(from, to, Vec3{{0, 0, 1}}) - Vec3{{1 + 1.0 / 3, 2 + 0.5 / 3, 3}}), 1e-15);
-  EXPECT_LT(norm(tangent_line_control_point(from, to, Vec3{{1, 0, 0}}) - Vec3{{1 + 1.0 / 3, 2, 3}}), 1e-15);
+  const Vec3 in_plane = tangent_in_plane(from, to, normal);
+  EXPECT_NEAR(dot(in_plane, normal), 0.0, 1e-15);
+  EXPECT_NEAR(norm(in_plane), 1.0, 1e-15);
+  // math.md's rule: (2 P_i + P_j − ((P_j − P_i)·n) n) / 3.
+  const Vec3 third = edge_control_point(from, to, in_plane, TangentLength::kProjectedThird);
+  EXPECT_LT(norm(third - (2.0 * from + to - dot(to - from, normal) * normal) * (1.0 / 3)), 1e-15);
+  EXPECT_LT(norm(tangent_on_line(from, to, Vec3{{-1, 0, 0}}) - Vec3{{1, 0, 0}}), 1e-15);
+  // A straight edge: both lengths give its third.
+  const Vec3 along = Vec3{{1, 0.5, -1}} * (1 / 1.5);
+  for (TangentLength rule : {TangentLength::kProjectedThird, TangentLength::kCircularArc})
+    EXPECT_LT(norm(edge_control_point(from, to, along, rule) - (from + (to - from) * (1.0 / 3))), 1e-15);
+}
+
+// An arc of angle θ on the unit circle with its exact end tangents: the circular-arc length puts the
+// cubic's midpoint on the circle; the projected third misses it by about 9 θ⁴ / 384.
+TEST(SurfaceCubicPatch, CircularArcLengthHitsTheArcMidpoint) {
+  for (double theta : {0.2, 0.5, 1.0}) {
+    CubicPatch<2> arc;
+    arc.control[0] = Vec2{{1, 0}};
+    arc.control[1] = Vec2{{std::cos(theta), std::sin(theta)}};
+    const Vec2 start_tangent{{0, 1}}, end_tangent{{std::sin(theta), -std::cos(theta)}};
+    for (TangentLength rule : {TangentLength::kProjectedThird, TangentLength::kCircularArc}) {
+      arc.edge_point(0, 0) = edge_control_point(arc.vertex(0), arc.vertex(1), start_tangent, rule);
+      arc.edge_point(0, 1) = edge_control_point(arc.vertex(1), arc.vertex(0), end_tangent, rule);
+      const double error = norm(edge_curve_midpoint(arc, 0)) - 1;
+      if (rule == TangentLength::kCircularArc)
+        EXPECT_NEAR(error, 0.0, 1e-15) << theta;
+      else
+        EXPECT_NEAR(error, -9 * std::pow(theta, 4) / 384, 0.1 * 9 * std::pow(theta, 4) / 384) << theta;
+    }
+  }
 }
 
 // The closest point on a patch agrees with dense sampling (and is never farther).
