@@ -68,6 +68,10 @@ struct RefinementOptions {
   SubdivisionLimits limits{12, 4096};
 };
 
+// For figures a user reads (reports, .vtu): bounds within 1e-6, so an element certified just above
+// a floor does not read below it, and the figures match gmsh's element by element.
+inline constexpr RefinementOptions kReportedRefinement{1e-6, {16, 1 << 14}};
+
 // Bounds of min and max of J / |J_straight| over the element: min_lower ≤ min ≤ min_upper and
 // max_lower ≤ max ≤ max_upper.
 struct JacobianRange {

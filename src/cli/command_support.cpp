@@ -1,6 +1,8 @@
 #include "cli/command_support.hpp"
 
 #include <algorithm>
+
+#include "bezier/mesh_quality.hpp"
 #include <cmath>
 
 #include "base/error.hpp"
@@ -91,6 +93,18 @@ template std::vector<SymMat<2>> metrics_of_rows(const SolutionField&);
 template std::vector<SymMat<3>> metrics_of_rows(const SolutionField&);
 template SolutionField rows_of_metrics(const std::vector<SymMat<2>>&);
 template SolutionField rows_of_metrics(const std::vector<SymMat<3>>&);
+template <int D>
+std::vector<VtuField> jacobian_cell_fields(const Mesh<D>& mesh) {
+  VtuField minimum{"min_normalized_jacobian", 1, {}}, scaled{"scaled_jacobian", 1, {}};
+  for (const auto& quality : mesh_jacobian_quality(mesh, kReportedRefinement)) {
+    minimum.values.push_back(quality.min_normalized_jacobian);
+    scaled.values.push_back(quality.scaled_jacobian);
+  }
+  return {std::move(minimum), std::move(scaled)};
+}
+
+template std::vector<VtuField> jacobian_cell_fields(const Mesh<2>&);
+template std::vector<VtuField> jacobian_cell_fields(const Mesh<3>&);
 template VtuField metric_tensor_field<2>(const SolutionField&);
 template VtuField metric_tensor_field<3>(const SolutionField&);
 template std::string mesh_summary(const Mesh<2>&);

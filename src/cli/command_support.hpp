@@ -35,6 +35,11 @@ SolutionField rows_of_metrics(const std::vector<SymMat<D>>& metrics);
 template <int D>
 VtuField metric_tensor_field(const SolutionField& metric);
 
+// Per element: "min_normalized_jacobian" (min of J / |J_straight|) and "scaled_jacobian" (min J /
+// max J, gmsh's measure), refined bounds, for the .vtu cell data.
+template <int D>
+std::vector<VtuField> jacobian_cell_fields(const Mesh<D>& mesh);
+
 // "2D P1: 356 vertices, 605 triangles, 95 boundary edges"
 template <int D>
 std::string mesh_summary(const Mesh<D>& mesh);

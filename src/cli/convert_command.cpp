@@ -58,6 +58,7 @@ void convert(Mesh<D>& mesh, const MeshFileContent& file, const ConvertOptions& o
   if (file_extension(options.output) == ".vtu") {
     VtuData data;
     if (metric) data.point_fields.push_back(metric_tensor_field<D>(*metric));
+    data.cell_fields = jacobian_cell_fields(mesh);
     write_vtu(options.output, mesh, data);
   } else {
     write_mesh_file(options.output, mesh, {options.gamma_version});

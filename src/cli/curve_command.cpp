@@ -7,7 +7,6 @@
 
 #include "adapt/reinsertion_curving.hpp"
 #include "base/error.hpp"
-#include "bezier/mesh_quality.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
 #include "geom/sym_functions.hpp"
@@ -76,9 +75,7 @@ void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& optio
   if (!options.vtu.empty()) {
     VtuData data;
     data.point_fields.push_back(metric_tensor_field<D>(metric_at_nodes(mesh, field)));
-    VtuField jacobian{"min_normalized_jacobian", 1, {}};
-    for (const auto& quality : mesh_jacobian_quality(mesh)) jacobian.values.push_back(quality.min_normalized_jacobian);
-    data.cell_fields.push_back(std::move(jacobian));
+    data.cell_fields = jacobian_cell_fields(mesh);
     write_vtu(options.vtu, mesh, data);
   }
   if (!options.report.empty()) {

@@ -31,11 +31,7 @@ CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& fie
     report.max_anisotropy = std::max(report.max_anisotropy, std::exp(0.5 * (eigen.values[D - 1] - eigen.values[0])));
   }
 
-  // Bounds refined tightly, so an element certified just above the floor does not read below it.
-  RefinementOptions tight;
-  tight.relative_tolerance = 1e-6;
-  tight.limits = {16, 1 << 14};
-  auto summary = summarize_jacobian_quality(mesh_jacobian_quality(mesh, tight));
+  auto summary = summarize_jacobian_quality(mesh_jacobian_quality(mesh, kReportedRefinement));
   report.normalized_jacobian = summary.min_normalized_jacobian;
   report.scaled_jacobian = summary.scaled_jacobian;
 
