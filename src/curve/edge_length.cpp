@@ -56,24 +56,30 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
       if (order == Order::kHessian) d2g = (2 * du * du) * e;
     } else {
       ExpFrechet<D> exp_t(phi.a * log_a_ + phi.middle * log_node + phi.b * log_b_);
-      const SymMat<D>& e = exp_t.value();
-      const Vec<D> eu = e * u;
-      g = dot(u, eu);
+      // In the eigenbasis: keeps g relatively accurate along the small eigenvalues (high anisotropy).
+      g = exp_t.squared_length(u);
       if (order != Order::kValue) {
         // uᵀ Dexp[H] u = <Dexp[u uᵀ], H> (Dexp is self-adjoint): one derivative serves every direction.
-        const SymMat<D> adjoint = exp_t.derivative(outer(u, u));
+        const SymMat<D> adjoint = exp_t.squared_length_gradient(u);
+        const Vec<D> eu = exp_t.value() * u;
         std::array<SymMat<D>, D> directions;
         for (int i = 0; i < D; ++i) {
           directions[i] = phi.middle * log_node_gradient[i];
           dg[i] = 2 * du * eu[i] + frobenius_dot(adjoint, directions[i]);
         }
         if (order == Order::kHessian) {
-          std::array<Vec<D>, D> de_u;  // ∂_iE u
-          for (int i = 0; i < D; ++i) de_u[i] = exp_t.derivative(directions[i]) * u;
+          // uᵀ D²exp[Hi, Hj] u = <D²exp[Hi, u uᵀ], Hj> (symmetric in its three arguments): D second derivatives.
+          const SymMat<D> length_direction = outer(u, u);
+          std::array<Vec<D>, D> de_u;                     // ∂_iE u
+          std::array<SymMat<D>, D> second_along_length;  // D²exp[Hi, u uᵀ]
+          for (int i = 0; i < D; ++i) {
+            de_u[i] = exp_t.derivative(directions[i]) * u;
+            second_along_length[i] = exp_t.second_derivative(directions[i], length_direction);
+          }
           for (int i = 0; i < D; ++i)
             for (int j = 0; j <= i; ++j)
-              d2g(i, j) = 2 * du * du * e(i, j) + 2 * du * (de_u[j][i] + de_u[i][j]) +
-                          dot(u, exp_t.second_derivative(directions[i], directions[j]) * u);
+              d2g(i, j) = 2 * du * du * exp_t.value()(i, j) + 2 * du * (de_u[j][i] + de_u[i][j]) +
+                          frobenius_dot(second_along_length[i], directions[j]);
         }
       }
     }

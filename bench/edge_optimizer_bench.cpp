@@ -1,0 +1,166 @@
+// Edge optimization throughput (math.md §7) on realistic edges: every edge of a back mesh of about 105k
+// elements, in an adapted-looking shear field (size ratio h_max/h_min = 300 across a curved layer), optimized
+// with the default options (Simpson rule, localization included, hint = an element of the edge's first vertex).
+// Micro benchmarks split the cost: one localization from a near hint, one ExpFrechet construction, and one
+// EdgeLengthFunction::evaluate at each order.
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <vector>
+
+#include "cases/structured.hpp"
+#include "curve/edge_optimizer.hpp"
+#include "geom/sym_functions.hpp"
+#include "metric/analytic_metric.hpp"
+#include "metric/metric_field.hpp"
+
+namespace hocav {
+namespace {
+
+// Unit square 230² (105,800 triangles) or unit cube 26³ (105,456 tetrahedra); the shear layer of
+// radius 0.75 around the origin crosses both diagonally.
+template <int D>
+Mesh<D> back_mesh() {
+  if constexpr (D == 2)
+    return generate_square(230);
+  else
+    return generate_cube(26);
+}
+
+template <int D>
+struct EdgeCase {
+  MetricField<D> field;
+  std::vector<std::array<Index, 2>> edges;
+  std::vector<Index> vertex_element;  // an element of each vertex: the hint of the edge's first node
+};
+
+template <int D>
+const EdgeCase<D>& edge_case() {
+  static const EdgeCase<D> instance = [] {
+    Mesh<D> mesh = back_mesh<D>();
+    AnalyticMetricSpec spec;
+    spec.name = D == 2 ? "shear-circle" : "shear-sphere";
+    spec.h_max = 0.1;
+    spec.h_min = spec.h_max / 300;
+    spec.width = 0.1;
+    MetricField<D> field(mesh, analytic_metric_at_vertices<D>(spec, mesh));
+    mesh.build_edges();
+    std::vector<std::array<Index, 2>> edges(static_cast<std::size_t>(mesh.edge_count()));
+    for (Index e = 0; e < mesh.edge_count(); ++e) edges[static_cast<std::size_t>(e)] = mesh.edge_vertices(e);
+    std::vector<Index> vertex_element(static_cast<std::size_t>(mesh.vertex_count()), kNoIndex);
+    for (Index k = 0; k < mesh.element_count(); ++k)
+      for (Index v : mesh.element(k)) vertex_element[static_cast<std::size_t>(v)] = k;
+    return EdgeCase<D>{std::move(field), std::move(edges), std::move(vertex_element)};
+  }();
+  return instance;
+}
+
+template <int D>
+void BM_OptimizeMeshEdges(benchmark::State& state) {
+  const EdgeCase<D>& c = edge_case<D>();
+  const Mesh<D>& mesh = c.field.back_mesh();
+  std::size_t next = 0;
+  double iterations = 0, evaluations = 0;
+  for (auto _ : state) {
+    const auto& edge = c.edges[next];
+    const Vec<D>& a = mesh.vertex(edge[0]);
+    const Vec<D>& b = mesh.vertex(edge[1]);
+    auto result = optimize_edge_length<D>(c.field, a, b, c.field.vertex_log_metric(edge[0]),
+                                          c.field.vertex_log_metric(edge[1]), 0.5 * (a + b),
+                                          c.vertex_element[static_cast<std::size_t>(edge[0])]);
+    benchmark::DoNotOptimize(result);
+    iterations += result.iterations;
+    evaluations += result.evaluations;
+    next = (next + 1) % c.edges.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["iterations/edge"] = benchmark::Counter(iterations, benchmark::Counter::kAvgIterations);
+  state.counters["evaluations/edge"] = benchmark::Counter(evaluations, benchmark::Counter::kAvgIterations);
+}
+BENCHMARK_TEMPLATE(BM_OptimizeMeshEdges, 2);
+BENCHMARK_TEMPLATE(BM_OptimizeMeshEdges, 3);
+
+// Points a small step away from an element's centroid, localized from that element: the walk of one
+// optimizer iterate.
+template <int D>
+void BM_LocalizeFromNearHint(benchmark::State& state) {
+  const EdgeCase<D>& c = edge_case<D>();
+  const PointLocator<D>& locator = c.field.locator();
+  const Index elements = c.field.back_mesh().element_count();
+  Index element = 0;
+  for (auto _ : state) {
+    const SimplexPoints<D> corners = locator.element_points(element);
+    Vec<D> point = 0.6 * corners[0];
+    for (int i = 1; i <= D; ++i) point += (0.4 / D) * corners[i];
+    benchmark::DoNotOptimize(c.field.sample(point, element));
+    element = (element + 7919) % elements;  // a stride that leaves the cache, as edges of a real mesh do
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK_TEMPLATE(BM_LocalizeFromNearHint, 2);
+BENCHMARK_TEMPLATE(BM_LocalizeFromNearHint, 3);
+
+template <int D>
+void BM_ExpFrechetConstruction(benchmark::State& state) {
+  const EdgeCase<D>& c = edge_case<D>();
+  const Index vertices = c.field.back_mesh().vertex_count();
+  Index vertex = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(ExpFrechet<D>(c.field.vertex_log_metric(vertex)));
+    vertex = (vertex + 1) % vertices;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK_TEMPLATE(BM_ExpFrechetConstruction, 2);
+BENCHMARK_TEMPLATE(BM_ExpFrechetConstruction, 3);
+
+// One evaluation of ℓ at the straight midpoint of mesh edges, back-mesh sample and gradient precomputed.
+template <int D>
+void BM_EdgeLengthEvaluate(benchmark::State& state) {
+  using Order = typename EdgeLengthFunction<D>::Order;
+  const auto order = static_cast<Order>(state.range(0));
+  const EdgeCase<D>& c = edge_case<D>();
+  const Mesh<D>& mesh = c.field.back_mesh();
+  struct Input {
+    EdgeLengthFunction<D> function;
+    Vec<D> node;
+    SymMat<D> log_node;
+    std::array<SymMat<D>, D> log_node_gradient;
+  };
+  std::vector<Input> inputs;
+  for (std::size_t e = 0; e < c.edges.size(); e += c.edges.size() / 1024) {
+    const auto& edge = c.edges[e];
+    const Vec<D> node = 0.5 * (mesh.vertex(edge[0]) + mesh.vertex(edge[1]));
+    auto sample = c.field.sample(node, c.vertex_element[static_cast<std::size_t>(edge[0])]);
+    inputs.push_back({EdgeLengthFunction<D>(mesh.vertex(edge[0]), mesh.vertex(edge[1]),
+                                            c.field.vertex_log_metric(edge[0]), c.field.vertex_log_metric(edge[1]),
+                                            default_optimizer_rule()),
+                      node, sample.log_metric, c.field.log_metric_gradient(sample.where.element)});
+  }
+  std::size_t next = 0;
+  for (auto _ : state) {
+    const Input& input = inputs[next];
+    benchmark::DoNotOptimize(input.function.evaluate(input.node, input.log_node, input.log_node_gradient, order));
+    next = (next + 1) % inputs.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK_TEMPLATE(BM_EdgeLengthEvaluate, 2)->DenseRange(0, 2)->ArgName("order");
+BENCHMARK_TEMPLATE(BM_EdgeLengthEvaluate, 3)->DenseRange(0, 2)->ArgName("order");
+
+template <int D>
+void BM_LogMetricGradient(benchmark::State& state) {
+  const EdgeCase<D>& c = edge_case<D>();
+  const Index elements = c.field.back_mesh().element_count();
+  Index element = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(c.field.log_metric_gradient(element));
+    element = (element + 7919) % elements;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK_TEMPLATE(BM_LogMetricGradient, 2);
+BENCHMARK_TEMPLATE(BM_LogMetricGradient, 3);
+
+}  // namespace
+}  // namespace hocav
