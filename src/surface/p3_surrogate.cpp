@@ -123,8 +123,8 @@ typename P3Surrogate<D>::Closest P3Surrogate<D>::closest(const Vec<D>& x, const 
     if (std::optional<Closest> walked = walk_from(query.hint, x, query)) return *walked;
   Closest best;
   best.on_patch.distance2 = std::numeric_limits<double>::infinity();
-  tree_.nearest(x, [&](Index p, double) {
-    if (query.ref && refs_[p] != *query.ref) return std::numeric_limits<double>::infinity();
+  tree_.nearest(x, [&](Index p, double best2) {
+    if ((query.ref && refs_[p] != *query.ref) || boxes_[p].distance2(x) >= best2) return std::numeric_limits<double>::infinity();
     const PatchClosestPoint<D> on_patch = closest_point_on_patch(patches_[p], x);
     if (on_patch.distance2 < best.on_patch.distance2) best = {p, on_patch};
     return on_patch.distance2;

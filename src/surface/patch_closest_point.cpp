@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "geom/closest_point.hpp"
 
@@ -10,8 +11,25 @@ namespace hocav {
 namespace {
 
 constexpr int kMaxIterations = 40;
-constexpr int kMaxHalvings = 30;
+constexpr int kNewtonHalvings = 8, kGradientHalvings = 30;
 constexpr double kParameterTolerance = 1e-14;
+// A barycentric this small (clamping makes them exact zeros, up to the rounding of 1 − Σ p) puts
+// the point on that side.
+constexpr double kOnSide = 1e-14;
+
+template <int K>
+using Matrix = std::array<std::array<double, K>, K>;
+
+// The gradient of barycentric λ_i in the free parameters (λ_0 = 1 − Σ p, λ_i = p_{i−1}).
+template <int K>
+std::array<double, K> barycentric_gradient(int i) {
+  std::array<double, K> gradient{};
+  if (i == 0)
+    gradient.fill(-1);
+  else
+    gradient[i - 1] = 1;
+  return gradient;
+}
 
 // The Euclidean projection of parameters onto the domain {p ≥ 0, Σ p ≤ 1}: when clamping the
 // negative ones leaves the sum above 1, the constraint Σ p = 1 is active at the projection.
@@ -31,7 +49,7 @@ std::array<double, K> clamp_to_domain(const std::array<double, K>& p) {
 
 // Solves the symmetric positive-definite K×K system A s = b; false when A is not positive definite.
 template <int K>
-bool solve_positive_definite(const std::array<std::array<double, K>, K>& a, const std::array<double, K>& b,
+bool solve_positive_definite(const Matrix<K>& a, const std::array<double, K>& b,
                              std::array<double, K>& solution) {
   if constexpr (K == 1) {
     if (!(a[0][0] > 0)) return false;
@@ -57,9 +75,9 @@ PatchClosestPoint<D> closest_point_on_patch(const CubicPatch<D>& patch, const Ve
 
   // Moves p along `direction` (clamped to the domain), halving until the distance decreases.
   double moved = 0;
-  auto descend = [&](const Parameters& direction) {
+  auto descend = [&](const Parameters& direction, int halvings) {
     double scale = 1;
-    for (int halving = 0; halving < kMaxHalvings; ++halving, scale *= 0.5) {
+    for (int halving = 0; halving < halvings; ++halving, scale *= 0.5) {
       Parameters trial = p;
       for (int i = 0; i < K; ++i) trial[i] += scale * direction[i];
       trial = clamp_to_domain<K>(trial);
@@ -82,7 +100,7 @@ PatchClosestPoint<D> closest_point_on_patch(const CubicPatch<D>& patch, const Ve
     // f/2 = |S − x|²/2: gradient g_a = r·S_a, Hessian H_ab = S_a·S_b + r·S_ab (Gauss–Newton part G).
     const Vec<D> r = jet.point - x;
     Parameters gradient{}, minus_gradient{};
-    std::array<std::array<double, K>, K> hessian{}, gauss_newton{};
+    Matrix<K> hessian{}, gauss_newton{};
     double gauss_newton_trace = 0;
     for (int a = 0; a < K; ++a) {
       gradient[a] = dot(r, jet.first[a]);
@@ -94,13 +112,40 @@ PatchClosestPoint<D> closest_point_on_patch(const CubicPatch<D>& patch, const Ve
       }
       gauss_newton_trace += gauss_newton[a][a];
     }
+    // Active set: the sides the point sits on while the descent pushes it out through them.
+    // Newton then runs on what is left: the whole patch, or the one side (a triangle's edge).
+    int active_count = 0;
+    Parameters active_normal{};
+    for (int i = 0; i < D; ++i) {
+      const Parameters normal = barycentric_gradient<K>(i);
+      const double lambda = i == 0 ? 1 - std::accumulate(p.begin(), p.end(), 0.0) : p[i - 1];
+      double outward = 0;
+      for (int a = 0; a < K; ++a) outward -= minus_gradient[a] * normal[a];
+      if (lambda <= kOnSide && outward > 0) {
+        ++active_count;
+        active_normal = normal;
+      }
+    }
+    if (active_count >= K) break;  // pushed into a corner (a curve's end, a triangle's vertex)
     Parameters newton{};
-    const bool has_newton = solve_positive_definite<K>(hessian, minus_gradient, newton) ||
-                            solve_positive_definite<K>(gauss_newton, minus_gradient, newton);
+    bool has_newton = false;
+    if (active_count == 0) {
+      has_newton = solve_positive_definite<K>(hessian, minus_gradient, newton) ||
+                   solve_positive_definite<K>(gauss_newton, minus_gradient, newton);
+    } else if constexpr (K == 2) {
+      const Parameters along{-active_normal[1], active_normal[0]};
+      auto curvature = [&along](const Matrix<K>& m) {
+        return along[0] * (m[0][0] * along[0] + m[0][1] * along[1]) + along[1] * (m[1][0] * along[0] + m[1][1] * along[1]);
+      };
+      const double slope = minus_gradient[0] * along[0] + minus_gradient[1] * along[1];
+      const double bend = curvature(hessian) > 0 ? curvature(hessian) : curvature(gauss_newton);
+      has_newton = bend > 0;
+      if (has_newton) newton = {slope / bend * along[0], slope / bend * along[1]};
+    }
     // The gradient step is the fallback that always descends unless p is stationary on the domain.
     Parameters steepest = minus_gradient;
     for (double& component : steepest) component /= std::max(gauss_newton_trace, 1e-300);
-    if (!(has_newton && descend(newton)) && !descend(steepest)) break;
+    if (!(has_newton && descend(newton, kNewtonHalvings)) && !descend(steepest, kGradientHalvings)) break;
     if (moved < kParameterTolerance) break;
   }
   return {p, jet.point, f};
