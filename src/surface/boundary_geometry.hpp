@@ -1,7 +1,7 @@
 // The geometry of the domain boundary as the cavity operators see it (math.md §9): project a point
 // onto it, its normal there, and the P2 node proposed for a boundary edge. Implemented by the P3
 // surrogate of the input boundary (p3_surrogate.hpp), by analytic shapes (analytic_boundary.hpp)
-// and by a CAD model read through gmsh (cad_boundary.hpp).
+// and by a CAD model read through gmsh (cad_boundary_gmsh.hpp).
 //
 // Parts of the boundary are named by facet refs: a query may restrict a projection to one ref, so
 // that a point between two surfaces (or near a ridge) lands on the surface its facet belongs to.
