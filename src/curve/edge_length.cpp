@@ -69,13 +69,9 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
         }
         if (order == Order::kHessian) {
           // uᵀ D²exp[Hi, Hj] u = <D²exp[Hi, u uᵀ], Hj> (symmetric in its three arguments): D second derivatives.
-          const SymMat<D> length_direction = outer(u, u);
-          std::array<Vec<D>, D> de_u;                     // ∂_iE u
-          std::array<SymMat<D>, D> second_along_length;  // D²exp[Hi, u uᵀ]
-          for (int i = 0; i < D; ++i) {
-            de_u[i] = exp_t.derivative(directions[i]) * u;
-            second_along_length[i] = exp_t.second_derivative(directions[i], length_direction);
-          }
+          const std::array<SymMat<D>, D> second_along_length = exp_t.second_derivatives(directions, outer(u, u));
+          std::array<Vec<D>, D> de_u;  // ∂_iE u
+          for (int i = 0; i < D; ++i) de_u[i] = exp_t.derivative(directions[i]) * u;
           for (int i = 0; i < D; ++i)
             for (int j = 0; j <= i; ++j)
               d2g(i, j) = 2 * du * du * exp_t.value()(i, j) + 2 * du * (de_u[j][i] + de_u[i][j]) +

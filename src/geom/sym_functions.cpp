@@ -131,10 +131,10 @@ SymMat<D> ExpFrechet<D>::squared_length_gradient(const Vec<D>& u) const {
 }
 
 template <int D>
-SymMat<D> ExpFrechet<D>::second_derivative(const SymMat<D>& direction1, const SymMat<D>& direction2) const {
+typename ExpFrechet<D>::SecondDifferences ExpFrechet<D>::second_differences() const {
   // exp[θi, θj, θk] is symmetric in its arguments: compute it for i ≤ j ≤ k (ascending θ) and copy it to the
   // permutations.
-  std::array<std::array<std::array<double, D>, D>, D> second;
+  SecondDifferences second;
   const Vec<D>& theta = eigen_.values;
   for (int i = 0; i < D; ++i)
     for (int j = i; j < D; ++j)
@@ -142,13 +142,35 @@ SymMat<D> ExpFrechet<D>::second_derivative(const SymMat<D>& direction1, const Sy
         double f = second_difference(theta[i], theta[j], theta[k], first_differences_(k, j), first_differences_(j, i));
         second[i][j][k] = second[i][k][j] = second[j][i][k] = second[j][k][i] = second[k][i][j] = second[k][j][i] = f;
       }
-  SymMat<D> a = congruence_transposed(eigen_.vectors, direction1);
-  SymMat<D> b = congruence_transposed(eigen_.vectors, direction2);
+  return second;
+}
+
+template <int D>
+SymMat<D> ExpFrechet<D>::second_derivative_from_eigenbasis(const SecondDifferences& second, const SymMat<D>& a,
+                                                           const SymMat<D>& b) const {
   SymMat<D> in_eigenbasis;
   for (int k = 0; k < D; ++k)
     for (int l = 0; l <= k; ++l)
       for (int m = 0; m < D; ++m) in_eigenbasis(k, l) += second[k][m][l] * (a(k, m) * b(m, l) + b(k, m) * a(m, l));
   return congruence(eigen_.vectors, in_eigenbasis);
+}
+
+template <int D>
+SymMat<D> ExpFrechet<D>::second_derivative(const SymMat<D>& direction1, const SymMat<D>& direction2) const {
+  return second_derivative_from_eigenbasis(second_differences(), congruence_transposed(eigen_.vectors, direction1),
+                                           congruence_transposed(eigen_.vectors, direction2));
+}
+
+template <int D>
+std::array<SymMat<D>, D> ExpFrechet<D>::second_derivatives(const std::array<SymMat<D>, D>& directions,
+                                                           const SymMat<D>& shared_direction) const {
+  const SecondDifferences second = second_differences();
+  const SymMat<D> shared_in_eigenbasis = congruence_transposed(eigen_.vectors, shared_direction);
+  std::array<SymMat<D>, D> result;
+  for (int i = 0; i < D; ++i)
+    result[i] = second_derivative_from_eigenbasis(second, congruence_transposed(eigen_.vectors, directions[i]),
+                                                  shared_in_eigenbasis);
+  return result;
 }
 
 template <int D>

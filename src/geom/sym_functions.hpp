@@ -13,6 +13,8 @@
 // Keep metrics in log form once they are read; log(exp(T)) returns T to about eps·(|θ| + κ).
 #pragma once
 
+#include <array>
+
 #include "geom/sym_eigen.hpp"
 #include "geom/sym_mat.hpp"
 
@@ -59,6 +61,9 @@ class ExpFrechet {
   const SymMat<D>& value() const { return value_; }
   SymMat<D> derivative(const SymMat<D>& direction) const;
   SymMat<D> second_derivative(const SymMat<D>& direction1, const SymMat<D>& direction2) const;
+  // D²exp(T)[Hi, H] for D directions Hi and one shared H: the divided differences, the costly part, are computed once.
+  std::array<SymMat<D>, D> second_derivatives(const std::array<SymMat<D>, D>& directions,
+                                              const SymMat<D>& shared_direction) const;
 
   // uᵀ exp(T) u = Σ_k e^θk (v_kᵀu)², a sum of positive terms each relatively accurate.
   double squared_length(const Vec<D>& u) const;
@@ -71,6 +76,12 @@ class ExpFrechet {
  private:
   // V (Γ ∘ H') Vᵀ for a direction H' = Vᵀ H V already in the eigenbasis.
   SymMat<D> derivative_from_eigenbasis(SymMat<D> direction_in_eigenbasis) const;
+  // exp[θk, θm, θl], indexed [k][m][l].
+  using SecondDifferences = std::array<std::array<std::array<double, D>, D>, D>;
+  SecondDifferences second_differences() const;
+  // The sum of D²exp over the eigenbasis for directions a, b already in the eigenbasis, back in the original basis.
+  SymMat<D> second_derivative_from_eigenbasis(const SecondDifferences& second, const SymMat<D>& a,
+                                              const SymMat<D>& b) const;
 
   SymEigen<D> eigen_;
   SymMat<D> value_;
