@@ -89,6 +89,8 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<
     }
     step = onto_plane(step);
     double step_size = norm(step);
+    // Converged: a step this small only meets round-off, where every halving of the line search would fail.
+    if (step_size < options.step_tolerance * edge_size) break;
     if (step_size > trust) step = (trust / step_size) * step, step_size = trust;
 
     // Backtracking: accept the first trial that decreases ℓ (kinks rule out stricter tests).
