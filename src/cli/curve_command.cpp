@@ -1,10 +1,12 @@
-// hocav curve IN --metric SOL -o OUT [--surface none] [--jacobian-floor X] [--passes N]
+// hocav curve IN --metric SOL -o OUT [--surface p3|cad:FILE|none] [--jacobian-floor X] [--passes N]
 //                [--threads N] [--quadrature RULE] [--report R.json] [--vtu V.vtu]
 // The paper's algorithm: propose boundary curvature, then reinsert every volume vertex with the P2
 // cavity operator, and write the curved P2 mesh with the Table-1 figures.
 #include <iostream>
 #include <memory>
+#include <optional>
 
+#include "adapt/proposal_node_source.hpp"
 #include "adapt/reinsertion_curving.hpp"
 #include "base/error.hpp"
 #include "cli/command_support.hpp"
@@ -13,12 +15,14 @@
 #include "io/atomic_output.hpp"
 #include "mesh/consistency.hpp"
 #include "report/curving_report.hpp"
+#include "surface/cad_boundary_gmsh.hpp"
+#include "surface/p3_surrogate.hpp"
 
 namespace hocav {
 namespace {
 
 struct CurveOptions {
-  std::string input, metric, output, report, vtu, surface = "none", quadrature = "simpson";
+  std::string input, metric, output, report, vtu, surface = "p3", quadrature = "simpson";
   double jacobian_floor = 0.01;
   int passes = 1;
   int threads = 1;
@@ -43,10 +47,25 @@ SolutionField metric_at_nodes(const Mesh<D>& mesh, const MetricField<D>& field) 
   return rows;
 }
 
+// The geometry boundary edges are curved onto: none, the P3 surrogate of the input boundary, or a
+// CAD file.
+template <int D>
+std::unique_ptr<BoundaryGeometry<D>> boundary_geometry(const std::string& surface, const Mesh<D>& mesh) {
+  if (surface == "none") return nullptr;
+  if (surface == "p3") return std::make_unique<P3Surrogate<D>>(mesh);
+  if (surface.starts_with("cad:") && surface.size() > 4) return std::make_unique<CadBoundary<D>>(surface.substr(4), mesh);
+  throw Error("--surface: 'p3', 'cad:FILE' or 'none', not '" + surface + "'");
+}
+
 template <int D>
 void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& options) {
-  if (options.surface != "none")
-    throw Error("--surface " + options.surface + ": only 'none' is available in this build");
+  const auto geometry = boundary_geometry<D>(options.surface, mesh);
+  std::optional<BoundaryProposals<D>> proposals;
+  std::optional<ProposalNodeSource<D>> boundary_nodes;
+  if (geometry) {
+    proposals.emplace(mesh, *geometry);
+    boundary_nodes.emplace(*proposals);
+  }
   const SolutionField rows = read_metric_for_mesh(options.metric, file, false);
   const MetricField<D> field(mesh, metrics_of<D>(rows));
   const Index points_before = mesh.vertex_count();
@@ -62,13 +81,15 @@ void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& optio
     reinsertion.progress = [&](double fraction) {
       for (; reported < static_cast<int>(10 * fraction); ++reported) std::cerr << "curving: " << 10 * (reported + 1) << "%\n";
     };
-  ReinsertionResult result = curve_by_reinsertion<D>(mesh, field, nullptr, reinsertion);
+  ReinsertionResult result =
+      curve_by_reinsertion<D>(mesh, field, boundary_nodes ? &*boundary_nodes : nullptr, reinsertion);
 
   ConsistencyOptions consistency;
   consistency.require_positive_orientation = false;
   if (auto problems = check_consistency(mesh, consistency); !problems.empty())
     throw Error("internal error: the curved mesh is inconsistent: " + problems.front());
-  CurvingReport report = make_curving_report(mesh, field, points_before, result, 0);
+  CurvingReport report = make_curving_report(mesh, field, points_before, result,
+                                             proposals ? static_cast<Index>(proposals->size()) : 0);
   report.threads = options.threads;
 
   write_mesh_file(options.output, mesh);
@@ -98,7 +119,8 @@ void add_curve_command(CLI::App& app) {
   command->add_option("input", options->input, "mesh to curve (.mesh, .meshb, .msh; P1 or P2)")->required();
   command->add_option("--metric", options->metric, "metric at the input's nodes (.sol/.solb)")->required();
   command->add_option("-o,--output", options->output, "curved P2 mesh to write (.mesh, .meshb, .msh, .vtu)")->required();
-  command->add_option("--surface", options->surface, "boundary curvature source: none")->capture_default_str();
+  command->add_option("--surface", options->surface, "boundary curvature: p3 (a cubic surrogate of the input boundary), cad:FILE (a STEP or BREP model; "
+                      "facet refs name its surfaces or are matched by proximity), none")->capture_default_str();
   command->add_option("--jacobian-floor", options->jacobian_floor,
                       "every element the operator creates keeps its min normalized Jacobian above this")
       ->check(CLI::Range(0.0, 1.0))
