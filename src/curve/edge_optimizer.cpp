@@ -1,6 +1,7 @@
 #include "curve/edge_optimizer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "geom/sym_functions.hpp"
@@ -55,11 +56,21 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<
   auto onto_plane = [&](const Vec<D>& v) { return v - dot(v, direction) * direction; };
   const Vec<D> first = midpoint + onto_plane(start - midpoint);
 
+  // ∂L^L/∂X is constant in a back element, and successive iterates often stay in one.
+  std::array<SymMat<D>, D> log_gradient;
+  Index log_gradient_element = kNoIndex;
+  auto log_gradient_in = [&](Index element) -> const std::array<SymMat<D>, D>& {
+    if (element != log_gradient_element) {
+      log_gradient = field.log_metric_gradient(element);
+      log_gradient_element = element;
+    }
+    return log_gradient;
+  };
+
   auto sample = field.sample(first, hint);
   result.node = first;
   result.back_element = sample.where.element;
-  auto value = function.evaluate(first, sample.log_metric, field.log_metric_gradient(sample.where.element),
-                                 Order::kHessian);
+  auto value = function.evaluate(first, sample.log_metric, log_gradient_in(sample.where.element), Order::kHessian);
   ++result.evaluations;
   const double initial_length = value.length;
   double trust = 0.25 * edge_size;
@@ -107,8 +118,8 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<
         accepted = true;
         result.node = trial;
         result.back_element = trial_sample.where.element;
-        value = function.evaluate(trial, trial_sample.log_metric,
-                                  field.log_metric_gradient(trial_sample.where.element), Order::kHessian);
+        value = function.evaluate(trial, trial_sample.log_metric, log_gradient_in(trial_sample.where.element),
+                                  Order::kHessian);
       }
     }
     if (!accepted || step_size < options.step_tolerance * edge_size) {
