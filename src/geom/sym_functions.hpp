@@ -70,7 +70,8 @@ class ExpFrechet {
   // G = Dexp(T)[u uᵀ] = V (Γ ∘ w wᵀ) Vᵀ with w = Vᵀu. Dexp(T) is self-adjoint for the Frobenius product, so the
   // derivative of uᵀ exp(T) u along any H is frobenius_dot(G, H): one G serves all directions of a gradient.
   // Likewise ⟨D²exp(T)[H1, H2], H3⟩ is symmetric in H1, H2, H3, so a Hessian needs only
-  // uᵀ D²exp(T)[Hi, Hj] u = frobenius_dot(second_derivative(Hi, outer(u)), Hj): D calls, not D(D+1)/2.
+  // uᵀ D²exp(T)[Hi, Hj] u = frobenius_dot(second_derivative(Hi, outer(u)), Hj): D calls, not D(D+1)/2, made
+  // at once by second_derivatives(H, outer(u)).
   SymMat<D> squared_length_gradient(const Vec<D>& u) const;
 
  private:
