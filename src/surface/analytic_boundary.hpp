@@ -19,9 +19,7 @@ struct AnalyticSurface {
   double radius = 0;
 
   static AnalyticSurface sphere(const Vec<D>& centre, double radius) { return {Kind::kSphere, centre, {}, radius}; }
-  static AnalyticSurface cylinder(const Vec<D>& axis_point, const Vec<D>& axis, double radius)
-    requires(D == 3)
-  {
+  static AnalyticSurface cylinder(const Vec<D>& axis_point, const Vec<D>& axis, double radius) requires(D == 3) {
     return {Kind::kCylinder, axis_point, axis * (1 / norm(axis)), radius};
   }
   static AnalyticSurface plane(const Vec<D>& point, const Vec<D>& normal) {

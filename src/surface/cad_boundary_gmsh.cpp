@@ -73,7 +73,8 @@ CadBoundary<D>::CadBoundary(const std::string& path, const Mesh<D>& mesh) : CadB
   std::map<int, Index> seen;
   for (Index f = 0; f < mesh.facet_count(); ++f) {
     const int ref = mesh.facet_ref(f);
-    if (seen[ref]++ % std::max<Index>(1, facet_counts[ref] / kRefSamples) == 0) samples[ref].push_back(mesh.vertex(mesh.facet(f)[0]));
+    if (seen[ref]++ % std::max<Index>(1, facet_counts[ref] / kRefSamples) == 0)
+      samples[ref].push_back(mesh.vertex(mesh.facet(f)[0]));
   }
   double x_min, y_min, z_min, x_max, y_max, z_max;
   call_gmsh([&] { gmsh::model::getBoundingBox(-1, -1, x_min, y_min, z_min, x_max, y_max, z_max); });
@@ -89,7 +90,8 @@ CadBoundary<D>::CadBoundary(const std::string& path, const Mesh<D>& mesh) : CadB
     for (std::size_t e = 0; e < entities.size(); ++e) {
       double farthest = 0;
       for (const Vec<D>& point : points)
-        farthest = std::max(farthest, call_gmsh([&] { return closest_on_entity<D>(D - 1, entities[e].tag, point).distance; }));
+        farthest =
+            std::max(farthest, call_gmsh([&] { return closest_on_entity<D>(D - 1, entities[e].tag, point).distance; }));
       if (farthest < best_distance) {
         best_distance = farthest;
         best = e;
@@ -162,7 +164,8 @@ Vec<D> CadBoundary<D>::project_on_intersection(const Vec<D>& x, int ref_a, int r
     };
     const std::vector<int> curves_a = curves_of(ref_a), curves_b = curves_of(ref_b);
     std::vector<int> shared;
-    std::set_intersection(curves_a.begin(), curves_a.end(), curves_b.begin(), curves_b.end(), std::back_inserter(shared));
+    std::set_intersection(curves_a.begin(), curves_a.end(), curves_b.begin(), curves_b.end(),
+                          std::back_inserter(shared));
     if (!shared.empty()) {
       BoundaryPoint<3> best;
       best.distance = std::numeric_limits<double>::infinity();

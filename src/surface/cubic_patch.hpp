@@ -46,7 +46,7 @@ template <int D>
 struct PatchJet {
   Vec<D> point;
   std::array<Vec<D>, D - 1> first;
-  std::array<Vec<D>, D * (D - 1) / 2> second;
+  std::array<Vec<D>, D*(D - 1) / 2> second;
 };
 
 template <int D>
@@ -93,7 +93,8 @@ Vec<D> evaluate(const CubicPatch<D>& patch, const PatchParameters<D>& parameters
 template <int D>
 Vec<D> edge_curve_midpoint(const CubicPatch<D>& patch, int edge) {
   const auto& ends = kPatchEdges<D>[edge];
-  return (patch.vertex(ends[0]) + patch.vertex(ends[1]) + 3.0 * (patch.edge_point(edge, 0) + patch.edge_point(edge, 1))) *
+  return (patch.vertex(ends[0]) + patch.vertex(ends[1]) +
+          3.0 * (patch.edge_point(edge, 0) + patch.edge_point(edge, 1))) *
          0.125;
 }
 

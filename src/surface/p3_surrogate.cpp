@@ -16,9 +16,6 @@ namespace {
 constexpr double kMinRidgeSine = 1e-6;
 // Patches a hinted search may walk through before it falls back to the tree.
 constexpr int kMaxWalk = 8;
-// A patch barycentric at most this small puts the closest point on the patch's side (clamping
-// makes those zeros exact up to the rounding of λ_0 = 1 − Σ).
-constexpr double kOnSide = 1e-12;
 
 template <int D>
 Vec<D> unit(const Vec<D>& v) {
@@ -84,7 +81,7 @@ void P3Surrogate<D>::build_patch(const Mesh<D>& mesh, Index f, TangentLength tan
 
 template <int D>
 std::optional<typename P3Surrogate<D>::Closest> P3Surrogate<D>::walk_from(Index patch, const Vec<D>& x,
-                                                                           const ProjectionQuery& query) const {
+                                                                          const ProjectionQuery& query) const {
   auto allowed = [&](Index p) { return !query.ref || refs_[p] == *query.ref; };
   if (!allowed(patch)) return std::nullopt;
   std::array<Index, kMaxWalk> visited{};
@@ -94,7 +91,7 @@ std::optional<typename P3Surrogate<D>::Closest> P3Surrogate<D>::walk_from(Index 
     const PatchClosestPoint<D> on_patch = closest_point_on_patch(patches_[patch], x);
     if (!best || on_patch.distance2 < best->on_patch.distance2) best = Closest{patch, on_patch};
     const auto lambda = on_patch.barycentrics();
-    const auto is_on_side = [](double l) { return l <= kOnSide; };
+    const auto is_on_side = [](double l) { return l <= kOnPatchSide; };
     const auto side_count = std::count_if(lambda.begin(), lambda.end(), is_on_side);
     if (side_count > 1) return std::nullopt;  // at a vertex: which patch is next is not a single choice
     bool local_minimum = true;
@@ -124,7 +121,8 @@ typename P3Surrogate<D>::Closest P3Surrogate<D>::closest(const Vec<D>& x, const 
   Closest best;
   best.on_patch.distance2 = std::numeric_limits<double>::infinity();
   tree_.nearest(x, [&](Index p, double best2) {
-    if ((query.ref && refs_[p] != *query.ref) || boxes_[p].distance2(x) >= best2) return std::numeric_limits<double>::infinity();
+    if ((query.ref && refs_[p] != *query.ref) || boxes_[p].distance2(x) >= best2)
+      return std::numeric_limits<double>::infinity();
     const PatchClosestPoint<D> on_patch = closest_point_on_patch(patches_[p], x);
     if (on_patch.distance2 < best.on_patch.distance2) best = {p, on_patch};
     return on_patch.distance2;

@@ -13,9 +13,6 @@ namespace {
 constexpr int kMaxIterations = 40;
 constexpr int kNewtonHalvings = 8, kGradientHalvings = 30;
 constexpr double kParameterTolerance = 1e-14;
-// A barycentric this small (clamping makes them exact zeros, up to the rounding of 1 − Σ p) puts
-// the point on that side.
-constexpr double kOnSide = 1e-14;
 
 template <int K>
 using Matrix = std::array<std::array<double, K>, K>;
@@ -49,8 +46,7 @@ std::array<double, K> clamp_to_domain(const std::array<double, K>& p) {
 
 // Solves the symmetric positive-definite K×K system A s = b; false when A is not positive definite.
 template <int K>
-bool solve_positive_definite(const Matrix<K>& a, const std::array<double, K>& b,
-                             std::array<double, K>& solution) {
+bool solve_positive_definite(const Matrix<K>& a, const std::array<double, K>& b, std::array<double, K>& solution) {
   if constexpr (K == 1) {
     if (!(a[0][0] > 0)) return false;
     solution[0] = b[0] / a[0][0];
@@ -66,7 +62,8 @@ bool solve_positive_definite(const Matrix<K>& a, const std::array<double, K>& b,
 }  // namespace
 
 template <int D>
-PatchClosestPoint<D> closest_point_on_patch(const CubicPatch<D>& patch, const Vec<D>& x, const PatchParameters<D>& start) {
+PatchClosestPoint<D> closest_point_on_patch(const CubicPatch<D>& patch, const Vec<D>& x,
+                                            const PatchParameters<D>& start) {
   constexpr int K = D - 1;
   using Parameters = PatchParameters<D>;
   Parameters p = clamp_to_domain<K>(start);
@@ -99,12 +96,11 @@ PatchClosestPoint<D> closest_point_on_patch(const CubicPatch<D>& patch, const Ve
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
     // f/2 = |S − x|²/2: gradient g_a = r·S_a, Hessian H_ab = S_a·S_b + r·S_ab (Gauss–Newton part G).
     const Vec<D> r = jet.point - x;
-    Parameters gradient{}, minus_gradient{};
+    Parameters descent{};  // −∇(f/2)
     Matrix<K> hessian{}, gauss_newton{};
     double gauss_newton_trace = 0;
     for (int a = 0; a < K; ++a) {
-      gradient[a] = dot(r, jet.first[a]);
-      minus_gradient[a] = -gradient[a];
+      descent[a] = -dot(r, jet.first[a]);
       for (int b = 0; b < K; ++b) {
         const int second = a + b;  // uu, uv, vv (tt in 2D) are second[0], [1], [2]
         gauss_newton[a][b] = dot(jet.first[a], jet.first[b]);
@@ -119,9 +115,9 @@ PatchClosestPoint<D> closest_point_on_patch(const CubicPatch<D>& patch, const Ve
     for (int i = 0; i < D; ++i) {
       const Parameters normal = barycentric_gradient<K>(i);
       const double lambda = i == 0 ? 1 - std::accumulate(p.begin(), p.end(), 0.0) : p[i - 1];
-      double outward = 0;
-      for (int a = 0; a < K; ++a) outward -= minus_gradient[a] * normal[a];
-      if (lambda <= kOnSide && outward > 0) {
+      double inward = 0;  // how fast λ_i grows along the descent
+      for (int a = 0; a < K; ++a) inward += descent[a] * normal[a];
+      if (lambda <= kOnPatchSide && inward < 0) {
         ++active_count;
         active_normal = normal;
       }
@@ -130,20 +126,21 @@ PatchClosestPoint<D> closest_point_on_patch(const CubicPatch<D>& patch, const Ve
     Parameters newton{};
     bool has_newton = false;
     if (active_count == 0) {
-      has_newton = solve_positive_definite<K>(hessian, minus_gradient, newton) ||
-                   solve_positive_definite<K>(gauss_newton, minus_gradient, newton);
+      has_newton = solve_positive_definite<K>(hessian, descent, newton) ||
+                   solve_positive_definite<K>(gauss_newton, descent, newton);
     } else if constexpr (K == 2) {
       const Parameters along{-active_normal[1], active_normal[0]};
       auto curvature = [&along](const Matrix<K>& m) {
-        return along[0] * (m[0][0] * along[0] + m[0][1] * along[1]) + along[1] * (m[1][0] * along[0] + m[1][1] * along[1]);
+        return along[0] * (m[0][0] * along[0] + m[0][1] * along[1]) +
+               along[1] * (m[1][0] * along[0] + m[1][1] * along[1]);
       };
-      const double slope = minus_gradient[0] * along[0] + minus_gradient[1] * along[1];
+      const double slope = descent[0] * along[0] + descent[1] * along[1];
       const double bend = curvature(hessian) > 0 ? curvature(hessian) : curvature(gauss_newton);
       has_newton = bend > 0;
       if (has_newton) newton = {slope / bend * along[0], slope / bend * along[1]};
     }
     // The gradient step is the fallback that always descends unless p is stationary on the domain.
-    Parameters steepest = minus_gradient;
+    Parameters steepest = descent;
     for (double& component : steepest) component /= std::max(gauss_newton_trace, 1e-300);
     if (!(has_newton && descend(newton, kNewtonHalvings)) && !descend(steepest, kGradientHalvings)) break;
     if (moved < kParameterTolerance) break;

@@ -50,7 +50,7 @@ std::array<Vec<D>, D - 1> tangent_basis(const Vec<D>& n) {
 // One fit in the frame of `normal`: slope terms x (and y), then the quadratic ones.
 template <int D>
 bool fit_once(const Vec<D>& point, std::span<const Vec<D>> neighbors, Vec<D>& normal) {
-  constexpr int K = D - 1;                   // tangent coordinates
+  constexpr int K = D - 1;                        // tangent coordinates
   constexpr int kUnknowns = K + K * (K + 1) / 2;  // slopes, then x², (xy, y²)
   if (static_cast<int>(neighbors.size()) < kUnknowns + 1) return false;
   const auto tangents = tangent_basis(normal);

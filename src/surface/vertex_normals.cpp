@@ -90,7 +90,8 @@ void fit_quadric_normals(const Mesh<D>& mesh, const SurfaceTopology<D>& topology
     for (Index side : sides) ++offsets[side + 1];
   for (std::size_t side = 0; side < side_count; ++side) offsets[side + 1] += offsets[side];
   std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
-  for (Index c = 0; c < static_cast<Index>(corners.size()); ++c) corners[fill[normals.corner_sides[c / D][c % D]]++] = c;
+  for (Index c = 0; c < static_cast<Index>(corners.size()); ++c)
+    corners[fill[normals.corner_sides[c / D][c % D]]++] = c;
 
   std::vector<Index> vertices;
   std::vector<Vec<D>> neighbors;
@@ -108,14 +109,16 @@ void fit_quadric_normals(const Mesh<D>& mesh, const SurfaceTopology<D>& topology
         const Index g = topology.neighbors[f][s];
         if (g == kNoIndex) continue;
         const int i = (s + 1) % D;  // a vertex of side s
-        if (normals.corner_sides[f][i] == normals.corner_sides[g][facet_local_vertex(mesh, g, mesh.facet(f)[i])]) add_facet_vertices(g);
+        if (normals.corner_sides[f][i] == normals.corner_sides[g][facet_local_vertex(mesh, g, mesh.facet(f)[i])])
+          add_facet_vertices(g);
       }
     }
     std::sort(vertices.begin(), vertices.end());
     vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
     neighbors.clear();
     for (Index v : vertices) neighbors.push_back(mesh.vertex(v));
-    normals.normals[side] = quadric_fitted_normal<D>(mesh.vertex(vertex), neighbors, normals.normals[side], kMaxFitTurn);
+    normals.normals[side] =
+        quadric_fitted_normal<D>(mesh.vertex(vertex), neighbors, normals.normals[side], kMaxFitTurn);
   }
 }
 
@@ -166,7 +169,9 @@ VertexNormals<D> compute_vertex_normals(const Mesh<D>& mesh, const SurfaceTopolo
   return result;
 }
 
-template VertexNormals<2> compute_vertex_normals(const Mesh<2>&, const SurfaceTopology<2>&, const VertexNormalOptions<2>&);
-template VertexNormals<3> compute_vertex_normals(const Mesh<3>&, const SurfaceTopology<3>&, const VertexNormalOptions<3>&);
+template VertexNormals<2> compute_vertex_normals(const Mesh<2>&, const SurfaceTopology<2>&,
+                                                 const VertexNormalOptions<2>&);
+template VertexNormals<3> compute_vertex_normals(const Mesh<3>&, const SurfaceTopology<3>&,
+                                                 const VertexNormalOptions<3>&);
 
 }  // namespace hocav

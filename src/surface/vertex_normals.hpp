@@ -48,7 +48,7 @@ struct VertexNormalOptions {
 
 template <int D>
 struct VertexNormals {
-  std::vector<Vec<D>> normals;                    // unit, outward like the facets; one per side
+  std::vector<Vec<D>> normals;                     // unit, outward like the facets; one per side
   std::vector<std::array<Index, D>> corner_sides;  // per facet and local vertex: its side's normal
 
   const Vec<D>& at(Index f, int local_vertex) const { return normals[corner_sides[f][local_vertex]]; }

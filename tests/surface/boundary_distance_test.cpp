@@ -31,7 +31,8 @@ TEST(SurfaceBoundaryDistance, SphereFacetsSampledInside) {
   sphere.add(1, AnalyticSurface<3>::sphere({}, 1.0));
   // The deepest point of a flat facet is near its centre, deeper than any edge midpoint.
   double deepest_midpoint = 0;
-  for (const auto& facet : mesh.facets()) deepest_midpoint = std::max(deepest_midpoint, 1 - norm(0.5 * (mesh.vertex(facet[0]) + mesh.vertex(facet[1]))));
+  for (const auto& facet : mesh.facets())
+    deepest_midpoint = std::max(deepest_midpoint, 1 - norm(0.5 * (mesh.vertex(facet[0]) + mesh.vertex(facet[1]))));
   EXPECT_GT(max_boundary_distance(mesh, sphere, 12), deepest_midpoint);
 }
 

@@ -15,7 +15,9 @@
 namespace hocav {
 namespace {
 
-std::string temporary_path(const std::string& name) { return (std::filesystem::path(::testing::TempDir()) / name).string(); }
+std::string temporary_path(const std::string& name) {
+  return (std::filesystem::path(::testing::TempDir()) / name).string();
+}
 
 // OpenCASCADE's projections onto its spheres are accurate to about this.
 constexpr double kCadTolerance = 1e-9;

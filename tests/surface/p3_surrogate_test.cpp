@@ -79,8 +79,10 @@ std::array<Vec<D>, 4> edge_curve(const Mesh<D>& mesh, const P3Surrogate<D>& surr
   for (int e = 0; e < CubicPatch<D>::kEdges; ++e) {
     const auto& ends = kPatchEdges<D>[e];
     const Index first = mesh.facet(f)[ends[0]], second = mesh.facet(f)[ends[1]];
-    if (first == a && second == b) return {patch.vertex(ends[0]), patch.edge_point(e, 0), patch.edge_point(e, 1), patch.vertex(ends[1])};
-    if (first == b && second == a) return {patch.vertex(ends[1]), patch.edge_point(e, 1), patch.edge_point(e, 0), patch.vertex(ends[0])};
+    if (first == a && second == b)
+      return {patch.vertex(ends[0]), patch.edge_point(e, 0), patch.edge_point(e, 1), patch.vertex(ends[1])};
+    if (first == b && second == a)
+      return {patch.vertex(ends[1]), patch.edge_point(e, 1), patch.edge_point(e, 0), patch.vertex(ends[0])};
   }
   ADD_FAILURE() << "facet " << f << " has no edge " << a << "-" << b;
   return {};
@@ -100,7 +102,8 @@ void expect_no_cracks(const Mesh<3>& mesh, const P3Surrogate<3>& surrogate) {
       const int local_edge = (side + 1) % 3;  // kPatchEdges: edge e joins local vertices e and e + 1
       for (double s : {0.1, 0.5, 0.9}) {
         const double w = 1 - s;
-        const Vec3 bezier = w * w * w * curve[0] + 3 * w * w * s * curve[1] + 3 * w * s * s * curve[2] + s * s * s * curve[3];
+        const Vec3 bezier =
+            w * w * w * curve[0] + 3 * w * w * s * curve[1] + 3 * w * s * s * curve[2] + s * s * s * curve[3];
         EXPECT_LT(norm(evaluate(surrogate.patch(f), patch_edge_parameters<3>(local_edge, s)) - bezier), 1e-15);
       }
       ++shared;
@@ -158,7 +161,8 @@ TEST(SurfaceSurrogate, CylinderRimsAreCurvedRidges) {
       for (const Vec3& point : surrogate.patch(f).control) EXPECT_EQ(point[2], z) << "cap facet " << f;
     }
     EXPECT_LT(rim_midpoint_error(mesh, surrogate), 1e-9);  // exact up to the fitted side normals
-    third_error[refinement] = rim_midpoint_error(mesh, P3Surrogate<3>(mesh, {.tangent_length = TangentLength::kProjectedThird}));
+    third_error[refinement] =
+        rim_midpoint_error(mesh, P3Surrogate<3>(mesh, {.tangent_length = TangentLength::kProjectedThird}));
   }
   std::printf("cylinder rim edge midpoints with thirds: distance to the circle %.3e (h) %.3e (h/2), order %.2f\n",
               third_error[0], third_error[1], std::log2(third_error[0] / third_error[1]));
@@ -183,7 +187,8 @@ double max_distance_to_facets(const Mesh<D>& mesh, const P3Surrogate<D>& surroga
         parameters[0] = double(i) / n;
         if constexpr (D == 3) parameters[1] = double(j) / n;
         Vec<D> linear = mesh.vertex(mesh.facet(f)[0]);
-        for (int k = 1; k < D; ++k) linear += parameters[k - 1] * (mesh.vertex(mesh.facet(f)[k]) - mesh.vertex(mesh.facet(f)[0]));
+        for (int k = 1; k < D; ++k)
+          linear += parameters[k - 1] * (mesh.vertex(mesh.facet(f)[k]) - mesh.vertex(mesh.facet(f)[0]));
         worst = std::max(worst, norm(evaluate(surrogate.patch(f), parameters) - linear));
       }
   return worst;
@@ -236,7 +241,8 @@ Convergence sphere_convergence(int coarse_levels, double jitter, const Surrogate
   Convergence result;
   for (int level : {coarse_levels, coarse_levels + 1}) {
     const Mesh<3> mesh = icosphere(level, 1.0, jitter);
-    (level == coarse_levels ? result.coarse : result.fine) = max_distance_to_sphere<3>(P3Surrogate<3>(mesh, options), 1.0, 12);
+    (level == coarse_levels ? result.coarse : result.fine) =
+        max_distance_to_sphere<3>(P3Surrogate<3>(mesh, options), 1.0, 12);
   }
   return result;
 }
@@ -260,11 +266,11 @@ TEST(SurfaceSurrogate, SphereConvergence) {
     SurrogateOptions<3> options;
     std::array<double, 2> min_order;  // regular, jittered
   };
-  for (const Variant& variant : {Variant{"angle", {.normals = {.quadric_fit = false}}, {2.3, 1.4}},
-                                 Variant{"area", {.normals = {.weights = NormalWeights::kArea, .quadric_fit = false}}, {2.3, 1.3}},
-                                 Variant{"max", {.normals = {.weights = NormalWeights::kMax, .quadric_fit = false}}, {3.7, 3.2}},
-                                 Variant{"quadric", {}, {3.5, 3.2}},
-                                 Variant{"analytic", {.normals = {.normal_source = &sphere}}, {3.7, 3.2}}})
+  for (const Variant& variant :
+       {Variant{"angle", {.normals = {.quadric_fit = false}}, {2.3, 1.4}},
+        Variant{"area", {.normals = {.weights = NormalWeights::kArea, .quadric_fit = false}}, {2.3, 1.3}},
+        Variant{"max", {.normals = {.weights = NormalWeights::kMax, .quadric_fit = false}}, {3.7, 3.2}},
+        Variant{"quadric", {}, {3.5, 3.2}}, Variant{"analytic", {.normals = {.normal_source = &sphere}}, {3.7, 3.2}}})
     for (int jittered : {0, 1}) {
       const Convergence c = sphere_convergence(2, 0.2 * jittered, variant.options);
       std::printf("sphere%s, %-8s normals: max distance %.3e (h) %.3e (h/2), order %.2f\n", jittered ? " jittered" : "",
@@ -291,9 +297,10 @@ TEST(SurfaceSurrogate, EllipsoidConvergence) {
     SurrogateOptions<3> options;
     double min_order;
   };
-  for (const Variant& variant : {Variant{"angle", {.normals = {.quadric_fit = false}}, 1.5},
-                                 Variant{"max", {.normals = {.weights = NormalWeights::kMax, .quadric_fit = false}}, 1.5},
-                                 Variant{"quadric", {}, 2.8}}) {
+  for (const Variant& variant :
+       {Variant{"angle", {.normals = {.quadric_fit = false}}, 1.5},
+        Variant{"max", {.normals = {.weights = NormalWeights::kMax, .quadric_fit = false}}, 1.5},
+        Variant{"quadric", {}, 2.8}}) {
     std::array<double, 2> error{};
     for (int level : {3, 4}) {
       Mesh<3> mesh = icosphere(level, 1.0, 0.2);
@@ -302,11 +309,12 @@ TEST(SurfaceSurrogate, EllipsoidConvergence) {
       const P3Surrogate<3> surrogate(mesh, variant.options);
       for (Index p = 0; p < surrogate.patch_count(); ++p)
         for (int i = 0; i <= 6; ++i)
-          for (int j = 0; j <= 6 - i; ++j) error[level - 3] = std::max(error[level - 3], distance(evaluate(surrogate.patch(p), {i / 6.0, j / 6.0})));
+          for (int j = 0; j <= 6 - i; ++j)
+            error[level - 3] = std::max(error[level - 3], distance(evaluate(surrogate.patch(p), {i / 6.0, j / 6.0})));
     }
     const double order = std::log2(error[0] / error[1]);
-    std::printf("jittered ellipsoid, %-8s normals: max distance %.3e (h) %.3e (h/2), order %.2f\n", variant.name, error[0],
-                error[1], order);
+    std::printf("jittered ellipsoid, %-8s normals: max distance %.3e (h) %.3e (h/2), order %.2f\n", variant.name,
+                error[0], error[1], order);
     EXPECT_GT(order, variant.min_order) << variant.name;
   }
 }
@@ -318,13 +326,15 @@ TEST(SurfaceSurrogate, CircleConvergence) {
     SurrogateOptions<2> options;
     double min_order;
   };
-  for (const Variant& variant : {Variant{"equal", {.normals = {.quadric_fit = false}}, 1.3},
-                                 Variant{"quadric", {}, 2.7},
-                                 Variant{"analytic", {.normals = {.normal_source = &circle}}, 5}}) {
-    const double coarse = max_distance_to_sphere<2>(P3Surrogate<2>(circle_polygon(16, 1.0, 0.2), variant.options), 1.0, 50);
-    const double fine = max_distance_to_sphere<2>(P3Surrogate<2>(circle_polygon(32, 1.0, 0.2), variant.options), 1.0, 50);
-    std::printf("jittered circle, %-8s normals: max distance %.3e (h) %.3e (h/2), order %.2f\n", variant.name, coarse, fine,
-                std::log2(coarse / fine));
+  for (const Variant& variant :
+       {Variant{"equal", {.normals = {.quadric_fit = false}}, 1.3}, Variant{"quadric", {}, 2.7},
+        Variant{"analytic", {.normals = {.normal_source = &circle}}, 5}}) {
+    const double coarse =
+        max_distance_to_sphere<2>(P3Surrogate<2>(circle_polygon(16, 1.0, 0.2), variant.options), 1.0, 50);
+    const double fine =
+        max_distance_to_sphere<2>(P3Surrogate<2>(circle_polygon(32, 1.0, 0.2), variant.options), 1.0, 50);
+    std::printf("jittered circle, %-8s normals: max distance %.3e (h) %.3e (h/2), order %.2f\n", variant.name, coarse,
+                fine, std::log2(coarse / fine));
     EXPECT_GT(std::log2(coarse / fine), variant.min_order) << variant.name;
   }
 }

@@ -68,7 +68,8 @@ TEST(SurfaceProjection, ClosestPointOnTheSphereSurrogate) {
   const P3Surrogate<3> surrogate(mesh);
   for (const Vec3& x : points_near_unit_sphere(40, 0.3, 5)) expect_closest(surrogate, x, surrogate.project(x));
   // Points far from the surface, and the centre, are still projected to the closest patch.
-  for (const Vec3& x : {Vec3{{0, 0, 0}}, Vec3{{3, -2, 1}}, Vec3{{0.1, 0.2, -0.1}}}) expect_closest(surrogate, x, surrogate.project(x));
+  for (const Vec3& x : {Vec3{{0, 0, 0}}, Vec3{{3, -2, 1}}, Vec3{{0.1, 0.2, -0.1}}})
+    expect_closest(surrogate, x, surrogate.project(x));
 }
 
 TEST(SurfaceProjection, ClosestPointOnACreasedSurrogate) {
