@@ -131,15 +131,21 @@ class Cli : public ::testing::Test {
   std::string stats_json(const std::string& arguments, const std::string& expression) const {
     Outcome result = run_ok("stats --json " + arguments);
     write("stats.json", result.out);
+    std::string value = json_value("stats.json", expression);
+    fs::remove(path("stats.json"));
+    return value;
+  }
+
+  // Evaluates a Python expression over the JSON document `d` in file `name` of the scratch folder.
+  std::string json_value(const std::string& name, const std::string& expression) const {
     std::string command = "/usr/bin/python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print((" + expression +
-                          "))' '" + path("stats.json").string() + "'";
+                          "))' '" + path(name).string() + "'";
     std::string value;
     if (FILE* pipe = popen(command.c_str(), "r")) {
       char buffer[4096];
       while (fgets(buffer, sizeof buffer, pipe)) value += buffer;
-      EXPECT_EQ(pclose(pipe), 0) << "not valid JSON or no " << expression << ":\n" << result.out;
+      EXPECT_EQ(pclose(pipe), 0) << "not valid JSON or no " << expression << ":\n" << read(name);
     }
-    fs::remove(path("stats.json"));
     while (!value.empty() && value.back() == '\n') value.pop_back();
     return value;
   }

@@ -1,0 +1,63 @@
+// End-to-end tests of `hocav curve`: generated cases with a shear metric, curved with the P3
+// surrogate of their boundary; every element certified, gains positive, the output reads back.
+#include <gtest/gtest.h>
+
+#include "cli_test_support.hpp"
+
+namespace hocav::cli_test {
+namespace {
+
+class CurveCli : public Cli {
+ protected:
+  double report_value(const std::string& expression) const { return std::stod(json_value("report.json", expression)); }
+
+  // Curves MESH in METRIC with the P3 surrogate and checks what every run must give.
+  void curve_and_check(const std::string& mesh, const std::string& metric, const std::string& extra = "") {
+    run_ok("curve " + mesh + " --metric " + metric + " --surface p3 -o curved.meshb --report report.json -q " + extra);
+    EXPECT_EQ(report_value("d[\"cavities\"][\"tried\"] - d[\"cavities\"][\"accepted\"]"), 0);
+    EXPECT_GT(report_value("d[\"normalized_jacobian\"][\"min\"]"), 0.01);  // the default floor, on every element
+    EXPECT_EQ(report_value("d[\"normalized_jacobian\"][\"invalid\"]"), 0);
+    EXPECT_GT(report_value("d[\"average_gain\"]"), 0);
+    EXPECT_GT(report_value("d[\"max_gain\"]"), 0.02);
+    EXPECT_GT(report_value("d[\"cavities\"][\"boundary_nodes_applied\"]"), 0);
+    // A proposal stays when only part of it fitted (the correction pulled it back) or when its edge
+    // lies on no volume vertex's ball: a few, never many.
+    EXPECT_LE(report_value("d[\"boundary_proposals_left\"]"),
+              0.01 * report_value("d[\"cavities\"][\"boundary_nodes_applied\"]"));
+    // The output reads back as a consistent P2 mesh.
+    EXPECT_EQ(stats_json("curved.meshb", "d[\"consistency\"][\"consistent\"], d[\"order\"]"), "(True, 2)");
+  }
+};
+
+TEST_F(CurveCli, AnnulusInACircularShearLayer) {
+  run_ok("generate annulus --h 0.05 -o annulus.meshb");
+  run_ok("metric annulus.meshb --analytic shear-circle --radius 0.75 --width 0.05 --h-min 0.005 --h-max 0.05 -o annulus.solb");
+  curve_and_check("annulus.meshb", "annulus.solb");
+}
+
+TEST_F(CurveCli, SphereShellInASphericalShearLayerOnTwoThreads) {
+  run_ok("generate sphere-shell --h 0.2 -o shell.meshb");
+  run_ok("metric shell.meshb --analytic shear-sphere --radius 0.75 --width 0.1 --h-min 0.02 --h-max 0.2 -o shell.solb");
+  curve_and_check("shell.meshb", "shell.solb", "--threads 2");
+  // The thread count changes nothing.
+  run_ok("curve shell.meshb --metric shell.solb -o one-thread.meshb -q --threads 1");
+  EXPECT_EQ(read("curved.meshb"), read("one-thread.meshb"));
+}
+
+TEST_F(CurveCli, BadInputGivesOneLineAndNoOutput) {
+  run_ok("generate square --h 0.25 -o square.mesh");
+  run_ok("metric square.mesh --analytic uniform --h 0.25 -o square.sol");
+  run_ok("generate square --h 0.5 -o coarse.mesh");
+  expect_failure("curve square.mesh --metric missing.sol -o out.meshb", "missing.sol");
+  expect_failure("curve coarse.mesh --metric square.sol -o out.meshb", "square.sol");  // wrong row count
+  expect_failure("curve square.mesh --metric square.sol --surface bezier -o out.meshb", "bezier");
+  expect_failure("curve square.mesh --metric square.sol --surface cad:missing.step -o out.meshb", "missing.step");
+  EXPECT_EQ(files(), (std::set<std::string>{"coarse.mesh", "square.mesh", "square.sol"}));
+  Outcome help = run_ok("curve --help");
+  for (const char* option : {"--metric", "--surface", "--jacobian-floor", "--passes", "--threads", "--quadrature",
+                             "--report", "--vtu"})
+    EXPECT_NE(help.out.find(option), std::string::npos) << option;
+}
+
+}  // namespace
+}  // namespace hocav::cli_test
