@@ -29,22 +29,13 @@ struct CurveOptions {
   bool quiet = false;
 };
 
-template <int D>
-std::vector<SymMat<D>> metrics_of(const SolutionField& rows) {
-  std::vector<SymMat<D>> metrics(rows.values.size() / SymMat<D>::kEntryCount);
-  for (std::size_t v = 0; v < metrics.size(); ++v)
-    for (int c = 0; c < SymMat<D>::kEntryCount; ++c) metrics[v].entries[c] = rows.values[v * SymMat<D>::kEntryCount + c];
-  return metrics;
-}
-
 // The metric at every output node (vertices, then P2 nodes from the back mesh), for the .vtu.
 template <int D>
 SolutionField metric_at_nodes(const Mesh<D>& mesh, const MetricField<D>& field) {
-  SolutionField rows{SolutionKind::kSymmetricMatrix, D, {}};
-  auto append = [&](const SymMat<D>& metric) { rows.values.insert(rows.values.end(), metric.entries.begin(), metric.entries.end()); };
-  for (Index v = 0; v < mesh.vertex_count(); ++v) append(exp_sym(field.vertex_log_metric(v)));
-  for (Index e = 0; e < mesh.edge_count(); ++e) append(exp_sym(field.log_metric_at(mesh.edge_node(e))));
-  return rows;
+  std::vector<SymMat<D>> metrics;
+  for (Index v = 0; v < mesh.vertex_count(); ++v) metrics.push_back(exp_sym(field.vertex_log_metric(v)));
+  for (Index e = 0; e < mesh.edge_count(); ++e) metrics.push_back(exp_sym(field.log_metric_at(mesh.edge_node(e))));
+  return rows_of_metrics(metrics);
 }
 
 // The geometry boundary edges are curved onto: none, the P3 surrogate of the input boundary, or a
@@ -67,7 +58,7 @@ void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& optio
     boundary_nodes.emplace(*proposals);
   }
   const SolutionField rows = read_metric_for_mesh(options.metric, file, false);
-  const MetricField<D> field(mesh, metrics_of<D>(rows));
+  const MetricField<D> field(mesh, metrics_of_rows<D>(rows));
   const Index points_before = mesh.vertex_count();
 
   ReinsertionOptions reinsertion;
