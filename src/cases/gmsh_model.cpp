@@ -11,10 +11,11 @@
 
 #include "mesh/measure.hpp"
 
-// gmsh 4.8.4 leaks a few small blocks in its surface mesher (meshGFace) for every meshed surface;
-// LeakSanitizer is told to ignore allocations made inside libgmsh, and still reports hocav's own.
+// gmsh 4.8.4 leaks a few small blocks in its surface mesher (meshGFace) for every meshed surface,
+// and OpenCASCADE's STEP writer keeps never-freed statics (its libTK* libraries); LeakSanitizer is
+// told to ignore allocations made inside those, and still reports hocav's own.
 #if defined(__SANITIZE_ADDRESS__)
-extern "C" const char* __lsan_default_suppressions() { return "leak:libgmsh.so\n"; }
+extern "C" const char* __lsan_default_suppressions() { return "leak:libgmsh.so\nleak:libTK\n"; }
 #endif
 
 namespace hocav {
