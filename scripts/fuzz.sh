@@ -29,4 +29,4 @@ seed 3 "$work/metric.sol"
 
 build/fuzz/fuzz/file_readers_fuzz "$corpus" -max_total_time="$seconds" -max_len=65536 -rss_limit_mb=2048 \
   -print_final_stats=1 2>"$work/fuzz.log" || { tail -n 60 "$work/fuzz.log"; exit 1; }
-grep -E "stat::number_of_executed_units|Done" "$work/fuzz.log" | sed 's/^/fuzz: /'
+grep -a -E "stat::number_of_executed_units|Done" "$work/fuzz.log" | sed "s/^/fuzz: /" || true
