@@ -7,6 +7,7 @@
 #include "base/error.hpp"
 #include "base/thread_pool.hpp"
 #include "mesh/ball_and_shell.hpp"
+#include "mesh/boundary_vertices.hpp"
 #include "mesh/vertex_graph.hpp"
 
 namespace hocav {
@@ -19,9 +20,7 @@ constexpr std::size_t kCavitiesPerRound = 512;
 
 template <int D>
 std::vector<Index> volume_vertices(const Mesh<D>& mesh) {
-  std::vector<bool> on_boundary(static_cast<std::size_t>(mesh.vertex_count()), false);
-  for (const auto& facet : mesh.facets())
-    for (Index v : facet) on_boundary[v] = true;
+  const std::vector<bool> on_boundary = boundary_vertex_flags(mesh);
   std::vector<Index> vertices;
   for (Index v = 0; v < mesh.vertex_count(); ++v)
     if (!on_boundary[v] && mesh.vertex_element(v) != kNoIndex) vertices.push_back(v);

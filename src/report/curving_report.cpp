@@ -7,6 +7,7 @@
 
 #include "curve/edge_optimizer.hpp"
 #include "geom/sym_eigen.hpp"
+#include "mesh/boundary_vertices.hpp"
 #include "report/json_writer.hpp"
 
 namespace hocav {
@@ -35,9 +36,7 @@ CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& fie
   report.normalized_jacobian = summary.min_normalized_jacobian;
   report.scaled_jacobian = summary.scaled_jacobian;
 
-  std::vector<bool> on_boundary(static_cast<std::size_t>(mesh.vertex_count()), false);
-  for (const auto& facet : mesh.facets())
-    for (Index v : facet) on_boundary[v] = true;
+  const std::vector<bool> on_boundary = boundary_vertex_flags(mesh);
   double gain_sum = 0;
   Index gains = 0;
   for (Index e = 0; e < mesh.edge_count(); ++e) {
