@@ -19,6 +19,9 @@ CaseValues cube_for_target(double target) {
   return {{"h", 1 / (cells - 0.5)}};
 }
 
+CaseValues tetrahedra_for_target(double target) { return {{"target-tets", target}}; }
+CaseValues triangles_for_target(double target) { return {{"target-triangles", target}}; }
+
 // gmsh's sphere shell (radii 0.5, 1) gave 137,062 tetrahedra at h = 0.05; the count goes as h⁻³.
 CaseValues sphere_shell_for_target(double target) { return {{"h", 0.05 * std::cbrt(137062 / target)}}; }
 
@@ -27,10 +30,20 @@ constexpr double kShellNormalSize = 0.01, kShellTangentialSize = 0.1, kShellGrad
 
 std::vector<BenchCase> make_cases() {
   return {
+      {"cubed-shell", "cubed-shell", tetrahedra_for_target, BenchMetric::kSurfaceGraded, "p3", 5e7,
+       "structured isotropic sphere shell, surface metric 0.01/0.1 graded by 1.5 (the paper's Meshes 1)"},
+      {"cubed-shell-bl-inner", "cubed-shell-bl-inner", tetrahedra_for_target, BenchMetric::kImplied, "p3", 5e7,
+       "sphere shell with a boundary layer on the inner sphere, in its implied metric"},
+      {"cubed-shell-bl-both", "cubed-shell-bl-both", tetrahedra_for_target, BenchMetric::kImplied, "p3", 5e7,
+       "sphere shell with boundary layers on both spheres meeting inside, in its implied metric"},
       {"cube-shear", "cube", cube_for_target, BenchMetric::kShear, "p3", 5e7,
        "structured unit cube in the shear-sphere layer (radius 0.75 around a corner, anisotropy 100)"},
-      {"sphere-shell", "sphere-shell", sphere_shell_for_target, BenchMetric::kSurfaceGraded, "p3", 5e6,
-       "gmsh's isotropic sphere shell, surface metric 0.01/0.1 graded by 1.5 (the demo)"},
+      {"sphere-shell", "sphere-shell", sphere_shell_for_target, BenchMetric::kSurfaceGraded, "p3", 1e6,
+       "gmsh's unstructured isotropic sphere shell, surface metric 0.01/0.1 graded by 1.5 (the demo)"},
+      {"annulus-shear", "polar-annulus", triangles_for_target, BenchMetric::kShear, "p3", 5e7,
+       "2D: structured annulus in the shear-circle layer (the paper's Fig. 1 field)"},
+      {"annulus-bl-inner", "polar-annulus-bl-inner", triangles_for_target, BenchMetric::kImplied, "p3", 5e7,
+       "2D: annulus with a boundary layer on the inner circle, in its implied metric"},
   };
 }
 

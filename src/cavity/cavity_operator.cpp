@@ -62,6 +62,7 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
   new_inner_edges_.clear();
   recreated_ids_.clear();
   start_nodes_.clear();
+  boundary_edge_keys_.clear();
   boundary_edge_ids_.clear();
   removed_edges_.clear();
   if (cavity_.empty()) return CavityStatus::kNotStarShaped;
@@ -176,40 +177,66 @@ CavityStatus CavityOperator<D>::plan_edges(const Mesh<D>& mesh) {
       for (int j = 0; j < i; ++j) boundary_edge_keys_.push_back(Mesh<D>::edge_key(face.vertices[i], face.vertices[j]));
   std::sort(boundary_edge_keys_.begin(), boundary_edge_keys_.end());
   boundary_edge_keys_.erase(std::unique(boundary_edge_keys_.begin(), boundary_edge_keys_.end()), boundary_edge_keys_.end());
-  auto on_boundary = [&](Index a, Index b) {
-    return std::binary_search(boundary_edge_keys_.begin(), boundary_edge_keys_.end(), Mesh<D>::edge_key(a, b));
-  };
-  for (std::uint64_t key : boundary_edge_keys_)
-    boundary_edge_ids_.push_back(mesh.find_edge(static_cast<Index>(key >> 32), static_cast<Index>(key & 0xffffffffu)));
 
+  // The cavity's edges, from its elements' edge ids (no hash look-up): those on the boundary of the
+  // hole are kept, the others removed.
   scratch_.clear();
   for (Index k : cavity_)
     for (Index e : mesh.element_edges(k)) scratch_.push_back(e);
   std::sort(scratch_.begin(), scratch_.end());
   scratch_.erase(std::unique(scratch_.begin(), scratch_.end()), scratch_.end());
-  for (Index e : scratch_)
-    if (!on_boundary(mesh.edge_vertices(e)[0], mesh.edge_vertices(e)[1])) removed_edges_.push_back(e);
+  boundary_edge_ids_.assign(boundary_edge_keys_.size(), kNoIndex);
+  for (Index e : scratch_) {
+    const std::size_t slot = boundary_edge_slot(mesh.edge_vertices(e)[0], mesh.edge_vertices(e)[1]);
+    if (slot < boundary_edge_keys_.size()) boundary_edge_ids_[slot] = e;
+    else removed_edges_.push_back(e);
+  }
 
   for (std::size_t f : starred_faces_)
     for (Index v : boundary_faces_[f].vertices) {
-      if (on_boundary(vertex_, v)) continue;
+      if (boundary_edge_slot(vertex_, v) < boundary_edge_keys_.size()) continue;
       std::array<Index, 2> edge{vertex_, v};
       if (std::find(new_inner_edges_.begin(), new_inner_edges_.end(), edge) != new_inner_edges_.end()) continue;
       new_inner_edges_.push_back(edge);
       // An inner edge the star recreates (a reinsertion) keeps its id: no edge-table churn. One
       // that exists outside the cavity would be created twice: the star folds over the mesh.
-      Index old = mesh.find_edge(vertex_, v), kept = kNoIndex;
-      if (old != kNoIndex) {
-        auto removed = std::find(removed_edges_.begin(), removed_edges_.end(), old);
-        if (removed == removed_edges_.end()) return CavityStatus::kNotStarShaped;
+      auto removed = std::find_if(removed_edges_.begin(), removed_edges_.end(), [&](Index e) {
+        return Mesh<D>::edge_key(mesh.edge_vertices(e)[0], mesh.edge_vertices(e)[1]) == Mesh<D>::edge_key(vertex_, v);
+      });
+      Index kept = kNoIndex;
+      if (removed != removed_edges_.end()) {
+        kept = *removed;
         removed_edges_.erase(removed);
-        kept = old;
+      } else if (mesh.find_edge(vertex_, v) != kNoIndex) {
+        return CavityStatus::kNotStarShaped;
       }
       recreated_ids_.push_back(kept);
-      start_nodes_.push_back(old != kNoIndex && mesh.is_p2() ? mesh.edge_node(old)
-                                                             : 0.5 * (mesh.vertex(vertex_) + mesh.vertex(v)));
+      start_nodes_.push_back(kept != kNoIndex && mesh.is_p2() ? mesh.edge_node(kept)
+                                                              : 0.5 * (mesh.vertex(vertex_) + mesh.vertex(v)));
     }
   return CavityStatus::kAccepted;
+}
+
+template <int D>
+std::size_t CavityOperator<D>::boundary_edge_slot(Index a, Index b) const {
+  const std::uint64_t key = Mesh<D>::edge_key(a, b);
+  auto found = std::lower_bound(boundary_edge_keys_.begin(), boundary_edge_keys_.end(), key);
+  return found != boundary_edge_keys_.end() && *found == key ? static_cast<std::size_t>(found - boundary_edge_keys_.begin())
+                                                            : boundary_edge_keys_.size();
+}
+
+template <int D>
+Index CavityOperator<D>::boundary_edge(Index a, Index b) const {
+  const std::size_t slot = boundary_edge_slot(a, b);
+  return slot < boundary_edge_ids_.size() ? boundary_edge_ids_[slot] : kNoIndex;
+}
+
+template <int D>
+Index CavityOperator<D>::planned_edge(Index a, Index b) const {
+  if (Index e = boundary_edge(a, b); e != kNoIndex) return e;
+  for (std::size_t i = 0; i < new_inner_edges_.size(); ++i)
+    if (Mesh<D>::edge_key(new_inner_edges_[i][0], new_inner_edges_[i][1]) == Mesh<D>::edge_key(a, b)) return inner_edge_ids_[i];
+  return kNoIndex;
 }
 
 template <int D>
@@ -218,12 +245,15 @@ void CavityOperator<D>::commit(Mesh<D>& mesh, std::span<const Point> inner_edge_
   const bool with_edges = mesh.has_edges() && mesh.edge_count() > 0;
   if (with_edges) {
     for (Index e : removed_edges_) mesh.remove_edge(e);
+    inner_edge_ids_.clear();
     for (std::size_t i = 0; i < new_inner_edges_.size(); ++i) {
       const Point& node = i < inner_edge_nodes.size() ? inner_edge_nodes[i] : start_nodes_[i];
-      if (recreated_ids_[i] == kNoIndex)
-        mesh.add_edge(new_inner_edges_[i][0], new_inner_edges_[i][1], node);
-      else if (mesh.is_p2())
-        mesh.edge_node(recreated_ids_[i]) = node;
+      if (recreated_ids_[i] == kNoIndex) {
+        inner_edge_ids_.push_back(mesh.add_edge(new_inner_edges_[i][0], new_inner_edges_[i][1], node));
+      } else {
+        inner_edge_ids_.push_back(recreated_ids_[i]);
+        if (mesh.is_p2()) mesh.edge_node(recreated_ids_[i]) = node;
+      }
     }
     for (const auto& [edge, node] : changed_boundary_nodes) mesh.edge_node(edge) = node;
   }
@@ -262,8 +292,7 @@ void CavityOperator<D>::commit(Mesh<D>& mesh, std::span<const Point> inner_edge_
   if (with_edges)
     for (std::size_t n = 0; n < new_elements_.size(); ++n)
       for (int e = 0; e < Mesh<D>::kElementEdges; ++e)
-        mesh.set_element_edge(slot[n], e,
-                              mesh.find_edge(new_elements_[n][edge_vertices<D>(e)[0]], new_elements_[n][edge_vertices<D>(e)[1]]));
+        mesh.set_element_edge(slot[n], e, planned_edge(new_elements_[n][edge_vertices<D>(e)[0]], new_elements_[n][edge_vertices<D>(e)[1]]));
 
   // Cavity slots left over: fill each from the end of the array, highest first.
   for (std::size_t i = cavity_.size(); i-- > new_elements_.size();) {

@@ -52,8 +52,10 @@ class CavityOperator {
   // existed before (reinsertion) or the straight midpoint: the start of its curving.
   std::span<const std::array<Index, 2>> new_inner_edges() const { return new_inner_edges_; }
   std::span<const Point> new_inner_edge_start_nodes() const { return start_nodes_; }
-  // Edges on the cavity's boundary, kept by the commit (P2: their nodes may be replaced).
+  // Edges on the cavity's boundary, kept by the commit (P2: their nodes may be replaced), and the
+  // id of one of them by its vertices (kNoIndex for an edge not on the cavity's boundary).
   std::span<const Index> boundary_edges() const { return boundary_edge_ids_; }
+  Index boundary_edge(Index a, Index b) const;
   std::span<const Index> cavity() const { return cavity_; }
 
   // Applies the plan. On a P2 mesh `inner_edge_nodes[i]` is the node of new_inner_edges()[i], and
@@ -87,6 +89,10 @@ class CavityOperator {
   CavityStatus collect_boundary(const Mesh<D>& mesh);
   CavityStatus match_ridges();
   CavityStatus plan_edges(const Mesh<D>& mesh);
+  // Position of edge (a, b) in boundary_edge_keys_, or its size when it is not there.
+  std::size_t boundary_edge_slot(Index a, Index b) const;
+  // During commit, after the new inner edges are in the table: the id of an edge of a new element.
+  Index planned_edge(Index a, Index b) const;
 
   std::vector<Index> cavity_;
   Index vertex_ = kNoIndex;
@@ -102,6 +108,7 @@ class CavityOperator {
   std::vector<Index> removed_edges_;
   std::vector<std::array<Index, 2>> new_inner_edges_;
   std::vector<Index> recreated_ids_;  // per new inner edge: its old id when it existed (kept), else kNoIndex
+  std::vector<Index> inner_edge_ids_;  // per new inner edge: its id once committed
   std::vector<Point> start_nodes_;
   std::vector<Index> scratch_;
 };

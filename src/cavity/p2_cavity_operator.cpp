@@ -67,13 +67,17 @@ CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const I
   collect_candidates(mesh);
   // Certify every candidate; pull back the edges of the first that fails, and start over (a
   // pulled-back edge changes its other elements too). Each round lowers some scale, so it ends.
+  // A candidate whose nodes did not move since it was certified is not certified again.
   bool valid = true;
+  certified_already_.assign(candidates_.size(), false);
   for (std::size_t round = 0; valid; ++round) {
-    auto failing = std::find_if(candidates_.begin(), candidates_.end(),
-                                [&](const Candidate& candidate) { return !certified(mesh, candidate); });
-    if (failing == candidates_.end()) break;
+    std::size_t failing = 0;
+    while (failing < candidates_.size() && (certified_already_[failing] || certified(candidates_[failing])))
+      certified_already_[failing++] = true;
+    if (failing == candidates_.size()) break;
     ++counters_.corrections;
-    valid = round < 8 * candidates_.size() && correct(mesh, *failing);
+    valid = round < 8 * candidates_.size() && correct(candidates_[failing]);
+    forget_certificates_of_corrected_edges();
   }
   counters_.seconds_certify += seconds_since(start);
   if (!valid) {
@@ -133,8 +137,12 @@ void P2CavityOperator<D>::take_boundary_proposals(const Mesh<D>& mesh) {
 
 template <int D>
 void P2CavityOperator<D>::collect_candidates(const Mesh<D>& mesh) {
+  curved_by_key_.clear();
+  for (std::size_t i = 0; i < curved_.size(); ++i)
+    curved_by_key_.emplace_back(Mesh<D>::edge_key(curved_[i].a, curved_[i].b), static_cast<int>(i));
+  std::sort(curved_by_key_.begin(), curved_by_key_.end());
   candidates_.clear();
-  for (const auto& element : p1_.new_elements()) candidates_.push_back({element, kNoIndex});
+  for (const auto& element : p1_.new_elements()) add_candidate(mesh, element, kNoIndex);
   // Elements outside the cavity around a boundary edge whose node changes change too.
   const auto cavity = p1_.cavity();
   for (const CurvedEdge& edge : curved_) {
@@ -144,52 +152,72 @@ void P2CavityOperator<D>::collect_candidates(const Mesh<D>& mesh) {
       if (std::binary_search(cavity.begin(), cavity.end(), k)) continue;
       bool listed = std::any_of(candidates_.begin(), candidates_.end(),
                                 [&](const Candidate& candidate) { return candidate.mesh_element == k; });
-      if (!listed) candidates_.push_back({mesh.element(k), k});
+      if (!listed) add_candidate(mesh, mesh.element(k), k);
     }
   }
 }
 
 template <int D>
-P2Element<D> P2CavityOperator<D>::element_of(const Mesh<D>& mesh, const Candidate& candidate) const {
-  P2Element<D> element;
-  for (int i = 0; i <= D; ++i) element.nodes[i] = mesh.vertex(candidate.vertices[i]);
+void P2CavityOperator<D>::add_candidate(const Mesh<D>& mesh, const typename Mesh<D>::Element& vertices, Index mesh_element) {
+  Candidate& candidate = candidates_.emplace_back();
+  candidate.vertices = vertices;
+  candidate.mesh_element = mesh_element;
+  for (int i = 0; i <= D; ++i) candidate.fixed_nodes.nodes[i] = mesh.vertex(vertices[i]);
   for (int e = 0; e < Simplex<D>::kEdges; ++e) {
-    Index a = candidate.vertices[edge_vertices<D>(e)[0]], b = candidate.vertices[edge_vertices<D>(e)[1]];
-    auto curved = std::find_if(curved_.begin(), curved_.end(), [&](const CurvedEdge& edge) {
-      return (edge.a == a && edge.b == b) || (edge.a == b && edge.b == a);
-    });
-    element.nodes[D + 1 + e] = curved != curved_.end() ? curved->node() : mesh.edge_node(mesh.find_edge(a, b));
+    const Index a = vertices[edge_vertices<D>(e)[0]], b = vertices[edge_vertices<D>(e)[1]];
+    const std::pair<std::uint64_t, int> key{Mesh<D>::edge_key(a, b), -1};
+    auto found = std::upper_bound(curved_by_key_.begin(), curved_by_key_.end(), key);
+    candidate.curved[e] = found != curved_by_key_.end() && found->first == key.first ? found->second : -1;
+    if (candidate.curved[e] >= 0) continue;
+    // An unchanged edge: the element's own (outside the cavity) or one on the cavity's boundary.
+    Index id = mesh_element != kNoIndex ? mesh.element_edge(mesh_element, e) : p1_.boundary_edge(a, b);
+    if (id == kNoIndex) id = mesh.find_edge(a, b);
+    candidate.fixed_nodes.nodes[D + 1 + e] = mesh.edge_node(id);
   }
+}
+
+template <int D>
+void P2CavityOperator<D>::forget_certificates_of_corrected_edges() {
+  for (std::size_t i = 0; i < candidates_.size(); ++i)
+    for (int index : candidates_[i].curved)
+      if (index >= 0 && std::find(corrected_edges_.begin(), corrected_edges_.end(), &curved_[static_cast<std::size_t>(index)]) !=
+                            corrected_edges_.end())
+        certified_already_[i] = false;
+}
+
+template <int D>
+P2Element<D> P2CavityOperator<D>::element_of(const Candidate& candidate) const {
+  P2Element<D> element = candidate.fixed_nodes;
+  for (int e = 0; e < Simplex<D>::kEdges; ++e)
+    if (candidate.curved[e] >= 0) element.nodes[D + 1 + e] = curved_[static_cast<std::size_t>(candidate.curved[e])].node();
   return element;
 }
 
 template <int D>
-bool P2CavityOperator<D>::certified(const Mesh<D>& mesh, const Candidate& candidate) {
+bool P2CavityOperator<D>::certified(const Candidate& candidate) {
   ++counters_.elements_certified;
-  return certify_min_normalized_jacobian_above(element_of(mesh, candidate), options_.jacobian_floor);
+  return certify_min_normalized_jacobian_above(element_of(candidate), options_.jacobian_floor);
 }
 
 template <int D>
-bool P2CavityOperator<D>::correct(const Mesh<D>& mesh, const Candidate& candidate) {
+bool P2CavityOperator<D>::correct(const Candidate& candidate) {
   // The changed edges of this element: inner ones first, then boundary ones as well.
   for (bool with_boundary : {false, true}) {
-    std::vector<CurvedEdge*> edges;
-    for (int e = 0; e < Simplex<D>::kEdges; ++e) {
-      Index a = candidate.vertices[edge_vertices<D>(e)[0]], b = candidate.vertices[edge_vertices<D>(e)[1]];
-      for (CurvedEdge& edge : curved_)
-        if (((edge.a == a && edge.b == b) || (edge.a == b && edge.b == a)) && edge.scale > 0 &&
-            (edge.inner || with_boundary))
-          edges.push_back(&edge);
+    corrected_edges_.clear();
+    for (int index : candidate.curved) {
+      if (index < 0) continue;
+      CurvedEdge& edge = curved_[static_cast<std::size_t>(index)];
+      if (edge.scale > 0 && (edge.inner || with_boundary)) corrected_edges_.push_back(&edge);
     }
-    if (edges.empty()) continue;
-    std::vector<double> original;
-    for (CurvedEdge* edge : edges) original.push_back(edge->scale);
+    if (corrected_edges_.empty()) continue;
+    corrected_scales_.clear();
+    for (CurvedEdge* edge : corrected_edges_) corrected_scales_.push_back(edge->scale);
     auto set_factor = [&](double factor) {
-      for (std::size_t i = 0; i < edges.size(); ++i) edges[i]->scale = original[i] * factor;
+      for (std::size_t i = 0; i < corrected_edges_.size(); ++i) corrected_edges_[i]->scale = corrected_scales_[i] * factor;
     };
     // The largest factor in [0, 1) that certifies the element, by bisection.
     set_factor(0);
-    if (!certified(mesh, candidate)) {
+    if (!certified(candidate)) {
       set_factor(1);
       continue;
     }
@@ -197,7 +225,7 @@ bool P2CavityOperator<D>::correct(const Mesh<D>& mesh, const Candidate& candidat
     for (int step = 0; step < options_.correction_steps; ++step) {
       double middle = 0.5 * (good + bad);
       set_factor(middle);
-      (certified(mesh, candidate) ? good : bad) = middle;
+      (certified(candidate) ? good : bad) = middle;
     }
     set_factor(good);
     return true;

@@ -77,19 +77,25 @@ class P2CavityOperator {
     Index id;          // index in the plan's inner edges, or the mesh edge id
     Vec<D> node() const { return fallback + scale * (target - fallback); }
   };
-  // An element to certify: a new one (its vertices) or one outside the cavity (its mesh id).
+  // An element to certify: a new one (its vertices) or one outside the cavity (its mesh id), with
+  // the nodes of its unchanged edges looked up once and, per edge, its entry in curved_ (or −1).
   struct Candidate {
     typename Mesh<D>::Element vertices;
     Index mesh_element;  // kNoIndex for a new element
+    P2Element<D> fixed_nodes;
+    std::array<int, Simplex<D>::kEdges> curved;
   };
 
   void curve_inner_edges(const Mesh<D>& mesh);
   void take_boundary_proposals(const Mesh<D>& mesh);
   void collect_candidates(const Mesh<D>& mesh);
-  P2Element<D> element_of(const Mesh<D>& mesh, const Candidate& candidate) const;
-  bool certified(const Mesh<D>& mesh, const Candidate& candidate);
+  void add_candidate(const Mesh<D>& mesh, const typename Mesh<D>::Element& vertices, Index mesh_element);
+  P2Element<D> element_of(const Candidate& candidate) const;
+  bool certified(const Candidate& candidate);
   // Pulls back the changed edges of a failing candidate; false when nothing certifies it.
-  bool correct(const Mesh<D>& mesh, const Candidate& candidate);
+  bool correct(const Candidate& candidate);
+  // After a correction: the candidates holding an edge it moved need certifying again.
+  void forget_certificates_of_corrected_edges();
 
   const MetricField<D>& field_;
   std::vector<SymMat<D>>& vertex_log_metrics_;
@@ -100,6 +106,10 @@ class P2CavityOperator {
   P2CavityCounters counters_;
   std::vector<CurvedEdge> curved_;
   std::vector<Candidate> candidates_;
+  std::vector<std::pair<std::uint64_t, int>> curved_by_key_;  // (edge key, index in curved_), sorted
+  std::vector<CurvedEdge*> corrected_edges_;
+  std::vector<double> corrected_scales_;
+  std::vector<bool> certified_already_;  // per candidate: certified, and none of its nodes moved since
   std::vector<Index> shell_;
   std::vector<Vec<D>> inner_nodes_;
   std::vector<std::pair<Index, Vec<D>>> boundary_nodes_;

@@ -135,5 +135,25 @@ TEST(CavityOperator, RefusedPlansLeaveNoTrace) {
   EXPECT_EQ(op2.plan(copy, two, copy.element(0)[0], options), CavityStatus::kMixedRefs);
 }
 
+TEST(CavityOperator, BoundaryEdgesOfAPlanAreFoundByTheirVertices) {
+  Mesh<3> mesh = generate_cube(3);
+  mesh.make_p2();
+  CavityOperator<3> op;
+  std::vector<Index> ball;
+  const Index vertex = 21;  // an interior vertex of the 4x4x4 grid
+  collect_ball(mesh, vertex, ball);
+  ASSERT_EQ(op.plan(mesh, ball, vertex, CavityOptions{}), CavityStatus::kAccepted);
+  ASSERT_FALSE(op.boundary_edges().empty());
+  for (Index e : op.boundary_edges()) {
+    const auto [a, b] = mesh.edge_vertices(e);
+    EXPECT_EQ(e, mesh.find_edge(a, b));
+    EXPECT_EQ(op.boundary_edge(a, b), e);
+    EXPECT_EQ(op.boundary_edge(b, a), e);
+  }
+  // The edges through the reinserted vertex are inner edges, not on the hole's boundary.
+  ASSERT_EQ(op.new_inner_edges().size(), 14u);
+  for (const auto& [a, b] : op.new_inner_edges()) EXPECT_EQ(op.boundary_edge(a, b), kNoIndex);
+}
+
 }  // namespace
 }  // namespace hocav
