@@ -32,6 +32,7 @@ BenchFigures bench_figures(const CurvingReport& report) {
   figures.rejections = counters.rejected_topology + counters.rejected_curving;
   figures.corrections = counters.corrections;
   figures.edges_optimized = counters.edges_optimized;
+  figures.optimizer_iterations = counters.optimizer_iterations;
   return figures;
 }
 
@@ -145,6 +146,7 @@ void write_bench_json(std::ostream& out, const MachineInfo& machine, const std::
     json.member("average_gain", f.average_gain).member("max_gain", f.max_gain);
     json.member("cavities", f.cavities).member("accepted", f.accepted).member("rejections", f.rejections);
     json.member("corrections", f.corrections).member("edges_optimized", f.edges_optimized);
+    json.member("optimizer_iterations", f.optimizer_iterations);
     json.member("peak_rss_bytes", row.peak_rss_bytes);
     json.member("output_hash", std::to_string(f.output_hash));
     if (std::string check = thread_check(row, rows); !check.empty()) json.member("same_output_as_one_thread", check == "yes");
