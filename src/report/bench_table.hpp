@@ -18,6 +18,7 @@ struct BenchFigures {
   Index elements = 0, points_before = 0, points_after = 0;
   double max_anisotropy = 0;
   double seconds = 0;          // curving, no I/O (the reinsertion passes, as `hocav curve` reports)
+  double cpu_seconds = 0;      // processor time of the curving, all threads (shows a loaded machine)
   double setup_seconds = 0;    // metric field, boundary surrogate and its proposals, before the passes
   double edges_optimized_per_second = 0;
   double normalized_jacobian_min = 0, normalized_jacobian_avg = 0, normalized_jacobian_max = 0;

@@ -24,6 +24,7 @@ TEST_F(BenchCli, SmallCubeOnOneAndTwoThreadsGivesTheSameOutput) {
     EXPECT_GT(row_value(row, "average_gain"), 0);
     EXPECT_EQ(row_value(row, "rejections"), 0);
     EXPECT_GT(row_value(row, "seconds_without_io"), 0);
+    EXPECT_GT(row_value(row, "cpu_seconds"), 0);
     EXPECT_GT(row_value(row, "peak_rss_bytes"), 1 << 20);
     // Short runs are repeated: the median of two is the slower.
     EXPECT_EQ(json_value("bench.json", "len(d[\"rows\"][" + std::to_string(row) + "][\"run_seconds\"])"), "2");

@@ -16,6 +16,7 @@ BenchRow row(int threads, std::uint64_t hash, double target = 1e6) {
   r.figures.points_before = 1000;
   r.figures.points_after = 2500;
   r.figures.seconds = 2.5;
+  r.figures.cpu_seconds = 4;
   r.figures.normalized_jacobian_min = 0.01;
   r.figures.average_gain = 0.0123;
   r.figures.max_gain = 0.5;
@@ -36,7 +37,7 @@ TEST(BenchTable, MarkdownRowsHaveTheTableOneColumnsAndTheThreadCheck) {
   EXPECT_NE(text.find("Machine: Test CPU, 2 hardware threads, 4.0 GiB; load average 0.50"), std::string::npos) << text;
   // Counts grouped by thousands, time per element in microseconds, memory in MiB.
   EXPECT_NE(text.find("| cube-shear | 1,234,567 | 1,000 / 2,500 |"), std::string::npos) << text;
-  EXPECT_NE(text.find("| 2.50 s | 2.03 |"), std::string::npos) << text;
+  EXPECT_NE(text.find("| 2.50 s | 2.03 | 4.00 s |"), std::string::npos) << text;
   EXPECT_NE(text.find("| 1.23% / 50% |"), std::string::npos) << text;
   EXPECT_NE(text.find("| 3 MiB | yes |"), std::string::npos) << text;  // same hash as its 1-thread row
   EXPECT_NE(text.find("| 3 MiB | no |"), std::string::npos) << text;   // another hash at 1e5
