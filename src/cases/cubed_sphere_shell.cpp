@@ -117,10 +117,9 @@ Mesh<3> generate_cubed_sphere_shell(int n, std::span<const double> radii) {
 }
 
 Mesh<3> generate_cubed_sphere_shell(const ShellLayering& layering, double target_tets) {
-  const int n = resolution_for_target("target-tets", target_tets, 1, [&layering](int cells) {
-    return cubed_sphere_shell_tet_count(cells, layer_radii(layering, cubed_sphere_angular_step(cells)).size());
-  });
-  return generate_cubed_sphere_shell(n, layer_radii(layering, cubed_sphere_angular_step(n)));
+  const auto [n, radii] = layered_resolution_for_target("target-tets", target_tets, 1, layering, cubed_sphere_angular_step,
+                                                         cubed_sphere_shell_tet_count);
+  return generate_cubed_sphere_shell(n, radii);
 }
 
 }  // namespace hocav
