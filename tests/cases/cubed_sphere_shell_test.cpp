@@ -139,6 +139,7 @@ TEST(CubedSphereShell, IsDeterministic) {
 TEST(CubedSphereShell, RejectsBadParameters) {
   const std::vector<double> radii{0.5, 1.0};
   EXPECT_THROW(generate_cubed_sphere_shell(0, radii), Error);
+  EXPECT_THROW(generate_cubed_sphere_shell(20000, radii), Error);  // more than 2³¹ tetrahedra
   EXPECT_THROW(generate_cubed_sphere_shell(2, std::vector<double>{0.5}), Error);
   EXPECT_THROW(generate_cubed_sphere_shell(2, std::vector<double>{0.5, 0.4}), Error);
   EXPECT_THROW(generate_cubed_sphere_shell(2, std::vector<double>{0.0, 1.0}), Error);
