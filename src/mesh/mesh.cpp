@@ -66,6 +66,23 @@ Index Mesh<D>::insert_edge(Index a, Index b) {
   return id;
 }
 
+namespace {
+
+// Vertex -> incident elements in compressed rows (offsets, then element ids).
+template <int D>
+void build_vertex_elements(const Mesh<D>& mesh, std::vector<Index>& offsets, std::vector<Index>& incident) {
+  offsets.assign(static_cast<std::size_t>(mesh.vertex_count()) + 1, 0);
+  for (const auto& element : mesh.elements())
+    for (Index v : element) ++offsets[static_cast<std::size_t>(v) + 1];
+  for (std::size_t v = 0; v + 1 < offsets.size(); ++v) offsets[v + 1] += offsets[v];
+  incident.resize(static_cast<std::size_t>(offsets.back()));
+  std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (Index v : mesh.element(k)) incident[static_cast<std::size_t>(fill[v]++)] = k;
+}
+
+}  // namespace
+
 template <int D>
 void Mesh<D>::build_edges() {
   edge_vertices_.clear();
@@ -75,11 +92,35 @@ void Mesh<D>::build_edges() {
   edge_ids_.reserve(elements_.size() * (D == 3 ? 13 : 16) / 10 + facets_.size() + lines_.size());
   edge_vertices_.reserve(elements_.size() * (D == 3 ? 13 : 16) / 10);
   element_edges_.resize(elements_.size());
-  for (std::size_t k = 0; k < elements_.size(); ++k)
-    for (int e = 0; e < kElementEdges; ++e) {
-      const auto& local = hocav::edge_vertices<D>(e);
-      element_edges_[k][e] = insert_edge(elements_[k][local[0]], elements_[k][local[1]]);
+  // Edges are numbered by their smaller vertex, then the larger: each vertex collects the edges of
+  // its ball that start at it, so every edge is inserted in the table once, not once per element.
+  std::vector<Index> offsets, incident;
+  build_vertex_elements(*this, offsets, incident);
+  std::vector<Index> ends;
+  for (Index v = 0; v < vertex_count(); ++v) {
+    ends.clear();
+    for (Index slot = offsets[v]; slot < offsets[v + 1]; ++slot)
+      for (Index w : elements_[incident[slot]])
+        if (w > v) ends.push_back(w);
+    std::sort(ends.begin(), ends.end());
+    ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+    Index first = static_cast<Index>(edge_vertices_.size());
+    for (Index w : ends) insert_edge(v, w);
+    for (Index slot = offsets[v]; slot < offsets[v + 1]; ++slot) {
+      Index k = incident[slot];
+      for (int e = 0; e < kElementEdges; ++e) {
+        const auto& local = hocav::edge_vertices<D>(e);
+        Index a = elements_[k][local[0]], b = elements_[k][local[1]];
+        if (std::min(a, b) != v) continue;
+        if (a == b) {  // a degenerate element (the checker reports it) still gets an edge
+          element_edges_[k][e] = insert_edge(a, b);
+          continue;
+        }
+        auto rank = std::lower_bound(ends.begin(), ends.end(), std::max(a, b)) - ends.begin();
+        element_edges_[k][e] = first + static_cast<Index>(rank);
+      }
     }
+  }
   // Boundary and feature edges are element edges in a conforming mesh; inserting them too keeps
   // the table complete for meshes that carry a facet or line no element touches.
   for (const Facet& f : facets_)
@@ -106,19 +147,6 @@ void Mesh<D>::make_p1() {
 }
 
 namespace {
-
-// Vertex -> incident elements in compressed rows (offsets, then element ids).
-template <int D>
-void build_vertex_elements(const Mesh<D>& mesh, std::vector<Index>& offsets, std::vector<Index>& incident) {
-  offsets.assign(static_cast<std::size_t>(mesh.vertex_count()) + 1, 0);
-  for (const auto& element : mesh.elements())
-    for (Index v : element) ++offsets[static_cast<std::size_t>(v) + 1];
-  for (std::size_t v = 0; v + 1 < offsets.size(); ++v) offsets[v + 1] += offsets[v];
-  incident.resize(static_cast<std::size_t>(offsets.back()));
-  std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
-  for (Index k = 0; k < mesh.element_count(); ++k)
-    for (Index v : mesh.element(k)) incident[static_cast<std::size_t>(fill[v]++)] = k;
-}
 
 template <int D>
 bool element_has_vertices(const typename Mesh<D>::Element& element, const Index* vertices, int count) {
