@@ -61,21 +61,25 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
       if (order != Order::kValue) {
         // uᵀ Dexp[H] u = <Dexp[u uᵀ], H> (Dexp is self-adjoint): one derivative serves every direction.
         const SymMat<D> adjoint = exp_t.squared_length_gradient(u);
-        const Vec<D> eu = exp_t.value() * u;
         std::array<SymMat<D>, D> directions;
         for (int i = 0; i < D; ++i) {
           directions[i] = phi.middle * log_node_gradient[i];
-          dg[i] = 2 * du * eu[i] + frobenius_dot(adjoint, directions[i]);
+          dg[i] = frobenius_dot(adjoint, directions[i]);
         }
+        // du = 0 at t = 1/2 (the middle node of the 3-point rules): the tangent does not depend on X there.
+        if (du != 0) dg += (2 * du) * (exp_t.value() * u);
         if (order == Order::kHessian) {
           // uᵀ D²exp[Hi, Hj] u = <D²exp[Hi, u uᵀ], Hj> (symmetric in its three arguments): D second derivatives.
           const std::array<SymMat<D>, D> second_along_length = exp_t.second_derivatives(directions, outer(u, u));
-          std::array<Vec<D>, D> de_u;  // ∂_iE u
-          for (int i = 0; i < D; ++i) de_u[i] = exp_t.derivative(directions[i]) * u;
           for (int i = 0; i < D; ++i)
-            for (int j = 0; j <= i; ++j)
-              d2g(i, j) = 2 * du * du * exp_t.value()(i, j) + 2 * du * (de_u[j][i] + de_u[i][j]) +
-                          frobenius_dot(second_along_length[i], directions[j]);
+            for (int j = 0; j <= i; ++j) d2g(i, j) = frobenius_dot(second_along_length[i], directions[j]);
+          if (du != 0) {
+            std::array<Vec<D>, D> de_u;  // ∂_iE u
+            for (int i = 0; i < D; ++i) de_u[i] = exp_t.derivative(directions[i]) * u;
+            for (int i = 0; i < D; ++i)
+              for (int j = 0; j <= i; ++j)
+                d2g(i, j) += 2 * du * du * exp_t.value()(i, j) + 2 * du * (de_u[j][i] + de_u[i][j]);
+          }
         }
       }
     }

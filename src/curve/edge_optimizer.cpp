@@ -100,8 +100,11 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<
     }
     step = onto_plane(step);
     double step_size = norm(step);
-    // Converged: a step this small only meets round-off, where every halving of the line search would fail.
-    if (step_size < options.step_tolerance * edge_size) break;
+    // Converged: a step this small, or one whose predicted decrease −gᵀp/2 is this small, only meets
+    // round-off, where every halving of the line search would fail.
+    if (step_size < options.step_tolerance * edge_size ||
+        -0.5 * dot(gradient, step) < options.decrease_tolerance * value.length)
+      break;
     if (step_size > trust) step = (trust / step_size) * step, step_size = trust;
 
     // Backtracking: accept the first trial that decreases ℓ (kinks rule out stricter tests).

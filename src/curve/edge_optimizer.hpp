@@ -15,6 +15,10 @@ struct EdgeOptimizerOptions {
   int max_iterations = 30;
   // Stop when a step moves the node less than this fraction of |B − A|.
   double step_tolerance = 1e-7;
+  // Or when the Newton model predicts a decrease of ℓ below this fraction of ℓ: ℓ is evaluated to a
+  // relative ~1e-15 (3D eigen-decompositions of log-metrics up to ~20), so no line search can
+  // confirm a smaller decrease; at the stop the node is within one (tiny) Newton step of the optimum.
+  double decrease_tolerance = 1e-13;
   // Largest distance of the node from the straight midpoint, as a fraction of |B − A|.
   double max_displacement = 0.5;
   // An edge whose length (in the optimizer's rule) drops by less than this fraction stays

@@ -45,17 +45,20 @@ double first_difference(double a, double b, double exp_a, double exp_b) {
 double second_difference(double lo, double mid, double hi, double upper, double lower) {
   if (hi - lo >= kDirectQuotientSpread) return (upper - lower) / (hi - lo);
   // exp[x, y, z] = Σ_k h_k(x, y, z)/(k+2)! with h_k the complete homogeneous polynomials, about the centre so
-  // that |x|, |y|, |z| ≤ 1/2: the terms fall below 1e-17 of the sum by k = 16.
-  constexpr int kTerms = 16;
+  // that |x|, |y|, |z| ≤ r = (hi − lo)/2 ≤ 1/2. |h_k| ≤ (k+1)(k+2)/2 r^k, so term k is at most r^k/(2 k!), and
+  // the tail after it is smaller still; the sum is ≥ e^{-1/2}/2. Stop once r^k/k! < 1e-17: by k = 16 at
+  // r = 1/2, at once for equal arguments (a locally isotropic metric).
+  constexpr int kMaxTerms = 16;
   double centre = 0.5 * (lo + hi);
   double x = hi - centre, y = mid - centre, z = lo - centre;
-  double power_x = 1.0, h_xy = 1.0, h_xyz = 1.0, inverse_factorial = 0.5, sum = 0.5;
-  for (int k = 1; k <= kTerms; ++k) {
+  double power_x = 1.0, h_xy = 1.0, h_xyz = 1.0, inverse_factorial = 0.5, sum = 0.5, term_bound = 1.0;
+  for (int k = 1; k <= kMaxTerms && term_bound >= 1e-17; ++k) {
     power_x *= x;
     h_xy = power_x + y * h_xy;  // h_k(x, y) = x^k + y h_{k−1}(x, y)
     h_xyz = h_xy + z * h_xyz;   // h_k(x, y, z) = h_k(x, y) + z h_{k−1}(x, y, z)
     inverse_factorial /= k + 2;
     sum += h_xyz * inverse_factorial;
+    term_bound *= x / k;
   }
   return std::exp(centre) * sum;
 }
