@@ -107,8 +107,13 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<
       break;
     if (step_size > trust) step = (trust / step_size) * step, step_size = trust;
 
-    // Backtracking: accept the first trial that decreases ℓ (kinks rule out stricter tests).
+    // Backtracking: accept the first trial that decreases ℓ (kinks rule out stricter tests). Along a
+    // smooth ray of descent slope (σ < 0, Δ(s) = σs + κs²/2), a rejected increase Δ(s) > 0 shrinks more
+    // than 4-fold when s is halved; a small one (< 1e-3 ℓ, where that model holds) that shrinks less
+    // grows to first order: the direction ascends from the node, which sits on a kink (a back-mesh face
+    // or edge), and further halvings would fail too. The node is then taken as the optimum.
     bool accepted = false;
+    double rejected_increase = 0;
     for (int halving = 0; halving < 12 && !accepted; ++halving, step = 0.5 * step, step_size *= 0.5) {
       Vec<D> trial = result.node + step;
       Vec<D> offset = trial - midpoint;
@@ -123,6 +128,11 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<
         result.back_element = trial_sample.where.element;
         value = function.evaluate(trial, trial_sample.log_metric, log_gradient_in(trial_sample.where.element),
                                   Order::kHessian);
+      } else {
+        const double increase = trial_length - value.length;
+        if (rejected_increase > 0 && rejected_increase < 1e-3 * value.length && increase > 0.25 * rejected_increase)
+          break;
+        rejected_increase = increase;
       }
     }
     if (!accepted || step_size < options.step_tolerance * edge_size) {
