@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 
-#include "geom/sym_functions.hpp"
 
 namespace hocav {
 namespace {
@@ -166,30 +165,12 @@ double high_precision_edge_length(const MetricField<D>& field, const Vec<D>& a, 
   return function.length(node, field.log_metric_at(node, hint));
 }
 
-template <int D>
-double true_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b, const Vec<D>& node,
-                        const QuadratureRule& rule) {
-  double length = 0;
-  Index hint = kNoIndex;
-  for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
-    const double t = rule.nodes[q];
-    const Vec<D> point = (1 - t) * (1 - 2 * t) * a + 4 * t * (1 - t) * node + t * (2 * t - 1) * b;
-    const Vec<D> tangent = (4 * t - 3) * a + 4 * (1 - 2 * t) * node + (4 * t - 1) * b;
-    auto sample = field.sample(point, hint);
-    hint = sample.where.element;
-    length += rule.weights[q] * std::sqrt(quadratic_form(exp_sym(sample.log_metric), tangent));
-  }
-  return length;
-}
-
 #define HOCAV_INSTANTIATE(D)                                                                                        \
   template EdgeOptimization<D> optimize_edge_length(const MetricField<D>&, const Vec<D>&, const Vec<D>&,            \
                                                     const SymMat<D>&, const SymMat<D>&, const Vec<D>&, Index,        \
                                                     const EdgeOptimizerOptions&);                                   \
   template double high_precision_edge_length(const MetricField<D>&, const Vec<D>&, const Vec<D>&, const SymMat<D>&, \
-                                             const SymMat<D>&, const Vec<D>&, Index);                               \
-  template double true_edge_length(const MetricField<D>&, const Vec<D>&, const Vec<D>&, const Vec<D>&,             \
-                                   const QuadratureRule&);
+                                             const SymMat<D>&, const Vec<D>&, Index);
 HOCAV_INSTANTIATE(2)
 HOCAV_INSTANTIATE(3)
 #undef HOCAV_INSTANTIATE

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "curve/edge_length.hpp"
+#include "curve/edge_length_integral.hpp"  // the "true" length and adaptive lengths
 #include "metric/metric_field.hpp"
 
 namespace hocav {
@@ -53,11 +54,5 @@ template <int D>
 double high_precision_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b,
                                   const SymMat<D>& log_a, const SymMat<D>& log_b, const Vec<D>& node,
                                   Index hint = kNoIndex);
-
-// The "true" Riemannian length of the curve in the back-mesh field: every quadrature point of the
-// rule is localized and its metric interpolated from the back mesh (a diagnostic, math.md §5).
-template <int D>
-double true_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b, const Vec<D>& node,
-                        const QuadratureRule& rule);
 
 }  // namespace hocav
