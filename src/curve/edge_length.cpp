@@ -26,7 +26,13 @@ SymMat<D> outer(const Vec<D>& u, const Vec<D>& v) {
 template <int D>
 EdgeLengthFunction<D>::EdgeLengthFunction(const Vec<D>& a, const Vec<D>& b, const SymMat<D>& log_a,
                                           const SymMat<D>& log_b, const QuadratureRule& rule)
-    : a_(a), b_(b), log_a_(log_a), log_b_(log_b), rule_(rule), fixed_metrics_(rule.nodes.size()) {
+    : a_(a),
+      b_(b),
+      log_a_(log_a),
+      log_b_(log_b),
+      rule_(rule),
+      fixed_metrics_(rule.nodes.size()),
+      last_eigen_(rule.nodes.size()) {
   for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
     EdgeBasis phi = edge_basis(rule.nodes[q]);
     if (phi.middle == 0) fixed_metrics_[q] = exp_sym(phi.a * log_a + phi.b * log_b);
@@ -38,6 +44,7 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
                                                    const std::array<SymMat<D>, D>& log_node_gradient,
                                                    Order order) const {
   EdgeLengthValue<D> result;
+  const bool same_point = has_last_ && log_node == last_log_node_;
   for (std::size_t q = 0; q < rule_.nodes.size(); ++q) {
     const double t = rule_.nodes[q], w = rule_.weights[q];
     const EdgeBasis phi = edge_basis(t);
@@ -55,10 +62,12 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
       if (order != Order::kValue) dg = (2 * du) * eu;
       if (order == Order::kHessian) d2g = (2 * du * du) * e;
     } else {
-      ExpFrechet<D> exp_t(phi.a * log_a_ + phi.middle * log_node + phi.b * log_b_);
+      SymEigen<D>& eigen = last_eigen_[q];
+      if (!same_point) eigen = sym_eigen(phi.a * log_a_ + phi.middle * log_node + phi.b * log_b_);
       // In the eigenbasis: keeps g relatively accurate along the small eigenvalues (high anisotropy).
-      g = exp_t.squared_length(u);
+      g = exp_squared_length(eigen, u);
       if (order != Order::kValue) {
+        const ExpFrechet<D> exp_t(eigen);
         // uᵀ Dexp[H] u = <Dexp[u uᵀ], H> (Dexp is self-adjoint): one derivative serves every direction.
         const SymMat<D> adjoint = exp_t.squared_length_gradient(u);
         std::array<SymMat<D>, D> directions;
@@ -92,6 +101,8 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
       for (int i = 0; i < D; ++i)
         for (int j = 0; j <= i; ++j) result.hessian(i, j) += w * (d2g(i, j) / (2 * root) - dg[i] * dg[j] / (4 * g * root));
   }
+  last_log_node_ = log_node;
+  has_last_ = true;
   return result;
 }
 

@@ -100,7 +100,10 @@ double exp_divided_difference(double a, double b, double c) {
 }
 
 template <int D>
-ExpFrechet<D>::ExpFrechet(const SymMat<D>& log_metric) : eigen_(sym_eigen(log_metric)) {
+ExpFrechet<D>::ExpFrechet(const SymMat<D>& log_metric) : ExpFrechet(sym_eigen(log_metric)) {}
+
+template <int D>
+ExpFrechet<D>::ExpFrechet(const SymEigen<D>& log_metric_eigen) : eigen_(log_metric_eigen) {
   Vec<D> exp_values;
   for (int k = 0; k < D; ++k) exp_values[k] = std::exp(eigen_.values[k]);
   value_ = SymMat<D>::from_eigen(eigen_.vectors, exp_values);
@@ -125,6 +128,14 @@ double ExpFrechet<D>::squared_length(const Vec<D>& u) const {
   Vec<D> w = transpose_times(eigen_.vectors, u);
   double sum = 0.0;
   for (int k = 0; k < D; ++k) sum += first_differences_(k, k) * w[k] * w[k];
+  return sum;
+}
+
+template <int D>
+double exp_squared_length(const SymEigen<D>& log_metric_eigen, const Vec<D>& u) {
+  Vec<D> w = transpose_times(log_metric_eigen.vectors, u);
+  double sum = 0.0;
+  for (int k = 0; k < D; ++k) sum += std::exp(log_metric_eigen.values[k]) * w[k] * w[k];
   return sum;
 }
 
@@ -196,6 +207,8 @@ template SymMat<2> pow_spd(const SymMat<2>&, double);
 template SymMat<3> pow_spd(const SymMat<3>&, double);
 template SymMat<2> sqrt_spd(const SymMat<2>&);
 template SymMat<3> sqrt_spd(const SymMat<3>&);
+template double exp_squared_length(const SymEigen<2>&, const Vec<2>&);
+template double exp_squared_length(const SymEigen<3>&, const Vec<3>&);
 template class ExpFrechet<2>;
 template class ExpFrechet<3>;
 template SymMat<2> dexp(const SymMat<2>&, const SymMat<2>&);

@@ -57,6 +57,8 @@ template <int D>
 class ExpFrechet {
  public:
   explicit ExpFrechet(const SymMat<D>& log_metric);
+  // From the sym_eigen decomposition of the log-metric, when it is already known.
+  explicit ExpFrechet(const SymEigen<D>& log_metric_eigen);
 
   const SymMat<D>& value() const { return value_; }
   SymMat<D> derivative(const SymMat<D>& direction) const;
@@ -88,6 +90,11 @@ class ExpFrechet {
   SymMat<D> value_;
   SymMat<D> first_differences_;  // Γ_kl = exp[θk, θl]; Γ_kk = e^θk
 };
+
+// uᵀ exp(T) u = Σ_k e^θk (v_kᵀu)² from the sym_eigen decomposition of T: squared_length without the
+// Fréchet set-up.
+template <int D>
+double exp_squared_length(const SymEigen<D>& log_metric_eigen, const Vec<D>& u);
 
 // One-off forms of the above.
 template <int D>
