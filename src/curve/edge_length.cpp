@@ -13,14 +13,6 @@ struct EdgeBasis {
 };
 EdgeBasis edge_basis(double t) { return {(1 - t) * (1 - 2 * t), 4 * t * (1 - t), t * (2 * t - 1)}; }
 
-template <int D>
-SymMat<D> outer(const Vec<D>& u, const Vec<D>& v) {
-  SymMat<D> s;
-  for (int i = 0; i < D; ++i)
-    for (int j = 0; j <= i; ++j) s(i, j) = 0.5 * (u[i] * v[j] + u[j] * v[i]);
-  return s;
-}
-
 }  // namespace
 
 template <int D>
@@ -78,10 +70,7 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
         // du = 0 at t = 1/2 (the middle node of the 3-point rules): the tangent does not depend on X there.
         if (du != 0) dg += (2 * du) * (exp_t.value() * u);
         if (order == Order::kHessian) {
-          // uᵀ D²exp[Hi, Hj] u = <D²exp[Hi, u uᵀ], Hj> (symmetric in its three arguments): D second derivatives.
-          const std::array<SymMat<D>, D> second_along_length = exp_t.second_derivatives(directions, outer(u, u));
-          for (int i = 0; i < D; ++i)
-            for (int j = 0; j <= i; ++j) d2g(i, j) = frobenius_dot(second_along_length[i], directions[j]);
+          d2g = exp_t.squared_length_hessian(directions, u);
           if (du != 0) {
             std::array<Vec<D>, D> de_u;  // ∂_iE u
             for (int i = 0; i < D; ++i) de_u[i] = exp_t.derivative(directions[i]) * u;

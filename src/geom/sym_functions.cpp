@@ -160,31 +160,34 @@ typename ExpFrechet<D>::SecondDifferences ExpFrechet<D>::second_differences() co
 }
 
 template <int D>
-SymMat<D> ExpFrechet<D>::second_derivative_from_eigenbasis(const SecondDifferences& second, const SymMat<D>& a,
-                                                           const SymMat<D>& b) const {
+SymMat<D> ExpFrechet<D>::second_derivative_in_eigenbasis(const SecondDifferences& second, const SymMat<D>& a,
+                                                         const SymMat<D>& b) const {
   SymMat<D> in_eigenbasis;
   for (int k = 0; k < D; ++k)
     for (int l = 0; l <= k; ++l)
       for (int m = 0; m < D; ++m) in_eigenbasis(k, l) += second[k][m][l] * (a(k, m) * b(m, l) + b(k, m) * a(m, l));
-  return congruence(eigen_.vectors, in_eigenbasis);
+  return in_eigenbasis;
 }
 
 template <int D>
 SymMat<D> ExpFrechet<D>::second_derivative(const SymMat<D>& direction1, const SymMat<D>& direction2) const {
-  return second_derivative_from_eigenbasis(second_differences(), congruence_transposed(eigen_.vectors, direction1),
-                                           congruence_transposed(eigen_.vectors, direction2));
+  return congruence(eigen_.vectors, second_derivative_in_eigenbasis(second_differences(),
+                                                                    congruence_transposed(eigen_.vectors, direction1),
+                                                                    congruence_transposed(eigen_.vectors, direction2)));
 }
 
 template <int D>
-std::array<SymMat<D>, D> ExpFrechet<D>::second_derivatives(const std::array<SymMat<D>, D>& directions,
-                                                           const SymMat<D>& shared_direction) const {
+SymMat<D> ExpFrechet<D>::squared_length_hessian(const std::array<SymMat<D>, D>& directions, const Vec<D>& u) const {
   const SecondDifferences second = second_differences();
-  const SymMat<D> shared_in_eigenbasis = congruence_transposed(eigen_.vectors, shared_direction);
-  std::array<SymMat<D>, D> result;
-  for (int i = 0; i < D; ++i)
-    result[i] = second_derivative_from_eigenbasis(second, congruence_transposed(eigen_.vectors, directions[i]),
-                                                  shared_in_eigenbasis);
-  return result;
+  const SymMat<D> length_direction = outer(transpose_times(eigen_.vectors, u));  // u uᵀ in the eigenbasis
+  std::array<SymMat<D>, D> in_eigenbasis;
+  for (int i = 0; i < D; ++i) in_eigenbasis[i] = congruence_transposed(eigen_.vectors, directions[i]);
+  SymMat<D> hessian;
+  for (int i = 0; i < D; ++i) {
+    const SymMat<D> along = second_derivative_in_eigenbasis(second, in_eigenbasis[i], length_direction);
+    for (int j = 0; j <= i; ++j) hessian(i, j) = frobenius_dot(along, in_eigenbasis[j]);
+  }
+  return hessian;
 }
 
 template <int D>
