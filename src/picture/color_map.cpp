@@ -29,9 +29,7 @@ Color viridis(double t) {
   const double position = std::clamp(std::isnan(t) ? 0.0 : t, 0.0, 1.0) * (kStops.size() - 1);
   const auto below = std::min(static_cast<std::size_t>(position), kStops.size() - 2);
   const double weight = position - static_cast<double>(below);
-  auto channel = [&](int c) {
-    return ((1 - weight) * kStops[below][static_cast<std::size_t>(c)] + weight * kStops[below + 1][static_cast<std::size_t>(c)]) / 255;
-  };
+  auto channel = [&](std::size_t c) { return ((1 - weight) * kStops[below][c] + weight * kStops[below + 1][c]) / 255; };
   return {channel(0), channel(1), channel(2)};
 }
 

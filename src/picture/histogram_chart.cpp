@@ -76,7 +76,8 @@ SvgCanvas histogram_chart(const ValueSummary& summary, const HistogramLabels& la
   }
   canvas.text({{(kPlot.lower[0] + kPlot.upper[0]) / 2, kPlot.upper[1] + 44}}, labels.x_label, {15, "middle"});
   canvas.text({{28, (kPlot.lower[1] + kPlot.upper[1]) / 2}}, labels.y_label, {15, "middle", false, -90});
-  canvas.text({{(kPlot.lower[0] + kPlot.upper[0]) / 2, kHeight - 18}}, figures_line(summary), {13, "middle", false, 0, "#555555"});
+  canvas.text({{(kPlot.lower[0] + kPlot.upper[0]) / 2, kHeight - 18}}, figures_line(summary),
+              {13, "middle", false, 0, "#555555"});
   return canvas;
 }
 

@@ -9,7 +9,8 @@ namespace {
 
 TEST(SvgCanvas, WritesAWellFormedDocumentOfWhatWasDrawn) {
   SvgCanvas canvas(200, 100);
-  canvas.path(SvgPath().move_to({{0, 0}}).line_to({{10, 0}}).quadratic_to({{15, 5}}, {{10, 10}}).close(), {"#ff0000", "black", 1});
+  canvas.path(SvgPath().move_to({{0, 0}}).line_to({{10, 0}}).quadratic_to({{15, 5}}, {{10, 10}}).close(),
+              {"#ff0000", "black", 1});
   canvas.begin_clip({{{0, 0}}, {{50, 50}}});
   canvas.rect({{{1, 2}}, {{3, 4}}}, {"blue", "none", 0});
   canvas.end_clip();
