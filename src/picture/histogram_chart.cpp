@@ -52,6 +52,8 @@ SvgCanvas histogram_chart(const ValueSummary& summary, const HistogramLabels& la
   auto page_x = [&](double value) { return kPlot.lower[0] + (value - lower) / (upper - lower) * kPlot.width(); };
   auto page_y = [&](double count) { return kPlot.upper[1] - height(count) / count_top * kPlot.height(); };
 
+  for (double tick : count_ticks)  // grid lines behind the bars
+    canvas.line({{kPlot.lower[0], page_y(tick)}}, {{kPlot.upper[0], page_y(tick)}}, {"none", "#dddddd", 0.6});
   const auto bins = static_cast<double>(summary.histogram.size());
   for (std::size_t bin = 0; bin < summary.histogram.size(); ++bin) {
     const double from = lower + (upper - lower) * static_cast<double>(bin) / bins;
@@ -66,7 +68,6 @@ SvgCanvas histogram_chart(const ValueSummary& summary, const HistogramLabels& la
   for (double tick : count_ticks) {
     const double y = page_y(tick);
     canvas.line({{kPlot.lower[0] - 5, y}}, {{kPlot.lower[0], y}}, kAxisStyle);
-    canvas.line({{kPlot.lower[0], y}}, {{kPlot.upper[0], y}}, {"none", "#dddddd", 0.6});
     canvas.text({{kPlot.lower[0] - 8, y + 4.5}}, tick_label(tick), {13, "end"});
   }
   for (double tick : round_ticks(lower, upper, 8)) {
