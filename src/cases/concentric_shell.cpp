@@ -4,10 +4,10 @@
 
 #include <cmath>
 #include <numbers>
-#include <sstream>
 #include <string>
 
 #include "cases/gmsh_model.hpp"
+#include "cases/parameter_checks.hpp"
 #include "io/mesh_file.hpp"
 
 namespace hocav {
@@ -23,23 +23,14 @@ double shell_measure(const ShellParameters& p) {
     return 4.0 / 3.0 * std::numbers::pi * (std::pow(p.outer_radius, 3) - std::pow(p.inner_radius, 3));
 }
 
-std::string text(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
 template <int D>
 void check_parameters(const ShellParameters& p) {
-  if (!(std::isfinite(p.inner_radius) && std::isfinite(p.outer_radius) && 0 < p.inner_radius &&
-        p.inner_radius < p.outer_radius))
-    throw Error("the radii must satisfy 0 < r-in < r-out, got r-in = " + text(p.inner_radius) +
-                " and r-out = " + text(p.outer_radius));
-  if (!(std::isfinite(p.size) && p.size > 0)) throw Error("size h must be positive, got " + text(p.size));
+  check_shell_radii(p.inner_radius, p.outer_radius);
+  check_positive("size h", p.size);
   // Measure of an equilateral triangle / regular tetrahedron of edge h.
   double element_measure = D == 2 ? std::sqrt(3.0) / 4 * p.size * p.size : std::pow(p.size, 3) / (6 * std::sqrt(2.0));
   if (shell_measure<D>(p) / element_measure > kMaximumElements)
-    throw Error("size h = " + text(p.size) + " is too small: the mesh would exceed 50 million elements");
+    throw Error("size h = " + number_text(p.size) + " is too small: the mesh would exceed 50 million elements");
 }
 
 }  // namespace

@@ -28,7 +28,7 @@ std::string cases_footer() {
   std::ostringstream footer;
   footer << "Cases and their options (defaults), see `hocav generate CASE --help`:\n";
   for (const CaseDefinition& definition : case_definitions()) {
-    footer << "  " << std::left << std::setw(14) << definition.name;
+    footer << "  " << std::left << std::setw(24) << definition.name;
     for (const CaseOption& option : definition.options) footer << "  --" << option.name << ' ' << format_default(option.default_value);
     footer << '\n';
   }

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 #include "base/error.hpp"
@@ -18,9 +19,24 @@ TEST(Cases, RegistryHoldsTheDocumentedCases) {
     EXPECT_FALSE(definition.options.empty());
     EXPECT_TRUE(definition.make);
   }
-  EXPECT_EQ(names, (std::set<std::string>{"square", "cube", "annulus", "sphere-shell"}));
+  EXPECT_EQ(names, (std::set<std::string>{"square", "cube", "annulus", "sphere-shell", "polar-annulus",
+                                          "polar-annulus-bl-inner", "polar-annulus-bl-both", "shear-circle", "cubed-shell",
+                                          "cubed-shell-bl-inner", "cubed-shell-bl-both"}));
   EXPECT_EQ(find_case("annulus").dimension, 2);
   EXPECT_EQ(find_case("sphere-shell").dimension, 3);
+  EXPECT_EQ(find_case("shear-circle").dimension, 2);
+  EXPECT_EQ(find_case("cubed-shell-bl-both").dimension, 3);
+}
+
+// Small values of each case's size option.
+CaseValues coarse_values(const CaseDefinition& definition) {
+  CaseValues values;
+  for (const CaseOption& option : definition.options) {
+    if (option.name == "h") values["h"] = definition.dimension == 2 ? 0.2 : 0.4;
+    if (option.name == "target-tets") values["target-tets"] = 3000;
+    if (option.name == "target-triangles") values["target-triangles"] = 500;
+  }
+  return values;
 }
 
 TEST(Cases, UnknownCaseAndOptionAreErrorsThatNameThem) {
@@ -37,8 +53,7 @@ TEST(Cases, UnknownCaseAndOptionAreErrorsThatNameThem) {
 TEST(Cases, EveryCaseGeneratesAConsistentMeshOfItsDimension) {
   for (const CaseDefinition& definition : case_definitions()) {
     SCOPED_TRACE(definition.name);
-    CaseValues coarse{{"h", definition.dimension == 2 ? 0.2 : 0.4}};
-    AnyMesh mesh = generate_case(definition, coarse);
+    AnyMesh mesh = generate_case(definition, coarse_values(definition));
     EXPECT_EQ(mesh.index() + 2, static_cast<std::size_t>(definition.dimension));
     std::visit(
         [](const auto& m) {
@@ -56,6 +71,33 @@ TEST(Cases, SizeOptionControlsTheStructuredCases) {
   EXPECT_EQ(std::get<Mesh<2>>(mesh).element_count(), 2 * 4 * 4);
   mesh = generate_case(find_case("cube"), {{"h", 0.5}});
   EXPECT_EQ(std::get<Mesh<3>>(mesh).element_count(), 6 * 2 * 2 * 2);
+}
+
+TEST(Cases, BoundaryLayerOptionsReachTheGenerator) {
+  AnyMesh mesh = generate_case(find_case("cubed-shell-bl-inner"),
+                               {{"target-tets", 2000}, {"first-layer", 0.004}, {"growth", 1.5}, {"layers", 3}});
+  const auto& shell = std::get<Mesh<3>>(mesh);
+  std::set<double> radii;
+  for (const Vec3& x : shell.vertices()) radii.insert(std::round(norm(x) * 1e9) / 1e9);
+  auto r = radii.begin();
+  EXPECT_DOUBLE_EQ(*r, 0.5);
+  EXPECT_DOUBLE_EQ(*++r, 0.504);
+  EXPECT_DOUBLE_EQ(*++r, 0.51);
+  EXPECT_DOUBLE_EQ(*++r, 0.519);
+  EXPECT_THROW(generate_case(find_case("cubed-shell-bl-inner"), {{"layers", 2.5}}), Error);
+  EXPECT_THROW(generate_case(find_case("cubed-shell"), {{"growth", 1.1}}), Error);  // no layers, no growth
+  EXPECT_THROW(generate_case(find_case("polar-annulus-bl-both"), {{"growth", 0.8}}), Error);
+}
+
+TEST(Cases, TargetOptionPicksTheResolution) {
+  for (double target : {2000.0, 20000.0}) {
+    const AnyMesh shell_case = generate_case(find_case("cubed-shell"), {{"target-tets", target}});
+    const auto& shell = std::get<Mesh<3>>(shell_case);
+    EXPECT_NEAR(std::log(shell.element_count() / target), 0, std::log(1.3));
+    const AnyMesh annulus_case = generate_case(find_case("polar-annulus"), {{"target-triangles", target}});
+    const auto& annulus = std::get<Mesh<2>>(annulus_case);
+    EXPECT_NEAR(std::log(annulus.element_count() / target), 0, std::log(1.3));
+  }
 }
 
 }  // namespace

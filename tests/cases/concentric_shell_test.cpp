@@ -4,11 +4,9 @@
 
 #include <cmath>
 #include <numbers>
-#include <set>
 
 #include "base/error.hpp"
-#include "mesh/consistency.hpp"
-#include "mesh/measure.hpp"
+#include "shell_test_support.hpp"
 
 namespace hocav {
 namespace {
@@ -23,8 +21,7 @@ Mesh<D> generate(const ShellParameters& parameters) {
 
 template <int D>
 double exact_measure(const ShellParameters& p) {
-  double power_out = std::pow(p.outer_radius, D), power_in = std::pow(p.inner_radius, D);
-  return (D == 2 ? std::numbers::pi : 4.0 / 3.0 * std::numbers::pi) * (power_out - power_in);
+  return shell_test::exact_measure<D>(p.inner_radius, p.outer_radius);
 }
 
 // Inscribed polygons/polyhedra lose a sliver under each boundary facet: about pi r theta^2 / 6 = pi h^2 / 6
@@ -35,69 +32,20 @@ double measure_tolerance(const ShellParameters& p) {
   return D == 2 ? 2 * std::numbers::pi * h * h / 6 * 1.5 : std::numbers::pi * (p.inner_radius + p.outer_radius) * h * h / 2;
 }
 
-template <int D>
-double total_measure(const Mesh<D>& mesh) {
-  double total = 0;
-  for (Index k = 0; k < mesh.element_count(); ++k) total += element_measure(mesh, k);
-  return total;
-}
+using shell_test::total_measure;
 
 template <int D>
 void expect_valid_shell(const ShellParameters& p) {
   SCOPED_TRACE("r_in " + std::to_string(p.inner_radius) + " r_out " + std::to_string(p.outer_radius) + " h " +
                std::to_string(p.size));
   Mesh<D> mesh = generate<D>(p);
-  ConsistencyOptions options;
-  options.require_boundary_facets = true;
-  options.require_positive_orientation = true;
-  EXPECT_EQ(check_consistency(mesh, options), std::vector<std::string>{});
+  shell_test::expect_valid_shell(mesh, p.inner_radius, p.outer_radius);
   EXPECT_NEAR(total_measure(mesh), exact_measure<D>(p), measure_tolerance<D>(p));
-
-  std::set<int> element_refs, facet_refs;
-  for (Index k = 0; k < mesh.element_count(); ++k) element_refs.insert(mesh.element_ref(k));
-  EXPECT_EQ(element_refs, std::set<int>{1});
-  std::set<Index> boundary_vertices;
-  for (Index f = 0; f < mesh.facet_count(); ++f) {
-    facet_refs.insert(mesh.facet_ref(f));
-    double radius = mesh.facet_ref(f) == 1 ? p.inner_radius : p.outer_radius;
-    for (Index v : mesh.facet(f)) {
-      EXPECT_NEAR(norm(mesh.vertex(v)), radius, 1e-12 * radius) << "facet " << f << " ref " << mesh.facet_ref(f);
-      boundary_vertices.insert(v);
-    }
-  }
-  EXPECT_EQ(facet_refs, (std::set<int>{1, 2}));
-  // Inner vertices lie strictly inside the shell.
-  for (Index v = 0; v < mesh.vertex_count(); ++v) {
-    if (boundary_vertices.contains(v)) continue;
-    double r = norm(mesh.vertex(v));
-    EXPECT_GT(r, p.inner_radius * (1 + 1e-9)) << "vertex " << v;
-    EXPECT_LT(r, p.outer_radius * (1 - 1e-9)) << "vertex " << v;
-  }
-  // Divergence theorem with the field x (divergence D): the flux of x through the facets is D times
-  // the measure only if every facet is outward and they close the domain.
-  double outward_flux = 0;
-  for (Index f = 0; f < mesh.facet_count(); ++f) {
-    const auto& facet = mesh.facet(f);
-    if constexpr (D == 2)
-      outward_flux += determinant(mesh.vertex(facet[0]), mesh.vertex(facet[1]));
-    else
-      outward_flux += determinant(mesh.vertex(facet[0]), mesh.vertex(facet[1]), mesh.vertex(facet[2])) / 2.0;
-  }
-  EXPECT_NEAR(outward_flux / D, total_measure(mesh), 1e-10 * exact_measure<D>(p)) << "facets are not all outward";
 }
 
 template <int D>
 void expect_deterministic(const ShellParameters& p) {
-  Mesh<D> first = generate<D>(p), second = generate<D>(p);
-  ASSERT_EQ(first.vertex_count(), second.vertex_count());
-  ASSERT_EQ(first.element_count(), second.element_count());
-  ASSERT_EQ(first.facet_count(), second.facet_count());
-  for (Index v = 0; v < first.vertex_count(); ++v) EXPECT_EQ(first.vertex(v), second.vertex(v));
-  for (Index k = 0; k < first.element_count(); ++k) EXPECT_EQ(first.element(k), second.element(k));
-  for (Index f = 0; f < first.facet_count(); ++f) {
-    EXPECT_EQ(first.facet(f), second.facet(f));
-    EXPECT_EQ(first.facet_ref(f), second.facet_ref(f));
-  }
+  shell_test::expect_identical(generate<D>(p), generate<D>(p));
 }
 
 TEST(Annulus, DefaultIsValidAndHasTheExactArea) { expect_valid_shell<2>({}); }
