@@ -1,9 +1,9 @@
 // hocav demo [-o DIR] [--threads N] [--h H]
 // The main job on built-in cases, no input needed: the paper's "Meshes 1" pipeline on the volume
 // between two spheres (an isotropic mesh, a surface metric graded into the volume, P2 curving with
-// the P3 surrogate of the boundary), the same curving on the 2D annulus in a circular shear layer
-// (the paper's Fig. 1 metric), and pictures of both: a planar cut through the curved 3D mesh, the
-// curved 2D mesh, histograms of the edge gains and of the normalized Jacobians (SVG).
+// the P3 surrogate of the boundary), the same curving on the 2D shear-circle case (the paper's
+// Fig. 1), and pictures of both: a planar cut through the curved 3D mesh, the curved 2D mesh,
+// histograms of the edge gains and of the normalized Jacobians (SVG).
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -30,8 +30,6 @@ namespace {
 // The 3D case's metric, as `hocav metric --surface 0.01,0.1 --gradation 1.5` makes it: size 0.01
 // along the normals of both spheres, 0.1 along them, graded into the volume.
 constexpr double kShellNormalSize = 0.01, kShellTangentialSize = 0.1, kShellGradation = 1.5;
-// The 2D case: the annulus in a circular shear layer across its middle, as in the curve tests.
-constexpr double kAnnulusSize = 0.05;
 // Lattice subdivisions of each face for the cut: curved edges drawn with 8 pieces each.
 constexpr int kCutSubdivisions = 8;
 // Min normalized Jacobian colours: 0 (dark, a degenerate element) to 1 (yellow, as the straight
@@ -129,26 +127,23 @@ CurvingReport run_sphere_shell(const DemoOptions& options, Written& written) {
   return report;
 }
 
-// The 2D case: the annulus curved in a circular shear layer, drawn exactly.
-CurvingReport run_annulus(const DemoOptions& options, Written& written) {
-  Mesh<2> mesh = generated<2>("annulus", {{"h", kAnnulusSize}});
+// The 2D case, the paper's Fig. 1: the shear-circle case (a unit mesh of the shear-circle metric,
+// whose options default to the analytic metric's) curved in that metric, drawn exactly.
+CurvingReport run_shear_circle(const DemoOptions& options, Written& written) {
+  Mesh<2> mesh = generated<2>("shear-circle", {});
   AnalyticMetricSpec shear;
   shear.name = "shear-circle";
-  shear.radius = 0.75;
-  shear.width = 0.05;
-  shear.h_min = 0.005;
-  shear.h_max = kAnnulusSize;
   const MetricField<2> field(mesh, analytic_metric_at_vertices(shear, mesh));
-  progress("curving the annulus in a circular shear layer (" + mesh_summary(mesh) + ")");
+  progress("curving it in its metric (" + mesh_summary(mesh) + ")");
   CurvingSettings settings;
   settings.threads = options.threads;
   const CurvingReport report = curve_in_metric(mesh, field, settings);
-  MeshFigureOptions figure{"Curved annulus in a circular shear layer (2D)",
+  MeshFigureOptions figure{"Shear-circle case (the paper's Fig. 1), curved",
                            "P2 triangles drawn exactly (quadratic Bézier edges), filled by their min normalized Jacobian; "
-                           "the layer is at radius 0.75",
+                           "sizes 0.001 across the circle r = 0.75, 0.1 along it",
                            kJacobianColors, "min normalized Jacobian",
-                           Box{{{0.45, 0.45}}, {{0.65, 0.65}}}};  // the detail: where the layer meets x = y
-  write_svg(written.path(options, "annulus-p2.svg", "the curved 2D mesh"),
+                           Box{{{-0.06, 0.69}}, {{0.06, 0.81}}}};  // the detail: the layer at its top
+  write_svg(written.path(options, "shear-circle-p2.svg", "the curved 2D mesh"),
             p2_mesh_picture(mesh, min_normalized_jacobians(mesh), figure));
   return report;
 }
@@ -160,13 +155,14 @@ void run_demo(const DemoOptions& options) {
     throw Error(options.directory + ": cannot make this output folder" + (error ? " (" + error.message() + ")" : ""));
   Written written;
   const CurvingReport shell = run_sphere_shell(options, written);
-  const CurvingReport annulus = run_annulus(options, written);
+  const CurvingReport shear_circle = run_shear_circle(options, written);
   std::cout << "curved the sphere shell:\n";
   write_curving_report_table(std::cout, shell);
   char line[200];
   std::snprintf(line, sizeof line,
-                "curved the annulus (2D): %d triangles, normalized Jacobian min %.3g, gain avg / max %.2f%% / %.1f%%",
-                annulus.elements, annulus.normalized_jacobian.min, 100 * annulus.average_gain, 100 * annulus.max_gain);
+                "curved the shear circle (2D): %d triangles, normalized Jacobian min %.3g, gain avg / max %.2f%% / %.1f%%",
+                shear_circle.elements, shear_circle.normalized_jacobian.min, 100 * shear_circle.average_gain,
+                100 * shear_circle.max_gain);
   std::cout << line << '\n';
   std::size_t width = 0;
   for (const auto& file : written.files) width = std::max(width, file.first.size());
@@ -180,7 +176,7 @@ void run_demo(const DemoOptions& options) {
 void add_demo_command(CLI::App& app) {
   auto options = std::make_shared<DemoOptions>();
   CLI::App* command = app.add_subcommand(
-      "demo", "The main job, no input needed: curve the sphere-shell case (and a 2D annulus), write the P2 mesh, "
+      "demo", "The main job, no input needed: curve the sphere-shell case (and the 2D shear circle), write the P2 mesh, "
               "the report and pictures");
   command->add_option("-o,--output", options->directory, "folder of the output files (created if needed)")
       ->capture_default_str();

@@ -19,7 +19,7 @@ int element_count(const std::string& outline, const std::string& element) {
 TEST_F(DemoCli, WritesTheCurvedMeshTheReportAndThePictures) {
   Outcome demo = run_ok("demo --h 0.25 --threads 2 -o results");
   const std::vector<std::string> names{"sphere-shell-p2.meshb", "sphere-shell-p2.vtu", "sphere-shell-report.json",
-                                       "sphere-shell-cut.svg",  "annulus-p2.svg",      "edge-gains.svg",
+                                       "sphere-shell-cut.svg",  "shear-circle-p2.svg", "edge-gains.svg",
                                        "normalized-jacobians.svg"};
   for (const std::string& name : names) {
     EXPECT_TRUE(fs::is_regular_file(path("results/" + name))) << name;
@@ -42,9 +42,9 @@ TEST_F(DemoCli, WritesTheCurvedMeshTheReportAndThePictures) {
   const std::string cut = picture_test::parsed_svg_outline(read("results/sphere-shell-cut.svg"));
   EXPECT_GT(element_count(cut, "path"), 100) << cut;
   EXPECT_EQ(element_count(cut, "clipPath"), 1) << cut;  // the enlarged detail
-  const std::string annulus_svg = read("results/annulus-p2.svg");
-  EXPECT_GT(element_count(picture_test::parsed_svg_outline(annulus_svg), "path"), 1000);
-  EXPECT_NE(annulus_svg.find(" Q"), std::string::npos);
+  const std::string shear_circle_svg = read("results/shear-circle-p2.svg");
+  EXPECT_GT(element_count(picture_test::parsed_svg_outline(shear_circle_svg), "path"), 1000);
+  EXPECT_NE(shear_circle_svg.find(" Q"), std::string::npos);
   for (const char* histogram : {"results/edge-gains.svg", "results/normalized-jacobians.svg"})
     EXPECT_GE(element_count(picture_test::parsed_svg_outline(read(histogram)), "rect"), 20) << histogram;
 }
