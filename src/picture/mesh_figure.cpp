@@ -1,12 +1,13 @@
 #include "picture/mesh_figure.hpp"
 
+#include <cstdio>
+
 #include "picture/color_bar.hpp"
 
 namespace hocav {
 namespace {
 
 constexpr double kPanel = 540, kMargin = 24, kTop = 78, kLegend = 120;
-const ShapeStyle kFrameStyle{"none", "#888888", 1};
 const ShapeStyle kDetailStyle{"none", "#d62728", 1.6};
 
 Box panel_box(int column) {
