@@ -1,9 +1,12 @@
-// hocav stats MESH [--metric SOL] [--json]: counts, refs, P1 measures, the consistency verdict and
-// memory of a mesh; with a metric, the edge lengths in it and its largest anisotropy. A table for
-// people or one JSON object.
+// hocav stats MESH [--metric SOL] [--json]: counts, refs, P1 measures, the consistency verdict, the
+// certified Jacobian figures and memory of a mesh; with a metric, the edge lengths in it and its
+// largest anisotropy. A table for people or one JSON object. An invalid mesh (inconsistent, or an
+// element not certified positive) is reported in full, then named on stderr with exit code 2, so
+// that scripts stop on it as they would with a checker.
 #include <iostream>
 #include <memory>
 
+#include "base/error.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
 #include "report/mesh_statistics.hpp"
@@ -29,6 +32,10 @@ void run_stats(const StatsOptions& options) {
     write_statistics_json(std::cout, statistics, options.mesh, options.metric);
   else
     write_statistics_table(std::cout, statistics, options.mesh, options.metric);
+  if (!statistics.valid()) {
+    std::cout.flush();  // the report first, then the one-line verdict
+    throw Error(options.mesh + ": invalid mesh: " + invalidity_summary(statistics));
+  }
 }
 
 }  // namespace
@@ -36,7 +43,8 @@ void run_stats(const StatsOptions& options) {
 void add_stats_command(CLI::App& app) {
   auto options = std::make_shared<StatsOptions>();
   CLI::App* command = app.add_subcommand(
-      "stats", "Report a mesh: counts, refs, P1 measures, consistency, memory; edge lengths in a metric");
+      "stats", "Report a mesh: counts, refs, P1 measures, consistency, Jacobian figures, memory; edge lengths in a metric. "
+      "Exit code 2 when the mesh is invalid");
   command->add_option("mesh", options->mesh, "mesh to read (.mesh, .meshb, .msh)")->required();
   command->add_option("--metric", options->metric,
                       "metric of the mesh (.sol/.solb): adds the Riemannian edge lengths in the metric (min/mean/max, "

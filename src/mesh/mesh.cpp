@@ -2,6 +2,7 @@
 #include "mesh/mesh.hpp"
 
 #include <algorithm>
+#include <array>
 #include <string>
 
 #include "base/error.hpp"
@@ -136,6 +137,14 @@ int local_face_of(const typename Mesh<D>::Element& element, const Index* vertice
   return -1;
 }
 
+// A face of an element seen from its smallest vertex: the D - 1 other vertices, sorted.
+template <int D>
+struct FaceAtVertex {
+  std::array<Index, D - 1> others;
+  Index element;
+  int face;
+};
+
 }  // namespace
 
 template <int D>
@@ -143,34 +152,44 @@ void Mesh<D>::build_topology() {
   std::vector<Index> offsets, incident;
   build_vertex_elements(*this, offsets, incident);
 
-  adjacency_.assign(elements_.size(), Element{});
-  for (auto& row : adjacency_) row.fill(kNoIndex - 1);  // "not yet searched"
-  for (Index k = 0; k < element_count(); ++k) {
-    for (int face = 0; face <= D; ++face) {
-      if (adjacency_[k][face] != kNoIndex - 1) continue;
-      Index face_vertices[D];
-      for (int i = 0; i < D; ++i) face_vertices[i] = elements_[k][hocav::face_vertices<D>(face)[i]];
-      // Candidates: elements around the face's first vertex that hold the whole face.
-      Index found = kNoIndex;
-      int found_face = -1;
-      Index v = face_vertices[0];
-      for (Index slot = offsets[v]; slot < offsets[v + 1]; ++slot) {
-        Index other = incident[slot];
-        if (other == k) continue;
-        int other_face = local_face_of<D>(elements_[other], face_vertices);
-        if (other_face < 0) continue;
-        if (found != kNoIndex)
-          throw Error("non-manifold mesh: the face of element " + std::to_string(k + 1) + " opposite its vertex " +
-                      std::to_string(face + 1) + " is shared by more than two elements");
-        found = other;
-        found_face = other_face;
+  // Each face is matched once, at its smallest vertex v: the faces of v's ball whose smallest
+  // vertex is v are sorted by their other vertices, so a shared face is two equal neighbours.
+  Element boundary;
+  boundary.fill(kNoIndex);
+  adjacency_.assign(elements_.size(), boundary);
+  std::vector<FaceAtVertex<D>> faces;
+  for (Index v = 0; v < vertex_count(); ++v) {
+    faces.clear();
+    for (Index slot = offsets[v]; slot < offsets[v + 1]; ++slot) {
+      Index k = incident[slot];
+      for (int face = 0; face <= D; ++face) {
+        FaceAtVertex<D> entry{{}, k, face};
+        int count = 0;
+        bool smallest = true;
+        for (int i = 0; i < D; ++i) {
+          Index w = elements_[k][hocav::face_vertices<D>(face)[i]];
+          if (w == v) continue;
+          smallest = smallest && w > v;
+          if (count < D - 1) entry.others[count] = w;
+          ++count;
+        }
+        if (count == D - 1 && smallest) {
+          std::sort(entry.others.begin(), entry.others.end());
+          faces.push_back(entry);
+        }
       }
-      adjacency_[k][face] = found;
-      if (found != kNoIndex) {
-        if (adjacency_[found][found_face] != kNoIndex - 1)
-          throw Error("non-manifold mesh: element " + std::to_string(found + 1) + " meets more than one element across one face");
-        adjacency_[found][found_face] = k;
-      }
+    }
+    std::sort(faces.begin(), faces.end(), [](const auto& a, const auto& b) { return a.others < b.others; });
+    for (std::size_t i = 0; i < faces.size();) {
+      std::size_t j = i + 1;
+      while (j < faces.size() && faces[j].others == faces[i].others) ++j;
+      if (j - i > 2)
+        throw Error("non-manifold mesh: the face of element " + std::to_string(faces[i].element + 1) + " opposite its vertex " +
+                    std::to_string(faces[i].face + 1) + " is shared by more than two elements");
+      Index across = j - i == 2 ? faces[i + 1].element : kNoIndex;
+      adjacency_[faces[i].element][faces[i].face] = across;
+      if (across != kNoIndex) adjacency_[across][faces[i + 1].face] = faces[i].element;
+      i = j;
     }
   }
 

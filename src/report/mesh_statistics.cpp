@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "bezier/mesh_quality.hpp"
 #include "curve/edge_length.hpp"
 #include "geom/sym_functions.hpp"
 #include "mesh/consistency.hpp"
@@ -72,6 +73,31 @@ MetricStatistics metric_statistics(const Mesh<D>& mesh, std::span<const double> 
   return s;
 }
 
+template <int D>
+JacobianStatistics jacobian_statistics(const Mesh<D>& mesh) {
+  const std::vector<JacobianQuality> qualities = mesh_jacobian_quality(mesh, kReportedRefinement);
+  const MeshJacobianSummary summary = summarize_jacobian_quality(qualities);
+  auto figures = [](const ValueSummary& values) {
+    JacobianFigures f;
+    f.min = values.min;
+    f.average = values.average;
+    f.max = values.max;
+    return f;
+  };
+  JacobianStatistics s;
+  s.min_normalized = figures(summary.min_normalized_jacobian);
+  s.scaled = figures(summary.scaled_jacobian);
+  s.invalid = summary.min_normalized_jacobian.invalid_count;
+  s.straight = !mesh.is_p2();
+  for (std::size_t k = 0; k < qualities.size(); ++k) {
+    const std::size_t bin = jacobian_bin(qualities[k].min_normalized_jacobian);
+    ++s.min_normalized.histogram[bin];
+    ++s.scaled.histogram[jacobian_bin(qualities[k].scaled_jacobian)];
+    if (bin == 0 && s.first_invalid_element == kNoIndex) s.first_invalid_element = static_cast<Index>(k);
+  }
+  return s;
+}
+
 std::string number(double value) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.6g", value);
@@ -91,6 +117,15 @@ std::string bin_label(std::size_t bin) {
   label.append(bin == 0 ? "0" : bound(bounds[bin - 1])).append(", ");
   label.append(bin == bounds.size() ? "inf" : bound(bounds[bin]));
   label.push_back(bin < kUnitEdgeBin || bin == bounds.size() ? ')' : ']');
+  return label;
+}
+
+// "(-inf, 0]", "(0.01, 0.1]", "(1, inf)".
+std::string jacobian_bin_label(std::size_t bin) {
+  const auto& bounds = kJacobianBinBounds;
+  std::string label("(");
+  label.append(bin == 0 ? "-inf" : bound(bounds[bin - 1])).append(", ");
+  label.append(bin == bounds.size() ? "inf" : bound(bounds[bin])).push_back(bin == bounds.size() ? ')' : ']');
   return label;
 }
 
@@ -117,6 +152,21 @@ std::string percent(double share) {
   return buffer;
 }
 
+// The bounds of a histogram bin in JSON: "from" and "to", null for an infinite end.
+void write_bin_bounds(JsonWriter& json, const std::string& label, std::optional<double> from, std::optional<double> to) {
+  json.member("bin", label).key("from");
+  if (from) json.value(*from);
+  else json.null();
+  json.key("to");
+  if (to) json.value(*to);
+  else json.null();
+}
+
+void write_jacobian_figures_json(JsonWriter& json, std::string_view name, const JacobianFigures& figures) {
+  json.key(name).begin_object().member("min", figures.min).member("avg", figures.average).member("max", figures.max);
+  json.end_object();
+}
+
 void write_refs_json(JsonWriter& json, std::string_view name, const std::vector<RefCount>& refs) {
   json.key(name).begin_array();
   for (const RefCount& r : refs) json.begin_object().member("ref", r.ref).member("count", r.count).end_object();
@@ -134,6 +184,27 @@ std::size_t edge_length_bin(double length) {
     if (i < kUnitEdgeBin ? length >= bound : length > bound) bin = i + 1;
   }
   return bin;
+}
+
+std::size_t jacobian_bin(double value) {
+  std::size_t bin = 0;
+  for (std::size_t i = 0; i < kJacobianBinBounds.size(); ++i) {
+    const bool last = i + 1 == kJacobianBinBounds.size();  // the bound 1
+    if (value > kJacobianBinBounds[i] * (last ? 1 + kJacobianBinSlack : 1.0)) bin = i + 1;
+  }
+  return bin;
+}
+
+std::string invalidity_summary(const MeshStatistics& s) {
+  std::string summary;
+  const JacobianStatistics& jacobian = s.jacobian;
+  if (jacobian.invalid > 0)
+    summary = std::to_string(jacobian.invalid) + (jacobian.invalid == 1 ? " element" : " elements") +
+              " with a non-positive Jacobian (first: element " + std::to_string(jacobian.first_invalid_element + 1) + ")";
+  if (!s.consistency_problems.empty())
+    summary += (summary.empty() ? "" : "; ") + std::string("consistency: ") +
+               std::to_string(s.consistency_problems.size()) + " problems (first: " + s.consistency_problems.front() + ")";
+  return summary;
 }
 
 template <int D>
@@ -170,6 +241,7 @@ MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> no
   ConsistencyOptions options;
   options.require_positive_orientation = !mesh.is_p2();  // a valid curved element may be an inverted P1 one
   s.consistency_problems = check_consistency(mesh, options);
+  s.jacobian = jacobian_statistics(mesh);
   if (!node_metrics.empty()) s.metric = metric_statistics(mesh, node_metrics);
   return s;
 }
@@ -207,6 +279,29 @@ void write_statistics_table(std::ostream& out, const MeshStatistics& s, const st
     row("consistency", "FAILED (" + std::to_string(s.consistency_problems.size()) + " problems listed)");
     for (const std::string& problem : s.consistency_problems) row("", problem);
   }
+  const JacobianStatistics& jacobian = s.jacobian;
+  auto figures_text = [](const JacobianFigures& f) {
+    return "min " + number(f.min) + "  avg " + number(f.average) + "  max " + number(f.max);
+  };
+  row("normalized Jacobian", figures_text(jacobian.min_normalized) +
+                                 (jacobian.straight ? "  (straight P1 elements: 1, or -1 when inverted)"
+                                                    : "  (per element: certified min of J / |J straight|)"));
+  row("scaled Jacobian", figures_text(jacobian.scaled) + "  (per element: min J / max J)");
+  row("invalid elements", std::to_string(jacobian.invalid) +
+                              (jacobian.invalid > 0 ? " (first: element " + std::to_string(jacobian.first_invalid_element + 1) + ")"
+                                                    : ""));
+  if (!jacobian.straight) {
+    std::ostringstream header;
+    header << std::right << std::setw(10) << "normalized" << std::setw(10) << "scaled";
+    row("Jacobian histogram", header.str());
+    for (std::size_t bin = 0; bin < jacobian.min_normalized.histogram.size(); ++bin) {
+      std::ostringstream counts;
+      counts << std::right << std::setw(10) << jacobian.min_normalized.histogram[bin] << std::setw(10)
+             << jacobian.scaled.histogram[bin];
+      row(std::string(2, ' ').append(jacobian_bin_label(bin)), counts.str());
+    }
+  }
+  row("valid", s.valid() ? "yes" : "NO: " + invalidity_summary(s));
   row("memory", memory_text(s.memory_bytes));
   if (!s.metric) return;
   const MetricStatistics& metric = *s.metric;
@@ -244,6 +339,23 @@ void write_statistics_json(std::ostream& out, const MeshStatistics& s, const std
   json.key("problems").begin_array();
   for (const std::string& problem : s.consistency_problems) json.value(problem);
   json.end_array().end_object();
+  const JacobianStatistics& jacobian = s.jacobian;
+  json.key("jacobian").begin_object().member("straight", jacobian.straight);
+  write_jacobian_figures_json(json, "min_normalized", jacobian.min_normalized);
+  write_jacobian_figures_json(json, "scaled", jacobian.scaled);
+  json.member("invalid", jacobian.invalid).key("first_invalid_element");
+  if (jacobian.invalid > 0) json.value(jacobian.first_invalid_element + 1);
+  else json.null();
+  json.key("histogram").begin_array();
+  for (std::size_t bin = 0; bin < jacobian.min_normalized.histogram.size(); ++bin) {
+    json.begin_object();
+    write_bin_bounds(json, jacobian_bin_label(bin), bin == 0 ? std::nullopt : std::optional(kJacobianBinBounds[bin - 1]),
+                     bin < kJacobianBinBounds.size() ? std::optional(kJacobianBinBounds[bin]) : std::nullopt);
+    json.member("min_normalized", jacobian.min_normalized.histogram[bin]);
+    json.member("scaled", jacobian.scaled.histogram[bin]).end_object();
+  }
+  json.end_array().end_object();
+  json.member("valid", s.valid());
   json.member("memory_bytes", s.memory_bytes);
   if (s.metric) {
     const MetricStatistics& metric = *s.metric;
@@ -252,11 +364,9 @@ void write_statistics_json(std::ostream& out, const MeshStatistics& s, const std
     json.member("min", metric.min).member("mean", metric.mean).member("max", metric.max).end_object();
     json.key("histogram").begin_array();
     for (std::size_t bin = 0; bin < metric.histogram.size(); ++bin) {
-      json.begin_object().member("bin", bin_label(bin));
-      json.member("from", bin == 0 ? 0.0 : kEdgeLengthBinBounds[bin - 1]);
-      json.key("to");
-      if (bin < kEdgeLengthBinBounds.size()) json.value(kEdgeLengthBinBounds[bin]);
-      else json.null();
+      json.begin_object();
+      write_bin_bounds(json, bin_label(bin), bin == 0 ? 0.0 : kEdgeLengthBinBounds[bin - 1],
+                       bin < kEdgeLengthBinBounds.size() ? std::optional(kEdgeLengthBinBounds[bin]) : std::nullopt);
       json.member("count", metric.histogram[bin]).end_object();
     }
     json.end_array();

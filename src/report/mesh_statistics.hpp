@@ -1,5 +1,6 @@
 // The figures `hocav stats` reports about a mesh (and optionally the metric that goes with it),
-// and their two renderings: an aligned table for people and one JSON object for scripts.
+// its validity verdict, and their two renderings: an aligned table for people and one JSON object
+// for scripts.
 #pragma once
 
 #include <array>
@@ -38,6 +39,30 @@ struct MetricStatistics {
   double max_anisotropy = 0;
 };
 
+// The per-element Jacobian figures (certified bounds, src/bezier/), binned at these bounds: bins
+// (−inf, 0] (invalid), (0, 0.01] (below the default floor of `hocav curve`), (0.01, 0.1], …,
+// (0.9, 1], (1, inf), all closed on the right. The bound 1 is compared with a relative slack of
+// kJacobianBinSlack: a straight element is 1 up to rounding, and belongs to (0.9, 1].
+inline constexpr std::array<double, 8> kJacobianBinBounds{0.0, 0.01, 0.1, 0.3, 0.5, 0.7, 0.9, 1.0};
+inline constexpr double kJacobianBinSlack = 1e-12;
+using JacobianHistogram = std::array<Index, kJacobianBinBounds.size() + 1>;
+
+struct JacobianFigures {
+  double min = 0, average = 0, max = 0;  // over the elements, the average unweighted
+  JacobianHistogram histogram{};
+};
+
+struct JacobianStatistics {
+  // Per element, the refined lower bound of min J / |J_straight| (1 for a straight element; ≤ 0:
+  // not proven positive) and gmsh's scaled Jacobian min J / max J.
+  JacobianFigures min_normalized, scaled;
+  // Elements whose certified lower bound of min J is ≤ 0: J ≤ 0 somewhere, or J so close to 0
+  // (within 1e-6 of max |J|) that it cannot be proven positive. For a P1 mesh: inverted or flat.
+  Index invalid = 0;
+  Index first_invalid_element = kNoIndex;
+  bool straight = false;  // a P1 mesh: every figure is 1, or −1 for an inverted element
+};
+
 struct MeshStatistics {
   int dimension = 2;
   int order = 1;
@@ -51,8 +76,12 @@ struct MeshStatistics {
   Index open_boundary_faces = 0;
   // The consistency checker's verdict (P1 orientation is required of P1 meshes only).
   std::vector<std::string> consistency_problems;
+  JacobianStatistics jacobian;
   std::size_t memory_bytes = 0;
   std::optional<MetricStatistics> metric;
+
+  // Valid: consistent, and every element certified with a positive Jacobian.
+  bool valid() const { return consistency_problems.empty() && jacobian.invalid == 0; }
 };
 
 // Computes the statistics; builds the mesh's edge table when it has none (so memory_bytes is taken
@@ -67,6 +96,13 @@ MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> no
 
 // The bin of an edge length (index into MetricStatistics::histogram).
 std::size_t edge_length_bin(double length);
+
+// The bin of a Jacobian figure (index into JacobianFigures::histogram); NaN goes to the first.
+std::size_t jacobian_bin(double value);
+
+// Why a mesh is not valid, in one line: "2 invalid elements (first: element 7), consistency: 3
+// problems (first: ...)"; empty for a valid mesh.
+std::string invalidity_summary(const MeshStatistics& statistics);
 
 // The mesh and metric file names head the report; metric_name is empty when there is no metric.
 void write_statistics_table(std::ostream& out, const MeshStatistics& statistics, const std::string& mesh_name,

@@ -74,6 +74,124 @@ TEST(MeshStatistics, ReportsInvertedElementsAndOpenFaces) {
   EXPECT_EQ(s.open_boundary_faces, 3);
   EXPECT_FALSE(s.consistency_problems.empty());
   EXPECT_EQ(s.element_refs[0].ref, 7);
+  // P1: the Jacobian figures are the sign check of straight elements.
+  EXPECT_TRUE(s.jacobian.straight);
+  EXPECT_EQ(s.jacobian.invalid, 1);
+  EXPECT_EQ(s.jacobian.first_invalid_element, 0);
+  EXPECT_NEAR(s.jacobian.min_normalized.min, -1, 1e-12);
+  EXPECT_NEAR(s.jacobian.scaled.max, -1, 1e-12);
+  EXPECT_EQ(s.jacobian.min_normalized.histogram[0], 1);
+  EXPECT_FALSE(s.valid());
+  EXPECT_EQ(invalidity_summary(s).rfind("1 element with a non-positive Jacobian (first: element 1); consistency: ", 0), 0u)
+      << invalidity_summary(s);
+}
+
+TEST(MeshStatistics, StraightElementsAreOneAndInTheBinUpToOne) {
+  Mesh<3> mesh = generate_cube(2);
+  MeshStatistics s = compute_mesh_statistics(mesh);
+  EXPECT_TRUE(s.jacobian.straight);
+  EXPECT_EQ(s.jacobian.invalid, 0);
+  EXPECT_EQ(s.jacobian.first_invalid_element, kNoIndex);
+  for (const JacobianFigures* f : {&s.jacobian.min_normalized, &s.jacobian.scaled}) {
+    EXPECT_NEAR(f->min, 1, 1e-12);
+    EXPECT_NEAR(f->max, 1, 1e-12);
+    EXPECT_EQ(f->histogram[kJacobianBinBounds.size() - 1], s.elements);  // (0.9, 1]
+  }
+  EXPECT_TRUE(s.valid());
+  EXPECT_EQ(invalidity_summary(s), "");
+  mesh.make_p2();  // straight P2 elements: the same figures, now from the Bézier coefficients
+  MeshStatistics p2 = compute_mesh_statistics(mesh);
+  EXPECT_FALSE(p2.jacobian.straight);
+  EXPECT_NEAR(p2.jacobian.min_normalized.min, 1, 1e-12);
+  EXPECT_EQ(p2.jacobian.scaled.histogram[kJacobianBinBounds.size() - 1], p2.elements);
+}
+
+// Unit right simplices, each with the mid node of its edge 01 moved by d along y: the map is
+// x = ξ + 4 λ0 ξ1 d e_y, so J = 1 − 4 d ξ1 exactly (det(I + e_y ⊗ ∇g) = 1 + ∂g/∂ξ_y): min J/|J_straight|
+// = min(1, 1 − 4d), max = max(1, 1 − 4d), both reached at vertices.
+template <int D>
+Mesh<D> simplices_with_a_curved_edge(const std::vector<double>& displacements) {
+  Mesh<D> mesh;
+  for (std::size_t i = 0; i < displacements.size(); ++i) {
+    typename Mesh<D>::Element element;
+    for (int v = 0; v <= D; ++v) {
+      Vec<D> x{};
+      x[0] = 3.0 * static_cast<double>(i);  // side by side, apart
+      if (v > 0) x[v - 1] += 1;
+      element[v] = mesh.add_vertex(x);
+    }
+    mesh.add_element(element);
+  }
+  mesh.build_topology();
+  mesh.make_p2();
+  for (std::size_t i = 0; i < displacements.size(); ++i) {
+    const auto& element = mesh.element(static_cast<Index>(i));
+    mesh.edge_node(mesh.find_edge(element[0], element[1]))[1] += displacements[i];
+  }
+  return mesh;
+}
+
+struct ExactJacobian {
+  double min_normalized, scaled;
+};
+
+ExactJacobian exact_jacobian_of_curved_edge(double d) {
+  const double at_v1 = 1 - 4 * d, low = std::min(1.0, at_v1), high = std::max(1.0, at_v1);
+  return {low, low / high};
+}
+
+TEST(MeshStatistics, JacobianFiguresOfCurvedTrianglesMatchTheExactJacobian) {
+  const std::vector<double> displacements{0.0, 0.1, -0.2, 0.3};  // straight, inward, outward, folded
+  Mesh<2> mesh = simplices_with_a_curved_edge<2>(displacements);
+  MeshStatistics s = compute_mesh_statistics(mesh);
+  std::vector<double> normalized, scaled;
+  for (double d : displacements) {
+    normalized.push_back(exact_jacobian_of_curved_edge(d).min_normalized);
+    scaled.push_back(exact_jacobian_of_curved_edge(d).scaled);
+  }
+  auto average = [](const std::vector<double>& v) { return (v[0] + v[1] + v[2] + v[3]) / 4; };
+  EXPECT_FALSE(s.jacobian.straight);
+  EXPECT_NEAR(s.jacobian.min_normalized.min, -0.2, 1e-12);
+  EXPECT_NEAR(s.jacobian.min_normalized.max, 1, 1e-12);
+  EXPECT_NEAR(s.jacobian.min_normalized.average, average(normalized), 1e-12);
+  EXPECT_NEAR(s.jacobian.scaled.min, -0.2, 1e-12);
+  EXPECT_NEAR(s.jacobian.scaled.max, 1, 1e-12);
+  EXPECT_NEAR(s.jacobian.scaled.average, average(scaled), 1e-12);
+  EXPECT_EQ(s.jacobian.invalid, 1);
+  EXPECT_EQ(s.jacobian.first_invalid_element, 3);
+  // 1, 0.6, 1, −0.2 and 1, 0.6, 1/1.8, −0.2 in the bins (−inf, 0], …, (0.5, 0.7], (0.7, 0.9], (0.9, 1].
+  EXPECT_EQ(s.jacobian.min_normalized.histogram, (JacobianHistogram{1, 0, 0, 0, 0, 1, 0, 2, 0}));
+  EXPECT_EQ(s.jacobian.scaled.histogram, (JacobianHistogram{1, 0, 0, 0, 0, 2, 0, 1, 0}));
+  EXPECT_TRUE(s.consistency_problems.empty());  // a P2 mesh is not held to P1 orientation
+  EXPECT_FALSE(s.valid());
+  EXPECT_EQ(invalidity_summary(s), "1 element with a non-positive Jacobian (first: element 4)");
+}
+
+TEST(MeshStatistics, JacobianFiguresOfCurvedTetrahedraMatchTheExactJacobian) {
+  Mesh<3> mesh = simplices_with_a_curved_edge<3>({0.15, -0.1});
+  MeshStatistics s = compute_mesh_statistics(mesh);
+  const ExactJacobian inward = exact_jacobian_of_curved_edge(0.15), outward = exact_jacobian_of_curved_edge(-0.1);
+  EXPECT_NEAR(s.jacobian.min_normalized.min, inward.min_normalized, 1e-12);
+  EXPECT_NEAR(s.jacobian.min_normalized.max, outward.min_normalized, 1e-12);
+  EXPECT_NEAR(s.jacobian.scaled.min, inward.scaled, 1e-12);  // 0.4
+  EXPECT_NEAR(s.jacobian.scaled.max, outward.scaled, 1e-12);  // 1 / 1.4
+  EXPECT_NEAR(s.jacobian.scaled.average, (inward.scaled + outward.scaled) / 2, 1e-12);
+  EXPECT_EQ(s.jacobian.invalid, 0);
+  EXPECT_TRUE(s.valid());
+}
+
+TEST(MeshStatistics, JacobianBinsAreClosedOnTheRight) {
+  EXPECT_EQ(jacobian_bin(-1.0), 0u);
+  EXPECT_EQ(jacobian_bin(0.0), 0u);
+  EXPECT_EQ(jacobian_bin(std::nan("")), 0u);
+  EXPECT_EQ(jacobian_bin(1e-300), 1u);
+  EXPECT_EQ(jacobian_bin(0.01), 1u);
+  EXPECT_EQ(jacobian_bin(0.05), 2u);
+  EXPECT_EQ(jacobian_bin(0.95), 7u);
+  EXPECT_EQ(jacobian_bin(1.0), 7u);
+  EXPECT_EQ(jacobian_bin(1 + 1e-14), 7u);  // a straight element, rounded
+  EXPECT_EQ(jacobian_bin(1 + 1e-9), 8u);
+  EXPECT_EQ(jacobian_bin(15.0), 8u);
 }
 
 TEST(MeshStatistics, EdgeLengthsInAUniformMetric) {
@@ -174,6 +292,10 @@ TEST(MeshStatistics, TableAndJsonCarryTheFigures) {
   EXPECT_NE(json.str().find("\"consistent\": true"), std::string::npos) << json.str();
   EXPECT_NE(json.str().find("\"unit_share\": 1"), std::string::npos) << json.str();
   EXPECT_NE(json.str().find("\"file\": \"square.sol\""), std::string::npos) << json.str();
+  EXPECT_NE(table.str().find("valid                 yes"), std::string::npos) << table.str();
+  EXPECT_NE(table.str().find("invalid elements      0"), std::string::npos) << table.str();
+  EXPECT_NE(json.str().find("\"valid\": true"), std::string::npos) << json.str();
+  EXPECT_NE(json.str().find("\"straight\": true"), std::string::npos) << json.str();
   EXPECT_EQ(json.str().back(), '\n');
 }
 
