@@ -85,11 +85,11 @@ double cubed_sphere_shell_tet_count(int cells_per_side, std::size_t radii) {
 Mesh<3> generate_cubed_sphere_shell(int n, std::span<const double> radii) {
   if (n < 1) throw Error("a cubed-sphere shell needs at least one cell per cube side, got " + std::to_string(n));
   check_layer_radii(radii);
+  const auto layers = radii.size() - 1;
+  checked_index((6 * static_cast<std::size_t>(n) * static_cast<std::size_t>(n) + 2) * radii.size(), "vertices");
+  checked_index(36 * static_cast<std::size_t>(n) * static_cast<std::size_t>(n) * layers, "tetrahedra");
   const SphereGrid grid = cubed_sphere_grid(n);
   const auto surface_vertices = static_cast<Index>(grid.directions.size());
-  const auto layers = radii.size() - 1;
-  checked_index(grid.directions.size() * radii.size(), "vertices");
-  checked_index(grid.triangles.size() * 3 * layers, "tetrahedra");
 
   Mesh<3> mesh;
   for (double radius : radii)
@@ -117,10 +117,9 @@ Mesh<3> generate_cubed_sphere_shell(int n, std::span<const double> radii) {
 }
 
 Mesh<3> generate_cubed_sphere_shell(const ShellLayering& layering, double target_tets) {
-  const int n = resolution_for_target("target-tets", target_tets, 1, [&layering](int cells) {
-    return cubed_sphere_shell_tet_count(cells, layer_radii(layering, cubed_sphere_angular_step(cells)).size());
-  });
-  return generate_cubed_sphere_shell(n, layer_radii(layering, cubed_sphere_angular_step(n)));
+  const auto [n, radii] = layered_resolution_for_target("target-tets", target_tets, 1, layering, cubed_sphere_angular_step,
+                                                         cubed_sphere_shell_tet_count);
+  return generate_cubed_sphere_shell(n, radii);
 }
 
 }  // namespace hocav

@@ -40,10 +40,9 @@ Mesh<2> generate_polar_annulus(int sectors, std::span<const double> radii) {
 }
 
 Mesh<2> generate_polar_annulus(const ShellLayering& layering, double target_triangles) {
-  const int sectors = resolution_for_target("target-triangles", target_triangles, 3, [&layering](int m) {
-    return polar_annulus_triangle_count(m, layer_radii(layering, polar_angular_step(m)).size());
-  });
-  return generate_polar_annulus(sectors, layer_radii(layering, polar_angular_step(sectors)));
+  const auto [sectors, radii] = layered_resolution_for_target("target-triangles", target_triangles, 3, layering,
+                                                               polar_angular_step, polar_annulus_triangle_count);
+  return generate_polar_annulus(sectors, radii);
 }
 
 }  // namespace hocav

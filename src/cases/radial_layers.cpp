@@ -74,8 +74,8 @@ std::vector<double> layer_radii(const ShellLayering& layering, double angular_st
 
   // The gap between the fronts: one or two closing layers where they met, else isotropic layers.
   const double low = fronts[0].position, high = fronts[1].position;
-  const double count = met ? 2 * (high - low) / (fronts[0].thickness + (fronts[1].growing ? fronts[1].thickness : fronts[0].thickness))
-                           : std::log(high / low) / angular_step;
+  const double closing = fronts[0].thickness + (fronts[1].growing ? fronts[1].thickness : fronts[0].thickness);
+  const double count = met ? 2 * (high - low) / closing : std::log(high / low) / angular_step;
   check_layer_count(count);
   append_layers(from_inner, high, std::max(1L, std::lround(count)), !met);
   from_inner.insert(from_inner.end(), from_outer.rbegin() + 1, from_outer.rend());
@@ -86,12 +86,17 @@ std::vector<double> unit_layer_radii(double inner_radius, double outer_radius, c
   check_shell_radii(inner_radius, outer_radius);
   auto size_at = [&size](double r) {
     const double h = size(r);
-    if (!(std::isfinite(h) && h > 0)) throw Error("the radial size must be positive, got " + number_text(h) + " at r = " + number_text(r));
+    if (!(std::isfinite(h) && h > 0))
+      throw Error("the radial size must be positive, got " + number_text(h) + " at r = " + number_text(r));
     return h;
   };
-  // Samples of ∫ dr / h from r_in, at least kSamples and at least 8 per layer.
+  // Samples of ∫ dr / h from r_in, at least kSamples and at least 8 per layer; a first pass on the
+  // kSamples alone refuses far too many layers before the fine samples take their memory.
   constexpr double kSamples = 20000;
   const double coarse_step = (outer_radius - inner_radius) / kSamples;
+  double estimate = 0;
+  for (int i = 0; i < static_cast<int>(kSamples); ++i) estimate += coarse_step / size_at(inner_radius + (i + 0.5) * coarse_step);
+  check_layer_count(estimate);
   std::vector<double> samples{inner_radius}, integral{0};
   double h = size_at(inner_radius);
   while (samples.back() < outer_radius) {

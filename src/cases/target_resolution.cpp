@@ -25,4 +25,12 @@ int resolution_for_target(const char* what, double target, int minimum, const st
   return std::log(target / elements(low)) < std::log(elements(high) / target) ? low : high;
 }
 
+LayeredResolution layered_resolution_for_target(const char* what, double target, int minimum, const ShellLayering& layering,
+                                                double (*angular_step)(int), double (*elements)(int, std::size_t)) {
+  const int resolution = resolution_for_target(what, target, minimum, [&](int n) {
+    return elements(n, layer_radii(layering, angular_step(n)).size());
+  });
+  return {resolution, layer_radii(layering, angular_step(resolution))};
+}
+
 }  // namespace hocav

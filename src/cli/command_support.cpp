@@ -1,11 +1,19 @@
 #include "cli/command_support.hpp"
 
 #include <algorithm>
-
-#include "bezier/mesh_quality.hpp"
 #include <cmath>
+#include <iostream>
+#include <memory>
+#include <optional>
 
+#include "adapt/proposal_node_source.hpp"
+#include "adapt/reinsertion_curving.hpp"
 #include "base/error.hpp"
+#include "bezier/mesh_quality.hpp"
+#include "geom/sym_functions.hpp"
+#include "mesh/consistency.hpp"
+#include "surface/cad_boundary_gmsh.hpp"
+#include "surface/p3_surrogate.hpp"
 
 namespace hocav {
 
@@ -103,6 +111,76 @@ std::vector<VtuField> jacobian_cell_fields(const Mesh<D>& mesh) {
   return {std::move(minimum), std::move(scaled)};
 }
 
+namespace {
+
+// The metric at every output node (vertices, then P2 nodes from the back mesh), for the .vtu.
+template <int D>
+SolutionField metric_at_nodes(const Mesh<D>& mesh, const MetricField<D>& field) {
+  std::vector<SymMat<D>> metrics;
+  for (Index v = 0; v < mesh.vertex_count(); ++v) metrics.push_back(exp_sym(field.vertex_log_metric(v)));
+  for (Index e = 0; e < mesh.edge_count(); ++e) metrics.push_back(exp_sym(field.log_metric_at(mesh.edge_node(e))));
+  return rows_of_metrics(metrics);
+}
+
+// The geometry boundary edges are curved onto: none, the P3 surrogate of the input boundary, or a
+// CAD file.
+template <int D>
+std::unique_ptr<BoundaryGeometry<D>> boundary_geometry(const std::string& surface, const Mesh<D>& mesh) {
+  if (surface == "none") return nullptr;
+  if (surface == "p3") return std::make_unique<P3Surrogate<D>>(mesh);
+  if (surface.starts_with("cad:") && surface.size() > 4) return std::make_unique<CadBoundary<D>>(surface.substr(4), mesh);
+  throw Error("--surface: 'p3', 'cad:FILE' or 'none', not '" + surface + "'");
+}
+
+}  // namespace
+
+template <int D>
+CurvingReport curve_in_metric(Mesh<D>& mesh, const MetricField<D>& field, const CurvingSettings& settings) {
+  const auto geometry = boundary_geometry<D>(settings.surface, mesh);
+  std::optional<BoundaryProposals<D>> proposals;
+  std::optional<ProposalNodeSource<D>> boundary_nodes;
+  if (geometry) {
+    proposals.emplace(mesh, *geometry);
+    boundary_nodes.emplace(*proposals);
+  }
+  const Index points_before = mesh.vertex_count();
+
+  ReinsertionOptions reinsertion;
+  reinsertion.cavity.jacobian_floor = settings.jacobian_floor;
+  reinsertion.passes = settings.passes;
+  reinsertion.threads = settings.threads;
+  const QuadratureRule rule = quadrature_rule_named(settings.quadrature);
+  reinsertion.cavity.optimizer.rule = &rule;
+  int reported = 0;
+  if (settings.progress && mesh.vertex_count() > 20000)
+    reinsertion.progress = [&](double fraction) {
+      for (; reported < static_cast<int>(10 * fraction); ++reported) std::cerr << "curving: " << 10 * (reported + 1) << "%\n";
+    };
+  ReinsertionResult result =
+      curve_by_reinsertion<D>(mesh, field, boundary_nodes ? &*boundary_nodes : nullptr, reinsertion);
+
+  ConsistencyOptions consistency;
+  consistency.require_positive_orientation = false;
+  if (auto problems = check_consistency(mesh, consistency); !problems.empty())
+    throw Error("internal error: the curved mesh is inconsistent: " + problems.front());
+  CurvingReport report = make_curving_report(mesh, field, points_before, result,
+                                             proposals ? static_cast<Index>(proposals->size()) : 0);
+  report.threads = settings.threads;
+  return report;
+}
+
+template <int D>
+void write_curved_vtu(const std::string& path, const Mesh<D>& mesh, const MetricField<D>& field) {
+  VtuData data;
+  data.point_fields.push_back(metric_tensor_field<D>(metric_at_nodes(mesh, field)));
+  data.cell_fields = jacobian_cell_fields(mesh);
+  write_vtu(path, mesh, data);
+}
+
+template CurvingReport curve_in_metric(Mesh<2>&, const MetricField<2>&, const CurvingSettings&);
+template CurvingReport curve_in_metric(Mesh<3>&, const MetricField<3>&, const CurvingSettings&);
+template void write_curved_vtu(const std::string&, const Mesh<2>&, const MetricField<2>&);
+template void write_curved_vtu(const std::string&, const Mesh<3>&, const MetricField<3>&);
 template std::vector<VtuField> jacobian_cell_fields(const Mesh<2>&);
 template std::vector<VtuField> jacobian_cell_fields(const Mesh<3>&);
 template VtuField metric_tensor_field<2>(const SolutionField&);

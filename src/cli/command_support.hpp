@@ -1,6 +1,6 @@
 // What the commands share: the dimension of a mesh read from a file, the metric (or scalar field)
-// that goes with a mesh file (checked and renumbered to hocav's node order), and a one-line mesh
-// summary.
+// that goes with a mesh file (checked and renumbered to hocav's node order), the curving run of
+// `hocav curve` and its .vtu (also run by `hocav demo`), and a one-line mesh summary.
 #pragma once
 
 #include <string>
@@ -10,6 +10,8 @@
 #include "io/mesh_file.hpp"
 #include "io/solution_file.hpp"
 #include "io/vtu_file.hpp"
+#include "metric/metric_field.hpp"
+#include "report/curving_report.hpp"
 
 namespace hocav {
 
@@ -39,6 +41,26 @@ VtuField metric_tensor_field(const SolutionField& metric);
 // max J, gmsh's measure), refined bounds, for the .vtu cell data.
 template <int D>
 std::vector<VtuField> jacobian_cell_fields(const Mesh<D>& mesh);
+
+// The options of a curving run (`hocav curve`).
+struct CurvingSettings {
+  std::string surface = "p3";  // boundary curvature: p3, cad:FILE or none
+  std::string quadrature = "simpson";
+  double jacobian_floor = 0.01;
+  int passes = 1;
+  int threads = 1;
+  bool progress = false;  // "curving: 10%", ... on stderr, for meshes large enough to wait for
+};
+
+// The paper's algorithm on `mesh` (P1 or P2; its P1 copy is the field's back mesh): boundary
+// curvature proposed from `settings.surface`, every volume vertex reinserted with the P2 cavity
+// operator, the result checked consistent and measured.
+template <int D>
+CurvingReport curve_in_metric(Mesh<D>& mesh, const MetricField<D>& field, const CurvingSettings& settings);
+
+// The curved mesh as a .vtu for ParaView: the metric at every node and jacobian_cell_fields.
+template <int D>
+void write_curved_vtu(const std::string& path, const Mesh<D>& mesh, const MetricField<D>& field);
 
 // "2D P1: 356 vertices, 605 triangles, 95 boundary edges"
 template <int D>

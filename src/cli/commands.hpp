@@ -12,5 +12,6 @@ void add_generate_command(CLI::App& app);
 void add_curve_command(CLI::App& app);
 void add_metric_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
+void add_demo_command(CLI::App& app);
 
 }  // namespace hocav

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   hocav::add_metric_command(app);
   hocav::add_curve_command(app);
   hocav::add_bench_command(app);
+  hocav::add_demo_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -13,20 +13,18 @@ struct EdgeBasis {
 };
 EdgeBasis edge_basis(double t) { return {(1 - t) * (1 - 2 * t), 4 * t * (1 - t), t * (2 * t - 1)}; }
 
-template <int D>
-SymMat<D> outer(const Vec<D>& u, const Vec<D>& v) {
-  SymMat<D> s;
-  for (int i = 0; i < D; ++i)
-    for (int j = 0; j <= i; ++j) s(i, j) = 0.5 * (u[i] * v[j] + u[j] * v[i]);
-  return s;
-}
-
 }  // namespace
 
 template <int D>
 EdgeLengthFunction<D>::EdgeLengthFunction(const Vec<D>& a, const Vec<D>& b, const SymMat<D>& log_a,
                                           const SymMat<D>& log_b, const QuadratureRule& rule)
-    : a_(a), b_(b), log_a_(log_a), log_b_(log_b), rule_(rule), fixed_metrics_(rule.nodes.size()) {
+    : a_(a),
+      b_(b),
+      log_a_(log_a),
+      log_b_(log_b),
+      rule_(rule),
+      fixed_metrics_(rule.nodes.size()),
+      last_eigen_(rule.nodes.size()) {
   for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
     EdgeBasis phi = edge_basis(rule.nodes[q]);
     if (phi.middle == 0) fixed_metrics_[q] = exp_sym(phi.a * log_a + phi.b * log_b);
@@ -38,6 +36,7 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
                                                    const std::array<SymMat<D>, D>& log_node_gradient,
                                                    Order order) const {
   EdgeLengthValue<D> result;
+  const bool same_point = has_last_ && log_node == last_log_node_;
   for (std::size_t q = 0; q < rule_.nodes.size(); ++q) {
     const double t = rule_.nodes[q], w = rule_.weights[q];
     const EdgeBasis phi = edge_basis(t);
@@ -55,27 +54,30 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
       if (order != Order::kValue) dg = (2 * du) * eu;
       if (order == Order::kHessian) d2g = (2 * du * du) * e;
     } else {
-      ExpFrechet<D> exp_t(phi.a * log_a_ + phi.middle * log_node + phi.b * log_b_);
+      SymEigen<D>& eigen = last_eigen_[q];
+      if (!same_point) eigen = sym_eigen(phi.a * log_a_ + phi.middle * log_node + phi.b * log_b_);
       // In the eigenbasis: keeps g relatively accurate along the small eigenvalues (high anisotropy).
-      g = exp_t.squared_length(u);
+      g = exp_squared_length(eigen, u);
       if (order != Order::kValue) {
+        const ExpFrechet<D> exp_t(eigen);
         // uᵀ Dexp[H] u = <Dexp[u uᵀ], H> (Dexp is self-adjoint): one derivative serves every direction.
         const SymMat<D> adjoint = exp_t.squared_length_gradient(u);
-        const Vec<D> eu = exp_t.value() * u;
         std::array<SymMat<D>, D> directions;
         for (int i = 0; i < D; ++i) {
           directions[i] = phi.middle * log_node_gradient[i];
-          dg[i] = 2 * du * eu[i] + frobenius_dot(adjoint, directions[i]);
+          dg[i] = frobenius_dot(adjoint, directions[i]);
         }
+        // du = 0 at t = 1/2 (the middle node of the 3-point rules): the tangent does not depend on X there.
+        if (du != 0) dg += (2 * du) * (exp_t.value() * u);
         if (order == Order::kHessian) {
-          // uᵀ D²exp[Hi, Hj] u = <D²exp[Hi, u uᵀ], Hj> (symmetric in its three arguments): D second derivatives.
-          const std::array<SymMat<D>, D> second_along_length = exp_t.second_derivatives(directions, outer(u, u));
-          std::array<Vec<D>, D> de_u;  // ∂_iE u
-          for (int i = 0; i < D; ++i) de_u[i] = exp_t.derivative(directions[i]) * u;
-          for (int i = 0; i < D; ++i)
-            for (int j = 0; j <= i; ++j)
-              d2g(i, j) = 2 * du * du * exp_t.value()(i, j) + 2 * du * (de_u[j][i] + de_u[i][j]) +
-                          frobenius_dot(second_along_length[i], directions[j]);
+          d2g = exp_t.squared_length_hessian(directions, u);
+          if (du != 0) {
+            std::array<Vec<D>, D> de_u;  // ∂_iE u
+            for (int i = 0; i < D; ++i) de_u[i] = exp_t.derivative(directions[i]) * u;
+            for (int i = 0; i < D; ++i)
+              for (int j = 0; j <= i; ++j)
+                d2g(i, j) += 2 * du * du * exp_t.value()(i, j) + 2 * du * (de_u[j][i] + de_u[i][j]);
+          }
         }
       }
     }
@@ -88,6 +90,8 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
       for (int i = 0; i < D; ++i)
         for (int j = 0; j <= i; ++j) result.hessian(i, j) += w * (d2g(i, j) / (2 * root) - dg[i] * dg[j] / (4 * g * root));
   }
+  last_log_node_ = log_node;
+  has_last_ = true;
   return result;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "curve/quadrature.hpp"
+#include "geom/sym_eigen.hpp"
 #include "geom/sym_mat.hpp"
 #include "geom/vec.hpp"
 
@@ -24,7 +25,9 @@ struct EdgeLengthValue {
 };
 
 // ℓ as a function of X for one edge and one quadrature rule; the parts that do not depend on X
-// (exp of the vertex metrics at nodes where φ_M = 0) are computed once, at construction.
+// (exp of the vertex metrics at nodes where φ_M = 0) are computed once, at construction. The
+// eigen-decompositions of the last evaluation are kept, so raising the order at the same point (the
+// accepted trial of a line search) does not repeat them: one object per thread.
 template <int D>
 class EdgeLengthFunction {
  public:
@@ -45,6 +48,10 @@ class EdgeLengthFunction {
   SymMat<D> log_a_, log_b_;
   const QuadratureRule& rule_;
   std::vector<SymMat<D>> fixed_metrics_;  // exp(T(t_q)) where φ_M(t_q) = 0; unused elsewhere
+  // sym_eigen(T(t_q)) where φ_M(t_q) ≠ 0 at the last evaluated L^L(X) (T depends on X only through it).
+  mutable std::vector<SymEigen<D>> last_eigen_;
+  mutable SymMat<D> last_log_node_;
+  mutable bool has_last_ = false;
 };
 
 extern template class EdgeLengthFunction<2>;

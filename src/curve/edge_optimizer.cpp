@@ -4,8 +4,6 @@
 #include <array>
 #include <cmath>
 
-#include "geom/sym_functions.hpp"
-
 namespace hocav {
 namespace {
 
@@ -100,12 +98,20 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<
     }
     step = onto_plane(step);
     double step_size = norm(step);
-    // Converged: a step this small only meets round-off, where every halving of the line search would fail.
-    if (step_size < options.step_tolerance * edge_size) break;
+    // Converged: a step this small, or one whose predicted decrease −gᵀp/2 is this small, only meets
+    // round-off, where every halving of the line search would fail.
+    if (step_size < options.step_tolerance * edge_size ||
+        -0.5 * dot(gradient, step) < options.decrease_tolerance * value.length)
+      break;
     if (step_size > trust) step = (trust / step_size) * step, step_size = trust;
 
-    // Backtracking: accept the first trial that decreases ℓ (kinks rule out stricter tests).
+    // Backtracking: accept the first trial that decreases ℓ (kinks rule out stricter tests). Along a
+    // smooth ray of descent slope (σ < 0, Δ(s) = σs + κs²/2), a rejected increase Δ(s) > 0 shrinks more
+    // than 4-fold when s is halved; a small one (< 1e-3 ℓ, where that model holds) that shrinks less
+    // grows to first order: the direction ascends from the node, which sits on a kink (a back-mesh face
+    // or edge), and further halvings would fail too. The node is then taken as the optimum.
     bool accepted = false;
+    double rejected_increase = 0;
     for (int halving = 0; halving < 12 && !accepted; ++halving, step = 0.5 * step, step_size *= 0.5) {
       Vec<D> trial = result.node + step;
       Vec<D> offset = trial - midpoint;
@@ -120,6 +126,11 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<
         result.back_element = trial_sample.where.element;
         value = function.evaluate(trial, trial_sample.log_metric, log_gradient_in(trial_sample.where.element),
                                   Order::kHessian);
+      } else {
+        const double increase = trial_length - value.length;
+        if (rejected_increase > 0 && rejected_increase < 1e-3 * value.length && increase > 0.25 * rejected_increase)
+          break;
+        rejected_increase = increase;
       }
     }
     if (!accepted || step_size < options.step_tolerance * edge_size) {
@@ -153,30 +164,12 @@ double high_precision_edge_length(const MetricField<D>& field, const Vec<D>& a, 
   return function.length(node, field.log_metric_at(node, hint));
 }
 
-template <int D>
-double true_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b, const Vec<D>& node,
-                        const QuadratureRule& rule) {
-  double length = 0;
-  Index hint = kNoIndex;
-  for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
-    const double t = rule.nodes[q];
-    const Vec<D> point = (1 - t) * (1 - 2 * t) * a + 4 * t * (1 - t) * node + t * (2 * t - 1) * b;
-    const Vec<D> tangent = (4 * t - 3) * a + 4 * (1 - 2 * t) * node + (4 * t - 1) * b;
-    auto sample = field.sample(point, hint);
-    hint = sample.where.element;
-    length += rule.weights[q] * std::sqrt(quadratic_form(exp_sym(sample.log_metric), tangent));
-  }
-  return length;
-}
-
 #define HOCAV_INSTANTIATE(D)                                                                                        \
   template EdgeOptimization<D> optimize_edge_length(const MetricField<D>&, const Vec<D>&, const Vec<D>&,            \
                                                     const SymMat<D>&, const SymMat<D>&, const Vec<D>&, Index,        \
                                                     const EdgeOptimizerOptions&);                                   \
   template double high_precision_edge_length(const MetricField<D>&, const Vec<D>&, const Vec<D>&, const SymMat<D>&, \
-                                             const SymMat<D>&, const Vec<D>&, Index);                               \
-  template double true_edge_length(const MetricField<D>&, const Vec<D>&, const Vec<D>&, const Vec<D>&,             \
-                                   const QuadratureRule&);
+                                             const SymMat<D>&, const Vec<D>&, Index);
 HOCAV_INSTANTIATE(2)
 HOCAV_INSTANTIATE(3)
 #undef HOCAV_INSTANTIATE

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "curve/edge_length.hpp"
+#include "curve/edge_length_integral.hpp"  // the "true" length and adaptive lengths
 #include "metric/metric_field.hpp"
 
 namespace hocav {
@@ -15,6 +16,10 @@ struct EdgeOptimizerOptions {
   int max_iterations = 30;
   // Stop when a step moves the node less than this fraction of |B − A|.
   double step_tolerance = 1e-7;
+  // Or when the Newton model predicts a decrease of ℓ below this fraction of ℓ: ℓ is evaluated to a
+  // relative ~1e-15 (3D eigen-decompositions of log-metrics up to ~20), so no line search can
+  // confirm a smaller decrease; at the stop the node is within one (tiny) Newton step of the optimum.
+  double decrease_tolerance = 1e-13;
   // Largest distance of the node from the straight midpoint, as a fraction of |B − A|.
   double max_displacement = 0.5;
   // An edge whose length (in the optimizer's rule) drops by less than this fraction stays
@@ -49,11 +54,5 @@ template <int D>
 double high_precision_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b,
                                   const SymMat<D>& log_a, const SymMat<D>& log_b, const Vec<D>& node,
                                   Index hint = kNoIndex);
-
-// The "true" Riemannian length of the curve in the back-mesh field: every quadrature point of the
-// rule is localized and its metric interpolated from the back mesh (a diagnostic, math.md §5).
-template <int D>
-double true_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b, const Vec<D>& node,
-                        const QuadratureRule& rule);
 
 }  // namespace hocav

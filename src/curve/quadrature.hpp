@@ -10,6 +10,7 @@
 // gains more where curvature is real (docs/benchmarks.md).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -39,5 +40,21 @@ const QuadratureRule& default_optimizer_rule();
 
 // "trapezoid", "simpson" or "gauss-N"; throws Error for anything else.
 QuadratureRule quadrature_rule_named(const std::string& name);
+
+// ∫₀¹ f to a relative tolerance, by globally adaptive Gauss–Kronrod (7 Gauss points nested in 15
+// Kronrod points, exact for degree 22 on each piece): the piece with the largest error estimate
+// |K15 − G7| is bisected until the estimates sum to at most tolerance·|integral| or `max_pieces` is
+// reached, starting from `initial_pieces` equal pieces. Kinks of f (the metric crossing back-mesh
+// faces) are isolated by bisection; on a piece with kinks K15 and G7 may agree by chance, which more
+// initial pieces guard against. Not a QuadratureRule: its nodes depend on f, so it cannot serve the
+// optimizer's closed-form derivatives.
+struct AdaptiveIntegral {
+  double value = 0;
+  double error_estimate = 0;  // Σ |K15 − G7| over the final pieces
+  int evaluations = 0;        // calls of f: 15 per piece
+  bool converged = false;     // error_estimate <= tolerance·|value|
+};
+AdaptiveIntegral adaptive_integral(const std::function<double(double)>& f, double tolerance, int initial_pieces = 1,
+                                   int max_pieces = 1000);
 
 }  // namespace hocav

@@ -45,17 +45,20 @@ double first_difference(double a, double b, double exp_a, double exp_b) {
 double second_difference(double lo, double mid, double hi, double upper, double lower) {
   if (hi - lo >= kDirectQuotientSpread) return (upper - lower) / (hi - lo);
   // exp[x, y, z] = Σ_k h_k(x, y, z)/(k+2)! with h_k the complete homogeneous polynomials, about the centre so
-  // that |x|, |y|, |z| ≤ 1/2: the terms fall below 1e-17 of the sum by k = 16.
-  constexpr int kTerms = 16;
+  // that |x|, |y|, |z| ≤ r = (hi − lo)/2 ≤ 1/2. |h_k| ≤ (k+1)(k+2)/2 r^k, so term k is at most r^k/(2 k!), and
+  // the tail after it is smaller still; the sum is ≥ e^{-1/2}/2. Stop once r^k/k! < 1e-17: by k = 16 at
+  // r = 1/2, at once for equal arguments (a locally isotropic metric).
+  constexpr int kMaxTerms = 16;
   double centre = 0.5 * (lo + hi);
   double x = hi - centre, y = mid - centre, z = lo - centre;
-  double power_x = 1.0, h_xy = 1.0, h_xyz = 1.0, inverse_factorial = 0.5, sum = 0.5;
-  for (int k = 1; k <= kTerms; ++k) {
+  double power_x = 1.0, h_xy = 1.0, h_xyz = 1.0, inverse_factorial = 0.5, sum = 0.5, term_bound = 1.0;
+  for (int k = 1; k <= kMaxTerms && term_bound >= 1e-17; ++k) {
     power_x *= x;
     h_xy = power_x + y * h_xy;  // h_k(x, y) = x^k + y h_{k−1}(x, y)
     h_xyz = h_xy + z * h_xyz;   // h_k(x, y, z) = h_k(x, y) + z h_{k−1}(x, y, z)
     inverse_factorial /= k + 2;
     sum += h_xyz * inverse_factorial;
+    term_bound *= x / k;
   }
   return std::exp(centre) * sum;
 }
@@ -97,7 +100,10 @@ double exp_divided_difference(double a, double b, double c) {
 }
 
 template <int D>
-ExpFrechet<D>::ExpFrechet(const SymMat<D>& log_metric) : eigen_(sym_eigen(log_metric)) {
+ExpFrechet<D>::ExpFrechet(const SymMat<D>& log_metric) : ExpFrechet(sym_eigen(log_metric)) {}
+
+template <int D>
+ExpFrechet<D>::ExpFrechet(const SymEigen<D>& log_metric_eigen) : eigen_(log_metric_eigen) {
   Vec<D> exp_values;
   for (int k = 0; k < D; ++k) exp_values[k] = std::exp(eigen_.values[k]);
   value_ = SymMat<D>::from_eigen(eigen_.vectors, exp_values);
@@ -126,6 +132,14 @@ double ExpFrechet<D>::squared_length(const Vec<D>& u) const {
 }
 
 template <int D>
+double exp_squared_length(const SymEigen<D>& log_metric_eigen, const Vec<D>& u) {
+  Vec<D> w = transpose_times(log_metric_eigen.vectors, u);
+  double sum = 0.0;
+  for (int k = 0; k < D; ++k) sum += std::exp(log_metric_eigen.values[k]) * w[k] * w[k];
+  return sum;
+}
+
+template <int D>
 SymMat<D> ExpFrechet<D>::squared_length_gradient(const Vec<D>& u) const {
   return derivative_from_eigenbasis(outer(transpose_times(eigen_.vectors, u)));
 }
@@ -146,31 +160,34 @@ typename ExpFrechet<D>::SecondDifferences ExpFrechet<D>::second_differences() co
 }
 
 template <int D>
-SymMat<D> ExpFrechet<D>::second_derivative_from_eigenbasis(const SecondDifferences& second, const SymMat<D>& a,
-                                                           const SymMat<D>& b) const {
+SymMat<D> ExpFrechet<D>::second_derivative_in_eigenbasis(const SecondDifferences& second, const SymMat<D>& a,
+                                                         const SymMat<D>& b) const {
   SymMat<D> in_eigenbasis;
   for (int k = 0; k < D; ++k)
     for (int l = 0; l <= k; ++l)
       for (int m = 0; m < D; ++m) in_eigenbasis(k, l) += second[k][m][l] * (a(k, m) * b(m, l) + b(k, m) * a(m, l));
-  return congruence(eigen_.vectors, in_eigenbasis);
+  return in_eigenbasis;
 }
 
 template <int D>
 SymMat<D> ExpFrechet<D>::second_derivative(const SymMat<D>& direction1, const SymMat<D>& direction2) const {
-  return second_derivative_from_eigenbasis(second_differences(), congruence_transposed(eigen_.vectors, direction1),
-                                           congruence_transposed(eigen_.vectors, direction2));
+  return congruence(eigen_.vectors, second_derivative_in_eigenbasis(second_differences(),
+                                                                    congruence_transposed(eigen_.vectors, direction1),
+                                                                    congruence_transposed(eigen_.vectors, direction2)));
 }
 
 template <int D>
-std::array<SymMat<D>, D> ExpFrechet<D>::second_derivatives(const std::array<SymMat<D>, D>& directions,
-                                                           const SymMat<D>& shared_direction) const {
+SymMat<D> ExpFrechet<D>::squared_length_hessian(const std::array<SymMat<D>, D>& directions, const Vec<D>& u) const {
   const SecondDifferences second = second_differences();
-  const SymMat<D> shared_in_eigenbasis = congruence_transposed(eigen_.vectors, shared_direction);
-  std::array<SymMat<D>, D> result;
-  for (int i = 0; i < D; ++i)
-    result[i] = second_derivative_from_eigenbasis(second, congruence_transposed(eigen_.vectors, directions[i]),
-                                                  shared_in_eigenbasis);
-  return result;
+  const SymMat<D> length_direction = outer(transpose_times(eigen_.vectors, u));  // u uᵀ in the eigenbasis
+  std::array<SymMat<D>, D> in_eigenbasis;
+  for (int i = 0; i < D; ++i) in_eigenbasis[i] = congruence_transposed(eigen_.vectors, directions[i]);
+  SymMat<D> hessian;
+  for (int i = 0; i < D; ++i) {
+    const SymMat<D> along = second_derivative_in_eigenbasis(second, in_eigenbasis[i], length_direction);
+    for (int j = 0; j <= i; ++j) hessian(i, j) = frobenius_dot(along, in_eigenbasis[j]);
+  }
+  return hessian;
 }
 
 template <int D>
@@ -193,6 +210,8 @@ template SymMat<2> pow_spd(const SymMat<2>&, double);
 template SymMat<3> pow_spd(const SymMat<3>&, double);
 template SymMat<2> sqrt_spd(const SymMat<2>&);
 template SymMat<3> sqrt_spd(const SymMat<3>&);
+template double exp_squared_length(const SymEigen<2>&, const Vec<2>&);
+template double exp_squared_length(const SymEigen<3>&, const Vec<3>&);
 template class ExpFrechet<2>;
 template class ExpFrechet<3>;
 template SymMat<2> dexp(const SymMat<2>&, const SymMat<2>&);

@@ -57,22 +57,22 @@ template <int D>
 class ExpFrechet {
  public:
   explicit ExpFrechet(const SymMat<D>& log_metric);
+  // From the sym_eigen decomposition of the log-metric, when it is already known.
+  explicit ExpFrechet(const SymEigen<D>& log_metric_eigen);
 
   const SymMat<D>& value() const { return value_; }
   SymMat<D> derivative(const SymMat<D>& direction) const;
   SymMat<D> second_derivative(const SymMat<D>& direction1, const SymMat<D>& direction2) const;
-  // D²exp(T)[Hi, H] for D directions Hi and one shared H: the divided differences, the costly part, are computed once.
-  std::array<SymMat<D>, D> second_derivatives(const std::array<SymMat<D>, D>& directions,
-                                              const SymMat<D>& shared_direction) const;
 
   // uᵀ exp(T) u = Σ_k e^θk (v_kᵀu)², a sum of positive terms each relatively accurate.
   double squared_length(const Vec<D>& u) const;
   // G = Dexp(T)[u uᵀ] = V (Γ ∘ w wᵀ) Vᵀ with w = Vᵀu. Dexp(T) is self-adjoint for the Frobenius product, so the
   // derivative of uᵀ exp(T) u along any H is frobenius_dot(G, H): one G serves all directions of a gradient.
-  // Likewise ⟨D²exp(T)[H1, H2], H3⟩ is symmetric in H1, H2, H3, so a Hessian needs only
-  // uᵀ D²exp(T)[Hi, Hj] u = frobenius_dot(second_derivative(Hi, outer(u)), Hj): D calls, not D(D+1)/2, made
-  // at once by second_derivatives(H, outer(u)).
   SymMat<D> squared_length_gradient(const Vec<D>& u) const;
+  // The D×D matrix uᵀ D²exp(T)[Hi, Hj] u for D directions Hi. ⟨D²exp(T)[H1, H2], H3⟩ is symmetric in H1, H2, H3,
+  // so it is frobenius_dot(D²exp(T)[Hi, u uᵀ], Hj): D second derivatives, not D(D+1)/2, sharing one set of divided
+  // differences, and all in the eigenbasis (the Frobenius product is invariant under V), never rotated back.
+  SymMat<D> squared_length_hessian(const std::array<SymMat<D>, D>& directions, const Vec<D>& u) const;
 
  private:
   // V (Γ ∘ H') Vᵀ for a direction H' = Vᵀ H V already in the eigenbasis.
@@ -80,14 +80,19 @@ class ExpFrechet {
   // exp[θk, θm, θl], indexed [k][m][l].
   using SecondDifferences = std::array<std::array<std::array<double, D>, D>, D>;
   SecondDifferences second_differences() const;
-  // The sum of D²exp over the eigenbasis for directions a, b already in the eigenbasis, back in the original basis.
-  SymMat<D> second_derivative_from_eigenbasis(const SecondDifferences& second, const SymMat<D>& a,
-                                              const SymMat<D>& b) const;
+  // D²exp(T)[A, B] in the eigenbasis, for directions a = VᵀAV, b = VᵀBV already in it.
+  SymMat<D> second_derivative_in_eigenbasis(const SecondDifferences& second, const SymMat<D>& a,
+                                            const SymMat<D>& b) const;
 
   SymEigen<D> eigen_;
   SymMat<D> value_;
   SymMat<D> first_differences_;  // Γ_kl = exp[θk, θl]; Γ_kk = e^θk
 };
+
+// uᵀ exp(T) u = Σ_k e^θk (v_kᵀu)² from the sym_eigen decomposition of T: squared_length without the
+// Fréchet set-up.
+template <int D>
+double exp_squared_length(const SymEigen<D>& log_metric_eigen, const Vec<D>& u);
 
 // One-off forms of the above.
 template <int D>

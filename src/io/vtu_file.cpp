@@ -12,6 +12,7 @@
 
 #include "base/error.hpp"
 #include "io/atomic_output.hpp"
+#include "io/xml_escape.hpp"
 
 namespace hocav {
 namespace {
@@ -49,20 +50,6 @@ struct AppendedArray {
   std::function<void(BinaryWriter&)> write;
   std::uint64_t offset = 0;
 };
-
-std::string xml_escaped(std::string_view text) {
-  std::string escaped;
-  for (char c : text) {
-    switch (c) {
-      case '&': escaped += "&amp;"; break;
-      case '<': escaped += "&lt;"; break;
-      case '>': escaped += "&gt;"; break;
-      case '"': escaped += "&quot;"; break;
-      default: escaped += c;
-    }
-  }
-  return escaped;
-}
 
 // NumberOfComponents is left out for scalars (VTK's default), so meshio reads them as 1-D arrays.
 std::string attributes(std::string_view type, std::string_view name, int components) {

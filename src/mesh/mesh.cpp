@@ -2,6 +2,7 @@
 #include "mesh/mesh.hpp"
 
 #include <algorithm>
+#include <array>
 #include <string>
 
 #include "base/error.hpp"
@@ -65,6 +66,23 @@ Index Mesh<D>::insert_edge(Index a, Index b) {
   return id;
 }
 
+namespace {
+
+// Vertex -> incident elements in compressed rows (offsets, then element ids).
+template <int D>
+void build_vertex_elements(const Mesh<D>& mesh, std::vector<Index>& offsets, std::vector<Index>& incident) {
+  offsets.assign(static_cast<std::size_t>(mesh.vertex_count()) + 1, 0);
+  for (const auto& element : mesh.elements())
+    for (Index v : element) ++offsets[static_cast<std::size_t>(v) + 1];
+  for (std::size_t v = 0; v + 1 < offsets.size(); ++v) offsets[v + 1] += offsets[v];
+  incident.resize(static_cast<std::size_t>(offsets.back()));
+  std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (Index v : mesh.element(k)) incident[static_cast<std::size_t>(fill[v]++)] = k;
+}
+
+}  // namespace
+
 template <int D>
 void Mesh<D>::build_edges() {
   edge_vertices_.clear();
@@ -74,11 +92,35 @@ void Mesh<D>::build_edges() {
   edge_ids_.reserve(elements_.size() * (D == 3 ? 13 : 16) / 10 + facets_.size() + lines_.size());
   edge_vertices_.reserve(elements_.size() * (D == 3 ? 13 : 16) / 10);
   element_edges_.resize(elements_.size());
-  for (std::size_t k = 0; k < elements_.size(); ++k)
-    for (int e = 0; e < kElementEdges; ++e) {
-      const auto& local = hocav::edge_vertices<D>(e);
-      element_edges_[k][e] = insert_edge(elements_[k][local[0]], elements_[k][local[1]]);
+  // Edges are numbered by their smaller vertex, then the larger: each vertex collects the edges of
+  // its ball that start at it, so every edge is inserted in the table once, not once per element.
+  std::vector<Index> offsets, incident;
+  build_vertex_elements(*this, offsets, incident);
+  std::vector<Index> ends;
+  for (Index v = 0; v < vertex_count(); ++v) {
+    ends.clear();
+    for (Index slot = offsets[v]; slot < offsets[v + 1]; ++slot)
+      for (Index w : elements_[incident[slot]])
+        if (w > v) ends.push_back(w);
+    std::sort(ends.begin(), ends.end());
+    ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+    Index first = static_cast<Index>(edge_vertices_.size());
+    for (Index w : ends) insert_edge(v, w);
+    for (Index slot = offsets[v]; slot < offsets[v + 1]; ++slot) {
+      Index k = incident[slot];
+      for (int e = 0; e < kElementEdges; ++e) {
+        const auto& local = hocav::edge_vertices<D>(e);
+        Index a = elements_[k][local[0]], b = elements_[k][local[1]];
+        if (std::min(a, b) != v) continue;
+        if (a == b) {  // a degenerate element (the checker reports it) still gets an edge
+          element_edges_[k][e] = insert_edge(a, b);
+          continue;
+        }
+        auto rank = std::lower_bound(ends.begin(), ends.end(), std::max(a, b)) - ends.begin();
+        element_edges_[k][e] = first + static_cast<Index>(rank);
+      }
     }
+  }
   // Boundary and feature edges are element edges in a conforming mesh; inserting them too keeps
   // the table complete for meshes that carry a facet or line no element touches.
   for (const Facet& f : facets_)
@@ -106,19 +148,6 @@ void Mesh<D>::make_p1() {
 
 namespace {
 
-// Vertex -> incident elements in compressed rows (offsets, then element ids).
-template <int D>
-void build_vertex_elements(const Mesh<D>& mesh, std::vector<Index>& offsets, std::vector<Index>& incident) {
-  offsets.assign(static_cast<std::size_t>(mesh.vertex_count()) + 1, 0);
-  for (const auto& element : mesh.elements())
-    for (Index v : element) ++offsets[static_cast<std::size_t>(v) + 1];
-  for (std::size_t v = 0; v + 1 < offsets.size(); ++v) offsets[v + 1] += offsets[v];
-  incident.resize(static_cast<std::size_t>(offsets.back()));
-  std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
-  for (Index k = 0; k < mesh.element_count(); ++k)
-    for (Index v : mesh.element(k)) incident[static_cast<std::size_t>(fill[v]++)] = k;
-}
-
 template <int D>
 bool element_has_vertices(const typename Mesh<D>::Element& element, const Index* vertices, int count) {
   for (int i = 0; i < count; ++i)
@@ -136,6 +165,14 @@ int local_face_of(const typename Mesh<D>::Element& element, const Index* vertice
   return -1;
 }
 
+// A face of an element seen from its smallest vertex: the D - 1 other vertices, sorted.
+template <int D>
+struct FaceAtVertex {
+  std::array<Index, D - 1> others;
+  Index element;
+  int face;
+};
+
 }  // namespace
 
 template <int D>
@@ -143,34 +180,44 @@ void Mesh<D>::build_topology() {
   std::vector<Index> offsets, incident;
   build_vertex_elements(*this, offsets, incident);
 
-  adjacency_.assign(elements_.size(), Element{});
-  for (auto& row : adjacency_) row.fill(kNoIndex - 1);  // "not yet searched"
-  for (Index k = 0; k < element_count(); ++k) {
-    for (int face = 0; face <= D; ++face) {
-      if (adjacency_[k][face] != kNoIndex - 1) continue;
-      Index face_vertices[D];
-      for (int i = 0; i < D; ++i) face_vertices[i] = elements_[k][hocav::face_vertices<D>(face)[i]];
-      // Candidates: elements around the face's first vertex that hold the whole face.
-      Index found = kNoIndex;
-      int found_face = -1;
-      Index v = face_vertices[0];
-      for (Index slot = offsets[v]; slot < offsets[v + 1]; ++slot) {
-        Index other = incident[slot];
-        if (other == k) continue;
-        int other_face = local_face_of<D>(elements_[other], face_vertices);
-        if (other_face < 0) continue;
-        if (found != kNoIndex)
-          throw Error("non-manifold mesh: the face of element " + std::to_string(k + 1) + " opposite its vertex " +
-                      std::to_string(face + 1) + " is shared by more than two elements");
-        found = other;
-        found_face = other_face;
+  // Each face is matched once, at its smallest vertex v: the faces of v's ball whose smallest
+  // vertex is v are sorted by their other vertices, so a shared face is two equal neighbours.
+  Element boundary;
+  boundary.fill(kNoIndex);
+  adjacency_.assign(elements_.size(), boundary);
+  std::vector<FaceAtVertex<D>> faces;
+  for (Index v = 0; v < vertex_count(); ++v) {
+    faces.clear();
+    for (Index slot = offsets[v]; slot < offsets[v + 1]; ++slot) {
+      Index k = incident[slot];
+      for (int face = 0; face <= D; ++face) {
+        FaceAtVertex<D> entry{{}, k, face};
+        int count = 0;
+        bool smallest = true;
+        for (int i = 0; i < D; ++i) {
+          Index w = elements_[k][hocav::face_vertices<D>(face)[i]];
+          if (w == v) continue;
+          smallest = smallest && w > v;
+          if (count < D - 1) entry.others[count] = w;
+          ++count;
+        }
+        if (count == D - 1 && smallest) {
+          std::sort(entry.others.begin(), entry.others.end());
+          faces.push_back(entry);
+        }
       }
-      adjacency_[k][face] = found;
-      if (found != kNoIndex) {
-        if (adjacency_[found][found_face] != kNoIndex - 1)
-          throw Error("non-manifold mesh: element " + std::to_string(found + 1) + " meets more than one element across one face");
-        adjacency_[found][found_face] = k;
-      }
+    }
+    std::sort(faces.begin(), faces.end(), [](const auto& a, const auto& b) { return a.others < b.others; });
+    for (std::size_t i = 0; i < faces.size();) {
+      std::size_t j = i + 1;
+      while (j < faces.size() && faces[j].others == faces[i].others) ++j;
+      if (j - i > 2)
+        throw Error("non-manifold mesh: the face of element " + std::to_string(faces[i].element + 1) + " opposite its vertex " +
+                    std::to_string(faces[i].face + 1) + " is shared by more than two elements");
+      Index across = j - i == 2 ? faces[i + 1].element : kNoIndex;
+      adjacency_[faces[i].element][faces[i].face] = across;
+      if (across != kNoIndex) adjacency_[across][faces[i + 1].face] = faces[i].element;
+      i = j;
     }
   }
 

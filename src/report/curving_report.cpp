@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 #include <ostream>
 
 #include "curve/edge_optimizer.hpp"
@@ -11,6 +12,23 @@
 #include "report/json_writer.hpp"
 
 namespace hocav {
+
+template <int D>
+std::vector<double> volume_edge_gains(const Mesh<D>& mesh, const MetricField<D>& field) {
+  const std::vector<bool> on_boundary = boundary_vertex_flags(mesh);
+  std::vector<double> gains;
+  for (Index e = 0; e < mesh.edge_count(); ++e) {
+    auto [a, b] = mesh.edge_vertices(e);
+    if (a == kNoIndex || (on_boundary[a] && on_boundary[b])) continue;
+    const Vec<D> straight = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
+    const auto &log_a = field.vertex_log_metric(a), &log_b = field.vertex_log_metric(b);
+    double straight_length = high_precision_edge_length(field, mesh.vertex(a), mesh.vertex(b), log_a, log_b, straight);
+    double curved_length =
+        high_precision_edge_length(field, mesh.vertex(a), mesh.vertex(b), log_a, log_b, mesh.edge_node(e));
+    gains.push_back(1 - curved_length / straight_length);
+  }
+  return gains;
+}
 
 template <int D>
 CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& field, Index points_before,
@@ -36,23 +54,11 @@ CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& fie
   report.normalized_jacobian = summary.min_normalized_jacobian;
   report.scaled_jacobian = summary.scaled_jacobian;
 
-  const std::vector<bool> on_boundary = boundary_vertex_flags(mesh);
-  double gain_sum = 0;
-  Index gains = 0;
-  for (Index e = 0; e < mesh.edge_count(); ++e) {
-    auto [a, b] = mesh.edge_vertices(e);
-    if (a == kNoIndex || (on_boundary[a] && on_boundary[b])) continue;  // volume edges only
-    const Vec<D> straight = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
-    const auto &log_a = field.vertex_log_metric(a), &log_b = field.vertex_log_metric(b);
-    double straight_length = high_precision_edge_length(field, mesh.vertex(a), mesh.vertex(b), log_a, log_b, straight);
-    double curved_length =
-        high_precision_edge_length(field, mesh.vertex(a), mesh.vertex(b), log_a, log_b, mesh.edge_node(e));
-    double gain = 1 - curved_length / straight_length;
-    gain_sum += gain;
-    report.max_gain = std::max(report.max_gain, gain);
-    ++gains;
+  const std::vector<double> gains = volume_edge_gains(mesh, field);
+  if (!gains.empty()) {
+    report.average_gain = std::accumulate(gains.begin(), gains.end(), 0.0) / static_cast<double>(gains.size());
+    report.max_gain = std::max(0.0, *std::max_element(gains.begin(), gains.end()));
   }
-  report.average_gain = gains > 0 ? gain_sum / static_cast<double>(gains) : 0;
   return report;
 }
 
@@ -120,6 +126,8 @@ void write_curving_report_table(std::ostream& out, const CurvingReport& report) 
   row("boundary nodes applied / left", "%lld / %d", report.counters.boundary_nodes_applied, report.boundary_proposals_left);
 }
 
+template std::vector<double> volume_edge_gains(const Mesh<2>&, const MetricField<2>&);
+template std::vector<double> volume_edge_gains(const Mesh<3>&, const MetricField<3>&);
 template CurvingReport make_curving_report(const Mesh<2>&, const MetricField<2>&, Index, const ReinsertionResult&, Index);
 template CurvingReport make_curving_report(const Mesh<3>&, const MetricField<3>&, Index, const ReinsertionResult&, Index);
 

@@ -4,6 +4,7 @@
 
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 #include "adapt/reinsertion_curving.hpp"
 #include "bezier/mesh_quality.hpp"
@@ -25,6 +26,11 @@ struct CurvingReport {
   P2CavityCounters counters;
   int threads = 1;
 };
+
+// 1 − ℓ(curved) / ℓ(straight) of every volume edge (not both ends on the boundary), in edge order,
+// lengths in the metric by 16-point Gauss: the gains the report averages.
+template <int D>
+std::vector<double> volume_edge_gains(const Mesh<D>& mesh, const MetricField<D>& field);
 
 // Measures the output (Jacobians, gains) and gathers the run's figures.
 template <int D>

@@ -47,7 +47,7 @@ TEST(CubedSphereShell, CountsAndValidityForGivenRadii) {
 TEST(CubedSphereShell, EveryTetrahedronIsReasonablyShapedInTheIsotropicShell) {
   // Isotropic layers: the worst tetrahedron's volume against its longest edge cubed stays bounded
   // away from zero whatever the resolution (no sliver from the cube's corners or the diagonals).
-  for (int n : {4, 16}) {
+  for (int n : {4, 12}) {
     const Mesh<3> mesh = generate_cubed_sphere_shell(n, layer_radii({0.5, 1.0}, cubed_sphere_angular_step(n)));
     double worst = 1;
     for (Index k = 0; k < mesh.element_count(); ++k) {
@@ -124,9 +124,9 @@ TEST(CubedSphereShell, TargetSizeIsMetWithinAFactor) {
       EXPECT_GT(count, target / 1.1) << target;
       EXPECT_LT(count, target * 1.1) << target;
     }
-    const Mesh<3> mesh = generate_cubed_sphere_shell(layering, 1e5);
-    EXPECT_GT(mesh.element_count(), 1e5 / 1.15);
-    EXPECT_LT(mesh.element_count(), 1e5 * 1.15);
+    const Mesh<3> mesh = generate_cubed_sphere_shell(layering, 2e4);
+    EXPECT_GT(mesh.element_count(), 2e4 / 1.25);
+    EXPECT_LT(mesh.element_count(), 2e4 * 1.25);
     shell_test::expect_valid_shell(mesh, 0.5, 1.0);
   }
 }
@@ -139,6 +139,7 @@ TEST(CubedSphereShell, IsDeterministic) {
 TEST(CubedSphereShell, RejectsBadParameters) {
   const std::vector<double> radii{0.5, 1.0};
   EXPECT_THROW(generate_cubed_sphere_shell(0, radii), Error);
+  EXPECT_THROW(generate_cubed_sphere_shell(20000, radii), Error);  // more than 2³¹ tetrahedra
   EXPECT_THROW(generate_cubed_sphere_shell(2, std::vector<double>{0.5}), Error);
   EXPECT_THROW(generate_cubed_sphere_shell(2, std::vector<double>{0.5, 0.4}), Error);
   EXPECT_THROW(generate_cubed_sphere_shell(2, std::vector<double>{0.0, 1.0}), Error);

@@ -128,6 +128,7 @@ TEST(UnitLayerRadii, SizeProportionalToTheRadiusGivesGeometricLayers) {
 TEST(UnitLayerRadii, RejectsANonPositiveSize) {
   EXPECT_THROW(unit_layer_radii(0.5, 1.0, [](double r) { return r - 0.75; }), Error);
   EXPECT_THROW(unit_layer_radii(1.0, 0.5, [](double) { return 0.1; }), Error);
+  EXPECT_THROW(unit_layer_radii(0.5, 1.0, [](double) { return 1e-7; }), Error);  // 5 million layers
 }
 
 }  // namespace

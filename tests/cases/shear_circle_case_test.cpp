@@ -91,8 +91,9 @@ TEST(ShearCircleCase, RejectsMismatchedParameters) {
   spec.name = "uniform";
   EXPECT_THROW(generate_shear_circle_annulus(0.5, 1.0, spec), Error);
   spec = shear_circle();
-  spec.h_min = 1e-14;
-  EXPECT_THROW(generate_shear_circle_annulus(0.5, 1.0, spec), Error);  // far too many layers
+  spec.h_min = 1e-5;
+  spec.h_max = 1e-4;
+  EXPECT_THROW(generate_shear_circle_annulus(0.5, 1.0, spec), Error);  // 47124 sectors x 5000 layers
   spec = shear_circle();
   spec.h_min = -1;
   EXPECT_THROW(generate_shear_circle_annulus(0.5, 1.0, spec), Error);

@@ -229,6 +229,14 @@ TYPED_TEST(SymFunctionsTest, SquaredLengthAndItsGradient) {
     SymMat<D> other = random_direction<D>(rng);
     EXPECT_NEAR(frobenius_dot(at_t.second_derivative(h, outer(u)), other),
                 quadratic_form(at_t.second_derivative(h, other), u), 1e-13 * scale);
+    // The Hessian along D directions at once, in the eigenbasis: entry (i, j) is uᵀ D²exp[Hi, Hj] u.
+    std::array<SymMat<D>, D> directions;
+    for (auto& direction : directions) direction = random_direction<D>(rng);
+    SymMat<D> hessian = at_t.squared_length_hessian(directions, u);
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j <= i; ++j)
+        EXPECT_NEAR(hessian(i, j), quadratic_form(at_t.second_derivative(directions[i], directions[j]), u),
+                    1e-13 * scale);
   }
 }
 

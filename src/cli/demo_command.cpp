@@ -1,0 +1,192 @@
+// hocav demo [-o DIR] [--threads N] [--h H]
+// The main job on built-in cases, no input needed: the paper's "Meshes 1" pipeline on the volume
+// between two spheres (an isotropic mesh, a surface metric graded into the volume, P2 curving with
+// the P3 surrogate of the boundary), the same curving on the 2D shear-circle case (the paper's
+// Fig. 1), and pictures of both: a planar cut through the curved 3D mesh, the curved 2D mesh,
+// histograms of the edge gains and of the normalized Jacobians (SVG).
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <thread>
+
+#include "base/error.hpp"
+#include "cases/case_registry.hpp"
+#include "cli/command_support.hpp"
+#include "cli/commands.hpp"
+#include "io/atomic_output.hpp"
+#include "mesh/measure.hpp"
+#include "metric/analytic_metric.hpp"
+#include "metric/gradation.hpp"
+#include "metric/surface_metric.hpp"
+#include "picture/histogram_chart.hpp"
+#include "picture/p2_mesh_picture.hpp"
+#include "picture/section_picture.hpp"
+
+namespace hocav {
+namespace {
+
+// The 3D case's metric, as `hocav metric --surface 0.01,0.1 --gradation 1.5` makes it: size 0.01
+// along the normals of both spheres, 0.1 along them, graded into the volume.
+constexpr double kShellNormalSize = 0.01, kShellTangentialSize = 0.1, kShellGradation = 1.5;
+// Lattice subdivisions of each face for the cut: curved edges drawn with 8 pieces each.
+constexpr int kCutSubdivisions = 8;
+// Min normalized Jacobian colours: 0 (dark, a degenerate element) to 1 (yellow, as the straight
+// element); elements above 1 stay yellow.
+const ColorScale kJacobianColors{0, 1};
+
+struct DemoOptions {
+  std::string directory = "out";
+  int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  double h = 0.1;  // target edge length of the sphere-shell mesh
+};
+
+void progress(const std::string& message) { std::cerr << "demo: " << message << '\n'; }
+
+template <int D>
+Mesh<D> generated(const std::string& name, const CaseValues& values) {
+  progress("generating " + name);
+  return std::get<Mesh<D>>(generate_case(find_case(name), values));
+}
+
+std::vector<double> min_normalized_jacobians(const auto& mesh) {
+  std::vector<double> values;
+  for (const JacobianQuality& quality : mesh_jacobian_quality(mesh, kReportedRefinement))
+    values.push_back(quality.min_normalized_jacobian);
+  return values;
+}
+
+// The files of the run, listed at the end.
+struct Written {
+  std::vector<std::pair<std::string, std::string>> files;  // path, what it holds
+
+  // The path of file `name` in the output folder, recorded with what it holds.
+  std::string path(const DemoOptions& options, const std::string& name, const std::string& what) {
+    files.emplace_back((std::filesystem::path(options.directory) / name).string(), what);
+    return files.back().first;
+  }
+};
+
+void write_histograms(const std::vector<double>& gains, const std::vector<double>& jacobians, const DemoOptions& options,
+                      Written& written) {
+  constexpr int kBins = 25;
+  double gain_lower = 0, gain_upper = 0.05;
+  for (double gain : gains) {
+    gain_lower = std::min(gain_lower, gain);
+    gain_upper = std::max(gain_upper, gain);
+  }
+  write_svg(written.path(options, "edge-gains.svg", "histogram of the gains of the volume edges"),
+            histogram_chart(summarize_values(gains, kBins, gain_lower, gain_upper),
+                            {"Gain of each volume edge (sphere shell)",
+                             "gain 1 − ℓ(curved) / ℓ(straight), lengths in the metric", "edges (logarithmic)",
+                             std::nullopt, true}));
+  write_svg(written.path(options, "normalized-jacobians.svg", "histogram of the min normalized Jacobians"),
+            histogram_chart(summarize_values(jacobians, 2 * kBins, 0, 2),
+                            {"Min normalized Jacobian of each tetrahedron (sphere shell)",
+                             "min of J / |J_straight| over the element (1: as the straight element)", "tetrahedra",
+                             kJacobianColors}));
+}
+
+// Generates, grades, curves and writes the sphere-shell case; draws its cut and histograms.
+CurvingReport run_sphere_shell(const DemoOptions& options, Written& written) {
+  Mesh<3> mesh = generated<3>("sphere-shell", {{"h", options.h}});
+  progress("surface metric graded into the volume (" + mesh_summary(mesh) + ")");
+  std::vector<SymMat<3>> metrics = surface_metric_at_vertices(
+      mesh, SurfaceSizes{kShellNormalSize, kShellTangentialSize, bounding_box_diagonal(mesh)});
+  grade_metrics(mesh, metrics, GradationOptions{kShellGradation});
+  const MetricField<3> field(mesh, metrics);
+
+  progress("curving on " + std::to_string(options.threads) + " threads");
+  CurvingSettings settings;
+  settings.threads = options.threads;
+  settings.progress = true;
+  CurvingReport report = curve_in_metric(mesh, field, settings);
+
+  progress("writing the P2 mesh, its .vtu and the report");
+  write_mesh_file(written.path(options, "sphere-shell-p2.meshb", "the curved P2 mesh"), mesh);
+  write_curved_vtu(written.path(options, "sphere-shell-p2.vtu",
+                                "the same for ParaView (set Nonlinear Subdivision Level >= 2)"),
+                   mesh, field);
+  {
+    AtomicOutput out(written.path(options, "sphere-shell-report.json", "the run's figures (Table-1 columns, counters)"));
+    write_curving_report_json(out.stream(), report);
+    out.commit();
+  }
+
+  progress("drawing the cut z = 0 and the histograms");
+  const std::vector<double> jacobians = min_normalized_jacobians(mesh);
+  MeshFigureOptions figure{"Curved sphere shell, cut by the plane z = 0",
+                           "P2 tetrahedra curved in a surface metric (normal size 0.01); each section filled by "
+                           "its element's min normalized Jacobian",
+                           kJacobianColors, "min normalized Jacobian",
+                           Box{{{0.28, 0.28}}, {{0.58, 0.58}}}};  // the detail: where the inner sphere meets x = y
+  write_svg(written.path(options, "sphere-shell-cut.svg", "a cut through the curved 3D mesh"),
+            section_picture(cut_p2_mesh(mesh, CutPlane{}, kCutSubdivisions), jacobians, figure));
+  write_histograms(volume_edge_gains(mesh, field), jacobians, options, written);
+  return report;
+}
+
+// The 2D case, the paper's Fig. 1: the shear-circle case (a unit mesh of the shear-circle metric,
+// whose options default to the analytic metric's) curved in that metric, drawn exactly.
+CurvingReport run_shear_circle(const DemoOptions& options, Written& written) {
+  Mesh<2> mesh = generated<2>("shear-circle", {});
+  AnalyticMetricSpec shear;
+  shear.name = "shear-circle";
+  const MetricField<2> field(mesh, analytic_metric_at_vertices(shear, mesh));
+  progress("curving it in its metric (" + mesh_summary(mesh) + ")");
+  CurvingSettings settings;
+  settings.threads = options.threads;
+  const CurvingReport report = curve_in_metric(mesh, field, settings);
+  MeshFigureOptions figure{"Shear-circle case (the paper's Fig. 1), curved",
+                           "P2 triangles drawn exactly (quadratic Bézier edges), filled by their min normalized Jacobian; "
+                           "sizes 0.001 across the circle r = 0.75, 0.1 along it",
+                           kJacobianColors, "min normalized Jacobian",
+                           Box{{{-0.06, 0.69}}, {{0.06, 0.81}}}};  // the detail: the layer at its top
+  write_svg(written.path(options, "shear-circle-p2.svg", "the curved 2D mesh"),
+            p2_mesh_picture(mesh, min_normalized_jacobians(mesh), figure));
+  return report;
+}
+
+void run_demo(const DemoOptions& options) {
+  std::error_code error;
+  std::filesystem::create_directories(options.directory, error);
+  if (error || !std::filesystem::is_directory(options.directory))
+    throw Error(options.directory + ": cannot make this output folder" + (error ? " (" + error.message() + ")" : ""));
+  Written written;
+  const CurvingReport shell = run_sphere_shell(options, written);
+  const CurvingReport shear_circle = run_shear_circle(options, written);
+  std::cout << "curved the sphere shell:\n";
+  write_curving_report_table(std::cout, shell);
+  char line[200];
+  std::snprintf(line, sizeof line,
+                "curved the shear circle (2D): %d triangles, normalized Jacobian min %.3g, gain avg / max %.2f%% / %.1f%%",
+                shear_circle.elements, shear_circle.normalized_jacobian.min, 100 * shear_circle.average_gain,
+                100 * shear_circle.max_gain);
+  std::cout << line << '\n';
+  std::size_t width = 0;
+  for (const auto& file : written.files) width = std::max(width, file.first.size());
+  std::cout << "files:\n";
+  for (const auto& [path, what] : written.files)
+    std::cout << "  " << std::left << std::setw(static_cast<int>(width)) << path << "  " << what << '\n';
+}
+
+}  // namespace
+
+void add_demo_command(CLI::App& app) {
+  auto options = std::make_shared<DemoOptions>();
+  CLI::App* command = app.add_subcommand(
+      "demo", "The main job, no input needed: curve the sphere-shell case (and the 2D shear circle), write the P2 mesh, "
+              "the report and pictures");
+  command->add_option("-o,--output", options->directory, "folder of the output files (created if needed)")
+      ->capture_default_str();
+  command->add_option("--threads", options->threads, "threads of the curving (the output does not depend on it)")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
+  command->add_option("--h", options->h, "target edge length of the sphere-shell mesh (smaller: more tetrahedra)")
+      ->check(CLI::Range(0.02, 0.5))
+      ->capture_default_str();
+  command->callback([options] { run_demo(*options); });
+}
+
+}  // namespace hocav
