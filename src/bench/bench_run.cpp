@@ -9,11 +9,9 @@
 #include <cstring>
 #include <iostream>
 #include <memory>
-#include <optional>
 #include <type_traits>
 
-#include "adapt/proposal_node_source.hpp"
-#include "adapt/reinsertion_curving.hpp"
+#include "adapt/curving_run.hpp"
 #include "base/error.hpp"
 #include "surface/p3_surrogate.hpp"
 
@@ -37,13 +35,6 @@ std::uint64_t output_hash(const Mesh<D>& mesh) {
   return hash;
 }
 
-double processor_seconds() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  auto seconds = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
-  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
-}
-
 // The case's run on its generated mesh: metric (not timed, as reading a .sol is not), then what
 // `hocav curve` does between reading and writing.
 template <int D>
@@ -53,25 +44,14 @@ BenchFigures curve_generated(Mesh<D>& mesh, const BenchCase& bench_case, int thr
   const MetricField<D> field(mesh, metrics);
   metrics = {};
   std::unique_ptr<P3Surrogate<D>> surrogate;
-  std::optional<BoundaryProposals<D>> proposals;
-  std::optional<ProposalNodeSource<D>> boundary_nodes;
-  if (bench_case.surface == "p3") {
-    surrogate = std::make_unique<P3Surrogate<D>>(mesh);
-    proposals.emplace(mesh, *surrogate);
-    boundary_nodes.emplace(*proposals);
-  }
+  if (bench_case.surface == "p3") surrogate = std::make_unique<P3Surrogate<D>>(mesh);
   const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_start).count();
-  const Index points_before = mesh.vertex_count();
   ReinsertionOptions reinsertion;
   reinsertion.threads = threads;
-  const double processor_start = processor_seconds();
-  const ReinsertionResult result = curve_by_reinsertion<D>(mesh, field, boundary_nodes ? &*boundary_nodes : nullptr, reinsertion);
-  const double cpu_seconds = processor_seconds() - processor_start;
-  CurvingReport report =
-      make_curving_report(mesh, field, points_before, result, proposals ? static_cast<Index>(proposals->size()) : 0);
-  BenchFigures figures = bench_figures(report);
-  figures.setup_seconds = setup_seconds;
-  figures.cpu_seconds = cpu_seconds;
+  const CurvingRun run = curve_with_boundary<D>(mesh, field, surrogate.get(), reinsertion);
+  BenchFigures figures = bench_figures(run.report);
+  figures.setup_seconds = setup_seconds + run.proposal_seconds;
+  figures.cpu_seconds = run.cpu_seconds;
   figures.output_hash = output_hash(mesh);
   return figures;
 }

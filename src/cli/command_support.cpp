@@ -4,10 +4,8 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
-#include <optional>
 
-#include "adapt/proposal_node_source.hpp"
-#include "adapt/reinsertion_curving.hpp"
+#include "adapt/curving_run.hpp"
 #include "base/error.hpp"
 #include "bezier/mesh_quality.hpp"
 #include "geom/sym_functions.hpp"
@@ -137,14 +135,6 @@ std::unique_ptr<BoundaryGeometry<D>> boundary_geometry(const std::string& surfac
 template <int D>
 CurvingReport curve_in_metric(Mesh<D>& mesh, const MetricField<D>& field, const CurvingSettings& settings) {
   const auto geometry = boundary_geometry<D>(settings.surface, mesh);
-  std::optional<BoundaryProposals<D>> proposals;
-  std::optional<ProposalNodeSource<D>> boundary_nodes;
-  if (geometry) {
-    proposals.emplace(mesh, *geometry);
-    boundary_nodes.emplace(*proposals);
-  }
-  const Index points_before = mesh.vertex_count();
-
   ReinsertionOptions reinsertion;
   reinsertion.cavity.jacobian_floor = settings.jacobian_floor;
   reinsertion.passes = settings.passes;
@@ -156,16 +146,12 @@ CurvingReport curve_in_metric(Mesh<D>& mesh, const MetricField<D>& field, const 
     reinsertion.progress = [&](double fraction) {
       for (; reported < static_cast<int>(10 * fraction); ++reported) std::cerr << "curving: " << 10 * (reported + 1) << "%\n";
     };
-  ReinsertionResult result =
-      curve_by_reinsertion<D>(mesh, field, boundary_nodes ? &*boundary_nodes : nullptr, reinsertion);
+  CurvingReport report = curve_with_boundary<D>(mesh, field, geometry.get(), reinsertion).report;
 
   ConsistencyOptions consistency;
   consistency.require_positive_orientation = false;
   if (auto problems = check_consistency(mesh, consistency); !problems.empty())
     throw Error("internal error: the curved mesh is inconsistent: " + problems.front());
-  CurvingReport report = make_curving_report(mesh, field, points_before, result,
-                                             proposals ? static_cast<Index>(proposals->size()) : 0);
-  report.threads = settings.threads;
   return report;
 }
 

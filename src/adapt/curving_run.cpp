@@ -1,0 +1,46 @@
+#include "adapt/curving_run.hpp"
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <optional>
+
+#include "adapt/proposal_node_source.hpp"
+
+namespace hocav {
+namespace {
+
+double processor_seconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  auto seconds = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
+}  // namespace
+
+template <int D>
+CurvingRun curve_with_boundary(Mesh<D>& mesh, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
+                               const ReinsertionOptions& options) {
+  CurvingRun run;
+  const auto proposal_start = std::chrono::steady_clock::now();
+  std::optional<BoundaryProposals<D>> proposals;
+  std::optional<ProposalNodeSource<D>> boundary_nodes;
+  if (geometry) {
+    proposals.emplace(mesh, *geometry);
+    boundary_nodes.emplace(*proposals);
+  }
+  run.proposal_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - proposal_start).count();
+  const Index points_before = mesh.vertex_count();
+  const double processor_start = processor_seconds();
+  const ReinsertionResult result = curve_by_reinsertion<D>(mesh, field, boundary_nodes ? &*boundary_nodes : nullptr, options);
+  run.cpu_seconds = processor_seconds() - processor_start;
+  run.report = make_curving_report(mesh, field, points_before, result, proposals ? static_cast<Index>(proposals->size()) : 0);
+  run.report.threads = options.threads;
+  return run;
+}
+
+template CurvingRun curve_with_boundary(Mesh<2>&, const MetricField<2>&, const BoundaryGeometry<2>*, const ReinsertionOptions&);
+template CurvingRun curve_with_boundary(Mesh<3>&, const MetricField<3>&, const BoundaryGeometry<3>*, const ReinsertionOptions&);
+
+}  // namespace hocav
