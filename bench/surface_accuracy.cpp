@@ -39,7 +39,7 @@ struct ShellBoundaries {
 // Meshes the shell with gmsh at order 2 and keeps its boundary triangles.
 ShellBoundaries mesh_shell_boundary(double h) {
   GmshSession session("sphere-shell-p2");
-  const std::vector<GmshBoundaryEntity> entities = build_shell_model<3>({kInnerRadius, kOuterRadius, h});
+  const std::vector<GmshBoundaryEntity> entities = build_shell_model<3>(kInnerRadius, kOuterRadius);
   std::vector<std::size_t> node_tags;
   std::vector<double> coordinates, parametric;
   std::map<int, std::vector<std::size_t>> triangle_nodes_of_ref;

@@ -25,6 +25,12 @@ const std::vector<CaseOption> kBoundaryLayerOptions{
     {"growth", "ratio of the thicknesses of neighbouring layers", 1.2},
     {"layers", "layers per wall; 0 = until they are as thick as the cells are wide (inner) or until the fronts meet (both)", 0}};
 
+// The shells' CAD model: the two circles or spheres of the case's radii.
+template <int D>
+void write_shell_model(const CaseValues& values, const std::string& path) {
+  write_shell_cad<D>(values.at("r-in"), values.at("r-out"), path);
+}
+
 int whole_number(const CaseValues& values, const std::string& name) {
   const double value = values.at(name);
   if (!(std::abs(value) < 1e9 && value == std::round(value))) throw Error(name + " must be a whole number, got " + number_text(value));
@@ -69,7 +75,8 @@ void add_layered_shells(std::vector<CaseDefinition>& definitions, int dimension)
            const ShellLayering layering = shell_layering(values, walls);
            return three_d ? AnyMesh(generate_cubed_sphere_shell(layering, values.at(target_name)))
                           : AnyMesh(generate_polar_annulus(layering, values.at(target_name)));
-         }});
+         },
+         three_d ? write_shell_model<3> : write_shell_model<2>});
   }
 }
 
@@ -91,21 +98,25 @@ CaseDefinition shear_circle_definition() {
             metric.h_min = values.at("h-min");
             metric.h_max = values.at("h-max");
             return AnyMesh(generate_shear_circle_annulus(values.at("r-in"), values.at("r-out"), metric));
-          }};
+          },
+          write_shell_model<2>};
 }
 
 std::vector<CaseDefinition> make_definitions() {
   std::vector<CaseDefinition> definitions{
       {"square", "unit square [0,1]^2, right triangles; facet refs 1 bottom, 2 right, 3 top, 4 left", 2,
-       {size_option(0.1)}, [](const CaseValues& values) { return AnyMesh(generate_square(cells_for_size(values.at("h")))); }},
+       {size_option(0.1)}, [](const CaseValues& values) { return AnyMesh(generate_square(cells_for_size(values.at("h")))); },
+       nullptr},
       {"cube", "unit cube [0,1]^3, 6 tetrahedra per cell; facet refs 1/2 x=0/1, 3/4 y=0/1, 5/6 z=0/1", 3,
-       {size_option(0.25)}, [](const CaseValues& values) { return AnyMesh(generate_cube(cells_for_size(values.at("h")))); }},
+       {size_option(0.25)}, [](const CaseValues& values) { return AnyMesh(generate_cube(cells_for_size(values.at("h")))); },
+       nullptr},
       {"annulus", "region between two concentric circles (gmsh); facet refs 1 inner, 2 outer", 2,
        {kShellOptions[0], kShellOptions[1], size_option(0.1)},
-       [](const CaseValues& values) { return AnyMesh(generate_annulus(shell_parameters(values))); }},
+       [](const CaseValues& values) { return AnyMesh(generate_annulus(shell_parameters(values))); }, write_shell_model<2>},
       {"sphere-shell", "region between two concentric spheres (gmsh); facet refs 1 inner, 2 outer", 3,
        {kShellOptions[0], kShellOptions[1], size_option(0.25)},
-       [](const CaseValues& values) { return AnyMesh(generate_sphere_shell(shell_parameters(values))); }},
+       [](const CaseValues& values) { return AnyMesh(generate_sphere_shell(shell_parameters(values))); },
+       write_shell_model<3>},
   };
   add_layered_shells(definitions, 2);
   definitions.push_back(shear_circle_definition());

@@ -28,6 +28,9 @@ struct CaseDefinition {
   std::vector<CaseOption> options;
   // Called with a value for every option (defaults filled in).
   std::function<AnyMesh(const CaseValues&)> make;
+  // Writes the CAD model of the case's domain (.brep, .step) for `hocav curve --surface cad:FILE`,
+  // with the same values; empty for a case with no curved boundary.
+  std::function<void(const CaseValues&, const std::string& path)> write_cad;
 };
 
 const std::vector<CaseDefinition>& case_definitions();

@@ -36,13 +36,13 @@ void check_parameters(const ShellParameters& p) {
 }  // namespace
 
 template <int D>
-std::vector<GmshBoundaryEntity> build_shell_model(const ShellParameters& p) {
-  check_parameters<D>(p);
-  return call_gmsh([&p] {
+std::vector<GmshBoundaryEntity> build_shell_model(double inner_radius, double outer_radius) {
+  check_shell_radii(inner_radius, outer_radius);
+  return call_gmsh([inner_radius, outer_radius] {
     namespace occ = gmsh::model::occ;
     auto add_ball = [](double radius) { return D == 2 ? occ::addDisk(0, 0, 0, radius, radius) : occ::addSphere(0, 0, 0, radius); };
-    int outer = add_ball(p.outer_radius);
-    int inner = add_ball(p.inner_radius);
+    int outer = add_ball(outer_radius);
+    int inner = add_ball(inner_radius);
     gmsh::vectorpair shell;
     std::vector<gmsh::vectorpair> ancestry;
     occ::cut({{D, outer}}, {{D, inner}}, shell, ancestry);
@@ -55,7 +55,7 @@ std::vector<GmshBoundaryEntity> build_shell_model(const ShellParameters& p) {
     for (const auto& [dimension, tag] : boundary_entities) {
       double x_min, y_min, z_min, x_max, y_max, z_max;
       gmsh::model::getBoundingBox(dimension, tag, x_min, y_min, z_min, x_max, y_max, z_max);
-      bool inner_side = std::abs(x_max - p.inner_radius) < std::abs(x_max - p.outer_radius);
+      bool inner_side = std::abs(x_max - inner_radius) < std::abs(x_max - outer_radius);
       boundary.push_back({tag, inner_side ? 1 : 2});
     }
     return boundary;
@@ -63,21 +63,26 @@ std::vector<GmshBoundaryEntity> build_shell_model(const ShellParameters& p) {
 }
 
 template <int D>
-void write_shell_cad(const ShellParameters& p, const std::string& path) {
+void write_shell_cad(double inner_radius, double outer_radius, const std::string& path) {
+  check_cad_path(path);
+  GmshSession session(D == 2 ? "annulus" : "sphere-shell");
+  build_shell_model<D>(inner_radius, outer_radius);
+  call_gmsh([&path] { gmsh::write(path); });
+}
+
+void check_cad_path(const std::string& path) {
   const std::string extension = file_extension(path);
   if (extension != ".brep" && extension != ".step" && extension != ".stp")
     throw Error(path + ": a CAD file must end in .brep, .step or .stp");
-  GmshSession session(D == 2 ? "annulus" : "sphere-shell");
-  build_shell_model<D>(p);
-  call_gmsh([&path] { gmsh::write(path); });
 }
 
 namespace {
 
 template <int D>
 Mesh<D> generate_shell(const ShellParameters& p, const std::string& name) {
+  check_parameters<D>(p);
   GmshSession session(name);
-  auto boundary = build_shell_model<D>(p);
+  auto boundary = build_shell_model<D>(p.inner_radius, p.outer_radius);
   call_gmsh([&p] {
     gmsh::option::setNumber("Mesh.MeshSizeMin", p.size);
     gmsh::option::setNumber("Mesh.MeshSizeMax", p.size);
@@ -101,9 +106,9 @@ Mesh<3> generate_sphere_shell(const ShellParameters& parameters) {
   return generate_shell<3>(parameters, "sphere-shell");
 }
 
-template std::vector<GmshBoundaryEntity> build_shell_model<2>(const ShellParameters&);
-template std::vector<GmshBoundaryEntity> build_shell_model<3>(const ShellParameters&);
-template void write_shell_cad<2>(const ShellParameters&, const std::string&);
-template void write_shell_cad<3>(const ShellParameters&, const std::string&);
+template std::vector<GmshBoundaryEntity> build_shell_model<2>(double, double);
+template std::vector<GmshBoundaryEntity> build_shell_model<3>(double, double);
+template void write_shell_cad<2>(double, double, const std::string&);
+template void write_shell_cad<3>(double, double, const std::string&);
 
 }  // namespace hocav

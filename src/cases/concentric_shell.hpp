@@ -27,14 +27,19 @@ Mesh<3> generate_sphere_shell(const ShellParameters& parameters);
 
 // Builds the shell's CAD model with OpenCASCADE in the current gmsh model (a GmshSession must be
 // open) and returns its boundary entities (circles in 2D, spheres in 3D) with the facet refs above.
-// Error for bad parameters, as the generators.
+// Error unless 0 < inner < outer.
 template <int D>
-std::vector<GmshBoundaryEntity> build_shell_model(const ShellParameters& parameters);
+std::vector<GmshBoundaryEntity> build_shell_model(double inner_radius, double outer_radius);
 
 // Writes the shell's CAD model to a .brep or .step/.stp file. Read back, its boundary entities
 // are numbered by OpenCASCADE (the outer one first: tags 1 outer, 2 inner — not the facet refs),
 // so a CAD boundary maps the refs by proximity (surface/cad_boundary_gmsh.hpp).
+// It is also the model of the structured shells (cubed-shell, polar-annulus, shear-circle), whose
+// boundary vertices lie on the same circles or spheres.
 template <int D>
-void write_shell_cad(const ShellParameters& parameters, const std::string& path);
+void write_shell_cad(double inner_radius, double outer_radius, const std::string& path);
+
+// Error unless `path` names a CAD file write_shell_cad can write (.brep, .step, .stp).
+void check_cad_path(const std::string& path);
 
 }  // namespace hocav

@@ -1,11 +1,12 @@
-// hocav generate CASE [case options] -o OUT [--order 1|2]: one subcommand per entry of the case
-// registry, its options and help taken from the entry.
+// hocav generate CASE [case options] -o OUT [--order 1|2] [--cad-out CAD]: one subcommand per
+// entry of the case registry, its options and help taken from the entry.
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <sstream>
 
 #include "cases/case_registry.hpp"
+#include "cases/concentric_shell.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
 
@@ -15,6 +16,7 @@ namespace {
 struct GenerateOptions {
   std::string output;
   int order = 1;
+  std::string cad_output;
 };
 
 std::string format_default(double value) {
@@ -36,6 +38,11 @@ std::string cases_footer() {
 }
 
 void run_generate(const CaseDefinition& definition, const CaseValues& values, const GenerateOptions& options) {
+  // Refuse a CAD request before writing anything, so a failure leaves no partial output.
+  if (!options.cad_output.empty()) {
+    if (!definition.write_cad) throw Error("--cad-out: case " + definition.name + " has no CAD model (its boundary is not curved)");
+    check_cad_path(options.cad_output);
+  }
   AnyMesh mesh = generate_case(definition, values);
   std::visit(
       [&options](auto& m) {
@@ -44,6 +51,10 @@ void run_generate(const CaseDefinition& definition, const CaseValues& values, co
         std::cout << "wrote " << options.output << ": " << mesh_summary(m) << '\n';
       },
       mesh);
+  if (!options.cad_output.empty()) {
+    definition.write_cad(values, options.cad_output);
+    std::cout << "wrote " << options.cad_output << ": the CAD model (for curve --surface cad:" << options.cad_output << ")\n";
+  }
 }
 
 }  // namespace
@@ -56,6 +67,8 @@ void add_generate_command(CLI::App& app) {
   command->add_option("--order", options->order, "element order: 2 adds straight P2 nodes")
       ->check(CLI::IsMember({1, 2}))
       ->capture_default_str();
+  command->add_option("--cad-out", options->cad_output,
+                      "also write the CAD model of the case's curved boundary (.brep, .step) for curve --surface cad:FILE");
   command->require_subcommand(1);
   command->footer(cases_footer());
   for (const CaseDefinition& definition : case_definitions()) {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli_test_support.hpp"
+#include "io/mesh_file.hpp"
 
 namespace {
 
@@ -50,6 +51,33 @@ TEST_F(Cli, GenerateTakesOptionsBeforeOrAfterTheCaseAndIsDeterministic) {
   EXPECT_EQ(read("a.mesh"), read("b.mesh"));
   run_ok("generate sphere-shell --h 0.5 -o c.meshb --order 2");
   EXPECT_EQ(stats_json("c.meshb", "d[\"order\"], d[\"counts\"][\"p2_nodes\"] == d[\"counts\"][\"edges\"]"), "(2, True)");
+}
+
+TEST_F(Cli, GenerateWritesTheCadModelThatCurveProjectsOn) {
+  // Radii other than the defaults: the model follows the case's options.
+  run_ok("generate cubed-shell --r-in 0.4 --r-out 1.2 --target-tets 3000 -o shell.meshb --cad-out shell.step");
+  run_ok("metric shell.meshb --surface 0.03 0.3 --gradation 1.5 -o shell.solb");
+  run_ok("curve shell.meshb --metric shell.solb --surface cad:shell.step -o curved.mesh -q");
+  const auto curved = std::get<hocav::Mesh<3>>(hocav::read_mesh_file(path("curved.mesh").string()).mesh);
+  // Every mid node of a boundary edge is on its sphere (OpenCASCADE's accuracy), or, where the
+  // correction could not take the whole proposal, strictly inside it.
+  int on_sphere[3] = {0, 0, 0};
+  for (hocav::Index f = 0; f < curved.facet_count(); ++f) {
+    const int ref = curved.facet_ref(f);
+    const double radius = ref == 1 ? 0.4 : 1.2;
+    const auto facet = curved.facet(f);
+    for (int i = 0; i < 3; ++i) {
+      const double node_radius = hocav::norm(curved.edge_node(curved.find_edge(facet[i], facet[(i + 1) % 3])));
+      if (std::abs(node_radius - radius) < 1e-9) ++on_sphere[ref];
+      else EXPECT_EQ(node_radius < radius, ref == 2) << "facet " << f << " radius " << node_radius;
+    }
+  }
+  EXPECT_GT(on_sphere[1], 0);
+  EXPECT_GT(on_sphere[2], 0);
+  // A case without a curved boundary has no model; a CAD file needs a CAD extension. Neither writes anything.
+  expect_failure("generate cube --cad-out cube.step -o cube.meshb", "CAD model");
+  expect_failure("generate annulus --cad-out annulus.iges -o annulus.meshb", "annulus.iges");
+  EXPECT_EQ(files(), (std::set<std::string>{"shell.meshb", "shell.step", "shell.solb", "curved.mesh"}));
 }
 
 TEST_F(Cli, ConvertsBetweenEveryFormatWithoutLoss) {

@@ -24,7 +24,7 @@ constexpr double kCadTolerance = 1e-9;
 
 TEST(SurfaceCad, SphereShellBrepWithRefsAsTags) {
   const std::string path = temporary_path("hocav_shell.brep");
-  write_shell_cad<3>({0.5, 1.0, 0.25}, path);
+  write_shell_cad<3>(0.5, 1.0, path);
   const CadBoundary<3> cad(path);
   // Read back, OpenCASCADE numbers the outer sphere 1 and the inner one 2.
   const Vec3 x{{0.3, 0.4, 0.2}};
@@ -45,7 +45,7 @@ TEST(SurfaceCad, SphereShellRefsMapByProximity) {
   const ShellParameters parameters{0.5, 1.0, 0.5};
   const Mesh<3> mesh = generate_sphere_shell(parameters);
   const std::string path = temporary_path("hocav_shell.step");
-  write_shell_cad<3>(parameters, path);
+  write_shell_cad<3>(parameters.inner_radius, parameters.outer_radius, path);
   const CadBoundary<3> cad(path, mesh);
   EXPECT_EQ(cad.entity_of_ref(1), 2);  // the mesh's inner sphere is the CAD's surface 2
   EXPECT_EQ(cad.entity_of_ref(2), 1);
@@ -62,7 +62,7 @@ TEST(SurfaceCad, AnnulusCurves) {
   const ShellParameters parameters{0.5, 1.0, 0.2};
   const Mesh<2> mesh = generate_annulus(parameters);
   const std::string path = temporary_path("hocav_annulus.brep");
-  write_shell_cad<2>(parameters, path);
+  write_shell_cad<2>(parameters.inner_radius, parameters.outer_radius, path);
   const CadBoundary<2> cad(path, mesh);
   const Vec2 x{{0.3, 0.4}};
   EXPECT_NEAR(norm(cad.project(x, {.ref = 1}).point), 0.5, kCadTolerance);
@@ -100,7 +100,7 @@ TEST(SurfaceCad, RidgeCurveBetweenTwoSurfaces) {
 TEST(SurfaceCad, Errors) {
   EXPECT_THROW(CadBoundary<3>(temporary_path("no_such_file.brep")), Error);
   const std::string path = temporary_path("hocav_shell_errors.brep");
-  write_shell_cad<3>({0.5, 1.0, 0.25}, path);
+  write_shell_cad<3>(0.5, 1.0, path);
   {
     const CadBoundary<3> cad(path);
     // gmsh is held by the CAD boundary: another session in this thread is refused, not a deadlock.
@@ -109,7 +109,7 @@ TEST(SurfaceCad, Errors) {
   // A mesh that lies on no surface of the model.
   Mesh<3> far_away = generate_sphere_shell({2.0, 3.0, 1.0});
   EXPECT_THROW(CadBoundary<3>(path, far_away), Error);
-  EXPECT_THROW(write_shell_cad<3>({0.5, 1.0, 0.25}, temporary_path("shell.iges")), Error);
+  EXPECT_THROW(write_shell_cad<3>(0.5, 1.0, temporary_path("shell.iges")), Error);
   std::filesystem::remove(path);
 }
 
