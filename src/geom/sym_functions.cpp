@@ -2,6 +2,7 @@
 #include "geom/sym_functions.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -41,26 +42,44 @@ double first_difference(double a, double b, double exp_a, double exp_b) {
   return delta == 0.0 ? exp_b : exp_b * (std::expm1(delta) / delta);
 }
 
-// exp[lo, mid, hi] for lo ≤ mid ≤ hi, given upper = exp[hi, mid] and lower = exp[mid, lo].
-double second_difference(double lo, double mid, double hi, double upper, double lower) {
+// The Taylor series of exp[x, y, z] below: 1/(k+2)! and 1/k for k ≤ kMaxTerms, made by the same divisions a
+// loop would do, so that no division remains in the hot loop.
+constexpr int kMaxTerms = 16;
+struct TaylorCoefficients {
+  std::array<double, kMaxTerms + 1> inverse_factorial{}, inverse{};
+};
+constexpr TaylorCoefficients kTaylor = [] {
+  TaylorCoefficients c;
+  c.inverse_factorial[0] = 0.5;
+  for (int k = 1; k <= kMaxTerms; ++k) {
+    c.inverse_factorial[k] = c.inverse_factorial[k - 1] / (k + 2);
+    c.inverse[k] = 1.0 / k;
+  }
+  return c;
+}();
+
+// exp[lo, mid, hi] for lo ≤ mid ≤ hi, given upper = exp[hi, mid], lower = exp[mid, lo] and e^lo, e^hi.
+double second_difference(double lo, double mid, double hi, double upper, double lower, double exp_lo, double exp_hi) {
   if (hi - lo >= kDirectQuotientSpread) return (upper - lower) / (hi - lo);
   // exp[x, y, z] = Σ_k h_k(x, y, z)/(k+2)! with h_k the complete homogeneous polynomials, about the centre so
   // that |x|, |y|, |z| ≤ r = (hi − lo)/2 ≤ 1/2. |h_k| ≤ (k+1)(k+2)/2 r^k, so term k is at most r^k/(2 k!), and
   // the tail after it is smaller still; the sum is ≥ e^{-1/2}/2. Stop once r^k/k! < 1e-17: by k = 16 at
   // r = 1/2, at once for equal arguments (a locally isotropic metric).
-  constexpr int kMaxTerms = 16;
   double centre = 0.5 * (lo + hi);
   double x = hi - centre, y = mid - centre, z = lo - centre;
-  double power_x = 1.0, h_xy = 1.0, h_xyz = 1.0, inverse_factorial = 0.5, sum = 0.5, term_bound = 1.0;
+  double power_x = 1.0, h_xy = 1.0, h_xyz = 1.0, sum = 0.5, term_bound = 1.0;
   for (int k = 1; k <= kMaxTerms && term_bound >= 1e-17; ++k) {
     power_x *= x;
     h_xy = power_x + y * h_xy;  // h_k(x, y) = x^k + y h_{k−1}(x, y)
     h_xyz = h_xy + z * h_xyz;   // h_k(x, y, z) = h_k(x, y) + z h_{k−1}(x, y, z)
-    inverse_factorial /= k + 2;
-    sum += h_xyz * inverse_factorial;
-    term_bound *= x / k;
+    sum += h_xyz * kTaylor.inverse_factorial[k];
+    term_bound *= x * kTaylor.inverse[k];
   }
-  return std::exp(centre) * sum;
+  // e^centre = sqrt(e^lo e^hi) to ~2 ulps, a square root instead of an exponential, while the product is a
+  // normal number (|lo + hi| < ~1400).
+  const double product = exp_lo * exp_hi;
+  const double exp_centre = std::isnormal(product) && product < 1e300 ? std::sqrt(product) : std::exp(centre);
+  return exp_centre * sum;
 }
 
 }  // namespace
@@ -96,7 +115,8 @@ double exp_divided_difference(double a, double b, double c) {
   std::array<double, 3> sorted = {a, b, c};
   std::sort(sorted.begin(), sorted.end());
   auto [lo, mid, hi] = sorted;
-  return second_difference(lo, mid, hi, exp_divided_difference(hi, mid), exp_divided_difference(mid, lo));
+  return second_difference(lo, mid, hi, exp_divided_difference(hi, mid), exp_divided_difference(mid, lo), std::exp(lo),
+                           std::exp(hi));
 }
 
 template <int D>
@@ -153,7 +173,8 @@ typename ExpFrechet<D>::SecondDifferences ExpFrechet<D>::second_differences() co
   for (int i = 0; i < D; ++i)
     for (int j = i; j < D; ++j)
       for (int k = j; k < D; ++k) {
-        double f = second_difference(theta[i], theta[j], theta[k], first_differences_(k, j), first_differences_(j, i));
+        double f = second_difference(theta[i], theta[j], theta[k], first_differences_(k, j), first_differences_(j, i),
+                                     first_differences_(i, i), first_differences_(k, k));
         second[i][j][k] = second[i][k][j] = second[j][i][k] = second[j][k][i] = second[k][i][j] = second[k][j][i] = f;
       }
   return second;
