@@ -4,8 +4,20 @@
 #include <array>
 #include <cmath>
 
+#include "curve/kink_minimum.hpp"
+
 namespace hocav {
 namespace {
+
+// A start on a kink is declared optimal when every one-sided slope of ℓ in the bisector plane exceeds this
+// fraction of ℓ/|AB|: a thousand times the error of the slopes (round-off, and the ~1e-10 off-face tolerance).
+constexpr double kKinkSlopeMargin = 1e-8;
+
+template <int D>
+double high_precision_length(const MetricField<D>& field, const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b,
+                             const Vec<D>& node, Index hint) {
+  return EdgeLengthFunction<D>(a, b, high_precision_rule()).length(node, field.log_metric_at(node, hint));
+}
 
 // Solves H p = −g for a symmetric positive definite H by Cholesky; false when H is not.
 template <int D>
@@ -39,11 +51,13 @@ bool newton_direction(const SymMat<D>& h, const Vec<D>& g, Vec<D>& p) {
 }  // namespace
 
 template <int D>
-EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b,
-                                         const SymMat<D>& log_a, const SymMat<D>& log_b, const Vec<D>& start,
-                                         Index hint, const EdgeOptimizerOptions& options) {
+EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& end_a,
+                                         const EdgeEndpoint<D>& end_b, const Vec<D>& start, Index hint,
+                                         const EdgeOptimizerOptions& options) {
   using Order = typename EdgeLengthFunction<D>::Order;
-  const EdgeLengthFunction<D> function(a, b, log_a, log_b, *options.rule);
+  const EdgeLengthFunction<D> function(end_a, end_b, *options.rule);
+  const Vec<D>& a = end_a.position;
+  const Vec<D>& b = end_b.position;
   const double edge_size = norm(b - a);
   const Vec<D> midpoint = 0.5 * (a + b);
   const double max_displacement = options.max_displacement * edge_size;
@@ -70,10 +84,15 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<
   result.back_element = sample.where.element;
   auto value = function.evaluate(first, sample.log_metric, log_gradient_in(sample.where.element), Order::kHessian);
   ++result.evaluations;
+  // On a kink, the Newton model of the element found misses the other elements' slopes; when all of them
+  // ascend, the start is optimal (kink_minimum.hpp) and no trial is needed.
+  const bool optimal_start =
+      on_back_mesh_face(sample.where) &&
+      is_strict_minimum_on_kink(field, sample.where, direction, value, kKinkSlopeMargin * value.length / edge_size);
   const double initial_length = value.length;
   double trust = 0.25 * edge_size;
 
-  for (; result.iterations < options.max_iterations; ++result.iterations) {
+  for (; !optimal_start && result.iterations < options.max_iterations; ++result.iterations) {
     // Newton in the plane: project gradient and Hessian, and make the Hessian regular along the
     // edge so the step has no component there.
     const Vec<D> gradient = onto_plane(value.gradient);
@@ -150,8 +169,8 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<
   }
 
   if (options.measure_gain) {
-    result.straight_length = high_precision_edge_length(field, a, b, log_a, log_b, midpoint, hint);
-    result.optimized_length = high_precision_edge_length(field, a, b, log_a, log_b, result.node, result.back_element);
+    result.straight_length = high_precision_length(field, end_a, end_b, midpoint, hint);
+    result.optimized_length = high_precision_length(field, end_a, end_b, result.node, result.back_element);
     result.gain = 1 - result.optimized_length / result.straight_length;
   }
   return result;
@@ -160,13 +179,12 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<
 template <int D>
 double high_precision_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b,
                                   const SymMat<D>& log_a, const SymMat<D>& log_b, const Vec<D>& node, Index hint) {
-  EdgeLengthFunction<D> function(a, b, log_a, log_b, high_precision_rule());
-  return function.length(node, field.log_metric_at(node, hint));
+  return high_precision_length(field, edge_endpoint(a, log_a), edge_endpoint(b, log_b), node, hint);
 }
 
 #define HOCAV_INSTANTIATE(D)                                                                                        \
-  template EdgeOptimization<D> optimize_edge_length(const MetricField<D>&, const Vec<D>&, const Vec<D>&,            \
-                                                    const SymMat<D>&, const SymMat<D>&, const Vec<D>&, Index,        \
+  template EdgeOptimization<D> optimize_edge_length(const MetricField<D>&, const EdgeEndpoint<D>&,                 \
+                                                    const EdgeEndpoint<D>&, const Vec<D>&, Index,                    \
                                                     const EdgeOptimizerOptions&);                                   \
   template double high_precision_edge_length(const MetricField<D>&, const Vec<D>&, const Vec<D>&, const SymMat<D>&, \
                                              const SymMat<D>&, const Vec<D>&, Index);

@@ -41,12 +41,20 @@ struct EdgeOptimization {
   int evaluations = 0;            // back-mesh localizations + length evaluations
 };
 
-// The edge is (a, b) with vertex log-metrics (log_a, log_b); `start` is the first node (the
-// current one, or the straight midpoint); `hint` a back element near it.
+// The edge is (a, b), its vertices with their metrics (edge_endpoint: make one per vertex when many
+// edges share it); `start` is the first node (the current one, or the straight midpoint); `hint` a
+// back element near it.
+template <int D>
+EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& a,
+                                         const EdgeEndpoint<D>& b, const Vec<D>& start, Index hint = kNoIndex,
+                                         const EdgeOptimizerOptions& options = {});
+// The same from the vertices' positions and log-metrics (log_a, log_b).
 template <int D>
 EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b,
                                          const SymMat<D>& log_a, const SymMat<D>& log_b, const Vec<D>& start,
-                                         Index hint = kNoIndex, const EdgeOptimizerOptions& options = {});
+                                         Index hint = kNoIndex, const EdgeOptimizerOptions& options = {}) {
+  return optimize_edge_length(field, edge_endpoint(a, log_a), edge_endpoint(b, log_b), start, hint, options);
+}
 
 // High-precision ℓ of the P2 edge (a, node, b) in the closed form of eq 12 (metric from the back
 // mesh at the node only).
