@@ -26,13 +26,13 @@ EdgeLengthFunction<D>::EdgeLengthFunction(const EdgeEndpoint<D>& a, const EdgeEn
     : a_(a), b_(b), rule_(rule) {}
 
 template <int D>
-const SymEigen<D>& EdgeLengthFunction<D>::eigen_at(std::size_t q, const SymMat<D>& log_node, bool same_point,
-                                                   SymEigen<D>& scratch) const {
-  if (same_point) return last_eigen_[q];
+const ExpSpectrum<D>& EdgeLengthFunction<D>::spectrum_at(std::size_t q, const SymMat<D>& log_node, bool same_point,
+                                                         ExpSpectrum<D>& scratch) const {
+  if (same_point) return last_spectrum_[q];
   const EdgeBasis phi = edge_basis(rule_.nodes[q]);
-  SymEigen<D>& eigen = q < kCachedNodes ? last_eigen_[q] : scratch;
-  eigen = sym_eigen(phi.a * a_.log_metric + phi.middle * log_node + phi.b * b_.log_metric);
-  return eigen;
+  ExpSpectrum<D>& spectrum = q < kCachedNodes ? last_spectrum_[q] : scratch;
+  spectrum = exp_spectrum(phi.a * a_.log_metric + phi.middle * log_node + phi.b * b_.log_metric);
+  return spectrum;
 }
 
 template <int D>
@@ -64,12 +64,12 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
       if (order != Order::kValue) dg = dg_dnode = (2 * du) * eu;
       if (order == Order::kHessian) d2g = (2 * du * du) * e;
     } else {
-      SymEigen<D> scratch;
-      const SymEigen<D>& eigen = eigen_at(q, log_node, same_point, scratch);
+      ExpSpectrum<D> scratch;
+      const ExpSpectrum<D>& spectrum = spectrum_at(q, log_node, same_point, scratch);
       // In the eigenbasis: keeps g relatively accurate along the small eigenvalues (high anisotropy).
-      g = exp_squared_length(eigen, u);
+      g = exp_squared_length(spectrum, u);
       if (order != Order::kValue) {
-        const ExpFrechet<D> exp_t(eigen);
+        const ExpFrechet<D> exp_t(spectrum);
         // uᵀ Dexp[H] u = <Dexp[u uᵀ], H> (Dexp is self-adjoint): one derivative serves every direction.
         const SymMat<D> adjoint = exp_t.squared_length_gradient(u);
         std::array<SymMat<D>, D> directions;

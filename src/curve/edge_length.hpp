@@ -10,7 +10,7 @@
 #include <array>
 
 #include "curve/quadrature.hpp"
-#include "geom/sym_eigen.hpp"
+#include "geom/sym_functions.hpp"
 #include "geom/sym_mat.hpp"
 #include "geom/vec.hpp"
 
@@ -61,19 +61,21 @@ class EdgeLengthFunction {
   const Vec<D>& a() const { return a_.position; }
   const Vec<D>& b() const { return b_.position; }
 
-  // The high-precision rule's 16 nodes; larger rules recompute at each evaluation.
-  static constexpr std::size_t kCachedNodes = 16;
+  // The 3-point rules (the optimizer's): larger rules recompute at each evaluation. The cache is part of
+  // the object, made once per edge, so it stays small.
+  static constexpr std::size_t kCachedNodes = 3;
 
  private:
-  // sym_eigen(T(t_q)) at node q, from the cache when L^L(X) is the last one evaluated.
-  const SymEigen<D>& eigen_at(std::size_t q, const SymMat<D>& log_node, bool same_point, SymEigen<D>& scratch) const;
+  // exp_spectrum(T(t_q)) at node q, from the cache when L^L(X) is the last one evaluated.
+  const ExpSpectrum<D>& spectrum_at(std::size_t q, const SymMat<D>& log_node, bool same_point,
+                                    ExpSpectrum<D>& scratch) const;
   // Remembers L^L(X) as the point of the cached decompositions.
   void remember(const SymMat<D>& log_node) const;
 
   EdgeEndpoint<D> a_, b_;
   const QuadratureRule& rule_;
-  // sym_eigen(T(t_q)) where φ_M(t_q) ≠ 0 at the last evaluated L^L(X) (T depends on X only through it).
-  mutable std::array<SymEigen<D>, kCachedNodes> last_eigen_;
+  // exp_spectrum(T(t_q)) where φ_M(t_q) ≠ 0 at the last evaluated L^L(X) (T depends on X only through it).
+  mutable std::array<ExpSpectrum<D>, kCachedNodes> last_spectrum_;
   mutable SymMat<D> last_log_node_;
   mutable bool has_last_ = false;
 };

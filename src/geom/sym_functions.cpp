@@ -120,12 +120,18 @@ double exp_divided_difference(double a, double b, double c) {
 }
 
 template <int D>
-ExpFrechet<D>::ExpFrechet(const SymMat<D>& log_metric) : ExpFrechet(sym_eigen(log_metric)) {}
+ExpSpectrum<D> exp_spectrum(const SymMat<D>& log_metric) {
+  ExpSpectrum<D> spectrum{sym_eigen(log_metric), {}};
+  for (int k = 0; k < D; ++k) spectrum.exp_values[k] = std::exp(spectrum.eigen.values[k]);
+  return spectrum;
+}
 
 template <int D>
-ExpFrechet<D>::ExpFrechet(const SymEigen<D>& log_metric_eigen) : eigen_(log_metric_eigen) {
-  Vec<D> exp_values;
-  for (int k = 0; k < D; ++k) exp_values[k] = std::exp(eigen_.values[k]);
+ExpFrechet<D>::ExpFrechet(const SymMat<D>& log_metric) : ExpFrechet(exp_spectrum(log_metric)) {}
+
+template <int D>
+ExpFrechet<D>::ExpFrechet(const ExpSpectrum<D>& log_metric_spectrum) : eigen_(log_metric_spectrum.eigen) {
+  const Vec<D>& exp_values = log_metric_spectrum.exp_values;
   value_ = SymMat<D>::from_eigen(eigen_.vectors, exp_values);
   for (int k = 0; k < D; ++k)
     for (int l = 0; l <= k; ++l)
@@ -152,10 +158,10 @@ double ExpFrechet<D>::squared_length(const Vec<D>& u) const {
 }
 
 template <int D>
-double exp_squared_length(const SymEigen<D>& log_metric_eigen, const Vec<D>& u) {
-  Vec<D> w = transpose_times(log_metric_eigen.vectors, u);
+double exp_squared_length(const ExpSpectrum<D>& log_metric_spectrum, const Vec<D>& u) {
+  Vec<D> w = transpose_times(log_metric_spectrum.eigen.vectors, u);
   double sum = 0.0;
-  for (int k = 0; k < D; ++k) sum += std::exp(log_metric_eigen.values[k]) * w[k] * w[k];
+  for (int k = 0; k < D; ++k) sum += log_metric_spectrum.exp_values[k] * w[k] * w[k];
   return sum;
 }
 
@@ -231,8 +237,10 @@ template SymMat<2> pow_spd(const SymMat<2>&, double);
 template SymMat<3> pow_spd(const SymMat<3>&, double);
 template SymMat<2> sqrt_spd(const SymMat<2>&);
 template SymMat<3> sqrt_spd(const SymMat<3>&);
-template double exp_squared_length(const SymEigen<2>&, const Vec<2>&);
-template double exp_squared_length(const SymEigen<3>&, const Vec<3>&);
+template ExpSpectrum<2> exp_spectrum(const SymMat<2>&);
+template ExpSpectrum<3> exp_spectrum(const SymMat<3>&);
+template double exp_squared_length(const ExpSpectrum<2>&, const Vec<2>&);
+template double exp_squared_length(const ExpSpectrum<3>&, const Vec<3>&);
 template class ExpFrechet<2>;
 template class ExpFrechet<3>;
 template SymMat<2> dexp(const SymMat<2>&, const SymMat<2>&);
