@@ -12,6 +12,7 @@ namespace {
 // A start on a kink is declared optimal when every one-sided slope of ℓ in the bisector plane exceeds this
 // fraction of ℓ/|AB|: a thousand times the error of the slopes (round-off, and the ~1e-10 off-face tolerance).
 constexpr double kKinkSlopeMargin = 1e-8;
+constexpr double kFutileModelFactor = 100;
 
 template <int D>
 double high_precision_length(const MetricField<D>& field, const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b,
@@ -68,21 +69,19 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
   auto onto_plane = [&](const Vec<D>& v) { return v - dot(v, direction) * direction; };
   const Vec<D> first = midpoint + onto_plane(start - midpoint);
 
-  // ∂L^L/∂X is constant in a back element, and successive iterates often stay in one.
-  std::array<SymMat<D>, D> log_gradient;
-  Index log_gradient_element = kNoIndex;
-  auto log_gradient_in = [&](Index element) -> const std::array<SymMat<D>, D>& {
-    if (element != log_gradient_element) {
-      log_gradient = field.log_metric_gradient(element);
-      log_gradient_element = element;
-    }
-    return log_gradient;
+  // ∂L^L/∂X is constant in a back element, and successive iterates often stay in one: its frame serves their
+  // localization and derivatives.
+  typename MetricField<D>::ElementFrame frame;
+  auto frame_of = [&](Index element) -> const typename MetricField<D>::ElementFrame& {
+    if (element != frame.element) frame = field.element_frame(element);
+    return frame;
   };
 
   auto sample = field.sample(first, hint);
   result.node = first;
   result.back_element = sample.where.element;
-  auto value = function.evaluate(first, sample.log_metric, log_gradient_in(sample.where.element), Order::kHessian);
+  auto value =
+      function.evaluate(first, sample.log_metric, frame_of(sample.where.element).log_metric_gradient, Order::kHessian);
   ++result.evaluations;
   // On a kink, the Newton model of the element found misses the other elements' slopes; when all of them
   // ascend, the start is optimal (kink_minimum.hpp) and no trial is needed.
@@ -90,6 +89,7 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
       on_back_mesh_face(sample.where) &&
       is_strict_minimum_on_kink(field, sample.where, direction, value, kKinkSlopeMargin * value.length / edge_size);
   const double initial_length = value.length;
+  const bool starts_straight = norm(first - midpoint) == 0;
   double trust = 0.25 * edge_size;
 
   for (; !optimal_start && result.iterations < options.max_iterations; ++result.iterations) {
@@ -122,6 +122,13 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
     if (step_size < options.step_tolerance * edge_size ||
         -0.5 * dot(gradient, step) < options.decrease_tolerance * value.length)
       break;
+    // Futile (from the straight midpoint, after a first accepted step): the edge stays straight unless ℓ drops
+    // by min_relative_decrease, and the decrease so far plus kFutileModelFactor times what the convex Newton
+    // model still predicts falls short of it.
+    if (starts_straight && result.iterations > 0 && shift == 0 &&
+        (initial_length - value.length) + kFutileModelFactor * (-0.5 * dot(gradient, step)) <
+            options.min_relative_decrease * initial_length)
+      break;
     if (step_size > trust) step = (trust / step_size) * step, step_size = trust;
 
     // Backtracking: accept the first trial that decreases ℓ (kinks rule out stricter tests). Along a
@@ -136,15 +143,15 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
       Vec<D> offset = trial - midpoint;
       double displacement = norm(offset);
       if (displacement > max_displacement) trial = midpoint + (max_displacement / displacement) * offset;
-      auto trial_sample = field.sample(trial, result.back_element);
+      auto trial_sample = field.sample(trial, frame_of(result.back_element));
       ++result.evaluations;
       double trial_length = function.length(trial, trial_sample.log_metric);
       if (trial_length < value.length) {
         accepted = true;
         result.node = trial;
         result.back_element = trial_sample.where.element;
-        value = function.evaluate(trial, trial_sample.log_metric, log_gradient_in(trial_sample.where.element),
-                                  Order::kHessian);
+        value = function.evaluate(trial, trial_sample.log_metric,
+                                  frame_of(trial_sample.where.element).log_metric_gradient, Order::kHessian);
       } else {
         const double increase = trial_length - value.length;
         if (rejected_increase > 0 && rejected_increase < 1e-3 * value.length && increase > 0.25 * rejected_increase)
@@ -162,7 +169,7 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
 
   // Worth curving? Compare with the straight edge in the same rule.
   double straight_length =
-      norm(first - midpoint) == 0 ? initial_length : function.length(midpoint, field.log_metric_at(midpoint, hint));
+      starts_straight ? initial_length : function.length(midpoint, field.log_metric_at(midpoint, hint));
   if (result.length > (1 - options.min_relative_decrease) * straight_length) {
     result.node = midpoint;
     result.length = straight_length;
