@@ -12,7 +12,6 @@ namespace {
 // A start on a kink is declared optimal when every one-sided slope of ℓ in the bisector plane exceeds this
 // fraction of ℓ/|AB|: a thousand times the error of the slopes (round-off, and the ~1e-10 off-face tolerance).
 constexpr double kKinkSlopeMargin = 1e-8;
-constexpr double kFutileModelFactor = 100;
 
 template <int D>
 double high_precision_length(const MetricField<D>& field, const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b,
@@ -122,11 +121,9 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
     if (step_size < options.step_tolerance * edge_size ||
         -0.5 * dot(gradient, step) < options.decrease_tolerance * value.length)
       break;
-    // Futile (from the straight midpoint, after a first accepted step): the edge stays straight unless ℓ drops
-    // by min_relative_decrease, and the decrease so far plus kFutileModelFactor times what the convex Newton
-    // model still predicts falls short of it.
-    if (starts_straight && result.iterations > 0 && shift == 0 &&
-        (initial_length - value.length) + kFutileModelFactor * (-0.5 * dot(gradient, step)) <
+    // Futile (options.futile_model_factor): the edge would stay straight.
+    if (options.futile_model_factor > 0 && starts_straight && result.iterations > 0 && shift == 0 &&
+        (initial_length - value.length) + options.futile_model_factor * (-0.5 * dot(gradient, step)) <
             options.min_relative_decrease * initial_length)
       break;
     if (step_size > trust) step = (trust / step_size) * step, step_size = trust;
