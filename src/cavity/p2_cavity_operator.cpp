@@ -112,10 +112,12 @@ template <int D>
 void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh) {
   const auto edges = p1_.new_inner_edges();
   const auto starts = p1_.new_inner_edge_start_nodes();
+  EdgeEndpoint<D> end_a;  // the new edges share their first vertex (the cavity's): its metric once
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const auto [a, b] = edges[i];
-    auto result = optimize_edge_length(field_, mesh.vertex(a), mesh.vertex(b), vertex_log_metrics_[a],
-                                       vertex_log_metrics_[b], starts[i], vertex_hints_[a], options_.optimizer);
+    if (i == 0 || a != edges[i - 1][0]) end_a = edge_endpoint(mesh.vertex(a), vertex_log_metrics_[a]);
+    auto result = optimize_edge_length(field_, end_a, edge_endpoint(mesh.vertex(b), vertex_log_metrics_[b]), starts[i],
+                                       vertex_hints_[a], options_.optimizer);
     ++counters_.edges_optimized;
     counters_.optimizer_iterations += result.iterations;
     vertex_hints_[a] = result.back_element;  // near a: the next walk from a starts close

@@ -16,19 +16,29 @@ EdgeBasis edge_basis(double t) { return {(1 - t) * (1 - 2 * t), 4 * t * (1 - t),
 }  // namespace
 
 template <int D>
-EdgeLengthFunction<D>::EdgeLengthFunction(const Vec<D>& a, const Vec<D>& b, const SymMat<D>& log_a,
-                                          const SymMat<D>& log_b, const QuadratureRule& rule)
-    : a_(a),
-      b_(b),
-      log_a_(log_a),
-      log_b_(log_b),
-      rule_(rule),
-      fixed_metrics_(rule.nodes.size()),
-      last_eigen_(rule.nodes.size()) {
-  for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
-    EdgeBasis phi = edge_basis(rule.nodes[q]);
-    if (phi.middle == 0) fixed_metrics_[q] = exp_sym(phi.a * log_a + phi.b * log_b);
-  }
+EdgeEndpoint<D> edge_endpoint(const Vec<D>& position, const SymMat<D>& log_metric) {
+  return {position, log_metric, exp_sym(log_metric)};
+}
+
+template <int D>
+EdgeLengthFunction<D>::EdgeLengthFunction(const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b,
+                                          const QuadratureRule& rule)
+    : a_(a), b_(b), rule_(rule) {}
+
+template <int D>
+const ExpSpectrum<D>& EdgeLengthFunction<D>::spectrum_at(std::size_t q, const SymMat<D>& log_node, bool same_point,
+                                                         ExpSpectrum<D>& scratch) const {
+  if (same_point) return last_spectrum_[q];
+  const EdgeBasis phi = edge_basis(rule_.nodes[q]);
+  ExpSpectrum<D>& spectrum = q < kCachedNodes ? last_spectrum_[q] : scratch;
+  spectrum = exp_spectrum(phi.a * a_.log_metric + phi.middle * log_node + phi.b * b_.log_metric);
+  return spectrum;
+}
+
+template <int D>
+void EdgeLengthFunction<D>::remember(const SymMat<D>& log_node) const {
+  last_log_node_ = log_node;
+  has_last_ = rule_.nodes.size() <= kCachedNodes;
 }
 
 template <int D>
@@ -41,25 +51,25 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
     const double t = rule_.nodes[q], w = rule_.weights[q];
     const EdgeBasis phi = edge_basis(t);
     const double du = 4 * (1 - 2 * t);  // ∂γ'(t)/∂X = du · I
-    const Vec<D> u = (4 * t - 3) * a_ + du * node + (4 * t - 1) * b_;
+    const Vec<D> u = (4 * t - 3) * a_.position + du * node + (4 * t - 1) * b_.position;
 
     // g = uᵀ E u; ∂_i g = 2 du (E u)_i + uᵀ ∂_iE u; ∂_ij g = 2 du² E_ij + 2 du ((∂_jE u)_i + (∂_iE u)_j) + uᵀ ∂_ijE u.
     double g;
-    Vec<D> dg{};
-    SymMat<D> d2g{};
+    Vec<D> dg{}, dg_dnode{};  // ∂g/∂X, and its part at fixed T
+    SymMat<D> d2g{}, dg_dlog{};  // ∂²g/∂X², ∂g/∂L^L
     if (phi.middle == 0) {
-      const SymMat<D>& e = fixed_metrics_[q];
+      const SymMat<D>& e = t == 0 ? a_.metric : b_.metric;  // φ_M = 0 only at the ends
       const Vec<D> eu = e * u;
       g = dot(u, eu);
-      if (order != Order::kValue) dg = (2 * du) * eu;
+      if (order != Order::kValue) dg = dg_dnode = (2 * du) * eu;
       if (order == Order::kHessian) d2g = (2 * du * du) * e;
     } else {
-      SymEigen<D>& eigen = last_eigen_[q];
-      if (!same_point) eigen = sym_eigen(phi.a * log_a_ + phi.middle * log_node + phi.b * log_b_);
+      ExpSpectrum<D> scratch;
+      const ExpSpectrum<D>& spectrum = spectrum_at(q, log_node, same_point, scratch);
       // In the eigenbasis: keeps g relatively accurate along the small eigenvalues (high anisotropy).
-      g = exp_squared_length(eigen, u);
+      g = exp_squared_length(spectrum, u);
       if (order != Order::kValue) {
-        const ExpFrechet<D> exp_t(eigen);
+        const ExpFrechet<D> exp_t(spectrum);
         // uᵀ Dexp[H] u = <Dexp[u uᵀ], H> (Dexp is self-adjoint): one derivative serves every direction.
         const SymMat<D> adjoint = exp_t.squared_length_gradient(u);
         std::array<SymMat<D>, D> directions;
@@ -67,8 +77,10 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
           directions[i] = phi.middle * log_node_gradient[i];
           dg[i] = frobenius_dot(adjoint, directions[i]);
         }
+        dg_dlog = phi.middle * adjoint;
         // du = 0 at t = 1/2 (the middle node of the 3-point rules): the tangent does not depend on X there.
-        if (du != 0) dg += (2 * du) * (exp_t.value() * u);
+        if (du != 0) dg_dnode = (2 * du) * (exp_t.value() * u);
+        dg += dg_dnode;
         if (order == Order::kHessian) {
           d2g = exp_t.squared_length_hessian(directions, u);
           if (du != 0) {
@@ -86,12 +98,13 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
     result.length += w * root;
     if (order == Order::kValue || root == 0) continue;
     result.gradient += (w / (2 * root)) * dg;
+    result.node_gradient += (w / (2 * root)) * dg_dnode;
+    result.log_node_gradient += (w / (2 * root)) * dg_dlog;
     if (order == Order::kHessian)
       for (int i = 0; i < D; ++i)
         for (int j = 0; j <= i; ++j) result.hessian(i, j) += w * (d2g(i, j) / (2 * root) - dg[i] * dg[j] / (4 * g * root));
   }
-  last_log_node_ = log_node;
-  has_last_ = true;
+  remember(log_node);
   return result;
 }
 
@@ -100,6 +113,8 @@ double EdgeLengthFunction<D>::length(const Vec<D>& node, const SymMat<D>& log_no
   return evaluate(node, log_node, {}, Order::kValue).length;
 }
 
+template EdgeEndpoint<2> edge_endpoint(const Vec<2>&, const SymMat<2>&);
+template EdgeEndpoint<3> edge_endpoint(const Vec<3>&, const SymMat<3>&);
 template class EdgeLengthFunction<2>;
 template class EdgeLengthFunction<3>;
 

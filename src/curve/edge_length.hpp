@@ -8,10 +8,9 @@
 #pragma once
 
 #include <array>
-#include <vector>
 
 #include "curve/quadrature.hpp"
-#include "geom/sym_eigen.hpp"
+#include "geom/sym_functions.hpp"
 #include "geom/sym_mat.hpp"
 #include "geom/vec.hpp"
 
@@ -22,17 +21,36 @@ struct EdgeLengthValue {
   double length = 0;
   Vec<D> gradient{};   // ∂ℓ/∂X (when asked)
   SymMat<D> hessian{};  // ∂²ℓ/∂X² (when asked)
+  // With the gradient, its two parts: ∂ℓ/∂X with L^L held fixed, and ∂ℓ/∂L^L with X held fixed, so that
+  // gradient_i = node_gradient_i + ⟨log_node_gradient, ∂L^L/∂X_i⟩. Where L^L(X) has a kink (a back-mesh
+  // face), each side's ∂L^L/∂X gives that side's one-sided derivatives.
+  Vec<D> node_gradient{};
+  SymMat<D> log_node_gradient{};
 };
 
+// An edge's vertex with its metric: exp(log_metric), the metric at the nodes t = 0, 1 of rules that
+// have them. A caller curving many edges around one vertex makes it once (math.md §4).
+template <int D>
+struct EdgeEndpoint {
+  Vec<D> position{};
+  SymMat<D> log_metric{};
+  SymMat<D> metric{};
+};
+template <int D>
+EdgeEndpoint<D> edge_endpoint(const Vec<D>& position, const SymMat<D>& log_metric);
+
 // ℓ as a function of X for one edge and one quadrature rule; the parts that do not depend on X
-// (exp of the vertex metrics at nodes where φ_M = 0) are computed once, at construction. The
-// eigen-decompositions of the last evaluation are kept, so raising the order at the same point (the
-// accepted trial of a line search) does not repeat them: one object per thread.
+// (the vertex metrics at nodes where φ_M = 0, i.e. t = 0 and 1) come with the endpoints. The
+// eigen-decompositions of the last evaluation are kept (rules of up to kCachedNodes nodes), so
+// raising the order at the same point (the accepted trial of a line search) does not repeat them:
+// one object per thread. Nothing is allocated: the optimizer makes one object per edge.
 template <int D>
 class EdgeLengthFunction {
  public:
+  EdgeLengthFunction(const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b, const QuadratureRule& rule);
   EdgeLengthFunction(const Vec<D>& a, const Vec<D>& b, const SymMat<D>& log_a, const SymMat<D>& log_b,
-                     const QuadratureRule& rule);
+                     const QuadratureRule& rule)
+      : EdgeLengthFunction(edge_endpoint(a, log_a), edge_endpoint(b, log_b), rule) {}
 
   enum class Order { kValue, kGradient, kHessian };
   // `log_node` = L^L(X), `log_node_gradient[i]` = ∂L^L/∂X_i (needed from Order::kGradient on).
@@ -40,16 +58,24 @@ class EdgeLengthFunction {
                               const std::array<SymMat<D>, D>& log_node_gradient, Order order) const;
   double length(const Vec<D>& node, const SymMat<D>& log_node) const;
 
-  const Vec<D>& a() const { return a_; }
-  const Vec<D>& b() const { return b_; }
+  const Vec<D>& a() const { return a_.position; }
+  const Vec<D>& b() const { return b_.position; }
+
+  // The 3-point rules (the optimizer's): larger rules recompute at each evaluation. The cache is part of
+  // the object, made once per edge, so it stays small.
+  static constexpr std::size_t kCachedNodes = 3;
 
  private:
-  Vec<D> a_, b_;
-  SymMat<D> log_a_, log_b_;
+  // exp_spectrum(T(t_q)) at node q, from the cache when L^L(X) is the last one evaluated.
+  const ExpSpectrum<D>& spectrum_at(std::size_t q, const SymMat<D>& log_node, bool same_point,
+                                    ExpSpectrum<D>& scratch) const;
+  // Remembers L^L(X) as the point of the cached decompositions.
+  void remember(const SymMat<D>& log_node) const;
+
+  EdgeEndpoint<D> a_, b_;
   const QuadratureRule& rule_;
-  std::vector<SymMat<D>> fixed_metrics_;  // exp(T(t_q)) where φ_M(t_q) = 0; unused elsewhere
-  // sym_eigen(T(t_q)) where φ_M(t_q) ≠ 0 at the last evaluated L^L(X) (T depends on X only through it).
-  mutable std::vector<SymEigen<D>> last_eigen_;
+  // exp_spectrum(T(t_q)) where φ_M(t_q) ≠ 0 at the last evaluated L^L(X) (T depends on X only through it).
+  mutable std::array<ExpSpectrum<D>, kCachedNodes> last_spectrum_;
   mutable SymMat<D> last_log_node_;
   mutable bool has_last_ = false;
 };

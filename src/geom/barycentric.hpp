@@ -36,12 +36,12 @@ std::array<Vec<D>, D + 1> barycentric_gradients(const SimplexPoints<D>& p) {
   return gradient;
 }
 
-// λ with Σλ = 1 and Σ λ_i p_i = x (exactly affine, extrapolating outside the simplex).
+// λ of x from the gradients of a simplex and its first corner p0, for callers that keep the gradients of
+// one simplex for many points.
 template <int D>
-Barycentrics<D> barycentric_coordinates(const SimplexPoints<D>& p, const Vec<D>& x) {
-  auto gradient = barycentric_gradients<D>(p);
+Barycentrics<D> barycentric_coordinates(const std::array<Vec<D>, D + 1>& gradient, const Vec<D>& p0, const Vec<D>& x) {
   Barycentrics<D> lambda{};
-  Vec<D> offset = x - p[0];
+  Vec<D> offset = x - p0;
   double rest = 1.0;
   for (int i = 1; i <= D; ++i) {
     lambda[i] = dot(gradient[i], offset);
@@ -49,6 +49,12 @@ Barycentrics<D> barycentric_coordinates(const SimplexPoints<D>& p, const Vec<D>&
   }
   lambda[0] = rest;
   return lambda;
+}
+
+// λ with Σλ = 1 and Σ λ_i p_i = x (exactly affine, extrapolating outside the simplex).
+template <int D>
+Barycentrics<D> barycentric_coordinates(const SimplexPoints<D>& p, const Vec<D>& x) {
+  return barycentric_coordinates<D>(barycentric_gradients<D>(p), p[0], x);
 }
 
 }  // namespace hocav

@@ -2,6 +2,7 @@
 #include "geom/sym_functions.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -41,26 +42,44 @@ double first_difference(double a, double b, double exp_a, double exp_b) {
   return delta == 0.0 ? exp_b : exp_b * (std::expm1(delta) / delta);
 }
 
-// exp[lo, mid, hi] for lo ≤ mid ≤ hi, given upper = exp[hi, mid] and lower = exp[mid, lo].
-double second_difference(double lo, double mid, double hi, double upper, double lower) {
+// The Taylor series of exp[x, y, z] below: 1/(k+2)! and 1/k for k ≤ kMaxTerms, made by the same divisions a
+// loop would do, so that no division remains in the hot loop.
+constexpr int kMaxTerms = 16;
+struct TaylorCoefficients {
+  std::array<double, kMaxTerms + 1> inverse_factorial{}, inverse{};
+};
+constexpr TaylorCoefficients kTaylor = [] {
+  TaylorCoefficients c;
+  c.inverse_factorial[0] = 0.5;
+  for (int k = 1; k <= kMaxTerms; ++k) {
+    c.inverse_factorial[k] = c.inverse_factorial[k - 1] / (k + 2);
+    c.inverse[k] = 1.0 / k;
+  }
+  return c;
+}();
+
+// exp[lo, mid, hi] for lo ≤ mid ≤ hi, given upper = exp[hi, mid], lower = exp[mid, lo] and e^lo, e^hi.
+double second_difference(double lo, double mid, double hi, double upper, double lower, double exp_lo, double exp_hi) {
   if (hi - lo >= kDirectQuotientSpread) return (upper - lower) / (hi - lo);
   // exp[x, y, z] = Σ_k h_k(x, y, z)/(k+2)! with h_k the complete homogeneous polynomials, about the centre so
   // that |x|, |y|, |z| ≤ r = (hi − lo)/2 ≤ 1/2. |h_k| ≤ (k+1)(k+2)/2 r^k, so term k is at most r^k/(2 k!), and
   // the tail after it is smaller still; the sum is ≥ e^{-1/2}/2. Stop once r^k/k! < 1e-17: by k = 16 at
   // r = 1/2, at once for equal arguments (a locally isotropic metric).
-  constexpr int kMaxTerms = 16;
   double centre = 0.5 * (lo + hi);
   double x = hi - centre, y = mid - centre, z = lo - centre;
-  double power_x = 1.0, h_xy = 1.0, h_xyz = 1.0, inverse_factorial = 0.5, sum = 0.5, term_bound = 1.0;
+  double power_x = 1.0, h_xy = 1.0, h_xyz = 1.0, sum = 0.5, term_bound = 1.0;
   for (int k = 1; k <= kMaxTerms && term_bound >= 1e-17; ++k) {
     power_x *= x;
     h_xy = power_x + y * h_xy;  // h_k(x, y) = x^k + y h_{k−1}(x, y)
     h_xyz = h_xy + z * h_xyz;   // h_k(x, y, z) = h_k(x, y) + z h_{k−1}(x, y, z)
-    inverse_factorial /= k + 2;
-    sum += h_xyz * inverse_factorial;
-    term_bound *= x / k;
+    sum += h_xyz * kTaylor.inverse_factorial[k];
+    term_bound *= x * kTaylor.inverse[k];
   }
-  return std::exp(centre) * sum;
+  // e^centre = sqrt(e^lo e^hi) to ~2 ulps, a square root instead of an exponential, while the product is a
+  // normal number (|lo + hi| < ~1400).
+  const double product = exp_lo * exp_hi;
+  const double exp_centre = std::isnormal(product) && product < 1e300 ? std::sqrt(product) : std::exp(centre);
+  return exp_centre * sum;
 }
 
 }  // namespace
@@ -96,16 +115,23 @@ double exp_divided_difference(double a, double b, double c) {
   std::array<double, 3> sorted = {a, b, c};
   std::sort(sorted.begin(), sorted.end());
   auto [lo, mid, hi] = sorted;
-  return second_difference(lo, mid, hi, exp_divided_difference(hi, mid), exp_divided_difference(mid, lo));
+  return second_difference(lo, mid, hi, exp_divided_difference(hi, mid), exp_divided_difference(mid, lo), std::exp(lo),
+                           std::exp(hi));
 }
 
 template <int D>
-ExpFrechet<D>::ExpFrechet(const SymMat<D>& log_metric) : ExpFrechet(sym_eigen(log_metric)) {}
+ExpSpectrum<D> exp_spectrum(const SymMat<D>& log_metric) {
+  ExpSpectrum<D> spectrum{sym_eigen(log_metric), {}};
+  for (int k = 0; k < D; ++k) spectrum.exp_values[k] = std::exp(spectrum.eigen.values[k]);
+  return spectrum;
+}
 
 template <int D>
-ExpFrechet<D>::ExpFrechet(const SymEigen<D>& log_metric_eigen) : eigen_(log_metric_eigen) {
-  Vec<D> exp_values;
-  for (int k = 0; k < D; ++k) exp_values[k] = std::exp(eigen_.values[k]);
+ExpFrechet<D>::ExpFrechet(const SymMat<D>& log_metric) : ExpFrechet(exp_spectrum(log_metric)) {}
+
+template <int D>
+ExpFrechet<D>::ExpFrechet(const ExpSpectrum<D>& log_metric_spectrum) : eigen_(log_metric_spectrum.eigen) {
+  const Vec<D>& exp_values = log_metric_spectrum.exp_values;
   value_ = SymMat<D>::from_eigen(eigen_.vectors, exp_values);
   for (int k = 0; k < D; ++k)
     for (int l = 0; l <= k; ++l)
@@ -132,10 +158,10 @@ double ExpFrechet<D>::squared_length(const Vec<D>& u) const {
 }
 
 template <int D>
-double exp_squared_length(const SymEigen<D>& log_metric_eigen, const Vec<D>& u) {
-  Vec<D> w = transpose_times(log_metric_eigen.vectors, u);
+double exp_squared_length(const ExpSpectrum<D>& log_metric_spectrum, const Vec<D>& u) {
+  Vec<D> w = transpose_times(log_metric_spectrum.eigen.vectors, u);
   double sum = 0.0;
-  for (int k = 0; k < D; ++k) sum += std::exp(log_metric_eigen.values[k]) * w[k] * w[k];
+  for (int k = 0; k < D; ++k) sum += log_metric_spectrum.exp_values[k] * w[k] * w[k];
   return sum;
 }
 
@@ -153,7 +179,8 @@ typename ExpFrechet<D>::SecondDifferences ExpFrechet<D>::second_differences() co
   for (int i = 0; i < D; ++i)
     for (int j = i; j < D; ++j)
       for (int k = j; k < D; ++k) {
-        double f = second_difference(theta[i], theta[j], theta[k], first_differences_(k, j), first_differences_(j, i));
+        double f = second_difference(theta[i], theta[j], theta[k], first_differences_(k, j), first_differences_(j, i),
+                                     first_differences_(i, i), first_differences_(k, k));
         second[i][j][k] = second[i][k][j] = second[j][i][k] = second[j][k][i] = second[k][i][j] = second[k][j][i] = f;
       }
   return second;
@@ -210,8 +237,10 @@ template SymMat<2> pow_spd(const SymMat<2>&, double);
 template SymMat<3> pow_spd(const SymMat<3>&, double);
 template SymMat<2> sqrt_spd(const SymMat<2>&);
 template SymMat<3> sqrt_spd(const SymMat<3>&);
-template double exp_squared_length(const SymEigen<2>&, const Vec<2>&);
-template double exp_squared_length(const SymEigen<3>&, const Vec<3>&);
+template ExpSpectrum<2> exp_spectrum(const SymMat<2>&);
+template ExpSpectrum<3> exp_spectrum(const SymMat<3>&);
+template double exp_squared_length(const ExpSpectrum<2>&, const Vec<2>&);
+template double exp_squared_length(const ExpSpectrum<3>&, const Vec<3>&);
 template class ExpFrechet<2>;
 template class ExpFrechet<3>;
 template SymMat<2> dexp(const SymMat<2>&, const SymMat<2>&);

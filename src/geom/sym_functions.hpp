@@ -46,6 +46,16 @@ SymMat<D> sqrt_spd(const SymMat<D>& m);
 double exp_divided_difference(double a, double b);
 double exp_divided_difference(double a, double b, double c);
 
+// The sym_eigen decomposition of a log-metric T = V diag(θ) Vᵀ with e^θ: what uᵀ exp(T) u and the Fréchet
+// set-up share, so that raising the order at one T computes no exponential twice.
+template <int D>
+struct ExpSpectrum {
+  SymEigen<D> eigen;
+  Vec<D> exp_values;
+};
+template <int D>
+ExpSpectrum<D> exp_spectrum(const SymMat<D>& log_metric);
+
 // exp(T) and its Fréchet derivatives at one T, sharing one eigendecomposition T = V diag(θ) Vᵀ (Daleckii–Krein):
 //   Dexp(T)[H]        = V (Γ ∘ (Vᵀ H V)) Vᵀ,                       Γ_kl = exp[θk, θl],
 //   D²exp(T)[H1, H2]_kl = Σ_m exp[θk, θm, θl] (H1'_km H2'_ml + H2'_km H1'_ml)   in the eigenbasis, H' = Vᵀ H V.
@@ -57,8 +67,8 @@ template <int D>
 class ExpFrechet {
  public:
   explicit ExpFrechet(const SymMat<D>& log_metric);
-  // From the sym_eigen decomposition of the log-metric, when it is already known.
-  explicit ExpFrechet(const SymEigen<D>& log_metric_eigen);
+  // From the spectrum of the log-metric, when it is already known.
+  explicit ExpFrechet(const ExpSpectrum<D>& log_metric_spectrum);
 
   const SymMat<D>& value() const { return value_; }
   SymMat<D> derivative(const SymMat<D>& direction) const;
@@ -89,10 +99,9 @@ class ExpFrechet {
   SymMat<D> first_differences_;  // Γ_kl = exp[θk, θl]; Γ_kk = e^θk
 };
 
-// uᵀ exp(T) u = Σ_k e^θk (v_kᵀu)² from the sym_eigen decomposition of T: squared_length without the
-// Fréchet set-up.
+// uᵀ exp(T) u = Σ_k e^θk (v_kᵀu)² from the spectrum of T: squared_length without the Fréchet set-up.
 template <int D>
-double exp_squared_length(const SymEigen<D>& log_metric_eigen, const Vec<D>& u);
+double exp_squared_length(const ExpSpectrum<D>& log_metric_spectrum, const Vec<D>& u);
 
 // One-off forms of the above.
 template <int D>

@@ -55,21 +55,48 @@ MetricField<D> MetricField<D>::from_log_metrics(const Mesh<D>& mesh, std::vector
 }
 
 template <int D>
+SymMat<D> MetricField<D>::interpolate(Index back_element, const Barycentrics<D>& lambda) const {
+  const auto& element = back_mesh_->element(back_element);
+  SymMat<D> result{};
+  for (int i = 0; i <= D; ++i) result += lambda[i] * log_metrics_[element[i]];
+  return result;
+}
+
+template <int D>
 typename MetricField<D>::Sample MetricField<D>::sample(const Vec<D>& x, Index hint) const {
   Sample result{locator_->localize(x, hint), {}};
-  const auto& element = back_mesh_->element(result.where.element);
-  for (int i = 0; i <= D; ++i) result.log_metric += result.where.barycentrics[i] * log_metrics_[element[i]];
+  result.log_metric = interpolate(result.where.element, result.where.barycentrics);
+  return result;
+}
+
+template <int D>
+typename MetricField<D>::Sample MetricField<D>::sample(const Vec<D>& x, const ElementFrame& frame) const {
+  const Barycentrics<D> lambda = barycentric_coordinates<D>(frame.barycentric_gradients, frame.origin, x);
+  if (!PointLocator<D>::contains(lambda)) return sample(x, frame.element);
+  return {{frame.element, lambda, true}, interpolate(frame.element, lambda)};
+}
+
+template <int D>
+std::array<SymMat<D>, D> MetricField<D>::log_metric_gradient(
+    Index back_element, const std::array<Vec<D>, D + 1>& barycentric_gradients) const {
+  const auto& element = back_mesh_->element(back_element);
+  std::array<SymMat<D>, D> result{};
+  for (int i = 0; i < D; ++i)
+    for (int j = 0; j <= D; ++j) result[i] += barycentric_gradients[j][i] * log_metrics_[element[j]];
   return result;
 }
 
 template <int D>
 std::array<SymMat<D>, D> MetricField<D>::log_metric_gradient(Index back_element) const {
-  auto gradients = barycentric_gradients<D>(locator_->element_points(back_element));
-  const auto& element = back_mesh_->element(back_element);
-  std::array<SymMat<D>, D> result{};
-  for (int i = 0; i < D; ++i)
-    for (int j = 0; j <= D; ++j) result[i] += gradients[j][i] * log_metrics_[element[j]];
-  return result;
+  return log_metric_gradient(back_element, barycentric_gradients<D>(locator_->element_points(back_element)));
+}
+
+template <int D>
+typename MetricField<D>::ElementFrame MetricField<D>::element_frame(Index back_element) const {
+  const SimplexPoints<D> points = locator_->element_points(back_element);
+  ElementFrame frame{back_element, points[0], barycentric_gradients<D>(points), {}};
+  frame.log_metric_gradient = log_metric_gradient(back_element, frame.barycentric_gradients);
+  return frame;
 }
 
 template class MetricField<2>;

@@ -38,8 +38,24 @@ class MetricField {
   // ∂(log M)/∂x_i = Σ_j (∂λ_j/∂x_i) R_j in back element k (constant inside it, math.md §6).
   std::array<SymMat<D>, D> log_metric_gradient(Index back_element) const;
 
+  // One back element prepared for many samples near it (an optimizer's iterates): its barycentric
+  // gradients and the log-metric gradient. sample(x, frame) equals sample(x, frame.element) bit for bit,
+  // without the walk's recomputation of the gradients when x is in the element.
+  struct ElementFrame {
+    Index element = kNoIndex;
+    Vec<D> origin{};  // the element's first corner
+    std::array<Vec<D>, D + 1> barycentric_gradients{};
+    std::array<SymMat<D>, D> log_metric_gradient{};
+  };
+  ElementFrame element_frame(Index back_element) const;
+  Sample sample(const Vec<D>& x, const ElementFrame& frame) const;
+
  private:
   MetricField(const Mesh<D>& mesh, std::vector<SymMat<D>> log_metrics, bool);
+  // Σ_i λ_i R_i over the corners of a back element.
+  SymMat<D> interpolate(Index back_element, const Barycentrics<D>& lambda) const;
+  std::array<SymMat<D>, D> log_metric_gradient(Index back_element,
+                                               const std::array<Vec<D>, D + 1>& barycentric_gradients) const;
 
   std::unique_ptr<Mesh<D>> back_mesh_;  // behind a pointer: the locator refers to it across moves
   std::vector<SymMat<D>> log_metrics_;

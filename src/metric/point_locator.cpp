@@ -83,6 +83,11 @@ PointLocator<D>::PointLocator(const Mesh<D>& mesh) : mesh_(mesh) {
 }
 
 template <int D>
+bool PointLocator<D>::contains(const Barycentrics<D>& lambda) {
+  return lambda[most_negative<D>(lambda)] >= -kInsideTolerance;
+}
+
+template <int D>
 SimplexPoints<D> PointLocator<D>::element_points(Index k) const {
   SimplexPoints<D> points;
   for (int i = 0; i <= D; ++i) points[i] = mesh_.vertex(mesh_.element(k)[i]);
@@ -105,11 +110,11 @@ Index PointLocator<D>::walk(const Vec<D>& x, Index start, Barycentrics<D>& lambd
   Index k = start, previous = kNoIndex;
   for (int step = 0; step < kMaxWalkSteps; ++step) {
     lambda = barycentric_coordinates<D>(element_points(k), x);
-    int face = most_negative<D>(lambda);
-    if (lambda[face] >= -kInsideTolerance) {
+    if (contains(lambda)) {
       exit_face = -1;
       return k;
     }
+    int face = most_negative<D>(lambda);
     Index next = mesh_.neighbor(k, face);
     if (next == previous) {
       // Going straight back would cycle: take the next most negative face instead.

@@ -33,6 +33,9 @@ class PointLocator {
   // Thread-safe: reads only. `hint` is an element near x (e.g. where a nearby point was found).
   Localization<D> localize(const Vec<D>& x, Index hint = kNoIndex) const;
 
+  // Whether barycentrics put their point in the element, as the walk decides it (faces included).
+  static bool contains(const Barycentrics<D>& lambda);
+
   const Mesh<D>& mesh() const { return mesh_; }
   SimplexPoints<D> element_points(Index k) const;
 

@@ -1,0 +1,128 @@
+#include "curve/kink_minimum.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "cases/structured.hpp"
+#include "curve/edge_optimizer.hpp"
+#include "metric/analytic_metric.hpp"
+
+namespace hocav {
+namespace {
+
+template <int D>
+Mesh<D> unit_mesh(int cells) {
+  if constexpr (D == 2)
+    return generate_square(cells);
+  else
+    return generate_cube(cells);
+}
+
+template <int D>
+MetricField<D> shear_field(const Mesh<D>& mesh) {
+  AnalyticMetricSpec spec;
+  spec.name = D == 2 ? "shear-circle" : "shear-sphere";
+  spec.h_max = 0.1;
+  spec.h_min = spec.h_max / 300;
+  spec.width = 0.1;
+  return MetricField<D>(mesh, analytic_metric_at_vertices<D>(spec, mesh));
+}
+
+// Unit vectors spanning the bisector plane (line in 2D) of the edge direction m.
+template <int D>
+std::vector<Vec<D>> plane_directions(const Vec<D>& m, int count) {
+  std::vector<Vec<D>> directions;
+  if constexpr (D == 2) {
+    directions = {Vec2{{-m[1], m[0]}}, Vec2{{m[1], -m[0]}}};
+  } else {
+    Vec3 helper = std::abs(m[0]) < 0.6 ? Vec3{{1, 0, 0}} : Vec3{{0, 1, 0}};
+    Vec3 e1 = cross(m, helper);
+    e1 = (1 / norm(e1)) * e1;
+    const Vec3 e2 = cross(m, e1);
+    for (int k = 0; k < count; ++k) {
+      const double angle = 2 * std::numbers::pi * k / count;
+      directions.push_back(std::cos(angle) * e1 + std::sin(angle) * e2);
+    }
+  }
+  return directions;
+}
+
+// Every edge of the back mesh starts at its midpoint, on a back-mesh edge (3D) or face (2D), a kink of ℓ.
+// Where the test declares it a strict minimum, no direction of the bisector plane may descend: the
+// finite-difference slope over 1e-8 |AB| (second-order terms and round-off are both ~1e-6 ℓ/|AB| there)
+// must not fall below −1e-5 ℓ/|AB|, where a wrongly oriented ray or a missed sector shows slopes of order
+// −ℓ/|AB|. And the test must decide: a good share of the edges is declared optimal.
+template <int D>
+void check_declared_minima(int cells, int min_declared) {
+  Mesh<D> mesh = unit_mesh<D>(cells);
+  const MetricField<D> field = shear_field<D>(mesh);
+  mesh.build_edges();
+  int declared = 0;
+  for (Index e = 0; e < mesh.edge_count(); ++e) {
+    const auto [a, b] = mesh.edge_vertices(e);
+    const Vec<D> pa = mesh.vertex(a), pb = mesh.vertex(b), midpoint = 0.5 * (pa + pb);
+    const double size = norm(pb - pa);
+    const Vec<D> direction = (1 / size) * (pb - pa);
+    const EdgeLengthFunction<D> function(pa, pb, field.vertex_log_metric(a), field.vertex_log_metric(b),
+                                         default_optimizer_rule());
+    const auto sample = field.sample(midpoint, mesh.vertex_element(a));
+    ASSERT_TRUE(on_back_mesh_face(sample.where)) << e;
+    const auto value = function.evaluate(midpoint, sample.log_metric, field.log_metric_gradient(sample.where.element),
+                                         EdgeLengthFunction<D>::Order::kGradient);
+    // The gradient parts add up to the gradient of the element found.
+    const auto log_gradient = field.log_metric_gradient(sample.where.element);
+    for (int i = 0; i < D; ++i)
+      EXPECT_NEAR(value.node_gradient[i] + frobenius_dot(value.log_node_gradient, log_gradient[i]), value.gradient[i],
+                  1e-12 * value.length / size)
+          << e;
+    if (!is_strict_minimum_on_kink(field, sample.where, direction, value, 1e-8 * value.length / size)) continue;
+    ++declared;
+    const double step = 1e-8 * size;
+    for (const Vec<D>& d : plane_directions<D>(direction, 48)) {
+      const Vec<D> node = midpoint + step * d;
+      const double slope = (function.length(node, field.log_metric_at(node, sample.where.element)) - value.length) / step;
+      EXPECT_GT(slope, -1e-5 * value.length / size) << "edge " << e;
+    }
+  }
+  EXPECT_GE(declared, min_declared);
+}
+
+TEST(KinkMinimum, DeclaredMinimaHaveNoDescentDirection3D) { check_declared_minima<3>(8, 200); }
+TEST(KinkMinimum, DeclaredMinimaHaveNoDescentDirection2D) { check_declared_minima<2>(40, 200); }
+
+// In a uniform metric ℓ is smooth: the slopes at the midpoint are round-off, and no kink minimum is declared
+// (the optimizer's Newton step decides).
+TEST(KinkMinimum, UniformMetricDeclaresNothing) {
+  Mesh<3> mesh = generate_cube(4);
+  AnalyticMetricSpec uniform;
+  uniform.h = 0.25;
+  const MetricField<3> field(mesh, analytic_metric_at_vertices(uniform, mesh));
+  mesh.build_edges();
+  for (Index e = 0; e < mesh.edge_count(); ++e) {
+    const auto [a, b] = mesh.edge_vertices(e);
+    const Vec3 pa = mesh.vertex(a), pb = mesh.vertex(b), midpoint = 0.5 * (pa + pb);
+    const EdgeLengthFunction<3> function(pa, pb, field.vertex_log_metric(a), field.vertex_log_metric(b),
+                                         default_optimizer_rule());
+    const auto sample = field.sample(midpoint, mesh.vertex_element(a));
+    const auto value = function.evaluate(midpoint, sample.log_metric, field.log_metric_gradient(sample.where.element),
+                                         EdgeLengthFunction<3>::Order::kGradient);
+    EXPECT_FALSE(is_strict_minimum_on_kink(field, sample.where, (1 / norm(pb - pa)) * (pb - pa), value,
+                                           1e-8 * value.length / norm(pb - pa)))
+        << e;
+  }
+}
+
+// Off every face (inside an element) there is no kink to test.
+TEST(KinkMinimum, InsideAnElementIsNoKink) {
+  Mesh<3> mesh = generate_cube(4);
+  const MetricField<3> field = shear_field<3>(mesh);
+  const auto points = field.locator().element_points(5);
+  const Vec3 centroid = 0.25 * (points[0] + points[1] + points[2] + points[3]);
+  EXPECT_FALSE(on_back_mesh_face(field.sample(centroid, 5).where));
+  EXPECT_TRUE(on_back_mesh_face(field.sample(0.5 * (points[0] + points[1]), 5).where));
+}
+
+}  // namespace
+}  // namespace hocav
