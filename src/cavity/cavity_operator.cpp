@@ -90,6 +90,11 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
   boundary_edge_ids_.clear();
   removed_edges_.clear();
   if (cavity_.empty()) return CavityStatus::kNotStarShaped;
+  // The plan reads every record of the cavity's elements and the neighbours of its neighbours.
+  for (Index k : cavity_) mesh.prefetch_element(k);
+  for (Index k : cavity_)
+    for (int face = 0; face <= D; ++face)
+      if (Index outer = mesh.neighbor(k, face); outer != kNoIndex) mesh.prefetch_element(outer);
 
   ref_ = mesh.element_ref(cavity_.front());
   for (Index k : cavity_)
@@ -109,6 +114,7 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
     starred_faces_.push_back(static_cast<Index>(f));
   }
   if (new_elements_.empty()) return CavityStatus::kNotStarShaped;
+  vertex_on_boundary_ = new_elements_.size() < boundary_faces_.size();
   if (CavityStatus status = match_ridges(); status != CavityStatus::kAccepted) return status;
 
   // Vertices of the cavity on no boundary face disappear. Most lie on a boundary face of their own
@@ -118,7 +124,7 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
   for (std::size_t i = 0; i < cavity_.size(); ++i)
     for (int j = 0; j <= D; ++j) {
       const Index v = mesh.element(cavity_[i])[j];
-      if (v == vertex || ((vertices_on_boundary_[i] >> j) & 1)) continue;
+      if (v == vertex || (boundary_face_bits_[i] & ~(1u << j))) continue;  // on a boundary face of its element
       if (scratch_.empty()) {
         for (const auto& face : boundary_faces_) scratch_.insert(scratch_.end(), face.vertices.begin(), face.vertices.end());
         std::sort(scratch_.begin(), scratch_.end());
@@ -148,7 +154,7 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
 template <int D>
 CavityStatus CavityOperator<D>::collect_boundary(const Mesh<D>& mesh) {
   boundary_faces_.clear();
-  vertices_on_boundary_.assign(cavity_.size(), 0);
+  boundary_face_bits_.assign(cavity_.size(), 0);
   for (std::size_t position = 0; position < cavity_.size(); ++position) {
     const Index k = cavity_[position];
     for (int face = 0; face <= D; ++face) {
@@ -164,7 +170,7 @@ CavityStatus CavityOperator<D>::collect_boundary(const Mesh<D>& mesh) {
         for (int back = 0; back <= D; ++back)
           if (mesh.neighbor(outer, back) == k) boundary.outer_face = back;
       boundary_faces_.push_back(boundary);
-      vertices_on_boundary_[position] |= static_cast<std::uint8_t>(((1u << (D + 1)) - 1) & ~(1u << face));
+      boundary_face_bits_[position] = static_cast<std::uint8_t>(boundary_face_bits_[position] | (1u << face));
     }
   }
   return CavityStatus::kAccepted;
@@ -224,18 +230,26 @@ CavityStatus CavityOperator<D>::plan_edges(const Mesh<D>& mesh) {
     }
 
   // The cavity's other edges are removed (keys from the elements' vertices, not the edge table).
+  // Searched only when neither a boundary face of their element nor an inner vertex decides.
   keyed_edges_.clear();
-  for (Index k : cavity_) {
-    const Element& element = mesh.element(k);
-    const auto& ids = mesh.element_edges(k);
+  for (std::size_t position = 0; position < cavity_.size(); ++position) {
+    const Element& element = mesh.element(cavity_[position]);
+    const auto& ids = mesh.element_edges(cavity_[position]);
     for (int e = 0; e < Mesh<D>::kElementEdges; ++e) {
-      const std::uint64_t key = Mesh<D>::edge_key(element[edge_vertices<D>(e)[0]], element[edge_vertices<D>(e)[1]]);
-      if (boundary_edge_slot(key) == boundary_edge_keys_.size()) keyed_edges_.push_back({key, ids[e]});
+      const auto [p, q] = edge_vertices<D>(e);
+      if (boundary_face_bits_[position] & ~(1u << p) & ~(1u << q)) continue;
+      const bool through_inner_vertex = !vertex_on_boundary_ && (element[p] == vertex_ || element[q] == vertex_);
+      const std::uint64_t key = Mesh<D>::edge_key(element[p], element[q]);
+      if (through_inner_vertex || boundary_edge_slot(key) == boundary_edge_keys_.size()) keyed_edges_.push_back({key, ids[e]});
     }
   }
-  std::sort(keyed_edges_.begin(), keyed_edges_.end(), [](const KeyedEdge& x, const KeyedEdge& y) { return x.id < y.id; });
+  // Each is listed by several elements: a linear search among the few kept, then a short sort.
   for (const KeyedEdge& edge : keyed_edges_)
-    if (removed_edges_.empty() || removed_edges_.back().id != edge.id) removed_edges_.push_back(edge);
+    if (std::none_of(removed_edges_.begin(), removed_edges_.end(), [&](const KeyedEdge& e) { return e.id == edge.id; })) {
+      removed_edges_.push_back(edge);
+      if (mesh.is_p2()) __builtin_prefetch(&mesh.edge_node(edge.id));  // the start of a recreated edge
+    }
+  std::sort(removed_edges_.begin(), removed_edges_.end(), [](const KeyedEdge& x, const KeyedEdge& y) { return x.id < y.id; });
 
   // The new elements' edges: the face's from its cavity element, the others through the vertex.
   new_element_edges_.resize(new_elements_.size());
@@ -250,7 +264,8 @@ CavityStatus CavityOperator<D>::plan_edges(const Mesh<D>& mesh) {
       const Index v = face.vertices[i];
       Index& edge = edges[kLocalEdge<D>(0, i + 1)];
       const std::uint64_t key = Mesh<D>::edge_key(vertex_, v);
-      if (const std::size_t slot = boundary_edge_slot(key); slot < boundary_edge_keys_.size()) {
+      if (const std::size_t slot = vertex_on_boundary_ ? boundary_edge_slot(key) : boundary_edge_keys_.size();
+          slot < boundary_edge_keys_.size()) {
         edge = boundary_edge_ids_[slot];
         continue;
       }
@@ -292,6 +307,11 @@ Index CavityOperator<D>::boundary_edge(Index a, Index b) const {
 template <int D>
 void CavityOperator<D>::commit(Mesh<D>& mesh, std::span<const Point> inner_edge_nodes,
                                std::span<const std::pair<Index, Point>> changed_boundary_nodes) {
+  // Since the plan, other cavities may have pushed these records out of the cache: request them
+  // all now so that their misses overlap.
+  for (Index k : cavity_) mesh.prefetch_element(k);
+  for (const BoundaryFace& face : boundary_faces_)
+    if (face.outer_element != kNoIndex) mesh.prefetch_element(face.outer_element);
   const bool with_edges = mesh.has_edges() && mesh.edge_count() > 0;
   if (with_edges) {
     for (const KeyedEdge& edge : removed_edges_) mesh.remove_edge(edge.id);

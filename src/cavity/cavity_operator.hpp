@@ -108,7 +108,8 @@ class CavityOperator {
   Index vertex_ = kNoIndex;
   int ref_ = 0;
   std::vector<BoundaryFace> boundary_faces_;
-  std::vector<std::uint8_t> vertices_on_boundary_;  // per cavity element: its local vertices on its boundary faces
+  std::vector<std::uint8_t> boundary_face_bits_;  // per cavity element: bit f set when its face f is a boundary face
+  bool vertex_on_boundary_ = false;               // the vertex is on a boundary face (not inside the cavity)
   std::vector<Index> starred_faces_;  // boundary face of each new element
   std::vector<Element> new_elements_;
   std::vector<RidgeFace> ridge_faces_;
