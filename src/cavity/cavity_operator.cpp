@@ -90,7 +90,8 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
   boundary_edge_ids_.clear();
   removed_edges_.clear();
   if (cavity_.empty()) return CavityStatus::kNotStarShaped;
-  // The plan reads every record of the cavity's elements and the neighbours of its neighbours.
+  // The plan reads every record of the cavity's elements and the neighbour rows of the elements
+  // around it: requested together, their cache misses overlap.
   for (Index k : cavity_) mesh.prefetch_element(k);
   for (Index k : cavity_)
     for (int face = 0; face <= D; ++face)
