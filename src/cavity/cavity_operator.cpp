@@ -212,23 +212,22 @@ CavityStatus CavityOperator<D>::match_ridges() {
 
 template <int D>
 CavityStatus CavityOperator<D>::plan_edges(const Mesh<D>& mesh) {
-  // The boundary faces' edges, their ids from the cavity elements the faces belong to (no look-up).
-  keyed_edges_.clear();
+  // The boundary faces' edges, their ids from the cavity elements the faces belong to (no look-up),
+  // kept sorted by key as they come: each is listed by two faces, so the list stays short.
+  boundary_edge_keys_.clear();
+  boundary_edge_ids_.clear();
   for (const auto& face : boundary_faces_) {
     const auto& ids = mesh.element_edges(face.inner_element);
     const auto& local = face_vertices<D>(face.inner_face);
     for (int i = 0; i < D; ++i)
-      for (int j = 0; j < i; ++j)
-        keyed_edges_.push_back({Mesh<D>::edge_key(face.vertices[i], face.vertices[j]), ids[kLocalEdge<D>(local[i], local[j])]});
+      for (int j = 0; j < i; ++j) {
+        const std::uint64_t key = Mesh<D>::edge_key(face.vertices[i], face.vertices[j]);
+        const auto at = std::lower_bound(boundary_edge_keys_.begin(), boundary_edge_keys_.end(), key);
+        if (at != boundary_edge_keys_.end() && *at == key) continue;
+        boundary_edge_ids_.insert(boundary_edge_ids_.begin() + (at - boundary_edge_keys_.begin()), ids[kLocalEdge<D>(local[i], local[j])]);
+        boundary_edge_keys_.insert(at, key);
+      }
   }
-  std::sort(keyed_edges_.begin(), keyed_edges_.end(), [](const KeyedEdge& x, const KeyedEdge& y) { return x.key < y.key; });
-  boundary_edge_keys_.clear();
-  boundary_edge_ids_.clear();
-  for (const KeyedEdge& edge : keyed_edges_)
-    if (boundary_edge_keys_.empty() || boundary_edge_keys_.back() != edge.key) {
-      boundary_edge_keys_.push_back(edge.key);
-      boundary_edge_ids_.push_back(edge.id);
-    }
 
   // The cavity's other edges are removed (keys from the elements' vertices, not the edge table).
   // Searched only when neither a boundary face of their element nor an inner vertex decides.
