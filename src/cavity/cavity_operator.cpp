@@ -33,6 +33,22 @@ std::uint64_t ridge_key(const Index* vertices, Index skip) {
   return Mesh<3>::edge_key(kept[0], kept[1]);
 }
 
+// The local edge of a D-simplex joining two local vertices.
+template <int D>
+struct LocalEdges {
+  std::array<std::array<int, D + 1>, D + 1> of_vertices{};
+  constexpr LocalEdges() {
+    for (int e = 0; e < Simplex<D>::kEdges; ++e) {
+      const auto [p, q] = edge_vertices<D>(e);
+      of_vertices[static_cast<std::size_t>(p)][static_cast<std::size_t>(q)] = e;
+      of_vertices[static_cast<std::size_t>(q)][static_cast<std::size_t>(p)] = e;
+    }
+  }
+  int operator()(int p, int q) const { return of_vertices[static_cast<std::size_t>(p)][static_cast<std::size_t>(q)]; }
+};
+template <int D>
+constexpr LocalEdges<D> kLocalEdge{};
+
 template <int D>
 double longest_edge(const Mesh<D>& mesh, const typename Mesh<D>::Element& element, const Vec<D>& extra,
                     bool use_extra) {
@@ -49,7 +65,15 @@ double longest_edge(const Mesh<D>& mesh, const typename Mesh<D>::Element& elemen
 
 template <int D>
 bool CavityOperator<D>::in_cavity(Index k) const {
-  return std::binary_search(cavity_.begin(), cavity_.end(), k);
+  // A binary search without branches: on a small cavity a mispredicted branch costs more than the
+  // few extra comparisons.
+  const Index* first = cavity_.data();
+  for (std::size_t count = cavity_.size(); count > 1;) {
+    const std::size_t half = count / 2;
+    first = first[half] <= k ? first + half : first;
+    count -= half;
+  }
+  return *first == k;
 }
 
 template <int D>
@@ -66,6 +90,12 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
   boundary_edge_ids_.clear();
   removed_edges_.clear();
   if (cavity_.empty()) return CavityStatus::kNotStarShaped;
+  // The plan reads every record of the cavity's elements and the neighbour rows of the elements
+  // around it: requested together, their cache misses overlap.
+  for (Index k : cavity_) mesh.prefetch_element(k);
+  for (Index k : cavity_)
+    for (int face = 0; face <= D; ++face)
+      if (Index outer = mesh.neighbor(k, face); outer != kNoIndex) mesh.prefetch_element(outer);
 
   ref_ = mesh.element_ref(cavity_.front());
   for (Index k : cavity_)
@@ -85,18 +115,25 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
     starred_faces_.push_back(static_cast<Index>(f));
   }
   if (new_elements_.empty()) return CavityStatus::kNotStarShaped;
+  vertex_on_boundary_ = new_elements_.size() < boundary_faces_.size();
   if (CavityStatus status = match_ridges(); status != CavityStatus::kAccepted) return status;
 
-  // Vertices of the cavity on no boundary face disappear.
+  // Vertices of the cavity on no boundary face disappear. Most lie on a boundary face of their own
+  // element (in a ball, all but the vertex); only the others are searched among all the faces.
   scratch_.clear();
-  for (const auto& face : boundary_faces_) scratch_.insert(scratch_.end(), face.vertices.begin(), face.vertices.end());
-  std::sort(scratch_.begin(), scratch_.end());
   vanishing_vertices_.clear();
-  for (Index k : cavity_)
-    for (Index v : mesh.element(k))
-      if (v != vertex && !std::binary_search(scratch_.begin(), scratch_.end(), v) &&
+  for (std::size_t i = 0; i < cavity_.size(); ++i)
+    for (int j = 0; j <= D; ++j) {
+      const Index v = mesh.element(cavity_[i])[j];
+      if (v == vertex || (boundary_face_bits_[i] & ~(1u << j))) continue;  // on a boundary face of its element
+      if (scratch_.empty()) {
+        for (const auto& face : boundary_faces_) scratch_.insert(scratch_.end(), face.vertices.begin(), face.vertices.end());
+        std::sort(scratch_.begin(), scratch_.end());
+      }
+      if (!std::binary_search(scratch_.begin(), scratch_.end(), v) &&
           std::find(vanishing_vertices_.begin(), vanishing_vertices_.end(), v) == vanishing_vertices_.end())
         vanishing_vertices_.push_back(v);
+    }
   for (Index v : vanishing_vertices_)
     if (v != options.removable_vertex) return CavityStatus::kRemovesVertex;
 
@@ -118,7 +155,9 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
 template <int D>
 CavityStatus CavityOperator<D>::collect_boundary(const Mesh<D>& mesh) {
   boundary_faces_.clear();
-  for (Index k : cavity_)
+  boundary_face_bits_.assign(cavity_.size(), 0);
+  for (std::size_t position = 0; position < cavity_.size(); ++position) {
+    const Index k = cavity_[position];
     for (int face = 0; face <= D; ++face) {
       Index outer = mesh.neighbor(k, face);
       Index facet = mesh.element_face_facet(k, face);
@@ -126,13 +165,15 @@ CavityStatus CavityOperator<D>::collect_boundary(const Mesh<D>& mesh) {
         if (facet != kNoIndex) return CavityStatus::kCrossesBoundary;
         continue;
       }
-      BoundaryFace boundary{{}, outer, -1, facet};
+      BoundaryFace boundary{{}, outer, -1, facet, k, face};
       for (int i = 0; i < D; ++i) boundary.vertices[i] = mesh.element(k)[face_vertices<D>(face)[i]];
       if (outer != kNoIndex)
         for (int back = 0; back <= D; ++back)
           if (mesh.neighbor(outer, back) == k) boundary.outer_face = back;
       boundary_faces_.push_back(boundary);
+      boundary_face_bits_[position] = static_cast<std::uint8_t>(boundary_face_bits_[position] | (1u << face));
     }
+  }
   return CavityStatus::kAccepted;
 }
 
@@ -171,41 +212,73 @@ CavityStatus CavityOperator<D>::match_ridges() {
 
 template <int D>
 CavityStatus CavityOperator<D>::plan_edges(const Mesh<D>& mesh) {
+  // The boundary faces' edges, their ids from the cavity elements the faces belong to (no look-up),
+  // kept sorted by key as they come: each is listed by two faces, so the list stays short.
   boundary_edge_keys_.clear();
-  for (const auto& face : boundary_faces_)
+  boundary_edge_ids_.clear();
+  for (const auto& face : boundary_faces_) {
+    const auto& ids = mesh.element_edges(face.inner_element);
+    const auto& local = face_vertices<D>(face.inner_face);
     for (int i = 0; i < D; ++i)
-      for (int j = 0; j < i; ++j) boundary_edge_keys_.push_back(Mesh<D>::edge_key(face.vertices[i], face.vertices[j]));
-  std::sort(boundary_edge_keys_.begin(), boundary_edge_keys_.end());
-  boundary_edge_keys_.erase(std::unique(boundary_edge_keys_.begin(), boundary_edge_keys_.end()), boundary_edge_keys_.end());
-
-  // The cavity's edges, from its elements' edge ids (no hash look-up): those on the boundary of the
-  // hole are kept, the others removed.
-  scratch_.clear();
-  for (Index k : cavity_)
-    for (Index e : mesh.element_edges(k)) scratch_.push_back(e);
-  std::sort(scratch_.begin(), scratch_.end());
-  scratch_.erase(std::unique(scratch_.begin(), scratch_.end()), scratch_.end());
-  boundary_edge_ids_.assign(boundary_edge_keys_.size(), kNoIndex);
-  for (Index e : scratch_) {
-    const std::size_t slot = boundary_edge_slot(mesh.edge_vertices(e)[0], mesh.edge_vertices(e)[1]);
-    if (slot < boundary_edge_keys_.size()) boundary_edge_ids_[slot] = e;
-    else removed_edges_.push_back(e);
+      for (int j = 0; j < i; ++j) {
+        const std::uint64_t key = Mesh<D>::edge_key(face.vertices[i], face.vertices[j]);
+        const auto at = std::lower_bound(boundary_edge_keys_.begin(), boundary_edge_keys_.end(), key);
+        if (at != boundary_edge_keys_.end() && *at == key) continue;
+        boundary_edge_ids_.insert(boundary_edge_ids_.begin() + (at - boundary_edge_keys_.begin()), ids[kLocalEdge<D>(local[i], local[j])]);
+        boundary_edge_keys_.insert(at, key);
+      }
   }
 
-  for (std::size_t f : starred_faces_)
-    for (Index v : boundary_faces_[f].vertices) {
-      if (boundary_edge_slot(vertex_, v) < boundary_edge_keys_.size()) continue;
-      std::array<Index, 2> edge{vertex_, v};
-      if (std::find(new_inner_edges_.begin(), new_inner_edges_.end(), edge) != new_inner_edges_.end()) continue;
-      new_inner_edges_.push_back(edge);
+  // The cavity's other edges are removed (keys from the elements' vertices, not the edge table).
+  // Searched only when neither a boundary face of their element nor an inner vertex decides.
+  keyed_edges_.clear();
+  for (std::size_t position = 0; position < cavity_.size(); ++position) {
+    const Element& element = mesh.element(cavity_[position]);
+    const auto& ids = mesh.element_edges(cavity_[position]);
+    for (int e = 0; e < Mesh<D>::kElementEdges; ++e) {
+      const auto [p, q] = edge_vertices<D>(e);
+      if (boundary_face_bits_[position] & ~(1u << p) & ~(1u << q)) continue;
+      const bool through_inner_vertex = !vertex_on_boundary_ && (element[p] == vertex_ || element[q] == vertex_);
+      const std::uint64_t key = Mesh<D>::edge_key(element[p], element[q]);
+      if (through_inner_vertex || boundary_edge_slot(key) == boundary_edge_keys_.size()) keyed_edges_.push_back({key, ids[e]});
+    }
+  }
+  // Each is listed by several elements: a linear search among the few kept, then a short sort.
+  for (const KeyedEdge& edge : keyed_edges_)
+    if (std::none_of(removed_edges_.begin(), removed_edges_.end(), [&](const KeyedEdge& e) { return e.id == edge.id; })) {
+      removed_edges_.push_back(edge);
+      if (mesh.is_p2()) __builtin_prefetch(&mesh.edge_node(edge.id));  // the start of a recreated edge
+    }
+  std::sort(removed_edges_.begin(), removed_edges_.end(), [](const KeyedEdge& x, const KeyedEdge& y) { return x.id < y.id; });
+
+  // The new elements' edges: the face's from its cavity element, the others through the vertex.
+  new_element_edges_.resize(new_elements_.size());
+  for (std::size_t n = 0; n < new_elements_.size(); ++n) {
+    const BoundaryFace& face = boundary_faces_[starred_faces_[n]];
+    auto& edges = new_element_edges_[n];
+    const auto& ids = mesh.element_edges(face.inner_element);
+    const auto& local = face_vertices<D>(face.inner_face);
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < i; ++j) edges[kLocalEdge<D>(i + 1, j + 1)] = ids[kLocalEdge<D>(local[i], local[j])];
+    for (int i = 0; i < D; ++i) {
+      const Index v = face.vertices[i];
+      Index& edge = edges[kLocalEdge<D>(0, i + 1)];
+      const std::uint64_t key = Mesh<D>::edge_key(vertex_, v);
+      if (const std::size_t slot = vertex_on_boundary_ ? boundary_edge_slot(key) : boundary_edge_keys_.size();
+          slot < boundary_edge_keys_.size()) {
+        edge = boundary_edge_ids_[slot];
+        continue;
+      }
+      auto listed = std::find_if(new_inner_edges_.begin(), new_inner_edges_.end(), [&](const auto& e) { return e[1] == v; });
+      edge = inner_edge_ref(static_cast<std::size_t>(listed - new_inner_edges_.begin()));
+      if (listed != new_inner_edges_.end()) continue;
+      new_inner_edges_.push_back({vertex_, v});
       // An inner edge the star recreates (a reinsertion) keeps its id: no edge-table churn. One
       // that exists outside the cavity would be created twice: the star folds over the mesh.
-      auto removed = std::find_if(removed_edges_.begin(), removed_edges_.end(), [&](Index e) {
-        return Mesh<D>::edge_key(mesh.edge_vertices(e)[0], mesh.edge_vertices(e)[1]) == Mesh<D>::edge_key(vertex_, v);
-      });
+      auto removed = std::find_if(removed_edges_.begin(), removed_edges_.end(), [&](const KeyedEdge& e) { return e.key == key; });
       Index kept = kNoIndex;
       if (removed != removed_edges_.end()) {
-        kept = *removed;
+        kept = removed->id;
         removed_edges_.erase(removed);
       } else if (mesh.find_edge(vertex_, v) != kNoIndex) {
         return CavityStatus::kNotStarShaped;
@@ -214,12 +287,12 @@ CavityStatus CavityOperator<D>::plan_edges(const Mesh<D>& mesh) {
       start_nodes_.push_back(kept != kNoIndex && mesh.is_p2() ? mesh.edge_node(kept)
                                                               : 0.5 * (mesh.vertex(vertex_) + mesh.vertex(v)));
     }
+  }
   return CavityStatus::kAccepted;
 }
 
 template <int D>
-std::size_t CavityOperator<D>::boundary_edge_slot(Index a, Index b) const {
-  const std::uint64_t key = Mesh<D>::edge_key(a, b);
+std::size_t CavityOperator<D>::boundary_edge_slot(std::uint64_t key) const {
   auto found = std::lower_bound(boundary_edge_keys_.begin(), boundary_edge_keys_.end(), key);
   return found != boundary_edge_keys_.end() && *found == key ? static_cast<std::size_t>(found - boundary_edge_keys_.begin())
                                                             : boundary_edge_keys_.size();
@@ -227,24 +300,21 @@ std::size_t CavityOperator<D>::boundary_edge_slot(Index a, Index b) const {
 
 template <int D>
 Index CavityOperator<D>::boundary_edge(Index a, Index b) const {
-  const std::size_t slot = boundary_edge_slot(a, b);
+  const std::size_t slot = boundary_edge_slot(Mesh<D>::edge_key(a, b));
   return slot < boundary_edge_ids_.size() ? boundary_edge_ids_[slot] : kNoIndex;
-}
-
-template <int D>
-Index CavityOperator<D>::planned_edge(Index a, Index b) const {
-  if (Index e = boundary_edge(a, b); e != kNoIndex) return e;
-  for (std::size_t i = 0; i < new_inner_edges_.size(); ++i)
-    if (Mesh<D>::edge_key(new_inner_edges_[i][0], new_inner_edges_[i][1]) == Mesh<D>::edge_key(a, b)) return inner_edge_ids_[i];
-  return kNoIndex;
 }
 
 template <int D>
 void CavityOperator<D>::commit(Mesh<D>& mesh, std::span<const Point> inner_edge_nodes,
                                std::span<const std::pair<Index, Point>> changed_boundary_nodes) {
+  // Since the plan, other cavities may have pushed these records out of the cache: request them
+  // all now so that their misses overlap.
+  for (Index k : cavity_) mesh.prefetch_element(k);
+  for (const BoundaryFace& face : boundary_faces_)
+    if (face.outer_element != kNoIndex) mesh.prefetch_element(face.outer_element);
   const bool with_edges = mesh.has_edges() && mesh.edge_count() > 0;
   if (with_edges) {
-    for (Index e : removed_edges_) mesh.remove_edge(e);
+    for (const KeyedEdge& edge : removed_edges_) mesh.remove_edge(edge.id);
     inner_edge_ids_.clear();
     for (std::size_t i = 0; i < new_inner_edges_.size(); ++i) {
       const Point& node = i < inner_edge_nodes.size() ? inner_edge_nodes[i] : start_nodes_[i];
@@ -291,8 +361,10 @@ void CavityOperator<D>::commit(Mesh<D>& mesh, std::span<const Point> inner_edge_
   for (Index v : vanishing_vertices_) mesh.set_vertex_element(v, kNoIndex);
   if (with_edges)
     for (std::size_t n = 0; n < new_elements_.size(); ++n)
-      for (int e = 0; e < Mesh<D>::kElementEdges; ++e)
-        mesh.set_element_edge(slot[n], e, planned_edge(new_elements_[n][edge_vertices<D>(e)[0]], new_elements_[n][edge_vertices<D>(e)[1]]));
+      for (int e = 0; e < Mesh<D>::kElementEdges; ++e) {
+        const Index edge = new_element_edges_[n][e];
+        mesh.set_element_edge(slot[n], e, edge >= 0 ? edge : inner_edge_ids_[inner_edge_of(edge)]);
+      }
 
   // Cavity slots left over: fill each from the end of the array, highest first.
   for (std::size_t i = cavity_.size(); i-- > new_elements_.size();) {

@@ -69,6 +69,8 @@ class CavityOperator {
     Index outer_element;            // the neighbour outside, or kNoIndex
     int outer_face;
     Index facet;                    // the boundary facet on the face, or kNoIndex
+    Index inner_element;            // the cavity element it is a face of, and its local face there
+    int inner_face;
   };
   // A face containing the vertex, keyed by its other D − 1 vertices: a new element's face or a
   // kept boundary face; matched in pairs.
@@ -85,19 +87,29 @@ class CavityOperator {
     int kept_face;
   };
 
+  // An edge of the cavity by key, with its id.
+  struct KeyedEdge {
+    std::uint64_t key;
+    Index id;
+  };
+
   bool in_cavity(Index k) const;
   CavityStatus collect_boundary(const Mesh<D>& mesh);
   CavityStatus match_ridges();
   CavityStatus plan_edges(const Mesh<D>& mesh);
-  // Position of edge (a, b) in boundary_edge_keys_, or its size when it is not there.
-  std::size_t boundary_edge_slot(Index a, Index b) const;
-  // During commit, after the new inner edges are in the table: the id of an edge of a new element.
-  Index planned_edge(Index a, Index b) const;
+  // Position of the edge with this key in boundary_edge_keys_, or its size when it is not there.
+  std::size_t boundary_edge_slot(std::uint64_t key) const;
+  // new_element_edges_ holds edge ids (≥ 0) and, for new inner edge i, whose id only the commit
+  // knows, inner_edge_ref(i).
+  static Index inner_edge_ref(std::size_t i) { return -2 - static_cast<Index>(i); }
+  static std::size_t inner_edge_of(Index ref) { return static_cast<std::size_t>(-2 - ref); }
 
   std::vector<Index> cavity_;
   Index vertex_ = kNoIndex;
   int ref_ = 0;
   std::vector<BoundaryFace> boundary_faces_;
+  std::vector<std::uint8_t> boundary_face_bits_;  // per cavity element: bit f set when its face f is a boundary face
+  bool vertex_on_boundary_ = false;               // the vertex is on a boundary face (not inside the cavity)
   std::vector<Index> starred_faces_;  // boundary face of each new element
   std::vector<Element> new_elements_;
   std::vector<RidgeFace> ridge_faces_;
@@ -105,7 +117,9 @@ class CavityOperator {
   std::vector<Index> vanishing_vertices_;
   std::vector<std::uint64_t> boundary_edge_keys_;
   std::vector<Index> boundary_edge_ids_;
-  std::vector<Index> removed_edges_;
+  std::vector<KeyedEdge> removed_edges_;   // by increasing id
+  std::vector<KeyedEdge> keyed_edges_;     // scratch
+  std::vector<typename Mesh<D>::ElementEdges> new_element_edges_;
   std::vector<std::array<Index, 2>> new_inner_edges_;
   std::vector<Index> recreated_ids_;  // per new inner edge: its old id when it existed (kept), else kNoIndex
   std::vector<Index> inner_edge_ids_;  // per new inner edge: its id once committed

@@ -25,7 +25,10 @@ void collect_ball(const Mesh<D>& mesh, Index v, std::vector<Index>& ball) {
     for (int face = 0; face <= D; ++face) {
       if (face == own) continue;  // the face opposite v does not contain v
       Index neighbor = mesh.neighbor(k, face);
-      if (neighbor != kNoIndex && std::find(ball.begin(), ball.end(), neighbor) == ball.end()) ball.push_back(neighbor);
+      if (neighbor != kNoIndex && std::find(ball.begin(), ball.end(), neighbor) == ball.end()) {
+        mesh.prefetch_element(neighbor);  // read when its turn comes, and by the ball's users
+        ball.push_back(neighbor);
+      }
     }
   }
 }

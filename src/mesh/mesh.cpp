@@ -228,6 +228,7 @@ void Mesh<D>::build_topology() {
   facet_element_face_.assign(facets_.size(), kNoIndex);
   element_face_facets_.clear();
   element_face_facets_.reserve(facets_.size());
+  faces_with_facet_.assign(elements_.size(), 0);
   for (Index f = 0; f < facet_count(); ++f) {
     const Facet& facet = facets_[f];
     Index v = facet[0];
@@ -237,7 +238,7 @@ void Mesh<D>::build_topology() {
     }
     if (facet_element_face_[f] == kNoIndex)
       throw Error("boundary facet " + std::to_string(f + 1) + " is not a face of any element");
-    element_face_facets_.assign(static_cast<std::uint64_t>(facet_element_face_[f]), f);
+    link_face_facet(facet_element_face_[f] / (D + 1), facet_element_face_[f] % (D + 1), f);
   }
 }
 
@@ -251,6 +252,7 @@ Index Mesh<D>::append_element(const Element& vertices, int ref) {
     Element none;
     none.fill(kNoIndex);
     adjacency_.push_back(none);
+    faces_with_facet_.push_back(0);
   }
   if (had_edges) {
     ElementEdges none;
@@ -273,7 +275,7 @@ void Mesh<D>::move_element(Index from, Index to) {
         if (adjacency_[n][back] == from) adjacency_[n][back] = to;
     Index f = element_face_facet(from, face);
     if (f != kNoIndex) {
-      element_face_facets_.erase(static_cast<std::uint64_t>(from) * (D + 1) + face);
+      unlink_face_facet(from, face);
       attach_facet(f, to, face);
     }
   }
@@ -286,6 +288,7 @@ void Mesh<D>::pop_element() {
   elements_.pop_back();
   element_refs_.pop_back();
   adjacency_.pop_back();
+  faces_with_facet_.pop_back();
   if (!element_edges_.empty()) element_edges_.pop_back();
 }
 
@@ -293,9 +296,21 @@ template <int D>
 void Mesh<D>::attach_facet(Index f, Index k, int face) {
   Index old = facet_element_face_[f];
   if (old != kNoIndex && element_face_facets_.find(static_cast<std::uint64_t>(old)) == f)
-    element_face_facets_.erase(static_cast<std::uint64_t>(old));
+    unlink_face_facet(old / (D + 1), old % (D + 1));
   facet_element_face_[f] = k * (D + 1) + face;
-  element_face_facets_.assign(static_cast<std::uint64_t>(facet_element_face_[f]), f);
+  link_face_facet(k, face, f);
+}
+
+template <int D>
+void Mesh<D>::link_face_facet(Index k, int face, Index f) {
+  element_face_facets_.assign(face_key(k, face), f);
+  faces_with_facet_[k] = static_cast<std::uint8_t>(faces_with_facet_[k] | (1u << face));
+}
+
+template <int D>
+void Mesh<D>::unlink_face_facet(Index k, int face) {
+  element_face_facets_.erase(face_key(k, face));
+  faces_with_facet_[k] = static_cast<std::uint8_t>(faces_with_facet_[k] & ~(1u << face));
 }
 
 template <int D>
@@ -350,7 +365,7 @@ std::size_t Mesh<D>::memory_bytes() const {
          bytes(facet_refs_) + bytes(lines_) + bytes(line_refs_) + bytes(corners_) + bytes(ridges_) +
          bytes(required_vertices_) + bytes(edge_vertices_) + bytes(edge_nodes_) + bytes(element_edges_) +
          edge_ids_.memory_bytes() + bytes(adjacency_) + bytes(vertex_element_) + bytes(facet_element_face_) +
-         element_face_facets_.memory_bytes();
+         element_face_facets_.memory_bytes() + bytes(faces_with_facet_);
 }
 
 template class Mesh<2>;
