@@ -34,8 +34,10 @@ struct P2CavityOptions {
   // Every element the operator creates or changes ends with min normalized Jacobian above this.
   double jacobian_floor = 0.01;
   EdgeOptimizerOptions optimizer{};
-  // Bisection steps of the correction factor (resolution 2^-steps).
-  int correction_steps = 10;
+  // Bisection steps of the correction factor (resolution 2^-steps). Finer does not pay: an edge
+  // pulled back loses its optimum mark and is optimized again at its next cavity, and 4 steps gave
+  // higher gains, fewer corrections and 22-26% fewer certifications than 10 (docs/benchmarks.md).
+  int correction_steps = 4;
   // The caller vouches that every element of the mesh is certified above jacobian_floor (the
   // reinsertion driver checks its input once): every accepted cavity keeps it so, and a new element
   // identical to a cavity element is then not certified again.
