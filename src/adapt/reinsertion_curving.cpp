@@ -5,6 +5,8 @@
 
 #include "adapt/independent_batches.hpp"
 #include "base/error.hpp"
+#include "bezier/jacobian_bounds.hpp"
+#include "bezier/p2_element.hpp"
 #include "base/thread_pool.hpp"
 #include "mesh/ball_and_shell.hpp"
 #include "mesh/boundary_vertices.hpp"
@@ -15,6 +17,26 @@ namespace {
 
 // Cavities prepared together. Fixed, so the work does not depend on the thread count.
 constexpr std::size_t kCavitiesPerRound = 512;
+
+// Certifies every element of `mesh` (a straight one takes the fast path), counted in `counters`.
+template <int D>
+bool every_element_above_floor(const Mesh<D>& mesh, double floor, ThreadPool& pool, P2CavityCounters& counters) {
+  constexpr Index kElementsPerTask = 4096;
+  const Index count = mesh.element_count();
+  const auto tasks = static_cast<std::size_t>((count + kElementsPerTask - 1) / kElementsPerTask);
+  std::vector<char> above(tasks, 1);
+  std::vector<double> seconds(tasks);
+  pool.run(tasks, [&](std::size_t task) {
+    const auto start = std::chrono::steady_clock::now();
+    const Index first = static_cast<Index>(task) * kElementsPerTask, last = std::min(count, first + kElementsPerTask);
+    for (Index k = first; k < last; ++k)
+      if (!certify_min_normalized_jacobian_above(gather_p2_element(mesh, k), floor)) above[task] = 0;
+    seconds[task] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  });
+  counters.elements_certified += count;
+  for (double s : seconds) counters.seconds_certify += s;
+  return std::all_of(above.begin(), above.end(), [](char a) { return a != 0; });
+}
 
 }  // namespace
 
@@ -46,14 +68,20 @@ ReinsertionResult curve_by_reinsertion(Mesh<D>& mesh, const MetricField<D>& fiel
     log_metrics[v] = field.vertex_log_metric(v);
     hints[v] = field.back_mesh().vertex_element(v);
   }
+  ThreadPool pool(std::max(1, options.threads));
+  ReinsertionResult result;
+  OptimizedEdgeMarks optimized_edges;
+  P2CavityOptions cavity_options = options.cavity;
+  if (options.reuse_results)
+    cavity_options.every_element_above_floor =
+        every_element_above_floor(mesh, cavity_options.jacobian_floor, pool, result.counters);
   std::vector<std::unique_ptr<P2CavityOperator<D>>> operators;
   for (std::size_t i = 0; i < kCavitiesPerRound; ++i)
-    operators.push_back(std::make_unique<P2CavityOperator<D>>(field, log_metrics, hints, boundary, options.cavity));
+    operators.push_back(std::make_unique<P2CavityOperator<D>>(
+        field, log_metrics, hints, options.reuse_results ? &optimized_edges : nullptr, boundary, cavity_options));
   std::vector<std::vector<Index>> balls(kCavitiesPerRound);
   std::vector<CavityStatus> statuses(kCavitiesPerRound);
-  ThreadPool pool(std::max(1, options.threads));
 
-  ReinsertionResult result;
   const std::vector<Index> vertices = volume_vertices(mesh);
   const auto batches = independent_batches(vertex_graph(mesh), vertices, boundary ? 4 : 3);
   const double total = static_cast<double>(vertices.size()) * options.passes;

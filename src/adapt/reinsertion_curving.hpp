@@ -19,6 +19,11 @@ struct ReinsertionOptions {
   P2CavityOptions cavity{};
   int passes = 1;
   int threads = 1;
+  // Work not redone (docs/curving.md): a recreated edge still at its optimum is not optimized
+  // again, and, when every input element certifies above the floor (checked once), an element a
+  // cavity recreates with the same nodes is not certified again. Off: every cavity optimizes all
+  // its inner edges and certifies all its new elements, as the paper describes.
+  bool reuse_results = true;
   // Called now and then with the fraction of the work done (for progress on long runs).
   std::function<void(double)> progress;
 };

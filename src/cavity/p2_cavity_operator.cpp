@@ -1,7 +1,9 @@
 #include "cavity/p2_cavity_operator.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <utility>
 
 #include "bezier/jacobian_bounds.hpp"
 #include "mesh/ball_and_shell.hpp"
@@ -15,6 +17,19 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// Sorts the vertices of an element; true when that takes an odd permutation (so two elements with
+// the same sorted vertices and parity are one element, with one orientation).
+template <std::size_t N>
+bool sort_with_parity(std::array<Index, N>& vertices) {
+  bool odd = false;
+  for (std::size_t i = 1; i < N; ++i)
+    for (std::size_t j = i; j > 0 && vertices[j - 1] > vertices[j]; --j) {
+      std::swap(vertices[j - 1], vertices[j]);
+      odd = !odd;
+    }
+  return odd;
+}
+
 }  // namespace
 
 P2CavityCounters& P2CavityCounters::operator+=(const P2CavityCounters& other) {
@@ -24,9 +39,11 @@ P2CavityCounters& P2CavityCounters::operator+=(const P2CavityCounters& other) {
   rejected_curving += other.rejected_curving;
   edges_optimized += other.edges_optimized;
   optimizer_iterations += other.optimizer_iterations;
+  edges_kept_optimal += other.edges_kept_optimal;
   boundary_nodes_applied += other.boundary_nodes_applied;
   corrections += other.corrections;
   elements_certified += other.elements_certified;
+  certificates_kept += other.certificates_kept;
   seconds_plan += other.seconds_plan;
   seconds_optimize += other.seconds_optimize;
   seconds_certify += other.seconds_certify;
@@ -36,11 +53,12 @@ P2CavityCounters& P2CavityCounters::operator+=(const P2CavityCounters& other) {
 
 template <int D>
 P2CavityOperator<D>::P2CavityOperator(const MetricField<D>& field, std::vector<SymMat<D>>& vertex_log_metrics,
-                                      std::vector<Index>& vertex_hints, BoundaryNodeSource<D>* boundary,
-                                      const P2CavityOptions& options)
+                                      std::vector<Index>& vertex_hints, OptimizedEdgeMarks* optimized_edges,
+                                      BoundaryNodeSource<D>* boundary, const P2CavityOptions& options)
     : field_(field),
       vertex_log_metrics_(vertex_log_metrics),
       vertex_hints_(vertex_hints),
+      optimized_edges_(optimized_edges),
       boundary_(boundary),
       options_(options) {}
 
@@ -67,9 +85,18 @@ CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const I
   collect_candidates(mesh);
   // Certify every candidate; pull back the edges of the first that fails, and start over (a
   // pulled-back edge changes its other elements too). Each round lowers some scale, so it ends.
-  // A candidate whose nodes did not move since it was certified is not certified again.
+  // A candidate whose nodes did not move since it was certified is not certified again, nor one
+  // identical to a cavity element, which was above the floor.
   bool valid = true;
   certified_already_.assign(candidates_.size(), false);
+  if (options_.every_element_above_floor) {
+    collect_cavity_vertex_sets(mesh);
+    for (std::size_t i = 0; i < candidates_.size(); ++i)
+      if (candidates_[i].mesh_element == kNoIndex && recreates_cavity_element(candidates_[i])) {
+        certified_already_[i] = true;
+        ++counters_.certificates_kept;
+      }
+  }
   for (std::size_t round = 0; valid; ++round) {
     std::size_t failing = 0;
     while (failing < candidates_.size() && (certified_already_[failing] || certified(candidates_[failing])))
@@ -104,6 +131,7 @@ void P2CavityOperator<D>::commit(Mesh<D>& mesh) {
     }
   }
   p1_.commit(mesh, inner_nodes_, boundary_nodes_);
+  if (optimized_edges_) mark_optimized_edges(mesh);
   counters_.seconds_commit += seconds_since(start);
   ++counters_.accepted;
 }
@@ -112,17 +140,46 @@ template <int D>
 void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh) {
   const auto edges = p1_.new_inner_edges();
   const auto starts = p1_.new_inner_edge_start_nodes();
+  if (optimized_edges_) collect_edges_at_vertex(mesh);
   EdgeEndpoint<D> end_a;  // the new edges share their first vertex (the cavity's): its metric once
+  Index end_a_vertex = kNoIndex;
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const auto [a, b] = edges[i];
-    if (i == 0 || a != edges[i - 1][0]) end_a = edge_endpoint(mesh.vertex(a), vertex_log_metrics_[a]);
+    const Index recreated = optimized_edges_ ? recreated_edge(b) : kNoIndex;
+    if (recreated != kNoIndex && optimized_edges_->marked(recreated)) {
+      ++counters_.edges_kept_optimal;
+      curved_.push_back({a, b, starts[i], starts[i], 1, true, static_cast<Index>(i), recreated, true});
+      continue;
+    }
+    if (a != end_a_vertex) end_a = edge_endpoint(mesh.vertex(a), vertex_log_metrics_[a]), end_a_vertex = a;
     auto result = optimize_edge_length(field_, end_a, edge_endpoint(mesh.vertex(b), vertex_log_metrics_[b]), starts[i],
                                        vertex_hints_[a], options_.optimizer);
     ++counters_.edges_optimized;
     counters_.optimizer_iterations += result.iterations;
     vertex_hints_[a] = result.back_element;  // near a: the next walk from a starts close
-    curved_.push_back({a, b, starts[i], result.node, 1, true, static_cast<Index>(i)});
+    // The optimizer's unconverged exits leave no optimum to keep: the iteration limit, and a
+    // non-finite Newton model (it returns before measuring a length).
+    const bool converged = result.iterations < options_.optimizer.max_iterations && result.length > 0;
+    curved_.push_back({a, b, starts[i], result.node, 1, true, static_cast<Index>(i), recreated, converged});
   }
+}
+
+template <int D>
+void P2CavityOperator<D>::collect_edges_at_vertex(const Mesh<D>& mesh) {
+  edges_at_vertex_.clear();
+  const Index vertex = p1_.vertex();
+  for (Index k : p1_.cavity())
+    for (int e = 0; e < Simplex<D>::kEdges; ++e) {
+      const Index a = mesh.element(k)[edge_vertices<D>(e)[0]], b = mesh.element(k)[edge_vertices<D>(e)[1]];
+      if (a == vertex || b == vertex) edges_at_vertex_.emplace_back(a == vertex ? b : a, mesh.element_edge(k, e));
+    }
+  std::sort(edges_at_vertex_.begin(), edges_at_vertex_.end());
+}
+
+template <int D>
+Index P2CavityOperator<D>::recreated_edge(Index other) const {
+  auto found = std::lower_bound(edges_at_vertex_.begin(), edges_at_vertex_.end(), std::pair{other, Index{0}});
+  return found != edges_at_vertex_.end() && found->first == other ? found->second : kNoIndex;
 }
 
 template <int D>
@@ -133,7 +190,7 @@ void P2CavityOperator<D>::take_boundary_proposals(const Mesh<D>& mesh) {
     auto proposal = boundary_->proposal(a, b);
     if (!proposal || *proposal == mesh.edge_node(edge)) continue;
     // Pulling back moves the node from where it is now toward the proposal.
-    curved_.push_back({a, b, mesh.edge_node(edge), *proposal, 1, false, edge});
+    curved_.push_back({a, b, mesh.edge_node(edge), *proposal, 1, false, edge, kNoIndex, false});
   }
 }
 
@@ -179,6 +236,42 @@ void P2CavityOperator<D>::add_candidate(const Mesh<D>& mesh, const typename Mesh
 }
 
 template <int D>
+void P2CavityOperator<D>::collect_cavity_vertex_sets(const Mesh<D>& mesh) {
+  cavity_vertex_sets_.clear();
+  for (Index k : p1_.cavity()) {
+    typename Mesh<D>::Element vertices = mesh.element(k);
+    const bool odd = sort_with_parity(vertices);
+    cavity_vertex_sets_.emplace_back(vertices, odd);
+  }
+  std::sort(cavity_vertex_sets_.begin(), cavity_vertex_sets_.end());
+}
+
+template <int D>
+bool P2CavityOperator<D>::recreates_cavity_element(const Candidate& candidate) const {
+  // Its edges are then the cavity element's (recreated or on the cavity's boundary): the nodes
+  // are the same when none of its curved edges moves.
+  for (int index : candidate.curved)
+    if (index >= 0) {
+      const CurvedEdge& edge = curved_[static_cast<std::size_t>(index)];
+      if (edge.target != edge.fallback) return false;
+    }
+  typename Mesh<D>::Element vertices = candidate.vertices;
+  const bool odd = sort_with_parity(vertices);
+  return std::binary_search(cavity_vertex_sets_.begin(), cavity_vertex_sets_.end(), std::pair{vertices, odd});
+}
+
+template <int D>
+void P2CavityOperator<D>::mark_optimized_edges(const Mesh<D>& mesh) {
+  for (const CurvedEdge& edge : curved_) {
+    // A new inner edge that the cavity did not recreate has its id from the commit.
+    const Index id = !edge.inner                  ? edge.id
+                     : edge.recreated != kNoIndex ? edge.recreated
+                                                  : mesh.find_edge(edge.a, edge.b);
+    optimized_edges_->set(id, edge.optimal && edge.scale == 1);
+  }
+}
+
+template <int D>
 void P2CavityOperator<D>::forget_certificates_of_corrected_edges() {
   for (std::size_t i = 0; i < candidates_.size(); ++i)
     for (int index : candidates_[i].curved)
@@ -209,7 +302,9 @@ bool P2CavityOperator<D>::correct(const Candidate& candidate) {
     for (int index : candidate.curved) {
       if (index < 0) continue;
       CurvedEdge& edge = curved_[static_cast<std::size_t>(index)];
-      if (edge.scale > 0 && (edge.inner || with_boundary)) corrected_edges_.push_back(&edge);
+      // An edge whose node does not move (kept at its optimum, or optimized back to its start) cannot help.
+      if (edge.scale > 0 && edge.target != edge.fallback && (edge.inner || with_boundary))
+        corrected_edges_.push_back(&edge);
     }
     if (corrected_edges_.empty()) continue;
     corrected_scales_.clear();

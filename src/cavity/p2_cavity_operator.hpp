@@ -12,6 +12,10 @@
 //     reinsertion recreates its edges) or the straight midpoint for a new edge, so a reinsertion
 //     can always fall back to the configuration that was already certified;
 //  4. commit.
+// Work whose result is known is not redone (a reinsertion recreates the cavity it removes): a
+// recreated inner edge marked as being at its optimum keeps its node, and, when the caller vouches
+// that every element of the mesh is above the floor, a new element identical to the cavity element
+// it recreates (same vertices, same nodes) keeps that element's certificate.
 #pragma once
 
 #include <span>
@@ -20,6 +24,7 @@
 #include "bezier/p2_element.hpp"
 #include "cavity/boundary_node_source.hpp"
 #include "cavity/cavity_operator.hpp"
+#include "cavity/optimized_edge_marks.hpp"
 #include "curve/edge_optimizer.hpp"
 #include "metric/metric_field.hpp"
 
@@ -29,17 +34,25 @@ struct P2CavityOptions {
   // Every element the operator creates or changes ends with min normalized Jacobian above this.
   double jacobian_floor = 0.01;
   EdgeOptimizerOptions optimizer{};
-  // Bisection steps of the correction factor (resolution 2^-steps).
-  int correction_steps = 10;
+  // Bisection steps of the correction factor (resolution 2^-steps). Finer does not pay: an edge
+  // pulled back loses its optimum mark and is optimized again at its next cavity, and 4 steps gave
+  // higher gains, fewer corrections and 22-26% fewer certifications than 10 (docs/benchmarks.md).
+  int correction_steps = 4;
+  // The caller vouches that every element of the mesh is certified above jacobian_floor (the
+  // reinsertion driver checks its input once): every accepted cavity keeps it so, and a new element
+  // identical to a cavity element is then not certified again.
+  bool every_element_above_floor = false;
 };
 
 struct P2CavityCounters {
   long long cavities = 0, accepted = 0;
   long long rejected_topology = 0, rejected_curving = 0;
   long long edges_optimized = 0, optimizer_iterations = 0;
+  long long edges_kept_optimal = 0;    // recreated at their optimum: not optimized again
   long long boundary_nodes_applied = 0;
   long long corrections = 0;           // elements that needed their edges pulled back
   long long elements_certified = 0;
+  long long certificates_kept = 0;     // new elements identical to a certified cavity element
   double seconds_plan = 0, seconds_optimize = 0, seconds_certify = 0, seconds_commit = 0;
 
   P2CavityCounters& operator+=(const P2CavityCounters& other);
@@ -49,9 +62,12 @@ template <int D>
 class P2CavityOperator {
  public:
   // `vertex_log_metrics[v]` is log M at front vertex v; `vertex_hints[v]` a back element near it
-  // (both grow with the mesh: the caller owns them). `boundary` may be null (no surface curving).
+  // (both grow with the mesh: the caller owns them). `optimized_edges` (shared by the operators
+  // working on one mesh, or null: every new inner edge is optimized) is read by prepare and updated
+  // by commit. `boundary` may be null (no surface curving).
   P2CavityOperator(const MetricField<D>& field, std::vector<SymMat<D>>& vertex_log_metrics,
-                   std::vector<Index>& vertex_hints, BoundaryNodeSource<D>* boundary, const P2CavityOptions& options);
+                   std::vector<Index>& vertex_hints, OptimizedEdgeMarks* optimized_edges,
+                   BoundaryNodeSource<D>* boundary, const P2CavityOptions& options);
 
   // Replaces `cavity` by the star of its boundary from `vertex`, curved and certified. The mesh
   // must be P2 with its topology; it is unchanged unless the result is kAccepted.
@@ -75,6 +91,8 @@ class P2CavityOperator {
     double scale = 1;  // node = fallback + scale · (target − fallback)
     bool inner;        // a new inner edge (else a boundary edge taking a proposal)
     Index id;          // index in the plan's inner edges, or the mesh edge id
+    Index recreated;   // inner edge: its mesh id when the cavity recreates it, else kNoIndex
+    bool optimal;      // target is the edge's converged optimum
     Vec<D> node() const { return fallback + scale * (target - fallback); }
   };
   // An element to certify: a new one (its vertices) or one outside the cavity (its mesh id), with
@@ -87,8 +105,18 @@ class P2CavityOperator {
   };
 
   void curve_inner_edges(const Mesh<D>& mesh);
+  // The cavity's edges at the vertex, (other vertex, id), sorted: the inner edges the star
+  // recreates (a reinsertion recreates them all) keep these ids.
+  void collect_edges_at_vertex(const Mesh<D>& mesh);
+  Index recreated_edge(Index other) const;  // kNoIndex for a new edge
   void take_boundary_proposals(const Mesh<D>& mesh);
   void collect_candidates(const Mesh<D>& mesh);
+  // The cavity's elements as (sorted vertices, parity of the sort), sorted: to find the one a new
+  // element recreates.
+  void collect_cavity_vertex_sets(const Mesh<D>& mesh);
+  // A new element with the vertices, orientation and nodes of a cavity element.
+  bool recreates_cavity_element(const Candidate& candidate) const;
+  void mark_optimized_edges(const Mesh<D>& mesh);
   void add_candidate(const Mesh<D>& mesh, const typename Mesh<D>::Element& vertices, Index mesh_element);
   P2Element<D> element_of(const Candidate& candidate) const;
   bool certified(const Candidate& candidate);
@@ -100,6 +128,7 @@ class P2CavityOperator {
   const MetricField<D>& field_;
   std::vector<SymMat<D>>& vertex_log_metrics_;
   std::vector<Index>& vertex_hints_;
+  OptimizedEdgeMarks* optimized_edges_;
   BoundaryNodeSource<D>* boundary_;
   P2CavityOptions options_;
   CavityOperator<D> p1_;
@@ -111,6 +140,8 @@ class P2CavityOperator {
   std::vector<double> corrected_scales_;
   std::vector<bool> certified_already_;  // per candidate: certified, and none of its nodes moved since
   std::vector<Index> shell_;
+  std::vector<std::pair<Index, Index>> edges_at_vertex_;
+  std::vector<std::pair<typename Mesh<D>::Element, bool>> cavity_vertex_sets_;
   std::vector<Vec<D>> inner_nodes_;
   std::vector<std::pair<Index, Vec<D>>> boundary_nodes_;
 };

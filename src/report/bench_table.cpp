@@ -33,6 +33,9 @@ BenchFigures bench_figures(const CurvingReport& report) {
   figures.corrections = counters.corrections;
   figures.edges_optimized = counters.edges_optimized;
   figures.optimizer_iterations = counters.optimizer_iterations;
+  figures.edges_kept_optimal = counters.edges_kept_optimal;
+  figures.elements_certified = counters.elements_certified;
+  figures.certificates_kept = counters.certificates_kept;
   return figures;
 }
 
@@ -148,7 +151,8 @@ void write_bench_json(std::ostream& out, const MachineInfo& machine, const std::
     json.member("average_gain", f.average_gain).member("max_gain", f.max_gain);
     json.member("cavities", f.cavities).member("accepted", f.accepted).member("rejections", f.rejections);
     json.member("corrections", f.corrections).member("edges_optimized", f.edges_optimized);
-    json.member("optimizer_iterations", f.optimizer_iterations);
+    json.member("optimizer_iterations", f.optimizer_iterations).member("edges_kept_optimal", f.edges_kept_optimal);
+    json.member("elements_certified", f.elements_certified).member("certificates_kept", f.certificates_kept);
     json.member("peak_rss_bytes", row.peak_rss_bytes);
     json.member("output_hash", std::to_string(f.output_hash));
     if (std::string check = thread_check(row, rows); !check.empty()) json.member("same_output_as_one_thread", check == "yes");

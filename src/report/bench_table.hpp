@@ -25,6 +25,7 @@ struct BenchFigures {
   double scaled_jacobian_min = 0;
   double average_gain = 0, max_gain = 0;
   long long cavities = 0, accepted = 0, rejections = 0, corrections = 0, edges_optimized = 0, optimizer_iterations = 0;
+  long long edges_kept_optimal = 0, elements_certified = 0, certificates_kept = 0;
   std::uint64_t output_hash = 0;  // of the curved mesh's vertices, elements and nodes
 };
 

@@ -94,8 +94,9 @@ void write_curving_report_json(std::ostream& out, const CurvingReport& report) {
   json.member("tried", c.cavities).member("accepted", c.accepted);
   json.member("rejected_topology", c.rejected_topology).member("rejected_curving", c.rejected_curving);
   json.member("edges_optimized", c.edges_optimized).member("optimizer_iterations", c.optimizer_iterations);
+  json.member("edges_kept_optimal", c.edges_kept_optimal);
   json.member("boundary_nodes_applied", c.boundary_nodes_applied).member("corrections", c.corrections);
-  json.member("elements_certified", c.elements_certified);
+  json.member("elements_certified", c.elements_certified).member("certificates_kept", c.certificates_kept);
   json.end_object();
   json.key("seconds_per_phase").begin_object();
   json.member("plan", c.seconds_plan).member("optimize", c.seconds_optimize);
@@ -122,6 +123,10 @@ void write_curving_report_table(std::ostream& out, const CurvingReport& report) 
   row("gain avg / max", "%.2f%% / %.1f%%", 100 * report.average_gain, 100 * report.max_gain);
   row("cavities accepted / tried", "%lld / %lld", report.counters.accepted, report.counters.cavities);
   row("rejected (topology / curving)", "%lld / %lld", report.counters.rejected_topology, report.counters.rejected_curving);
+  row("edges optimized / kept optimal", "%lld / %lld", report.counters.edges_optimized,
+      report.counters.edges_kept_optimal);
+  row("elements certified / kept", "%lld / %lld", report.counters.elements_certified,
+      report.counters.certificates_kept);
   row("corrections", "%lld", report.counters.corrections);
   row("boundary nodes applied / left", "%lld / %d", report.counters.boundary_nodes_applied, report.boundary_proposals_left);
 }

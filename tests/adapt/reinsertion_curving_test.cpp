@@ -2,11 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include "bezier/jacobian_bounds.hpp"
 #include "bezier/mesh_quality.hpp"
+#include "bezier/p2_element.hpp"
 #include "cases/structured.hpp"
 #include "curve/edge_optimizer.hpp"
 #include "mesh/consistency.hpp"
 #include "metric/analytic_metric.hpp"
+#include "report/curving_report.hpp"
 
 namespace hocav {
 namespace {
@@ -79,6 +82,92 @@ TEST(ReinsertionCurving, OutputDoesNotDependOnTheThreadCount) {
     ASSERT_EQ(one.mesh.edge_vertices(e), three.mesh.edge_vertices(e));
     ASSERT_EQ(one.mesh.edge_node(e), three.mesh.edge_node(e)) << "edge " << e;  // bit for bit
   }
+}
+
+// Edges with a vertex that is reinserted: the edges the passes optimize.
+template <int D>
+long long reinserted_edge_count(const Mesh<D>& mesh) {
+  std::vector<bool> reinserted(static_cast<std::size_t>(mesh.vertex_count()), false);
+  for (Index v : volume_vertices(mesh)) reinserted[v] = true;
+  long long count = 0;
+  for (Index e = 0; e < mesh.edge_count(); ++e) {
+    auto [a, b] = mesh.edge_vertices(e);
+    if (a != kNoIndex && (reinserted[a] || reinserted[b])) ++count;
+  }
+  return count;
+}
+
+TEST(ReinsertionCurving, WorkNotRedoneOptimizesEachEdgeOnceAndChangesLittle) {
+  ShearSquare reusing, redoing;
+  MetricField<2> field(reusing.mesh, analytic_metric_at_vertices(reusing.spec, reusing.mesh));
+  ReinsertionOptions options;
+  const auto reused = curve_by_reinsertion<2>(reusing.mesh, field, nullptr, options).counters;
+  options.reuse_results = false;
+  const auto redone = curve_by_reinsertion<2>(redoing.mesh, field, nullptr, options).counters;
+
+  // Every reinsertion recreates the same inner edges either way: each is optimized or kept.
+  EXPECT_EQ(redone.edges_kept_optimal, 0);
+  EXPECT_EQ(redone.certificates_kept, 0);
+  EXPECT_EQ(reused.edges_optimized + reused.edges_kept_optimal, redone.edges_optimized);
+  // Each edge is recreated once from each reinserted end; it is optimized about once (again only
+  // after a correction pulled it back or the optimizer did not converge).
+  const long long edges = reinserted_edge_count(reusing.mesh);
+  EXPECT_GT(redone.edges_optimized, 3 * edges / 2);
+  EXPECT_LE(reused.edges_optimized, edges + edges / 10);
+  // Most new elements are unchanged copies of the elements they replace.
+  EXPECT_GT(reused.certificates_kept, reused.elements_certified - reusing.mesh.element_count());
+  EXPECT_LT(reused.elements_certified, redone.elements_certified);
+
+  // Validity as before, and the same mesh up to the few edges whose second optimization, from the
+  // other end, would have found another optimum (mostly edges the first one left straight).
+  const double floor = options.cavity.jacobian_floor;
+  EXPECT_GT(summarize_jacobian_quality(mesh_jacobian_quality(reusing.mesh)).min_normalized_jacobian.min, floor);
+  ASSERT_EQ(reusing.mesh.edge_count(), redoing.mesh.edge_count());
+  for (Index k = 0; k < reusing.mesh.element_count(); ++k) ASSERT_EQ(reusing.mesh.element(k), redoing.mesh.element(k));
+  int moved = 0;
+  for (Index e = 0; e < reusing.mesh.edge_count(); ++e) {
+    auto [a, b] = reusing.mesh.edge_vertices(e);
+    const double size = norm(reusing.mesh.vertex(b) - reusing.mesh.vertex(a));
+    if (norm(reusing.mesh.edge_node(e) - redoing.mesh.edge_node(e)) > 1e-9 * size) ++moved;
+  }
+  EXPECT_LE(moved, reusing.mesh.edge_count() / 25);
+  auto average = [](const std::vector<double>& values) {
+    double sum = 0;
+    for (double value : values) sum += value;
+    return sum / static_cast<double>(values.size());
+  };
+  const double reused_gain = average(volume_edge_gains(reusing.mesh, field));
+  const double redone_gain = average(volume_edge_gains(redoing.mesh, field));
+  EXPECT_NEAR(reused_gain, redone_gain, 0.05 * redone_gain);
+}
+
+TEST(ReinsertionCurving, CertificatesAreKeptOnlyWhenEveryInputElementIsAboveTheFloor) {
+  ShearSquare square;
+  MetricField<2> field(square.mesh, analytic_metric_at_vertices(square.spec, square.mesh));
+  ReinsertionOptions options;
+  curve_by_reinsertion<2>(square.mesh, field, nullptr, options);  // a valid P2 mesh
+
+  // Curving it again: the input is certified once, then unchanged elements keep their certificates.
+  Mesh<2> valid = square.mesh;
+  const auto again = curve_by_reinsertion<2>(valid, field, nullptr, options).counters;
+  EXPECT_GE(again.elements_certified, valid.element_count());
+  EXPECT_GT(again.certificates_kept, 0);
+
+  // One element pushed below the floor (an edge node moved across the element): no certificate is
+  // taken on trust.
+  Mesh<2> invalid = square.mesh;
+  const Index k = invalid.element_count() / 2;
+  const Index e = invalid.element_edge(k, 0);
+  auto [a, b] = invalid.edge_vertices(e);
+  const Vec2 midpoint = 0.5 * (invalid.vertex(a) + invalid.vertex(b));
+  Vec2 opposite{};
+  for (Index v : invalid.element(k))
+    if (v != a && v != b) opposite = invalid.vertex(v);
+  invalid.edge_node(e) = midpoint + 1.5 * (opposite - midpoint);
+  ASSERT_FALSE(certify_min_normalized_jacobian_above(gather_p2_element(invalid, k), options.cavity.jacobian_floor));
+  const auto from_invalid = curve_by_reinsertion<2>(invalid, field, nullptr, options).counters;
+  EXPECT_EQ(from_invalid.certificates_kept, 0);
+  EXPECT_GT(from_invalid.edges_kept_optimal, 0);
 }
 
 }  // namespace

@@ -24,6 +24,12 @@ class CurveCli : public Cli {
     // lies on no volume vertex's ball: a few, never many.
     EXPECT_LE(report_value("d[\"boundary_proposals_left\"]"),
               0.01 * report_value("d[\"cavities\"][\"boundary_nodes_applied\"]"));
+    // Work not redone: an edge recreated at its optimum keeps it, so there is about one optimization
+    // per edge (points after − points before), and unchanged recreated elements keep their certificates.
+    EXPECT_GT(report_value("d[\"cavities\"][\"edges_kept_optimal\"]"), 0);
+    EXPECT_LE(report_value("d[\"cavities\"][\"edges_optimized\"]"),
+              1.1 * report_value("d[\"points_after\"] - d[\"points_before\"]"));
+    EXPECT_GT(report_value("d[\"cavities\"][\"certificates_kept\"]"), 0);
     // The output reads back as a consistent P2 mesh.
     EXPECT_EQ(stats_json("curved.meshb", "d[\"consistency\"][\"consistent\"], d[\"order\"]"), "(True, 2)");
   }
