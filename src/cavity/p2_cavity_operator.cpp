@@ -151,7 +151,10 @@ void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh) {
       curved_.push_back({a, b, starts[i], starts[i], 1, true, static_cast<Index>(i), recreated, true});
       continue;
     }
-    if (a != end_a_vertex) end_a = edge_endpoint(mesh.vertex(a), vertex_log_metrics_[a]), end_a_vertex = a;
+    if (a != end_a_vertex) {
+      end_a = edge_endpoint(mesh.vertex(a), vertex_log_metrics_[a]);
+      end_a_vertex = a;
+    }
     auto result = optimize_edge_length(field_, end_a, edge_endpoint(mesh.vertex(b), vertex_log_metrics_[b]), starts[i],
                                        vertex_hints_[a], options_.optimizer);
     ++counters_.edges_optimized;
