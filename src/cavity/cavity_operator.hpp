@@ -52,6 +52,10 @@ class CavityOperator {
   // existed before (reinsertion) or the straight midpoint: the start of its curving.
   std::span<const std::array<Index, 2>> new_inner_edges() const { return new_inner_edges_; }
   std::span<const Point> new_inner_edge_start_nodes() const { return start_nodes_; }
+  // Per new inner edge: the id of the edge it recreates (a reinsertion), or kNoIndex for a new one.
+  std::span<const Index> new_inner_edge_recreated_ids() const { return recreated_ids_; }
+  // After commit: the mesh id of each new inner edge.
+  std::span<const Index> committed_inner_edge_ids() const { return inner_edge_ids_; }
   // Edges on the cavity's boundary, kept by the commit (P2: their nodes may be replaced), and the
   // id of one of them by its vertices (kNoIndex for an edge not on the cavity's boundary).
   std::span<const Index> boundary_edges() const { return boundary_edge_ids_; }

@@ -131,7 +131,7 @@ void P2CavityOperator<D>::commit(Mesh<D>& mesh) {
     }
   }
   p1_.commit(mesh, inner_nodes_, boundary_nodes_);
-  if (optimized_edges_) mark_optimized_edges(mesh);
+  if (optimized_edges_) mark_optimized_edges();
   counters_.seconds_commit += seconds_since(start);
   ++counters_.accepted;
 }
@@ -140,15 +140,14 @@ template <int D>
 void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh) {
   const auto edges = p1_.new_inner_edges();
   const auto starts = p1_.new_inner_edge_start_nodes();
-  if (optimized_edges_) collect_edges_at_vertex(mesh);
+  const auto recreated_ids = p1_.new_inner_edge_recreated_ids();
   EdgeEndpoint<D> end_a;  // the new edges share their first vertex (the cavity's): its metric once
   Index end_a_vertex = kNoIndex;
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const auto [a, b] = edges[i];
-    const Index recreated = optimized_edges_ ? recreated_edge(b) : kNoIndex;
-    if (recreated != kNoIndex && optimized_edges_->marked(recreated)) {
+    if (optimized_edges_ && recreated_ids[i] != kNoIndex && optimized_edges_->marked(recreated_ids[i])) {
       ++counters_.edges_kept_optimal;
-      curved_.push_back({a, b, starts[i], starts[i], 1, true, static_cast<Index>(i), recreated, true});
+      curved_.push_back({a, b, starts[i], starts[i], 1, true, static_cast<Index>(i), true});
       continue;
     }
     if (a != end_a_vertex) {
@@ -163,26 +162,8 @@ void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh) {
     // The optimizer's unconverged exits leave no optimum to keep: the iteration limit, and a
     // non-finite Newton model (it returns before measuring a length).
     const bool converged = result.iterations < options_.optimizer.max_iterations && result.length > 0;
-    curved_.push_back({a, b, starts[i], result.node, 1, true, static_cast<Index>(i), recreated, converged});
+    curved_.push_back({a, b, starts[i], result.node, 1, true, static_cast<Index>(i), converged});
   }
-}
-
-template <int D>
-void P2CavityOperator<D>::collect_edges_at_vertex(const Mesh<D>& mesh) {
-  edges_at_vertex_.clear();
-  const Index vertex = p1_.vertex();
-  for (Index k : p1_.cavity())
-    for (int e = 0; e < Simplex<D>::kEdges; ++e) {
-      const Index a = mesh.element(k)[edge_vertices<D>(e)[0]], b = mesh.element(k)[edge_vertices<D>(e)[1]];
-      if (a == vertex || b == vertex) edges_at_vertex_.emplace_back(a == vertex ? b : a, mesh.element_edge(k, e));
-    }
-  std::sort(edges_at_vertex_.begin(), edges_at_vertex_.end());
-}
-
-template <int D>
-Index P2CavityOperator<D>::recreated_edge(Index other) const {
-  auto found = std::lower_bound(edges_at_vertex_.begin(), edges_at_vertex_.end(), std::pair{other, Index{0}});
-  return found != edges_at_vertex_.end() && found->first == other ? found->second : kNoIndex;
 }
 
 template <int D>
@@ -193,7 +174,7 @@ void P2CavityOperator<D>::take_boundary_proposals(const Mesh<D>& mesh) {
     auto proposal = boundary_->proposal(a, b);
     if (!proposal || *proposal == mesh.edge_node(edge)) continue;
     // Pulling back moves the node from where it is now toward the proposal.
-    curved_.push_back({a, b, mesh.edge_node(edge), *proposal, 1, false, edge, kNoIndex, false});
+    curved_.push_back({a, b, mesh.edge_node(edge), *proposal, 1, false, edge, false});
   }
 }
 
@@ -264,14 +245,11 @@ bool P2CavityOperator<D>::recreates_cavity_element(const Candidate& candidate) c
 }
 
 template <int D>
-void P2CavityOperator<D>::mark_optimized_edges(const Mesh<D>& mesh) {
-  for (const CurvedEdge& edge : curved_) {
-    // A new inner edge that the cavity did not recreate has its id from the commit.
-    const Index id = !edge.inner                  ? edge.id
-                     : edge.recreated != kNoIndex ? edge.recreated
-                                                  : mesh.find_edge(edge.a, edge.b);
-    optimized_edges_->set(id, edge.optimal && edge.scale == 1);
-  }
+void P2CavityOperator<D>::mark_optimized_edges() {
+  const auto inner_ids = p1_.committed_inner_edge_ids();
+  for (const CurvedEdge& edge : curved_)
+    optimized_edges_->set(edge.inner ? inner_ids[static_cast<std::size_t>(edge.id)] : edge.id,
+                          edge.optimal && edge.scale == 1);
 }
 
 template <int D>

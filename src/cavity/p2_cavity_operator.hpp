@@ -91,7 +91,6 @@ class P2CavityOperator {
     double scale = 1;  // node = fallback + scale · (target − fallback)
     bool inner;        // a new inner edge (else a boundary edge taking a proposal)
     Index id;          // index in the plan's inner edges, or the mesh edge id
-    Index recreated;   // inner edge: its mesh id when the cavity recreates it, else kNoIndex
     bool optimal;      // target is the edge's converged optimum
     Vec<D> node() const { return fallback + scale * (target - fallback); }
   };
@@ -105,10 +104,6 @@ class P2CavityOperator {
   };
 
   void curve_inner_edges(const Mesh<D>& mesh);
-  // The cavity's edges at the vertex, (other vertex, id), sorted: the inner edges the star
-  // recreates (a reinsertion recreates them all) keep these ids.
-  void collect_edges_at_vertex(const Mesh<D>& mesh);
-  Index recreated_edge(Index other) const;  // kNoIndex for a new edge
   void take_boundary_proposals(const Mesh<D>& mesh);
   void collect_candidates(const Mesh<D>& mesh);
   // The cavity's elements as (sorted vertices, parity of the sort), sorted: to find the one a new
@@ -116,7 +111,8 @@ class P2CavityOperator {
   void collect_cavity_vertex_sets(const Mesh<D>& mesh);
   // A new element with the vertices, orientation and nodes of a cavity element.
   bool recreates_cavity_element(const Candidate& candidate) const;
-  void mark_optimized_edges(const Mesh<D>& mesh);
+  // In commit: each edge whose node the cavity wrote is marked optimal or not.
+  void mark_optimized_edges();
   void add_candidate(const Mesh<D>& mesh, const typename Mesh<D>::Element& vertices, Index mesh_element);
   P2Element<D> element_of(const Candidate& candidate) const;
   bool certified(const Candidate& candidate);
@@ -140,7 +136,6 @@ class P2CavityOperator {
   std::vector<double> corrected_scales_;
   std::vector<bool> certified_already_;  // per candidate: certified, and none of its nodes moved since
   std::vector<Index> shell_;
-  std::vector<std::pair<Index, Index>> edges_at_vertex_;
   std::vector<std::pair<typename Mesh<D>::Element, bool>> cavity_vertex_sets_;
   std::vector<Vec<D>> inner_nodes_;
   std::vector<std::pair<Index, Vec<D>>> boundary_nodes_;
