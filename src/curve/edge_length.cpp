@@ -113,6 +113,46 @@ double EdgeLengthFunction<D>::length(const Vec<D>& node, const SymMat<D>& log_no
   return evaluate(node, log_node, {}, Order::kValue).length;
 }
 
+template <int D>
+double EdgeLengthFunction<D>::curvature(const Vec<D>& node, const SymMat<D>& log_node, const Vec<D>& d,
+                                       const SymMat<D>& log_node_derivative) const {
+  // Along the line, g(s) = u(s)ᵀ E(s) u(s) with u' = du·d and E' = Dexp[φ_M δ]:
+  //   g' = 2 du dᵀE u + uᵀ Dexp[φ_M δ] u,  g'' = 2 du² dᵀE d + 4 du dᵀ Dexp[φ_M δ] u + uᵀ D²exp[φ_M δ, φ_M δ] u.
+  const bool same_point = has_last_ && log_node == last_log_node_;
+  double result = 0;
+  for (std::size_t q = 0; q < rule_.nodes.size(); ++q) {
+    const double t = rule_.nodes[q], w = rule_.weights[q];
+    const EdgeBasis phi = edge_basis(t);
+    const double du = 4 * (1 - 2 * t);
+    const Vec<D> u = (4 * t - 3) * a_.position + du * node + (4 * t - 1) * b_.position;
+    double g, dg, d2g;
+    if (phi.middle == 0) {
+      const SymMat<D>& e = t == 0 ? a_.metric : b_.metric;
+      const Vec<D> eu = e * u;
+      g = dot(u, eu);
+      dg = 2 * du * dot(d, eu);
+      d2g = 2 * du * du * dot(d, e * d);
+    } else {
+      ExpSpectrum<D> scratch;
+      const ExpFrechet<D> exp_t(spectrum_at(q, log_node, same_point, scratch));
+      const SymMat<D> direction = phi.middle * log_node_derivative;
+      const auto along = exp_t.squared_length_derivatives(direction, u);
+      g = exp_t.squared_length(u);
+      dg = along.first;
+      d2g = along.second;
+      if (du != 0) {
+        dg += 2 * du * dot(d, exp_t.value() * u);
+        d2g += 2 * du * du * dot(d, exp_t.value() * d) + 4 * du * dot(d, exp_t.derivative(direction) * u);
+      }
+    }
+    const double root = std::sqrt(g);
+    if (root == 0) continue;
+    result += w * (d2g / (2 * root) - dg * dg / (4 * g * root));
+  }
+  remember(log_node);
+  return result;
+}
+
 template EdgeEndpoint<2> edge_endpoint(const Vec<2>&, const SymMat<2>&);
 template EdgeEndpoint<3> edge_endpoint(const Vec<3>&, const SymMat<3>&);
 template class EdgeLengthFunction<2>;

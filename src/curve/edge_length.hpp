@@ -57,6 +57,10 @@ class EdgeLengthFunction {
   EdgeLengthValue<D> evaluate(const Vec<D>& node, const SymMat<D>& log_node,
                               const std::array<SymMat<D>, D>& log_node_gradient, Order order) const;
   double length(const Vec<D>& node, const SymMat<D>& log_node) const;
+  // dᵀ ∂²ℓ/∂X² d, the curvature of ℓ along the line X + s·d, where `log_node_derivative` = Σ_i d_i ∂L^L/∂X_i:
+  // one direction of the Hessian for a fraction of its cost (a step along a known direction needs no more).
+  double curvature(const Vec<D>& node, const SymMat<D>& log_node, const Vec<D>& d,
+                   const SymMat<D>& log_node_derivative) const;
 
   const Vec<D>& a() const { return a_.position; }
   const Vec<D>& b() const { return b_.position; }

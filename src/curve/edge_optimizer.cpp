@@ -4,19 +4,36 @@
 #include <array>
 #include <cmath>
 
-#include "curve/kink_minimum.hpp"
+#include "curve/kink_descent.hpp"
 
 namespace hocav {
 namespace {
 
-// A start on a kink is declared optimal when every one-sided slope of ℓ in the bisector plane exceeds this
-// fraction of ℓ/|AB|: a thousand times the error of the slopes (round-off, and the ~1e-10 off-face tolerance).
+// A node on a kink descends when some one-sided slope of ℓ in the bisector plane falls below minus this
+// fraction of ℓ/|AB|: a thousand times the error of the slopes (round-off, and the ~1e-10 off-face
+// tolerance). A slope above it gains at most 5e-9 ℓ over the longest step (|AB|/2).
 constexpr double kKinkSlopeMargin = 1e-8;
 
 template <int D>
 double high_precision_length(const MetricField<D>& field, const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b,
                              const Vec<D>& node, Index hint) {
   return EdgeLengthFunction<D>(a, b, high_precision_rule()).length(node, field.log_metric_at(node, hint));
+}
+
+// A rejected trial is retried at its element's face only if that is this far along the step: from on a face
+// (a kink iterate), the step out of it is left to halving.
+constexpr double kLeastFaceFraction = 1e-3;
+
+// The fraction of the segment from x (in the frame's element) to y that lies in the element: 1 when y is
+// in it too.
+template <int D>
+double fraction_inside(const typename MetricField<D>::ElementFrame& frame, const Vec<D>& x, const Vec<D>& y) {
+  const Barycentrics<D> at_x = barycentric_coordinates<D>(frame.barycentric_gradients, frame.origin, x);
+  const Barycentrics<D> at_y = barycentric_coordinates<D>(frame.barycentric_gradients, frame.origin, y);
+  double fraction = 1;
+  for (int i = 0; i <= D; ++i)
+    if (at_y[i] < 0 && at_x[i] > at_y[i]) fraction = std::min(fraction, std::max(at_x[i], 0.0) / (at_x[i] - at_y[i]));
+  return fraction;
 }
 
 // Solves H p = −g for a symmetric positive definite H by Cholesky; false when H is not.
@@ -48,6 +65,35 @@ bool newton_direction(const SymMat<D>& h, const Vec<D>& g, Vec<D>& p) {
   return true;
 }
 
+// The Newton step of ℓ in the bisector plane (normal to the unit `direction`): gradient and Hessian
+// projected, the Hessian made regular along the edge so the step has no component there, and shifted
+// until positive definite (between Newton and gradient descent). `shift` is 0 for a pure Newton step;
+// false when no shift makes it definite (non-finite values).
+template <int D>
+bool newton_step_in_plane(const EdgeLengthValue<D>& value, const Vec<D>& direction, Vec<D>& step, double& shift) {
+  auto onto_plane = [&](const Vec<D>& v) { return v - dot(v, direction) * direction; };
+  const Vec<D> gradient = onto_plane(value.gradient);
+  SymMat<D> projected;
+  for (int i = 0; i < D; ++i) {
+    Vec<D> unit{};
+    unit[i] = 1;
+    Vec<D> column = onto_plane(value.hessian * onto_plane(unit));
+    for (int j = 0; j <= i; ++j) projected(i, j) = column[j];
+  }
+  const double scale = std::max(1e-300, std::abs(trace(projected)));
+  for (int i = 0; i < D; ++i)
+    for (int j = 0; j <= i; ++j) projected(i, j) += scale * direction[i] * direction[j];
+  SymMat<D> h = projected;
+  shift = 0;
+  while (!newton_direction(h, gradient, step)) {
+    shift = shift == 0 ? 1e-8 * scale : 10 * shift;
+    h = projected + shift * SymMat<D>::identity();
+    if (!std::isfinite(shift)) return false;
+  }
+  step = onto_plane(step);
+  return true;
+}
+
 }  // namespace
 
 template <int D>
@@ -76,54 +122,100 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
     return frame;
   };
 
-  auto sample = field.sample(first, hint);
-  result.node = first;
-  result.back_element = sample.where.element;
-  auto value =
-      function.evaluate(first, sample.log_metric, frame_of(sample.where.element).log_metric_gradient, Order::kHessian);
+  // ℓ at an accepted node with what its next step needs. On a kink, the Newton model of one element misses
+  // the other elements' slopes: the gradient parts give them all (kink_descent.hpp). When none descends
+  // beyond round-off (a strict minimum, or a stationary point such as the straight edge in a uniform
+  // metric, where a descent could only be of second order) the node is taken as optimal and no Hessian is needed; else the next step follows the steepest descent,
+  // in the model of the element it enters.
+  // On a kink only the curvature along the step is needed, not the Hessian.
+  EdgeLengthValue<D> value;
+  KinkDescent<D> kink;
+  SymMat<D> node_log_metric;
+  bool optimal = false;
+  auto arrive = [&](const Vec<D>& node, const typename MetricField<D>::Sample& at) {
+    result.node = node;
+    result.back_element = at.where.element;
+    node_log_metric = at.log_metric;
+    kink = {};
+    if (on_back_mesh_face(at.where)) {
+      // The kink analysis needs only the gradient's parts, which no element's ∂L^L/∂X enters.
+      value = function.evaluate(node, at.log_metric, {}, Order::kGradient);
+      kink = steepest_descent_on_kink(field, at.where, direction, value);
+      optimal = kink.analysed && kink.slope >= -kKinkSlopeMargin * value.length / edge_size;
+      if (optimal) return;
+      if (kink.analysed) {
+        result.back_element = kink.element;  // X lies on its face too
+        return;
+      }
+    }
+    value = function.evaluate(node, at.log_metric, frame_of(result.back_element).log_metric_gradient,
+                              Order::kHessian);
+  };
+  // The slope and curvature of ℓ along d in the model of the node's element.
+  auto log_metric_derivative = [&](const Vec<D>& d) {
+    const auto& gradient = frame_of(result.back_element).log_metric_gradient;
+    SymMat<D> derivative;
+    for (int i = 0; i < D; ++i) derivative += d[i] * gradient[i];
+    return derivative;
+  };
+  auto slope_along = [&](const Vec<D>& d) {
+    return kink.analysed ? dot(value.node_gradient, d) + frobenius_dot(value.log_node_gradient, log_metric_derivative(d))
+                         : dot(value.gradient, d);
+  };
+  auto curvature_along = [&](const Vec<D>& d) {
+    return kink.analysed ? function.curvature(result.node, node_log_metric, d, log_metric_derivative(d))
+                         : dot(d, value.hessian * d);
+  };
+  arrive(first, field.sample(first, hint));
   ++result.evaluations;
-  // On a kink, the Newton model of the element found misses the other elements' slopes; when all of them
-  // ascend, the start is optimal (kink_minimum.hpp) and no trial is needed.
-  const bool optimal_start =
-      on_back_mesh_face(sample.where) &&
-      is_strict_minimum_on_kink(field, sample.where, direction, value, kKinkSlopeMargin * value.length / edge_size);
   const double initial_length = value.length;
   const bool starts_straight = norm(first - midpoint) == 0;
   double trust = 0.25 * edge_size;
 
-  for (; !optimal_start && result.iterations < options.max_iterations; ++result.iterations) {
-    // Newton in the plane: project gradient and Hessian, and make the Hessian regular along the
-    // edge so the step has no component there.
-    const Vec<D> gradient = onto_plane(value.gradient);
-    SymMat<D> projected;
-    for (int i = 0; i < D; ++i) {
-      Vec<D> unit{};
-      unit[i] = 1;
-      Vec<D> column = onto_plane(value.hessian * onto_plane(unit));
-      for (int j = 0; j <= i; ++j) projected(i, j) = column[j];
-    }
-    double scale = std::max(1e-300, std::abs(trace(projected)));
-    for (int i = 0; i < D; ++i)
-      for (int j = 0; j <= i; ++j) projected(i, j) += scale * direction[i] * direction[j];
-    // Shift the Hessian until it is positive definite: between Newton and gradient descent.
+  for (; !optimal && result.iterations < options.max_iterations; ++result.iterations) {
     Vec<D> step;
-    SymMat<D> h = projected;
-    double shift = 0;
-    while (!newton_direction(h, gradient, step)) {
-      shift = shift == 0 ? 1e-8 * scale : 10 * shift;
-      h = projected + shift * SymMat<D>::identity();
-      if (!std::isfinite(shift)) return result;
+    double predicted;    // the decrease the step's model predicts
+    bool convex_model;   // and whether that model is convex
+    if (kink.analysed) {
+      // Along d* the model is ℓ + s*t + κt²/2, κ of the element d* enters.
+      const double curvature = curvature_along(kink.direction);
+      convex_model = curvature > 0;
+      step = (convex_model ? -kink.slope / curvature : trust) * kink.direction;
+      predicted = convex_model ? 0.5 * kink.slope * kink.slope / curvature : -kink.slope * trust;
+    } else {
+      double shift;
+      if (!newton_step_in_plane(value, direction, step, shift)) return result;
+      predicted = -0.5 * dot(onto_plane(value.gradient), step);
+      convex_model = shift == 0;
     }
-    step = onto_plane(step);
+    // On the displacement bound, a step out of it would be clipped back onto the bound in another direction,
+    // which need not descend: it is cut to the bound's tangent, as far as the model along that tangent goes;
+    // where the tangent does not descend the node is optimal on the bound.
+    const Vec<D> outward = result.node - midpoint;
+    const double radius = norm(outward);
+    if (radius >= (1 - 1e-9) * max_displacement && dot(step, outward) > 0) {
+      step = step - (dot(step, outward) / (radius * radius)) * outward;
+      const double tangent_size = norm(step);
+      if (!(tangent_size > 0)) break;
+      const Vec<D> tangent = (1 / tangent_size) * step;
+      const double slope = slope_along(tangent), curvature = curvature_along(tangent);
+      if (!(slope < 0)) break;
+      convex_model = curvature > 0;
+      const double length = convex_model ? std::min(tangent_size, -slope / curvature) : tangent_size;
+      step = length * tangent;
+      predicted = -(slope * length + 0.5 * curvature * length * length);
+    }
     double step_size = norm(step);
-    // Converged: a step this small, or one whose predicted decrease −gᵀp/2 is this small, only meets
+    const bool along_kink = kink.analysed;
+    // Converged: a step this small, or one whose predicted decrease is this small, only meets
     // round-off, where every halving of the line search would fail.
-    if (step_size < options.step_tolerance * edge_size ||
-        -0.5 * dot(gradient, step) < options.decrease_tolerance * value.length)
+    if (step_size < options.step_tolerance * edge_size || predicted < options.decrease_tolerance * value.length)
       break;
-    // Futile (options.futile_model_factor): the edge would stay straight.
-    if (options.futile_model_factor > 0 && starts_straight && result.iterations > 0 && shift == 0 &&
-        (initial_length - value.length) + options.futile_model_factor * (-0.5 * dot(gradient, step)) <
+    // Futile (options.futile_model_factor): the edge would stay straight. Newton's model at the start, inside
+    // one element, may miss other elements' descent across a kink: only after an accepted step then.
+    if (options.futile_model_factor > 0 && starts_straight && (result.iterations > 0 || kink.analysed) &&
+        convex_model &&
+        (initial_length - value.length) + options.futile_model_factor * predicted <
             options.min_relative_decrease * initial_length)
       break;
     if (step_size > trust) step = (trust / step_size) * step, step_size = trust;
@@ -133,6 +225,9 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
     // than 4-fold when s is halved; a small one (< 1e-3 ℓ, where that model holds) that shrinks less
     // grows to first order: the direction ascends from the node, which sits on a kink (a back-mesh face
     // or edge), and further halvings would fail too. The node is then taken as the optimum.
+    // A rejected first trial outside the node's element is followed by the point where the step leaves it,
+    // exactly on the face: ℓ has a kink there, which the element's model did not see, and from a face the
+    // kink analysis can follow a valley along it (instead of zigzagging across it).
     bool accepted = false;
     double rejected_increase = 0;
     for (int halving = 0; halving < 12 && !accepted; ++halving, step = 0.5 * step, step_size *= 0.5) {
@@ -145,22 +240,29 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
       double trial_length = function.length(trial, trial_sample.log_metric);
       if (trial_length < value.length) {
         accepted = true;
-        result.node = trial;
-        result.back_element = trial_sample.where.element;
-        value = function.evaluate(trial, trial_sample.log_metric,
-                                  frame_of(trial_sample.where.element).log_metric_gradient, Order::kHessian);
+        arrive(trial, trial_sample);
       } else {
         const double increase = trial_length - value.length;
         if (rejected_increase > 0 && rejected_increase < 1e-3 * value.length && increase > 0.25 * rejected_increase)
           break;
         rejected_increase = increase;
+        if (halving == 0) {
+          const double leaving = fraction_inside(frame_of(result.back_element), result.node, trial);
+          if (leaving > kLeastFaceFraction && leaving < 1) {
+            step = (2 * leaving) * (trial - result.node);  // halved by the loop
+            step_size = norm(step);
+            rejected_increase = 0;
+          }
+        }
       }
     }
     if (!accepted || step_size < options.step_tolerance * edge_size) {
       if (accepted) ++result.iterations;
       break;
     }
-    trust = std::min(0.5 * edge_size, 2 * step_size);
+    // A step along d* ends at the minimum of a one-dimensional model: its length says nothing of the region
+    // where the next (Newton) model holds.
+    if (!along_kink) trust = std::min(0.5 * edge_size, 2 * step_size);
   }
   result.length = value.length;
 

@@ -218,6 +218,24 @@ SymMat<D> ExpFrechet<D>::squared_length_hessian(const std::array<SymMat<D>, D>& 
 }
 
 template <int D>
+typename ExpFrechet<D>::SquaredLengthDerivatives ExpFrechet<D>::squared_length_derivatives(const SymMat<D>& direction,
+                                                                                           const Vec<D>& u) const {
+  const SecondDifferences second = second_differences();
+  const Vec<D> w = transpose_times(eigen_.vectors, u);
+  const SymMat<D> h = congruence_transposed(eigen_.vectors, direction);
+  // first = Σ_kl Γ_kl h_kl w_k w_l; second = 2 Σ_klm exp[θk, θm, θl] w_k h_km h_ml w_l.
+  SquaredLengthDerivatives result;
+  for (int k = 0; k < D; ++k)
+    for (int l = 0; l < D; ++l) {
+      result.first += first_differences_(k, l) * h(k, l) * w[k] * w[l];
+      double inner = 0;
+      for (int m = 0; m < D; ++m) inner += second[k][m][l] * h(k, m) * h(m, l);
+      result.second += 2 * w[k] * w[l] * inner;
+    }
+  return result;
+}
+
+template <int D>
 SymMat<D> dexp(const SymMat<D>& t, const SymMat<D>& h) {
   return ExpFrechet<D>(t).derivative(h);
 }

@@ -83,6 +83,12 @@ class ExpFrechet {
   // so it is frobenius_dot(D²exp(T)[Hi, u uᵀ], Hj): D second derivatives, not D(D+1)/2, sharing one set of divided
   // differences, and all in the eigenbasis (the Frobenius product is invariant under V), never rotated back.
   SymMat<D> squared_length_hessian(const std::array<SymMat<D>, D>& directions, const Vec<D>& u) const;
+  // uᵀ Dexp(T)[H] u and uᵀ D²exp(T)[H, H] u: the first two derivatives of uᵀ exp(T + sH) u at s = 0, along one
+  // direction H (a curvature along one line: one contraction instead of squared_length_hessian's D).
+  struct SquaredLengthDerivatives {
+    double first = 0, second = 0;
+  };
+  SquaredLengthDerivatives squared_length_derivatives(const SymMat<D>& direction, const Vec<D>& u) const;
 
  private:
   // V (Γ ∘ H') Vᵀ for a direction H' = Vᵀ H V already in the eigenbasis.

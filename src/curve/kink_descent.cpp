@@ -1,0 +1,204 @@
+#include "curve/kink_descent.hpp"
+
+#include <array>
+#include <cmath>
+
+namespace hocav {
+namespace {
+
+// Barycentrics this close to 0 put X on the face: the test then holds within ~1e-10 of the back
+// element's size of X, far below the optimizer's step tolerance.
+constexpr double kOnFace = 1e-10;
+// The kink's face must cross the bisector plane at a clear angle (|cos| of edge and face above this),
+// else the sectors degenerate.
+constexpr double kTransverse = 0.5;
+// A closed ring around a back-mesh edge has a handful of elements; more means a corrupt mesh.
+constexpr int kMaxRing = 64;
+// Two rays bounding a sector this close to (anti)parallel (|sin| of their angle below this) leave its
+// interior to the rays' own slopes.
+constexpr double kSectorSine = 1e-6;
+
+// ⟨∂ℓ/∂L^L, R_v⟩: the rate of ℓ per unit of the barycentric of back vertex v.
+template <int D>
+double vertex_rate(const MetricField<D>& field, const EdgeLengthValue<D>& value, Index v) {
+  return frobenius_dot(value.log_node_gradient, field.vertex_log_metric(v));
+}
+
+// The least of ℓ'(X; ρ/|ρ|) so far and the argument that attains it.
+template <int D>
+void consider(KinkDescent<D>& best, double slope, const Vec<D>& direction, Index element) {
+  if (best.element == kNoIndex || slope < best.slope) {
+    best.slope = slope;
+    best.direction = direction;
+    best.element = element;
+  }
+}
+
+KinkDescent<2> descent_2d(const MetricField<2>& field, const Localization<2>& where, const Vec2& edge_direction,
+                          const EdgeLengthValue<2>& value) {
+  const Mesh<2>& mesh = field.back_mesh();
+  int zero = -1;
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(where.barycentrics[i]) <= kOnFace) {
+      if (zero >= 0) return {};  // at a vertex
+      zero = i;
+    }
+  if (zero < 0) return {};
+  const auto& element = mesh.element(where.element);
+  const Vec2 facet = mesh.vertex(element[(zero + 2) % 3]) - mesh.vertex(element[(zero + 1) % 3]);
+  if (std::abs(dot(facet, edge_direction)) <= kTransverse * norm(facet)) return {};
+  const Index other = mesh.neighbor(where.element, zero);
+  if (other == kNoIndex) return {};
+  // The bisector line's two rays, ±n: one enters this triangle (∇λ_zero·ρ > 0), the other the neighbour.
+  const Vec2 normal{{-edge_direction[1], edge_direction[0]}};
+  auto slope_into = [&](Index k, const Vec2& ray) {
+    const auto gradients = barycentric_gradients<2>(field.locator().element_points(k));
+    double slope = dot(value.node_gradient, ray);
+    for (int j = 0; j < 3; ++j) slope += vertex_rate(field, value, mesh.element(k)[j]) * dot(gradients[j], ray);
+    return slope;
+  };
+  const auto gradients = barycentric_gradients<2>(field.locator().element_points(where.element));
+  const Vec2 inward = dot(gradients[zero], normal) > 0 ? normal : -normal;
+  KinkDescent<2> best;
+  consider(best, slope_into(where.element, inward), inward, where.element);
+  consider(best, slope_into(other, -inward), -inward, other);
+  best.analysed = true;
+  return best;
+}
+
+// ∂ℓ/∂X in back element k: the part at fixed L^L plus Σ_j ⟨∂ℓ/∂L^L, R_j⟩ ∇λ_j.
+Vec3 element_gradient(const MetricField<3>& field, const EdgeLengthValue<3>& value, Index k,
+                      const std::array<Vec3, 4>& gradients) {
+  Vec3 result = value.node_gradient;
+  for (int j = 0; j < 4; ++j) result += vertex_rate(field, value, field.back_mesh().element(k)[j]) * gradients[j];
+  return result;
+}
+
+// X on the face opposite corner `zero` of its element k1, shared with k2: the plane meets the face in a
+// line (direction t), which splits the plane into two half planes, one in each element. On each the
+// directional derivative is g_k·d; its least unit value is −|g_k| when −g_k points into that half, else
+// the smaller of ±g·t (equal from both sides: L^L is linear on the face).
+KinkDescent<3> face_descent(const MetricField<3>& field, const Localization<3>& where, int zero, const Vec3& m,
+                            const EdgeLengthValue<3>& value) {
+  const Mesh<3>& mesh = field.back_mesh();
+  const Index k1 = where.element, k2 = mesh.neighbor(k1, zero);
+  if (k2 == kNoIndex) return {};  // a boundary face
+  const auto gradients1 = barycentric_gradients<3>(field.locator().element_points(k1));
+  const Vec3& face_normal = gradients1[zero];  // into k1
+  const Vec3 line = cross(m, face_normal);
+  const double line_length = norm(line);
+  if (line_length <= kTransverse * norm(face_normal)) return {};
+  const Vec3 t = (1 / line_length) * line;
+  const Vec3 into_k1 = cross(t, m);  // in the plane, normal to t; oriented by face_normal below
+  const double side = dot(into_k1, face_normal) > 0 ? 1 : -1;
+  auto onto_plane = [&](const Vec3& v) { return v - dot(v, m) * m; };
+  const Vec3 g1 = onto_plane(element_gradient(field, value, k1, gradients1));
+  const Vec3 g2 = onto_plane(
+      element_gradient(field, value, k2, barycentric_gradients<3>(field.locator().element_points(k2))));
+  KinkDescent<3> best;
+  const double along = dot(g1, t);
+  consider(best, along, t, k1);
+  consider(best, -along, -t, k1);
+  const double norm1 = norm(g1), norm2 = norm(g2);
+  if (norm1 > 0 && side * dot(g1, into_k1) < 0) consider(best, -norm1, (-1 / norm1) * g1, k1);
+  if (norm2 > 0 && side * dot(g2, into_k1) > 0) consider(best, -norm2, (-1 / norm2) * g2, k2);
+  best.analysed = true;
+  return best;
+}
+
+KinkDescent<3> descent_3d(const MetricField<3>& field, const Localization<3>& where, const Vec3& edge_direction,
+                          const EdgeLengthValue<3>& value) {
+  const Mesh<3>& mesh = field.back_mesh();
+  int zeros[2], count = 0;
+  for (int i = 0; i < 4; ++i)
+    if (std::abs(where.barycentrics[i]) <= kOnFace) {
+      if (count == 2) return {};  // at a vertex
+      zeros[count++] = i;
+    }
+  if (count == 0) return {};
+  if (count == 1) return face_descent(field, where, zeros[0], edge_direction, value);
+  const auto& first = mesh.element(where.element);
+  Index p = kNoIndex, q = kNoIndex;
+  for (int i = 0; i < 4; ++i)
+    if (i != zeros[0] && i != zeros[1]) (p == kNoIndex ? p : q) = first[i];
+  const Vec3 point_p = mesh.vertex(p), along = mesh.vertex(q) - point_p;
+  if (std::abs(dot(along, edge_direction)) <= kTransverse * norm(along)) return {};
+  const double rate_p = vertex_rate(field, value, p), rate_q = vertex_rate(field, value, q);
+
+  // Around the edge (p, q): cross the face opposite one ring vertex, into the next element, and so on
+  // until the ring closes. Each face (p, q, s) holds one sector boundary ρ = m × n_F (in the plane
+  // and the face), oriented towards s; in the face, ρ = dλ_q (q − p) + dλ_s (s − p). Ring element i lies
+  // between rays i − 1 and i (element 0 between the last ray and ray 0).
+  std::array<Vec3, kMaxRing> rays;
+  std::array<double, kMaxRing> slopes;  // ℓ'(X; ρ_i), for the ray as it is (not normalized)
+  std::array<Index, kMaxRing> ring;
+  KinkDescent<3> best;
+  Index element = where.element;
+  int opposite = zeros[0], size = 0;
+  for (;; ++size) {
+    if (size == kMaxRing) return {};
+    const auto& vertices = mesh.element(element);
+    Index s = kNoIndex;
+    for (int i = 0; i < 4; ++i)
+      if (i != opposite && vertices[i] != p && vertices[i] != q) s = vertices[i];
+    const Vec3 to_s = mesh.vertex(s) - point_p;
+    Vec3 ray = cross(edge_direction, cross(along, to_s));
+    const double aa = dot(along, along), as = dot(along, to_s), ss = dot(to_s, to_s);
+    const double ra = dot(ray, along), rs = dot(ray, to_s), det = aa * ss - as * as;
+    double dq = (ra * ss - rs * as) / det, ds = (rs * aa - ra * as) / det;
+    if (ds < 0) ray = -ray, dq = -dq, ds = -ds;
+    rays[size] = ray;
+    slopes[size] = dot(value.node_gradient, ray) + rate_q * dq + vertex_rate(field, value, s) * ds - rate_p * (dq + ds);
+    ring[size] = element;
+    const double length = norm(ray);
+    consider(best, slopes[size] / length, (1 / length) * ray, element);
+    const Index next = mesh.neighbor(element, opposite);
+    if (next == kNoIndex) return {};  // a boundary edge: the ring is open
+    if (next == where.element) break;
+    const auto& next_vertices = mesh.element(next);
+    for (int i = 0; i < 4; ++i)
+      if (next_vertices[i] == s) opposite = i;
+    element = next;
+  }
+  ++size;
+  // Inside each sector: g = c_a ρ_a + c_b ρ_b with g·ρ_a = σ_a, g·ρ_b = σ_b; −g lies in the sector's cone
+  // when both coefficients are negative, and then ℓ'(X; −g/|g|) = −|g|, |g|² = c_a σ_a + c_b σ_b.
+  for (int i = 0; i < size; ++i) {
+    const int before = (i + size - 1) % size;
+    const Vec3 &ray_a = rays[before], &ray_b = rays[i];
+    const double sa = slopes[before], sb = slopes[i];
+    const double gaa = dot(ray_a, ray_a), gab = dot(ray_a, ray_b), gbb = dot(ray_b, ray_b);
+    const double det = gaa * gbb - gab * gab;
+    if (!(det > kSectorSine * kSectorSine * gaa * gbb)) continue;
+    const double ca = (sa * gbb - sb * gab) / det, cb = (sb * gaa - sa * gab) / det;
+    const double squared = ca * sa + cb * sb;
+    if (!(ca < 0 && cb < 0 && squared > 0)) continue;
+    const double magnitude = std::sqrt(squared);
+    consider(best, -magnitude, (-1 / magnitude) * (ca * ray_a + cb * ray_b), ring[i]);
+  }
+  best.analysed = true;
+  return best;
+}
+
+}  // namespace
+
+template <int D>
+bool on_back_mesh_face(const Localization<D>& where) {
+  for (double lambda : where.barycentrics)
+    if (std::abs(lambda) <= kOnFace) return true;
+  return false;
+}
+template bool on_back_mesh_face(const Localization<2>&);
+template bool on_back_mesh_face(const Localization<3>&);
+
+KinkDescent<2> steepest_descent_on_kink(const MetricField<2>& field, const Localization<2>& where,
+                                        const Vec2& edge_direction, const EdgeLengthValue<2>& value) {
+  return where.inside ? descent_2d(field, where, edge_direction, value) : KinkDescent<2>{};
+}
+
+KinkDescent<3> steepest_descent_on_kink(const MetricField<3>& field, const Localization<3>& where,
+                                        const Vec3& edge_direction, const EdgeLengthValue<3>& value) {
+  return where.inside ? descent_3d(field, where, edge_direction, value) : KinkDescent<3>{};
+}
+
+}  // namespace hocav
