@@ -30,9 +30,18 @@ const ExpSpectrum<D>& EdgeLengthFunction<D>::spectrum_at(std::size_t q, const Sy
                                                          ExpSpectrum<D>& scratch) const {
   if (same_point) return last_spectrum_[q];
   const EdgeBasis phi = edge_basis(rule_.nodes[q]);
+  if (q < kCachedNodes) last_frechet_[q].reset();
   ExpSpectrum<D>& spectrum = q < kCachedNodes ? last_spectrum_[q] : scratch;
   spectrum = exp_spectrum(phi.a * a_.log_metric + phi.middle * log_node + phi.b * b_.log_metric);
   return spectrum;
+}
+
+template <int D>
+const ExpFrechet<D>& EdgeLengthFunction<D>::frechet_at(std::size_t q, const ExpSpectrum<D>& spectrum,
+                                                       std::optional<ExpFrechet<D>>& scratch) const {
+  std::optional<ExpFrechet<D>>& frechet = q < kCachedNodes ? last_frechet_[q] : scratch;
+  if (!frechet) frechet.emplace(spectrum);  // spectrum_at resets the cached one when it decomposes anew
+  return *frechet;
 }
 
 template <int D>
@@ -69,7 +78,8 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
       // In the eigenbasis: keeps g relatively accurate along the small eigenvalues (high anisotropy).
       g = exp_squared_length(spectrum, u);
       if (order != Order::kValue) {
-        const ExpFrechet<D> exp_t(spectrum);
+        std::optional<ExpFrechet<D>> frechet_scratch;
+        const ExpFrechet<D>& exp_t = frechet_at(q, spectrum, frechet_scratch);
         // uᵀ Dexp[H] u = <Dexp[u uᵀ], H> (Dexp is self-adjoint): one derivative serves every direction.
         const SymMat<D> adjoint = exp_t.squared_length_gradient(u);
         std::array<SymMat<D>, D> directions;
@@ -134,7 +144,8 @@ double EdgeLengthFunction<D>::curvature(const Vec<D>& node, const SymMat<D>& log
       d2g = 2 * du * du * dot(d, e * d);
     } else {
       ExpSpectrum<D> scratch;
-      const ExpFrechet<D> exp_t(spectrum_at(q, log_node, same_point, scratch));
+      std::optional<ExpFrechet<D>> frechet_scratch;
+      const ExpFrechet<D>& exp_t = frechet_at(q, spectrum_at(q, log_node, same_point, scratch), frechet_scratch);
       const SymMat<D> direction = phi.middle * log_node_derivative;
       const auto along = exp_t.squared_length_derivatives(direction, u);
       g = exp_t.squared_length(u);

@@ -126,9 +126,12 @@ KinkDescent<3> descent_3d(const MetricField<3>& field, const Localization<3>& wh
   const double rate_p = vertex_rate(field, value, p), rate_q = vertex_rate(field, value, q);
 
   // Around the edge (p, q): cross the face opposite one ring vertex, into the next element, and so on
-  // until the ring closes. Each face (p, q, s) holds one sector boundary ρ = m × n_F (in the plane
-  // and the face), oriented towards s; in the face, ρ = dλ_q (q − p) + dλ_s (s − p). Ring element i lies
-  // between rays i − 1 and i (element 0 between the last ray and ray 0).
+  // until the ring closes. Each face (p, q, s) holds one sector boundary ρ = m × ((q − p) × (s − p)) (in the
+  // plane and the face) = (m·(s − p)) (q − p) − (m·(q − p)) (s − p), oriented towards s: ρ = dq (q − p) + ds (s − p)
+  // with ds = ∓m·(q − p) > 0, the same sign for every face. Ring element i lies between rays i − 1 and i
+  // (element 0 between the last ray and ray 0).
+  const double orientation = dot(edge_direction, along) > 0 ? -1 : 1;
+  const double ds = -orientation * dot(edge_direction, along);
   std::array<Vec3, kMaxRing> rays;
   std::array<double, kMaxRing> slopes;  // ℓ'(X; ρ_i), for the ray as it is (not normalized)
   std::array<Index, kMaxRing> ring;
@@ -142,11 +145,8 @@ KinkDescent<3> descent_3d(const MetricField<3>& field, const Localization<3>& wh
     for (int i = 0; i < 4; ++i)
       if (i != opposite && vertices[i] != p && vertices[i] != q) s = vertices[i];
     const Vec3 to_s = mesh.vertex(s) - point_p;
-    Vec3 ray = cross(edge_direction, cross(along, to_s));
-    const double aa = dot(along, along), as = dot(along, to_s), ss = dot(to_s, to_s);
-    const double ra = dot(ray, along), rs = dot(ray, to_s), det = aa * ss - as * as;
-    double dq = (ra * ss - rs * as) / det, ds = (rs * aa - ra * as) / det;
-    if (ds < 0) ray = -ray, dq = -dq, ds = -ds;
+    const double dq = orientation * dot(edge_direction, to_s);
+    const Vec3 ray = dq * along + ds * to_s;
     rays[size] = ray;
     slopes[size] = dot(value.node_gradient, ray) + rate_q * dq + vertex_rate(field, value, s) * ds - rate_p * (dq + ds);
     ring[size] = element;
