@@ -36,61 +36,61 @@ double fraction_inside(const typename MetricField<D>::ElementFrame& frame, const
   return fraction;
 }
 
-// Solves H p = −g for a symmetric positive definite H by Cholesky; false when H is not.
+// An orthonormal basis of the bisector plane of the unit edge direction m.
 template <int D>
-bool newton_direction(const SymMat<D>& h, const Vec<D>& g, Vec<D>& p) {
-  double l[D][D] = {};
-  for (int j = 0; j < D; ++j) {
-    double diagonal = h(j, j);
-    for (int k = 0; k < j; ++k) diagonal -= l[j][k] * l[j][k];
-    if (!(diagonal > 0)) return false;
-    l[j][j] = std::sqrt(diagonal);
-    for (int i = j + 1; i < D; ++i) {
-      double value = h(i, j);
-      for (int k = 0; k < j; ++k) value -= l[i][k] * l[j][k];
-      l[i][j] = value / l[j][j];
-    }
+std::array<Vec<D>, D - 1> plane_basis(const Vec<D>& m) {
+  if constexpr (D == 2) {
+    return {Vec2{{-m[1], m[0]}}};
+  } else {
+    // Against the axis least aligned with m, for a well-conditioned cross product.
+    int axis = 0;
+    for (int i = 1; i < 3; ++i)
+      if (std::abs(m[i]) < std::abs(m[axis])) axis = i;
+    Vec3 helper{};
+    helper[axis] = 1;
+    Vec3 first = cross(m, helper);
+    first = (1 / norm(first)) * first;
+    return {first, cross(m, first)};
   }
-  Vec<D> y;
-  for (int i = 0; i < D; ++i) {
-    double value = -g[i];
-    for (int k = 0; k < i; ++k) value -= l[i][k] * y[k];
-    y[i] = value / l[i][i];
-  }
-  for (int i = D - 1; i >= 0; --i) {
-    double value = y[i];
-    for (int k = i + 1; k < D; ++k) value -= l[k][i] * p[k];
-    p[i] = value / l[i][i];
-  }
-  return true;
 }
 
-// The Newton step of ℓ in the bisector plane (normal to the unit `direction`): gradient and Hessian
-// projected, the Hessian made regular along the edge so the step has no component there, and shifted
-// until positive definite (between Newton and gradient descent). `shift` is 0 for a pure Newton step;
-// false when no shift makes it definite (non-finite values).
+// The Newton step of ℓ in the bisector plane (spanned by `basis`): gradient and Hessian in the plane, the
+// Hessian shifted until positive definite (between Newton and gradient descent). `shift` is 0 for a pure
+// Newton step; false when no shift makes it definite (non-finite values).
 template <int D>
-bool newton_step_in_plane(const EdgeLengthValue<D>& value, const Vec<D>& direction, Vec<D>& step, double& shift) {
-  auto onto_plane = [&](const Vec<D>& v) { return v - dot(v, direction) * direction; };
-  const Vec<D> gradient = onto_plane(value.gradient);
-  SymMat<D> projected;
-  for (int i = 0; i < D; ++i) {
-    Vec<D> unit{};
-    unit[i] = 1;
-    Vec<D> column = onto_plane(value.hessian * onto_plane(unit));
-    for (int j = 0; j <= i; ++j) projected(i, j) = column[j];
+bool newton_step_in_plane(const EdgeLengthValue<D>& value, const std::array<Vec<D>, D - 1>& basis, Vec<D>& step,
+                          double& shift) {
+  if constexpr (D == 2) {
+    const double g = dot(value.gradient, basis[0]), h = dot(basis[0], value.hessian * basis[0]);
+    const double scale = std::max(1e-300, std::abs(h));
+    shift = 0;
+    while (!(h + shift > 0)) {
+      shift = shift == 0 ? 1e-8 * scale : 10 * shift;
+      if (!std::isfinite(shift)) return false;
+    }
+    step = (-g / (h + shift)) * basis[0];
+  } else {
+    const double g0 = dot(value.gradient, basis[0]), g1 = dot(value.gradient, basis[1]);
+    const Vec3 h_basis0 = value.hessian * basis[0];
+    const double h00 = dot(basis[0], h_basis0), h01 = dot(basis[1], h_basis0);
+    const double h11 = dot(basis[1], value.hessian * basis[1]);
+    const double scale = std::max(1e-300, std::abs(h00 + h11));
+    // Cholesky of [[h00 + σ, h01], [h01, h11 + σ]].
+    shift = 0;
+    for (;;) {
+      const double a = h00 + shift;
+      const double c = a > 0 ? h11 + shift - h01 * h01 / a : 0;
+      if (a > 0 && c > 0) {
+        // Solve: p1 from the Schur complement, then p0.
+        const double p1 = (-g1 + h01 * g0 / a) / c;
+        const double p0 = (-g0 - h01 * p1) / a;
+        step = p0 * basis[0] + p1 * basis[1];
+        break;
+      }
+      shift = shift == 0 ? 1e-8 * scale : 10 * shift;
+      if (!std::isfinite(shift)) return false;
+    }
   }
-  const double scale = std::max(1e-300, std::abs(trace(projected)));
-  for (int i = 0; i < D; ++i)
-    for (int j = 0; j <= i; ++j) projected(i, j) += scale * direction[i] * direction[j];
-  SymMat<D> h = projected;
-  shift = 0;
-  while (!newton_direction(h, gradient, step)) {
-    shift = shift == 0 ? 1e-8 * scale : 10 * shift;
-    h = projected + shift * SymMat<D>::identity();
-    if (!std::isfinite(shift)) return false;
-  }
-  step = onto_plane(step);
   return true;
 }
 
@@ -111,6 +111,7 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
   // The node moves in the bisector plane of the edge: sliding it along the edge changes only the
   // parametrization, which the 3-point rule cannot see (a flat valley in a uniform metric).
   const Vec<D> direction = (1 / edge_size) * (b - a);
+  const std::array<Vec<D>, D - 1> basis = plane_basis(direction);
   auto onto_plane = [&](const Vec<D>& v) { return v - dot(v, direction) * direction; };
   const Vec<D> first = midpoint + onto_plane(start - midpoint);
 
@@ -184,7 +185,7 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
       predicted = convex_model ? 0.5 * kink.slope * kink.slope / curvature : -kink.slope * trust;
     } else {
       double shift;
-      if (!newton_step_in_plane(value, direction, step, shift)) return result;
+      if (!newton_step_in_plane(value, basis, step, shift)) return result;
       predicted = -0.5 * dot(onto_plane(value.gradient), step);
       convex_model = shift == 0;
     }
