@@ -27,19 +27,18 @@ EdgeLengthFunction<D>::EdgeLengthFunction(const EdgeEndpoint<D>& a, const EdgeEn
 
 template <int D>
 const ExpSpectrum<D>& EdgeLengthFunction<D>::spectrum_at(std::size_t q, const SymMat<D>& log_node, bool same_point,
-                                                         ExpSpectrum<D>& scratch) const {
-  if (same_point) return last_spectrum_[q];
+                                                         LazySlot<ExpSpectrum<D>>& scratch) const {
+  if (same_point) return *last_spectrum_[q];
   const EdgeBasis phi = edge_basis(rule_.nodes[q]);
   if (q < kCachedNodes) last_frechet_[q].reset();
-  ExpSpectrum<D>& spectrum = q < kCachedNodes ? last_spectrum_[q] : scratch;
-  spectrum = exp_spectrum(phi.a * a_.log_metric + phi.middle * log_node + phi.b * b_.log_metric);
-  return spectrum;
+  LazySlot<ExpSpectrum<D>>& spectrum = q < kCachedNodes ? last_spectrum_[q] : scratch;
+  return spectrum.emplace(exp_spectrum(phi.a * a_.log_metric + phi.middle * log_node + phi.b * b_.log_metric));
 }
 
 template <int D>
 const ExpFrechet<D>& EdgeLengthFunction<D>::frechet_at(std::size_t q, const ExpSpectrum<D>& spectrum,
-                                                       std::optional<ExpFrechet<D>>& scratch) const {
-  std::optional<ExpFrechet<D>>& frechet = q < kCachedNodes ? last_frechet_[q] : scratch;
+                                                       LazySlot<ExpFrechet<D>>& scratch) const {
+  LazySlot<ExpFrechet<D>>& frechet = q < kCachedNodes ? last_frechet_[q] : scratch;
   if (!frechet) frechet.emplace(spectrum);  // spectrum_at resets the cached one when it decomposes anew
   return *frechet;
 }
@@ -54,7 +53,10 @@ template <int D>
 EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const SymMat<D>& log_node,
                                                    const std::array<SymMat<D>, D>& log_node_gradient,
                                                    Order order) const {
-  EdgeLengthValue<D> result;
+  // Accumulated in locals and returned whole: a zero-initialized result object in memory costs a block clear.
+  double length = 0;
+  Vec<D> gradient{}, node_gradient{};
+  SymMat<D> hessian{}, log_node_gradient_part{};
   const bool same_point = has_last_ && log_node == last_log_node_;
   for (std::size_t q = 0; q < rule_.nodes.size(); ++q) {
     const double t = rule_.nodes[q], w = rule_.weights[q];
@@ -73,12 +75,12 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
       if (order != Order::kValue) dg = dg_dnode = (2 * du) * eu;
       if (order == Order::kHessian) d2g = (2 * du * du) * e;
     } else {
-      ExpSpectrum<D> scratch;
+      LazySlot<ExpSpectrum<D>> scratch;
       const ExpSpectrum<D>& spectrum = spectrum_at(q, log_node, same_point, scratch);
       // In the eigenbasis: keeps g relatively accurate along the small eigenvalues (high anisotropy).
       g = exp_squared_length(spectrum, u);
       if (order != Order::kValue) {
-        std::optional<ExpFrechet<D>> frechet_scratch;
+        LazySlot<ExpFrechet<D>> frechet_scratch;
         const ExpFrechet<D>& exp_t = frechet_at(q, spectrum, frechet_scratch);
         // uᵀ Dexp[H] u = <Dexp[u uᵀ], H> (Dexp is self-adjoint): one derivative serves every direction.
         const SymMat<D> adjoint = exp_t.squared_length_gradient(u);
@@ -105,17 +107,17 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
     }
     // ℓ = Σ w sqrt(g): ∂ℓ = w ∂g / (2√g), ∂²ℓ = w (∂²g / (2√g) − ∂g ∂gᵀ / (4 g^{3/2})).
     const double root = std::sqrt(g);
-    result.length += w * root;
+    length += w * root;
     if (order == Order::kValue || root == 0) continue;
-    result.gradient += (w / (2 * root)) * dg;
-    result.node_gradient += (w / (2 * root)) * dg_dnode;
-    result.log_node_gradient += (w / (2 * root)) * dg_dlog;
+    gradient += (w / (2 * root)) * dg;
+    node_gradient += (w / (2 * root)) * dg_dnode;
+    log_node_gradient_part += (w / (2 * root)) * dg_dlog;
     if (order == Order::kHessian)
       for (int i = 0; i < D; ++i)
-        for (int j = 0; j <= i; ++j) result.hessian(i, j) += w * (d2g(i, j) / (2 * root) - dg[i] * dg[j] / (4 * g * root));
+        for (int j = 0; j <= i; ++j) hessian(i, j) += w * (d2g(i, j) / (2 * root) - dg[i] * dg[j] / (4 * g * root));
   }
   remember(log_node);
-  return result;
+  return {length, gradient, hessian, node_gradient, log_node_gradient_part};
 }
 
 template <int D>
@@ -143,8 +145,8 @@ double EdgeLengthFunction<D>::curvature(const Vec<D>& node, const SymMat<D>& log
       dg = 2 * du * dot(d, eu);
       d2g = 2 * du * du * dot(d, e * d);
     } else {
-      ExpSpectrum<D> scratch;
-      std::optional<ExpFrechet<D>> frechet_scratch;
+      LazySlot<ExpSpectrum<D>> scratch;
+      LazySlot<ExpFrechet<D>> frechet_scratch;
       const ExpFrechet<D>& exp_t = frechet_at(q, spectrum_at(q, log_node, same_point, scratch), frechet_scratch);
       const SymMat<D> direction = phi.middle * log_node_derivative;
       const auto along = exp_t.squared_length_derivatives(direction, u);

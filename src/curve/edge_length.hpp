@@ -8,8 +8,8 @@
 #pragma once
 
 #include <array>
-#include <optional>
 
+#include "base/lazy_slot.hpp"
 #include "curve/quadrature.hpp"
 #include "geom/sym_functions.hpp"
 #include "geom/sym_mat.hpp"
@@ -73,19 +73,19 @@ class EdgeLengthFunction {
  private:
   // exp_spectrum(T(t_q)) at node q, from the cache when L^L(X) is the last one evaluated.
   const ExpSpectrum<D>& spectrum_at(std::size_t q, const SymMat<D>& log_node, bool same_point,
-                                    ExpSpectrum<D>& scratch) const;
+                                    LazySlot<ExpSpectrum<D>>& scratch) const;
   // ExpFrechet of `spectrum`, the one spectrum_at just gave for node q: from the cache when it was made at the
   // same point (a curvature after a gradient there).
   const ExpFrechet<D>& frechet_at(std::size_t q, const ExpSpectrum<D>& spectrum,
-                                  std::optional<ExpFrechet<D>>& scratch) const;
+                                  LazySlot<ExpFrechet<D>>& scratch) const;
   // Remembers L^L(X) as the point of the cached decompositions.
   void remember(const SymMat<D>& log_node) const;
 
   EdgeEndpoint<D> a_, b_;
   const QuadratureRule& rule_;
   // exp_spectrum(T(t_q)) where φ_M(t_q) ≠ 0 at the last evaluated L^L(X) (T depends on X only through it).
-  mutable std::array<ExpSpectrum<D>, kCachedNodes> last_spectrum_;
-  mutable std::array<std::optional<ExpFrechet<D>>, kCachedNodes> last_frechet_;
+  mutable std::array<LazySlot<ExpSpectrum<D>>, kCachedNodes> last_spectrum_;
+  mutable std::array<LazySlot<ExpFrechet<D>>, kCachedNodes> last_frechet_;
   mutable SymMat<D> last_log_node_;
   mutable bool has_last_ = false;
 };

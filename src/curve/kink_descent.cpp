@@ -132,13 +132,25 @@ KinkDescent<3> descent_3d(const MetricField<3>& field, const Localization<3>& wh
   // (element 0 between the last ray and ray 0).
   const double orientation = dot(edge_direction, along) > 0 ? -1 : 1;
   const double ds = -orientation * dot(edge_direction, along);
-  std::array<Vec3, kMaxRing> rays;
-  std::array<double, kMaxRing> slopes;  // ℓ'(X; ρ_i), for the ray as it is (not normalized)
-  std::array<Index, kMaxRing> ring;
   KinkDescent<3> best;
+  // Inside a sector between rays a and b: g = c_a ρ_a + c_b ρ_b with g·ρ_a = σ_a, g·ρ_b = σ_b (σ the slope
+  // ℓ'(X; ρ) for the ray as it is, not normalized); −g lies in the sector's cone when both coefficients are
+  // negative, and then ℓ'(X; −g/|g|) = −|g|, |g|² = c_a σ_a + c_b σ_b.
+  auto consider_sector = [&](const Vec3& ray_a, double sa, const Vec3& ray_b, double sb, Index sector_element) {
+    const double gaa = dot(ray_a, ray_a), gab = dot(ray_a, ray_b), gbb = dot(ray_b, ray_b);
+    const double det = gaa * gbb - gab * gab;
+    if (!(det > kSectorSine * kSectorSine * gaa * gbb)) return;
+    const double ca = (sa * gbb - sb * gab) / det, cb = (sb * gaa - sa * gab) / det;
+    const double squared = ca * sa + cb * sb;
+    if (!(ca < 0 && cb < 0 && squared > 0)) return;
+    const double magnitude = std::sqrt(squared);
+    consider(best, -magnitude, (-1 / magnitude) * (ca * ray_a + cb * ray_b), sector_element);
+  };
+  Vec3 first_ray, previous_ray;
+  double first_slope = 0, previous_slope = 0;
   Index element = where.element;
-  int opposite = zeros[0], size = 0;
-  for (;; ++size) {
+  int opposite = zeros[0];
+  for (int size = 0;; ++size) {
     if (size == kMaxRing) return {};
     const auto& vertices = mesh.element(element);
     Index s = kNoIndex;
@@ -147,11 +159,16 @@ KinkDescent<3> descent_3d(const MetricField<3>& field, const Localization<3>& wh
     const Vec3 to_s = mesh.vertex(s) - point_p;
     const double dq = orientation * dot(edge_direction, to_s);
     const Vec3 ray = dq * along + ds * to_s;
-    rays[size] = ray;
-    slopes[size] = dot(value.node_gradient, ray) + rate_q * dq + vertex_rate(field, value, s) * ds - rate_p * (dq + ds);
-    ring[size] = element;
+    const double slope =
+        dot(value.node_gradient, ray) + rate_q * dq + vertex_rate(field, value, s) * ds - rate_p * (dq + ds);
     const double length = norm(ray);
-    consider(best, slopes[size] / length, (1 / length) * ray, element);
+    consider(best, slope / length, (1 / length) * ray, element);
+    if (size == 0) {
+      first_ray = ray, first_slope = slope;
+    } else {
+      consider_sector(previous_ray, previous_slope, ray, slope, element);
+    }
+    previous_ray = ray, previous_slope = slope;
     const Index next = mesh.neighbor(element, opposite);
     if (next == kNoIndex) return {};  // a boundary edge: the ring is open
     if (next == where.element) break;
@@ -160,22 +177,7 @@ KinkDescent<3> descent_3d(const MetricField<3>& field, const Localization<3>& wh
       if (next_vertices[i] == s) opposite = i;
     element = next;
   }
-  ++size;
-  // Inside each sector: g = c_a ρ_a + c_b ρ_b with g·ρ_a = σ_a, g·ρ_b = σ_b; −g lies in the sector's cone
-  // when both coefficients are negative, and then ℓ'(X; −g/|g|) = −|g|, |g|² = c_a σ_a + c_b σ_b.
-  for (int i = 0; i < size; ++i) {
-    const int before = (i + size - 1) % size;
-    const Vec3 &ray_a = rays[before], &ray_b = rays[i];
-    const double sa = slopes[before], sb = slopes[i];
-    const double gaa = dot(ray_a, ray_a), gab = dot(ray_a, ray_b), gbb = dot(ray_b, ray_b);
-    const double det = gaa * gbb - gab * gab;
-    if (!(det > kSectorSine * kSectorSine * gaa * gbb)) continue;
-    const double ca = (sa * gbb - sb * gab) / det, cb = (sb * gaa - sa * gab) / det;
-    const double squared = ca * sa + cb * sb;
-    if (!(ca < 0 && cb < 0 && squared > 0)) continue;
-    const double magnitude = std::sqrt(squared);
-    consider(best, -magnitude, (-1 / magnitude) * (ca * ray_a + cb * ray_b), ring[i]);
-  }
+  consider_sector(previous_ray, previous_slope, first_ray, first_slope, where.element);
   best.analysed = true;
   return best;
 }
