@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "base/lazy_slot.hpp"
 #include "curve/kink_descent.hpp"
 
 namespace hocav {
@@ -117,10 +118,10 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
 
   // ∂L^L/∂X is constant in a back element, and successive iterates often stay in one: its frame serves their
   // localization and derivatives.
-  typename MetricField<D>::ElementFrame frame;
+  LazySlot<typename MetricField<D>::ElementFrame> frame;
   auto frame_of = [&](Index element) -> const typename MetricField<D>::ElementFrame& {
-    if (element != frame.element) frame = field.element_frame(element);
-    return frame;
+    if (!frame || (*frame).element != element) frame.emplace(field.element_frame(element));
+    return *frame;
   };
 
   // ℓ at an accepted node with what its next step needs. On a kink, the Newton model of one element misses
@@ -139,8 +140,10 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
     node_log_metric = at.log_metric;
     kink = {};
     if (on_back_mesh_face(at.where)) {
-      // The kink analysis needs only the gradient's parts, which no element's ∂L^L/∂X enters.
-      value = function.evaluate(node, at.log_metric, {}, Order::kGradient);
+      // The kink analysis needs only the gradient's parts, which no element's ∂L^L/∂X enters (a constant
+      // zero: a temporary would be cleared at every call).
+      static const std::array<SymMat<D>, D> no_log_metric_gradient{};
+      value = function.evaluate(node, at.log_metric, no_log_metric_gradient, Order::kGradient);
       kink = steepest_descent_on_kink(field, at.where, direction, value);
       optimal = kink.analysed && kink.slope >= -kKinkSlopeMargin * value.length / edge_size;
       if (optimal) return;

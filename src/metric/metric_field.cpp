@@ -94,9 +94,9 @@ std::array<SymMat<D>, D> MetricField<D>::log_metric_gradient(Index back_element)
 template <int D>
 typename MetricField<D>::ElementFrame MetricField<D>::element_frame(Index back_element) const {
   const SimplexPoints<D> points = locator_->element_points(back_element);
-  ElementFrame frame{back_element, points[0], barycentric_gradients<D>(points), {}};
-  frame.log_metric_gradient = log_metric_gradient(back_element, frame.barycentric_gradients);
-  return frame;
+  const std::array<Vec<D>, D + 1> gradients = barycentric_gradients<D>(points);
+  // Made whole, not cleared and then filled.
+  return {back_element, points[0], gradients, log_metric_gradient(back_element, gradients)};
 }
 
 template class MetricField<2>;
