@@ -145,12 +145,14 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
       static const std::array<SymMat<D>, D> no_log_metric_gradient{};
       value = function.evaluate(node, at.log_metric, no_log_metric_gradient, Order::kGradient);
       kink = steepest_descent_on_kink(field, at.where, direction, value);
-      optimal = kink.analysed && kink.slope >= -kKinkSlopeMargin * value.length / edge_size;
+      const double margin = kKinkSlopeMargin * value.length / edge_size;
+      optimal = kink.analysed && kink.whole_plane && kink.slope >= -margin;
       if (optimal) return;
-      if (kink.analysed) {
+      if (kink.analysed && kink.slope < -margin) {
         result.back_element = kink.element;  // X lies on its face too
         return;
       }
+      kink = {};  // at the boundary, no descent into the domain: Newton's model decides
     }
     value = function.evaluate(node, at.log_metric, frame_of(result.back_element).log_metric_gradient,
                               Order::kHessian);

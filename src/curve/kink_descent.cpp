@@ -48,7 +48,6 @@ KinkDescent<2> descent_2d(const MetricField<2>& field, const Localization<2>& wh
   const Vec2 facet = mesh.vertex(element[(zero + 2) % 3]) - mesh.vertex(element[(zero + 1) % 3]);
   if (std::abs(dot(facet, edge_direction)) <= kTransverse * norm(facet)) return {};
   const Index other = mesh.neighbor(where.element, zero);
-  if (other == kNoIndex) return {};
   // The bisector line's two rays, ±n: one enters this triangle (∇λ_zero·ρ > 0), the other the neighbour.
   const Vec2 normal{{-edge_direction[1], edge_direction[0]}};
   auto slope_into = [&](Index k, const Vec2& ray) {
@@ -61,7 +60,10 @@ KinkDescent<2> descent_2d(const MetricField<2>& field, const Localization<2>& wh
   const Vec2 inward = dot(gradients[zero], normal) > 0 ? normal : -normal;
   KinkDescent<2> best;
   consider(best, slope_into(where.element, inward), inward, where.element);
-  consider(best, slope_into(other, -inward), -inward, other);
+  if (other != kNoIndex) {  // else a boundary edge: the ray into the domain only
+    consider(best, slope_into(other, -inward), -inward, other);
+    best.whole_plane = true;
+  }
   best.analysed = true;
   return best;
 }
@@ -82,7 +84,6 @@ KinkDescent<3> face_descent(const MetricField<3>& field, const Localization<3>& 
                             const EdgeLengthValue<3>& value) {
   const Mesh<3>& mesh = field.back_mesh();
   const Index k1 = where.element, k2 = mesh.neighbor(k1, zero);
-  if (k2 == kNoIndex) return {};  // a boundary face
   const auto gradients1 = barycentric_gradients<3>(field.locator().element_points(k1));
   const Vec3& face_normal = gradients1[zero];  // into k1
   const Vec3 line = cross(m, face_normal);
@@ -93,15 +94,19 @@ KinkDescent<3> face_descent(const MetricField<3>& field, const Localization<3>& 
   const double side = dot(into_k1, face_normal) > 0 ? 1 : -1;
   auto onto_plane = [&](const Vec3& v) { return v - dot(v, m) * m; };
   const Vec3 g1 = onto_plane(element_gradient(field, value, k1, gradients1));
-  const Vec3 g2 = onto_plane(
-      element_gradient(field, value, k2, barycentric_gradients<3>(field.locator().element_points(k2))));
   KinkDescent<3> best;
   const double along = dot(g1, t);
   consider(best, along, t, k1);
   consider(best, -along, -t, k1);
-  const double norm1 = norm(g1), norm2 = norm(g2);
+  const double norm1 = norm(g1);
   if (norm1 > 0 && side * dot(g1, into_k1) < 0) consider(best, -norm1, (-1 / norm1) * g1, k1);
-  if (norm2 > 0 && side * dot(g2, into_k1) > 0) consider(best, -norm2, (-1 / norm2) * g2, k2);
+  if (k2 != kNoIndex) {  // else a boundary face: the domain's half plane only
+    const Vec3 g2 = onto_plane(
+        element_gradient(field, value, k2, barycentric_gradients<3>(field.locator().element_points(k2))));
+    const double norm2 = norm(g2);
+    if (norm2 > 0 && side * dot(g2, into_k1) > 0) consider(best, -norm2, (-1 / norm2) * g2, k2);
+    best.whole_plane = true;
+  }
   best.analysed = true;
   return best;
 }
@@ -117,10 +122,10 @@ KinkDescent<3> descent_3d(const MetricField<3>& field, const Localization<3>& wh
     }
   if (count == 0) return {};
   if (count == 1) return face_descent(field, where, zeros[0], edge_direction, value);
-  const auto& first = mesh.element(where.element);
+  const auto& corners = mesh.element(where.element);
   Index p = kNoIndex, q = kNoIndex;
   for (int i = 0; i < 4; ++i)
-    if (i != zeros[0] && i != zeros[1]) (p == kNoIndex ? p : q) = first[i];
+    if (i != zeros[0] && i != zeros[1]) (p == kNoIndex ? p : q) = corners[i];
   const Vec3 point_p = mesh.vertex(p), along = mesh.vertex(q) - point_p;
   if (std::abs(dot(along, edge_direction)) <= kTransverse * norm(along)) return {};
   const double rate_p = vertex_rate(field, value, p), rate_q = vertex_rate(field, value, q);
@@ -128,8 +133,8 @@ KinkDescent<3> descent_3d(const MetricField<3>& field, const Localization<3>& wh
   // Around the edge (p, q): cross the face opposite one ring vertex, into the next element, and so on
   // until the ring closes. Each face (p, q, s) holds one sector boundary ρ = m × ((q − p) × (s − p)) (in the
   // plane and the face) = (m·(s − p)) (q − p) − (m·(q − p)) (s − p), oriented towards s: ρ = dq (q − p) + ds (s − p)
-  // with ds = ∓m·(q − p) > 0, the same sign for every face. Ring element i lies between rays i − 1 and i
-  // (element 0 between the last ray and ray 0).
+  // with ds = ∓m·(q − p) > 0, the same sign for every face. Each element's sector lies between the rays
+  // of its two faces through p and q.
   const double orientation = dot(edge_direction, along) > 0 ? -1 : 1;
   const double ds = -orientation * dot(edge_direction, along);
   KinkDescent<3> best;
@@ -146,12 +151,14 @@ KinkDescent<3> descent_3d(const MetricField<3>& field, const Localization<3>& wh
     const double magnitude = std::sqrt(squared);
     consider(best, -magnitude, (-1 / magnitude) * (ca * ray_a + cb * ray_b), sector_element);
   };
-  Vec3 first_ray, previous_ray;
-  double first_slope = 0, previous_slope = 0;
-  Index element = where.element;
-  int opposite = zeros[0];
-  for (int size = 0;; ++size) {
-    if (size == kMaxRing) return {};
+  // The ray on the face of `element` opposite its corner `opposite` (a face through p and q), its slope, and
+  // the face's third vertex s.
+  struct Ray {
+    Vec3 ray;
+    double slope;
+    Index s;
+  };
+  auto ray_on_face = [&](Index element, int opposite) {
     const auto& vertices = mesh.element(element);
     Index s = kNoIndex;
     for (int i = 0; i < 4; ++i)
@@ -163,21 +170,42 @@ KinkDescent<3> descent_3d(const MetricField<3>& field, const Localization<3>& wh
         dot(value.node_gradient, ray) + rate_q * dq + vertex_rate(field, value, s) * ds - rate_p * (dq + ds);
     const double length = norm(ray);
     consider(best, slope / length, (1 / length) * ray, element);
-    if (size == 0) {
-      first_ray = ray, first_slope = slope;
-    } else {
-      consider_sector(previous_ray, previous_slope, ray, slope, element);
+    return Ray{ray, slope, s};
+  };
+  // From `element`, leaving through its face opposite `opposite` (whose ray is `exit`): the elements beyond,
+  // each sector between the ray it is entered by and the one it is left by, until the ring closes or meets
+  // the boundary. `exit` ends as the last ray.
+  enum class WalkEnd { kClosed, kBoundary, kTooLong };
+  int steps = 0;
+  auto walk = [&](Index element, int opposite, Ray& exit) {
+    for (;;) {
+      const Index next = mesh.neighbor(element, opposite);
+      if (next == kNoIndex) return WalkEnd::kBoundary;
+      if (next == where.element) return WalkEnd::kClosed;
+      if (++steps == kMaxRing) return WalkEnd::kTooLong;
+      const auto& next_vertices = mesh.element(next);
+      for (int i = 0; i < 4; ++i)
+        if (next_vertices[i] == exit.s) opposite = i;
+      element = next;
+      const Ray entry = exit;
+      exit = ray_on_face(element, opposite);
+      consider_sector(entry.ray, entry.slope, exit.ray, exit.slope, element);
     }
-    previous_ray = ray, previous_slope = slope;
-    const Index next = mesh.neighbor(element, opposite);
-    if (next == kNoIndex) return {};  // a boundary edge: the ring is open
-    if (next == where.element) break;
-    const auto& next_vertices = mesh.element(next);
-    for (int i = 0; i < 4; ++i)
-      if (next_vertices[i] == s) opposite = i;
-    element = next;
+  };
+  // Element 0 lies between its faces opposite zeros[0] and zeros[1]: around one way, and when the ring is
+  // open (a boundary edge) the other way too, which covers the domain's side of the plane only.
+  const Ray first = ray_on_face(where.element, zeros[0]);
+  Ray last = first;
+  const WalkEnd end = walk(where.element, zeros[0], last);
+  if (end == WalkEnd::kTooLong) return {};
+  if (end == WalkEnd::kClosed) {
+    consider_sector(last.ray, last.slope, first.ray, first.slope, where.element);
+    best.whole_plane = true;
+  } else {
+    Ray other = ray_on_face(where.element, zeros[1]);
+    consider_sector(other.ray, other.slope, first.ray, first.slope, where.element);
+    if (walk(where.element, zeros[1], other) != WalkEnd::kBoundary) return {};  // a ring open one way only
   }
-  consider_sector(previous_ray, previous_slope, first_ray, first_slope, where.element);
   best.analysed = true;
   return best;
 }

@@ -23,8 +23,8 @@
 //       face meets the plane (no strict minimum there: the slopes along ±t are opposite);
 //   2D, X on a back-mesh edge transverse to the bisector line: the two rays, one in each triangle.
 // Along a direction d in element k, ℓ'(X; d) = ∂ℓ/∂X·d + Σ_j ⟨∂ℓ/∂L^L, R_j⟩ ∇λ_j^k·d (R_j the vertex
-// log-metrics). Every other position (inside an element, at a vertex, on the boundary, a face or edge
-// nearly parallel to the plane) is not analysed: the optimizer's Newton iteration decides there.
+// log-metrics). Every other position (inside an element, at a vertex, a face or edge nearly parallel to the
+// plane) is not analysed: the optimizer's Newton iteration decides there.
 #pragma once
 
 #include "curve/edge_length.hpp"
@@ -40,6 +40,10 @@ bool on_back_mesh_face(const Localization<D>& where);
 template <int D>
 struct KinkDescent {
   bool analysed = false;     // X is on a kink of the kinds above; the rest holds only then
+  // Whether the sectors tile the whole plane. At the boundary (an open ring of a boundary edge, a boundary
+  // face, a 2D boundary edge) only the domain's side is analysed: s* is then the least slope into the domain,
+  // which proves a descent when negative but no minimum (outside, the metric is an extension).
+  bool whole_plane = false;
   double slope = 0;          // s*, per unit length of the direction
   Vec<D> direction{};        // d*, a unit vector of the plane
   Index element = kNoIndex;  // a back element whose closed sector of the plane holds d*
