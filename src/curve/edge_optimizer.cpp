@@ -211,7 +211,7 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
       step = length * tangent;
       predicted = -(slope * length + 0.5 * curvature * length * length);
     }
-    double step_size = norm(step);
+    const double step_size = norm(step);
     const bool along_kink = kink.analysed;
     // Converged: a step this small, or one whose predicted decrease is this small, only meets
     // round-off, where every halving of the line search would fail.
@@ -224,7 +224,7 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
         (initial_length - value.length) + options.futile_model_factor * predicted <
             options.min_relative_decrease * initial_length)
       break;
-    if (step_size > trust) step = (trust / step_size) * step, step_size = trust;
+    if (step_size > trust) step = (trust / step_size) * step;
 
     // Backtracking: accept the first trial that decreases ℓ (kinks rule out stricter tests). Along a
     // smooth ray of descent slope (σ < 0, Δ(s) = σs + κs²/2), a rejected increase Δ(s) > 0 shrinks more
@@ -235,8 +235,8 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
     // exactly on the face: ℓ has a kink there, which the element's model did not see, and from a face the
     // kink analysis can follow a valley along it (instead of zigzagging across it).
     bool accepted = false;
-    double rejected_increase = 0;
-    for (int halving = 0; halving < 12 && !accepted; ++halving, step = 0.5 * step, step_size *= 0.5) {
+    double rejected_increase = 0, moved = 0;
+    for (int halving = 0; halving < 12; ++halving, step = 0.5 * step) {
       Vec<D> trial = result.node + step;
       Vec<D> offset = trial - midpoint;
       double displacement = norm(offset);
@@ -246,7 +246,9 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
       double trial_length = function.length(trial, trial_sample.log_metric);
       if (trial_length < value.length) {
         accepted = true;
+        moved = norm(trial - result.node);
         arrive(trial, trial_sample);
+        break;
       } else {
         const double increase = trial_length - value.length;
         if (rejected_increase > 0 && rejected_increase < 1e-3 * value.length && increase > 0.25 * rejected_increase)
@@ -256,19 +258,19 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
           const double leaving = fraction_inside(frame_of(result.back_element), result.node, trial);
           if (leaving > kLeastFaceFraction && leaving < 1) {
             step = (2 * leaving) * (trial - result.node);  // halved by the loop
-            step_size = norm(step);
             rejected_increase = 0;
           }
         }
       }
     }
-    if (!accepted || step_size < options.step_tolerance * edge_size) {
+    if (!accepted || moved < options.step_tolerance * edge_size) {
       if (accepted) ++result.iterations;
       break;
     }
-    // A step along d* ends at the minimum of a one-dimensional model: its length says nothing of the region
-    // where the next (Newton) model holds.
-    if (!along_kink) trust = std::min(0.5 * edge_size, 2 * step_size);
+    // Twice the step accepted. A step along d* ends at the minimum of a one-dimensional model: a short one
+    // says nothing of the region where the next (Newton) model holds, so it only ever widens the radius.
+    const double widened = std::min(0.5 * edge_size, 2 * moved);
+    trust = along_kink ? std::max(trust, widened) : widened;
   }
   result.length = value.length;
 
