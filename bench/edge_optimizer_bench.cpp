@@ -2,16 +2,18 @@
 // elements, in an adapted-looking shear field (size ratio h_max/h_min = 300 across a curved layer), optimized
 // with the default options (Simpson rule, localization included, hint = an element of the edge's first vertex),
 // the vertices' metrics made once per vertex.
-// Micro benchmarks split the cost: one localization from a near hint, one ExpFrechet construction, and one
-// EdgeLengthFunction::evaluate at each order.
+// Micro benchmarks split the cost: one localization from a near hint, one ExpFrechet construction, one
+// EdgeLengthFunction::evaluate at each order, one kink analysis and one curvature along a direction.
 #include <benchmark/benchmark.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "cases/structured.hpp"
 #include "curve/edge_optimizer.hpp"
+#include "curve/kink_descent.hpp"
 #include "geom/sym_functions.hpp"
 #include "metric/analytic_metric.hpp"
 #include "metric/metric_field.hpp"
@@ -158,6 +160,84 @@ void BM_EdgeLengthEvaluate(benchmark::State& state) {
 }
 BENCHMARK_TEMPLATE(BM_EdgeLengthEvaluate, 2)->DenseRange(0, 2)->ArgName("order");
 BENCHMARK_TEMPLATE(BM_EdgeLengthEvaluate, 3)->DenseRange(0, 2)->ArgName("order");
+
+// The kink analysis at the straight midpoint of mesh edges (on back-mesh edges: the ring of sectors in 3D),
+// the gradient parts precomputed.
+template <int D>
+void BM_KinkDescent(benchmark::State& state) {
+  const EdgeCase<D>& c = edge_case<D>();
+  const Mesh<D>& mesh = c.field.back_mesh();
+  struct Input {
+    Localization<D> where;
+    Vec<D> direction;
+    EdgeLengthValue<D> value;
+  };
+  std::vector<Input> inputs;
+  for (std::size_t e = 0; e < c.edges.size(); e += c.edges.size() / 1024) {
+    const auto& edge = c.edges[e];
+    const Vec<D> a = mesh.vertex(edge[0]), b = mesh.vertex(edge[1]), node = 0.5 * (a + b);
+    const auto sample = c.field.sample(node, c.vertex_element[static_cast<std::size_t>(edge[0])]);
+    const EdgeLengthFunction<D> function(a, b, c.field.vertex_log_metric(edge[0]), c.field.vertex_log_metric(edge[1]),
+                                         default_optimizer_rule());
+    inputs.push_back({sample.where, (1 / norm(b - a)) * (b - a),
+                      function.evaluate(node, sample.log_metric, c.field.log_metric_gradient(sample.where.element),
+                                        EdgeLengthFunction<D>::Order::kGradient)});
+  }
+  std::size_t next = 0;
+  for (auto _ : state) {
+    const Input& input = inputs[next];
+    benchmark::DoNotOptimize(steepest_descent_on_kink(c.field, input.where, input.direction, input.value));
+    next = (next + 1) % inputs.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK_TEMPLATE(BM_KinkDescent, 2);
+BENCHMARK_TEMPLATE(BM_KinkDescent, 3);
+
+// The curvature of ℓ along one direction at the point of the last evaluation (a gradient there: its
+// decompositions are reused), as for a step along the steepest descent of a kink.
+template <int D>
+void BM_EdgeLengthCurvature(benchmark::State& state) {
+  const EdgeCase<D>& c = edge_case<D>();
+  const Mesh<D>& mesh = c.field.back_mesh();
+  struct Input {
+    EdgeLengthFunction<D> function;
+    Vec<D> node, direction;
+    SymMat<D> log_node, log_node_derivative;
+  };
+  std::vector<Input> inputs;
+  for (std::size_t e = 0; e < c.edges.size(); e += c.edges.size() / 1024) {
+    const auto& edge = c.edges[e];
+    const Vec<D> a = mesh.vertex(edge[0]), b = mesh.vertex(edge[1]), node = 0.5 * (a + b);
+    const auto sample = c.field.sample(node, c.vertex_element[static_cast<std::size_t>(edge[0])]);
+    const auto gradient = c.field.log_metric_gradient(sample.where.element);
+    // The axis least aligned with the edge, made normal to it: a direction of the bisector plane.
+    const Vec<D> m = (1 / norm(b - a)) * (b - a);
+    int axis = 0;
+    for (int i = 1; i < D; ++i)
+      if (std::abs(m[i]) < std::abs(m[axis])) axis = i;
+    Vec<D> direction{};
+    direction[axis] = 1;
+    direction = direction - dot(direction, m) * m;
+    direction = (1 / norm(direction)) * direction;
+    SymMat<D> derivative;
+    for (int i = 0; i < D; ++i) derivative += direction[i] * gradient[i];
+    inputs.push_back({EdgeLengthFunction<D>(a, b, c.field.vertex_log_metric(edge[0]), c.field.vertex_log_metric(edge[1]),
+                                            default_optimizer_rule()),
+                      node, direction, sample.log_metric, derivative});
+    inputs.back().function.evaluate(node, sample.log_metric, gradient, EdgeLengthFunction<D>::Order::kGradient);
+  }
+  std::size_t next = 0;
+  for (auto _ : state) {
+    const Input& input = inputs[next];
+    benchmark::DoNotOptimize(
+        input.function.curvature(input.node, input.log_node, input.direction, input.log_node_derivative));
+    next = (next + 1) % inputs.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK_TEMPLATE(BM_EdgeLengthCurvature, 2);
+BENCHMARK_TEMPLATE(BM_EdgeLengthCurvature, 3);
 
 template <int D>
 void BM_LogMetricGradient(benchmark::State& state) {
