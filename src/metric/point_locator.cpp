@@ -1,6 +1,8 @@
 #include "metric/point_locator.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <cstdint>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -52,10 +54,13 @@ double squared_distance_to_box(const std::array<Vec<D>, D>& corners, const Vec<D
   return distance2;
 }
 
+// Ids of locators, unique over the process's life (unlike addresses).
+std::atomic<std::uint64_t> last_locator_id{0};
+
 }  // namespace
 
 template <int D>
-PointLocator<D>::PointLocator(const Mesh<D>& mesh) : mesh_(mesh) {
+PointLocator<D>::PointLocator(const Mesh<D>& mesh) : mesh_(mesh), id_(++last_locator_id) {
   if (mesh.element_count() == 0) return;
   Vec<D> low = mesh.vertex(0), high = mesh.vertex(0);
   for (const auto& p : mesh.vertices())
@@ -193,20 +198,34 @@ bool PointLocator<D>::is_boundary_element(Index k) const {
 template <int D>
 Localization<D> PointLocator<D>::closest_boundary_element(const Vec<D>& x, Index near_element,
                                                           int near_face) const {
-  // Per thread and reused: no allocation per call (the locator serves several threads at once).
-  thread_local std::vector<Index> candidates, ball;
-  candidates.clear();
-  for (int i = 0; i < D; ++i) {
-    collect_ball(mesh_, mesh_.element(near_element)[face_vertices<D>(near_face)[i]], ball);
-    // Only boundary elements can win, and an element met again in a later ball cannot (closest_among
-    // keeps the first of equals): each boundary element once, at its first place in the balls' order.
-    for (Index k : ball)
-      if (is_boundary_element(k) && std::find(candidates.begin(), candidates.end(), k) == candidates.end())
-        candidates.push_back(k);
+  // Per thread, reused (no allocation per call; the locator serves several threads at once) and kept for
+  // the next call: an optimizer's trial points near a boundary leave the mesh through the same face again
+  // and again. Keyed by the locator's id, never reused by another locator.
+  thread_local struct {
+    std::uint64_t locator_id = 0;
+    Index element = kNoIndex;
+    int face = -1;
+    std::vector<Index> elements;
+  } candidates;
+  thread_local std::vector<Index> ball;
+  if (candidates.locator_id != id_ || candidates.element != near_element || candidates.face != near_face) {
+    candidates.locator_id = id_;
+    candidates.element = near_element;
+    candidates.face = near_face;
+    candidates.elements.clear();
+    for (int i = 0; i < D; ++i) {
+      collect_ball(mesh_, mesh_.element(near_element)[face_vertices<D>(near_face)[i]], ball);
+      // Only boundary elements can win, and an element met again in a later ball cannot (closest_among
+      // keeps the first of equals): each boundary element once, at its first place in the balls' order.
+      for (Index k : ball)
+        if (is_boundary_element(k) && std::find(candidates.elements.begin(), candidates.elements.end(), k) ==
+                                          candidates.elements.end())
+          candidates.elements.push_back(k);
+    }
   }
   // The exit face bounds the winner's distance from the start, so farther faces are skipped early.
   const double exit_distance2 = squared_distance_to_face<D>(face_corners(near_element, near_face), x);
-  return closest_among(x, candidates, exit_distance2);
+  return closest_among(x, candidates.elements, exit_distance2);
 }
 
 template <int D>

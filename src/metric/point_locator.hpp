@@ -11,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -29,7 +30,7 @@ struct Localization {
 template <int D>
 class PointLocator {
  public:
-  // The mesh must be P1-valid (positive elements), have its topology, and outlive the locator.
+  // The mesh must be P1-valid (positive elements), have its topology, and outlive the locator unchanged.
   explicit PointLocator(const Mesh<D>& mesh);
 
   // Thread-safe: reads only. `hint` is an element near x (e.g. where a nearby point was found).
@@ -61,6 +62,7 @@ class PointLocator {
   Localization<D> exhaustive_search(const Vec<D>& x) const;
 
   const Mesh<D>& mesh_;
+  std::uint64_t id_;  // keys the per-thread candidates of closest_boundary_element
   Vec<D> grid_origin_{};
   double grid_cell_size_ = 1;
   double coordinate_scale_ = 0;  // the largest coordinate magnitude of the mesh
