@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <deque>
 #include <limits>
 
@@ -223,9 +223,11 @@ Localization<D> PointLocator<D>::closest_boundary_element(const Vec<D>& x, Index
           candidates.elements.push_back(k);
     }
   }
-  // The exit face bounds the winner's distance from the start, so farther faces are skipped early.
-  const double exit_distance2 = squared_distance_to_face<D>(face_corners(near_element, near_face), x);
-  return closest_among(x, candidates.elements, exit_distance2);
+  // The exit face bounds the winner's distance from the start, so farther faces are skipped early; unless
+  // its element is not a candidate (a vertex pinching two parts of the mesh: its ball lists one part).
+  const auto& elements = candidates.elements;
+  if (std::find(elements.begin(), elements.end(), near_element) == elements.end()) return closest_among(x, elements);
+  return closest_among(x, elements, squared_distance_to_face<D>(face_corners(near_element, near_face), x));
 }
 
 template <int D>
