@@ -188,6 +188,28 @@ TEST(PointLocator, ClosestElementRuleIsTheReferenceOnAPerturbedSquare) {
   expect_closest_rule_matches_reference(perturbed(generate_square(12), 1.0 / 12, 9), 10);
 }
 
+TEST(PointLocator, ClosestElementRuleOfTwoLocatorsInTurnIsEachOnesReference) {
+  // The rule's candidates are kept per thread for the next call through the same face: calls alternating
+  // between two meshes through the same (element, face) must not take the other mesh's candidates.
+  const Mesh<3> coarse = generate_cube(4), fine = generate_cube(5);
+  const PointLocator<3> coarse_locator(coarse), fine_locator(fine);
+  int compared = 0;
+  for (Index k = 0; k < coarse.element_count(); ++k)
+    for (int face = 0; face <= 3; ++face) {
+      if (coarse.neighbor(k, face) != kNoIndex || fine.neighbor(k, face) != kNoIndex) continue;
+      for (const PointLocator<3>* locator : {&coarse_locator, &fine_locator, &coarse_locator}) {
+        const SimplexPoints<3> corners = locator->element_points(k);
+        const Vec3 x = 1.05 * corners[face_vertices<3>(face)[0]] - 0.05 * corners[face];
+        auto found = locator->closest_boundary_element(x, k, face);
+        auto expected = reference_closest_boundary_element(*locator, x, k, face);
+        ASSERT_EQ(found.element, expected.element);
+        for (int i = 0; i <= 3; ++i) ASSERT_EQ(found.barycentrics[i], expected.barycentrics[i]);
+        ++compared;
+      }
+    }
+  EXPECT_GT(compared, 100);
+}
+
 TEST(PointLocator, OutsidePointsGoToTheClosestBoundaryElement) {
   Mesh<3> mesh = generate_cube(5);
   PointLocator<3> locator(mesh);
