@@ -108,6 +108,48 @@ void BM_LocalizeFromNearHint(benchmark::State& state) {
 BENCHMARK_TEMPLATE(BM_LocalizeFromNearHint, 2);
 BENCHMARK_TEMPLATE(BM_LocalizeFromNearHint, 3);
 
+// Points just outside boundary faces (1% of the element's height beyond the face, at varied spots of the face:
+// its centroid, near a corner, near an edge), localized from the element of that face: the trial points of
+// boundary edges, which land just outside a convex back mesh and take the closest-element rule.
+template <int D>
+void BM_LocalizeOutside(benchmark::State& state) {
+  const EdgeCase<D>& c = edge_case<D>();
+  const PointLocator<D>& locator = c.field.locator();
+  const Mesh<D>& mesh = c.field.back_mesh();
+  struct Query {
+    Vec<D> point;
+    Index hint;
+  };
+  std::vector<Query> queries;
+  const std::array<std::array<double, D>, 3> spots = [] {
+    std::array<std::array<double, D>, 3> s{};
+    for (int i = 0; i < D; ++i) {
+      s[0][i] = 1.0 / D;                              // centroid
+      s[1][i] = i == 0 ? 0.9 : 0.1 / (D - 1);         // near a corner
+      s[2][i] = i == D - 1 ? 0.02 : 0.98 / (D - 1);   // near an edge (in 2D, near the other corner)
+    }
+    return s;
+  }();
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (int face = 0; face <= D; ++face) {
+      if (mesh.neighbor(k, face) != kNoIndex) continue;
+      const SimplexPoints<D> corners = locator.element_points(k);
+      const auto& spot = spots[queries.size() % spots.size()];
+      Vec<D> on_face{};
+      for (int i = 0; i < D; ++i) on_face += spot[i] * corners[face_vertices<D>(face)[i]];
+      queries.push_back({on_face - 0.01 * (corners[face] - on_face), k});
+    }
+  std::size_t next = 0;
+  for (auto _ : state) {
+    const Query& query = queries[next];
+    benchmark::DoNotOptimize(locator.localize(query.point, query.hint));
+    next = (next + 7919) % queries.size();  // a stride that leaves the cache
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK_TEMPLATE(BM_LocalizeOutside, 2);
+BENCHMARK_TEMPLATE(BM_LocalizeOutside, 3);
+
 template <int D>
 void BM_ExpFrechetConstruction(benchmark::State& state) {
   const EdgeCase<D>& c = edge_case<D>();

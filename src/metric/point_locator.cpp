@@ -1,7 +1,9 @@
 #include "metric/point_locator.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <deque>
 #include <limits>
 
@@ -21,10 +23,44 @@ int most_negative(const Barycentrics<D>& lambda) {
   return static_cast<int>(std::min_element(lambda.begin(), lambda.end()) - lambda.begin());
 }
 
+// The squared distance from x to the point of a boundary face closest to it, as the closest-element rule
+// ranks faces (the same arithmetic for every caller: ties are decided on these exact values).
+template <int D>
+double squared_distance_to_face(const std::array<Vec<D>, D>& corners, const Vec<D>& x) {
+  Vec<D> closest{};
+  if constexpr (D == 2) {
+    auto w = closest_on_segment<2>(corners[0], corners[1], x);
+    closest = w[0] * corners[0] + w[1] * corners[1];
+  } else {
+    auto w = closest_on_triangle(corners[0], corners[1], corners[2], x);
+    closest = w[0] * corners[0] + w[1] * corners[1] + w[2] * corners[2];
+  }
+  return dot(closest - x, closest - x);
+}
+
+// The squared distance from x to the bounding box of the corners: a lower bound of the distance to the face.
+template <int D>
+double squared_distance_to_box(const std::array<Vec<D>, D>& corners, const Vec<D>& x) {
+  double distance2 = 0;
+  for (int i = 0; i < D; ++i) {
+    double low = corners[0][i], high = corners[0][i];
+    for (int j = 1; j < D; ++j) {
+      low = std::min(low, corners[j][i]);
+      high = std::max(high, corners[j][i]);
+    }
+    double gap = std::max({low - x[i], x[i] - high, 0.0});
+    distance2 += gap * gap;
+  }
+  return distance2;
+}
+
+// Ids of locators, unique over the process's life (unlike addresses).
+std::atomic<std::uint64_t> last_locator_id{0};
+
 }  // namespace
 
 template <int D>
-PointLocator<D>::PointLocator(const Mesh<D>& mesh) : mesh_(mesh) {
+PointLocator<D>::PointLocator(const Mesh<D>& mesh) : mesh_(mesh), id_(++last_locator_id) {
   if (mesh.element_count() == 0) return;
   Vec<D> low = mesh.vertex(0), high = mesh.vertex(0);
   for (const auto& p : mesh.vertices())
@@ -43,6 +79,7 @@ PointLocator<D>::PointLocator(const Mesh<D>& mesh) : mesh_(mesh) {
     cells *= static_cast<std::size_t>(grid_cells_[i]);
   }
   grid_origin_ = low;
+  for (int i = 0; i < D; ++i) coordinate_scale_ = std::max({coordinate_scale_, std::abs(low[i]), std::abs(high[i])});
   grid_elements_.assign(cells, kNoIndex);
 
   auto cell_of = [&](const Vec<D>& x) {
@@ -152,37 +189,81 @@ Localization<D> PointLocator<D>::localize(const Vec<D>& x, Index hint) const {
 }
 
 template <int D>
-Localization<D> PointLocator<D>::closest_boundary_element(const Vec<D>& x, Index near_element,
-                                                          int near_face) const {
-  std::vector<Index> candidates, ball;
-  for (int i = 0; i < D; ++i) {
-    collect_ball(mesh_, mesh_.element(near_element)[face_vertices<D>(near_face)[i]], ball);
-    candidates.insert(candidates.end(), ball.begin(), ball.end());
-  }
-  return closest_among(x, candidates);
+bool PointLocator<D>::is_boundary_element(Index k) const {
+  for (int face = 0; face <= D; ++face)
+    if (mesh_.neighbor(k, face) == kNoIndex) return true;
+  return false;
 }
 
 template <int D>
-Localization<D> PointLocator<D>::closest_among(const Vec<D>& x, const std::vector<Index>& candidates) const {
+Localization<D> PointLocator<D>::closest_boundary_element(const Vec<D>& x, Index near_element,
+                                                          int near_face) const {
+  // Per thread, reused (no allocation per call; the locator serves several threads at once) and kept for
+  // the next call: an optimizer's trial points near a boundary leave the mesh through the same face again
+  // and again. Keyed by the locator's id, never reused by another locator.
+  thread_local struct {
+    std::uint64_t locator_id = 0;
+    Index element = kNoIndex;
+    int face = -1;
+    std::vector<Index> elements;
+  } candidates;
+  thread_local std::vector<Index> ball;
+  if (candidates.locator_id != id_ || candidates.element != near_element || candidates.face != near_face) {
+    candidates.locator_id = id_;
+    candidates.element = near_element;
+    candidates.face = near_face;
+    candidates.elements.clear();
+    for (int i = 0; i < D; ++i) {
+      collect_ball(mesh_, mesh_.element(near_element)[face_vertices<D>(near_face)[i]], ball);
+      // Only boundary elements can win, and an element met again in a later ball cannot (closest_among
+      // keeps the first of equals): each boundary element once, at its first place in the balls' order.
+      for (Index k : ball)
+        if (is_boundary_element(k) && std::find(candidates.elements.begin(), candidates.elements.end(), k) ==
+                                          candidates.elements.end())
+          candidates.elements.push_back(k);
+    }
+  }
+  // The exit face bounds the winner's distance from the start, so farther faces are skipped early; unless
+  // its element is not a candidate (a vertex pinching two parts of the mesh: its ball lists one part).
+  const auto& elements = candidates.elements;
+  if (std::find(elements.begin(), elements.end(), near_element) == elements.end()) return closest_among(x, elements);
+  return closest_among(x, elements, squared_distance_to_face<D>(face_corners(near_element, near_face), x));
+}
+
+template <int D>
+std::array<Vec<D>, D> PointLocator<D>::face_corners(Index k, int face) const {
+  std::array<Vec<D>, D> corners;
+  for (int i = 0; i < D; ++i) corners[i] = mesh_.vertex(mesh_.element(k)[face_vertices<D>(face)[i]]);
+  return corners;
+}
+
+template <int D>
+Localization<D> PointLocator<D>::closest_among(const Vec<D>& x, const std::vector<Index>& candidates,
+                                               double upper_bound2) const {
+  // A face whose bounding box is farther from x than the bound by more than the rounding of
+  // squared_distance_to_face (its closest point is a convex combination of the corners, so lies in the
+  // box up to a few ulps of the coordinates) has a distance above the bound: it can neither win nor tie.
+  double scale = coordinate_scale_;
+  for (int i = 0; i < D; ++i) scale = std::max(scale, std::abs(x[i]));
+  const double rounding = 1e-12 * (1 + scale);
+  auto farther_limit2 = [&](double bound2) {
+    double limit = std::sqrt(bound2) + rounding;
+    return limit * limit;
+  };
   Index best = kNoIndex;
   double best_distance2 = std::numeric_limits<double>::infinity();
+  double skip_beyond2 = farther_limit2(upper_bound2);
   for (Index k : candidates)
     for (int face = 0; face <= D; ++face) {
       if (mesh_.neighbor(k, face) != kNoIndex) continue;
-      std::array<Vec<D>, D> corners;
-      for (int i = 0; i < D; ++i) corners[i] = mesh_.vertex(mesh_.element(k)[face_vertices<D>(face)[i]]);
-      Vec<D> closest{};
-      if constexpr (D == 2) {
-        auto w = closest_on_segment<2>(corners[0], corners[1], x);
-        closest = w[0] * corners[0] + w[1] * corners[1];
-      } else {
-        auto w = closest_on_triangle(corners[0], corners[1], corners[2], x);
-        closest = w[0] * corners[0] + w[1] * corners[1] + w[2] * corners[2];
-      }
-      double distance2 = dot(closest - x, closest - x);
+      const std::array<Vec<D>, D> corners = face_corners(k, face);
+      if (squared_distance_to_box<D>(corners, x) > skip_beyond2) continue;
+      double distance2 = squared_distance_to_face<D>(corners, x);
+      // Strictly closer only: the first of equals keeps the win (part of the documented rule).
       if (distance2 < best_distance2) {
         best_distance2 = distance2;
         best = k;
+        skip_beyond2 = farther_limit2(std::min(best_distance2, upper_bound2));
       }
     }
   if (best == kNoIndex) return {};
@@ -195,11 +276,7 @@ Localization<D> PointLocator<D>::exhaustive_search(const Vec<D>& x) const {
   for (Index k = 0; k < mesh_.element_count(); ++k) {
     auto lambda = barycentric_coordinates<D>(element_points(k), x);
     if (lambda[most_negative<D>(lambda)] >= -kInsideTolerance) return {k, lambda, true};
-    for (int face = 0; face <= D; ++face)
-      if (mesh_.neighbor(k, face) == kNoIndex) {
-        boundary_elements.push_back(k);
-        break;
-      }
+    if (is_boundary_element(k)) boundary_elements.push_back(k);
   }
   return closest_among(x, boundary_elements);
 }

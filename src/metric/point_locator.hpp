@@ -10,6 +10,9 @@
 // differentiable) just outside the mesh.
 #pragma once
 
+#include <array>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "geom/barycentric.hpp"
@@ -27,7 +30,7 @@ struct Localization {
 template <int D>
 class PointLocator {
  public:
-  // The mesh must be P1-valid (positive elements), have its topology, and outlive the locator.
+  // The mesh must be P1-valid (positive elements), have its topology, and outlive the locator unchanged.
   explicit PointLocator(const Mesh<D>& mesh);
 
   // Thread-safe: reads only. `hint` is an element near x (e.g. where a nearby point was found).
@@ -35,6 +38,11 @@ class PointLocator {
 
   // Whether barycentrics put their point in the element, as the walk decides it (faces included).
   static bool contains(const Barycentrics<D>& lambda);
+
+  // The closest-element rule for a point x that left the mesh through boundary face `near_face` of
+  // `near_element`: among the elements around the vertices of that face (the balls of its vertices, in
+  // order), the one whose boundary face is closest to x; of equals, the first met.
+  Localization<D> closest_boundary_element(const Vec<D>& x, Index near_element, int near_face) const;
 
   const Mesh<D>& mesh() const { return mesh_; }
   SimplexPoints<D> element_points(Index k) const;
@@ -44,15 +52,20 @@ class PointLocator {
   // Walks from `start`; returns the element reached and, when the walk left the mesh, the
   // boundary face it left through (else -1).
   Index walk(const Vec<D>& x, Index start, Barycentrics<D>& lambda, int& exit_face) const;
-  Localization<D> closest_boundary_element(const Vec<D>& x, Index near_element, int near_face) const;
-  // The element whose boundary face is closest to x, among `candidates`.
-  Localization<D> closest_among(const Vec<D>& x, const std::vector<Index>& candidates) const;
+  bool is_boundary_element(Index k) const;
+  // The element whose boundary face is closest to x, among `candidates` (the first of equals), given a bound
+  // of the winner's squared distance (e.g. that of one of their faces).
+  Localization<D> closest_among(const Vec<D>& x, const std::vector<Index>& candidates,
+                                double upper_bound2 = std::numeric_limits<double>::infinity()) const;
+  std::array<Vec<D>, D> face_corners(Index k, int face) const;
   // Every element, then every boundary face: the last resort when a walk cycles.
   Localization<D> exhaustive_search(const Vec<D>& x) const;
 
   const Mesh<D>& mesh_;
+  std::uint64_t id_;  // keys the per-thread candidates of closest_boundary_element
   Vec<D> grid_origin_{};
   double grid_cell_size_ = 1;
+  double coordinate_scale_ = 0;  // the largest coordinate magnitude of the mesh
   std::array<int, D> grid_cells_{};
   std::vector<Index> grid_elements_;
 };

@@ -6,6 +6,7 @@
 
 #include "cases/structured.hpp"
 #include "geom/closest_point.hpp"
+#include "mesh/ball_and_shell.hpp"
 
 namespace hocav {
 namespace {
@@ -77,6 +78,136 @@ TEST(PointLocator, FindsPointsAcrossTheNotchOfANonConvexDomain) {
   }
   l_shape.build_topology();
   expect_localizes_inside_points(l_shape, 3);
+}
+
+// The closest-element rule as first written, plainly: the balls of the exit face's vertices one after the
+// other (an element in two balls is met twice), every boundary face of each, the first strictly closest wins.
+template <int D>
+Localization<D> reference_closest_boundary_element(const PointLocator<D>& locator, const Vec<D>& x, Index near_element,
+                                                   int near_face) {
+  const Mesh<D>& mesh = locator.mesh();
+  std::vector<Index> candidates, ball;
+  for (int i = 0; i < D; ++i) {
+    collect_ball(mesh, mesh.element(near_element)[face_vertices<D>(near_face)[i]], ball);
+    candidates.insert(candidates.end(), ball.begin(), ball.end());
+  }
+  Index best = kNoIndex;
+  double best_distance2 = std::numeric_limits<double>::infinity();
+  for (Index k : candidates)
+    for (int face = 0; face <= D; ++face) {
+      if (mesh.neighbor(k, face) != kNoIndex) continue;
+      std::array<Vec<D>, D> corners;
+      for (int i = 0; i < D; ++i) corners[i] = mesh.vertex(mesh.element(k)[face_vertices<D>(face)[i]]);
+      Vec<D> closest{};
+      if constexpr (D == 2) {
+        auto w = closest_on_segment<2>(corners[0], corners[1], x);
+        closest = w[0] * corners[0] + w[1] * corners[1];
+      } else {
+        auto w = closest_on_triangle(corners[0], corners[1], corners[2], x);
+        closest = w[0] * corners[0] + w[1] * corners[1] + w[2] * corners[2];
+      }
+      double distance2 = dot(closest - x, closest - x);
+      if (distance2 < best_distance2) {
+        best_distance2 = distance2;
+        best = k;
+      }
+    }
+  return {best, barycentric_coordinates<D>(locator.element_points(best), x), false};
+}
+
+// Points around every boundary face (k, f) — just outside and just inside at random spots, and on a lattice of
+// exact binary offsets from its vertices, where faces tie exactly — give, from (k, f), bit for bit the reference's
+// element and barycentrics.
+template <int D>
+void expect_closest_rule_matches_reference(const Mesh<D>& mesh, std::uint32_t seed) {
+  PointLocator<D> locator(mesh);
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), offset(-0.3, 0.3);
+  int compared = 0;
+  auto expect_same = [&](const Vec<D>& x, Index k, int face) {
+    auto found = locator.closest_boundary_element(x, k, face);
+    auto expected = reference_closest_boundary_element(locator, x, k, face);
+    ASSERT_EQ(found.element, expected.element);
+    EXPECT_FALSE(found.inside);
+    for (int i = 0; i <= D; ++i) ASSERT_EQ(found.barycentrics[i], expected.barycentrics[i]);  // bit for bit
+    ++compared;
+  };
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (int face = 0; face <= D; ++face) {
+      if (mesh.neighbor(k, face) != kNoIndex) continue;
+      const SimplexPoints<D> corners = locator.element_points(k);
+      const double h = norm(corners[face_vertices<D>(face)[1]] - corners[face_vertices<D>(face)[0]]);
+      for (int trial = 0; trial < 4; ++trial) {
+        Vec<D> x{};
+        double sum = 0;
+        Barycentrics<D> weights;
+        for (auto& w : weights) sum += (w = -std::log(unit(random) + 1e-300));
+        for (int i = 0; i <= D; ++i) x += (weights[i] / sum) * corners[i];
+        // Pushed across the face, a little or a lot, or left inside.
+        const double push = trial == 0 ? -0.1 : trial == 1 ? 0.01 : trial == 2 ? 0.3 : 2.0;
+        expect_same(x + push * (x - corners[face]), k, face);
+      }
+      for (int i = 0; i < D; ++i) {
+        Vec<D> vertex = corners[face_vertices<D>(face)[i]];
+        Vec<D> step;
+        for (int j = 0; j < D; ++j) step[j] = std::round(offset(random) * 64) / 64 * h;
+        expect_same(vertex + step, k, face);
+        for (int j = 0; j < D; ++j) step[j] = std::round(offset(random) * 8) / 8 * h;
+        expect_same(vertex + step, k, face);
+      }
+    }
+  EXPECT_GT(compared, 300);
+}
+
+// Interior and boundary vertices moved at random by up to a tenth of the cell (the boundary no longer flat, some
+// of it concave); elements stay positive.
+template <int D>
+Mesh<D> perturbed(Mesh<D> mesh, double cell, std::uint32_t seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> shift(-0.1 * cell, 0.1 * cell);
+  for (Index v = 0; v < mesh.vertex_count(); ++v)
+    for (int i = 0; i < D; ++i) mesh.vertex(v)[i] += shift(random);
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    const auto& element = mesh.element(k);
+    std::array<Vec<D>, D> edges;
+    for (int i = 0; i < D; ++i) edges[i] = mesh.vertex(element[i + 1]) - mesh.vertex(element[0]);
+    if constexpr (D == 2)
+      EXPECT_GT(determinant(edges[0], edges[1]), 0);
+    else
+      EXPECT_GT(determinant(edges[0], edges[1], edges[2]), 0);
+  }
+  return mesh;
+}
+
+TEST(PointLocator, ClosestElementRuleIsTheReferenceOnTheCube) { expect_closest_rule_matches_reference(generate_cube(5), 5); }
+TEST(PointLocator, ClosestElementRuleIsTheReferenceOnTheSquare) { expect_closest_rule_matches_reference(generate_square(12), 6); }
+TEST(PointLocator, ClosestElementRuleIsTheReferenceOnAPerturbedCube) {
+  expect_closest_rule_matches_reference(perturbed(generate_cube(5), 0.2, 7), 8);
+}
+TEST(PointLocator, ClosestElementRuleIsTheReferenceOnAPerturbedSquare) {
+  expect_closest_rule_matches_reference(perturbed(generate_square(12), 1.0 / 12, 9), 10);
+}
+
+TEST(PointLocator, ClosestElementRuleOfTwoLocatorsInTurnIsEachOnesReference) {
+  // The rule's candidates are kept per thread for the next call through the same face: calls alternating
+  // between two meshes through the same (element, face) must not take the other mesh's candidates.
+  const Mesh<3> coarse = generate_cube(4), fine = generate_cube(5);
+  const PointLocator<3> coarse_locator(coarse), fine_locator(fine);
+  int compared = 0;
+  for (Index k = 0; k < coarse.element_count(); ++k)
+    for (int face = 0; face <= 3; ++face) {
+      if (coarse.neighbor(k, face) != kNoIndex || fine.neighbor(k, face) != kNoIndex) continue;
+      for (const PointLocator<3>* locator : {&coarse_locator, &fine_locator, &coarse_locator}) {
+        const SimplexPoints<3> corners = locator->element_points(k);
+        const Vec3 x = 1.05 * corners[face_vertices<3>(face)[0]] - 0.05 * corners[face];
+        auto found = locator->closest_boundary_element(x, k, face);
+        auto expected = reference_closest_boundary_element(*locator, x, k, face);
+        ASSERT_EQ(found.element, expected.element);
+        for (int i = 0; i <= 3; ++i) ASSERT_EQ(found.barycentrics[i], expected.barycentrics[i]);
+        ++compared;
+      }
+    }
+  EXPECT_GT(compared, 100);
 }
 
 TEST(PointLocator, OutsidePointsGoToTheClosestBoundaryElement) {
