@@ -7,20 +7,13 @@
 #include <random>
 #include <string>
 
+#include "../metric/metric_test_support.hpp"
 #include "cases/structured.hpp"
 #include "curve/edge_optimizer.hpp"
 #include "metric/analytic_metric.hpp"
 
 namespace hocav {
 namespace {
-
-template <int D>
-Mesh<D> unit_mesh(int cells) {
-  if constexpr (D == 2)
-    return generate_square(cells);
-  else
-    return generate_cube(cells);
-}
 
 template <int D>
 MetricField<D> shear_field(const Mesh<D>& mesh) {
@@ -114,7 +107,7 @@ void check_kink(const MetricField<D>& field, const Vec<D>& pa, const Vec<D>& pb,
 // edges get the domain's side.
 template <int D>
 void check_back_mesh_edges(int cells, int min_minima, int min_descents) {
-  Mesh<D> mesh = unit_mesh<D>(cells);
+  Mesh<D> mesh = metric_test::unit_mesh<D>(cells);
   const MetricField<D> field = shear_field<D>(mesh);
   mesh.build_edges();
   KinkCounts counts;

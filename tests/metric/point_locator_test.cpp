@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "cases/structured.hpp"
@@ -18,23 +19,28 @@ Vec<D> combination(const SimplexPoints<D>& points, const Barycentrics<D>& lambda
   return x;
 }
 
+// The squared distance from x to face `face` of element k, computed plainly (as the closest-element rule
+// was first written).
+template <int D>
+double squared_distance_to_face(const Mesh<D>& mesh, Index k, int face, const Vec<D>& x) {
+  std::array<Vec<D>, D> c;
+  for (int i = 0; i < D; ++i) c[i] = mesh.vertex(mesh.element(k)[face_vertices<D>(face)[i]]);
+  Vec<D> closest{};
+  if constexpr (D == 2) {
+    auto w = closest_on_segment<2>(c[0], c[1], x);
+    closest = w[0] * c[0] + w[1] * c[1];
+  } else {
+    auto w = closest_on_triangle(c[0], c[1], c[2], x);
+    closest = w[0] * c[0] + w[1] * c[1] + w[2] * c[2];
+  }
+  return dot(closest - x, closest - x);
+}
+
 template <int D>
 double distance_to_boundary(const Mesh<D>& mesh, Index k, const Vec<D>& x) {
   double best = 1e300;
-  for (int face = 0; face <= D; ++face) {
-    if (mesh.neighbor(k, face) != kNoIndex) continue;
-    std::array<Vec<D>, D> c;
-    for (int i = 0; i < D; ++i) c[i] = mesh.vertex(mesh.element(k)[face_vertices<D>(face)[i]]);
-    Vec<D> closest;
-    if constexpr (D == 2) {
-      auto w = closest_on_segment<2>(c[0], c[1], x);
-      closest = w[0] * c[0] + w[1] * c[1];
-    } else {
-      auto w = closest_on_triangle(c[0], c[1], c[2], x);
-      closest = w[0] * c[0] + w[1] * c[1] + w[2] * c[2];
-    }
-    best = std::min(best, norm(closest - x));
-  }
+  for (int face = 0; face <= D; ++face)
+    if (mesh.neighbor(k, face) == kNoIndex) best = std::min(best, std::sqrt(squared_distance_to_face(mesh, k, face, x)));
   return best;
 }
 
@@ -96,17 +102,7 @@ Localization<D> reference_closest_boundary_element(const PointLocator<D>& locato
   for (Index k : candidates)
     for (int face = 0; face <= D; ++face) {
       if (mesh.neighbor(k, face) != kNoIndex) continue;
-      std::array<Vec<D>, D> corners;
-      for (int i = 0; i < D; ++i) corners[i] = mesh.vertex(mesh.element(k)[face_vertices<D>(face)[i]]);
-      Vec<D> closest{};
-      if constexpr (D == 2) {
-        auto w = closest_on_segment<2>(corners[0], corners[1], x);
-        closest = w[0] * corners[0] + w[1] * corners[1];
-      } else {
-        auto w = closest_on_triangle(corners[0], corners[1], corners[2], x);
-        closest = w[0] * corners[0] + w[1] * corners[1] + w[2] * corners[2];
-      }
-      double distance2 = dot(closest - x, closest - x);
+      const double distance2 = squared_distance_to_face(mesh, k, face, x);
       if (distance2 < best_distance2) {
         best_distance2 = distance2;
         best = k;
