@@ -7,13 +7,13 @@
 #include <benchmark/benchmark.h>
 
 #include <array>
-#include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "cases/structured.hpp"
 #include "curve/edge_optimizer.hpp"
 #include "curve/kink_descent.hpp"
+#include "geom/orthonormal_complement.hpp"
 #include "geom/sym_functions.hpp"
 #include "metric/analytic_metric.hpp"
 #include "metric/metric_field.hpp"
@@ -253,15 +253,7 @@ void BM_EdgeLengthCurvature(benchmark::State& state) {
     const Vec<D> a = mesh.vertex(edge[0]), b = mesh.vertex(edge[1]), node = 0.5 * (a + b);
     const auto sample = c.field.sample(node, c.vertex_element[static_cast<std::size_t>(edge[0])]);
     const auto gradient = c.field.log_metric_gradient(sample.where.element);
-    // The axis least aligned with the edge, made normal to it: a direction of the bisector plane.
-    const Vec<D> m = (1 / norm(b - a)) * (b - a);
-    int axis = 0;
-    for (int i = 1; i < D; ++i)
-      if (std::abs(m[i]) < std::abs(m[axis])) axis = i;
-    Vec<D> direction{};
-    direction[axis] = 1;
-    direction = direction - dot(direction, m) * m;
-    direction = (1 / norm(direction)) * direction;
+    const Vec<D> direction = orthonormal_complement<D>((1 / norm(b - a)) * (b - a))[0];  // in the bisector plane
     SymMat<D> derivative;
     for (int i = 0; i < D; ++i) derivative += direction[i] * gradient[i];
     inputs.push_back({EdgeLengthFunction<D>(a, b, c.field.vertex_log_metric(edge[0]), c.field.vertex_log_metric(edge[1]),

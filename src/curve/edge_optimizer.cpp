@@ -6,6 +6,7 @@
 
 #include "base/lazy_slot.hpp"
 #include "curve/kink_descent.hpp"
+#include "geom/orthonormal_complement.hpp"
 
 namespace hocav {
 namespace {
@@ -35,24 +36,6 @@ double fraction_inside(const typename MetricField<D>::ElementFrame& frame, const
   for (int i = 0; i <= D; ++i)
     if (at_y[i] < 0 && at_x[i] > at_y[i]) fraction = std::min(fraction, std::max(at_x[i], 0.0) / (at_x[i] - at_y[i]));
   return fraction;
-}
-
-// An orthonormal basis of the bisector plane of the unit edge direction m.
-template <int D>
-std::array<Vec<D>, D - 1> plane_basis(const Vec<D>& m) {
-  if constexpr (D == 2) {
-    return {Vec2{{-m[1], m[0]}}};
-  } else {
-    // Against the axis least aligned with m, for a well-conditioned cross product.
-    int axis = 0;
-    for (int i = 1; i < 3; ++i)
-      if (std::abs(m[i]) < std::abs(m[axis])) axis = i;
-    Vec3 helper{};
-    helper[axis] = 1;
-    Vec3 first = cross(m, helper);
-    first = (1 / norm(first)) * first;
-    return {first, cross(m, first)};
-  }
 }
 
 // The Newton step of ℓ in the bisector plane (spanned by `basis`): gradient and Hessian in the plane, the
@@ -112,7 +95,7 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
   // The node moves in the bisector plane of the edge: sliding it along the edge changes only the
   // parametrization, which the 3-point rule cannot see (a flat valley in a uniform metric).
   const Vec<D> direction = (1 / edge_size) * (b - a);
-  const std::array<Vec<D>, D - 1> basis = plane_basis(direction);
+  const std::array<Vec<D>, D - 1> basis = orthonormal_complement(direction);
   auto onto_plane = [&](const Vec<D>& v) { return v - dot(v, direction) * direction; };
   const Vec<D> first = midpoint + onto_plane(start - midpoint);
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <utility>
 
+#include "geom/orthonormal_complement.hpp"
+
 namespace hocav {
 namespace {
 
@@ -34,26 +36,13 @@ bool solve(std::array<std::array<double, N>, N>& a, std::array<double, N>& b) {
   return true;
 }
 
-// An orthonormal basis of the plane orthogonal to the unit vector n.
-template <int D>
-std::array<Vec<D>, D - 1> tangent_basis(const Vec<D>& n) {
-  if constexpr (D == 2) {
-    return {Vec2{{-n[1], n[0]}}};
-  } else {
-    const Vec3 helper = std::abs(n[0]) < 0.6 ? Vec3{{1, 0, 0}} : Vec3{{0, 1, 0}};
-    Vec3 first = cross(n, helper);
-    first *= 1 / norm(first);
-    return {first, cross(n, first)};
-  }
-}
-
 // One fit in the frame of `normal`: slope terms x (and y), then the quadratic ones.
 template <int D>
 bool fit_once(const Vec<D>& point, std::span<const Vec<D>> neighbors, Vec<D>& normal) {
   constexpr int K = D - 1;                        // tangent coordinates
   constexpr int kUnknowns = K + K * (K + 1) / 2;  // slopes, then x², (xy, y²)
   if (static_cast<int>(neighbors.size()) < kUnknowns + 1) return false;
-  const auto tangents = tangent_basis(normal);
+  const auto tangents = orthonormal_complement(normal);
   // Coordinates in units of the mean neighbour distance keep the system well scaled.
   double scale = 0;
   for (const Vec<D>& q : neighbors) scale += norm(q - point);

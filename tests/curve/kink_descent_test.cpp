@@ -10,6 +10,7 @@
 #include "../metric/metric_test_support.hpp"
 #include "cases/structured.hpp"
 #include "curve/edge_optimizer.hpp"
+#include "geom/orthonormal_complement.hpp"
 #include "metric/analytic_metric.hpp"
 
 namespace hocav {
@@ -29,13 +30,11 @@ MetricField<D> shear_field(const Mesh<D>& mesh) {
 template <int D>
 std::vector<Vec<D>> plane_directions(const Vec<D>& m, int count) {
   std::vector<Vec<D>> directions;
+  const auto basis = orthonormal_complement(m);
   if constexpr (D == 2) {
-    directions = {Vec2{{-m[1], m[0]}}, Vec2{{m[1], -m[0]}}};
+    directions = {basis[0], -basis[0]};
   } else {
-    Vec3 helper = std::abs(m[0]) < 0.6 ? Vec3{{1, 0, 0}} : Vec3{{0, 1, 0}};
-    Vec3 e1 = cross(m, helper);
-    e1 = (1 / norm(e1)) * e1;
-    const Vec3 e2 = cross(m, e1);
+    const Vec3 &e1 = basis[0], &e2 = basis[1];
     for (int k = 0; k < count; ++k) {
       const double angle = 2 * std::numbers::pi * k / count;
       directions.push_back(std::cos(angle) * e1 + std::sin(angle) * e2);
