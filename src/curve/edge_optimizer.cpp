@@ -110,9 +110,9 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
   // ℓ at an accepted node with what its next step needs. On a kink, the Newton model of one element misses
   // the other elements' slopes: the gradient parts give them all (kink_descent.hpp). When none descends
   // beyond round-off (a strict minimum, or a stationary point such as the straight edge in a uniform
-  // metric, where a descent could only be of second order) the node is taken as optimal and no Hessian is needed; else the next step follows the steepest descent,
-  // in the model of the element it enters.
-  // On a kink only the curvature along the step is needed, not the Hessian.
+  // metric, where a descent could only be of second order) the node is taken as optimal; else the next step
+  // follows the steepest descent, in the model of the element it enters, which needs the curvature along
+  // it only, not the Hessian.
   EdgeLengthValue<D> value;
   KinkDescent<D> kink;
   SymMat<D> node_log_metric;
@@ -232,17 +232,16 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
         moved = norm(trial - result.node);
         arrive(trial, trial_sample);
         break;
-      } else {
-        const double increase = trial_length - value.length;
-        if (rejected_increase > 0 && rejected_increase < 1e-3 * value.length && increase > 0.25 * rejected_increase)
-          break;
-        rejected_increase = increase;
-        if (halving == 0) {
-          const double leaving = fraction_inside(frame_of(result.back_element), result.node, trial);
-          if (leaving > kLeastFaceFraction && leaving < 1) {
-            step = (2 * leaving) * (trial - result.node);  // halved by the loop
-            rejected_increase = 0;
-          }
+      }
+      const double increase = trial_length - value.length;
+      if (rejected_increase > 0 && rejected_increase < 1e-3 * value.length && increase > 0.25 * rejected_increase)
+        break;
+      rejected_increase = increase;
+      if (halving == 0) {
+        const double leaving = fraction_inside(frame_of(result.back_element), result.node, trial);
+        if (leaving > kLeastFaceFraction && leaving < 1) {
+          step = (2 * leaving) * (trial - result.node);  // halved by the loop
+          rejected_increase = 0;
         }
       }
     }
