@@ -9,8 +9,8 @@ namespace {
 // Barycentrics this close to 0 put X on the face: the test then holds within ~1e-10 of the back
 // element's size of X, far below the optimizer's step tolerance.
 constexpr double kOnFace = 1e-10;
-// The kink's face must cross the bisector plane at a clear angle (|cos| of edge and face above this),
-// else the sectors degenerate.
+// The kink must cross the bisector plane at a clear angle, else the sectors degenerate: a back-mesh edge
+// makes |cos| above this with the edge, a face's normal |sin| above this.
 constexpr double kTransverse = 0.5;
 // A closed ring around a back-mesh edge has a handful of elements; more means a corrupt mesh.
 constexpr int kMaxRing = 64;
