@@ -16,12 +16,6 @@ namespace {
 // tolerance). A slope above it gains at most 5e-9 ℓ over the longest step (|AB|/2).
 constexpr double kKinkSlopeMargin = 1e-8;
 
-template <int D>
-double high_precision_length(const MetricField<D>& field, const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b,
-                             const Vec<D>& node, Index hint) {
-  return EdgeLengthFunction<D>(a, b, high_precision_rule()).length(node, field.log_metric_at(node, hint));
-}
-
 // A rejected trial is retried at its element's face only if that is this far along the step: from on a face
 // (a kink iterate), the step out of it is left to halving.
 constexpr double kLeastFaceFraction = 1e-3;
@@ -265,25 +259,25 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
   }
 
   if (options.measure_gain) {
-    result.straight_length = high_precision_length(field, end_a, end_b, midpoint, hint);
-    result.optimized_length = high_precision_length(field, end_a, end_b, result.node, result.back_element);
+    result.straight_length = high_precision_edge_length(field, end_a, end_b, midpoint, hint);
+    result.optimized_length = high_precision_edge_length(field, end_a, end_b, result.node, result.back_element);
     result.gain = 1 - result.optimized_length / result.straight_length;
   }
   return result;
 }
 
 template <int D>
-double high_precision_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b,
-                                  const SymMat<D>& log_a, const SymMat<D>& log_b, const Vec<D>& node, Index hint) {
-  return high_precision_length(field, edge_endpoint(a, log_a), edge_endpoint(b, log_b), node, hint);
+double high_precision_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b,
+                                  const Vec<D>& node, Index hint) {
+  return EdgeLengthFunction<D>(a, b, high_precision_rule()).length(node, field.log_metric_at(node, hint));
 }
 
 #define HOCAV_INSTANTIATE(D)                                                                                        \
   template EdgeOptimization<D> optimize_edge_length(const MetricField<D>&, const EdgeEndpoint<D>&,                 \
                                                     const EdgeEndpoint<D>&, const Vec<D>&, Index,                    \
                                                     const EdgeOptimizerOptions&);                                   \
-  template double high_precision_edge_length(const MetricField<D>&, const Vec<D>&, const Vec<D>&, const SymMat<D>&, \
-                                             const SymMat<D>&, const Vec<D>&, Index);
+  template double high_precision_edge_length(const MetricField<D>&, const EdgeEndpoint<D>&, const EdgeEndpoint<D>&, \
+                                             const Vec<D>&, Index);
 HOCAV_INSTANTIATE(2)
 HOCAV_INSTANTIATE(3)
 #undef HOCAV_INSTANTIATE

@@ -64,8 +64,14 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<
 // High-precision ℓ of the P2 edge (a, node, b) in the closed form of eq 12 (metric from the back
 // mesh at the node only).
 template <int D>
+double high_precision_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b,
+                                  const Vec<D>& node, Index hint = kNoIndex);
+// The same from the vertices' positions and log-metrics.
+template <int D>
 double high_precision_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b,
                                   const SymMat<D>& log_a, const SymMat<D>& log_b, const Vec<D>& node,
-                                  Index hint = kNoIndex);
+                                  Index hint = kNoIndex) {
+  return high_precision_edge_length(field, edge_endpoint(a, log_a), edge_endpoint(b, log_b), node, hint);
+}
 
 }  // namespace hocav
