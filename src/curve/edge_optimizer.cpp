@@ -172,21 +172,32 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
       convex_model = shift == 0;
     }
     // On the displacement bound, a step out of it would be clipped back onto the bound in another direction,
-    // which need not descend: it is cut to the bound's tangent, as far as the model along that tangent goes;
-    // where the tangent does not descend the node is optimal on the bound.
+    // which need not descend: the node moves along the bound instead (in 3D; the 2D bound is two points), the
+    // way that descends in the model of its element, as far as that model goes (trials are clipped onto the
+    // bound). Where neither way descends the node is optimal on the bound.
     const Vec<D> outward = result.node - midpoint;
     const double radius = norm(outward);
-    if (radius >= (1 - 1e-9) * max_displacement && dot(step, outward) > 0) {
-      step = step - (dot(step, outward) / (radius * radius)) * outward;
-      const double tangent_size = norm(step);
-      if (!(tangent_size > 0)) break;
-      const Vec<D> tangent = (1 / tangent_size) * step;
-      const double slope = slope_along(tangent), curvature = curvature_along(tangent);
-      if (!(slope < 0)) break;
-      convex_model = curvature > 0;
-      const double length = convex_model ? std::min(tangent_size, -slope / curvature) : tangent_size;
-      step = length * tangent;
-      predicted = -(slope * length + 0.5 * curvature * length * length);
+    const bool along_bound = radius >= (1 - 1e-9) * max_displacement && dot(step, outward) > 0;
+    if (along_bound) {
+      if constexpr (D == 2) {
+        break;
+      } else {
+        Vec<D> tangent = step - (dot(step, outward) / (radius * radius)) * outward;
+        // A step straight out (a kink's d* continued from the midpoint): the tangent is the plane's other axis.
+        if (norm(tangent) <= 1e-12 * norm(step)) tangent = cross(direction, outward);
+        tangent = (1 / norm(tangent)) * tangent;
+        double slope = slope_along(tangent);
+        if (slope > 0) tangent = -1.0 * tangent, slope = -slope;
+        if (!(slope < 0)) break;
+        // Along the bound's arc, s from the node, the node also moves in by s²/(2r): ℓ gains −(∂ℓ/∂r) s²/(2r)
+        // over the tangent line's model, a curvature that bounds the step when ℓ pulls outward.
+        const double curvature =
+            curvature_along(tangent) + std::max(0.0, -slope_along((1 / radius) * outward)) / radius;
+        convex_model = curvature > 0;
+        const double length = convex_model ? std::min(max_displacement, -slope / curvature) : max_displacement;
+        step = length * tangent;
+        predicted = -(slope * length + 0.5 * curvature * length * length);
+      }
     }
     const double step_size = norm(step);
     const bool along_kink = kink.analysed;
@@ -231,7 +242,8 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
       if (rejected_increase > 0 && rejected_increase < 1e-3 * value.length && increase > 0.25 * rejected_increase)
         break;
       rejected_increase = increase;
-      if (halving == 0) {
+      // (Not along the bound: the segment to a trial clipped onto it cuts inside, where ℓ grows fast.)
+      if (halving == 0 && !along_bound) {
         const double leaving = fraction_inside(frame_of(result.back_element), result.node, trial);
         if (leaving > kLeastFaceFraction && leaving < 1) {
           step = (2 * leaving) * (trial - result.node);  // halved by the loop

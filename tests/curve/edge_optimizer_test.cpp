@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "cases/structured.hpp"
 #include "geom/sym_functions.hpp"
@@ -115,6 +116,47 @@ TEST(EdgeOptimizer, AnisotropyTenThousandDoesNotBreakIt) {
   EXPECT_GT(result.gain, 0.5);
   Vec2 brute = shear.brute_force_minimum();
   EXPECT_LE(result.length, shear.objective(brute) * (1 + 1e-8));
+}
+
+// With a small displacement bound (|X − M| ≤ 0.05 |AB|), edges of the shear layer whose optimum lies beyond
+// it end on the bound, at a local minimum over the bounded disk: no point of the bound's circle nearby
+// (±3° in steps of 0.25°) and none a little inside is shorter by more than round-off. (Farther along the
+// circle, across kinks, other local minima can be deeper.) Before steps out of the bound were turned
+// along it, 40% of these edges stopped wherever the clipped trials first failed.
+TEST(EdgeOptimizer, AnOptimumBeyondTheDisplacementBoundEndsOnItAtALocalMinimum) {
+  Mesh<3> mesh = generate_cube(8);
+  AnalyticMetricSpec spec;
+  spec.name = "shear-sphere";
+  spec.h_max = 0.1;
+  spec.h_min = spec.h_max / 300;
+  spec.width = 0.1;
+  MetricField<3> field(mesh, analytic_metric_at_vertices<3>(spec, mesh));
+  mesh.build_edges();
+  EdgeOptimizerOptions options;
+  options.max_displacement = 0.05;
+  int on_bound = 0;
+  for (Index e = 0; e < mesh.edge_count(); ++e) {
+    const auto [a, b] = mesh.edge_vertices(e);
+    const Vec3 pa = mesh.vertex(a), pb = mesh.vertex(b), midpoint = 0.5 * (pa + pb);
+    const double size = norm(pb - pa), bound = options.max_displacement * size;
+    const auto result = optimize_edge_length<3>(field, pa, pb, field.vertex_log_metric(a), field.vertex_log_metric(b),
+                                                midpoint, mesh.vertex_element(a), options);
+    const Vec3 offset = result.node - midpoint;
+    if (std::abs(norm(offset) - bound) > 1e-9 * size) continue;
+    ++on_bound;
+    const EdgeLengthFunction<3> f(pa, pb, field.vertex_log_metric(a), field.vertex_log_metric(b),
+                                  default_optimizer_rule());
+    auto length_at = [&](const Vec3& x) { return f.length(x, field.log_metric_at(x, result.back_element)); };
+    const Vec3 radial = (1 / norm(offset)) * offset, around = cross((1 / size) * (pb - pa), radial);
+    for (int quarter = -12; quarter <= 12; ++quarter) {
+      const double angle = 0.25 * quarter * std::numbers::pi / 180;
+      for (double radius : {bound, 0.995 * bound}) {
+        const Vec3 x = midpoint + radius * (std::cos(angle) * radial + std::sin(angle) * around);
+        EXPECT_GE(length_at(x), result.length * (1 - 1e-12)) << "edge " << e << " at " << 0.25 * quarter << "°";
+      }
+    }
+  }
+  EXPECT_GT(on_bound, 20);
 }
 
 // The edges of the back mesh itself, as when a mesh is curved in its own metric: their midpoints lie on
