@@ -16,24 +16,20 @@ namespace hocav {
 template <int D>
 std::vector<double> volume_edge_gains(const Mesh<D>& mesh, const MetricField<D>& field) {
   const std::vector<bool> on_boundary = boundary_vertex_flags(mesh);
-  // Each vertex's metric once for all its edges; the back mesh (the input, whose vertices the curved mesh
-  // keeps) gives a hint near each vertex.
-  std::vector<EdgeEndpoint<D>> endpoints;
-  endpoints.reserve(static_cast<std::size_t>(mesh.vertex_count()));
-  for (Index v = 0; v < mesh.vertex_count(); ++v) endpoints.push_back(edge_endpoint(mesh.vertex(v), field.vertex_log_metric(v)));
-  const Mesh<D>& back = field.back_mesh();
+  const Mesh<D>& back = field.back_mesh();  // the input, whose vertices the curved mesh keeps: hints near them
   std::vector<double> gains;
   for (Index e = 0; e < mesh.edge_count(); ++e) {
     auto [a, b] = mesh.edge_vertices(e);
     if (a == kNoIndex || (on_boundary[a] && on_boundary[b])) continue;
     const Vec<D> straight = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
-    const EdgeEndpoint<D> &end_a = endpoints[static_cast<std::size_t>(a)], &end_b = endpoints[static_cast<std::size_t>(b)];
-    const Index hint = back.vertex_element(a);
-    // A straight edge (most of them) gains nothing: one length, not two.
+    // A straight edge (most of them) gains nothing: no length to compute.
     if (mesh.edge_node(e) == straight) {
       gains.push_back(0);
       continue;
     }
+    const EdgeEndpoint<D> end_a = edge_endpoint(mesh.vertex(a), field.vertex_log_metric(a));
+    const EdgeEndpoint<D> end_b = edge_endpoint(mesh.vertex(b), field.vertex_log_metric(b));
+    const Index hint = back.vertex_element(a);
     const double straight_length = high_precision_edge_length(field, end_a, end_b, straight, hint);
     const double curved_length = high_precision_edge_length(field, end_a, end_b, mesh.edge_node(e), hint);
     gains.push_back(1 - curved_length / straight_length);
