@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "../metric/metric_test_support.hpp"
 #include "cases/structured.hpp"
 #include "geom/sym_functions.hpp"
 #include "metric/analytic_metric.hpp"
@@ -125,12 +126,7 @@ TEST(EdgeOptimizer, AnisotropyTenThousandDoesNotBreakIt) {
 // along it, 40% of these edges stopped wherever the clipped trials first failed.
 TEST(EdgeOptimizer, AnOptimumBeyondTheDisplacementBoundEndsOnItAtALocalMinimum) {
   Mesh<3> mesh = generate_cube(8);
-  AnalyticMetricSpec spec;
-  spec.name = "shear-sphere";
-  spec.h_max = 0.1;
-  spec.h_min = spec.h_max / 300;
-  spec.width = 0.1;
-  MetricField<3> field(mesh, analytic_metric_at_vertices<3>(spec, mesh));
+  const MetricField<3> field = metric_test::shear_layer_field<3>(mesh);
   mesh.build_edges();
   EdgeOptimizerOptions options;
   options.max_displacement = 0.05;
@@ -164,12 +160,7 @@ TEST(EdgeOptimizer, AnOptimumBeyondTheDisplacementBoundEndsOnItAtALocalMinimum) 
 // couple of trials instead of twelve halvings (11.1 evaluations per edge before, 5.9 with the test).
 TEST(EdgeOptimizer, BackMeshEdgesStartOnKinksAndStopQuickly) {
   Mesh<3> mesh = generate_cube(8);
-  AnalyticMetricSpec spec;
-  spec.name = "shear-sphere";
-  spec.h_max = 0.1;
-  spec.h_min = spec.h_max / 300;
-  spec.width = 0.1;
-  MetricField<3> field(mesh, analytic_metric_at_vertices<3>(spec, mesh));
+  const MetricField<3> field = metric_test::shear_layer_field<3>(mesh);
   mesh.build_edges();
   double evaluations = 0;
   int curved = 0;
@@ -195,12 +186,7 @@ TEST(EdgeOptimizer, BackMeshEdgesStartOnKinksAndStopQuickly) {
 // gives, for fewer evaluations. (On this mesh a factor of 1 instead of the default loses gains.)
 TEST(EdgeOptimizer, FutileStopLosesNoGain) {
   Mesh<3> mesh = generate_cube(20);
-  AnalyticMetricSpec spec;
-  spec.name = "shear-sphere";
-  spec.h_max = 0.1;
-  spec.h_min = spec.h_max / 300;
-  spec.width = 0.1;
-  MetricField<3> field(mesh, analytic_metric_at_vertices<3>(spec, mesh));
+  const MetricField<3> field = metric_test::shear_layer_field<3>(mesh);
   mesh.build_edges();
   EdgeOptimizerOptions with_stop, without_stop;
   with_stop.measure_gain = without_stop.measure_gain = true;

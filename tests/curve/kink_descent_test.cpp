@@ -16,16 +16,6 @@
 namespace hocav {
 namespace {
 
-template <int D>
-MetricField<D> shear_field(const Mesh<D>& mesh) {
-  AnalyticMetricSpec spec;
-  spec.name = D == 2 ? "shear-circle" : "shear-sphere";
-  spec.h_max = 0.1;
-  spec.h_min = spec.h_max / 300;
-  spec.width = 0.1;
-  return MetricField<D>(mesh, analytic_metric_at_vertices<D>(spec, mesh));
-}
-
 // Unit vectors spanning the bisector plane (line in 2D) of the edge direction m.
 template <int D>
 std::vector<Vec<D>> plane_directions(const Vec<D>& m, int count) {
@@ -107,7 +97,7 @@ void check_kink(const MetricField<D>& field, const Vec<D>& pa, const Vec<D>& pb,
 template <int D>
 void check_back_mesh_edges(int cells, int min_minima, int min_descents) {
   Mesh<D> mesh = metric_test::unit_mesh<D>(cells);
-  const MetricField<D> field = shear_field<D>(mesh);
+  const MetricField<D> field = metric_test::shear_layer_field<D>(mesh);
   mesh.build_edges();
   KinkCounts counts;
   for (Index e = 0; e < mesh.edge_count(); ++e) {
@@ -128,7 +118,7 @@ TEST(KinkDescent, SteepestDescentOnBackMeshEdgesMatchesFiniteDifferences2D) { ch
 // most descend.
 TEST(KinkDescent, SteepestDescentInsideBackMeshFacesMatchesFiniteDifferences) {
   Mesh<3> mesh = generate_cube(6);
-  const MetricField<3> field = shear_field<3>(mesh);
+  const MetricField<3> field = metric_test::shear_layer_field<3>(mesh);
   std::mt19937 random(11);
   std::uniform_real_distribution<double> unit(0, 1);
   std::normal_distribution<double> gauss;
@@ -182,7 +172,7 @@ TEST(KinkDescent, UniformMetricIsStationary) {
 // Off every face (inside an element) there is no kink to test.
 TEST(KinkDescent, InsideAnElementIsNoKink) {
   Mesh<3> mesh = generate_cube(4);
-  const MetricField<3> field = shear_field<3>(mesh);
+  const MetricField<3> field = metric_test::shear_layer_field<3>(mesh);
   const auto points = field.locator().element_points(5);
   const Vec3 centroid = 0.25 * (points[0] + points[1] + points[2] + points[3]);
   EXPECT_FALSE(on_back_mesh_face(field.sample(centroid, 5).where));

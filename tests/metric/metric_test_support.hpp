@@ -6,6 +6,8 @@
 #include "../geom/random_matrices.hpp"
 #include "cases/structured.hpp"
 #include "geom/sym_mat.hpp"
+#include "metric/analytic_metric.hpp"
+#include "metric/metric_field.hpp"
 
 namespace hocav::metric_test {
 
@@ -44,6 +46,18 @@ SymMat<D> random_metric(std::mt19937_64& random, double h, double size_ratio) {
     eigenvalues[i] = 1 / (size * size);
   }
   return geom_test::random_with_eigenvalues<D>(random, eigenvalues);
+}
+
+// The edge optimizer's test field (its benchmark's): the shear layer (shear-circle in 2D, shear-sphere in 3D)
+// of radius 0.75 around the origin and width 0.1, sizes 0.1 along it and 0.1/300 across, at mesh's vertices.
+template <int D>
+MetricField<D> shear_layer_field(const Mesh<D>& mesh) {
+  AnalyticMetricSpec spec;
+  spec.name = D == 2 ? "shear-circle" : "shear-sphere";
+  spec.h_max = 0.1;
+  spec.h_min = spec.h_max / 300;
+  spec.width = 0.1;
+  return MetricField<D>(mesh, analytic_metric_at_vertices<D>(spec, mesh));
 }
 
 }  // namespace hocav::metric_test
