@@ -90,8 +90,7 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
   // parametrization, which the 3-point rule cannot see (a flat valley in a uniform metric).
   const Vec<D> direction = (1 / edge_size) * (b - a);
   const std::array<Vec<D>, D - 1> basis = orthonormal_complement(direction);
-  auto onto_plane = [&](const Vec<D>& v) { return v - dot(v, direction) * direction; };
-  const Vec<D> first = midpoint + onto_plane(start - midpoint);
+  const Vec<D> first = start - dot(start - midpoint, direction) * direction;  // start moved onto the plane
 
   // ∂L^L/∂X is constant in a back element, and successive iterates often stay in one: its frame serves their
   // localization and derivatives.
@@ -168,7 +167,7 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
     } else {
       double shift;
       if (!newton_step_in_plane(value, basis, step, shift)) return result;
-      predicted = -0.5 * dot(onto_plane(value.gradient), step);
+      predicted = -0.5 * dot(value.gradient, step);  // the step lies in the plane
       convex_model = shift == 0;
     }
     // On the displacement bound, a step out of it would be clipped back onto the bound in another direction,

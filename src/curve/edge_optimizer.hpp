@@ -25,10 +25,11 @@ struct EdgeOptimizerOptions {
   // An edge whose length (in the optimizer's rule) drops by less than this fraction stays
   // straight: bending an edge distorts its elements, which a negligible gain does not pay for.
   double min_relative_decrease = 1e-3;
-  // From the straight midpoint, after a first accepted step: stop once the decrease so far plus this many
-  // times the decrease the (convex) Newton model still predicts falls short of min_relative_decrease, as the
-  // edge would stay straight. The model misses other back elements' slopes across kinks: on the bench's
-  // 129k 3D edges a factor 10 loses 3 curved edges, 30 and more none (docs/benchmarks.md). 0: never.
+  // From the straight midpoint, once a model is trusted (after a first accepted step, or at once on a kink,
+  // whose steepest descent accounts for every back element around): stop once the decrease so far plus this
+  // many times the decrease the (convex) model still predicts falls short of min_relative_decrease, as the
+  // edge would stay straight. A model can miss slopes farther away: on the bench's 129k 3D edges factors 1, 10
+  // and 30 lose a few curved edges, 100 and 1000 none (docs/curving.md). 0: never.
   double futile_model_factor = 100;
   // Also compute the high-precision straight and optimized lengths (and the gain).
   bool measure_gain = false;

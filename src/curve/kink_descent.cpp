@@ -50,8 +50,7 @@ KinkDescent<2> descent_2d(const MetricField<2>& field, const Localization<2>& wh
   const Index other = mesh.neighbor(where.element, zero);
   // The bisector line's two rays, ±n: one enters this triangle (∇λ_zero·ρ > 0), the other the neighbour.
   const Vec2 normal{{-edge_direction[1], edge_direction[0]}};
-  auto slope_into = [&](Index k, const Vec2& ray) {
-    const auto gradients = barycentric_gradients<2>(field.locator().element_points(k));
+  auto slope_into = [&](Index k, const std::array<Vec2, 3>& gradients, const Vec2& ray) {
     double slope = dot(value.node_gradient, ray);
     for (int j = 0; j < 3; ++j) slope += vertex_rate(field, value, mesh.element(k)[j]) * dot(gradients[j], ray);
     return slope;
@@ -59,9 +58,10 @@ KinkDescent<2> descent_2d(const MetricField<2>& field, const Localization<2>& wh
   const auto gradients = barycentric_gradients<2>(field.locator().element_points(where.element));
   const Vec2 inward = dot(gradients[zero], normal) > 0 ? normal : -normal;
   KinkDescent<2> best;
-  consider(best, slope_into(where.element, inward), inward, where.element);
+  consider(best, slope_into(where.element, gradients, inward), inward, where.element);
   if (other != kNoIndex) {  // else a boundary edge: the ray into the domain only
-    consider(best, slope_into(other, -inward), -inward, other);
+    consider(best, slope_into(other, barycentric_gradients<2>(field.locator().element_points(other)), -inward),
+             -inward, other);
     best.whole_plane = true;
   }
   best.analysed = true;
