@@ -59,6 +59,30 @@ const EdgeCase<D>& edge_case() {
   return instance;
 }
 
+// The straight midpoints of 1,024 edges spread over the mesh, each with its edge's length function, the
+// back-mesh sample there and that element's log-metric gradient: the inputs of the kernel benchmarks.
+template <int D>
+struct MidpointInput {
+  EdgeLengthFunction<D> function;
+  Vec<D> node, edge_direction;
+  typename MetricField<D>::Sample sample;
+  std::array<SymMat<D>, D> log_metric_gradient;
+};
+template <int D>
+std::vector<MidpointInput<D>> sampled_midpoints(const EdgeCase<D>& c) {
+  const Mesh<D>& mesh = c.field.back_mesh();
+  std::vector<MidpointInput<D>> inputs;
+  for (std::size_t e = 0; e < c.edges.size(); e += c.edges.size() / 1024) {
+    const auto& edge = c.edges[e];
+    const Vec<D> a = mesh.vertex(edge[0]), b = mesh.vertex(edge[1]), node = 0.5 * (a + b);
+    const auto sample = c.field.sample(node, c.vertex_element[static_cast<std::size_t>(edge[0])]);
+    inputs.push_back({EdgeLengthFunction<D>(a, b, c.field.vertex_log_metric(edge[0]), c.field.vertex_log_metric(edge[1]),
+                                            default_optimizer_rule()),
+                      node, (1 / norm(b - a)) * (b - a), sample, c.field.log_metric_gradient(sample.where.element)});
+  }
+  return inputs;
+}
+
 template <int D>
 void BM_OptimizeMeshEdges(benchmark::State& state) {
   const EdgeCase<D>& c = edge_case<D>();
@@ -171,30 +195,14 @@ template <int D>
 void BM_EdgeLengthEvaluate(benchmark::State& state) {
   using Order = typename EdgeLengthFunction<D>::Order;
   const auto order = static_cast<Order>(state.range(0));
-  const EdgeCase<D>& c = edge_case<D>();
-  const Mesh<D>& mesh = c.field.back_mesh();
-  struct Input {
-    EdgeLengthFunction<D> function;
-    Vec<D> node;
-    SymMat<D> log_node;
-    std::array<SymMat<D>, D> log_node_gradient;
-  };
-  std::vector<Input> inputs;
-  for (std::size_t e = 0; e < c.edges.size(); e += c.edges.size() / 1024) {
-    const auto& edge = c.edges[e];
-    const Vec<D> node = 0.5 * (mesh.vertex(edge[0]) + mesh.vertex(edge[1]));
-    auto sample = c.field.sample(node, c.vertex_element[static_cast<std::size_t>(edge[0])]);
-    inputs.push_back({EdgeLengthFunction<D>(mesh.vertex(edge[0]), mesh.vertex(edge[1]),
-                                            c.field.vertex_log_metric(edge[0]), c.field.vertex_log_metric(edge[1]),
-                                            default_optimizer_rule()),
-                      node, sample.log_metric, c.field.log_metric_gradient(sample.where.element)});
-  }
+  const std::vector<MidpointInput<D>> inputs = sampled_midpoints(edge_case<D>());
   const SymMat<D> shift = 1e-3 * SymMat<D>::identity();
   std::size_t next = 0, visit = 0;
   for (auto _ : state) {
-    const Input& input = inputs[next];
+    const MidpointInput<D>& input = inputs[next];
     benchmark::DoNotOptimize(input.function.evaluate(
-        input.node, visit % 2 == 0 ? input.log_node : input.log_node + shift, input.log_node_gradient, order));
+        input.node, visit % 2 == 0 ? input.sample.log_metric : input.sample.log_metric + shift,
+        input.log_metric_gradient, order));
     next = (next + 1) % inputs.size();
     if (next == 0) ++visit;
   }
@@ -208,23 +216,16 @@ BENCHMARK_TEMPLATE(BM_EdgeLengthEvaluate, 3)->DenseRange(0, 2)->ArgName("order")
 template <int D>
 void BM_KinkDescent(benchmark::State& state) {
   const EdgeCase<D>& c = edge_case<D>();
-  const Mesh<D>& mesh = c.field.back_mesh();
   struct Input {
     Localization<D> where;
     Vec<D> direction;
     EdgeLengthValue<D> value;
   };
   std::vector<Input> inputs;
-  for (std::size_t e = 0; e < c.edges.size(); e += c.edges.size() / 1024) {
-    const auto& edge = c.edges[e];
-    const Vec<D> a = mesh.vertex(edge[0]), b = mesh.vertex(edge[1]), node = 0.5 * (a + b);
-    const auto sample = c.field.sample(node, c.vertex_element[static_cast<std::size_t>(edge[0])]);
-    const EdgeLengthFunction<D> function(a, b, c.field.vertex_log_metric(edge[0]), c.field.vertex_log_metric(edge[1]),
-                                         default_optimizer_rule());
-    inputs.push_back({sample.where, (1 / norm(b - a)) * (b - a),
-                      function.evaluate(node, sample.log_metric, c.field.log_metric_gradient(sample.where.element),
-                                        EdgeLengthFunction<D>::Order::kGradient)});
-  }
+  for (const MidpointInput<D>& m : sampled_midpoints(c))
+    inputs.push_back({m.sample.where, m.edge_direction,
+                      m.function.evaluate(m.node, m.sample.log_metric, m.log_metric_gradient,
+                                          EdgeLengthFunction<D>::Order::kGradient)});
   std::size_t next = 0;
   for (auto _ : state) {
     const Input& input = inputs[next];
@@ -240,32 +241,24 @@ BENCHMARK_TEMPLATE(BM_KinkDescent, 3);
 // decompositions are reused), as for a step along the steepest descent of a kink.
 template <int D>
 void BM_EdgeLengthCurvature(benchmark::State& state) {
-  const EdgeCase<D>& c = edge_case<D>();
-  const Mesh<D>& mesh = c.field.back_mesh();
   struct Input {
-    EdgeLengthFunction<D> function;
-    Vec<D> node, direction;
-    SymMat<D> log_node, log_node_derivative;
+    MidpointInput<D> at;
+    Vec<D> direction;
+    SymMat<D> log_metric_derivative;
   };
   std::vector<Input> inputs;
-  for (std::size_t e = 0; e < c.edges.size(); e += c.edges.size() / 1024) {
-    const auto& edge = c.edges[e];
-    const Vec<D> a = mesh.vertex(edge[0]), b = mesh.vertex(edge[1]), node = 0.5 * (a + b);
-    const auto sample = c.field.sample(node, c.vertex_element[static_cast<std::size_t>(edge[0])]);
-    const auto gradient = c.field.log_metric_gradient(sample.where.element);
-    const Vec<D> direction = orthonormal_complement<D>((1 / norm(b - a)) * (b - a))[0];  // in the bisector plane
+  for (MidpointInput<D>& m : sampled_midpoints(edge_case<D>())) {
+    const Vec<D> direction = orthonormal_complement(m.edge_direction)[0];  // in the bisector plane
     SymMat<D> derivative;
-    for (int i = 0; i < D; ++i) derivative += direction[i] * gradient[i];
-    inputs.push_back({EdgeLengthFunction<D>(a, b, c.field.vertex_log_metric(edge[0]), c.field.vertex_log_metric(edge[1]),
-                                            default_optimizer_rule()),
-                      node, direction, sample.log_metric, derivative});
-    inputs.back().function.evaluate(node, sample.log_metric, gradient, EdgeLengthFunction<D>::Order::kGradient);
+    for (int i = 0; i < D; ++i) derivative += direction[i] * m.log_metric_gradient[i];
+    m.function.evaluate(m.node, m.sample.log_metric, m.log_metric_gradient, EdgeLengthFunction<D>::Order::kGradient);
+    inputs.push_back({m, direction, derivative});
   }
   std::size_t next = 0;
   for (auto _ : state) {
     const Input& input = inputs[next];
-    benchmark::DoNotOptimize(
-        input.function.curvature(input.node, input.log_node, input.direction, input.log_node_derivative));
+    benchmark::DoNotOptimize(input.at.function.curvature(input.at.node, input.at.sample.log_metric, input.direction,
+                                                         input.log_metric_derivative));
     next = (next + 1) % inputs.size();
   }
   state.SetItemsProcessed(state.iterations());
