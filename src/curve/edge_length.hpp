@@ -42,9 +42,9 @@ EdgeEndpoint<D> edge_endpoint(const Vec<D>& position, const SymMat<D>& log_metri
 
 // ℓ as a function of X for one edge and one quadrature rule; the parts that do not depend on X
 // (the vertex metrics at nodes where φ_M = 0, i.e. t = 0 and 1) come with the endpoints. The
-// eigen-decompositions of the last evaluation are kept (rules of up to kCachedNodes nodes), so
-// raising the order at the same point (the accepted trial of a line search) does not repeat them:
-// one object per thread. Nothing is allocated: the optimizer makes one object per edge.
+// eigen-decompositions of the last evaluation are kept (rules of up to kCachedNodes nodes), and their
+// Fréchet set-ups once made, so raising the order at the same point (the accepted trial of a line
+// search) or asking a curvature there does not repeat them: one object per thread. Nothing is allocated: the optimizer makes one object per edge.
 template <int D>
 class EdgeLengthFunction {
  public:
