@@ -29,6 +29,7 @@ class Checker {
     check_adjacency();
     check_vertex_elements();
     check_facets();
+    if constexpr (D == 3) check_lines();
     if (mesh_.is_p2() || mesh_.edge_count() > 0) check_edges();
     return problems_;
   }
@@ -98,7 +99,9 @@ class Checker {
       for (Index v : e) used[v] = true;
     for (Index v = 0; v < mesh_.vertex_count() && !full(); ++v) {
       Index k = mesh_.vertex_element(v);
-      if (k == kNoIndex) {
+      if (mesh_.vertex_removed(v)) {
+        if (used[v] || k != kNoIndex) report("removed vertex " + id(v) + " is still used");
+      } else if (k == kNoIndex) {
         if (used[v]) report("vertex " + id(v) + " is used but has no incident element");
       } else if (k < 0 || k >= mesh_.element_count() || local_vertex(mesh_, k, v) < 0) {
         report("vertex " + id(v) + " points to element " + id(k) + " which does not contain it");
@@ -108,6 +111,7 @@ class Checker {
 
   void check_facets() {
     for (Index f = 0; f < mesh_.facet_count() && !full(); ++f) {
+      if (mesh_.facet_removed(f)) continue;
       Index slot = mesh_.facet_element_face(f);
       if (slot == kNoIndex) {
         report("boundary facet " + id(f) + " lies on no element face");
@@ -121,6 +125,24 @@ class Checker {
         report("boundary facet " + id(f) + " does not match face " + std::to_string(face + 1) + " of element " + id(k));
       else if (mesh_.element_face_facet(k, face) != f)
         report("face " + std::to_string(face + 1) + " of element " + id(k) + " does not lead back to boundary facet " + id(f));
+    }
+  }
+
+  // A feature line is an edge of the elements around its first vertex.
+  void check_lines() {
+    std::vector<Index> ball;
+    for (Index l = 0; l < mesh_.line_count() && !full(); ++l) {
+      if (mesh_.line_removed(l)) continue;
+      const auto [a, b] = mesh_.line(l);
+      if (a < 0 || a >= mesh_.vertex_count() || b < 0 || b >= mesh_.vertex_count() || mesh_.vertex_removed(a) ||
+          mesh_.vertex_removed(b)) {
+        report("edge (line) " + id(l) + " has a vertex out of range or removed");
+        continue;
+      }
+      if (mesh_.vertex_element(a) == kNoIndex) continue;  // a line on a vertex no element uses is the file's business
+      collect_ball(mesh_, a, ball);
+      const bool found = std::any_of(ball.begin(), ball.end(), [&](Index k) { return local_vertex(mesh_, k, b) >= 0; });
+      if (!found) report("edge (line) " + id(l) + " (" + id(a) + ", " + id(b) + ") is no element edge");
     }
   }
 

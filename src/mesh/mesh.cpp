@@ -15,6 +15,8 @@ Index Mesh<D>::add_vertex(const Point& point, int ref) {
   vertices_.push_back(point);
   vertex_refs_.push_back(ref);
   if (vertex_element_.size() + 1 == vertices_.size()) vertex_element_.push_back(kNoIndex);
+  if (!removed_vertices_.empty()) removed_vertices_.push_back(0);
+  for (std::size_t a = 0; a < attributes_.size(); ++a) attributes_[a].resize(attributes_[a].size() + static_cast<std::size_t>(attribute_widths_[a]), 0.0);
   return id;
 }
 
@@ -23,6 +25,52 @@ void Mesh<D>::pop_vertex() {
   vertices_.pop_back();
   vertex_refs_.pop_back();
   if (vertex_element_.size() > vertices_.size()) vertex_element_.pop_back();
+  if (!removed_vertices_.empty()) removed_vertices_.pop_back();
+  for (std::size_t a = 0; a < attributes_.size(); ++a) attributes_[a].resize(attributes_[a].size() - static_cast<std::size_t>(attribute_widths_[a]));
+}
+
+template <int D>
+int Mesh<D>::add_vertex_attribute(int width) {
+  attribute_widths_.push_back(width);
+  attributes_.emplace_back(vertices_.size() * static_cast<std::size_t>(width), 0.0);
+  return static_cast<int>(attributes_.size()) - 1;
+}
+
+template <int D>
+void Mesh<D>::remove_vertex(Index v) {
+  if (removed_vertices_.empty()) removed_vertices_.assign(vertices_.size(), 0);
+  if (removed_vertices_[v]) return;
+  removed_vertices_[v] = 1;
+  ++removed_vertex_count_;
+  if (static_cast<std::size_t>(v) < vertex_element_.size()) vertex_element_[v] = kNoIndex;
+}
+
+template <int D>
+void Mesh<D>::remove_facet(Index f) {
+  if (Index at = facet_element_face_[f]; at != kNoIndex && element_face_facets_.find(static_cast<std::uint64_t>(at)) == f)
+    unlink_face_facet(at / (D + 1), at % (D + 1));
+  facet_element_face_[f] = kNoIndex;
+  facets_[f].fill(kNoIndex);
+  ++removed_facet_count_;
+}
+
+template <int D>
+void Mesh<D>::remove_line(Index l) {
+  lines_[l].fill(kNoIndex);
+  ++removed_line_count_;
+}
+
+template <int D>
+Index Mesh<D>::add_attached_facet(const Facet& vertices, int ref, Index k, int face) {
+  const Index f = add_facet(vertices, ref);
+  facet_element_face_.push_back(kNoIndex);
+  attach_facet(f, k, face);
+  return f;
+}
+
+template <int D>
+bool Mesh<D>::is_ridge(Index l) const {
+  return std::find(ridges_.begin(), ridges_.end(), l) != ridges_.end();
 }
 
 template <int D>
@@ -137,6 +185,15 @@ void Mesh<D>::make_p2() {
   for (std::size_t e = 0; e < edge_vertices_.size(); ++e)
     edge_nodes_[e] = 0.5 * (vertices_[edge_vertices_[e][0]] + vertices_[edge_vertices_[e][1]]);
   order_ = 2;
+}
+
+template <int D>
+void Mesh<D>::forget_edges() {
+  make_p1();
+  edge_vertices_ = {};
+  element_edges_ = {};
+  edge_ids_.clear();
+  free_edges_ = {};
 }
 
 template <int D>
@@ -358,14 +415,108 @@ void Mesh<D>::compact_edges() {
   free_edges_.clear();
 }
 
+namespace {
+
+// Keeps the entries whose `keep` is true, in order; returns each old position's new one.
+template <typename Row, typename Keep>
+std::vector<Index> compact_rows(std::vector<Row>& rows, Keep keep) {
+  std::vector<Index> new_id(rows.size(), kNoIndex);
+  Index next = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (keep(i)) {
+      new_id[i] = next;
+      rows[static_cast<std::size_t>(next++)] = rows[i];
+    }
+  rows.resize(static_cast<std::size_t>(next));
+  return new_id;
+}
+
+// Applies a renumbering to a list of ids, dropping the removed ones.
+void renumber_list(std::vector<Index>& ids, const std::vector<Index>& new_id) {
+  std::vector<Index> kept;
+  for (Index id : ids)
+    if (new_id[id] != kNoIndex) kept.push_back(new_id[id]);
+  ids = std::move(kept);
+}
+
+}  // namespace
+
+template <int D>
+std::vector<Index> Mesh<D>::compact() {
+  compact_edges();
+  const auto live_vertex = [&](std::size_t v) { return !vertex_removed(static_cast<Index>(v)); };
+  std::vector<Index> vertex_id = compact_rows(vertices_, live_vertex);
+  const auto keep_vertex = [&](std::size_t v) { return vertex_id[v] != kNoIndex; };
+  compact_rows(vertex_refs_, keep_vertex);
+  if (vertex_element_.size() == vertex_id.size()) compact_rows(vertex_element_, keep_vertex);
+  for (std::size_t a = 0; a < attributes_.size(); ++a) {
+    const auto w = static_cast<std::size_t>(attribute_widths_[a]);
+    std::vector<double>& rows = attributes_[a];
+    for (std::size_t v = 0; v < vertex_id.size(); ++v)
+      if (vertex_id[v] != kNoIndex) std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>(v * w), w, rows.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(vertex_id[v]) * w));
+    rows.resize(vertices_.size() * w);
+  }
+  removed_vertices_.clear();
+  removed_vertex_count_ = 0;
+  for (Element& e : elements_)
+    for (Index& v : e) v = vertex_id[v];
+  for (auto& edge : edge_vertices_)
+    for (Index& v : edge) v = vertex_id[v];
+  renumber_list(corners_, vertex_id);
+  renumber_list(required_vertices_, vertex_id);
+
+  const auto live_facet = [&](std::size_t f) { return facets_[f][0] != kNoIndex; };
+  std::vector<Index> facet_id(facets_.size());
+  for (std::size_t f = 0; f < facets_.size(); ++f) facet_id[f] = live_facet(f) ? 0 : kNoIndex;
+  compact_rows(facet_refs_, [&](std::size_t f) { return facet_id[f] != kNoIndex; });
+  if (facet_element_face_.size() == facet_id.size())
+    compact_rows(facet_element_face_, [&](std::size_t f) { return facet_id[f] != kNoIndex; });
+  facet_id = compact_rows(facets_, live_facet);
+  for (Facet& f : facets_)
+    for (Index& v : f) v = vertex_id[v];
+  removed_facet_count_ = 0;
+
+  const auto live_line = [&](std::size_t l) { return lines_[l][0] != kNoIndex; };
+  std::vector<Index> line_id(lines_.size());
+  for (std::size_t l = 0; l < lines_.size(); ++l) line_id[l] = live_line(l) ? 0 : kNoIndex;
+  compact_rows(line_refs_, [&](std::size_t l) { return line_id[l] != kNoIndex; });
+  line_id = compact_rows(lines_, live_line);
+  for (Line& l : lines_)
+    for (Index& v : l) v = vertex_id[v];
+  removed_line_count_ = 0;
+  renumber_list(ridges_, D == 2 ? facet_id : line_id);
+
+  rekey_after_renumbering();
+  return vertex_id;
+}
+
+template <int D>
+void Mesh<D>::rekey_after_renumbering() {
+  if (!edge_vertices_.empty()) {
+    edge_ids_.clear();
+    for (Index e = 0; e < edge_count(); ++e) edge_ids_.assign(edge_key(edge_vertices_[e][0], edge_vertices_[e][1]), e);
+  }
+  if (facet_element_face_.size() == facets_.size() && has_topology()) {
+    element_face_facets_.clear();
+    std::fill(faces_with_facet_.begin(), faces_with_facet_.end(), std::uint8_t{0});
+    for (Index f = 0; f < facet_count(); ++f)
+      if (facet_element_face_[f] != kNoIndex) link_face_facet(facet_element_face_[f] / (D + 1), facet_element_face_[f] % (D + 1), f);
+  }
+}
+
 template <int D>
 std::size_t Mesh<D>::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   return bytes(vertices_) + bytes(vertex_refs_) + bytes(elements_) + bytes(element_refs_) + bytes(facets_) +
          bytes(facet_refs_) + bytes(lines_) + bytes(line_refs_) + bytes(corners_) + bytes(ridges_) +
-         bytes(required_vertices_) + bytes(edge_vertices_) + bytes(edge_nodes_) + bytes(element_edges_) +
+         bytes(required_vertices_) + bytes(removed_vertices_) + bytes(edge_vertices_) + bytes(edge_nodes_) + bytes(element_edges_) +
          edge_ids_.memory_bytes() + bytes(adjacency_) + bytes(vertex_element_) + bytes(facet_element_face_) +
-         element_face_facets_.memory_bytes() + bytes(faces_with_facet_);
+         element_face_facets_.memory_bytes() + bytes(faces_with_facet_) +
+         [&] {
+           std::size_t total = 0;
+           for (const auto& rows : attributes_) total += bytes(rows);
+           return total;
+         }();
 }
 
 template class Mesh<2>;

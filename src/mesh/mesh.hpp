@@ -4,7 +4,14 @@
 // objects). P2 mid nodes live on edges: an edge table gives every edge an id, found in O(1) from its
 // two vertices (hash) or from an element's local edge (element_edges), and holds its node.
 // Topology (face adjacency, vertex -> element, boundary facet <-> element face) is derived data,
-// built by build_topology() and kept right by the operators that change the mesh.
+// built by build_topology() and kept right by the one editing interface, the cavity operator
+// (src/cavity/cavity_operator.hpp): it alone reaches the low-level mutators below.
+//
+// Built for change (docs/mesh-model.md): the cavity operator removes vertices, boundary facets and
+// lines by marking them removed (their ids stay valid and unused until compact()), so ids held by a
+// pass stay stable while it runs; compact() renumbers between passes. Vertex attributes (rows of
+// doubles per vertex, e.g. a log-metric) live with the mesh and follow every insertion and
+// compaction.
 #pragma once
 
 #include <array>
@@ -37,9 +44,26 @@ class Mesh {
   Point& vertex(Index v) { return vertices_[v]; }
   int vertex_ref(Index v) const { return vertex_refs_[v]; }
   std::span<const Point> vertices() const { return vertices_; }
+  // A new vertex; its attribute rows start at zero.
   Index add_vertex(const Point& point, int ref = 0);
   // Removes the last vertex (an insertion that was refused); no element may use it.
   void pop_vertex();
+  // A vertex the cavity operator removed (a collapse): no element uses it until compact() drops it.
+  bool vertex_removed(Index v) const { return !removed_vertices_.empty() && removed_vertices_[v]; }
+  // Vertices not removed.
+  Index live_vertex_count() const { return vertex_count() - removed_vertex_count_; }
+
+  // ---- vertex attributes: `width` doubles per vertex that follow every change ----
+  int add_vertex_attribute(int width);
+  int vertex_attribute_width(int attribute) const { return attribute_widths_[attribute]; }
+  std::span<double> vertex_attribute(int attribute, Index v) {
+    const auto w = static_cast<std::size_t>(attribute_widths_[attribute]);
+    return {attributes_[attribute].data() + w * static_cast<std::size_t>(v), w};
+  }
+  std::span<const double> vertex_attribute(int attribute, Index v) const {
+    const auto w = static_cast<std::size_t>(attribute_widths_[attribute]);
+    return {attributes_[attribute].data() + w * static_cast<std::size_t>(v), w};
+  }
 
   // ---- elements (triangles in 2D, tetrahedra in 3D) ----
   Index element_count() const { return static_cast<Index>(elements_.size()); }
@@ -54,12 +78,16 @@ class Mesh {
   int facet_ref(Index f) const { return facet_refs_[f]; }
   std::span<const Facet> facets() const { return facets_; }
   Index add_facet(const Facet& vertices, int ref = 0);
+  bool facet_removed(Index f) const { return facets_[f][0] == kNoIndex; }
 
   // ---- feature lines: the Edges keyword of a 3D mesh (in 2D the Edges are the facets) ----
   Index line_count() const { return static_cast<Index>(lines_.size()); }
   const Line& line(Index l) const { return lines_[l]; }
   int line_ref(Index l) const { return line_refs_[l]; }
   Index add_line(const Line& vertices, int ref = 0);
+  bool line_removed(Index l) const { return lines_[l][0] == kNoIndex; }
+  // Whether line l is listed in ridges() (in 2D, facet l).
+  bool is_ridge(Index l) const;
 
   // ---- geometric tags carried through (Corners, RequiredVertices: vertex ids; Ridges: ids of
   // the entities of the Edges keyword, i.e. facets in 2D and lines in 3D) ----
@@ -78,6 +106,8 @@ class Mesh {
   void make_p2();
   // Forgets the P2 nodes (the mesh becomes P1); the edge table stays.
   void make_p1();
+  // Forgets the P2 nodes and the edge table (the mesh becomes a plain P1 mesh, as a remesher wants).
+  void forget_edges();
   // Builds (or rebuilds) the edge table without changing the order (for edge loops on P1 meshes).
   void build_edges();
   bool has_edges() const { return !edge_vertices_.empty() || elements_.empty(); }
@@ -120,12 +150,37 @@ class Mesh {
     if (row < element_edges_.size()) __builtin_prefetch(&element_edges_[row]);
   }
 
-  // ---- local changes, for the cavity operators: each keeps only the invariant it names; the
-  // operator that calls them restores the others before it returns ----
+  // Replaces an element's vertices and ref: for building a mesh, before build_topology().
   void set_element(Index k, const Element& vertices, int ref) {
     elements_[k] = vertices;
     element_refs_[k] = ref;
   }
+
+  // Drops removed vertices, facets and lines and renumbers what remains in its order (elements are
+  // always compact); attributes, tags, topology and the edge table follow. Returns each old vertex's
+  // new id (kNoIndex for a removed one).
+  std::vector<Index> compact();
+  // Renumbers the edges alone so their ids are 0..edge_count()-1 again (a curving run, which
+  // removes no vertex, needs no more).
+  void compact_edges();
+  // True when nothing removed waits for compact() (file writers need it).
+  bool is_compact() const {
+    return removed_vertex_count_ == 0 && removed_facet_count_ == 0 && removed_line_count_ == 0 && free_edges_.empty();
+  }
+
+  // Bytes held by the mesh's arrays (capacity, not size), for the memory figures in the docs.
+  std::size_t memory_bytes() const;
+
+  static std::uint64_t edge_key(Index a, Index b) {
+    auto lo = static_cast<std::uint64_t>(a < b ? a : b), hi = static_cast<std::uint64_t>(a < b ? b : a);
+    return (lo << 32) | hi;
+  }
+
+ private:
+  // ---- local changes, for the cavity operator alone: each keeps only the invariant it names; the
+  // operator restores the others before it returns ----
+  template <int>
+  friend class CavityOperator;
   // Appends an element with no neighbours and (when the edge table exists) no edges yet.
   Index append_element(const Element& vertices, int ref);
   // Moves element `from` into slot `to` (whose old content is dropped), re-pointing its
@@ -142,21 +197,17 @@ class Mesh {
   // Removes an edge from the table; its id is reused by the next add_edge.
   void remove_edge(Index e);
   void set_element_edge(Index k, int local_edge, Index e) { element_edges_[k][local_edge] = e; }
-  // True when no removed edge leaves a hole in the edge ids (file writers need it).
-  bool edges_are_compact() const { return free_edges_.empty(); }
-  // Renumbers the edges so their ids are 0..edge_count()-1 again.
-  void compact_edges();
+  // Marks a vertex no element uses any more as removed.
+  void remove_vertex(Index v);
+  // Marks a facet removed, unlinking it from its element face.
+  void remove_facet(Index f);
+  void remove_line(Index l);
+  // A new facet on face `face` of element k, linked both ways.
+  Index add_attached_facet(const Facet& vertices, int ref, Index k, int face);
 
-  // Bytes held by the mesh's arrays (capacity, not size), for the memory figures in the docs.
-  std::size_t memory_bytes() const;
-
-  static std::uint64_t edge_key(Index a, Index b) {
-    auto lo = static_cast<std::uint64_t>(a < b ? a : b), hi = static_cast<std::uint64_t>(a < b ? b : a);
-    return (lo << 32) | hi;
-  }
-
- private:
   Index insert_edge(Index a, Index b);
+  // After compact(): the hashes keyed by vertex or facet ids, rebuilt from the renumbered arrays.
+  void rekey_after_renumbering();
   static std::uint64_t face_key(Index k, int face) {
     return static_cast<std::uint64_t>(k) * (D + 1) + static_cast<std::uint64_t>(face);
   }
@@ -173,6 +224,10 @@ class Mesh {
   std::vector<Line> lines_;
   std::vector<int> line_refs_;
   std::vector<Index> corners_, ridges_, required_vertices_;
+  std::vector<std::uint8_t> removed_vertices_;  // per vertex once one is removed, else empty
+  Index removed_vertex_count_ = 0, removed_facet_count_ = 0, removed_line_count_ = 0;
+  std::vector<int> attribute_widths_;
+  std::vector<std::vector<double>> attributes_;
 
   int order_ = 1;
   std::vector<Line> edge_vertices_;
