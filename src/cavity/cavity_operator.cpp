@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/error.hpp"
 #include "mesh/measure.hpp"
 
 namespace hocav {
@@ -100,14 +101,21 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
   ref_ = mesh.element_ref(cavity_.front());
   for (Index k : cavity_)
     if (mesh.element_ref(k) != ref_) return CavityStatus::kMixedRefs;
+  removed_facets_.assign(options.removed_facets.begin(), options.removed_facets.end());
+  std::sort(removed_facets_.begin(), removed_facets_.end());
+  removed_lines_.assign(options.removed_lines.begin(), options.removed_lines.end());
+  std::sort(removed_lines_.begin(), removed_lines_.end());
+  if (!removed_facets_.empty() && mesh.has_edges() && mesh.edge_count() > 0)
+    throw Error("internal error: boundary cavities are for P1 meshes without an edge table");
   if (CavityStatus status = collect_boundary(mesh); status != CavityStatus::kAccepted) return status;
+  if (CavityStatus status = star_surface(mesh, options); status != CavityStatus::kAccepted) return status;
 
   // One new element per boundary face not containing the vertex: (vertex, face) is positive when
   // the vertex sees the face from inside, since faces are oriented outward.
   starred_faces_.clear();
   for (std::size_t f = 0; f < boundary_faces_.size(); ++f) {
     const auto& face = boundary_faces_[f].vertices;
-    if (std::find(face.begin(), face.end(), vertex) != face.end()) continue;
+    if (boundary_faces_[f].removed || std::find(face.begin(), face.end(), vertex) != face.end()) continue;
     Element element;
     element[0] = vertex;
     for (int i = 0; i < D; ++i) element[i + 1] = face[i];
@@ -115,7 +123,7 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
     starred_faces_.push_back(static_cast<Index>(f));
   }
   if (new_elements_.empty()) return CavityStatus::kNotStarShaped;
-  vertex_on_boundary_ = new_elements_.size() < boundary_faces_.size();
+  vertex_on_boundary_ = new_elements_.size() + removed_facets_.size() < boundary_faces_.size();
   if (CavityStatus status = match_ridges(); status != CavityStatus::kAccepted) return status;
 
   // Vertices of the cavity on no boundary face disappear. Most lie on a boundary face of their own
@@ -127,7 +135,8 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
       const Index v = mesh.element(cavity_[i])[j];
       if (v == vertex || (boundary_face_bits_[i] & ~(1u << j))) continue;  // on a boundary face of its element
       if (scratch_.empty()) {
-        for (const auto& face : boundary_faces_) scratch_.insert(scratch_.end(), face.vertices.begin(), face.vertices.end());
+        for (const auto& face : boundary_faces_)
+          if (!face.removed) scratch_.insert(scratch_.end(), face.vertices.begin(), face.vertices.end());
         std::sort(scratch_.begin(), scratch_.end());
       }
       if (!std::binary_search(scratch_.begin(), scratch_.end(), v) &&
@@ -155,6 +164,7 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
 template <int D>
 CavityStatus CavityOperator<D>::collect_boundary(const Mesh<D>& mesh) {
   boundary_faces_.clear();
+  std::size_t removed_found = 0;
   boundary_face_bits_.assign(cavity_.size(), 0);
   for (std::size_t position = 0; position < cavity_.size(); ++position) {
     const Index k = cavity_[position];
@@ -165,16 +175,90 @@ CavityStatus CavityOperator<D>::collect_boundary(const Mesh<D>& mesh) {
         if (facet != kNoIndex) return CavityStatus::kCrossesBoundary;
         continue;
       }
-      BoundaryFace boundary{{}, outer, -1, facet, k, face};
+      const bool removed = facet != kNoIndex && std::binary_search(removed_facets_.begin(), removed_facets_.end(), facet);
+      BoundaryFace boundary{{}, outer, -1, facet, k, face, removed};
       for (int i = 0; i < D; ++i) boundary.vertices[i] = mesh.element(k)[face_vertices<D>(face)[i]];
       if (outer != kNoIndex)
         for (int back = 0; back <= D; ++back)
           if (mesh.neighbor(outer, back) == k) boundary.outer_face = back;
       boundary_faces_.push_back(boundary);
-      boundary_face_bits_[position] = static_cast<std::uint8_t>(boundary_face_bits_[position] | (1u << face));
+      removed_found += removed;
+      // The bits say which faces stay on the new region's boundary: a removed facet's face does not.
+      if (!removed) boundary_face_bits_[position] = static_cast<std::uint8_t>(boundary_face_bits_[position] | (1u << face));
     }
   }
+  return removed_found == removed_facets_.size() ? CavityStatus::kAccepted : CavityStatus::kCrossesBoundary;
+}
+
+template <int D>
+CavityStatus CavityOperator<D>::star_surface(const Mesh<D>& mesh, const CavityOptions& options) {
+  // The removed facets' own faces (edges in 3D, vertices in 2D), directed by the outward facets,
+  // cancel in pairs inside each facet ref; those left bound the surface cavity and are starred from
+  // the vertex, except those through it and (3D) the removed lines, which the line star replaces.
+  new_facets_.clear();
+  new_lines_.clear();
+  if (removed_facets_.empty()) return CavityStatus::kAccepted;
+  struct SubFace {
+    Index from, to;  // 3D: a directed edge; 2D: the vertex as `from` (tail) or `to` (head)
+    int ref;
+    Index facet;
+  };
+  std::vector<SubFace> sub_faces;
+  for (const BoundaryFace& face : boundary_faces_) {
+    if (!face.removed) continue;
+    const int ref = mesh.facet_ref(face.facet);
+    if constexpr (D == 2) {
+      sub_faces.push_back({face.vertices[0], kNoIndex, ref, face.facet});
+      sub_faces.push_back({kNoIndex, face.vertices[1], ref, face.facet});
+    } else {
+      for (int i = 0; i < 3; ++i) sub_faces.push_back({face.vertices[i], face.vertices[(i + 1) % 3], ref, face.facet});
+    }
+  }
+  const auto cancels = [](const SubFace& x, const SubFace& y) {
+    return x.ref == y.ref && (D == 2 ? (x.from == y.to && x.from != kNoIndex) || (x.to == y.from && x.to != kNoIndex)
+                                     : x.from == y.to && x.to == y.from);
+  };
+  std::vector<std::uint8_t> cancelled(sub_faces.size(), 0);
+  for (std::size_t i = 0; i < sub_faces.size(); ++i)
+    for (std::size_t j = i + 1; j < sub_faces.size() && !cancelled[i]; ++j)
+      if (!cancelled[j] && cancels(sub_faces[i], sub_faces[j])) cancelled[i] = cancelled[j] = 1;
+  for (std::size_t i = 0; i < sub_faces.size(); ++i) {
+    const SubFace& sub = sub_faces[i];
+    if (cancelled[i] || sub.from == vertex_ || sub.to == vertex_) continue;
+    if constexpr (D == 2) {
+      new_facets_.push_back({sub.from != kNoIndex ? typename Mesh<D>::Facet{sub.from, vertex_} : typename Mesh<D>::Facet{vertex_, sub.to}, sub.ref, sub.facet});
+    } else {
+      if (is_removed_line(mesh, sub.from, sub.to)) continue;
+      new_facets_.push_back({{sub.from, sub.to, vertex_}, sub.ref, sub.facet});
+    }
+  }
+  // Two patches starring their shared side would stack two facets on one face.
+  std::vector<std::uint64_t> keys;
+  for (const NewFacet& facet : new_facets_) keys.push_back(ridge_key<D>(facet.vertices.data(), vertex_));
+  std::sort(keys.begin(), keys.end());
+  if (std::adjacent_find(keys.begin(), keys.end()) != keys.end()) return CavityStatus::kNotStarShaped;
+  if constexpr (D == 3) star_lines(mesh, options.removed_lines);
   return CavityStatus::kAccepted;
+}
+
+template <int D>
+bool CavityOperator<D>::is_removed_line(const Mesh<D>& mesh, Index a, Index b) const {
+  const std::uint64_t key = Mesh<D>::edge_key(a, b);
+  for (Index l : removed_lines_)
+    if (Mesh<D>::edge_key(mesh.line(l)[0], mesh.line(l)[1]) == key) return true;
+  return false;
+}
+
+template <int D>
+void CavityOperator<D>::star_lines(const Mesh<D>& mesh, std::span<const Index> removed_lines) {
+  // Ends met once among the removed lines bound the chain; each is joined to the vertex.
+  for (Index l : removed_lines)
+    for (int side = 0; side < 2; ++side) {
+      const Index end = mesh.line(l)[side];
+      int count = 0;
+      for (Index other : removed_lines) count += (mesh.line(other)[0] == end) + (mesh.line(other)[1] == end);
+      if (count == 1 && end != vertex_) new_lines_.push_back({{vertex_, end}, mesh.line_ref(l), mesh.is_ridge(l)});
+    }
 }
 
 template <int D>
@@ -190,9 +274,11 @@ CavityStatus CavityOperator<D>::match_ridges() {
     }
   for (std::size_t f = 0; f < boundary_faces_.size(); ++f) {
     const auto& face = boundary_faces_[f].vertices;
-    if (std::find(face.begin(), face.end(), vertex_) == face.end()) continue;
+    if (boundary_faces_[f].removed || std::find(face.begin(), face.end(), vertex_) == face.end()) continue;
     ridge_faces_.push_back({ridge_key<D>(face.data(), vertex_), kNoIndex, static_cast<int>(f)});
   }
+  for (std::size_t f = 0; f < new_facets_.size(); ++f)
+    ridge_faces_.push_back({ridge_key<D>(new_facets_[f].vertices.data(), vertex_), kNoIndex, static_cast<int>(boundary_faces_.size() + f)});
   std::sort(ridge_faces_.begin(), ridge_faces_.end(), [](const RidgeFace& x, const RidgeFace& y) { return x.key < y.key; });
   links_.clear();
   for (std::size_t i = 0; i < ridge_faces_.size(); i += 2) {
@@ -313,6 +399,13 @@ void CavityOperator<D>::commit(Mesh<D>& mesh, std::span<const Point> inner_edge_
   for (const BoundaryFace& face : boundary_faces_)
     if (face.outer_element != kNoIndex) mesh.prefetch_element(face.outer_element);
   const bool with_edges = mesh.has_edges() && mesh.edge_count() > 0;
+  // Removed facets first: their links name cavity slots that the new elements take over.
+  for (Index f : removed_facets_) mesh.remove_facet(f);
+  for (Index l : removed_lines_) mesh.remove_line(l);
+  for (const NewLine& line : new_lines_) {
+    const Index id = mesh.add_line(line.vertices, line.ref);
+    if (line.ridge) mesh.ridges().push_back(id);
+  }
   if (with_edges) {
     for (const KeyedEdge& edge : removed_edges_) mesh.remove_edge(edge.id);
     inner_edge_ids_.clear();
@@ -353,12 +446,18 @@ void CavityOperator<D>::commit(Mesh<D>& mesh, std::span<const Point> inner_edge_
       mesh.set_neighbor(slot[link.other_new_element], link.other_face, k);
       continue;
     }
+    if (static_cast<std::size_t>(link.kept_face) >= boundary_faces_.size()) {
+      const NewFacet& facet = new_facets_[static_cast<std::size_t>(link.kept_face) - boundary_faces_.size()];
+      mesh.set_neighbor(k, link.face, kNoIndex);
+      mesh.add_attached_facet(facet.vertices, facet.ref, k, link.face);
+      continue;
+    }
     const BoundaryFace& kept = boundary_faces_[link.kept_face];
     mesh.set_neighbor(k, link.face, kept.outer_element);
     if (kept.outer_element != kNoIndex) mesh.set_neighbor(kept.outer_element, kept.outer_face, k);
     if (kept.facet != kNoIndex) mesh.attach_facet(kept.facet, k, link.face);
   }
-  for (Index v : vanishing_vertices_) mesh.set_vertex_element(v, kNoIndex);
+  for (Index v : vanishing_vertices_) mesh.remove_vertex(v);
   if (with_edges)
     for (std::size_t n = 0; n < new_elements_.size(); ++n)
       for (int e = 0; e < Mesh<D>::kElementEdges; ++e) {

@@ -22,12 +22,19 @@ struct CavityOptions {
   double min_relative_measure = 1e-12;
   // The one vertex inside the cavity that may disappear (collapse), or kNoIndex.
   Index removable_vertex = kNoIndex;
+  // Boundary operations (P1 meshes): boundary facets on the cavity's boundary that the operation
+  // replaces. They are re-starred from the vertex within each facet ref (the surface cavity), and in
+  // 3D the feature lines among their edges that the operation replaces are re-starred from it too
+  // (a split or collapse along a ridge). The caller names them: which boundary pieces an operation
+  // changes is its geometry's decision, not the topology's.
+  std::span<const Index> removed_facets{};
+  std::span<const Index> removed_lines{};
 };
 
 enum class CavityStatus {
   kAccepted,
   kNotStarShaped,       // the star of the boundary from the vertex is not a closed, manifold set
-  kCrossesBoundary,     // a boundary facet lies inside the cavity
+  kCrossesBoundary,     // a boundary facet lies inside the cavity, or a removed facet is not on its boundary
   kMixedRefs,           // the cavity's elements carry different refs
   kRemovesVertex,       // a vertex other than the removable one would disappear
   kNonPositiveMeasure,  // P1 mode: a new element is flat or inverted
@@ -61,6 +68,19 @@ class CavityOperator {
   std::span<const Index> boundary_edges() const { return boundary_edge_ids_; }
   Index boundary_edge(Index a, Index b) const;
   std::span<const Index> cavity() const { return cavity_; }
+  // Boundary operations: the facets and lines the commit creates (vertices, ref).
+  struct NewFacet {
+    typename Mesh<D>::Facet vertices;
+    int ref;
+    Index replaced;  // the removed facet whose side it stars from the vertex
+  };
+  struct NewLine {
+    typename Mesh<D>::Line vertices;
+    int ref;
+    bool ridge;
+  };
+  std::span<const NewFacet> new_facets() const { return new_facets_; }
+  std::span<const NewLine> new_lines() const { return new_lines_; }
 
   // Applies the plan. On a P2 mesh `inner_edge_nodes[i]` is the node of new_inner_edges()[i], and
   // `changed_boundary_nodes` replaces the nodes of some boundary edges (edge id, node).
@@ -75,6 +95,7 @@ class CavityOperator {
     Index facet;                    // the boundary facet on the face, or kNoIndex
     Index inner_element;            // the cavity element it is a face of, and its local face there
     int inner_face;
+    bool removed;                   // its facet is replaced by the surface star
   };
   // A face containing the vertex, keyed by its other D − 1 vertices: a new element's face or a
   // kept boundary face; matched in pairs.
@@ -86,8 +107,8 @@ class CavityOperator {
   struct Link {
     Index new_element;
     int face;
-    Index other_new_element;  // kNoIndex: linked to the kept boundary face `kept_face`
-    int other_face;
+    Index other_new_element;  // kNoIndex: linked to the kept boundary face `kept_face`, or to new
+    int other_face;           // facet kept_face − boundary_faces_.size() when it is past them
     int kept_face;
   };
 
@@ -99,6 +120,10 @@ class CavityOperator {
 
   bool in_cavity(Index k) const;
   CavityStatus collect_boundary(const Mesh<D>& mesh);
+  // Boundary operations: the new facets and lines, starred from the vertex.
+  CavityStatus star_surface(const Mesh<D>& mesh, const CavityOptions& options);
+  void star_lines(const Mesh<D>& mesh, std::span<const Index> removed_lines);
+  bool is_removed_line(const Mesh<D>& mesh, Index a, Index b) const;
   CavityStatus match_ridges();
   CavityStatus plan_edges(const Mesh<D>& mesh);
   // Position of the edge with this key in boundary_edge_keys_, or its size when it is not there.
@@ -119,6 +144,9 @@ class CavityOperator {
   std::vector<RidgeFace> ridge_faces_;
   std::vector<Link> links_;
   std::vector<Index> vanishing_vertices_;
+  std::vector<Index> removed_facets_, removed_lines_;  // sorted
+  std::vector<NewFacet> new_facets_;
+  std::vector<NewLine> new_lines_;
   std::vector<std::uint64_t> boundary_edge_keys_;
   std::vector<Index> boundary_edge_ids_;
   std::vector<KeyedEdge> removed_edges_;   // by increasing id
