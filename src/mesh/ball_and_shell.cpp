@@ -1,6 +1,7 @@
 #include "mesh/ball_and_shell.hpp"
 
 #include <algorithm>
+#include <array>
 
 namespace hocav {
 
@@ -33,10 +34,63 @@ void collect_ball(const Mesh<D>& mesh, Index v, std::vector<Index>& ball) {
   }
 }
 
+namespace {
+
+// An element that contains both a and b: a walk through a's ball that stops at the first one.
+template <int D>
+Index element_of_edge(const Mesh<D>& mesh, Index a, Index b, std::vector<Index>& visited) {
+  visited.clear();
+  Index start = mesh.vertex_element(a);
+  if (start == kNoIndex) return kNoIndex;
+  visited.push_back(start);
+  for (std::size_t next = 0; next < visited.size(); ++next) {
+    const Index k = visited[next];
+    if (local_vertex(mesh, k, b) >= 0) return k;
+    const int own = local_vertex(mesh, k, a);
+    for (int face = 0; face <= D; ++face) {
+      const Index neighbor = face == own ? kNoIndex : mesh.neighbor(k, face);
+      if (neighbor != kNoIndex && std::find(visited.begin(), visited.end(), neighbor) == visited.end()) visited.push_back(neighbor);
+    }
+  }
+  return kNoIndex;
+}
+
+// From element k of edge (a, b), the next one around the edge across the face opposite `other`
+// (a vertex of k other than a and b), or kNoIndex at the boundary.
+template <int D>
+Index turn_around_edge(const Mesh<D>& mesh, Index k, Index other) {
+  return mesh.neighbor(k, local_vertex(mesh, k, other));
+}
+
+}  // namespace
+
 template <int D>
 void collect_shell(const Mesh<D>& mesh, Index a, Index b, std::vector<Index>& shell) {
-  collect_ball(mesh, a, shell);
-  std::erase_if(shell, [&](Index k) { return local_vertex(mesh, k, b) < 0; });
+  const Index start = element_of_edge(mesh, a, b, shell);
+  shell.clear();
+  if (start == kNoIndex) return;
+  shell.push_back(start);
+  // Each element of the shell has D − 1 vertices besides a and b; the faces opposite them hold the
+  // edge. Turn one way until back at the start or at the boundary, then (open shell) the other way.
+  const auto others = [&](Index k) {
+    std::array<Index, D - 1> out{};
+    int count = 0;
+    for (Index v : mesh.element(k))
+      if (v != a && v != b && count < D - 1) out[count++] = v;
+    return out;
+  };
+  for (int side = 0; side < D - 1; ++side) {
+    Index previous = start, k = turn_around_edge(mesh, start, others(start)[side]);
+    while (k != kNoIndex && k != start) {
+      shell.push_back(k);
+      Index next = kNoIndex;
+      for (Index v : others(k))
+        if (const Index n = turn_around_edge(mesh, k, v); n != previous) next = n;
+      previous = k;
+      k = next;
+    }
+    if (k == start) break;  // closed shell: one way round found all
+  }
 }
 
 template void collect_ball(const Mesh<2>&, Index, std::vector<Index>&);
