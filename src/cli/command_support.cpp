@@ -115,13 +115,14 @@ namespace {
 template <int D>
 SolutionField metric_at_nodes(const Mesh<D>& mesh, const MetricField<D>& field) {
   std::vector<SymMat<D>> metrics;
-  for (Index v = 0; v < mesh.vertex_count(); ++v) metrics.push_back(exp_sym(field.vertex_log_metric(v)));
+  // Sampled at the vertices' positions: the mesh may be another than the field's back mesh (adapt).
+  for (Index v = 0; v < mesh.vertex_count(); ++v) metrics.push_back(exp_sym(field.log_metric_at(mesh.vertex(v))));
   for (Index e = 0; e < mesh.edge_count(); ++e) metrics.push_back(exp_sym(field.log_metric_at(mesh.edge_node(e))));
   return rows_of_metrics(metrics);
 }
 
-// The geometry boundary edges are curved onto: none, the P3 surrogate of the input boundary, or a
-// CAD file.
+}  // namespace
+
 template <int D>
 std::unique_ptr<BoundaryGeometry<D>> boundary_geometry(const std::string& surface, const Mesh<D>& mesh) {
   if (surface == "none") return nullptr;
@@ -129,8 +130,6 @@ std::unique_ptr<BoundaryGeometry<D>> boundary_geometry(const std::string& surfac
   if (surface.starts_with("cad:") && surface.size() > 4) return std::make_unique<CadBoundary<D>>(surface.substr(4), mesh);
   throw Error("--surface: 'p3', 'cad:FILE' or 'none', not '" + surface + "'");
 }
-
-}  // namespace
 
 template <int D>
 CurvingReport curve_in_metric(Mesh<D>& mesh, const MetricField<D>& field, const CurvingSettings& settings) {
@@ -171,6 +170,8 @@ template std::vector<VtuField> jacobian_cell_fields(const Mesh<2>&);
 template std::vector<VtuField> jacobian_cell_fields(const Mesh<3>&);
 template VtuField metric_tensor_field<2>(const SolutionField&);
 template VtuField metric_tensor_field<3>(const SolutionField&);
+template std::unique_ptr<BoundaryGeometry<2>> boundary_geometry(const std::string&, const Mesh<2>&);
+template std::unique_ptr<BoundaryGeometry<3>> boundary_geometry(const std::string&, const Mesh<3>&);
 template std::string mesh_summary(const Mesh<2>&);
 template std::string mesh_summary(const Mesh<3>&);
 

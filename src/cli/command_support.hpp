@@ -3,6 +3,7 @@
 // `hocav curve` and its .vtu (also run by `hocav demo`), and a one-line mesh summary.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "io/vtu_file.hpp"
 #include "metric/metric_field.hpp"
 #include "report/curving_report.hpp"
+#include "surface/boundary_geometry.hpp"
 
 namespace hocav {
 
@@ -51,6 +53,11 @@ struct CurvingSettings {
   int threads = 1;
   bool progress = false;  // "curving: 10%", ... on stderr, for meshes large enough to wait for
 };
+
+// The geometry of `--surface`: none (nullptr), p3 (the P3 surrogate of the mesh's boundary) or
+// cad:FILE (a STEP or BREP model).
+template <int D>
+std::unique_ptr<BoundaryGeometry<D>> boundary_geometry(const std::string& surface, const Mesh<D>& mesh);
 
 // The paper's algorithm on `mesh` (P1 or P2; its P1 copy is the field's back mesh): boundary
 // curvature proposed from `settings.surface`, every volume vertex reinserted with the P2 cavity

@@ -10,6 +10,7 @@ void add_convert_command(CLI::App& app);
 void add_stats_command(CLI::App& app);
 void add_generate_command(CLI::App& app);
 void add_curve_command(CLI::App& app);
+void add_adapt_command(CLI::App& app);
 void add_metric_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_demo_command(CLI::App& app);

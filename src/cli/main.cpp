@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   hocav::add_generate_command(app);
   hocav::add_metric_command(app);
   hocav::add_curve_command(app);
+  hocav::add_adapt_command(app);
   hocav::add_bench_command(app);
   hocav::add_demo_command(app);
   try {

@@ -82,6 +82,11 @@ void write_summary(JsonWriter& json, std::string_view name, const ValueSummary& 
 
 void write_curving_report_json(std::ostream& out, const CurvingReport& report) {
   JsonWriter json(out);
+  write_curving_report_object(json, report);
+  out << '\n';
+}
+
+void write_curving_report_object(JsonWriter& json, const CurvingReport& report) {
   json.begin_object();
   json.member("dimension", report.dimension);
   json.member("elements", report.elements);
@@ -110,7 +115,6 @@ void write_curving_report_json(std::ostream& out, const CurvingReport& report) {
   json.member("certify", c.seconds_certify).member("commit", c.seconds_commit);
   json.end_object();
   json.end_object();
-  out << '\n';
 }
 
 void write_curving_report_table(std::ostream& out, const CurvingReport& report) {

@@ -8,6 +8,7 @@
 
 #include "adapt/reinsertion_curving.hpp"
 #include "bezier/mesh_quality.hpp"
+#include "report/json_writer.hpp"
 
 namespace hocav {
 
@@ -38,6 +39,8 @@ CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& fie
                                   const ReinsertionResult& result, Index boundary_proposals_left);
 
 void write_curving_report_json(std::ostream& out, const CurvingReport& report);
+// The same object, as a value inside a larger report.
+void write_curving_report_object(JsonWriter& json, const CurvingReport& report);
 // A short aligned table for the terminal.
 void write_curving_report_table(std::ostream& out, const CurvingReport& report);
 

@@ -1,0 +1,53 @@
+#include "adapt/adaptation_loop.hpp"
+
+#include <chrono>
+#include <numbers>
+
+#include "adapt/adaptation_mesh.hpp"
+
+namespace hocav {
+namespace {
+
+// A pass that splits and collapses fewer than this share of the vertices ends the loop.
+constexpr double kConvergedChange = 1e-3;
+
+template <int D>
+AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits) {
+  const auto start = std::chrono::steady_clock::now();
+  AdaptationPass pass;
+  pass.collapses = collapse_short_edges(am, limits);
+  pass.swaps = swap_for_quality(am, limits);
+  pass.splits = split_long_edges(am, limits);
+  pass.swaps += swap_for_quality(am, limits);
+  pass.moves = smooth_vertices(am, limits);
+  am.mesh().compact();
+  pass.vertices = am.mesh().vertex_count();
+  pass.elements = am.mesh().element_count();
+  pass.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return pass;
+}
+
+}  // namespace
+
+template <int D>
+AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
+                              const AdaptationSettings& settings) {
+  AdaptationMesh<D> am(mesh, metric, geometry, settings.feature_angle_degrees);
+  AdaptationLimits limits;
+  limits.cos_feature_angle = std::cos(settings.feature_angle_degrees * std::numbers::pi / 180);
+  limits.hausd = settings.hausd;
+  AdaptationRun run;
+  for (int pass = 1; pass <= settings.max_passes && !run.converged; ++pass) {
+    run.passes.push_back(run_pass(am, limits));
+    const AdaptationPass& last = run.passes.back();
+    run.converged = last.splits.done + last.collapses.done <= kConvergedChange * last.vertices;
+    if (settings.progress) settings.progress(pass, settings.max_passes);
+  }
+  mesh.compact();
+  return run;
+}
+
+template AdaptationRun adapt_to_metric(Mesh<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*, const AdaptationSettings&);
+template AdaptationRun adapt_to_metric(Mesh<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*, const AdaptationSettings&);
+
+}  // namespace hocav

@@ -1,0 +1,39 @@
+// The adaptation loop (docs/adaptation.md §Loop): passes of collapse, swap, split, swap and
+// smoothing until the mesh is unit in its metric, then compaction. The library's P1 adaptation
+// driver; `hocav adapt` curves its result with the curving driver.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "adapt/adaptation_metric.hpp"
+#include "adapt/adaptation_operations.hpp"
+
+namespace hocav {
+
+struct AdaptationSettings {
+  int max_passes = 20;
+  double feature_angle_degrees = 45;  // boundary sides meeting at more are ridges (2D: corners)
+  double hausd = 0;                   // > 0: new boundary facets stay within this of the geometry
+  // Called after each pass with its number (1-based) and the passes' cap, for progress.
+  std::function<void(int, int)> progress;
+};
+
+struct AdaptationPass {
+  OperationCount collapses, splits, swaps, moves;
+  Index vertices = 0, elements = 0;  // after the pass
+  double seconds = 0;
+};
+
+struct AdaptationRun {
+  std::vector<AdaptationPass> passes;
+  bool converged = false;  // stopped because a pass changed almost nothing, not at the cap
+};
+
+// Adapts `mesh` (P1, with its topology) to `metric`; new boundary vertices go on `geometry` (none:
+// on the straight boundary). The mesh is compact on return.
+template <int D>
+AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
+                              const AdaptationSettings& settings);
+
+}  // namespace hocav

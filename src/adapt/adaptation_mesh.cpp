@@ -1,0 +1,72 @@
+#include "adapt/adaptation_mesh.hpp"
+
+#include <algorithm>
+
+#include "adapt/vertex_classes.hpp"
+
+namespace hocav {
+
+template <int D>
+AdaptationMesh<D>::AdaptationMesh(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
+                                  double feature_angle_degrees)
+    : mesh_(mesh), metric_(metric), geometry_(geometry) {
+  metric_attribute_ = mesh_.add_vertex_attribute(SymMat<D>::kEntryCount);
+  class_attribute_ = mesh_.add_vertex_attribute(1);
+  hint_attribute_ = mesh_.add_vertex_attribute(1);
+  const std::vector<VertexClass> classes = classify_vertices(mesh_, feature_angle_degrees);
+  for (Index v = 0; v < mesh_.vertex_count(); ++v) {
+    mesh_.vertex_attribute(class_attribute_, v)[0] = static_cast<double>(classes[v]);
+    mesh_.vertex_attribute(hint_attribute_, v)[0] = kNoIndex;
+    evaluate_metric(v, v);
+  }
+}
+
+template <int D>
+SymMat<D> AdaptationMesh<D>::metric(Index v) const {
+  SymMat<D> m;
+  const auto row = mesh_.vertex_attribute(metric_attribute_, v);
+  std::copy(row.begin(), row.end(), m.entries.begin());
+  return m;
+}
+
+template <int D>
+void AdaptationMesh<D>::set_metric(Index v, const SymMat<D>& metric) {
+  std::copy(metric.entries.begin(), metric.entries.end(), mesh_.vertex_attribute(metric_attribute_, v).begin());
+}
+
+template <int D>
+void AdaptationMesh<D>::evaluate_metric(Index v, Index near) {
+  auto hint = static_cast<Index>(mesh_.vertex_attribute(hint_attribute_, near)[0]);
+  set_metric(v, metric_.metric_at(mesh_.vertex(v), hint));
+  mesh_.vertex_attribute(hint_attribute_, v)[0] = hint;
+}
+
+template <int D>
+Index AdaptationMesh<D>::add_vertex(const Vec<D>& x, VertexClass vertex_class, Index near) {
+  const Index v = mesh_.add_vertex(x);
+  mesh_.vertex_attribute(class_attribute_, v)[0] = static_cast<double>(vertex_class);
+  evaluate_metric(v, near);
+  return v;
+}
+
+template <int D>
+void AdaptationMesh<D>::move_vertex(Index v, const Vec<D>& x) {
+  mesh_.vertex(v) = x;
+  evaluate_metric(v, v);
+}
+
+template <int D>
+double AdaptationMesh<D>::quality(const Element& element) const {
+  std::array<Vec<D>, D + 1> points;
+  std::array<SymMat<D>, D + 1> metrics;
+  for (int i = 0; i <= D; ++i) {
+    points[i] = mesh_.vertex(element[i]);
+    metrics[i] = metric(element[i]);
+  }
+  return metric_mean_ratio<D>(points, metrics);
+}
+
+template class AdaptationMesh<2>;
+template class AdaptationMesh<3>;
+
+}  // namespace hocav

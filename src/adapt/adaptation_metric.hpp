@@ -1,0 +1,42 @@
+// The metric an adaptation run adapts to (docs/adaptation.md §Metric): either a field on a back mesh
+// (the input mesh with a metric at its vertices, log-Euclidean interpolation) or an analytic field
+// evaluated exactly at every new vertex; sizes clamped to [h_min, h_max] in both cases.
+#pragma once
+
+#include <optional>
+
+#include "geom/sym_mat.hpp"
+#include "metric/analytic_metric.hpp"
+#include "metric/metric_field.hpp"
+
+namespace hocav {
+
+struct SizeBounds {
+  double h_min = 0;         // 0: no lower bound on the sizes
+  double h_max = 1e300;     // no upper bound
+};
+
+template <int D>
+class AdaptationMetric {
+ public:
+  // The field must outlive this object.
+  AdaptationMetric(const MetricField<D>& field, SizeBounds bounds) : field_(&field), bounds_(bounds) {}
+  AdaptationMetric(AnalyticMetricSpec spec, SizeBounds bounds) : analytic_(std::move(spec)), bounds_(bounds) {}
+
+  // The metric at x, clamped. `hint`: a back element near x (kNoIndex: none), updated to where x
+  // fell; ignored by an analytic field.
+  SymMat<D> metric_at(const Vec<D>& x, Index& hint) const;
+
+  // Clamps a metric's sizes to the bounds (eigenvalues to [1/h_max², 1/h_min²]).
+  SymMat<D> clamped(const SymMat<D>& metric) const;
+
+ private:
+  const MetricField<D>* field_ = nullptr;
+  std::optional<AnalyticMetricSpec> analytic_;
+  SizeBounds bounds_;
+};
+
+extern template class AdaptationMetric<2>;
+extern template class AdaptationMetric<3>;
+
+}  // namespace hocav

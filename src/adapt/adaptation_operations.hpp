@@ -1,0 +1,90 @@
+// The passes of the adaptation loop (docs/adaptation.md §Operators): each visits candidates listed
+// at its start by stable keys (vertex pairs, vertices), re-checks each against the current mesh,
+// and applies it as one plan/commit of the cavity operator when the result passes its tests. Every
+// new element is checked by the operator (positive straight measure) and by the pass (quality).
+#pragma once
+
+#include <array>
+#include <cmath>
+
+#include "adapt/adaptation_mesh.hpp"
+
+namespace hocav {
+
+struct AdaptationLimits {
+  double split_length = std::sqrt(2.0);         // edges longer are split
+  double collapse_length = 1 / std::sqrt(2.0);  // edges shorter are collapsed
+  double cos_feature_angle = 0.7071067811865476;  // cos 45°: boundary changes may turn a facet by less
+  double hausd = 0;  // > 0 with a geometry: new boundary facets stay within it
+};
+
+// Why a candidate operation was refused.
+enum class Refusal : int {
+  kNone = -1,     // accepted
+  kClasses = 0,   // the vertices' classes forbid it (a corner, a collapse off its surface or line)
+  kTopology,      // the cavity operator refused the star (not star-shaped, a boundary in the way, a flat element)
+  kQuality,       // a new element below the quality floor
+  kLength,        // a new edge outside the length window
+  kGeometry,      // a new boundary facet turned or left the geometry
+};
+inline constexpr int kRefusalKinds = 5;
+const char* to_string(Refusal refusal);
+
+struct OperationCount {
+  Index done = 0;
+  std::array<Index, kRefusalKinds> refused{};  // candidates tried and refused, by reason
+
+  void add(Refusal outcome) {
+    if (outcome == Refusal::kNone) ++done;
+    else ++refused[static_cast<std::size_t>(outcome)];
+  }
+  Index refused_total() const {
+    Index total = 0;
+    for (Index n : refused) total += n;
+    return total;
+  }
+  OperationCount& operator+=(const OperationCount& other) {
+    done += other.done;
+    for (std::size_t i = 0; i < refused.size(); ++i) refused[i] += other.refused[i];
+    return *this;
+  }
+};
+
+// Splits edges longer than split_length at their middle (on the geometry for boundary edges),
+// longest first.
+template <int D>
+OperationCount split_long_edges(AdaptationMesh<D>& mesh, const AdaptationLimits& limits);
+
+// Collapses edges shorter than collapse_length, shortest first, one end onto the other when the
+// classes allow it and no new edge is longer than split_length.
+template <int D>
+OperationCount collapse_short_edges(AdaptationMesh<D>& mesh, const AdaptationLimits& limits);
+
+// Swaps that raise the worst quality of their cavity: 2D edge flips; 3D edge-shell swaps n → 2n − 4
+// (the shell re-starred from its best vertex) and face swaps 2 → 3, around elements of quality below 0.5.
+template <int D>
+OperationCount swap_for_quality(AdaptationMesh<D>& mesh, const AdaptationLimits& limits);
+
+// Moves interior vertices toward the point where their edges would be unit, when that raises the
+// worst quality of their ball.
+template <int D>
+OperationCount smooth_vertices(AdaptationMesh<D>& mesh, const AdaptationLimits& limits);
+
+// The range of the lengths of the edges from `center` in these elements (vertex lists).
+template <int D>
+std::pair<double, double> length_range_from(const AdaptationMesh<D>& mesh, Index center, std::span<const typename Mesh<D>::Element> elements);
+
+// Whether the edges from `center` in `after` keep within the unit window [collapse, split] widened to
+// what `before` had: an operation may not create work for the next split or collapse (refine's
+// closing window, kept local).
+template <int D>
+bool lengths_stay_in_window(const AdaptationMesh<D>& mesh, Index center, std::pair<double, double> before,
+                            std::span<const typename Mesh<D>::Element> after, const AdaptationLimits& limits);
+
+// The worst quality of these elements (+inf for none), and of the elements a plan would create.
+template <int D>
+double worst_quality(const AdaptationMesh<D>& mesh, std::span<const Index> elements);
+template <int D>
+double worst_planned_quality(const AdaptationMesh<D>& mesh, const CavityOperator<D>& plan);
+
+}  // namespace hocav

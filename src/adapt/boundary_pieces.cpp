@@ -1,0 +1,68 @@
+#include "adapt/boundary_pieces.hpp"
+
+#include <algorithm>
+
+
+namespace hocav {
+
+template <int D>
+void facets_through(const Mesh<D>& mesh, std::span<const Index> elements, std::span<const Index> through, std::vector<Index>& out) {
+  out.clear();
+  for (Index k : elements)
+    for (int face = 0; face <= D; ++face) {
+      const Index f = mesh.element_face_facet(k, face);
+      if (f == kNoIndex) continue;
+      const auto& vertices = mesh.facet(f);
+      if (std::all_of(through.begin(), through.end(), [&](Index v) { return std::find(vertices.begin(), vertices.end(), v) != vertices.end(); }) &&
+          std::find(out.begin(), out.end(), f) == out.end())
+        out.push_back(f);
+    }
+}
+
+void lines_through(const Mesh<3>& mesh, Index v, std::vector<Index>& out) {
+  out.clear();
+  for (Index l = 0; l < mesh.line_count(); ++l)
+    if (!mesh.line_removed(l) && (mesh.line(l)[0] == v || mesh.line(l)[1] == v)) out.push_back(l);
+}
+
+namespace {
+
+template <int D>
+Vec<D> facet_centroid(const Mesh<D>& mesh, const typename Mesh<D>::Facet& facet) {
+  Vec<D> sum{};
+  for (Index v : facet) sum = sum + mesh.vertex(v);
+  return (1.0 / D) * sum;
+}
+
+template <int D>
+Vec<D> area_normal(const Mesh<D>& mesh, const typename Mesh<D>::Facet& f) {
+  if constexpr (D == 2) {
+    const Vec2 e = mesh.vertex(f[1]) - mesh.vertex(f[0]);
+    return Vec2{e[1], -e[0]};
+  } else {
+    return cross(mesh.vertex(f[1]) - mesh.vertex(f[0]), mesh.vertex(f[2]) - mesh.vertex(f[0]));
+  }
+}
+
+}  // namespace
+
+template <int D>
+bool boundary_change_acceptable(const AdaptationMesh<D>& adaptation, const CavityOperator<D>& plan, double cos_feature_angle,
+                                double hausd) {
+  const Mesh<D>& mesh = adaptation.mesh();
+  for (const auto& facet : plan.new_facets()) {
+    const Vec<D> normal = area_normal<D>(mesh, facet.vertices), old_normal = area_normal<D>(mesh, mesh.facet(facet.replaced));
+    if (!(dot(normal, old_normal) > cos_feature_angle * norm(normal) * norm(old_normal))) return false;
+    if (adaptation.geometry() && hausd > 0 &&
+        adaptation.geometry()->project(facet_centroid<D>(mesh, facet.vertices), {facet.ref}).distance > hausd)
+      return false;
+  }
+  return true;
+}
+
+template void facets_through(const Mesh<2>&, std::span<const Index>, std::span<const Index>, std::vector<Index>&);
+template void facets_through(const Mesh<3>&, std::span<const Index>, std::span<const Index>, std::vector<Index>&);
+template bool boundary_change_acceptable(const AdaptationMesh<2>&, const CavityOperator<2>&, double, double);
+template bool boundary_change_acceptable(const AdaptationMesh<3>&, const CavityOperator<3>&, double, double);
+
+}  // namespace hocav

@@ -1,0 +1,102 @@
+// Edge split (docs/adaptation.md §Split): the shell of the edge re-starred from a new vertex at its
+// middle; on a boundary edge the facets (and the 3D feature line) through it are re-starred too and
+// the new vertex goes on the geometry, or on the straight middle if the geometry's point is refused.
+#include <algorithm>
+
+#include "adapt/adaptation_operations.hpp"
+#include "adapt/boundary_pieces.hpp"
+#include "mesh/ball_and_shell.hpp"
+#include "mesh/vertex_graph.hpp"
+
+namespace hocav {
+namespace {
+
+template <int D>
+struct SplitScratch {
+  std::vector<Index> facets, lines, candidate_lines;
+};
+
+// The boundary pieces through edge (a, b): its facets and, in 3D, the feature line on it.
+template <int D>
+void boundary_through_edge(AdaptationMesh<D>& am, Index a, Index b, SplitScratch<D>& s) {
+  const Index ends[2] = {a, b};
+  facets_through(am.mesh(), am.workspace().cavity, ends, s.facets);
+  s.lines.clear();
+  if constexpr (D == 3)
+    if (!s.facets.empty() && am.vertex_class(a) >= VertexClass::kRidge && am.vertex_class(b) >= VertexClass::kRidge) {
+      lines_through(am.mesh(), a, s.candidate_lines);
+      for (Index l : s.candidate_lines)
+        if (am.mesh().line(l)[0] == b || am.mesh().line(l)[1] == b) s.lines.push_back(l);
+    }
+}
+
+// Where the new vertex of a boundary edge goes: on the feature curve its two surfaces share, or
+// on its surface; the straight middle without a geometry (or on a ridge inside one surface).
+template <int D>
+Vec<D> point_on_boundary(const AdaptationMesh<D>& am, const Vec<D>& middle, const SplitScratch<D>& s) {
+  const BoundaryGeometry<D>* geometry = am.geometry();
+  if (!geometry) return middle;
+  const int ref_a = am.mesh().facet_ref(s.facets.front()), ref_b = am.mesh().facet_ref(s.facets.back());
+  if (!s.lines.empty()) return ref_a != ref_b ? geometry->project_on_intersection(middle, ref_a, ref_b) : middle;
+  return geometry->project(middle, {ref_a}).point;
+}
+
+template <int D>
+Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const AdaptationLimits& limits, SplitScratch<D>& s) {
+  Mesh<D>& mesh = am.mesh();
+  auto& work = am.workspace();
+  boundary_through_edge(am, a, b, s);
+  const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
+  const VertexClass new_class = s.facets.empty() ? VertexClass::kInterior : s.lines.empty() ? VertexClass::kSurface : VertexClass::kRidge;
+  const double old_worst = worst_quality<D>(am, work.cavity);
+  CavityOptions options;
+  options.removed_facets = s.facets;
+  options.removed_lines = s.lines;
+  // The point on the geometry first, then the straight middle (mmg bisects between the two).
+  const std::array<Vec<D>, 2> points{s.facets.empty() ? middle : point_on_boundary(am, middle, s), middle};
+  Refusal refusal = Refusal::kTopology;
+  for (int attempt = 0; attempt < (points[0] == points[1] ? 1 : 2); ++attempt) {
+    const Index v = am.add_vertex(points[attempt], new_class, a);
+    if (work.cavity_operator.plan(mesh, work.cavity, v, options) != CavityStatus::kAccepted) refusal = Refusal::kTopology;
+    else if (!(worst_planned_quality(am, work.cavity_operator) >= std::min(1e-3, 0.1 * old_worst))) refusal = Refusal::kQuality;
+    else if (!s.facets.empty() && !boundary_change_acceptable(am, work.cavity_operator, limits.cos_feature_angle, 0)) refusal = Refusal::kGeometry;
+    else {
+      work.cavity_operator.commit(mesh);
+      return Refusal::kNone;
+    }
+    mesh.pop_vertex();
+  }
+  return refusal;
+}
+
+}  // namespace
+
+template <int D>
+OperationCount split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limits) {
+  struct Candidate {
+    double length;
+    Index a, b;
+  };
+  std::vector<Candidate> candidates;
+  const VertexGraph graph = vertex_graph(am.mesh());
+  for (Index a = 0; a < graph.vertex_count(); ++a)
+    for (Index b : graph.neighbors_of(a))
+      if (b > a)
+        if (const double length = am.edge_length(a, b); length > limits.split_length) candidates.push_back({length, a, b});
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
+    return x.length != y.length ? x.length > y.length : std::pair(x.a, x.b) < std::pair(y.a, y.b);
+  });
+  OperationCount count;
+  SplitScratch<D> scratch;
+  for (const Candidate& c : candidates) {
+    collect_shell(am.mesh(), c.a, c.b, am.workspace().cavity);
+    if (am.workspace().cavity.empty() || am.edge_length(c.a, c.b) <= limits.split_length) continue;  // gone, or no longer long
+    count.add(split_edge(am, c.a, c.b, limits, scratch));
+  }
+  return count;
+}
+
+template OperationCount split_long_edges(AdaptationMesh<2>&, const AdaptationLimits&);
+template OperationCount split_long_edges(AdaptationMesh<3>&, const AdaptationLimits&);
+
+}  // namespace hocav

@@ -1,0 +1,216 @@
+// Swaps (docs/adaptation.md §Swap): re-stars of small cavities that raise their worst quality.
+// 2D: the two triangles of an interior edge re-starred from an opposite vertex (a flip). 3D: the
+// shell of an interior edge re-starred from the shell vertex that gives the best worst quality
+// (n → 2n − 4 elements), and two elements through a face re-starred from one's apex (2 → 3).
+#include <algorithm>
+#include <limits>
+
+#include "adapt/adaptation_operations.hpp"
+#include "mesh/ball_and_shell.hpp"
+
+namespace hocav {
+namespace {
+
+// A swap must beat the worst quality it replaces by this factor: no swap undoes another.
+constexpr double kSwapGain = 1.05;
+// 3D: elements below this quality have their edges and faces tried.
+constexpr double kSwapQuality = 0.5;
+
+template <int D>
+struct SwapScratch {
+  std::vector<Index> apexes;
+  std::vector<typename Mesh<D>::Element> old_elements, star;
+};
+
+// The elements the star of the cavity from `apex` would make (one per boundary face of the cavity
+// not through the apex, as the cavity operator makes them), without planning it: a swap tries
+// every apex, and only the best is worth a plan.
+template <int D>
+void predicted_star(const Mesh<D>& mesh, std::span<const Index> cavity, Index apex, std::vector<typename Mesh<D>::Element>& star) {
+  star.clear();
+  for (Index k : cavity)
+    for (int face = 0; face <= D; ++face) {
+      const Index outer = mesh.neighbor(k, face);
+      if (outer != kNoIndex && std::find(cavity.begin(), cavity.end(), outer) != cavity.end()) continue;
+      typename Mesh<D>::Element element;
+      element[0] = apex;
+      bool through_apex = false;
+      for (int i = 0; i < D; ++i) {
+        element[i + 1] = mesh.element(k)[face_vertices<D>(face)[i]];
+        through_apex = through_apex || element[i + 1] == apex;
+      }
+      if (!through_apex) star.push_back(element);
+    }
+}
+
+// Tries each of scratch.apexes as the star's centre for the cavity in work.cavity; commits the best
+// if it beats the old worst quality by kSwapGain, keeps the apex's edges in the length window and
+// the cavity operator accepts it.
+template <int D>
+Refusal restar_best(AdaptationMesh<D>& am, SwapScratch<D>& scratch, const AdaptationLimits& limits) {
+  auto& work = am.workspace();
+  double best = kSwapGain * worst_quality<D>(am, work.cavity);
+  Index best_apex = kNoIndex;
+  scratch.old_elements.clear();
+  for (Index k : work.cavity) scratch.old_elements.push_back(am.mesh().element(k));
+  for (Index apex : scratch.apexes) {
+    predicted_star(am.mesh(), work.cavity, apex, scratch.star);
+    double worst = std::numeric_limits<double>::infinity();
+    for (const auto& element : scratch.star) worst = std::min(worst, am.quality(element));
+    if (worst > best && lengths_stay_in_window<D>(am, apex, length_range_from<D>(am, apex, scratch.old_elements), scratch.star, limits)) {
+      best = worst;
+      best_apex = apex;
+    }
+  }
+  if (best_apex == kNoIndex) return Refusal::kQuality;
+  if (work.cavity_operator.plan(am.mesh(), work.cavity, best_apex, {}) != CavityStatus::kAccepted) return Refusal::kTopology;
+  work.cavity_operator.commit(am.mesh());
+  return Refusal::kNone;
+}
+
+// The vertices of the cavity's elements other than a and b.
+template <int D>
+void other_vertices(const Mesh<D>& mesh, std::span<const Index> cavity, Index a, Index b, std::vector<Index>& out) {
+  out.clear();
+  for (Index k : cavity)
+    for (Index v : mesh.element(k))
+      if (v != a && v != b && std::find(out.begin(), out.end(), v) == out.end()) out.push_back(v);
+}
+
+// Whether the edge's shell touches the boundary (then the edge is kept: boundary edges change only
+// with their facets, in split and collapse).
+template <int D>
+bool shell_is_closed(const Mesh<D>& mesh, std::span<const Index> shell, Index a, Index b) {
+  for (Index k : shell)
+    for (int face = 0; face <= D; ++face) {
+      const auto& e = mesh.element(k);
+      if (e[face] == a || e[face] == b) continue;  // the face misses a or b
+      if (mesh.neighbor(k, face) == kNoIndex || mesh.element_face_facet(k, face) != kNoIndex) return false;
+    }
+  return true;
+}
+
+template <int D>
+Refusal swap_edge_shell(AdaptationMesh<D>& am, Index a, Index b, SwapScratch<D>& scratch, const AdaptationLimits& limits) {
+  auto& work = am.workspace();
+  collect_shell(am.mesh(), a, b, work.cavity);
+  if (work.cavity.size() < (D == 2 ? 2u : 3u) || !shell_is_closed(am.mesh(), work.cavity, a, b)) return Refusal::kTopology;
+  other_vertices(am.mesh(), work.cavity, a, b, scratch.apexes);
+  return restar_best(am, scratch, limits);
+}
+
+// 3D, 2 → 3: the elements on both sides of interior face (a, b, c), re-starred from either apex.
+Refusal swap_face(AdaptationMesh<3>& am, Index a, Index b, Index c, SwapScratch<3>& scratch, const AdaptationLimits& limits) {
+  auto& work = am.workspace();
+  const Mesh<3>& mesh = am.mesh();
+  collect_shell(mesh, a, b, work.cavity);
+  std::erase_if(work.cavity, [&](Index k) { return local_vertex(mesh, k, c) < 0; });
+  if (work.cavity.size() != 2) return Refusal::kTopology;
+  std::vector<Index>& apexes = scratch.apexes;
+  other_vertices(mesh, work.cavity, a, b, apexes);
+  std::erase(apexes, c);
+  // The face is the one of the first element opposite its apex.
+  const int face = local_vertex(mesh, work.cavity[0], apexes[0]) >= 0 ? local_vertex(mesh, work.cavity[0], apexes[0])
+                                                                     : local_vertex(mesh, work.cavity[0], apexes[1]);
+  if (mesh.element_face_facet(work.cavity[0], face) != kNoIndex) return Refusal::kTopology;
+  return restar_best(am, scratch, limits);
+}
+
+}  // namespace
+
+template <int D>
+OperationCount swap_for_quality(AdaptationMesh<D>& am, const AdaptationLimits& limits) {
+  // Candidates by vertices (element ids move as cavities commit): 2D every edge of an element below
+  // quality 1, 3D the edges and faces of elements below kSwapQuality.
+  const Mesh<D>& mesh = am.mesh();
+  std::vector<std::array<Index, 2>> edges;
+  std::vector<std::array<Index, 3>> faces;
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    if (am.quality(k) >= (D == 2 ? 0.9 : kSwapQuality)) continue;
+    const auto& e = mesh.element(k);
+    for (int i = 0; i <= D; ++i)
+      for (int j = 0; j < i; ++j) edges.push_back({std::min(e[i], e[j]), std::max(e[i], e[j])});
+    if constexpr (D == 3)
+      for (int f = 0; f < 4; ++f) {
+        std::array<Index, 3> face{e[face_vertices<3>(f)[0]], e[face_vertices<3>(f)[1]], e[face_vertices<3>(f)[2]]};
+        std::sort(face.begin(), face.end());
+        faces.push_back(face);
+      }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  OperationCount count;
+  SwapScratch<D> scratch;
+  for (const auto& [a, b] : edges) {
+    count.add(swap_edge_shell(am, a, b, scratch, limits));
+  }
+  if constexpr (D == 3)
+    for (const auto& [a, b, c] : faces) {
+      count.add(swap_face(am, a, b, c, scratch, limits));
+    }
+  return count;
+}
+
+template <int D>
+double worst_quality(const AdaptationMesh<D>& am, std::span<const Index> elements) {
+  double worst = std::numeric_limits<double>::infinity();
+  for (Index k : elements) worst = std::min(worst, am.quality(k));
+  return worst;
+}
+
+template <int D>
+double worst_planned_quality(const AdaptationMesh<D>& am, const CavityOperator<D>& plan) {
+  double worst = std::numeric_limits<double>::infinity();
+  for (const auto& element : plan.new_elements()) worst = std::min(worst, am.quality(element));
+  return worst;
+}
+
+const char* to_string(Refusal refusal) {
+  switch (refusal) {
+    case Refusal::kNone: return "accepted";
+    case Refusal::kClasses: return "classes";
+    case Refusal::kTopology: return "topology";
+    case Refusal::kQuality: return "quality";
+    case Refusal::kLength: return "length";
+    case Refusal::kGeometry: return "geometry";
+  }
+  return "?";
+}
+
+template <int D>
+std::pair<double, double> length_range_from(const AdaptationMesh<D>& am, Index center, std::span<const typename Mesh<D>::Element> elements) {
+  std::pair<double, double> range{std::numeric_limits<double>::infinity(), 0.0};
+  for (const auto& element : elements) {
+    if (std::find(element.begin(), element.end(), center) == element.end()) continue;
+    for (Index w : element)
+      if (w != center) {
+        const double length = am.edge_length(center, w);
+        range = {std::min(range.first, length), std::max(range.second, length)};
+      }
+  }
+  return range;
+}
+
+template <int D>
+bool lengths_stay_in_window(const AdaptationMesh<D>& am, Index center, std::pair<double, double> before,
+                            std::span<const typename Mesh<D>::Element> after, const AdaptationLimits& limits) {
+  const auto [shortest, longest] = length_range_from(am, center, after);
+  return shortest >= std::min(limits.collapse_length, before.first) && longest <= std::max(limits.split_length, before.second);
+}
+
+template OperationCount swap_for_quality(AdaptationMesh<2>&, const AdaptationLimits&);
+template OperationCount swap_for_quality(AdaptationMesh<3>&, const AdaptationLimits&);
+template std::pair<double, double> length_range_from(const AdaptationMesh<2>&, Index, std::span<const Mesh<2>::Element>);
+template std::pair<double, double> length_range_from(const AdaptationMesh<3>&, Index, std::span<const Mesh<3>::Element>);
+template bool lengths_stay_in_window(const AdaptationMesh<2>&, Index, std::pair<double, double>, std::span<const Mesh<2>::Element>,
+                                     const AdaptationLimits&);
+template bool lengths_stay_in_window(const AdaptationMesh<3>&, Index, std::pair<double, double>, std::span<const Mesh<3>::Element>,
+                                     const AdaptationLimits&);
+template double worst_quality(const AdaptationMesh<2>&, std::span<const Index>);
+template double worst_quality(const AdaptationMesh<3>&, std::span<const Index>);
+template double worst_planned_quality(const AdaptationMesh<2>&, const CavityOperator<2>&);
+template double worst_planned_quality(const AdaptationMesh<3>&, const CavityOperator<3>&);
+
+}  // namespace hocav

@@ -1,0 +1,60 @@
+#include "adapt/vertex_classes.hpp"
+
+#include <algorithm>
+#include <unordered_set>
+
+#include "surface/surface_topology.hpp"
+
+namespace hocav {
+namespace {
+
+void tag_corner(std::vector<Index>& corners, std::vector<VertexClass>& classes, Index v) {
+  if (classes[v] == VertexClass::kCorner) return;
+  classes[v] = VertexClass::kCorner;
+  if (std::find(corners.begin(), corners.end(), v) == corners.end()) corners.push_back(v);
+}
+
+// 3D: every ridge side becomes a tagged feature line; a vertex with two line edges is a ridge
+// vertex, with one or more than two a corner.
+void classify_features(Mesh<3>& mesh, const SurfaceTopology<3>& surface, std::vector<VertexClass>& classes) {
+  std::unordered_set<std::uint64_t> lines;
+  for (Index l = 0; l < mesh.line_count(); ++l) lines.insert(Mesh<3>::edge_key(mesh.line(l)[0], mesh.line(l)[1]));
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    for (int side = 0; side < 3; ++side) {
+      if (!surface.ridges[f][side]) continue;
+      const Index a = mesh.facet(f)[(side + 1) % 3], b = mesh.facet(f)[(side + 2) % 3];
+      if (lines.insert(Mesh<3>::edge_key(a, b)).second) mesh.ridges().push_back(mesh.add_line({a, b}, mesh.facet_ref(f)));
+    }
+  std::vector<int> line_edges(static_cast<std::size_t>(mesh.vertex_count()), 0);
+  for (Index l = 0; l < mesh.line_count(); ++l)
+    for (Index v : mesh.line(l)) ++line_edges[v];
+  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+    if (line_edges[v] == 2 && classes[v] != VertexClass::kCorner) classes[v] = VertexClass::kRidge;
+    else if (line_edges[v] > 0) tag_corner(mesh.corners(), classes, v);
+  }
+}
+
+// 2D: a ridge side of a boundary edge is a vertex: a corner.
+void classify_features(Mesh<2>& mesh, const SurfaceTopology<2>& surface, std::vector<VertexClass>& classes) {
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    for (int side = 0; side < 2; ++side)
+      if (surface.ridges[f][side]) tag_corner(mesh.corners(), classes, mesh.facet(f)[1 - side]);
+}
+
+}  // namespace
+
+template <int D>
+std::vector<VertexClass> classify_vertices(Mesh<D>& mesh, double feature_angle_degrees) {
+  std::vector<VertexClass> classes(static_cast<std::size_t>(mesh.vertex_count()), VertexClass::kInterior);
+  for (const auto& facet : mesh.facets())
+    for (Index v : facet) classes[v] = VertexClass::kSurface;
+  for (Index v : mesh.corners()) classes[v] = VertexClass::kCorner;
+  for (Index v : mesh.required_vertices()) classes[v] = VertexClass::kCorner;
+  classify_features(mesh, build_surface_topology(mesh, feature_angle_degrees), classes);
+  return classes;
+}
+
+template std::vector<VertexClass> classify_vertices(Mesh<2>&, double);
+template std::vector<VertexClass> classify_vertices(Mesh<3>&, double);
+
+}  // namespace hocav

@@ -1,0 +1,18 @@
+// The geometric class of every vertex at the start of an adaptation (docs/adaptation.md §Boundary):
+// corners and ridges from the mesh's own tags (Corners, RequiredVertices, Ridges/Edges) and from
+// the boundary's shape (sides whose facets differ in ref or meet at more than the feature angle).
+#pragma once
+
+#include <vector>
+
+#include "adapt/adaptation_mesh.hpp"
+
+namespace hocav {
+
+// Classifies the vertices of a mesh with topology. Ridges found from the shape are added to the
+// mesh as tagged feature lines (3D) or corners (2D ridge vertices), and vertices where the feature
+// lines do not continue (3D: ends and junctions) as corners, so the output carries them.
+template <int D>
+std::vector<VertexClass> classify_vertices(Mesh<D>& mesh, double feature_angle_degrees);
+
+}  // namespace hocav

@@ -1,0 +1,192 @@
+// hocav adapt IN --metric SOL | --analytic NAME -o OUT [--order 2|1] [--hmin H] [--hmax H]
+//                [--hgrad BETA] [--hausd D] [--angle DEG] [--surface p3|cad:FILE|none]
+//                [--jacobian-floor J] [--iterations N] [--threads N] [--report R.json] [--vtu V.vtu]
+// Metric-based adaptation to a unit mesh (split, collapse, swap, smooth; boundary points on the
+// geometry), then, with --order 2, the curving of `hocav curve` in the same metric.
+#include <sys/resource.h>
+
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <thread>
+
+#include "adapt/adaptation_loop.hpp"
+#include "cli/command_support.hpp"
+#include "cli/commands.hpp"
+#include "geom/sym_functions.hpp"
+#include "io/atomic_output.hpp"
+#include "mesh/consistency.hpp"
+#include "metric/gradation.hpp"
+#include "report/adaptation_report.hpp"
+
+namespace hocav {
+namespace {
+
+struct AdaptOptions {
+  std::string input, metric, analytic, output, report, vtu, surface = "p3";
+  int order = 2;
+  std::optional<double> h_min, h_max, gradation;
+  double hausd = 0.01;  // relative to the bounding box's diagonal when --hausd is not given
+  std::optional<double> hausd_given;
+  double angle = 45;
+  double jacobian_floor = 0.01;
+  int iterations = 20;
+  int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  bool quiet = false;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+long long peak_memory_bytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<long long>(usage.ru_maxrss) * 1024;
+}
+
+void check_options(const AdaptOptions& o) {
+  if (o.metric.empty() == o.analytic.empty()) throw Error("give exactly one metric source: --metric SOL or --analytic NAME");
+  if (o.h_min && o.h_max && *o.h_min > *o.h_max) throw Error("--hmin must not exceed --hmax");
+  if (o.gradation && !o.analytic.empty())
+    throw Error("--hgrad grades a metric given on a mesh: make one with `hocav metric --analytic NAME --gradation BETA`");
+}
+
+// The metric of the run: the input mesh as back mesh with its graded metric, or the analytic field.
+template <int D>
+struct RunMetric {
+  std::optional<MetricField<D>> field;
+  std::optional<AdaptationMetric<D>> metric;
+};
+
+template <int D>
+void make_run_metric(RunMetric<D>& run, const Mesh<D>& input, const MeshFileContent& file, const AdaptOptions& o) {
+  const SizeBounds bounds{o.h_min.value_or(0), o.h_max.value_or(1e300)};
+  if (!o.analytic.empty()) {
+    AnalyticMetricSpec spec;
+    spec.name = o.analytic;
+    run.metric.emplace(spec, bounds);
+    return;
+  }
+  std::vector<SymMat<D>> metrics = metrics_of_rows<D>(read_metric_for_mesh(o.metric, file, false));
+  if (o.gradation) grade_metrics(input, metrics, {*o.gradation});
+  run.field.emplace(input, metrics);
+  run.metric.emplace(*run.field, bounds);
+}
+
+template <int D>
+std::vector<SymMat<D>> metrics_at_vertices(const Mesh<D>& mesh, const AdaptationMetric<D>& metric) {
+  std::vector<SymMat<D>> metrics;
+  Index hint = kNoIndex;
+  for (const auto& x : mesh.vertices()) metrics.push_back(metric.metric_at(x, hint));
+  return metrics;
+}
+
+template <int D>
+void measure_adapted(AdaptationReport& report, const Mesh<D>& mesh, const std::vector<SymMat<D>>& metrics) {
+  const SolutionField rows = rows_of_metrics(metrics);
+  Mesh<D> copy = mesh;  // the statistics build an edge table
+  report.lengths = *compute_mesh_statistics(copy, rows.values).metric;
+  report.quality = metric_quality_summary(mesh, rows.values);
+  report.output_vertices = mesh.vertex_count();
+  report.output_elements = mesh.element_count();
+}
+
+template <int D>
+void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o) {
+  if (auto problems = check_consistency(mesh); !problems.empty()) throw Error(o.input + ": " + problems.front());
+  mesh.forget_edges();
+  const Mesh<D> input = mesh;
+  RunMetric<D> run;
+  make_run_metric(run, input, file, o);
+  const auto geometry = boundary_geometry<D>(o.surface, input);
+
+  AdaptationSettings settings;
+  settings.max_passes = o.iterations;
+  settings.feature_angle_degrees = o.angle;
+  settings.hausd = o.hausd_given.value_or(o.hausd * bounding_box_diagonal(input));
+  if (!o.quiet) settings.progress = [](int pass, int cap) { std::cerr << "adapting: pass " << pass << " (at most " << cap << ")\n"; };
+  AdaptationReport report;
+  report.dimension = D;
+  report.input_vertices = input.vertex_count();
+  report.input_elements = input.element_count();
+  auto start = std::chrono::steady_clock::now();
+  report.run = adapt_to_metric(mesh, *run.metric, geometry.get(), settings);
+  report.seconds_adapt = seconds_since(start);
+  const std::vector<SymMat<D>> metrics = metrics_at_vertices(mesh, *run.metric);
+  measure_adapted(report, mesh, metrics);
+
+  // The curving field lives on the adapted mesh: its vertices carry the (clamped) metric the loop used.
+  const MetricField<D> curving_field(mesh, metrics);
+  if (o.order == 2) {
+    start = std::chrono::steady_clock::now();
+    report.curving = curve_in_metric(mesh, curving_field, {o.surface, "simpson", o.jacobian_floor, 1, o.threads, !o.quiet});
+    report.seconds_curve = seconds_since(start);
+  }
+  report.peak_memory_bytes = peak_memory_bytes();
+
+  write_mesh_file(o.output, mesh);
+  if (!o.vtu.empty()) write_curved_vtu(o.vtu, mesh, curving_field);
+  if (!o.report.empty()) {
+    AtomicOutput out(o.report);
+    write_adaptation_report_json(out.stream(), report);
+    out.commit();
+  }
+  if (!o.quiet) {
+    std::cout << "adapted " << o.input << " -> " << o.output << '\n';
+    write_adaptation_report_table(std::cout, report);
+    if (report.curving) write_curving_report_table(std::cout, *report.curving);
+  }
+}
+
+}  // namespace
+
+void add_adapt_command(CLI::App& app) {
+  auto o = std::make_shared<AdaptOptions>();
+  CLI::App* command = app.add_subcommand("adapt", "Adapt a mesh to a metric (a unit mesh: split, collapse, swap, smooth), then curve it");
+  command->add_option("input", o->input, "mesh to adapt (.mesh, .meshb, .msh; P1, or P2 whose nodes are dropped)")->required();
+  command->add_option("--metric", o->metric, "metric at the input's vertices (.sol/.solb); the input is the back mesh");
+  command->add_option("--analytic", o->analytic, "or an analytic metric, evaluated exactly at every vertex (" +
+                                                     [] {
+                                                       std::string names;
+                                                       for (const auto& n : analytic_metric_names()) names += (names.empty() ? "" : ", ") + n;
+                                                       return names;
+                                                     }() + ")");
+  command->add_option("-o,--output", o->output, "adapted mesh to write (.mesh, .meshb, .msh, .vtu)")->required();
+  command->add_option("--order", o->order, "2: curve the adapted mesh (P2 output); 1: stop after the P1 adaptation")
+      ->check(CLI::IsMember({1, 2}))
+      ->capture_default_str();
+  command->add_option("--hmin", o->h_min, "smallest size: the metric's sizes are clamped to it")->check(CLI::PositiveNumber);
+  command->add_option("--hmax", o->h_max, "largest size: the metric's sizes are clamped to it")->check(CLI::PositiveNumber);
+  command->add_option("--hgrad", o->gradation, "grade the metric first: sizes grow by at most BETA > 1 per unit length")
+      ->check(CLI::Range(1.0 + 1e-12, 1e6));
+  command->add_option("--hausd", o->hausd_given,
+                      "largest distance from a new boundary facet to the geometry (default 0.01 x the bounding box's diagonal)")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--angle", o->angle, "boundary sides meeting at more than this dihedral angle are ridges (degrees)")
+      ->check(CLI::Range(0.0, 180.0))
+      ->capture_default_str();
+  command->add_option("--surface", o->surface,
+                      "geometry of new boundary points and P2 nodes: p3 (a cubic surrogate of the input boundary), cad:FILE, none")
+      ->capture_default_str();
+  command->add_option("--jacobian-floor", o->jacobian_floor, "curving: every element keeps its min normalized Jacobian above this")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  command->add_option("--iterations", o->iterations, "at most this many passes of the adaptation loop")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  command->add_option("--threads", o->threads, "threads of the curving (the output does not depend on it)")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
+  command->add_option("--report", o->report, "write the run's figures (passes, lengths, qualities, Table-1 columns) as JSON");
+  command->add_option("--vtu", o->vtu, "also write a .vtu for ParaView (metric and min normalized Jacobian)");
+  command->add_flag("-q,--quiet", o->quiet, "print nothing on success");
+  command->callback([o] {
+    check_options(*o);
+    MeshFileContent file = read_mesh_file(o->input);
+    std::visit([&](auto& mesh) { adapt(mesh, file, *o); }, file.mesh);
+  });
+}
+
+}  // namespace hocav

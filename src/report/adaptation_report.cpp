@@ -1,0 +1,107 @@
+#include "report/adaptation_report.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <ostream>
+
+#include "adapt/metric_measures.hpp"
+#include "report/json_writer.hpp"
+
+namespace hocav {
+
+template <int D>
+QualitySummary metric_quality_summary(const Mesh<D>& mesh, std::span<const double> vertex_metrics) {
+  constexpr std::size_t kComponents = SymMat<D>::kEntryCount;
+  QualitySummary summary;
+  if (mesh.element_count() == 0) return summary;
+  summary.min = std::numeric_limits<double>::infinity();
+  Index below = 0;
+  for (const auto& element : mesh.elements()) {
+    std::array<Vec<D>, D + 1> points;
+    std::array<SymMat<D>, D + 1> metrics;
+    for (int i = 0; i <= D; ++i) {
+      points[i] = mesh.vertex(element[i]);
+      std::copy_n(vertex_metrics.begin() + static_cast<std::ptrdiff_t>(kComponents * static_cast<std::size_t>(element[i])), kComponents,
+                  metrics[i].entries.begin());
+    }
+    const double q = metric_mean_ratio<D>(points, metrics);
+    summary.min = std::min(summary.min, q);
+    summary.mean += q;
+    below += q < 0.1;
+  }
+  summary.mean /= mesh.element_count();
+  summary.share_below_0_1 = static_cast<double>(below) / mesh.element_count();
+  return summary;
+}
+
+namespace {
+
+// {"done": N, "refused": {"classes": N, ...}}
+void write_operation(JsonWriter& json, const char* name, const OperationCount& count) {
+  json.key(name).begin_object().member("done", count.done);
+  json.key("refused").begin_object();
+  for (int reason = 0; reason < kRefusalKinds; ++reason)
+    json.member(to_string(static_cast<Refusal>(reason)), count.refused[static_cast<std::size_t>(reason)]);
+  json.end_object().end_object();
+}
+
+}  // namespace
+
+void write_adaptation_report_json(std::ostream& out, const AdaptationReport& report) {
+  JsonWriter json(out);
+  json.begin_object();
+  json.member("dimension", report.dimension);
+  json.member("input_vertices", report.input_vertices).member("input_elements", report.input_elements);
+  json.member("output_vertices", report.output_vertices).member("output_elements", report.output_elements);
+  json.member("converged", report.run.converged);
+  json.key("passes").begin_array();
+  for (const AdaptationPass& pass : report.run.passes) {
+    json.begin_object();
+    write_operation(json, "collapses", pass.collapses);
+    write_operation(json, "splits", pass.splits);
+    write_operation(json, "swaps", pass.swaps);
+    write_operation(json, "moves", pass.moves);
+    json.member("vertices", pass.vertices).member("elements", pass.elements).member("seconds", pass.seconds);
+    json.end_object();
+  }
+  json.end_array();
+  json.key("edge_length").begin_object();
+  json.member("edges", report.lengths.edge_count).member("min", report.lengths.min).member("mean", report.lengths.mean);
+  json.member("max", report.lengths.max).member("unit_share", report.lengths.unit_share).end_object();
+  json.key("quality").begin_object();
+  json.member("min", report.quality.min).member("mean", report.quality.mean);
+  json.member("share_below_0_1", report.quality.share_below_0_1).end_object();
+  json.key("seconds").begin_object().member("adapt", report.seconds_adapt).member("curve", report.seconds_curve).end_object();
+  json.member("peak_memory_bytes", report.peak_memory_bytes);
+  if (report.curving) {
+    json.key("curving");
+    write_curving_report_object(json, *report.curving);
+  }
+  json.end_object();
+  out << '\n';
+}
+
+void write_adaptation_report_table(std::ostream& out, const AdaptationReport& report) {
+  out << "pass  collapses  splits   swaps   moves  vertices  elements  seconds\n";
+  for (std::size_t i = 0; i < report.run.passes.size(); ++i) {
+    const AdaptationPass& p = report.run.passes[i];
+    char line[160];
+    std::snprintf(line, sizeof line, "%4zu %10d %7d %7d %7d %9d %9d %8.2f\n", i + 1, p.collapses.done, p.splits.done, p.swaps.done,
+                  p.moves.done, p.vertices, p.elements, p.seconds);
+    out << line;
+  }
+  char summary[320];
+  std::snprintf(summary, sizeof summary,
+                "%s after %zu passes: %d -> %d elements; edges unit %.1f%% (length %.3f/%.3f/%.3f min/mean/max); "
+                "quality min %.3f mean %.3f (%.2f%% below 0.1); adapt %.2f s, curve %.2f s, peak %.0f MiB\n",
+                report.run.converged ? "converged" : "stopped at the cap", report.run.passes.size(), report.input_elements,
+                report.output_elements, 100 * report.lengths.unit_share, report.lengths.min, report.lengths.mean, report.lengths.max,
+                report.quality.min, report.quality.mean, 100 * report.quality.share_below_0_1, report.seconds_adapt,
+                report.seconds_curve, static_cast<double>(report.peak_memory_bytes) / (1 << 20));
+  out << summary;
+}
+
+template QualitySummary metric_quality_summary(const Mesh<2>&, std::span<const double>);
+template QualitySummary metric_quality_summary(const Mesh<3>&, std::span<const double>);
+
+}  // namespace hocav
