@@ -59,6 +59,27 @@ TEST_F(MetricCli, StatsOfTheUgawgLinearCaseShowAUnitMeshOfAnisotropyAbout100) {
   EXPECT_NE(table.out.find("max anisotropy        99.9"), std::string::npos) << table.out;
 }
 
+// The same mesh's element qualities in its metric, through the JSON: measured mean 0.85, min 0.46,
+// no element below 0.1, and a histogram that counts every element.
+TEST_F(MetricCli, StatsJsonCarriesTheElementQualitiesOfTheUgawgCase) {
+  const std::string q = "d[\"metric\"][\"quality\"]";
+  std::string figures = stats_json("'" + kUgawgMesh + "' --metric '" + kUgawgMetric + "'",
+                                   q + "[\"mean\"], " + q + "[\"min\"], " + q + "[\"low_share\"], sum(b[\"count\"] for b in " + q +
+                                       "[\"histogram\"]), d[\"counts\"][\"elements\"]");
+  std::istringstream in(figures.substr(1));
+  double mean = 0, min = 0, low_share = 1;
+  long binned = 0, elements = -1;
+  char comma = 0;
+  in >> mean >> comma >> min >> comma >> low_share >> comma >> binned >> comma >> elements;
+  EXPECT_GT(mean, 0.8);
+  EXPECT_LT(mean, 1);
+  EXPECT_GT(min, 0.3);
+  EXPECT_LT(min, mean);
+  EXPECT_EQ(low_share, 0);
+  EXPECT_EQ(binned, elements);
+  EXPECT_EQ(elements, 48720);
+}
+
 TEST_F(MetricCli, AnalyticLinearReproducesTheUgawgMetric) {
   Outcome result = run_ok("metric '" + kUgawgMesh + "' --analytic linear -o linear.sol");
   EXPECT_NE(result.out.find("wrote linear.sol: 9476 metrics"), std::string::npos) << result.out;
