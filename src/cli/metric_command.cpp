@@ -245,7 +245,9 @@ std::string names_text(const std::vector<std::string>& names) {
 void add_metric_command(CLI::App& app) {
   auto options = std::make_shared<MetricOptions>();
   CLI::App* command = app.add_subcommand(
-      "metric", "Compute a metric on a mesh: analytic, implied, surface, Hessian-based or given; optionally graded");
+      "metric",
+      "Compute a metric on a mesh: analytic, implied, surface, Hessian-based, given or interpolated from another "
+      "mesh's; optionally graded");
   command->add_option("mesh", options->mesh, "mesh to read (.mesh, .meshb, .msh)")->required();
   command->add_option("-o,--output", options->output, "metric to write (.sol, .solb), one row per node of MESH")->required();
 

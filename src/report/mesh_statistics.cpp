@@ -193,7 +193,6 @@ std::string memory_text(std::size_t bytes) {
   return buffer;
 }
 
-
 // The bounds of a histogram bin in JSON: "from" and "to", null for an infinite end.
 void write_bin_bounds(JsonWriter& json, const std::string& label, std::optional<double> from, std::optional<double> to) {
   json.member("bin", label).key("from");

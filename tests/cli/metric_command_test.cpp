@@ -36,7 +36,8 @@ TEST_F(MetricCli, HelpListsSourcesAndOptions) {
   EXPECT_NE(run_ok("--help").out.find("metric"), std::string::npos);
   Outcome help = run_ok("metric --help");
   for (const char* option : {"--analytic", "--implied", "--surface", "--hessian", "--input", "--gradation", "--h-min",
-                             "--h-max", "--axis", "--center", "--radius", "--width", "--origin", "--complexity", "--norm",
+                             "--h-max", "--axis", "--center", "--radius", "--width", "--origin", "--complexity", "--norm", "--from",
+                             "--from-metric",
                              "shear-circle", "tanh-shock"})
     EXPECT_NE(help.out.find(option), std::string::npos) << option;
 }
