@@ -1,9 +1,11 @@
 // hocav metric MESH -o OUT.sol|.solb SOURCE [--gradation BETA] [source options]
 //   SOURCE: --analytic NAME | --implied | --surface HN,HT | --hessian FIELD.sol|analytic:NAME | --input SOL
-// A metric field on a mesh from one of the sources of math.md §10, optionally graded, written with
-// one row per node of the mesh file in the file's own node numbering. P2 mid nodes get the analytic
-// field at the node, or the input's row there; otherwise (and after gradation) the log-Euclidean
-// mean of the metrics of their edge's two vertices.
+//         | --from BACK.mesh --from-metric BACK.sol
+// A metric field on a mesh from one of the sources of math.md §10, or interpolated from another
+// mesh's metric (log-Euclidean, math.md §2: to measure a remesher's output in its input metric),
+// optionally graded, written with one row per node of the mesh file in the file's own node numbering.
+// P2 mid nodes get the analytic or interpolated field at the node, or the input's row there;
+// otherwise (and after gradation) the log-Euclidean mean of the metrics of their edge's two vertices.
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -24,7 +26,7 @@
 namespace hocav {
 namespace {
 
-enum class Source { kAnalytic, kImplied, kSurface, kHessian, kInput };
+enum class Source { kAnalytic, kImplied, kSurface, kHessian, kInput, kInterpolated };
 
 constexpr const char* kAnalyticFieldPrefix = "analytic:";
 // Default h-min of --hessian, as a fraction of h-max: a bound on |H| that only extreme fields reach.
@@ -33,6 +35,7 @@ constexpr double kHessianSizeRange = 1e-6;
 struct MetricOptions {
   std::string mesh, output;
   std::string analytic, hessian, input;
+  std::string back_mesh, back_metric;  // --from, --from-metric
   bool implied = false;
   std::vector<double> surface;  // h_n, h_t
   std::optional<double> gradation;
@@ -48,8 +51,10 @@ Source chosen_source(const MetricOptions& options) {
   if (!options.surface.empty()) given.push_back(Source::kSurface);
   if (!options.hessian.empty()) given.push_back(Source::kHessian);
   if (!options.input.empty()) given.push_back(Source::kInput);
+  if (!options.back_mesh.empty()) given.push_back(Source::kInterpolated);
   if (given.size() != 1)
-    throw Error("give exactly one metric source: --analytic NAME, --implied, --surface HN,HT, --hessian FIELD or --input SOL");
+    throw Error("give exactly one metric source: --analytic NAME, --implied, --surface HN,HT, --hessian FIELD, --input SOL "
+                "or --from MESH --from-metric SOL");
   return given.front();
 }
 
@@ -69,6 +74,8 @@ void check_options_apply(const MetricOptions& options, Source source) {
   refuse_unless(options.h_min.has_value(), analytic || hessian, "--h-min");
   refuse_unless(options.h_max.has_value(), analytic || hessian || source == Source::kSurface, "--h-max");
   refuse_unless(options.complexity.has_value() || options.norm.has_value(), hessian, "--complexity, --norm");
+  refuse_unless(!options.back_metric.empty(), source == Source::kInterpolated, "--from-metric");
+  if (source == Source::kInterpolated && options.back_metric.empty()) throw Error("--from needs --from-metric SOL");
   if (hessian && !options.complexity) throw Error("--hessian needs --complexity N");
   if (source == Source::kSurface && !options.gradation)
     throw Error("--surface needs --gradation BETA to carry the boundary sizes into the volume");
@@ -132,6 +139,27 @@ SourceMetrics<D> hessian_metrics(const Mesh<D>& mesh, const MeshFileContent& fil
   return {lp_metric(mesh, hessians, lp), {}};
 }
 
+// The back mesh's metric interpolated at the nodes of `mesh` (MetricField: log-Euclidean in the back
+// element containing the node, extended affinely just outside the back mesh).
+template <int D>
+SourceMetrics<D> interpolated_metrics(const Mesh<D>& mesh, const MetricOptions& options) {
+  MeshFileContent back_file = read_mesh_file(options.back_mesh);
+  const auto* back = std::get_if<Mesh<D>>(&back_file.mesh);
+  if (back == nullptr) throw Error(options.back_mesh + ": the back mesh is not " + std::to_string(D) + "D like the mesh");
+  const MetricField<D> field(*back, metrics_of_rows<D>(read_metric_for_mesh(options.back_metric, back_file, false)));
+  Index hint = kNoIndex;  // nodes in file order are mostly near their predecessor
+  auto metric_at = [&field, &hint](const Vec<D>& x) {
+    typename MetricField<D>::Sample sample = field.sample(x, hint);
+    hint = sample.where.element;
+    return exp_sym(sample.log_metric);
+  };
+  SourceMetrics<D> metrics;
+  for (const auto& x : mesh.vertices()) metrics.vertices.push_back(metric_at(x));
+  if (mesh.is_p2())
+    for (Index e = 0; e < mesh.edge_count(); ++e) metrics.edge_nodes.push_back(metric_at(mesh.edge_node(e)));
+  return metrics;
+}
+
 template <int D>
 SourceMetrics<D> source_metrics(const Mesh<D>& mesh, const MeshFileContent& file, const MetricOptions& options, Source source) {
   switch (source) {
@@ -153,6 +181,7 @@ SourceMetrics<D> source_metrics(const Mesh<D>& mesh, const MeshFileContent& file
       auto first_node = rows.begin() + mesh.vertex_count();
       return {std::vector<SymMat<D>>(rows.begin(), first_node), std::vector<SymMat<D>>(first_node, rows.end())};
     }
+    case Source::kInterpolated: return interpolated_metrics(mesh, options);
   }
   throw Error("internal error: unknown metric source");
 }
@@ -216,7 +245,9 @@ std::string names_text(const std::vector<std::string>& names) {
 void add_metric_command(CLI::App& app) {
   auto options = std::make_shared<MetricOptions>();
   CLI::App* command = app.add_subcommand(
-      "metric", "Compute a metric on a mesh: analytic, implied, surface, Hessian-based or given; optionally graded");
+      "metric",
+      "Compute a metric on a mesh: analytic, implied, surface, Hessian-based, given or interpolated from another "
+      "mesh's; optionally graded");
   command->add_option("mesh", options->mesh, "mesh to read (.mesh, .meshb, .msh)")->required();
   command->add_option("-o,--output", options->output, "metric to write (.sol, .solb), one row per node of MESH")->required();
 
@@ -232,6 +263,10 @@ void add_metric_command(CLI::App& app) {
                       "source: the Lp metric of the Hessian of a scalar field, FIELD.sol(b) at the nodes or "
                       "analytic:NAME (" + names_text(analytic_field_names()) + ")");
   command->add_option("--input", options->input, "source: an existing metric of MESH (.sol/.solb), e.g. to grade it");
+  command->add_option("--from", options->back_mesh,
+                      "source: the metric of another mesh BACK (.mesh, .meshb, .msh; --from-metric) interpolated "
+                      "log-Euclidean at the nodes of MESH, e.g. a remesher's input metric at its output");
+  command->add_option("--from-metric", options->back_metric, "the metric of the --from mesh (.sol/.solb), one row per node");
   command->add_option("--gradation", options->gradation, "grade the metric: sizes grow by at most BETA > 1 per unit length");
 
   command->add_option("--h", options->h, "analytic uniform: size (0.1)")->check(CLI::PositiveNumber);

@@ -1,6 +1,6 @@
 // hocav stats MESH [--metric SOL] [--json]: counts, refs, P1 measures, the consistency verdict, the
-// certified Jacobian figures and memory of a mesh; with a metric, the edge lengths in it and its
-// largest anisotropy. A table for people or one JSON object. An invalid mesh (inconsistent, or an
+// certified Jacobian figures and memory of a mesh; with a metric, the edge lengths and element
+// qualities in it and its largest anisotropy. A table for people or one JSON object. An invalid mesh (inconsistent, or an
 // element not certified positive) is reported in full, then named on stderr with exit code 2, so
 // that scripts stop on it as they would with a checker.
 #include <iostream>
@@ -43,12 +43,14 @@ void run_stats(const StatsOptions& options) {
 void add_stats_command(CLI::App& app) {
   auto options = std::make_shared<StatsOptions>();
   CLI::App* command = app.add_subcommand(
-      "stats", "Report a mesh: counts, refs, P1 measures, consistency, Jacobian figures, memory; edge lengths in a metric. "
+      "stats", "Report a mesh: counts, refs, P1 measures, consistency, Jacobian figures, memory; edge lengths and element "
+      "qualities in a metric. "
       "Exit code 2 when the mesh is invalid");
   command->add_option("mesh", options->mesh, "mesh to read (.mesh, .meshb, .msh)")->required();
   command->add_option("--metric", options->metric,
                       "metric of the mesh (.sol/.solb): adds the Riemannian edge lengths in the metric (min/mean/max, "
-                      "histogram, share in [1/sqrt(2), sqrt(2)]) and the max anisotropy");
+                      "histogram, share in [1/sqrt(2), sqrt(2)]), the elements' mean-ratio quality in it (min/mean, histogram, "
+                      "share below 0.1) and the max anisotropy");
   command->add_flag("--json", options->json, "print one JSON object instead of the table");
   command->callback([options] { run_stats(*options); });
 }

@@ -13,6 +13,7 @@
 #include "geom/sym_functions.hpp"
 #include "mesh/consistency.hpp"
 #include "mesh/measure.hpp"
+#include "metric/metric_quality.hpp"
 #include "report/json_writer.hpp"
 
 namespace hocav {
@@ -25,6 +26,29 @@ std::vector<RefCount> count_refs(Index count, RefOf ref_of) {
   std::vector<RefCount> out;
   for (const auto& [ref, n] : counts) out.push_back({ref, n});
   return out;
+}
+
+// The quality figures of the straight elements, each in the metric at its centroid.
+template <int D>
+void add_quality_figures(const Mesh<D>& mesh, const std::vector<SymMat<D>>& vertex_logs, MetricStatistics& s) {
+  if (mesh.element_count() == 0) return;
+  s.quality_min = std::numeric_limits<double>::infinity();
+  double sum = 0;
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    SimplexPoints<D> corners;
+    SymMat<D> log_sum;
+    for (int i = 0; i <= D; ++i) {
+      const Index v = mesh.element(k)[i];
+      corners[static_cast<std::size_t>(i)] = mesh.vertex(v);
+      log_sum += vertex_logs[static_cast<std::size_t>(v)];
+    }
+    const double quality = metric_mean_ratio<D>(corners, exp_sym((1.0 / (D + 1)) * log_sum));
+    s.quality_min = std::min(s.quality_min, quality);
+    sum += quality;
+    ++s.quality_histogram[quality_bin(quality)];
+  }
+  s.quality_mean = sum / mesh.element_count();
+  s.low_quality_share = static_cast<double>(s.quality_histogram[0]) / mesh.element_count();
 }
 
 template <int D>
@@ -49,6 +73,7 @@ MetricStatistics metric_statistics(const Mesh<D>& mesh, std::span<const double> 
     Vec<D> theta = sym_eigen(vertex_logs[v]).values;
     s.max_anisotropy = std::max(s.max_anisotropy, std::exp(0.5 * (theta[D - 1] - theta[0])));
   }
+  add_quality_figures(mesh, vertex_logs, s);
 
   s.edge_count = mesh.edge_count();
   if (s.edge_count == 0) return s;
@@ -129,6 +154,28 @@ std::string jacobian_bin_label(std::size_t bin) {
   return label;
 }
 
+std::string percent(double share) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.1f%%", 100 * share);
+  return buffer;
+}
+
+// "(-inf, 0.1)", "[0.1, 0.3)", "[0.9, 1]".
+std::string quality_bin_label(std::size_t bin) {
+  const auto& bounds = kQualityBinBounds;
+  std::string label(bin == 0 ? "(" : "[");
+  label.append(bin == 0 ? "-inf" : bound(bounds[bin - 1])).append(", ");
+  label.append(bin == bounds.size() ? "1" : bound(bounds[bin])).push_back(bin == bounds.size() ? ']' : ')');
+  return label;
+}
+
+// A histogram row of the table: the count and its share of `total`.
+std::string count_and_share(Index count, Index total) {
+  std::ostringstream text;
+  text << std::right << std::setw(10) << count << std::setw(9) << percent(total > 0 ? static_cast<double>(count) / total : 0.0);
+  return text.str();
+}
+
 std::string refs_text(const std::vector<RefCount>& refs) {
   if (refs.empty()) return "none";
   std::string text;
@@ -143,12 +190,6 @@ std::string memory_text(std::size_t bytes) {
   for (; unit + 1 < std::size(kUnits) && amount >= 1024; ++unit) amount /= 1024;
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%zu bytes (%.1f %s)", bytes, amount, kUnits[unit]);
-  return buffer;
-}
-
-std::string percent(double share) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.1f%%", 100 * share);
   return buffer;
 }
 
@@ -173,6 +214,19 @@ void write_refs_json(JsonWriter& json, std::string_view name, const std::vector<
   json.end_array();
 }
 
+void write_quality_json(JsonWriter& json, const MetricStatistics& metric) {
+  json.key("quality").begin_object().member("min", metric.quality_min).member("mean", metric.quality_mean);
+  json.member("low_share", metric.low_quality_share).member("low_bound", kLowQuality);
+  json.key("histogram").begin_array();
+  for (std::size_t bin = 0; bin < metric.quality_histogram.size(); ++bin) {
+    json.begin_object();
+    write_bin_bounds(json, quality_bin_label(bin), bin == 0 ? std::nullopt : std::optional(kQualityBinBounds[bin - 1]),
+                     bin < kQualityBinBounds.size() ? std::optional(kQualityBinBounds[bin]) : std::optional(1.0));
+    json.member("count", metric.quality_histogram[bin]).end_object();
+  }
+  json.end_array().end_object();
+}
+
 }  // namespace
 
 std::size_t edge_length_bin(double length) {
@@ -183,6 +237,13 @@ std::size_t edge_length_bin(double length) {
     if (i == kUnitEdgeBin) bound *= 1 + kUnitBinSlack;
     if (i < kUnitEdgeBin ? length >= bound : length > bound) bin = i + 1;
   }
+  return bin;
+}
+
+std::size_t quality_bin(double quality) {
+  std::size_t bin = 0;
+  for (std::size_t i = 0; i < kQualityBinBounds.size(); ++i)
+    if (quality >= kQualityBinBounds[i]) bin = i + 1;
   return bin;
 }
 
@@ -308,13 +369,14 @@ void write_statistics_table(std::ostream& out, const MeshStatistics& s, const st
   row("metric", metric_name);
   row("edge length", "min " + number(metric.min) + "  mean " + number(metric.mean) + "  max " + number(metric.max) +
                          "  (" + std::to_string(metric.edge_count) + " edges)");
-  for (std::size_t bin = 0; bin < metric.histogram.size(); ++bin) {
-    double share = metric.edge_count > 0 ? static_cast<double>(metric.histogram[bin]) / metric.edge_count : 0.0;
-    std::ostringstream counts;
-    counts << std::right << std::setw(10) << metric.histogram[bin] << std::setw(9) << percent(share);
-    row(std::string(2, ' ').append(bin_label(bin)), counts.str());
-  }
+  for (std::size_t bin = 0; bin < metric.histogram.size(); ++bin)
+    row(std::string(2, ' ').append(bin_label(bin)), count_and_share(metric.histogram[bin], metric.edge_count));
   row("unit edges", percent(metric.unit_share) + " in " + bin_label(kUnitEdgeBin));
+  row("element quality", "min " + number(metric.quality_min) + "  mean " + number(metric.quality_mean) +
+                             "  (mean ratio in the metric at the centroid; 1: regular and unit)");
+  for (std::size_t bin = 0; bin < metric.quality_histogram.size(); ++bin)
+    row(std::string(2, ' ').append(quality_bin_label(bin)), count_and_share(metric.quality_histogram[bin], s.elements));
+  row("poor elements", percent(metric.low_quality_share) + " with quality below " + bound(kLowQuality));
   row("max anisotropy", number(metric.max_anisotropy) + " (largest / smallest size at a vertex)");
 }
 
@@ -371,6 +433,7 @@ void write_statistics_json(std::ostream& out, const MeshStatistics& s, const std
     }
     json.end_array();
     json.member("unit_share", metric.unit_share);
+    write_quality_json(json, metric);
     json.member("max_anisotropy", metric.max_anisotropy).end_object();
   }
   json.end_object();

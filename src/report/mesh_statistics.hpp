@@ -29,12 +29,22 @@ inline const std::array<double, 6> kEdgeLengthBinBounds{0.3, 0.5, 1 / std::sqrt(
 inline constexpr std::size_t kUnitEdgeBin = 3;
 inline constexpr double kUnitBinSlack = 1e-12;
 
-// The metric figures: edge lengths in the metric and the largest anisotropy.
+// The mean-ratio quality of the elements in the metric (src/metric/metric_quality.hpp), binned at
+// these bounds: (−inf, 0.1), [0.1, 0.3), …, [0.9, 1], each closed on the left (an inverted element,
+// below 0, goes to the first). Below kLowQuality, the first bound, an element counts as poor.
+inline constexpr std::array<double, 5> kQualityBinBounds{0.1, 0.3, 0.5, 0.7, 0.9};
+inline constexpr double kLowQuality = kQualityBinBounds[0];
+
+// The metric figures: edge lengths in the metric, element qualities in it and the largest anisotropy.
 struct MetricStatistics {
   Index edge_count = 0;
   double min = 0, mean = 0, max = 0;  // edge lengths
   std::array<Index, kEdgeLengthBinBounds.size() + 1> histogram{};
   double unit_share = 0;  // share of edges with length in [1/sqrt(2), sqrt(2)]
+  // Per element, with the metric at its centroid (the log-Euclidean mean of its vertices' metrics).
+  double quality_min = 0, quality_mean = 0;
+  std::array<Index, kQualityBinBounds.size() + 1> quality_histogram{};
+  double low_quality_share = 0;  // share of elements with quality below kLowQuality
   // max over the vertices of sqrt(λmax/λmin): the ratio of the largest to the smallest size.
   double max_anisotropy = 0;
 };
@@ -91,11 +101,15 @@ struct MeshStatistics {
 // Gauss rule: log M varies along it as the P2 interpolation of the log-metrics at its ends and at its
 // node. A P1 edge is straight, its node the midpoint with log M the mean of its ends' (so log M is
 // linear along it); a P2 edge has its node, with the metric given there or else that mean.
+// The quality of an element is that of its straight (P1) simplex.
 template <int D>
 MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> node_metrics = {});
 
 // The bin of an edge length (index into MetricStatistics::histogram).
 std::size_t edge_length_bin(double length);
+
+// The bin of an element quality (index into MetricStatistics::quality_histogram); NaN goes to the first.
+std::size_t quality_bin(double quality);
 
 // The bin of a Jacobian figure (index into JacobianFigures::histogram); NaN goes to the first.
 std::size_t jacobian_bin(double value);

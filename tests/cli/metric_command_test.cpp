@@ -36,7 +36,8 @@ TEST_F(MetricCli, HelpListsSourcesAndOptions) {
   EXPECT_NE(run_ok("--help").out.find("metric"), std::string::npos);
   Outcome help = run_ok("metric --help");
   for (const char* option : {"--analytic", "--implied", "--surface", "--hessian", "--input", "--gradation", "--h-min",
-                             "--h-max", "--axis", "--center", "--radius", "--width", "--origin", "--complexity", "--norm",
+                             "--h-max", "--axis", "--center", "--radius", "--width", "--origin", "--complexity", "--norm", "--from",
+                             "--from-metric",
                              "shear-circle", "tanh-shock"})
     EXPECT_NE(help.out.find(option), std::string::npos) << option;
 }
@@ -57,6 +58,27 @@ TEST_F(MetricCli, StatsOfTheUgawgLinearCaseShowAUnitMeshOfAnisotropyAbout100) {
   EXPECT_LE(anisotropy, 100 * (1 + 1e-12));
   Outcome table = run_ok("stats '" + kUgawgMesh + "' --metric '" + kUgawgMetric + "'");
   EXPECT_NE(table.out.find("max anisotropy        99.9"), std::string::npos) << table.out;
+}
+
+// The same mesh's element qualities in its metric, through the JSON: measured mean 0.85, min 0.46,
+// no element below 0.1, and a histogram that counts every element.
+TEST_F(MetricCli, StatsJsonCarriesTheElementQualitiesOfTheUgawgCase) {
+  const std::string q = "d[\"metric\"][\"quality\"]";
+  std::string figures = stats_json("'" + kUgawgMesh + "' --metric '" + kUgawgMetric + "'",
+                                   q + "[\"mean\"], " + q + "[\"min\"], " + q + "[\"low_share\"], sum(b[\"count\"] for b in " + q +
+                                       "[\"histogram\"]), d[\"counts\"][\"elements\"]");
+  std::istringstream in(figures.substr(1));
+  double mean = 0, min = 0, low_share = 1;
+  long binned = 0, elements = -1;
+  char comma = 0;
+  in >> mean >> comma >> min >> comma >> low_share >> comma >> binned >> comma >> elements;
+  EXPECT_GT(mean, 0.8);
+  EXPECT_LT(mean, 1);
+  EXPECT_GT(min, 0.3);
+  EXPECT_LT(min, mean);
+  EXPECT_EQ(low_share, 0);
+  EXPECT_EQ(binned, elements);
+  EXPECT_EQ(elements, 48720);
 }
 
 TEST_F(MetricCli, AnalyticLinearReproducesTheUgawgMetric) {
@@ -144,6 +166,48 @@ TEST_F(MetricCli, HessianOfAFieldFileMatchesTheAnalyticHessian) {
   EXPECT_GT(std::stod(stats_json("square.mesh --metric shock.sol", "d[\"metric\"][\"max_anisotropy\"]")), 3);
 }
 
+// The unit square in two triangles with the metric diag(e^{2x+y}, e^{−x+3y}) at its corners: its log is
+// affine, so the log-Euclidean interpolation reproduces it exactly anywhere in the square.
+double affine_log_entry(double x, double y, int entry) {
+  return entry == 0 ? std::exp(2 * x + y) : entry == 2 ? std::exp(-x + 3 * y) : 0.0;
+}
+
+std::string affine_log_back_metric() {
+  const double corners[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  std::ostringstream sol;
+  sol.precision(17);
+  sol << "MeshVersionFormatted 2\nDimension 2\nSolAtVertices\n4\n1 3\n";
+  for (const auto& c : corners) sol << affine_log_entry(c[0], c[1], 0) << " 0 " << affine_log_entry(c[0], c[1], 2) << "\n";
+  sol << "End\n";
+  return sol.str();
+}
+
+constexpr const char* kTwoTriangleSquare =
+    "MeshVersionFormatted 2\nDimension 2\nVertices\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
+    "Triangles\n2\n1 2 3 1\n1 3 4 1\nEnd\n";
+
+TEST_F(MetricCli, FromInterpolatesABackMeshMetricLogEuclidean) {
+  write("back.mesh", kTwoTriangleSquare);
+  write("back.sol", affine_log_back_metric());
+  run_ok("generate square --h 0.2 -o square.mesh");
+  Outcome result = run_ok("metric square.mesh --from back.mesh --from-metric back.sol -o at-square.sol");
+  EXPECT_NE(result.out.find("wrote at-square.sol: 36 metrics"), std::string::npos) << result.out;
+  auto vertices = gamma_block(read("square.mesh"), "Vertices", 3);
+  auto rows = metric_rows("at-square.sol", 2);
+  ASSERT_EQ(rows.size(), vertices.size());
+  for (std::size_t v = 0; v < rows.size(); ++v)
+    for (int entry = 0; entry < 3; ++entry)
+      EXPECT_NEAR(rows[v][entry], affine_log_entry(vertices[v][0], vertices[v][1], entry), 1e-12 * std::exp(3.0)) << v;
+}
+
+// mmg's torus and its metric, interpolated onto the torus itself: each vertex gets its own row back.
+TEST_F(MetricCli, FromOntoTheBackMeshItselfGivesBackItsMetric) {
+  const std::string torus = HOCAV_SHARED_DATA_DIR "/mmg-torus/torus";
+  run_ok("metric '" + torus + ".mesh' --from '" + torus + ".mesh' --from-metric '" + torus + "-met.sol' -o self.sol");
+  EXPECT_LT(max_relative_difference(metric_rows("self.sol", 3), gamma_block(read_text(torus + "-met.sol"), "SolAtVertices", 6, 2)),
+            1e-12);
+}
+
 TEST_F(MetricCli, BadRequestsFailWithOneLineAndNoOutput) {
   run_ok("generate square --h 0.5 -o square.mesh");
   write("tri.mesh", kShuffledP2Triangle);
@@ -165,6 +229,9 @@ TEST_F(MetricCli, BadRequestsFailWithOneLineAndNoOutput) {
   expect_failure("metric nothere.mesh --implied -o m.sol", "nothere.mesh");
   expect_failure("metric square.mesh --input tri.sol -o m.sol", "tri.sol");
   expect_failure("metric square.mesh --implied -o nowhere/m.sol", "nowhere/m.sol");
+  expect_failure("metric square.mesh --from square.mesh -o m.sol", "--from-metric");
+  expect_failure("metric square.mesh --implied --from-metric tri.sol -o m.sol", "--from-metric");
+  expect_failure("metric square.mesh --from tri.mesh --from-metric tri.sol --implied -o m.sol", "exactly one metric source");
   for (const char* arguments : {"metric square.mesh --implied", "metric --implied -o m.sol",
                                 "metric square.mesh --surface 0.1 --gradation 2 -o m.sol",
                                 "metric square.mesh --analytic linear --axis w -o m.sol"}) {

@@ -210,6 +210,50 @@ TEST(MeshStatistics, EdgeLengthsInAUniformMetric) {
   EXPECT_EQ(long_edges.metric->unit_share, 0.0);
 }
 
+// Right isosceles triangles of legs h in the metric diag(1, k²) (any scale): Σ l² = 2 h² (1 + k²) and
+// A_M = k h² / 2, so Q = 4√3 A_M / Σ l² = √3 k / (1 + k²), √3/2 for k = 1.
+double right_triangle_quality(double k) { return std::sqrt(3.0) * k / (1 + k * k); }
+
+TEST(MeshStatistics, ElementQualityOfRightTrianglesInAUniformMetric) {
+  for (double scale : {1.0, 3.0}) {
+    MeshStatistics s = square_statistics(4, scale);
+    EXPECT_NEAR(s.metric->quality_min, right_triangle_quality(1), 1e-14);
+    EXPECT_NEAR(s.metric->quality_mean, right_triangle_quality(1), 1e-14);
+    EXPECT_EQ(s.metric->quality_histogram[4], 32);  // [0.7, 0.9)
+    EXPECT_EQ(s.metric->low_quality_share, 0.0);
+  }
+}
+
+// Vertex metrics diag(1, e^{2t}) give the centroid metric diag(1, k²) with k = e^{mean t}: the
+// log-Euclidean mean; the mean of the matrices would give k² = mean e^{2t}.
+TEST(MeshStatistics, ElementQualityTakesTheLogEuclideanMetricAtTheCentroid) {
+  Mesh<2> mesh = generate_square(1);
+  const std::vector<double> t{3.0, 4.0, 8.0, 9.0};
+  std::vector<double> metrics;
+  for (double tv : t) metrics.insert(metrics.end(), {1, 0, std::exp(2 * tv)});
+  std::vector<double> expected;
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    double mean_t = 0;
+    for (Index v : mesh.element(k)) mean_t += t[static_cast<std::size_t>(v)] / 3;
+    expected.push_back(right_triangle_quality(std::exp(mean_t)));
+  }
+  MeshStatistics s = compute_mesh_statistics(mesh, metrics);
+  EXPECT_NEAR(s.metric->quality_min, *std::min_element(expected.begin(), expected.end()), 1e-13);
+  EXPECT_NEAR(s.metric->quality_mean, (expected[0] + expected[1]) / 2, 1e-13);
+  EXPECT_EQ(s.metric->low_quality_share, 1.0);  // k ≥ e^5: both below 0.1
+  EXPECT_EQ(s.metric->quality_histogram[0], 2);
+}
+
+TEST(MeshStatistics, QualityBinsAreClosedOnTheLeft) {
+  EXPECT_EQ(quality_bin(-1.0), 0u);
+  EXPECT_EQ(quality_bin(std::nan("")), 0u);
+  EXPECT_EQ(quality_bin(0.0999), 0u);
+  EXPECT_EQ(quality_bin(0.1), 1u);
+  EXPECT_EQ(quality_bin(0.5), 3u);
+  EXPECT_EQ(quality_bin(0.9), 5u);
+  EXPECT_EQ(quality_bin(1.0), 5u);
+}
+
 TEST(MeshStatistics, MaxAnisotropyIsTheLargestSizeRatio) {
   Mesh<2> mesh = generate_square(2);
   std::vector<double> metrics;
@@ -292,6 +336,14 @@ TEST(MeshStatistics, TableAndJsonCarryTheFigures) {
   EXPECT_NE(json.str().find("\"consistent\": true"), std::string::npos) << json.str();
   EXPECT_NE(json.str().find("\"unit_share\": 1"), std::string::npos) << json.str();
   EXPECT_NE(json.str().find("\"file\": \"square.sol\""), std::string::npos) << json.str();
+  EXPECT_NE(table.str().find("element quality       min 0.866025  mean 0.866025"), std::string::npos) << table.str();
+  EXPECT_NE(table.str().find("  [0.7, 0.9)                   8   100.0%"), std::string::npos) << table.str();
+  EXPECT_NE(table.str().find("poor elements         0.0% with quality below 0.1"), std::string::npos) << table.str();
+  const std::size_t quality = json.str().find("\"quality\": {");
+  ASSERT_NE(quality, std::string::npos) << json.str();
+  for (const char* member : {"\"min\": 0.8660254", "\"mean\": 0.8660254", "\"low_share\": 0,", "\"low_bound\": 0.1,",
+                             "\"bin\": \"[0.7, 0.9)\",", "\"count\": 8"})
+    EXPECT_NE(json.str().find(member, quality), std::string::npos) << member << '\n' << json.str();
   EXPECT_NE(table.str().find("valid                 yes"), std::string::npos) << table.str();
   EXPECT_NE(table.str().find("invalid elements      0"), std::string::npos) << table.str();
   EXPECT_NE(json.str().find("\"valid\": true"), std::string::npos) << json.str();

@@ -1,0 +1,40 @@
+#include "metric/metric_quality.hpp"
+
+#include <cmath>
+
+#include "mesh/measure.hpp"
+#include "mesh/simplex.hpp"
+
+namespace hocav {
+namespace {
+
+template <int D>
+double signed_simplex_measure(const SimplexPoints<D>& p) {
+  if constexpr (D == 2)
+    return signed_measure(p[0], p[1], p[2]);
+  else
+    return signed_measure(p[0], p[1], p[2], p[3]);
+}
+
+}  // namespace
+
+template <int D>
+double metric_mean_ratio(const SimplexPoints<D>& points, const SymMat<D>& metric) {
+  double squared_lengths = 0;
+  for (int e = 0; e < Simplex<D>::kEdges; ++e) {
+    auto [a, b] = edge_vertices<D>(e);
+    squared_lengths += quadratic_form(metric, points[static_cast<std::size_t>(b)] - points[static_cast<std::size_t>(a)]);
+  }
+  const double measure = std::sqrt(determinant(metric)) * signed_simplex_measure<D>(points);
+  if constexpr (D == 2) {
+    return 4 * std::sqrt(3.0) * measure / squared_lengths;
+  } else {
+    // V^(2/3) with the sign of V, so that an inverted element scores below 0.
+    return 36 / std::cbrt(3.0) * std::copysign(std::cbrt(measure * measure), measure) / squared_lengths;
+  }
+}
+
+template double metric_mean_ratio(const SimplexPoints<2>&, const SymMat<2>&);
+template double metric_mean_ratio(const SimplexPoints<3>&, const SymMat<3>&);
+
+}  // namespace hocav
