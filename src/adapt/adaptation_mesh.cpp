@@ -10,6 +10,7 @@ template <int D>
 AdaptationMesh<D>::AdaptationMesh(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                                   double feature_angle_degrees)
     : mesh_(mesh), metric_(metric), geometry_(geometry) {
+  mesh_.compact();
   metric_attribute_ = mesh_.add_vertex_attribute(SymMat<D>::kEntryCount);
   class_attribute_ = mesh_.add_vertex_attribute(1);
   hint_attribute_ = mesh_.add_vertex_attribute(1);
@@ -57,13 +58,13 @@ void AdaptationMesh<D>::move_vertex(Index v, const Vec<D>& x) {
 
 template <int D>
 double AdaptationMesh<D>::quality(const Element& element) const {
-  std::array<Vec<D>, D + 1> points;
+  SimplexPoints<D> points;
   std::array<SymMat<D>, D + 1> metrics;
   for (int i = 0; i <= D; ++i) {
     points[i] = mesh_.vertex(element[i]);
     metrics[i] = metric(element[i]);
   }
-  return metric_mean_ratio<D>(points, metrics);
+  return mean_metric_ratio<D>(points, metrics);
 }
 
 template class AdaptationMesh<2>;

@@ -26,7 +26,7 @@ class AdaptationMesh {
  public:
   using Element = typename Mesh<D>::Element;
 
-  // Takes a mesh with its topology; classifies its vertices (feature_angle: boundary sides whose
+  // Takes a mesh with its topology and compacts it; classifies its vertices (feature_angle: boundary sides whose
   // facets' normals differ by more, or whose refs differ, are ridges; 3D ones become feature lines)
   // and evaluates the metric at every vertex.
   AdaptationMesh(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,

@@ -51,7 +51,9 @@ struct OperationCount {
 };
 
 // Splits edges longer than split_length at their middle (on the geometry for boundary edges),
-// longest first.
+// longest first. A new vertex with an edge shorter than collapse_length is then collapsed onto that
+// edge's other end when it can be: the long edge is cut at a vertex already there, not beside it
+// (anisotropic refinement by midpoints would otherwise crowd the directions that need no refinement).
 template <int D>
 OperationCount split_long_edges(AdaptationMesh<D>& mesh, const AdaptationLimits& limits);
 
@@ -59,6 +61,14 @@ OperationCount split_long_edges(AdaptationMesh<D>& mesh, const AdaptationLimits&
 // classes allow it and no new edge is longer than split_length.
 template <int D>
 OperationCount collapse_short_edges(AdaptationMesh<D>& mesh, const AdaptationLimits& limits);
+
+// Collapses `removed` onto `kept` (an edge) when the classes, the cavity operator and the tests
+// of collapse_short_edges allow it.
+struct CollapseScratch {
+  std::vector<Index> facets, lines;
+};
+template <int D>
+Refusal collapse_edge(AdaptationMesh<D>& mesh, Index removed, Index kept, const AdaptationLimits& limits, CollapseScratch& scratch);
 
 // Swaps that raise the worst quality of their cavity: 2D edge flips; 3D edge-shell swaps n → 2n − 4
 // (the shell re-starred from its best vertex) and face swaps 2 → 3, around elements of quality below 0.5.

@@ -11,10 +11,6 @@
 namespace hocav {
 namespace {
 
-struct CollapseScratch {
-  std::vector<Index> facets, lines;
-};
-
 // The boundary pieces around `removed` that the collapse onto `kept` re-stars; false when the
 // classes forbid it.
 template <int D>
@@ -51,6 +47,8 @@ bool new_edges_short(const AdaptationMesh<D>& am, Index kept, const CavityOperat
   return true;
 }
 
+}  // namespace
+
 template <int D>
 Refusal collapse_edge(AdaptationMesh<D>& am, Index removed, Index kept, const AdaptationLimits& limits, CollapseScratch& s) {
   Mesh<D>& mesh = am.mesh();
@@ -70,7 +68,6 @@ Refusal collapse_edge(AdaptationMesh<D>& am, Index removed, Index kept, const Ad
   return Refusal::kNone;
 }
 
-}  // namespace
 
 template <int D>
 OperationCount collapse_short_edges(AdaptationMesh<D>& am, const AdaptationLimits& limits) {
@@ -101,6 +98,8 @@ OperationCount collapse_short_edges(AdaptationMesh<D>& am, const AdaptationLimit
   return count;
 }
 
+template Refusal collapse_edge(AdaptationMesh<2>&, Index, Index, const AdaptationLimits&, CollapseScratch&);
+template Refusal collapse_edge(AdaptationMesh<3>&, Index, Index, const AdaptationLimits&, CollapseScratch&);
 template OperationCount collapse_short_edges(AdaptationMesh<2>&, const AdaptationLimits&);
 template OperationCount collapse_short_edges(AdaptationMesh<3>&, const AdaptationLimits&);
 

@@ -14,7 +14,25 @@ namespace {
 template <int D>
 struct SplitScratch {
   std::vector<Index> facets, lines, candidate_lines;
+  CollapseScratch collapse;
 };
+
+// After a split: the new vertex v onto its nearest neighbour, when their edge is short.
+template <int D>
+void snap_to_nearest(AdaptationMesh<D>& am, Index v, const AdaptationLimits& limits, SplitScratch<D>& s) {
+  auto& work = am.workspace();
+  collect_ball(am.mesh(), v, work.cavity);
+  Index nearest = kNoIndex;
+  double shortest = limits.collapse_length;
+  for (Index k : work.cavity)
+    for (Index w : am.mesh().element(k))
+      if (w != v)
+        if (const double length = am.edge_length(v, w); length < shortest) {
+          shortest = length;
+          nearest = w;
+        }
+  if (nearest != kNoIndex) collapse_edge(am, v, nearest, limits, s.collapse);
+}
 
 // The boundary pieces through edge (a, b): its facets and, in 3D, the feature line on it.
 template <int D>
@@ -62,6 +80,7 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const AdaptationLimi
     else if (!s.facets.empty() && !boundary_change_acceptable(am, work.cavity_operator, limits.cos_feature_angle, 0)) refusal = Refusal::kGeometry;
     else {
       work.cavity_operator.commit(mesh);
+      snap_to_nearest(am, v, limits, s);
       return Refusal::kNone;
     }
     mesh.pop_vertex();

@@ -14,7 +14,7 @@ namespace {
 // A swap must beat the worst quality it replaces by this factor: no swap undoes another.
 constexpr double kSwapGain = 1.05;
 // 3D: elements below this quality have their edges and faces tried.
-constexpr double kSwapQuality = 0.5;
+constexpr double kSwapQuality = 0.7;
 
 template <int D>
 struct SwapScratch {

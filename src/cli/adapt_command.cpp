@@ -17,6 +17,7 @@
 #include "geom/sym_functions.hpp"
 #include "io/atomic_output.hpp"
 #include "mesh/consistency.hpp"
+#include "mesh/measure.hpp"
 #include "metric/gradation.hpp"
 #include "report/adaptation_report.hpp"
 
@@ -87,8 +88,7 @@ template <int D>
 void measure_adapted(AdaptationReport& report, const Mesh<D>& mesh, const std::vector<SymMat<D>>& metrics) {
   const SolutionField rows = rows_of_metrics(metrics);
   Mesh<D> copy = mesh;  // the statistics build an edge table
-  report.lengths = *compute_mesh_statistics(copy, rows.values).metric;
-  report.quality = metric_quality_summary(mesh, rows.values);
+  report.measures = *compute_mesh_statistics(copy, rows.values).metric;
   report.output_vertices = mesh.vertex_count();
   report.output_elements = mesh.element_count();
 }

@@ -1,38 +1,11 @@
 #include "report/adaptation_report.hpp"
 
-#include <algorithm>
-#include <limits>
+#include <cstdio>
 #include <ostream>
 
-#include "adapt/metric_measures.hpp"
 #include "report/json_writer.hpp"
 
 namespace hocav {
-
-template <int D>
-QualitySummary metric_quality_summary(const Mesh<D>& mesh, std::span<const double> vertex_metrics) {
-  constexpr std::size_t kComponents = SymMat<D>::kEntryCount;
-  QualitySummary summary;
-  if (mesh.element_count() == 0) return summary;
-  summary.min = std::numeric_limits<double>::infinity();
-  Index below = 0;
-  for (const auto& element : mesh.elements()) {
-    std::array<Vec<D>, D + 1> points;
-    std::array<SymMat<D>, D + 1> metrics;
-    for (int i = 0; i <= D; ++i) {
-      points[i] = mesh.vertex(element[i]);
-      std::copy_n(vertex_metrics.begin() + static_cast<std::ptrdiff_t>(kComponents * static_cast<std::size_t>(element[i])), kComponents,
-                  metrics[i].entries.begin());
-    }
-    const double q = metric_mean_ratio<D>(points, metrics);
-    summary.min = std::min(summary.min, q);
-    summary.mean += q;
-    below += q < 0.1;
-  }
-  summary.mean /= mesh.element_count();
-  summary.share_below_0_1 = static_cast<double>(below) / mesh.element_count();
-  return summary;
-}
 
 namespace {
 
@@ -65,12 +38,13 @@ void write_adaptation_report_json(std::ostream& out, const AdaptationReport& rep
     json.end_object();
   }
   json.end_array();
+  const MetricStatistics& m = report.measures;
   json.key("edge_length").begin_object();
-  json.member("edges", report.lengths.edge_count).member("min", report.lengths.min).member("mean", report.lengths.mean);
-  json.member("max", report.lengths.max).member("unit_share", report.lengths.unit_share).end_object();
+  json.member("edges", m.edge_count).member("min", m.min).member("mean", m.mean);
+  json.member("max", m.max).member("unit_share", m.unit_share).end_object();
   json.key("quality").begin_object();
-  json.member("min", report.quality.min).member("mean", report.quality.mean);
-  json.member("share_below_0_1", report.quality.share_below_0_1).end_object();
+  json.member("min", m.quality_min).member("mean", m.quality_mean);
+  json.member("share_below_0_1", m.low_quality_share).end_object();
   json.key("seconds").begin_object().member("adapt", report.seconds_adapt).member("curve", report.seconds_curve).end_object();
   json.member("peak_memory_bytes", report.peak_memory_bytes);
   if (report.curving) {
@@ -95,13 +69,12 @@ void write_adaptation_report_table(std::ostream& out, const AdaptationReport& re
                 "%s after %zu passes: %d -> %d elements; edges unit %.1f%% (length %.3f/%.3f/%.3f min/mean/max); "
                 "quality min %.3f mean %.3f (%.2f%% below 0.1); adapt %.2f s, curve %.2f s, peak %.0f MiB\n",
                 report.run.converged ? "converged" : "stopped at the cap", report.run.passes.size(), report.input_elements,
-                report.output_elements, 100 * report.lengths.unit_share, report.lengths.min, report.lengths.mean, report.lengths.max,
-                report.quality.min, report.quality.mean, 100 * report.quality.share_below_0_1, report.seconds_adapt,
+                report.output_elements, 100 * report.measures.unit_share, report.measures.min, report.measures.mean,
+                report.measures.max, report.measures.quality_min, report.measures.quality_mean, 100 * report.measures.low_quality_share,
+                report.seconds_adapt,
                 report.seconds_curve, static_cast<double>(report.peak_memory_bytes) / (1 << 20));
   out << summary;
 }
 
-template QualitySummary metric_quality_summary(const Mesh<2>&, std::span<const double>);
-template QualitySummary metric_quality_summary(const Mesh<3>&, std::span<const double>);
 
 }  // namespace hocav

@@ -1,0 +1,188 @@
+// The adaptation loop end to end on generated cases: the mesh comes out consistent, of the same
+// measure, with its boundary refs, corners and ridges, and unit in its metric (share of unit edges
+// and element qualities asserted); and each pass on its own does what it says.
+#include "adapt/adaptation_loop.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+
+#include "adapt/adaptation_mesh.hpp"
+#include "cases/structured.hpp"
+#include "mesh/consistency.hpp"
+#include "mesh/measure.hpp"
+#include "report/mesh_statistics.hpp"
+
+namespace hocav {
+namespace {
+
+template <int D>
+Mesh<D> unit_mesh(int n) {
+  if constexpr (D == 2) return generate_square(n);
+  else return generate_cube(n);
+}
+
+template <int D>
+void expect_consistent(const Mesh<D>& mesh) {
+  ConsistencyOptions options;
+  options.require_boundary_facets = true;
+  ASSERT_EQ(check_consistency(mesh, options), std::vector<std::string>{});
+}
+
+template <int D>
+double total_measure(const Mesh<D>& mesh) {
+  double sum = 0;
+  for (Index k = 0; k < mesh.element_count(); ++k) sum += element_measure(mesh, k);
+  return sum;
+}
+
+// The figures `hocav stats --metric` gives for the mesh in the (clamped) metric of the run.
+template <int D>
+MetricStatistics measured(const Mesh<D>& mesh, const AdaptationMetric<D>& metric) {
+  std::vector<double> rows;
+  Index hint = kNoIndex;
+  for (const auto& x : mesh.vertices())
+    for (double entry : metric.metric_at(x, hint).entries) rows.push_back(entry);
+  Mesh<D> copy = mesh;
+  return *compute_mesh_statistics(copy, rows).metric;
+}
+
+// Per facet ref: the measure of its facets (a boundary piece keeps its size when it keeps its ref).
+template <int D>
+std::map<int, double> boundary_measure_by_ref(const Mesh<D>& mesh) {
+  std::map<int, double> out;
+  for (Index f = 0; f < mesh.facet_count(); ++f) {
+    const auto& v = mesh.facet(f);
+    if constexpr (D == 2) out[mesh.facet_ref(f)] += norm(mesh.vertex(v[1]) - mesh.vertex(v[0]));
+    else out[mesh.facet_ref(f)] += 0.5 * norm(cross(mesh.vertex(v[1]) - mesh.vertex(v[0]), mesh.vertex(v[2]) - mesh.vertex(v[0])));
+  }
+  return out;
+}
+
+template <int D>
+AdaptationMetric<D> linear_metric(double h_min) {
+  AnalyticMetricSpec spec;
+  spec.name = "linear";
+  spec.h_min = h_min;
+  return AdaptationMetric<D>(spec, {});
+}
+
+template <int D>
+void expect_adapted(Mesh<D>& mesh, const AdaptationMetric<D>& metric, double unit_share, double mean_quality, double min_quality) {
+  const auto corners_before = mesh.corners().size();
+  const auto refs_before = boundary_measure_by_ref(mesh);
+  const AdaptationRun run = adapt_to_metric<D>(mesh, metric, nullptr, {});
+  expect_consistent(mesh);
+  EXPECT_TRUE(mesh.is_compact());
+  EXPECT_TRUE(run.converged);
+  EXPECT_NEAR(total_measure(mesh), 1, 1e-9);
+  const auto refs_after = boundary_measure_by_ref(mesh);
+  ASSERT_EQ(refs_after.size(), refs_before.size());
+  for (const auto& [ref, measure] : refs_before) EXPECT_NEAR(refs_after.at(ref), measure, 1e-9) << "facet ref " << ref;
+  EXPECT_EQ(mesh.corners().size(), corners_before);
+  const MetricStatistics m = measured(mesh, metric);
+  EXPECT_GE(m.unit_share, unit_share);
+  EXPECT_GE(m.quality_mean, mean_quality);
+  EXPECT_GE(m.quality_min, min_quality);
+  // Each pass after the first few changes less than the one before it ends with: no oscillation.
+  const AdaptationPass& last = run.passes.back();
+  EXPECT_LE(last.splits.done + last.collapses.done, run.passes[run.passes.size() / 2].splits.done + run.passes[run.passes.size() / 2].collapses.done);
+}
+
+TEST(AdaptationLoop, SquareInTheLinearMetricBecomesUnit) {
+  Mesh<2> mesh = unit_mesh<2>(10);
+  expect_adapted<2>(mesh, linear_metric<2>(0.01), 0.95, 0.85, 0.3);
+  EXPECT_GT(mesh.element_count(), 500);  // refined toward the layer
+}
+
+TEST(AdaptationLoop, CubeInTheLinearMetricBecomesUnit) {
+  Mesh<3> mesh = unit_mesh<3>(4);
+  const auto ridges_before = mesh.ridges().size();
+  expect_adapted<3>(mesh, linear_metric<3>(0.02), 0.9, 0.75, 0.05);
+  EXPECT_GT(mesh.ridges().size(), ridges_before);  // the cube's edges, split along them
+  // Every ridge stays on a cube edge: two of its coordinates are 0 or 1.
+  for (Index l : mesh.ridges())
+    for (Index v : mesh.line(l)) {
+      int on_sides = 0;
+      for (int i = 0; i < 3; ++i) on_sides += std::abs(mesh.vertex(v)[i]) < 1e-12 || std::abs(mesh.vertex(v)[i] - 1) < 1e-12;
+      EXPECT_GE(on_sides, 2);
+    }
+}
+
+TEST(AdaptationLoop, CoarseningAFineMeshInAUniformMetric) {
+  Mesh<3> mesh = unit_mesh<3>(8);
+  AnalyticMetricSpec spec;
+  spec.name = "uniform";
+  spec.h = 0.3;
+  const AdaptationMetric<3> metric(spec, {});
+  const Index before = mesh.element_count();
+  expect_adapted<3>(mesh, metric, 0.8, 0.6, 0.1);
+  EXPECT_LT(mesh.element_count(), before / 4);
+}
+
+TEST(AdaptationLoop, SizeBoundsClampTheMetric) {
+  AnalyticMetricSpec spec;
+  spec.name = "uniform";
+  spec.h = 0.01;
+  const AdaptationMetric<2> clamped(spec, {0.0, 0.2}), bounded_below(spec, {0.05, 1.0});
+  Index hint = kNoIndex;
+  EXPECT_NEAR(clamped.metric_at({0.5, 0.5}, hint)(0, 0), 1 / 0.0001, 1e-6);  // within the bounds: unchanged
+  EXPECT_NEAR(bounded_below.metric_at({0.5, 0.5}, hint)(0, 0), 1 / 0.0025, 1e-6);
+  EXPECT_NEAR(bounded_below.metric_at({0.5, 0.5}, hint)(0, 1), 0, 1e-9);
+}
+
+// Each pass alone: a split pass leaves no edge longer than the split length among those it could
+// cut, a collapse pass no short interior edge it could remove, and neither breaks the mesh.
+TEST(AdaptationPasses, SplitAndCollapseEachDoWhatTheySay) {
+  Mesh<2> mesh = unit_mesh<2>(6);
+  AnalyticMetricSpec spec;
+  spec.name = "uniform";
+  spec.h = 0.05;
+  const AdaptationMetric<2> fine(spec, {});
+  AdaptationMesh<2> am(mesh, fine, nullptr, 45);
+  const AdaptationLimits limits;
+  const Index before = mesh.vertex_count();
+  const OperationCount splits = split_long_edges(am, limits);
+  EXPECT_GT(splits.done, 0);
+  EXPECT_EQ(mesh.vertex_count(), before + splits.done);
+  expect_consistent(mesh);
+  spec.h = 0.5;
+  const AdaptationMetric<2> coarse(spec, {});
+  AdaptationMesh<2> coarse_am(mesh, coarse, nullptr, 45);
+  const Index vertices = mesh.live_vertex_count();
+  const OperationCount collapses = collapse_short_edges(coarse_am, limits);
+  EXPECT_GT(collapses.done, 0);
+  EXPECT_EQ(mesh.live_vertex_count(), vertices - collapses.done);
+  expect_consistent(mesh);
+  mesh.compact();
+  expect_consistent(mesh);
+  EXPECT_NEAR(total_measure(mesh), 1, 1e-12);
+}
+
+TEST(AdaptationPasses, SwapsAndSmoothingRaiseTheWorstQuality) {
+  Mesh<3> mesh = unit_mesh<3>(3);
+  AnalyticMetricSpec spec;
+  spec.name = "linear";
+  spec.h_min = 0.05;
+  const AdaptationMetric<3> metric(spec, {});
+  AdaptationMesh<3> am(mesh, metric, nullptr, 45);
+  const AdaptationLimits limits;
+  const auto worst = [&] {
+    double q = 1;
+    for (Index k = 0; k < mesh.element_count(); ++k) q = std::min(q, am.quality(k));
+    return q;
+  };
+  split_long_edges(am, limits);
+  mesh.compact();
+  const double before = worst();
+  const OperationCount swaps = swap_for_quality(am, limits);
+  const OperationCount moves = smooth_vertices(am, limits);
+  EXPECT_GT(swaps.done + moves.done, 0);
+  EXPECT_GE(worst(), before);  // neither ever lowers the worst element of what it changes
+  expect_consistent(mesh);
+  EXPECT_NEAR(total_measure(mesh), 1, 1e-9);
+}
+
+}  // namespace
+}  // namespace hocav

@@ -1,0 +1,60 @@
+// End-to-end tests of `hocav adapt`: generated cases adapted to analytic metrics and to a metric
+// file, curved or not; the output reads back consistent and unit in its metric, its report holds
+// the passes and the figures, any thread count gives the same file, and bad requests fail cleanly.
+#include <gtest/gtest.h>
+
+#include "cli_test_support.hpp"
+
+namespace hocav::cli_test {
+namespace {
+
+class AdaptCli : public Cli {
+ protected:
+  double report_value(const std::string& expression) const { return std::stod(json_value("report.json", expression)); }
+};
+
+TEST_F(AdaptCli, SquareInTheLinearMetricIsAdaptedThenCurved) {
+  run_ok("generate square --h 0.1 -o square.meshb");
+  run_ok("adapt square.meshb --analytic linear --hmin 0.01 -o adapted.meshb --report report.json --vtu adapted.vtu -q");
+  EXPECT_GE(report_value("d[\"edge_length\"][\"unit_share\"]"), 0.95);
+  EXPECT_GE(report_value("d[\"quality\"][\"mean\"]"), 0.85);
+  EXPECT_GT(report_value("d[\"output_elements\"]"), 2 * report_value("d[\"input_elements\"]"));
+  EXPECT_GT(report_value("len(d[\"passes\"])"), 1);
+  EXPECT_GT(report_value("d[\"passes\"][0][\"splits\"][\"done\"]"), 0);
+  EXPECT_EQ(json_value("report.json", "d[\"converged\"]"), "True");
+  // The curving's Table-1 figures: every element certified above the default floor.
+  EXPECT_GE(report_value("d[\"curving\"][\"normalized_jacobian\"][\"min\"]"), 0.01);
+  EXPECT_EQ(stats_json("adapted.meshb", "d[\"consistency\"][\"consistent\"], d[\"order\"], d[\"counts\"][\"corners\"]"), "(True, 2, 4)");
+  EXPECT_TRUE(fs::exists(path("adapted.vtu")));
+}
+
+TEST_F(AdaptCli, CubeWithAMetricFileStopsAtOrderOne) {
+  run_ok("generate cube --h 0.25 -o cube.meshb");
+  run_ok("metric cube.meshb --analytic linear --h-min 0.03 -o cube.solb");
+  run_ok("adapt cube.meshb --metric cube.solb -o adapted.meshb --order 1 --report report.json -q");
+  EXPECT_GE(report_value("d[\"edge_length\"][\"unit_share\"]"), 0.85);
+  EXPECT_FALSE(json_value("report.json", "\"curving\" in d") == "True");
+  EXPECT_EQ(stats_json("adapted.meshb", "d[\"consistency\"][\"consistent\"], d[\"order\"], d[\"counts\"][\"corners\"]"), "(True, 1, 8)");
+}
+
+TEST_F(AdaptCli, OutputDoesNotDependOnTheThreadCount) {
+  run_ok("generate square --h 0.1 -o square.meshb");
+  run_ok("adapt square.meshb --analytic linear --hmin 0.02 -o one.meshb --threads 1 -q");
+  run_ok("adapt square.meshb --analytic linear --hmin 0.02 -o two.meshb --threads 2 -q");
+  EXPECT_EQ(read("one.meshb"), read("two.meshb"));
+}
+
+TEST_F(AdaptCli, BadRequestsFailWithOneLineAndNoOutput) {
+  run_ok("generate square --h 0.25 -o square.meshb");
+  run_ok("metric square.meshb --analytic uniform -o square.solb");
+  expect_failure("adapt square.meshb --metric square.solb --analytic uniform -o out.meshb", "exactly one metric source");
+  expect_failure("adapt square.meshb -o out.meshb", "exactly one metric source");
+  expect_failure("adapt square.meshb --analytic uniform --hmin 0.5 --hmax 0.1 -o out.meshb", "--hmin");
+  expect_failure("adapt square.meshb --analytic uniform --hgrad 1.5 -o out.meshb", "--hgrad");
+  expect_failure("adapt square.meshb --analytic no-such-metric -o out.meshb", "no-such-metric");
+  expect_failure("adapt missing.meshb --analytic uniform -o out.meshb", "missing.meshb");
+  EXPECT_FALSE(fs::exists(path("out.meshb")));
+}
+
+}  // namespace
+}  // namespace hocav::cli_test
