@@ -13,8 +13,11 @@ namespace {
 
 // A swap must beat the worst quality it replaces by this factor: no swap undoes another.
 constexpr double kSwapGain = 1.05;
-// 3D: elements below this quality have their edges and faces tried.
-constexpr double kSwapQuality = 0.7;
+// Elements below this quality have their edges (and 3D faces) tried.
+template <int D>
+constexpr double swap_quality() {
+  return D == 2 ? 0.9 : 0.7;
+}
 
 template <int D>
 struct SwapScratch {
@@ -49,7 +52,9 @@ void predicted_star(const Mesh<D>& mesh, std::span<const Index> cavity, Index ap
 template <int D>
 Refusal restar_best(AdaptationMesh<D>& am, SwapScratch<D>& scratch, const AdaptationLimits& limits) {
   auto& work = am.workspace();
-  double best = kSwapGain * worst_quality<D>(am, work.cavity);
+  const double old_worst = worst_quality<D>(am, work.cavity);
+  if (old_worst >= swap_quality<D>()) return Refusal::kQuality;  // an earlier swap mended it
+  double best = kSwapGain * old_worst;
   Index best_apex = kNoIndex;
   scratch.old_elements.clear();
   for (Index k : work.cavity) scratch.old_elements.push_back(am.mesh().element(k));
@@ -126,7 +131,7 @@ OperationCount swap_for_quality(AdaptationMesh<D>& am, const AdaptationLimits& l
   std::vector<std::array<Index, 2>> edges;
   std::vector<std::array<Index, 3>> faces;
   for (Index k = 0; k < mesh.element_count(); ++k) {
-    if (am.quality(k) >= (D == 2 ? 0.9 : kSwapQuality)) continue;
+    if (am.quality(k) >= swap_quality<D>()) continue;
     const auto& e = mesh.element(k);
     for (int i = 0; i <= D; ++i)
       for (int j = 0; j < i; ++j) edges.push_back({std::min(e[i], e[j]), std::max(e[i], e[j])});
