@@ -15,6 +15,7 @@ template <int D>
 AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits) {
   const auto start = std::chrono::steady_clock::now();
   AdaptationPass pass;
+  am.start_pass();
   pass.collapses = collapse_short_edges(am, limits);
   pass.swaps = swap_for_quality(am, limits);
   pass.splits = split_long_edges(am, limits);

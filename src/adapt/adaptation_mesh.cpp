@@ -14,12 +14,20 @@ AdaptationMesh<D>::AdaptationMesh(Mesh<D>& mesh, const AdaptationMetric<D>& metr
   metric_attribute_ = mesh_.add_vertex_attribute(SymMat<D>::kEntryCount);
   class_attribute_ = mesh_.add_vertex_attribute(1);
   hint_attribute_ = mesh_.add_vertex_attribute(1);
+  stamp_attribute_ = mesh_.add_vertex_attribute(1);  // the pass that last changed the vertex's ball
   const std::vector<VertexClass> classes = classify_vertices(mesh_, feature_angle_degrees);
   for (Index v = 0; v < mesh_.vertex_count(); ++v) {
     mesh_.vertex_attribute(class_attribute_, v)[0] = static_cast<double>(classes[v]);
     mesh_.vertex_attribute(hint_attribute_, v)[0] = kNoIndex;
     evaluate_metric(v, v);
   }
+}
+
+template <int D>
+void AdaptationMesh<D>::commit(CavityOperator<D>& plan) {
+  plan.commit(mesh_);
+  for (const auto& element : plan.new_elements())
+    for (Index v : element) mark_changed(v);
 }
 
 template <int D>

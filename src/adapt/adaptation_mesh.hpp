@@ -49,6 +49,18 @@ class AdaptationMesh {
     set_metric(v, metric);
   }
 
+  // The active set: a pass tries only what changed since the start of the previous pass (the first
+  // pass tries everything), so that late passes cost what they change, not the mesh's size.
+  void start_pass() { ++pass_; }
+  // Commits a plan of the cavity operator and marks the vertices of its new elements changed.
+  void commit(CavityOperator<D>& plan);
+  // Marks a vertex (and, for a move, its ball's vertices) changed.
+  void mark_changed(Index v) { mesh_.vertex_attribute(stamp_attribute_, v)[0] = pass_; }
+  bool changed_recently(Index v) const { return mesh_.vertex_attribute(stamp_attribute_, v)[0] >= pass_ - 1; }
+  // Swaps, the most tried operation, retry only around what this pass changed (every element in
+  // the first pass): a swap refused once stays refused until its cavity changes.
+  bool changed_this_pass(Index v) const { return pass_ == 1 || mesh_.vertex_attribute(stamp_attribute_, v)[0] >= pass_; }
+
   double edge_length(Index a, Index b) const {
     return metric_edge_length<D>(mesh_.vertex(a), mesh_.vertex(b), metric(a), metric(b));
   }
@@ -62,7 +74,8 @@ class AdaptationMesh {
   Mesh<D>& mesh_;
   const AdaptationMetric<D>& metric_;
   const BoundaryGeometry<D>* geometry_;
-  int metric_attribute_, class_attribute_, hint_attribute_;
+  int metric_attribute_, class_attribute_, hint_attribute_, stamp_attribute_;
+  int pass_ = 0;
   CavityWorkspace<D> work_;
 };
 

@@ -64,7 +64,7 @@ Refusal collapse_edge(AdaptationMesh<D>& am, Index removed, Index kept, const Ad
   if (!new_edges_short(am, kept, work.cavity_operator, limits.split_length)) return Refusal::kLength;
   if (!s.facets.empty() && !boundary_change_acceptable(am, work.cavity_operator, limits.cos_feature_angle, limits.hausd))
     return Refusal::kGeometry;
-  work.cavity_operator.commit(mesh);
+  am.commit(work.cavity_operator);
   return Refusal::kNone;
 }
 
@@ -79,7 +79,7 @@ OperationCount collapse_short_edges(AdaptationMesh<D>& am, const AdaptationLimit
   const VertexGraph graph = vertex_graph(am.mesh());
   for (Index a = 0; a < graph.vertex_count(); ++a)
     for (Index b : graph.neighbors_of(a))
-      if (b > a)
+      if (b > a && (am.changed_recently(a) || am.changed_recently(b)))
         if (const double length = am.edge_length(a, b); length < limits.collapse_length) candidates.push_back({length, a, b});
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
     return x.length != y.length ? x.length < y.length : std::pair(x.a, x.b) < std::pair(y.a, y.b);

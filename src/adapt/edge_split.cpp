@@ -79,7 +79,7 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const AdaptationLimi
     else if (!(worst_planned_quality(am, work.cavity_operator) >= std::min(1e-3, 0.1 * old_worst))) refusal = Refusal::kQuality;
     else if (!s.facets.empty() && !boundary_change_acceptable(am, work.cavity_operator, limits.cos_feature_angle, 0)) refusal = Refusal::kGeometry;
     else {
-      work.cavity_operator.commit(mesh);
+      am.commit(work.cavity_operator);
       snap_to_nearest(am, v, limits, s);
       return Refusal::kNone;
     }
@@ -100,7 +100,7 @@ OperationCount split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& l
   const VertexGraph graph = vertex_graph(am.mesh());
   for (Index a = 0; a < graph.vertex_count(); ++a)
     for (Index b : graph.neighbors_of(a))
-      if (b > a)
+      if (b > a && (am.changed_recently(a) || am.changed_recently(b)))
         if (const double length = am.edge_length(a, b); length > limits.split_length) candidates.push_back({length, a, b});
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
     return x.length != y.length ? x.length > y.length : std::pair(x.a, x.b) < std::pair(y.a, y.b);

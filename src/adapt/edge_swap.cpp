@@ -69,7 +69,7 @@ Refusal restar_best(AdaptationMesh<D>& am, SwapScratch<D>& scratch, const Adapta
   }
   if (best_apex == kNoIndex) return Refusal::kQuality;
   if (work.cavity_operator.plan(am.mesh(), work.cavity, best_apex, {}) != CavityStatus::kAccepted) return Refusal::kTopology;
-  work.cavity_operator.commit(am.mesh());
+  am.commit(work.cavity_operator);
   return Refusal::kNone;
 }
 
@@ -131,8 +131,8 @@ OperationCount swap_for_quality(AdaptationMesh<D>& am, const AdaptationLimits& l
   std::vector<std::array<Index, 2>> edges;
   std::vector<std::array<Index, 3>> faces;
   for (Index k = 0; k < mesh.element_count(); ++k) {
-    if (am.quality(k) >= swap_quality<D>()) continue;
     const auto& e = mesh.element(k);
+    if (std::none_of(e.begin(), e.end(), [&](Index v) { return am.changed_this_pass(v); }) || am.quality(k) >= swap_quality<D>()) continue;
     for (int i = 0; i <= D; ++i)
       for (int j = 0; j < i; ++j) edges.push_back({std::min(e[i], e[j]), std::max(e[i], e[j])});
     if constexpr (D == 3)

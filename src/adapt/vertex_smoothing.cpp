@@ -51,8 +51,11 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, SmoothingScratch<D>& scratch,
   for (double fraction : {1.0, 0.5, 0.25}) {
     am.move_vertex(v, start + fraction * step);
     if (worst_quality<D>(am, ball) > kSmoothingGain * old_worst &&
-        lengths_stay_in_window<D>(am, v, old_lengths, scratch.elements, limits))
+        lengths_stay_in_window<D>(am, v, old_lengths, scratch.elements, limits)) {
+      for (const auto& element : scratch.elements)
+        for (Index w : element) am.mark_changed(w);
       return true;
+    }
   }
   am.restore_vertex(v, start, start_metric);
   return false;
@@ -65,7 +68,7 @@ OperationCount smooth_vertices(AdaptationMesh<D>& am, const AdaptationLimits& li
   OperationCount count;
   SmoothingScratch<D> scratch;
   for (Index v = 0; v < am.mesh().vertex_count(); ++v) {
-    if (am.mesh().vertex_removed(v) || am.vertex_class(v) != VertexClass::kInterior) continue;
+    if (am.mesh().vertex_removed(v) || am.vertex_class(v) != VertexClass::kInterior || !am.changed_recently(v)) continue;
     count.add(smooth_vertex(am, v, scratch, limits) ? Refusal::kNone : Refusal::kQuality);
   }
   return count;
