@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <new>
 
 #include "base/error.hpp"
 #include "cli/commands.hpp"
@@ -23,6 +24,9 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
     return app.exit(error) == 0 ? 0 : kFailure;  // --help and --version are "errors" that succeed
+  } catch (const std::bad_alloc&) {
+    std::cerr << "hocav: out of memory: the job needs more memory than this machine could give\n";
+    return kFailure;
   } catch (const hocav::Error& error) {
     std::cerr << "hocav: " << error.what() << '\n';
     return kFailure;
