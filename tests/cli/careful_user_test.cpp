@@ -39,9 +39,10 @@ class CarefulUser : public Cli {
 
   static std::string main_output(const WritingCommand& row, const std::string& path) { return row.output_option + path; }
 
-  // No temporary of an output left behind.
+  // No temporary of an output left behind (today's names, and the OUT.tmp-PID of earlier versions).
   void expect_no_temporaries() const {
-    for (const std::string& name : files()) EXPECT_EQ(name.find(".hocav-"), std::string::npos) << "left behind: " << name;
+    for (const std::string& name : files())
+      EXPECT_TRUE(name.find(".hocav-") == std::string::npos && name.find(".tmp") == std::string::npos) << "left behind: " << name;
   }
 
   // Exit 2 and a last line "hocav: ..." naming `named`; at most `lines` lines, none with a control
@@ -161,12 +162,25 @@ const std::vector<BadFile> kBadMeshes{
     {"truncated.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 3 1 3\n", "truncated.msh"},
 };
 
+// `command` with every mention of input `input` replaced by `replacement`.
+std::string with_input(std::string command, const std::string& input, const std::string& replacement) {
+  for (std::size_t at = command.find(input); at != std::string::npos; at = command.find(input, at + replacement.size()))
+    command.replace(at, input.size(), replacement);
+  return command;
+}
+
 TEST_F(CarefulUser, BadMeshFilesFailAtOnceWithAShortEscapedLine) {
+  prepare_inputs();
   for (const BadFile& file : kBadMeshes) {
     SCOPED_TRACE(file.name);
     write(file.name, file.bytes);
     expect_clean_failure("stats " + file.name, file.named, 2);  // a warning may come first
+    for (const WritingCommand& row : kWritingCommands)
+      if (!row.inputs.empty())
+        expect_clean_failure(with_input(row.command, "square.mesh", file.name) + " " + main_output(row, "out" + row.output_extension),
+                             file.named, 2);
   }
+  expect_no_temporaries();
 }
 
 TEST_F(CarefulUser, TruncatedBinaryFilesAreRefused) {
@@ -192,13 +206,16 @@ const std::vector<BadFile> kBadMetrics{
 
 TEST_F(CarefulUser, BadMetricFilesFailAtOnceWithAShortEscapedLine) {
   prepare_inputs();
-  for (const BadFile& file : kBadMetrics) {
-    SCOPED_TRACE(file.name);
-    write(file.name, file.bytes);
-    expect_clean_failure("curve square.mesh --metric " + file.name + " -o out.meshb", file.named, 2);
-  }
+  for (const BadFile& file : kBadMetrics)
+    for (const WritingCommand& row : kWritingCommands)
+      if (!row.inputs.empty()) {
+        SCOPED_TRACE(row.name + " " + file.name);
+        write(file.name, file.bytes);
+        const std::string output = "out" + row.output_extension;
+        expect_clean_failure(with_input(row.command, "square.sol", file.name) + " " + main_output(row, output), file.named, 2);
+        EXPECT_FALSE(fs::exists(path(output)));
+      }
   expect_no_temporaries();
-  EXPECT_FALSE(fs::exists(path("out.meshb")));
 }
 
 // Options that mean nothing: NaN and infinities, empty size ranges, options of another source, jobs
