@@ -72,6 +72,7 @@ void convert(Mesh<D>& mesh, const MeshFileContent& file, const ConvertOptions& o
 void declare_convert_files(OutputSet& outputs, const ConvertOptions& options) {
   outputs.add_input(options.input, "the input mesh");
   if (!options.metric.empty()) outputs.add_input(options.metric, "--metric");
+  check_writable_mesh_format(options.output);
   outputs.add_output(options.output, "the output mesh");
   if (const std::string metric_output = metric_output_path(options); !metric_output.empty())
     outputs.add_output(metric_output, "the output metric");

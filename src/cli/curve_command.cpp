@@ -49,6 +49,7 @@ void declare_curve_files(OutputSet& outputs, const CurveOptions& options) {
   outputs.add_input(options.input, "the input mesh");
   outputs.add_input(options.metric, "--metric");
   if (options.settings.surface.starts_with("cad:")) outputs.add_input(options.settings.surface.substr(4), "--surface cad:");
+  check_writable_mesh_format(options.output);
   outputs.add_output(options.output, "-o");
   if (!options.report.empty()) outputs.add_output(options.report, "--report");
   if (!options.vtu.empty()) outputs.add_output(options.vtu, "--vtu");

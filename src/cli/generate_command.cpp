@@ -41,6 +41,7 @@ std::string cases_footer() {
 
 void run_generate(const CaseDefinition& definition, const CaseValues& values, const GenerateOptions& options) {
   OutputSet outputs;
+  check_writable_mesh_format(options.output);
   outputs.add_output(options.output, "-o");
   if (!options.cad_output.empty()) {
     if (!definition.write_cad) throw Error("--cad-out: case " + definition.name + " has no CAD model (its boundary is not curved)");

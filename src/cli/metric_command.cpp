@@ -65,13 +65,14 @@ void check_options_apply(const MetricOptions& options, Source source) {
   const bool hessian = source == Source::kHessian;
   const bool linear = analytic && options.analytic == "linear";
   const bool shear = analytic && options.analytic.starts_with("shear-");
+  const bool uniform = analytic && !linear && !shear;  // or an unknown name, refused by name later
   const bool shaped = shear || (hessian && is_analytic_field(options.hessian));
   auto refuse_unless = [&options](bool given, bool applies, const char* what) {
     if (given && !applies)
       throw Error(std::string(what) + " does not apply to this metric source" +
                   (options.analytic.empty() ? "" : " (--analytic " + options.analytic + ")"));
   };
-  refuse_unless(options.h.has_value(), analytic && !linear && !shear, "--h");
+  refuse_unless(options.h.has_value(), uniform, "--h");
   refuse_unless(options.center.has_value() || !options.axis.empty(), linear, "--center, --axis");
   refuse_unless(options.radius.has_value() || options.width.has_value() || !options.origin.empty(), shaped,
                 "--radius, --width, --origin");

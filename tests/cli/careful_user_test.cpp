@@ -121,6 +121,7 @@ TEST_F(CarefulUser, OutputNamesOfTheLongestLegalLengthAndOddCharactersWork) {
     fs::create_directory(path("folder" + row.output_extension));
     expect_clean_failure(row.command + " " + main_output(row, "folder" + row.output_extension), "folder");
     expect_clean_failure(row.command + " " + main_output(row, "/dev/null"), "/dev/null");
+    expect_clean_failure(row.command + " " + main_output(row, "out.txt"), "out.txt");  // no such format
     expect_no_temporaries();
   }
 }
