@@ -16,7 +16,7 @@ class QuietStdout {
     std::cout.flush();
     std::fflush(stdout);
     saved_ = ::dup(STDOUT_FILENO);
-    const int null = ::open("/dev/null", O_WRONLY);
+    const int null = saved_ >= 0 ? ::open("/dev/null", O_WRONLY) : -1;  // no way back, no redirection
     if (null >= 0) {
       ::dup2(null, STDOUT_FILENO);
       ::close(null);

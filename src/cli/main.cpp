@@ -2,6 +2,7 @@
 // 2 any error (bad option, bad input file, failed output), with a one-line message on stderr.
 #include <CLI/CLI.hpp>
 
+#include <csignal>
 #include <iostream>
 #include <new>
 
@@ -10,6 +11,7 @@
 
 int main(int argc, char** argv) {
   constexpr int kFailure = 2;
+  std::signal(SIGXFSZ, SIG_IGN);  // a file-size limit (ulimit -f) is a write error, reported and cleaned up, not a kill
   CLI::App app{"hocav: curved (P2) metric-based mesh adaptation", "hocav"};
   app.set_version_flag("--version", std::string("hocav ") + HOCAV_VERSION);
   app.require_subcommand(1);

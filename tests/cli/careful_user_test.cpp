@@ -109,6 +109,27 @@ TEST_F(CarefulUser, AnOutputNamingAnInputOrAnotherOutputIsRefusedInEveryForm) {
   }
 }
 
+TEST_F(CarefulUser, AWriteThatFailsForLackOfSpaceReplacesNothing) {
+  prepare_inputs();
+  for (const WritingCommand& row : kWritingCommands) {
+    SCOPED_TRACE(row.name);
+    const std::string output = "old" + row.output_extension;
+    write(output, "the old file");
+    std::string arguments = row.command + " " + main_output(row, output);
+    for (const auto& [option, name] : row.secondary) arguments += " " + option + " " + name;
+    // ulimit -f 0: no byte can go to a file, as on a full disk; stderr goes through a pipe, which the limit spares.
+    const std::string command = "cd '" + directory_.string() + "' || exit 1; (ulimit -f 0; exec '" HOCAV_BINARY "' " +
+                                arguments + " 2>&1 > /dev/null) | cat > stderr.txt";
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    const std::string message = read("stderr.txt");
+    fs::remove(path("stderr.txt"));
+    EXPECT_NE(message.find("hocav: " + output + ": write failed"), std::string::npos) << message;
+    EXPECT_EQ(read(output), "the old file");
+    for (const auto& secondary : row.secondary) EXPECT_FALSE(fs::exists(path(secondary.second))) << secondary.first;
+    expect_no_temporaries();
+  }
+}
+
 TEST_F(CarefulUser, OutputNamesOfTheLongestLegalLengthAndOddCharactersWork) {
   prepare_inputs();
   for (const WritingCommand& row : kWritingCommands) {
