@@ -6,6 +6,8 @@
 #include <numbers>
 #include <string>
 
+#include "base/memory_budget.hpp"
+#include "base/quiet_stdout.hpp"
 #include "cases/gmsh_model.hpp"
 #include "cases/parameter_checks.hpp"
 #include "io/mesh_file.hpp"
@@ -29,8 +31,10 @@ void check_parameters(const ShellParameters& p) {
   check_positive("size h", p.size);
   // Measure of an equilateral triangle / regular tetrahedron of edge h.
   double element_measure = D == 2 ? std::sqrt(3.0) / 4 * p.size * p.size : std::pow(p.size, 3) / (6 * std::sqrt(2.0));
-  if (shell_measure<D>(p) / element_measure > kMaximumElements)
+  const double elements = shell_measure<D>(p) / element_measure;
+  if (elements > kMaximumElements)
     throw Error("size h = " + number_text(p.size) + " is too small: the mesh would exceed 50 million elements");
+  check_memory_fits("size h = " + number_text(p.size), elements, kMeshBytesPerElement);
 }
 
 }  // namespace
@@ -67,7 +71,10 @@ void write_shell_cad(double inner_radius, double outer_radius, const std::string
   check_cad_path(path);
   GmshSession session(D == 2 ? "annulus" : "sphere-shell");
   build_shell_model<D>(inner_radius, outer_radius);
-  call_gmsh([&path] { gmsh::write(path); });
+  call_gmsh([&path] {
+    QuietStdout quiet;
+    gmsh::write(path);
+  });
 }
 
 void check_cad_path(const std::string& path) {

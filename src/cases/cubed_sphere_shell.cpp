@@ -7,6 +7,7 @@
 #include <string>
 
 #include "base/index_hash_map.hpp"
+#include "base/memory_budget.hpp"
 #include "cases/parameter_checks.hpp"
 #include "cases/target_resolution.hpp"
 #include "mesh/measure.hpp"
@@ -88,6 +89,7 @@ Mesh<3> generate_cubed_sphere_shell(int n, std::span<const double> radii) {
   const auto layers = radii.size() - 1;
   checked_index((6 * static_cast<std::size_t>(n) * static_cast<std::size_t>(n) + 2) * radii.size(), "vertices");
   checked_index(36 * static_cast<std::size_t>(n) * static_cast<std::size_t>(n) * layers, "tetrahedra");
+  check_memory_fits("the cubed-sphere shell", cubed_sphere_shell_tet_count(n, radii.size()), kMeshBytesPerElement);
   const SphereGrid grid = cubed_sphere_grid(n);
   const auto surface_vertices = static_cast<Index>(grid.directions.size());
 

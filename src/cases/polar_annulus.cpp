@@ -4,6 +4,7 @@
 #include <numbers>
 #include <string>
 
+#include "base/memory_budget.hpp"
 #include "cases/parameter_checks.hpp"
 #include "cases/target_resolution.hpp"
 
@@ -19,6 +20,7 @@ Mesh<2> generate_polar_annulus(int sectors, std::span<const double> radii) {
   if (sectors < 3) throw Error("a polar annulus needs at least 3 sectors, got " + std::to_string(sectors));
   check_layer_radii(radii);
   checked_index(static_cast<std::size_t>(sectors) * radii.size() * 2, "triangles");
+  check_memory_fits("the polar annulus", polar_annulus_triangle_count(sectors, radii.size()), kMeshBytesPerElement);
   Mesh<2> mesh;
   for (double radius : radii)
     for (int j = 0; j < sectors; ++j) {

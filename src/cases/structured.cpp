@@ -4,6 +4,7 @@
 #include <string>
 
 #include "base/error.hpp"
+#include "base/memory_budget.hpp"
 #include "mesh/measure.hpp"
 
 namespace hocav {
@@ -17,6 +18,7 @@ int cells_for_size(double h) {
 
 Mesh<2> generate_square(int n) {
   if (n < 1) throw Error("a structured case needs at least one cell per side");
+  check_memory_fits("the square of " + std::to_string(n) + " cells per side", 2.0 * n * n, kMeshBytesPerElement);
   Mesh<2> mesh;
   auto id = [n](int i, int j) { return static_cast<Index>(j * (n + 1) + i); };
   for (int j = 0; j <= n; ++j)
@@ -39,6 +41,7 @@ Mesh<2> generate_square(int n) {
 
 Mesh<3> generate_cube(int n) {
   if (n < 1) throw Error("a structured case needs at least one cell per side");
+  check_memory_fits("the cube of " + std::to_string(n) + " cells per side", 6.0 * n * n * n, kMeshBytesPerElement);
   Mesh<3> mesh;
   auto id = [n](int i, int j, int k) { return static_cast<Index>((k * (n + 1) + j) * (n + 1) + i); };
   for (int k = 0; k <= n; ++k)

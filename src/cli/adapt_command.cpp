@@ -15,8 +15,10 @@
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
 #include "geom/sym_functions.hpp"
+#include "base/memory_budget.hpp"
+#include "cli/number_checks.hpp"
 #include "io/atomic_output.hpp"
-#include "mesh/consistency.hpp"
+#include "io/output_set.hpp"
 #include "mesh/measure.hpp"
 #include "metric/gradation.hpp"
 #include "report/adaptation_report.hpp"
@@ -76,6 +78,21 @@ void make_run_metric(RunMetric<D>& run, const Mesh<D>& input, const MeshFileCont
   run.metric.emplace(*run.field, bounds);
 }
 
+// The output's element count the metric asks for: its complexity ∫ √det M over the input (the
+// metric at each element's centroid) divided by the metric volume of a regular unit simplex
+// (√2/12 in 3D, √3/4 in 2D).
+template <int D>
+double expected_elements(const Mesh<D>& input, const AdaptationMetric<D>& metric) {
+  double complexity = 0;
+  Index hint = kNoIndex;
+  for (Index k = 0; k < input.element_count(); ++k) {
+    Vec<D> centroid{};
+    for (Index v : input.element(k)) centroid = centroid + (1.0 / (D + 1)) * input.vertex(v);
+    complexity += std::sqrt(determinant(metric.metric_at(centroid, hint))) * std::abs(element_measure(input, k));
+  }
+  return complexity / (D == 3 ? std::sqrt(2.0) / 12 : std::sqrt(3.0) / 4);
+}
+
 template <int D>
 std::vector<SymMat<D>> metrics_at_vertices(const Mesh<D>& mesh, const AdaptationMetric<D>& metric) {
   std::vector<SymMat<D>> metrics;
@@ -94,12 +111,16 @@ void measure_adapted(AdaptationReport& report, const Mesh<D>& mesh, const std::v
 }
 
 template <int D>
-void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o) {
-  if (auto problems = check_consistency(mesh); !problems.empty()) throw Error(o.input + ": " + problems.front());
+void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, OutputSet& outputs) {
+  check_input_mesh(mesh, o.input);
   mesh.forget_edges();
   const Mesh<D> input = mesh;
   RunMetric<D> run;
   make_run_metric(run, input, file, o);
+  const double expected = expected_elements(input, *run.metric);
+  check_memory_fits("adapting " + o.input + " (the metric asks for about " + std::to_string(static_cast<long long>(expected)) +
+                        " elements)",
+                    expected, kAdaptationBytesPerElement);
   const auto geometry = boundary_geometry<D>(o.surface, input);
 
   AdaptationSettings settings;
@@ -133,11 +154,22 @@ void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o) {
     write_adaptation_report_json(out.stream(), report);
     out.commit();
   }
+  outputs.commit();
   if (!o.quiet) {
     std::cout << "adapted " << o.input << " -> " << o.output << '\n';
     write_adaptation_report_table(std::cout, report);
     if (report.curving) write_curving_report_table(std::cout, *report.curving);
   }
+}
+
+void declare_adapt_files(OutputSet& outputs, const AdaptOptions& o) {
+  outputs.add_input(o.input, "the input mesh");
+  if (!o.metric.empty()) outputs.add_input(o.metric, "--metric");
+  if (o.surface.starts_with("cad:")) outputs.add_input(o.surface.substr(4), "--surface cad:");
+  check_writable_mesh_format(o.output);
+  outputs.add_output(o.output, "-o");
+  if (!o.report.empty()) outputs.add_output(o.report, "--report");
+  if (!o.vtu.empty()) outputs.add_output(o.vtu, "--vtu");
 }
 
 }  // namespace
@@ -157,21 +189,21 @@ void add_adapt_command(CLI::App& app) {
   command->add_option("--order", o->order, "2: curve the adapted mesh (P2 output); 1: stop after the P1 adaptation")
       ->check(CLI::IsMember({1, 2}))
       ->capture_default_str();
-  command->add_option("--hmin", o->h_min, "smallest size: the metric's sizes are clamped to it")->check(CLI::PositiveNumber);
-  command->add_option("--hmax", o->h_max, "largest size: the metric's sizes are clamped to it")->check(CLI::PositiveNumber);
+  command->add_option("--hmin", o->h_min, "smallest size: the metric's sizes are clamped to it")->check(finite_positive());
+  command->add_option("--hmax", o->h_max, "largest size: the metric's sizes are clamped to it")->check(finite_positive());
   command->add_option("--hgrad", o->gradation, "grade the metric first: sizes grow by at most BETA > 1 per unit length")
-      ->check(CLI::Range(1.0 + 1e-12, 1e6));
+      ->check(finite_range(1.0 + 1e-12, 1e6, "BETA > 1"));
   command->add_option("--hausd", o->hausd_given,
                       "largest distance from a new boundary facet to the geometry (default 0.01 x the bounding box's diagonal)")
-      ->check(CLI::PositiveNumber);
+      ->check(finite_positive());
   command->add_option("--angle", o->angle, "boundary sides meeting at more than this dihedral angle are ridges (degrees)")
-      ->check(CLI::Range(0.0, 180.0))
+      ->check(finite_range(0.0, 180.0, "0 to 180"))
       ->capture_default_str();
   command->add_option("--surface", o->surface,
                       "geometry of new boundary points and P2 nodes: p3 (a cubic surrogate of the input boundary), cad:FILE, none")
       ->capture_default_str();
   command->add_option("--jacobian-floor", o->jacobian_floor, "curving: every element keeps its min normalized Jacobian above this")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(finite_range(0.0, 1.0, "0 to 1"))
       ->capture_default_str();
   command->add_option("--iterations", o->iterations, "at most this many passes of the adaptation loop")
       ->check(CLI::Range(1, 1000))
@@ -184,8 +216,10 @@ void add_adapt_command(CLI::App& app) {
   command->add_flag("-q,--quiet", o->quiet, "print nothing on success");
   command->callback([o] {
     check_options(*o);
+    OutputSet outputs;
+    declare_adapt_files(outputs, *o);
     MeshFileContent file = read_mesh_file(o->input);
-    std::visit([&](auto& mesh) { adapt(mesh, file, *o); }, file.mesh);
+    std::visit([&](auto& mesh) { adapt(mesh, file, *o, outputs); }, file.mesh);
   });
 }
 

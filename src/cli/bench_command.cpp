@@ -1,6 +1,7 @@
 // hocav bench [--cases LIST] [--sizes LIST] [--threads LIST] [--repeat N] [--markdown F.md] [--json F.json]
 // Generates every case at every size, curves it as `hocav curve` would (each run in its own
 // process), and prints the rows of the paper's Table 1 with time per element and peak memory.
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -8,6 +9,7 @@
 #include "bench/bench_run.hpp"
 #include "cli/commands.hpp"
 #include "io/atomic_output.hpp"
+#include "io/output_set.hpp"
 
 namespace hocav {
 namespace {
@@ -30,12 +32,15 @@ double parse_size(const std::string& text) {
   }
   const std::string suffix = text.substr(used);
   const double scale = suffix.empty() ? 1 : suffix == "k" ? 1e3 : suffix == "M" ? 1e6 : 0;
-  if (used == 0 || scale == 0 || !(value * scale >= 1))
+  if (used == 0 || scale == 0 || !std::isfinite(value) || !(value * scale >= 1))
     throw Error("--sizes: '" + text + "' is not an element count such as 100k, 1M or 2500");
   return value * scale;
 }
 
 void run_bench(const BenchOptions& options) {
+  OutputSet outputs;
+  if (!options.markdown.empty()) outputs.add_output(options.markdown, "--markdown");
+  if (!options.json.empty()) outputs.add_output(options.json, "--json");
   std::vector<const BenchCase*> cases;
   if (options.cases.empty())
     for (const BenchCase& bench_case : bench_cases()) cases.push_back(&bench_case);
@@ -67,6 +72,7 @@ void run_bench(const BenchOptions& options) {
     write_bench_json(out.stream(), machine, rows);
     out.commit();
   }
+  outputs.commit();
   write_bench_markdown(std::cout, machine, rows);
 }
 

@@ -10,6 +10,7 @@
 #include "bezier/mesh_quality.hpp"
 #include "geom/sym_functions.hpp"
 #include "mesh/consistency.hpp"
+#include "mesh/mesh_defects.hpp"
 #include "surface/cad_boundary_gmsh.hpp"
 #include "surface/p3_surrogate.hpp"
 
@@ -132,6 +133,17 @@ std::unique_ptr<BoundaryGeometry<D>> boundary_geometry(const std::string& surfac
 }
 
 template <int D>
+void check_input_mesh(const Mesh<D>& mesh, const std::string& path) {
+  ConsistencyOptions consistency;
+  consistency.require_positive_orientation = !mesh.is_p2();  // as stats: a valid curved element may be an inverted P1 one
+  if (auto problems = check_consistency(mesh, consistency); !problems.empty())
+    throw Error(path + ": inconsistent mesh: " + std::to_string(problems.size()) + (problems.size() == 1 ? " problem" : " problems") +
+                " (first: " + problems.front() + "; see hocav stats)");
+  if (const MeshDefects defects = find_mesh_defects(mesh); !defects.none())
+    std::cerr << "hocav: warning: " << path << ": " << defects.summary() << '\n';
+}
+
+template <int D>
 CurvingReport curve_in_metric(Mesh<D>& mesh, const MetricField<D>& field, const CurvingSettings& settings) {
   const auto geometry = boundary_geometry<D>(settings.surface, mesh);
   ReinsertionOptions reinsertion;
@@ -162,6 +174,8 @@ void write_curved_vtu(const std::string& path, const Mesh<D>& mesh, const Metric
   write_vtu(path, mesh, data);
 }
 
+template void check_input_mesh(const Mesh<2>&, const std::string&);
+template void check_input_mesh(const Mesh<3>&, const std::string&);
 template CurvingReport curve_in_metric(Mesh<2>&, const MetricField<2>&, const CurvingSettings&);
 template CurvingReport curve_in_metric(Mesh<3>&, const MetricField<3>&, const CurvingSettings&);
 template void write_curved_vtu(const std::string&, const Mesh<2>&, const MetricField<2>&);

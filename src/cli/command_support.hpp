@@ -44,6 +44,11 @@ VtuField metric_tensor_field(const SolutionField& metric);
 template <int D>
 std::vector<VtuField> jacobian_cell_fields(const Mesh<D>& mesh);
 
+// Refuses an input mesh that `hocav stats` calls inconsistent, naming its first problem, and warns on
+// stderr of the defects curving works around (open boundary, non-manifold parts, overlaps).
+template <int D>
+void check_input_mesh(const Mesh<D>& mesh, const std::string& path);
+
 // The options of a curving run (`hocav curve`).
 struct CurvingSettings {
   std::string surface = "p3";  // boundary curvature: p3, cad:FILE or none

@@ -1,9 +1,8 @@
 // hocav convert IN OUT [--metric SOL] [--metric-out SOL] [--order 1|2] [--meshb-version N]
 // Reads any supported mesh, writes it in the format of OUT's extension. A metric given with the
 // mesh is checked and carried to the output's node numbering; everything is validated before the
-// first byte is written, and a failure while writing the metric removes the mesh just written.
+// first byte is written, and the mesh and its metric replace their targets together or not at all.
 #include <algorithm>
-#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -11,6 +10,7 @@
 #include "base/error.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
+#include "io/output_set.hpp"
 #include "io/vtu_file.hpp"
 
 namespace hocav {
@@ -49,8 +49,8 @@ void change_order(Mesh<D>& mesh, int order, bool with_metric) {
 }
 
 template <int D>
-void convert(Mesh<D>& mesh, const MeshFileContent& file, const ConvertOptions& options) {
-  std::string metric_output = metric_output_path(options);
+void convert(Mesh<D>& mesh, const MeshFileContent& file, const ConvertOptions& options, OutputSet& outputs) {
+  const std::string metric_output = metric_output_path(options);
   change_order(mesh, options.order, !options.metric.empty());
   std::optional<SolutionField> metric;
   if (!options.metric.empty()) metric = read_metric_for_mesh(options.metric, file, mesh.is_p2());
@@ -63,16 +63,19 @@ void convert(Mesh<D>& mesh, const MeshFileContent& file, const ConvertOptions& o
   } else {
     write_mesh_file(options.output, mesh, {options.gamma_version});
   }
-  if (metric && !metric_output.empty()) {
-    try {
-      write_solution_file(metric_output, {D, metric->count(), {*metric}}, options.gamma_version);
-    } catch (...) {
-      std::remove(options.output.c_str());  // the mesh without its metric would be a partial result
-      throw;
-    }
-  }
+  if (metric && !metric_output.empty()) write_solution_file(metric_output, {D, metric->count(), {*metric}}, options.gamma_version);
+  outputs.commit();
   std::cout << "wrote " << options.output << (metric_output.empty() ? "" : " and " + metric_output) << ": "
             << mesh_summary(mesh) << '\n';
+}
+
+void declare_convert_files(OutputSet& outputs, const ConvertOptions& options) {
+  outputs.add_input(options.input, "the input mesh");
+  if (!options.metric.empty()) outputs.add_input(options.metric, "--metric");
+  check_writable_mesh_format(options.output);
+  outputs.add_output(options.output, "the output mesh");
+  if (const std::string metric_output = metric_output_path(options); !metric_output.empty())
+    outputs.add_output(metric_output, "the output metric");
 }
 
 }  // namespace
@@ -94,8 +97,10 @@ void add_convert_command(CLI::App& app) {
                       "version of binary .meshb/.solb output: 1-4 (default: 3, or 4 when counts need 64 bits)")
       ->check(CLI::Range(1, 4));
   command->callback([options] {
+    OutputSet outputs;
+    declare_convert_files(outputs, *options);
     MeshFileContent file = read_mesh_file(options->input);
-    std::visit([&](auto& mesh) { convert(mesh, file, *options); }, file.mesh);
+    std::visit([&](auto& mesh) { convert(mesh, file, *options, outputs); }, file.mesh);
   });
 }
 

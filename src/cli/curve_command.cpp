@@ -5,9 +5,12 @@
 #include <iostream>
 #include <memory>
 
+#include "base/memory_budget.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
+#include "cli/number_checks.hpp"
 #include "io/atomic_output.hpp"
+#include "io/output_set.hpp"
 #include "report/curving_report.hpp"
 
 namespace hocav {
@@ -20,7 +23,9 @@ struct CurveOptions {
 };
 
 template <int D>
-void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& options) {
+void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& options, OutputSet& outputs) {
+  check_input_mesh(mesh, options.input);
+  check_memory_fits("curving " + options.input, mesh.element_count(), kCurvingBytesPerElement);
   const MetricField<D> field(mesh, metrics_of_rows<D>(read_metric_for_mesh(options.metric, file, false)));
   CurvingSettings settings = options.settings;
   settings.progress = !options.quiet;
@@ -33,10 +38,21 @@ void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& optio
     write_curving_report_json(out.stream(), report);
     out.commit();
   }
+  outputs.commit();
   if (!options.quiet) {
     std::cout << "curved " << options.input << " -> " << options.output << '\n';
     write_curving_report_table(std::cout, report);
   }
+}
+
+void declare_curve_files(OutputSet& outputs, const CurveOptions& options) {
+  outputs.add_input(options.input, "the input mesh");
+  outputs.add_input(options.metric, "--metric");
+  if (options.settings.surface.starts_with("cad:")) outputs.add_input(options.settings.surface.substr(4), "--surface cad:");
+  check_writable_mesh_format(options.output);
+  outputs.add_output(options.output, "-o");
+  if (!options.report.empty()) outputs.add_output(options.report, "--report");
+  if (!options.vtu.empty()) outputs.add_output(options.vtu, "--vtu");
 }
 
 }  // namespace
@@ -52,7 +68,7 @@ void add_curve_command(CLI::App& app) {
                       "facet refs name its surfaces or are matched by proximity), none")->capture_default_str();
   command->add_option("--jacobian-floor", options->settings.jacobian_floor,
                       "every element the operator creates keeps its min normalized Jacobian above this")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(finite_range(0.0, 1.0, "0 to 1"))
       ->capture_default_str();
   command->add_option("--quadrature", options->settings.quadrature,
                       "rule of the length the optimizer minimizes: simpson, trapezoid (the paper's), gauss-N")
@@ -68,8 +84,10 @@ void add_curve_command(CLI::App& app) {
   command->add_option("--vtu", options->vtu, "also write a .vtu for ParaView (metric and min normalized Jacobian)");
   command->add_flag("-q,--quiet", options->quiet, "print nothing on success");
   command->callback([options] {
+    OutputSet outputs;
+    declare_curve_files(outputs, *options);
     MeshFileContent file = read_mesh_file(options->input);
-    std::visit([&](auto& mesh) { curve(mesh, file, *options); }, file.mesh);
+    std::visit([&](auto& mesh) { curve(mesh, file, *options, outputs); }, file.mesh);
   });
 }
 

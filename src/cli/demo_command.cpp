@@ -4,6 +4,7 @@
 // the P3 surrogate of the boundary), the same curving on the 2D shear-circle case (the paper's
 // Fig. 1), and pictures of both: a planar cut through the curved 3D mesh, the curved 2D mesh,
 // histograms of the edge gains and of the normalized Jacobians (SVG).
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -15,7 +16,9 @@
 #include "cases/case_registry.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
+#include "cli/number_checks.hpp"
 #include "io/atomic_output.hpp"
+#include "io/output_set.hpp"
 #include "mesh/measure.hpp"
 #include "metric/analytic_metric.hpp"
 #include "metric/gradation.hpp"
@@ -57,13 +60,29 @@ std::vector<double> min_normalized_jacobians(const auto& mesh) {
   return values;
 }
 
-// The files of the run, listed at the end.
+// The files of the run and what each holds, in the order they are written.
+const std::vector<std::pair<std::string, std::string>> kDemoFiles{
+    {"sphere-shell-p2.meshb", "the curved P2 mesh"},
+    {"sphere-shell-p2.vtu", "the same for ParaView (set Nonlinear Subdivision Level >= 2)"},
+    {"sphere-shell-report.json", "the run's figures (Table-1 columns, counters)"},
+    {"sphere-shell-cut.svg", "a cut through the curved 3D mesh"},
+    {"edge-gains.svg", "histogram of the gains of the volume edges"},
+    {"normalized-jacobians.svg", "histogram of the min normalized Jacobians"},
+    {"shear-circle-p2.svg", "the curved 2D mesh"},
+};
+
+std::string path_in(const DemoOptions& options, const std::string& name) {
+  return (std::filesystem::path(options.directory) / name).string();
+}
+
+// The files written so far, listed at the end.
 struct Written {
   std::vector<std::pair<std::string, std::string>> files;  // path, what it holds
 
-  // The path of file `name` in the output folder, recorded with what it holds.
-  std::string path(const DemoOptions& options, const std::string& name, const std::string& what) {
-    files.emplace_back((std::filesystem::path(options.directory) / name).string(), what);
+  // The path of file `name` (one of kDemoFiles) in the output folder, recorded with what it holds.
+  std::string path(const DemoOptions& options, const std::string& name) {
+    const auto file = std::find_if(kDemoFiles.begin(), kDemoFiles.end(), [&name](const auto& entry) { return entry.first == name; });
+    files.emplace_back(path_in(options, name), file->second);
     return files.back().first;
   }
 };
@@ -76,12 +95,12 @@ void write_histograms(const std::vector<double>& gains, const std::vector<double
     gain_lower = std::min(gain_lower, gain);
     gain_upper = std::max(gain_upper, gain);
   }
-  write_svg(written.path(options, "edge-gains.svg", "histogram of the gains of the volume edges"),
+  write_svg(written.path(options, "edge-gains.svg"),
             histogram_chart(summarize_values(gains, kBins, gain_lower, gain_upper),
                             {"Gain of each volume edge (sphere shell)",
                              "gain 1 − ℓ(curved) / ℓ(straight), lengths in the metric", "edges (logarithmic)",
                              std::nullopt, true}));
-  write_svg(written.path(options, "normalized-jacobians.svg", "histogram of the min normalized Jacobians"),
+  write_svg(written.path(options, "normalized-jacobians.svg"),
             histogram_chart(summarize_values(jacobians, 2 * kBins, 0, 2),
                             {"Min normalized Jacobian of each tetrahedron (sphere shell)",
                              "min of J / |J_straight| over the element (1: as the straight element)", "tetrahedra",
@@ -104,12 +123,11 @@ CurvingReport run_sphere_shell(const DemoOptions& options, Written& written) {
   CurvingReport report = curve_in_metric(mesh, field, settings);
 
   progress("writing the P2 mesh, its .vtu and the report");
-  write_mesh_file(written.path(options, "sphere-shell-p2.meshb", "the curved P2 mesh"), mesh);
-  write_curved_vtu(written.path(options, "sphere-shell-p2.vtu",
-                                "the same for ParaView (set Nonlinear Subdivision Level >= 2)"),
+  write_mesh_file(written.path(options, "sphere-shell-p2.meshb"), mesh);
+  write_curved_vtu(written.path(options, "sphere-shell-p2.vtu"),
                    mesh, field);
   {
-    AtomicOutput out(written.path(options, "sphere-shell-report.json", "the run's figures (Table-1 columns, counters)"));
+    AtomicOutput out(written.path(options, "sphere-shell-report.json"));
     write_curving_report_json(out.stream(), report);
     out.commit();
   }
@@ -121,7 +139,7 @@ CurvingReport run_sphere_shell(const DemoOptions& options, Written& written) {
                            "its element's min normalized Jacobian",
                            kJacobianColors, "min normalized Jacobian",
                            Box{{{0.28, 0.28}}, {{0.58, 0.58}}}};  // the detail: where the inner sphere meets x = y
-  write_svg(written.path(options, "sphere-shell-cut.svg", "a cut through the curved 3D mesh"),
+  write_svg(written.path(options, "sphere-shell-cut.svg"),
             section_picture(cut_p2_mesh(mesh, CutPlane{}, kCutSubdivisions), jacobians, figure));
   write_histograms(volume_edge_gains(mesh, field), jacobians, options, written);
   return report;
@@ -143,7 +161,7 @@ CurvingReport run_shear_circle(const DemoOptions& options, Written& written) {
                            "sizes 0.001 across the circle r = 0.75, 0.1 along it",
                            kJacobianColors, "min normalized Jacobian",
                            Box{{{-0.06, 0.69}}, {{0.06, 0.81}}}};  // the detail: the layer at its top
-  write_svg(written.path(options, "shear-circle-p2.svg", "the curved 2D mesh"),
+  write_svg(written.path(options, "shear-circle-p2.svg"),
             p2_mesh_picture(mesh, min_normalized_jacobians(mesh), figure));
   return report;
 }
@@ -153,9 +171,12 @@ void run_demo(const DemoOptions& options) {
   std::filesystem::create_directories(options.directory, error);
   if (error || !std::filesystem::is_directory(options.directory))
     throw Error(options.directory + ": cannot make this output folder" + (error ? " (" + error.message() + ")" : ""));
+  OutputSet outputs;
+  for (const auto& file : kDemoFiles) outputs.add_output(path_in(options, file.first), "-o");
   Written written;
   const CurvingReport shell = run_sphere_shell(options, written);
   const CurvingReport shear_circle = run_shear_circle(options, written);
+  outputs.commit();
   std::cout << "curved the sphere shell:\n";
   write_curving_report_table(std::cout, shell);
   char line[200];
@@ -184,7 +205,7 @@ void add_demo_command(CLI::App& app) {
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
   command->add_option("--h", options->h, "target edge length of the sphere-shell mesh (smaller: more tetrahedra)")
-      ->check(CLI::Range(0.02, 0.5))
+      ->check(finite_range(0.02, 0.5, "0.02 to 0.5"))
       ->capture_default_str();
   command->callback([options] { run_demo(*options); });
 }

@@ -9,6 +9,8 @@
 #include "cases/concentric_shell.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
+#include "cli/number_checks.hpp"
+#include "io/output_set.hpp"
 
 namespace hocav {
 namespace {
@@ -38,23 +40,26 @@ std::string cases_footer() {
 }
 
 void run_generate(const CaseDefinition& definition, const CaseValues& values, const GenerateOptions& options) {
-  // Refuse a CAD request before writing anything, so a failure leaves no partial output.
+  OutputSet outputs;
+  check_writable_mesh_format(options.output);
+  outputs.add_output(options.output, "-o");
   if (!options.cad_output.empty()) {
     if (!definition.write_cad) throw Error("--cad-out: case " + definition.name + " has no CAD model (its boundary is not curved)");
     check_cad_path(options.cad_output);
+    outputs.add_output(options.cad_output, "--cad-out");
   }
   AnyMesh mesh = generate_case(definition, values);
   std::visit(
       [&options](auto& m) {
         if (options.order == 2) m.make_p2();
         write_mesh_file(options.output, m);
-        std::cout << "wrote " << options.output << ": " << mesh_summary(m) << '\n';
       },
       mesh);
-  if (!options.cad_output.empty()) {
-    definition.write_cad(values, options.cad_output);
+  if (!options.cad_output.empty()) definition.write_cad(values, outputs.temporary_for(options.cad_output));
+  outputs.commit();
+  std::visit([&options](auto& m) { std::cout << "wrote " << options.output << ": " << mesh_summary(m) << '\n'; }, mesh);
+  if (!options.cad_output.empty())
     std::cout << "wrote " << options.cad_output << ": the CAD model (for curve --surface cad:" << options.cad_output << ")\n";
-  }
 }
 
 }  // namespace
@@ -78,7 +83,9 @@ void add_generate_command(CLI::App& app) {
     case_command->fallthrough();  // -o and --order may follow the case name
     for (const CaseOption& option : definition.options) {
       (*values)[option.name] = option.default_value;
-      case_command->add_option("--" + option.name, (*values)[option.name], option.description)->capture_default_str();
+      case_command->add_option("--" + option.name, (*values)[option.name], option.description)
+          ->check(finite_number())
+          ->capture_default_str();
     }
     case_command->callback([&definition, values, options] { run_generate(definition, *values, *options); });
   }

@@ -11,9 +11,12 @@
 #include <optional>
 
 #include "base/error.hpp"
+#include "base/memory_budget.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
+#include "cli/number_checks.hpp"
 #include "geom/sym_functions.hpp"
+#include "io/output_set.hpp"
 #include "mesh/measure.hpp"
 #include "metric/analytic_field.hpp"
 #include "metric/analytic_metric.hpp"
@@ -60,22 +63,31 @@ Source chosen_source(const MetricOptions& options) {
 
 bool is_analytic_field(const std::string& hessian) { return hessian.starts_with(kAnalyticFieldPrefix); }
 
-// Options that belong to other sources are refused rather than silently ignored.
+// Options that belong to other sources, or to another analytic metric, are refused rather than
+// silently ignored.
 void check_options_apply(const MetricOptions& options, Source source) {
   const bool analytic = source == Source::kAnalytic;
   const bool hessian = source == Source::kHessian;
-  const bool shaped = analytic || (hessian && is_analytic_field(options.hessian));
-  auto refuse_unless = [](bool given, bool applies, const char* what) {
-    if (given && !applies) throw Error(std::string(what) + " does not apply to this metric source");
+  const bool linear = analytic && options.analytic == "linear";
+  const bool shear = analytic && options.analytic.starts_with("shear-");
+  const bool uniform = analytic && !linear && !shear;  // or an unknown name, refused by name later
+  const bool shaped = shear || (hessian && is_analytic_field(options.hessian));
+  auto refuse_unless = [&options](bool given, bool applies, const char* what) {
+    if (given && !applies)
+      throw Error(std::string(what) + " does not apply to this metric source" +
+                  (options.analytic.empty() ? "" : " (--analytic " + options.analytic + ")"));
   };
-  refuse_unless(options.h.has_value() || options.center.has_value() || !options.axis.empty(), analytic, "--h, --center, --axis");
+  refuse_unless(options.h.has_value(), uniform, "--h");
+  refuse_unless(options.center.has_value() || !options.axis.empty(), linear, "--center, --axis");
   refuse_unless(options.radius.has_value() || options.width.has_value() || !options.origin.empty(), shaped,
                 "--radius, --width, --origin");
-  refuse_unless(options.h_min.has_value(), analytic || hessian, "--h-min");
-  refuse_unless(options.h_max.has_value(), analytic || hessian || source == Source::kSurface, "--h-max");
+  refuse_unless(options.h_min.has_value(), linear || shear || hessian, "--h-min");
+  refuse_unless(options.h_max.has_value(), linear || shear || hessian || source == Source::kSurface, "--h-max");
   refuse_unless(options.complexity.has_value() || options.norm.has_value(), hessian, "--complexity, --norm");
   refuse_unless(!options.back_metric.empty(), source == Source::kInterpolated, "--from-metric");
   if (source == Source::kInterpolated && options.back_metric.empty()) throw Error("--from needs --from-metric SOL");
+  if (options.h_min && options.h_max && *options.h_min > *options.h_max)
+    throw Error("--h-min must not exceed --h-max (the smallest size first)");
   if (hessian && !options.complexity) throw Error("--hessian needs --complexity N");
   if (source == Source::kSurface && !options.gradation)
     throw Error("--surface needs --gradation BETA to carry the boundary sizes into the volume");
@@ -212,7 +224,9 @@ SolutionField rows_in_file_order(const Mesh<D>& mesh, const MeshFileContent& fil
 }
 
 template <int D>
-void write_metric(const Mesh<D>& mesh, const MeshFileContent& file, const MetricOptions& options, Source source) {
+void write_metric(const Mesh<D>& mesh, const MeshFileContent& file, const MetricOptions& options, Source source,
+                  OutputSet& outputs) {
+  check_memory_fits("the metric on " + options.mesh, mesh.element_count(), kMetricBytesPerElement);
   SourceMetrics<D> metrics = source_metrics(mesh, file, options, source);
   if (options.gradation) {
     grade_metrics(mesh, metrics.vertices, GradationOptions{*options.gradation});
@@ -220,6 +234,7 @@ void write_metric(const Mesh<D>& mesh, const MeshFileContent& file, const Metric
   }
   SolutionField rows = rows_in_file_order(mesh, file, metrics);
   write_solution_file(options.output, {D, rows.count(), {rows}});
+  outputs.commit();
   std::cout << "wrote " << options.output << ": " << rows.count() << " metrics, complexity "
             << metric_complexity(mesh, metrics.vertices) << " (" << mesh_summary(mesh) << ")\n";
 }
@@ -230,8 +245,17 @@ void run_metric(const MetricOptions& options) {
   std::string extension = file_extension(options.output);
   if (extension != ".sol" && extension != ".solb")
     throw Error(options.output + ": a metric is written as .sol or .solb, not '" + extension + "'");
+  OutputSet outputs;
+  outputs.add_input(options.mesh, "the input mesh");
+  if (source == Source::kInput) outputs.add_input(options.input, "--input");
+  if (source == Source::kHessian && !is_analytic_field(options.hessian)) outputs.add_input(options.hessian, "--hessian");
+  if (source == Source::kInterpolated) {
+    outputs.add_input(options.back_mesh, "--from");
+    outputs.add_input(options.back_metric, "--from-metric");
+  }
+  outputs.add_output(options.output, "-o");
   MeshFileContent file = read_mesh_file(options.mesh);
-  std::visit([&](const auto& mesh) { write_metric(mesh, file, options, source); }, file.mesh);
+  std::visit([&](const auto& mesh) { write_metric(mesh, file, options, source, outputs); }, file.mesh);
 }
 
 std::string names_text(const std::vector<std::string>& names) {
@@ -258,7 +282,7 @@ void add_metric_command(CLI::App& app) {
                       "--gradation (required)")
       ->delimiter(',')
       ->expected(2)
-      ->check(CLI::PositiveNumber);
+      ->check(finite_positive());
   command->add_option("--hessian", options->hessian,
                       "source: the Lp metric of the Hessian of a scalar field, FIELD.sol(b) at the nodes or "
                       "analytic:NAME (" + names_text(analytic_field_names()) + ")");
@@ -267,28 +291,32 @@ void add_metric_command(CLI::App& app) {
                       "source: the metric of another mesh BACK (.mesh, .meshb, .msh; --from-metric) interpolated "
                       "log-Euclidean at the nodes of MESH, e.g. a remesher's input metric at its output");
   command->add_option("--from-metric", options->back_metric, "the metric of the --from mesh (.sol/.solb), one row per node");
-  command->add_option("--gradation", options->gradation, "grade the metric: sizes grow by at most BETA > 1 per unit length");
+  command->add_option("--gradation", options->gradation, "grade the metric: sizes grow by at most BETA > 1 per unit length")
+      ->check(finite_positive());
 
-  command->add_option("--h", options->h, "analytic uniform: size (0.1)")->check(CLI::PositiveNumber);
+  command->add_option("--h", options->h, "analytic uniform: size (0.1)")->check(finite_positive());
   command->add_option("--h-min", options->h_min,
                       "analytic: smallest size (0.001); hessian: bound on |H| (1e-6 h-max)")
-      ->check(CLI::PositiveNumber);
+      ->check(finite_positive());
   command->add_option("--h-max", options->h_max,
                       "analytic: largest size (0.1); hessian: bound on |H|, surface: initial interior size "
                       "(both: the bounding-box diagonal)")
-      ->check(CLI::PositiveNumber);
+      ->check(finite_positive());
   command->add_option("--axis", options->axis, "analytic linear: the axis the size varies along (x, y, z; default the last)")
       ->check(CLI::IsMember({"x", "y", "z"}));
-  command->add_option("--center", options->center, "analytic linear: the coordinate of the smallest size (0.5)");
-  command->add_option("--radius", options->radius, "analytic shear-*, tanh-shock: radius of the layer (0.75)");
+  command->add_option("--center", options->center, "analytic linear: the coordinate of the smallest size (0.5)")
+      ->check(finite_number());
+  command->add_option("--radius", options->radius, "analytic shear-*, tanh-shock: radius of the layer (0.75)")
+      ->check(finite_number());
   command->add_option("--width", options->width, "analytic shear-*, tanh-shock: width of the layer (0.05)")
-      ->check(CLI::PositiveNumber);
+      ->check(finite_positive());
   command->add_option("--origin", options->origin, "analytic shear-*, tanh-shock: centre X,Y[,Z] of the layer (0)")
       ->delimiter(',')
-      ->expected(2, 3);
+      ->expected(2, 3)
+      ->check(finite_number());
   command->add_option("--complexity", options->complexity, "hessian: target complexity N (about the vertex count)")
-      ->check(CLI::PositiveNumber);
-  command->add_option("--norm", options->norm, "hessian: the p of the Lp norm of the error (2)")->check(CLI::PositiveNumber);
+      ->check(finite_positive());
+  command->add_option("--norm", options->norm, "hessian: the p of the Lp norm of the error (2)")->check(finite_positive());
   command->callback([options] { run_metric(*options); });
 }
 

@@ -1,5 +1,7 @@
-// Output files appear whole or not at all: data goes to a temporary name beside the target and is
-// renamed over it only when commit() is called; otherwise the temporary is removed.
+// Output files appear whole or not at all: data goes to a short temporary name beside the target
+// (see temporary_files.hpp). Inside a command's OutputSet, commit() checks the write and leaves the
+// temporary for the set to rename with the command's other outputs; without one (library use),
+// commit() renames it at once. A temporary not committed is removed.
 #pragma once
 
 #include <fstream>
@@ -9,19 +11,20 @@ namespace hocav {
 
 class AtomicOutput {
  public:
-  // Opens "<path>.tmp-<pid>" for writing (binary mode). Throws Error when it cannot.
+  // Opens the temporary for writing (binary mode). Throws Error when it cannot.
   explicit AtomicOutput(std::string path);
   ~AtomicOutput();
   AtomicOutput(const AtomicOutput&) = delete;
   AtomicOutput& operator=(const AtomicOutput&) = delete;
 
   std::ofstream& stream() { return stream_; }
-  // Flushes, checks for write errors, and renames the temporary to the target. Throws Error.
+  // Flushes and checks for write errors, then renames or hands over to the OutputSet. Throws Error.
   void commit();
 
  private:
   std::string path_, temporary_path_;
   std::ofstream stream_;
+  bool in_output_set_ = false;
   bool committed_ = false;
 };
 

@@ -8,6 +8,7 @@
 
 #include "base/error.hpp"
 #include "io/gamma_keywords.hpp"
+#include "io/printable_excerpt.hpp"
 
 namespace hocav::gamma {
 namespace {
@@ -16,7 +17,7 @@ constexpr std::int32_t kNativeEndianCode = 1;
 constexpr std::int32_t kSwappedEndianCode = 16777216;
 constexpr std::size_t kReadChunkBytes = std::size_t{1} << 20;
 // Past this many distinct skipped keywords the file is likely not a mesh at all: stop the noise.
-constexpr std::size_t kMaxSkipWarnings = 20;
+constexpr std::size_t kMaxSkipWarnings = 4;
 
 bool is_number(std::string_view token) {
   double value = 0;
@@ -49,10 +50,11 @@ void KeywordReaderState::set_dimension(Reader& reader, std::int64_t dimension) {
 
 void KeywordReaderState::warn_skipped() {
   if (!warned_.insert(keyword_).second) return;
+  const std::string where = "hocav: warning: " + path_ + ": ";
   if (warned_.size() <= kMaxSkipWarnings)
-    std::cerr << "hocav: warning: " << path_ << ": skipping keyword " << keyword_ << " (not used by hocav)\n";
+    std::cerr << where << "skipping keyword " << keyword_ << " (not used by hocav)\n";
   else if (warned_.size() == kMaxSkipWarnings + 1)
-    std::cerr << "hocav: warning: " << path_ << ": skipping more unknown keywords without reporting them\n";
+    std::cerr << where << "skipping more unknown keywords without naming them\n";
 }
 
 // ---- ASCII ----
@@ -64,8 +66,12 @@ bool TextKeywordReader::next_keyword() {
     std::string_view token = pending_.empty() ? scanner_.next_token() : std::exchange(pending_, {});
     if (token.empty()) return false;
     if (is_number(token))
-      fail("found the number " + std::string(token.substr(0, 40)) +
+      fail("found the number " + printable_excerpt(token) +
            " where a keyword was expected (does a count disagree with the data?)");
+    keyword_.clear();
+    // Control bytes or megabytes without a space: not a keyword, and not to be echoed raw.
+    if (printable_excerpt(token) != token)
+      fail("found '" + printable_excerpt(token) + "' where a keyword was expected (not a Gamma mesh?)");
     keyword_ = std::string(token);
     keyword_code_ = gamma::keyword_code(token);
     if (keyword_code_ == kEnd) return false;
@@ -136,8 +142,11 @@ BinaryKeywordReader::BinaryKeywordReader(const std::string& path) : KeywordReade
 
 bool BinaryKeywordReader::next_keyword() {
   while (true) {
-    // A chain without End may stop with NextPos 0 or at the very end of the file.
-    if (next_block_ == 0 || next_block_ == file_size_) return false;
+    // A file cut at a block boundary still chains correctly: only its End keyword tells it is whole.
+    if (next_block_ == 0 || next_block_ == file_size_) {
+      keyword_.clear();
+      fail("truncated file: it stops before its End keyword (byte " + std::to_string(file_size_) + ")");
+    }
     std::uint64_t start = next_block_;
     seek(start);
     block_end_ = file_size_;

@@ -58,7 +58,7 @@ class KeywordReaderState {
   int version_ = 0;
   int dimension_ = 0;
   int keyword_code_ = 0;
-  std::string keyword_;
+  std::string keyword_;  // printable ASCII, 40 bytes at most
 
  private:
   std::set<std::string> warned_;

@@ -19,6 +19,7 @@
 #include "base/index_hash_map.hpp"
 #include "io/atomic_output.hpp"
 #include "io/mesh_assembly.hpp"
+#include "io/printable_excerpt.hpp"
 #include "io/text_scanner.hpp"
 
 namespace hocav {
@@ -125,11 +126,11 @@ class MshReader {
       } else if (section == "$PhysicalNames") {
         skip_section(section);  // names are not kept; the physical tags themselves are in $Entities
       } else if (section.size() > 1 && section[0] == '$' && section.compare(0, 4, "$End") != 0) {
-        std::cerr << in_.path() << ": warning: skipping section " << section << " (not used by hocav), line " << in_.line()
+        std::cerr << in_.path() << ": warning: skipping section " << printable_excerpt(section) << " (not used by hocav), line " << in_.line()
                   << "\n";
         skip_section(section);
       } else {
-        throw Error(in_.path() + ": expected a section such as $Nodes, found '" + std::string(token.substr(0, 40)) +
+        throw Error(in_.path() + ": expected a section such as $Nodes, found '" + printable_excerpt(token) +
                     "', line " + std::to_string(in_.line()));
       }
     }
@@ -143,7 +144,7 @@ class MshReader {
     std::string_view token = in_.next_token();
     if (token.empty()) in_.fail(section, "unexpected end of file, expected " + std::string(expected));
     if (token != expected)
-      in_.fail(section, "expected " + std::string(expected) + ", found '" + std::string(token.substr(0, 40)) + "'");
+      in_.fail(section, "expected " + std::string(expected) + ", found '" + printable_excerpt(token) + "'");
   }
 
   void skip_section(const std::string& section) {
@@ -168,7 +169,7 @@ class MshReader {
     const std::string_view section = "$MeshFormat";
     std::string version(in_.next_token());
     if (version != "4.1")
-      in_.fail(section, "version '" + version.substr(0, 20) + "' is not supported: hocav reads MSH 4.1 ASCII; " +
+      in_.fail(section, "version '" + printable_excerpt(version, 20) + "' is not supported: hocav reads MSH 4.1 ASCII; " +
                             std::string(kConvertHint));
     std::int64_t file_type = in_.next_integer(section);
     if (file_type == 1)

@@ -33,14 +33,20 @@ int mesh_file_dimension(const std::string& path) {
   throw Error(path + ": unknown mesh format '" + extension + "' (readable: .mesh .meshb .msh)");
 }
 
+void check_writable_mesh_format(const std::string& path) {
+  const std::string extension = file_extension(path);
+  if (extension != ".mesh" && extension != ".meshb" && extension != ".msh" && extension != ".vtu")
+    throw Error(path + ": unknown mesh format '" + extension + "' (writable: .mesh .meshb .msh .vtu)");
+}
+
 template <int D>
 void write_mesh_file(const std::string& path, const Mesh<D>& mesh, const MeshWriteOptions& options) {
-  std::string extension = file_extension(path);
+  check_writable_mesh_format(path);
+  const std::string extension = file_extension(path);
   if (extension == ".mesh") return write_gamma_mesh(path, mesh, false, 2);
   if (extension == ".meshb") return write_gamma_mesh(path, mesh, true, options.gamma_version);
   if (extension == ".msh") return write_gmsh_msh(path, mesh);
-  if (extension == ".vtu") return write_vtu(path, mesh);
-  throw Error(path + ": unknown mesh format '" + extension + "' (writable: .mesh .meshb .msh .vtu)");
+  write_vtu(path, mesh);  // the last writable format
 }
 
 template void write_mesh_file(const std::string&, const Mesh<2>&, const MeshWriteOptions&);

@@ -38,6 +38,10 @@ struct MeshWriteOptions {
   int gamma_version = 0;
 };
 
+// Throws Error unless the extension of `path` names a format hocav writes (for commands that check
+// their outputs before the work).
+void check_writable_mesh_format(const std::string& path);
+
 // Writes a mesh; the format follows the extension. Writes to a temporary name, then renames.
 template <int D>
 void write_mesh_file(const std::string& path, const Mesh<D>& mesh, const MeshWriteOptions& options = {});

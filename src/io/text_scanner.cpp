@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "io/printable_excerpt.hpp"
 
 namespace hocav {
 
@@ -58,9 +59,9 @@ std::int64_t TextScanner::next_integer(std::string_view what) {
   if (token.empty()) fail(what, "unexpected end of file");
   std::int64_t value = 0;
   auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
-  if (error == std::errc::result_out_of_range) fail(what, "integer out of range '" + std::string(token) + "'");
+  if (error == std::errc::result_out_of_range) fail(what, "integer out of range '" + printable_excerpt(token) + "'");
   if (error != std::errc() || end != token.data() + token.size())
-    fail(what, "expected an integer, found '" + std::string(token.substr(0, 40)) + "'");
+    fail(what, "expected an integer, found '" + printable_excerpt(token) + "'");
   return value;
 }
 
@@ -73,17 +74,17 @@ double TextScanner::next_real(std::string_view what) {
     // Underflow to a denormal or zero is harmless; overflow is not.
     std::string copy(token);
     value = std::strtod(copy.c_str(), nullptr);
-    if (std::isinf(value)) fail(what, "real out of range '" + copy + "'");
+    if (std::isinf(value)) fail(what, "real out of range '" + printable_excerpt(copy) + "'");
     return value;
   }
   if (error != std::errc() || end != token.data() + token.size())
-    fail(what, "expected a real, found '" + std::string(token.substr(0, 40)) + "'");
-  if (!std::isfinite(value)) fail(what, "value is not finite '" + std::string(token) + "'");
+    fail(what, "expected a real, found '" + printable_excerpt(token) + "'");
+  if (!std::isfinite(value)) fail(what, "value is not finite '" + printable_excerpt(token) + "'");
   return value;
 }
 
 void TextScanner::fail(std::string_view what, std::string_view message) const {
-  throw Error(path_ + ": " + std::string(what) + ": " + std::string(message) + ", line " + std::to_string(token_line_));
+  throw Error(path_ + ": " + printable_excerpt(what, 80) + ": " + std::string(message) + ", line " + std::to_string(token_line_));
 }
 
 }  // namespace hocav

@@ -11,10 +11,17 @@ void check_size(double h, const char* name) {
   if (!(h > 0) || !std::isfinite(h)) throw Error(std::string("analytic metric: ") + name + " must be positive");
 }
 
-template <int D>
-SymMat<D> shear_metric(const AnalyticMetricSpec& spec, const Vec<D>& x) {
+// The sizes of a graded metric: both positive, the smallest first (else sizes past h-max, or
+// infinite ones where the linear size crosses zero).
+void check_size_range(const AnalyticMetricSpec& spec) {
   check_size(spec.h_min, "h-min");
   check_size(spec.h_max, "h-max");
+  if (spec.h_min > spec.h_max) throw Error("analytic metric: h-min must not exceed h-max");
+}
+
+template <int D>
+SymMat<D> shear_metric(const AnalyticMetricSpec& spec, const Vec<D>& x) {
+  check_size_range(spec);
   check_size(spec.width, "width");
   Vec<D> radial;
   for (int i = 0; i < D; ++i) radial[i] = x[i] - spec.origin[static_cast<std::size_t>(i)];
@@ -46,8 +53,7 @@ SymMat<D> analytic_metric(const AnalyticMetricSpec& spec, const Vec<D>& x) {
     return (1 / (spec.h * spec.h)) * SymMat<D>::identity();
   }
   if (spec.name == "linear") {
-    check_size(spec.h_min, "h-min");
-    check_size(spec.h_max, "h-max");
+    check_size_range(spec);
     int axis = spec.axis < 0 ? D - 1 : spec.axis;
     if (axis >= D) throw Error("analytic metric linear: axis " + std::to_string(axis) + " in " + std::to_string(D) + "D");
     double h_axis = spec.h_min + 2 * (spec.h_max - spec.h_min) * std::abs(x[axis] - spec.center);

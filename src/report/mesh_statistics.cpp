@@ -294,10 +294,8 @@ MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> no
     s.total_measure += measure;
     if (!(measure > 0)) ++s.non_positive_elements;
   }
-  if (mesh.has_topology())
-    for (Index k = 0; k < mesh.element_count(); ++k)
-      for (int face = 0; face <= D; ++face)
-        if (mesh.neighbor(k, face) == kNoIndex && mesh.element_face_facet(k, face) == kNoIndex) ++s.open_boundary_faces;
+  s.defects = find_mesh_defects(mesh);
+  s.open_boundary_faces = s.defects.open_faces;
 
   ConsistencyOptions options;
   options.require_positive_orientation = !mesh.is_p2();  // a valid curved element may be an inverted P1 one
@@ -362,7 +360,8 @@ void write_statistics_table(std::ostream& out, const MeshStatistics& s, const st
       row(std::string(2, ' ').append(jacobian_bin_label(bin)), counts.str());
     }
   }
-  row("valid", s.valid() ? "yes" : "NO: " + invalidity_summary(s));
+  if (!s.defects.none()) row("defects", s.defects.summary());
+  row("valid", !s.valid() ? "NO: " + invalidity_summary(s) : s.defects.none() ? "yes" : "yes, but with defects: " + s.defects.summary());
   row("memory", memory_text(s.memory_bytes));
   if (!s.metric) return;
   const MetricStatistics& metric = *s.metric;
@@ -397,6 +396,9 @@ void write_statistics_json(std::ostream& out, const MeshStatistics& s, const std
   json.member("non_positive", s.non_positive_elements);
   json.end_object();
   json.member("open_boundary_faces", s.open_boundary_faces);
+  json.key("defects").begin_object();
+  json.member("non_manifold_vertices", s.defects.non_manifold_vertices).member("non_manifold_edges", s.defects.non_manifold_edges);
+  json.member("overlap_vertices", s.defects.overlap_vertices).member("summary", s.defects.summary()).end_object();
   json.key("consistency").begin_object().member("consistent", s.consistency_problems.empty());
   json.key("problems").begin_array();
   for (const std::string& problem : s.consistency_problems) json.value(problem);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "mesh/mesh.hpp"
+#include "mesh/mesh_defects.hpp"
 
 namespace hocav {
 
@@ -84,6 +85,8 @@ struct MeshStatistics {
   Index non_positive_elements = 0;
   // Element faces on the domain boundary without a boundary facet (allowed, but worth knowing).
   Index open_boundary_faces = 0;
+  // Those and the other defects of a consistent mesh: non-manifold vertices and edges, overlaps.
+  MeshDefects defects;
   // The consistency checker's verdict (P1 orientation is required of P1 meshes only).
   std::vector<std::string> consistency_problems;
   JacobianStatistics jacobian;

@@ -12,6 +12,8 @@
 #include <string>
 #include <system_error>
 
+#include "base/quiet_stdout.hpp"
+
 namespace hocav {
 namespace {
 
@@ -46,7 +48,10 @@ CadBoundary<D>::CadBoundary(const std::string& path) : session_("cad") {
   if (!std::filesystem::is_regular_file(path, error)) throw Error(path + ": cannot read the CAD file");
   call_gmsh([&] {
     gmsh::vectorpair imported, entities;
-    gmsh::model::occ::importShapes(path, imported);
+    {
+      QuietStdout quiet;  // OpenCASCADE's STEP reader prints its statistics
+      gmsh::model::occ::importShapes(path, imported);
+    }
     gmsh::model::occ::synchronize();
     gmsh::model::getEntities(entities, D - 1);
     for (const auto& [dimension, tag] : entities) {

@@ -26,7 +26,10 @@ import meshio
 import numpy as np
 
 HOCAV = sys.argv[1]
-DATA = os.path.join(os.path.dirname(__file__), "..", "..", "..", "shared", "data", "mmg-torus")
+# mmg's torus lives in ../shared/data beside the repository (HOCAV_SHARED_DATA_DIR overrides it); a
+# bare clone has none, and its case is skipped with a message naming the missing file.
+DATA = os.path.join(os.environ.get("HOCAV_SHARED_DATA_DIR",
+                                   os.path.join(os.path.dirname(__file__), "..", "..", "..", "shared", "data")), "mmg-torus")
 
 
 def run(*args):
@@ -146,7 +149,12 @@ def check(name, make_curved):
 
 
 def main():
-    for name, make_curved in [("torus", curved_torus), ("annulus", curved_annulus), ("sphere shell", curved_shell)]:
+    cases = [("torus", curved_torus), ("annulus", curved_annulus), ("sphere shell", curved_shell)]
+    torus = os.path.join(DATA, "torus.mesh")
+    if not os.path.exists(torus):
+        print(f"SKIPPED the torus case: missing {torus} (../shared/data is not beside the repository)")
+        cases = cases[1:]
+    for name, make_curved in cases:
         check(name, make_curved)
     print("1 passed, 0 failed")
 

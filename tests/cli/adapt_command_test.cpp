@@ -53,6 +53,9 @@ TEST_F(AdaptCli, BadRequestsFailWithOneLineAndNoOutput) {
   expect_failure("adapt square.meshb --analytic uniform --hgrad 1.5 -o out.meshb", "--hgrad");
   expect_failure("adapt square.meshb --analytic no-such-metric -o out.meshb", "no-such-metric");
   expect_failure("adapt missing.meshb --analytic uniform -o out.meshb", "missing.meshb");
+  // A metric whose complexity asks for more elements than can be built is refused before work.
+  expect_failure("adapt square.meshb --analytic uniform --hmax 0.00001 -o out.meshb", "the metric asks for about");
+  expect_failure("adapt square.meshb --analytic uniform --hmin nan -o out.meshb", "--hmin");
   EXPECT_FALSE(fs::exists(path("out.meshb")));
 }
 

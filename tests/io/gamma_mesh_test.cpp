@@ -12,6 +12,7 @@
 #include "base/error.hpp"
 #include "cases/structured.hpp"
 #include "gamma_test_support.hpp"
+#include "shared_data.hpp"
 
 namespace hocav {
 namespace {
@@ -154,10 +155,11 @@ TEST(GammaMesh, VersionOneKeepsOnlyFloatPrecision) {
 
 // ---- third-party files ----
 
-const std::string kTorus = std::string(HOCAV_SHARED_DATA_DIR) + "/mmg-torus/torus.mesh";
-const std::string kLinear = std::string(HOCAV_SHARED_DATA_DIR) + "/ugawg-linear/linear.mesh";
+const std::string kTorus = testing_support::shared_data_path("mmg-torus/torus.mesh");
+const std::string kLinear = testing_support::shared_data_path("ugawg-linear/linear.mesh");
 
 TEST(GammaMesh, ReadsMmgTorusAndSkipsItsNormalsOnceEach) {
+  if (auto missing = testing_support::missing_shared_data({kTorus}); !missing.empty()) GTEST_SKIP() << missing;
   ::testing::internal::CaptureStderr();
   MeshFileContent content = read_gamma_mesh(kTorus);
   std::string warnings = ::testing::internal::GetCapturedStderr();
@@ -179,6 +181,7 @@ TEST(GammaMesh, ReadsMmgTorusAndSkipsItsNormalsOnceEach) {
 }
 
 TEST(GammaMesh, ReadsUgawgLinearAndRoundTripsIt) {
+  if (auto missing = testing_support::missing_shared_data({kLinear}); !missing.empty()) GTEST_SKIP() << missing;
   ::testing::internal::CaptureStderr();
   MeshFileContent content = read_gamma_mesh(kLinear);
   ::testing::internal::GetCapturedStderr();

@@ -10,6 +10,7 @@
 #include "base/error.hpp"
 #include "gamma_test_support.hpp"
 #include "io/gamma_mesh.hpp"
+#include "shared_data.hpp"
 
 namespace hocav {
 namespace {
@@ -108,7 +109,8 @@ void expect_metric_of_mesh(const std::string& mesh_path, const std::string& sol_
 }
 
 TEST(SolutionFile, ReadsTheThirdPartyMetricsAsPositiveDefinite) {
-  const std::string data = HOCAV_SHARED_DATA_DIR;
+  const std::string data = testing_support::shared_data_path("");
+  if (auto missing = testing_support::missing_shared_data({data + "/mmg-torus/torus.mesh", data + "/ugawg-linear/linear.mesh"}); !missing.empty()) GTEST_SKIP() << missing;
   expect_metric_of_mesh(data + "/mmg-torus/torus.mesh", data + "/mmg-torus/torus-met.sol", 4351, 32.5918);
   expect_metric_of_mesh(data + "/ugawg-linear/linear.mesh", data + "/ugawg-linear/linear.sol", 9476, 99.999999999999986);
 }
