@@ -3,25 +3,19 @@
 //                [--jacobian-floor J] [--iterations N] [--threads N] [--report R.json] [--vtu V.vtu]
 // Metric-based adaptation to a unit mesh (split, collapse, swap, smooth; boundary points on the
 // geometry), then, with --order 2, the curving of `hocav curve` in the same metric.
-#include <sys/resource.h>
-
-#include <chrono>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <thread>
 
-#include "adapt/adaptation_loop.hpp"
-#include "cli/command_support.hpp"
-#include "cli/commands.hpp"
-#include "geom/sym_functions.hpp"
 #include "base/memory_budget.hpp"
+#include "cli/adaptation_driver.hpp"
+#include "cli/commands.hpp"
 #include "cli/number_checks.hpp"
 #include "io/atomic_output.hpp"
 #include "io/output_set.hpp"
 #include "mesh/measure.hpp"
 #include "metric/gradation.hpp"
-#include "report/adaptation_report.hpp"
 
 namespace hocav {
 namespace {
@@ -38,16 +32,6 @@ struct AdaptOptions {
   int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   bool quiet = false;
 };
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-long long peak_memory_bytes() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<long long>(usage.ru_maxrss) * 1024;
-}
 
 void check_options(const AdaptOptions& o) {
   if (o.metric.empty() == o.analytic.empty()) throw Error("give exactly one metric source: --metric SOL or --analytic NAME");
@@ -94,23 +78,6 @@ double expected_elements(const Mesh<D>& input, const AdaptationMetric<D>& metric
 }
 
 template <int D>
-std::vector<SymMat<D>> metrics_at_vertices(const Mesh<D>& mesh, const AdaptationMetric<D>& metric) {
-  std::vector<SymMat<D>> metrics;
-  Index hint = kNoIndex;
-  for (const auto& x : mesh.vertices()) metrics.push_back(metric.metric_at(x, hint));
-  return metrics;
-}
-
-template <int D>
-void measure_adapted(AdaptationReport& report, const Mesh<D>& mesh, const std::vector<SymMat<D>>& metrics) {
-  const SolutionField rows = rows_of_metrics(metrics);
-  Mesh<D> copy = mesh;  // the statistics build an edge table
-  report.measures = *compute_mesh_statistics(copy, rows.values).metric;
-  report.output_vertices = mesh.vertex_count();
-  report.output_elements = mesh.element_count();
-}
-
-template <int D>
 void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, OutputSet& outputs) {
   check_input_mesh(mesh, o.input);
   mesh.forget_edges();
@@ -128,27 +95,13 @@ void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, Ou
   settings.feature_angle_degrees = o.angle;
   settings.hausd = o.hausd_given.value_or(o.hausd * bounding_box_diagonal(input));
   if (!o.quiet) settings.progress = [](int pass, int cap) { std::cerr << "adapting: pass " << pass << " (at most " << cap << ")\n"; };
-  AdaptationReport report;
-  report.dimension = D;
-  report.input_vertices = input.vertex_count();
-  report.input_elements = input.element_count();
-  auto start = std::chrono::steady_clock::now();
-  report.run = adapt_to_metric(mesh, *run.metric, geometry.get(), settings);
-  report.seconds_adapt = seconds_since(start);
-  const std::vector<SymMat<D>> metrics = metrics_at_vertices(mesh, *run.metric);
-  measure_adapted(report, mesh, metrics);
-
-  // The curving field lives on the adapted mesh: its vertices carry the (clamped) metric the loop used.
-  const MetricField<D> curving_field(mesh, metrics);
-  if (o.order == 2) {
-    start = std::chrono::steady_clock::now();
-    report.curving = curve_in_metric(mesh, curving_field, {o.surface, "simpson", o.jacobian_floor, 1, o.threads, !o.quiet});
-    report.seconds_curve = seconds_since(start);
-  }
-  report.peak_memory_bytes = peak_memory_bytes();
+  std::optional<CurvingSettings> curving;
+  if (o.order == 2) curving = CurvingSettings{o.surface, "simpson", o.jacobian_floor, 1, o.threads, !o.quiet};
+  const AdaptedMesh<D> adapted = adapt_and_curve(mesh, *run.metric, geometry.get(), settings, curving);
+  const AdaptationReport& report = adapted.report;
 
   write_mesh_file(o.output, mesh);
-  if (!o.vtu.empty()) write_curved_vtu(o.vtu, mesh, curving_field);
+  if (!o.vtu.empty()) write_curved_vtu(o.vtu, mesh, *adapted.field);
   if (!o.report.empty()) {
     AtomicOutput out(o.report);
     write_adaptation_report_json(out.stream(), report);

@@ -1,7 +1,8 @@
 // hocav demo [-o DIR] [--threads N] [--h H]
 // The main job on built-in cases, no input needed: the paper's "Meshes 1" pipeline on the volume
-// between two spheres (an isotropic mesh, a surface metric graded into the volume, P2 curving with
-// the P3 surrogate of the boundary), the same curving on the 2D shear-circle case (the paper's
+// between two spheres (an isotropic mesh, a surface metric graded into the volume, adaptation to a
+// unit mesh of it, P2 curving with the P3 surrogate of the boundary), the curving of the 2D
+// shear-circle case (the paper's
 // Fig. 1), and pictures of both: a planar cut through the curved 3D mesh, the curved 2D mesh,
 // histograms of the edge gains and of the normalized Jacobians (SVG).
 #include <algorithm>
@@ -14,6 +15,7 @@
 
 #include "base/error.hpp"
 #include "cases/case_registry.hpp"
+#include "cli/adaptation_driver.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
 #include "cli/number_checks.hpp"
@@ -30,9 +32,9 @@
 namespace hocav {
 namespace {
 
-// The 3D case's metric, as `hocav metric --surface 0.01,0.1 --gradation 1.5` makes it: size 0.01
-// along the normals of both spheres, 0.1 along them, graded into the volume.
-constexpr double kShellNormalSize = 0.01, kShellTangentialSize = 0.1, kShellGradation = 1.5;
+// The 3D case's metric, as `hocav metric --surface H/10,H --gradation 1.5` makes it: size H/10
+// along the normals of both spheres, H (the --h option) along them, graded into the volume.
+constexpr double kShellNormalRatio = 0.1, kShellGradation = 1.5;
 // Lattice subdivisions of each face for the cut: curved edges drawn with 8 pieces each.
 constexpr int kCutSubdivisions = 8;
 // Min normalized Jacobian colours: 0 (dark, a degenerate element) to 1 (yellow, as the straight
@@ -42,7 +44,7 @@ const ColorScale kJacobianColors{0, 1};
 struct DemoOptions {
   std::string directory = "out";
   int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  double h = 0.1;  // target edge length of the sphere-shell mesh
+  double h = 0.25;  // the sphere-shell mesh's edge length and its metric's tangential size
 };
 
 void progress(const std::string& message) { std::cerr << "demo: " << message << '\n'; }
@@ -64,7 +66,7 @@ std::vector<double> min_normalized_jacobians(const auto& mesh) {
 const std::vector<std::pair<std::string, std::string>> kDemoFiles{
     {"sphere-shell-p2.meshb", "the curved P2 mesh"},
     {"sphere-shell-p2.vtu", "the same for ParaView (set Nonlinear Subdivision Level >= 2)"},
-    {"sphere-shell-report.json", "the run's figures (Table-1 columns, counters)"},
+    {"sphere-shell-report.json", "the run's figures (adaptation passes, lengths and qualities, Table-1 columns)"},
     {"sphere-shell-cut.svg", "a cut through the curved 3D mesh"},
     {"edge-gains.svg", "histogram of the gains of the volume edges"},
     {"normalized-jacobians.svg", "histogram of the min normalized Jacobians"},
@@ -107,20 +109,29 @@ void write_histograms(const std::vector<double>& gains, const std::vector<double
                              kJacobianColors}));
 }
 
-// Generates, grades, curves and writes the sphere-shell case; draws its cut and histograms.
-CurvingReport run_sphere_shell(const DemoOptions& options, Written& written) {
-  Mesh<3> mesh = generated<3>("sphere-shell", {{"h", options.h}});
-  progress("surface metric graded into the volume (" + mesh_summary(mesh) + ")");
+// Generates the sphere-shell case and its surface metric, adapts the mesh to the metric, curves
+// the unit mesh and writes it; draws its cut and histograms.
+AdaptationReport run_sphere_shell(const DemoOptions& options, Written& written) {
+  const Mesh<3> input = generated<3>("sphere-shell", {{"h", options.h}});
+  progress("surface metric graded into the volume (" + mesh_summary(input) + ")");
   std::vector<SymMat<3>> metrics = surface_metric_at_vertices(
-      mesh, SurfaceSizes{kShellNormalSize, kShellTangentialSize, bounding_box_diagonal(mesh)});
-  grade_metrics(mesh, metrics, GradationOptions{kShellGradation});
-  const MetricField<3> field(mesh, metrics);
+      input, SurfaceSizes{kShellNormalRatio * options.h, options.h, bounding_box_diagonal(input)});
+  grade_metrics(input, metrics, GradationOptions{kShellGradation});
+  const MetricField<3> back(input, metrics);
+  const AdaptationMetric<3> metric(back, {});
+  const auto surface = boundary_geometry<3>("p3", input);
 
-  progress("curving on " + std::to_string(options.threads) + " threads");
+  progress("adapting to it, then curving on " + std::to_string(options.threads) + " threads");
+  AdaptationSettings adaptation;
+  adaptation.hausd = 0.01 * bounding_box_diagonal(input);
+  adaptation.progress = [](int pass, int cap) { progress("adapting: pass " + std::to_string(pass) + " (at most " + std::to_string(cap) + ")"); };
   CurvingSettings settings;
   settings.threads = options.threads;
   settings.progress = true;
-  CurvingReport report = curve_in_metric(mesh, field, settings);
+  Mesh<3> mesh = input;
+  const AdaptedMesh<3> adapted = adapt_and_curve(mesh, metric, surface.get(), adaptation, settings);
+  const AdaptationReport& report = adapted.report;
+  const MetricField<3>& field = *adapted.field;
 
   progress("writing the P2 mesh, its .vtu and the report");
   write_mesh_file(written.path(options, "sphere-shell-p2.meshb"), mesh);
@@ -128,15 +139,18 @@ CurvingReport run_sphere_shell(const DemoOptions& options, Written& written) {
                    mesh, field);
   {
     AtomicOutput out(written.path(options, "sphere-shell-report.json"));
-    write_curving_report_json(out.stream(), report);
+    write_adaptation_report_json(out.stream(), report);
     out.commit();
   }
 
   progress("drawing the cut z = 0 and the histograms");
   const std::vector<double> jacobians = min_normalized_jacobians(mesh);
-  MeshFigureOptions figure{"Curved sphere shell, cut by the plane z = 0",
-                           "P2 tetrahedra curved in a surface metric (normal size 0.01); each section filled by "
-                           "its element's min normalized Jacobian",
+  char subtitle[200];
+  std::snprintf(subtitle, sizeof subtitle,
+                "adapted to a surface metric (normal size %.3g, tangential %.3g) and curved; each section filled by its "
+                "element's min normalized Jacobian",
+                kShellNormalRatio * options.h, options.h);
+  MeshFigureOptions figure{"Adapted and curved sphere shell, cut by the plane z = 0", subtitle,
                            kJacobianColors, "min normalized Jacobian",
                            Box{{{0.28, 0.28}}, {{0.58, 0.58}}}};  // the detail: where the inner sphere meets x = y
   write_svg(written.path(options, "sphere-shell-cut.svg"),
@@ -174,11 +188,12 @@ void run_demo(const DemoOptions& options) {
   OutputSet outputs;
   for (const auto& file : kDemoFiles) outputs.add_output(path_in(options, file.first), "-o");
   Written written;
-  const CurvingReport shell = run_sphere_shell(options, written);
+  const AdaptationReport shell = run_sphere_shell(options, written);
   const CurvingReport shear_circle = run_shear_circle(options, written);
   outputs.commit();
-  std::cout << "curved the sphere shell:\n";
-  write_curving_report_table(std::cout, shell);
+  std::cout << "adapted the sphere shell to its metric, then curved it:\n";
+  write_adaptation_report_table(std::cout, shell);
+  write_curving_report_table(std::cout, *shell.curving);
   char line[200];
   std::snprintf(line, sizeof line,
                 "curved the shear circle (2D): %d triangles, normalized Jacobian min %.3g, gain avg / max %.2f%% / %.1f%%",
@@ -197,14 +212,16 @@ void run_demo(const DemoOptions& options) {
 void add_demo_command(CLI::App& app) {
   auto options = std::make_shared<DemoOptions>();
   CLI::App* command = app.add_subcommand(
-      "demo", "The main job, no input needed: curve the sphere-shell case (and the 2D shear circle), write the P2 mesh, "
-              "the report and pictures");
+      "demo", "The main job, no input needed: adapt the sphere-shell case to a surface metric and curve it (and the 2D "
+              "shear circle), write the P2 mesh, the report and pictures");
   command->add_option("-o,--output", options->directory, "folder of the output files (created if needed)")
       ->capture_default_str();
   command->add_option("--threads", options->threads, "threads of the curving (the output does not depend on it)")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
-  command->add_option("--h", options->h, "target edge length of the sphere-shell mesh (smaller: more tetrahedra)")
+  command->add_option("--h", options->h,
+                      "the sphere-shell mesh's edge length and its metric's tangential size; the normal size is a tenth "
+                      "(smaller: more tetrahedra: 121,094 at 0.2)")
       ->check(finite_range(0.02, 0.5, "0.02 to 0.5"))
       ->capture_default_str();
   command->callback([options] { run_demo(*options); });
