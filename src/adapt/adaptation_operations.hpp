@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cmath>
+#include <vector>
 
 #include "adapt/adaptation_mesh.hpp"
 
@@ -79,6 +80,16 @@ OperationCount swap_for_quality(AdaptationMesh<D>& mesh, const AdaptationLimits&
 // worst quality of their ball.
 template <int D>
 OperationCount smooth_vertices(AdaptationMesh<D>& mesh, const AdaptationLimits& limits);
+
+// The edges of recently changed vertices (AdaptationMesh::changed_recently) whose length is above
+// `bound` (longer = true: longest first) or below it (shortest first); ties by vertex ids, so the
+// order does not depend on anything but the mesh.
+struct EdgeCandidate {
+  double length;
+  Index a, b;
+};
+template <int D>
+std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<D>& mesh, double bound, bool longer);
 
 // The range of the lengths of the edges from `center` in these elements (vertex lists).
 template <int D>

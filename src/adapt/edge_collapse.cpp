@@ -6,7 +6,6 @@
 #include "adapt/adaptation_operations.hpp"
 #include "adapt/boundary_pieces.hpp"
 #include "mesh/ball_and_shell.hpp"
-#include "mesh/vertex_graph.hpp"
 
 namespace hocav {
 namespace {
@@ -71,23 +70,11 @@ Refusal collapse_edge(AdaptationMesh<D>& am, Index removed, Index kept, const Ad
 
 template <int D>
 OperationCount collapse_short_edges(AdaptationMesh<D>& am, const AdaptationLimits& limits) {
-  struct Candidate {
-    double length;
-    Index a, b;
-  };
-  std::vector<Candidate> candidates;
-  const VertexGraph graph = vertex_graph(am.mesh());
-  for (Index a = 0; a < graph.vertex_count(); ++a)
-    for (Index b : graph.neighbors_of(a))
-      if (b > a && (am.changed_recently(a) || am.changed_recently(b)))
-        if (const double length = am.edge_length(a, b); length < limits.collapse_length) candidates.push_back({length, a, b});
-  std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
-    return x.length != y.length ? x.length < y.length : std::pair(x.a, x.b) < std::pair(y.a, y.b);
-  });
+  const std::vector<EdgeCandidate> candidates = edges_beyond(am, limits.collapse_length, false);
   OperationCount count;
   CollapseScratch scratch;
   const Mesh<D>& mesh = am.mesh();
-  for (const Candidate& c : candidates) {
+  for (const EdgeCandidate& c : candidates) {
     if (mesh.vertex_removed(c.a) || mesh.vertex_removed(c.b) || am.edge_length(c.a, c.b) >= limits.collapse_length) continue;
     collect_shell(mesh, c.a, c.b, am.workspace().cavity);
     if (am.workspace().cavity.empty()) continue;  // no longer an edge

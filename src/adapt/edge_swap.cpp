@@ -7,6 +7,7 @@
 
 #include "adapt/adaptation_operations.hpp"
 #include "mesh/ball_and_shell.hpp"
+#include "mesh/vertex_graph.hpp"
 
 namespace hocav {
 namespace {
@@ -185,6 +186,21 @@ const char* to_string(Refusal refusal) {
 }
 
 template <int D>
+std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<D>& am, double bound, bool longer) {
+  std::vector<EdgeCandidate> candidates;
+  const VertexGraph graph = vertex_graph(am.mesh());
+  for (Index a = 0; a < graph.vertex_count(); ++a)
+    for (Index b : graph.neighbors_of(a))
+      if (b > a && (am.changed_recently(a) || am.changed_recently(b)))
+        if (const double length = am.edge_length(a, b); longer ? length > bound : length < bound) candidates.push_back({length, a, b});
+  std::sort(candidates.begin(), candidates.end(), [longer](const EdgeCandidate& x, const EdgeCandidate& y) {
+    if (x.length != y.length) return longer ? x.length > y.length : x.length < y.length;
+    return std::pair(x.a, x.b) < std::pair(y.a, y.b);
+  });
+  return candidates;
+}
+
+template <int D>
 std::pair<double, double> length_range_from(const AdaptationMesh<D>& am, Index center, std::span<const typename Mesh<D>::Element> elements) {
   std::pair<double, double> range{std::numeric_limits<double>::infinity(), 0.0};
   for (const auto& element : elements) {
@@ -207,6 +223,8 @@ bool lengths_stay_in_window(const AdaptationMesh<D>& am, Index center, std::pair
 
 template OperationCount swap_for_quality(AdaptationMesh<2>&, const AdaptationLimits&);
 template OperationCount swap_for_quality(AdaptationMesh<3>&, const AdaptationLimits&);
+template std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<2>&, double, bool);
+template std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<3>&, double, bool);
 template std::pair<double, double> length_range_from(const AdaptationMesh<2>&, Index, std::span<const Mesh<2>::Element>);
 template std::pair<double, double> length_range_from(const AdaptationMesh<3>&, Index, std::span<const Mesh<3>::Element>);
 template bool lengths_stay_in_window(const AdaptationMesh<2>&, Index, std::pair<double, double>, std::span<const Mesh<2>::Element>,

@@ -25,6 +25,15 @@ double element_measure(const Mesh<D>& mesh, Index k) {
     return signed_measure(mesh.vertex(e[0]), mesh.vertex(e[1]), mesh.vertex(e[2]), mesh.vertex(e[3]));
 }
 
+// The sum of the signed P1 measures of the elements (the domain's area or volume when every
+// element is positive).
+template <int D>
+double total_measure(const Mesh<D>& mesh) {
+  double sum = 0;
+  for (Index k = 0; k < mesh.element_count(); ++k) sum += element_measure(mesh, k);
+  return sum;
+}
+
 // The length of the diagonal of the vertices' axis-aligned bounding box (0 for no vertex).
 template <int D>
 double bounding_box_diagonal(const Mesh<D>& mesh) {

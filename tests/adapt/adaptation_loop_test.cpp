@@ -9,33 +9,12 @@
 #include <map>
 
 #include "adapt/adaptation_mesh.hpp"
-#include "cases/structured.hpp"
-#include "mesh/consistency.hpp"
+#include "adapt_test_support.hpp"
 #include "mesh/measure.hpp"
 #include "report/mesh_statistics.hpp"
 
 namespace hocav {
 namespace {
-
-template <int D>
-Mesh<D> unit_mesh(int n) {
-  if constexpr (D == 2) return generate_square(n);
-  else return generate_cube(n);
-}
-
-template <int D>
-void expect_consistent(const Mesh<D>& mesh) {
-  ConsistencyOptions options;
-  options.require_boundary_facets = true;
-  ASSERT_EQ(check_consistency(mesh, options), std::vector<std::string>{});
-}
-
-template <int D>
-double total_measure(const Mesh<D>& mesh) {
-  double sum = 0;
-  for (Index k = 0; k < mesh.element_count(); ++k) sum += element_measure(mesh, k);
-  return sum;
-}
 
 // The figures `hocav stats --metric` gives for the mesh in the (clamped) metric of the run.
 template <int D>
@@ -73,7 +52,7 @@ void expect_adapted(Mesh<D>& mesh, const AdaptationMetric<D>& metric, double uni
   const auto corners_before = mesh.corners().size();
   const auto refs_before = boundary_measure_by_ref(mesh);
   const AdaptationRun run = adapt_to_metric<D>(mesh, metric, nullptr, {});
-  expect_consistent(mesh);
+  adapt_test::expect_closed_and_consistent(mesh);
   EXPECT_TRUE(mesh.is_compact());
   EXPECT_TRUE(run.converged);
   EXPECT_NEAR(total_measure(mesh), 1, 1e-9);
@@ -91,13 +70,13 @@ void expect_adapted(Mesh<D>& mesh, const AdaptationMetric<D>& metric, double uni
 }
 
 TEST(AdaptationLoop, SquareInTheLinearMetricBecomesUnit) {
-  Mesh<2> mesh = unit_mesh<2>(10);
+  Mesh<2> mesh = adapt_test::unit_mesh<2>(10);
   expect_adapted<2>(mesh, linear_metric<2>(0.01), 0.95, 0.85, 0.3);
   EXPECT_GT(mesh.element_count(), 500);  // refined toward the layer
 }
 
 TEST(AdaptationLoop, CubeInTheLinearMetricBecomesUnit) {
-  Mesh<3> mesh = unit_mesh<3>(4);
+  Mesh<3> mesh = adapt_test::unit_mesh<3>(4);
   const auto ridges_before = mesh.ridges().size();
   expect_adapted<3>(mesh, linear_metric<3>(0.02), 0.9, 0.75, 0.05);
   EXPECT_GT(mesh.ridges().size(), ridges_before);  // the cube's edges, split along them
@@ -111,7 +90,7 @@ TEST(AdaptationLoop, CubeInTheLinearMetricBecomesUnit) {
 }
 
 TEST(AdaptationLoop, CoarseningAFineMeshInAUniformMetric) {
-  Mesh<3> mesh = unit_mesh<3>(8);
+  Mesh<3> mesh = adapt_test::unit_mesh<3>(8);
   AnalyticMetricSpec spec;
   spec.name = "uniform";
   spec.h = 0.3;
@@ -135,7 +114,7 @@ TEST(AdaptationLoop, SizeBoundsClampTheMetric) {
 // Each pass alone: a split pass leaves no edge longer than the split length among those it could
 // cut, a collapse pass no short interior edge it could remove, and neither breaks the mesh.
 TEST(AdaptationPasses, SplitAndCollapseEachDoWhatTheySay) {
-  Mesh<2> mesh = unit_mesh<2>(6);
+  Mesh<2> mesh = adapt_test::unit_mesh<2>(6);
   AnalyticMetricSpec spec;
   spec.name = "uniform";
   spec.h = 0.05;
@@ -146,7 +125,7 @@ TEST(AdaptationPasses, SplitAndCollapseEachDoWhatTheySay) {
   const OperationCount splits = split_long_edges(am, limits);
   EXPECT_GT(splits.done, 0);
   EXPECT_EQ(mesh.vertex_count(), before + splits.done);
-  expect_consistent(mesh);
+  adapt_test::expect_closed_and_consistent(mesh);
   spec.h = 0.5;
   const AdaptationMetric<2> coarse(spec, {});
   AdaptationMesh<2> coarse_am(mesh, coarse, nullptr, 45);
@@ -154,14 +133,14 @@ TEST(AdaptationPasses, SplitAndCollapseEachDoWhatTheySay) {
   const OperationCount collapses = collapse_short_edges(coarse_am, limits);
   EXPECT_GT(collapses.done, 0);
   EXPECT_EQ(mesh.live_vertex_count(), vertices - collapses.done);
-  expect_consistent(mesh);
+  adapt_test::expect_closed_and_consistent(mesh);
   mesh.compact();
-  expect_consistent(mesh);
+  adapt_test::expect_closed_and_consistent(mesh);
   EXPECT_NEAR(total_measure(mesh), 1, 1e-12);
 }
 
 TEST(AdaptationPasses, SwapsAndSmoothingRaiseTheWorstQuality) {
-  Mesh<3> mesh = unit_mesh<3>(3);
+  Mesh<3> mesh = adapt_test::unit_mesh<3>(3);
   AnalyticMetricSpec spec;
   spec.name = "linear";
   spec.h_min = 0.05;
@@ -180,7 +159,7 @@ TEST(AdaptationPasses, SwapsAndSmoothingRaiseTheWorstQuality) {
   const OperationCount moves = smooth_vertices(am, limits);
   EXPECT_GT(swaps.done + moves.done, 0);
   EXPECT_GE(worst(), before);  // neither ever lowers the worst element of what it changes
-  expect_consistent(mesh);
+  adapt_test::expect_closed_and_consistent(mesh);
   EXPECT_NEAR(total_measure(mesh), 1, 1e-9);
 }
 

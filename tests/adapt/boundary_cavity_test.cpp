@@ -7,10 +7,9 @@
 #include <random>
 
 #include "adapt/boundary_pieces.hpp"
-#include "cases/structured.hpp"
+#include "adapt_test_support.hpp"
 #include "cavity/cavity_operations.hpp"
 #include "mesh/ball_and_shell.hpp"
-#include "mesh/consistency.hpp"
 #include "mesh/measure.hpp"
 
 namespace hocav {
@@ -21,19 +20,6 @@ constexpr int kOperations = 3000;
 #else
 constexpr int kOperations = 30000;
 #endif
-
-template <int D>
-Mesh<D> unit_mesh(int n) {
-  if constexpr (D == 2) return generate_square(n);
-  else return generate_cube(n);
-}
-
-template <int D>
-double total_measure(const Mesh<D>& mesh) {
-  double sum = 0;
-  for (Index k = 0; k < mesh.element_count(); ++k) sum += element_measure(mesh, k);
-  return sum;
-}
 
 template <int D>
 double boundary_measure(const Mesh<D>& mesh) {
@@ -53,13 +39,6 @@ Vec<D> unit_normal(const Mesh<D>& mesh, const typename Mesh<D>::Facet& v) {
   if constexpr (D == 2) n = Vec2{mesh.vertex(v[1])[1] - mesh.vertex(v[0])[1], mesh.vertex(v[0])[0] - mesh.vertex(v[1])[0]};
   else n = cross(mesh.vertex(v[1]) - mesh.vertex(v[0]), mesh.vertex(v[2]) - mesh.vertex(v[0]));
   return (1 / norm(n)) * n;
-}
-
-template <int D>
-void expect_consistent(const Mesh<D>& mesh) {
-  ConsistencyOptions options;
-  options.require_boundary_facets = true;
-  ASSERT_EQ(check_consistency(mesh, options), std::vector<std::string>{});
 }
 
 // The lines (3D) through both a and b.
@@ -90,12 +69,12 @@ CavityStatus split_boundary_edge(Mesh<D>& mesh, CavityWorkspace<D>& work, Index 
 }
 
 TEST(BoundaryCavity, SplitOfABoundaryEdgeSplitsItsFacets2D) {
-  Mesh<2> mesh = unit_mesh<2>(3);
+  Mesh<2> mesh = adapt_test::unit_mesh<2>(3);
   CavityWorkspace<2> work;
   const Index facets = mesh.facet_count();
   const auto [a, b] = mesh.facet(0);
   ASSERT_EQ(split_boundary_edge(mesh, work, a, b), CavityStatus::kAccepted);
-  expect_consistent(mesh);
+  adapt_test::expect_closed_and_consistent(mesh);
   EXPECT_EQ(mesh.facet_count() - facets, 2);  // one removed (waiting for compaction), two new
   mesh.compact();
   EXPECT_EQ(mesh.facet_count(), facets + 1);
@@ -104,13 +83,13 @@ TEST(BoundaryCavity, SplitOfABoundaryEdgeSplitsItsFacets2D) {
 }
 
 TEST(BoundaryCavity, SplitOfARidgeEdgeSplitsItsLineAndBothFacets3D) {
-  Mesh<3> mesh = unit_mesh<3>(2);
+  Mesh<3> mesh = adapt_test::unit_mesh<3>(2);
   CavityWorkspace<3> work;
   const Index line = mesh.ridges().front();
   const auto [a, b] = mesh.line(line);
   const Index lines = mesh.line_count(), facets = mesh.facet_count(), ridges = static_cast<Index>(mesh.ridges().size());
   ASSERT_EQ(split_boundary_edge(mesh, work, a, b), CavityStatus::kAccepted);
-  expect_consistent(mesh);
+  adapt_test::expect_closed_and_consistent(mesh);
   mesh.compact();
   EXPECT_EQ(mesh.line_count(), lines + 1);
   EXPECT_EQ(static_cast<Index>(mesh.ridges().size()), ridges + 1);  // both halves are ridges
@@ -120,7 +99,7 @@ TEST(BoundaryCavity, SplitOfARidgeEdgeSplitsItsLineAndBothFacets3D) {
 }
 
 TEST(BoundaryCavity, CollapseOfASurfaceVertexAlongItsSurface3D) {
-  Mesh<3> mesh = unit_mesh<3>(2);
+  Mesh<3> mesh = adapt_test::unit_mesh<3>(2);
   // The vertex at the centre of the face z = 0, collapsed onto a neighbour on that face.
   Index center = kNoIndex, neighbor = kNoIndex;
   for (Index v = 0; v < mesh.vertex_count(); ++v)
@@ -139,7 +118,7 @@ TEST(BoundaryCavity, CollapseOfASurfaceVertexAlongItsSurface3D) {
   options.removed_facets = facets;
   ASSERT_EQ(work.cavity_operator.plan(mesh, work.cavity, neighbor, options), CavityStatus::kAccepted);
   work.cavity_operator.commit(mesh);
-  expect_consistent(mesh);
+  adapt_test::expect_closed_and_consistent(mesh);
   EXPECT_TRUE(mesh.vertex_removed(center));
   const Index vertices = mesh.vertex_count();
   mesh.compact();
@@ -150,11 +129,11 @@ TEST(BoundaryCavity, CollapseOfASurfaceVertexAlongItsSurface3D) {
   EXPECT_EQ(mesh.facet_count(), facets_before - 2);
   EXPECT_NEAR(boundary_measure(mesh), 6, 1e-12);
   EXPECT_NEAR(total_measure(mesh), 1, 1e-12);
-  expect_consistent(mesh);
+  adapt_test::expect_closed_and_consistent(mesh);
 }
 
 TEST(BoundaryCavity, ABoundaryCollapseWithoutItsFacetsIsRefused) {
-  Mesh<3> mesh = unit_mesh<3>(2);
+  Mesh<3> mesh = adapt_test::unit_mesh<3>(2);
   Index center = kNoIndex, neighbor = kNoIndex;
   for (Index v = 0; v < mesh.vertex_count(); ++v) {
     if (norm(mesh.vertex(v) - Vec3{0.5, 0.5, 0}) < 1e-12) center = v;
@@ -162,7 +141,7 @@ TEST(BoundaryCavity, ABoundaryCollapseWithoutItsFacetsIsRefused) {
   }
   CavityWorkspace<3> work;
   EXPECT_NE(collapse_edge(mesh, work, center, neighbor, {}), CavityStatus::kAccepted);
-  expect_consistent(mesh);
+  adapt_test::expect_closed_and_consistent(mesh);
 }
 
 // Random splits and collapses of boundary and interior edges, the checker run after each accepted
@@ -170,7 +149,7 @@ TEST(BoundaryCavity, ABoundaryCollapseWithoutItsFacetsIsRefused) {
 // coordinates follows it through compaction.
 template <int D>
 void run_random_boundary_operations(unsigned seed) {
-  Mesh<D> mesh = unit_mesh<D>(3);
+  Mesh<D> mesh = adapt_test::unit_mesh<D>(3);
   const int attribute = mesh.add_vertex_attribute(D);
   const auto write_position = [&](Index v) {
     for (int i = 0; i < D; ++i) mesh.vertex_attribute(attribute, v)[static_cast<std::size_t>(i)] = mesh.vertex(v)[i];
@@ -218,14 +197,14 @@ void run_random_boundary_operations(unsigned seed) {
       }
     }
     if (operation % 500 == 0) {
-      expect_consistent(mesh);
+      adapt_test::expect_closed_and_consistent(mesh);
       ASSERT_NEAR(total_measure(mesh), 1, 1e-9) << "after operation " << operation;
       mesh.compact();
       for (Index v = 0; v < mesh.vertex_count(); ++v)
         for (int i = 0; i < D; ++i) ASSERT_EQ(mesh.vertex_attribute(attribute, v)[static_cast<std::size_t>(i)], mesh.vertex(v)[i]);
     }
   }
-  expect_consistent(mesh);
+  adapt_test::expect_closed_and_consistent(mesh);
   EXPECT_GT(accepted[0], kOperations / 20);
   EXPECT_GT(accepted[1], kOperations / 50);
 }

@@ -32,7 +32,6 @@ double measure_tolerance(const ShellParameters& p) {
   return D == 2 ? 2 * std::numbers::pi * h * h / 6 * 1.5 : std::numbers::pi * (p.inner_radius + p.outer_radius) * h * h / 2;
 }
 
-using shell_test::total_measure;
 
 template <int D>
 void expect_valid_shell(const ShellParameters& p) {

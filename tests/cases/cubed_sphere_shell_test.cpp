@@ -13,7 +13,6 @@ namespace hocav {
 namespace {
 
 using shell_test::exact_measure;
-using shell_test::total_measure;
 
 // The distinct vertex radii, ascending (vertices of one layer share their radius to rounding).
 std::vector<double> vertex_radii(const Mesh<3>& mesh) {

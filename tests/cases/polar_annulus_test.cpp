@@ -12,7 +12,6 @@ namespace hocav {
 namespace {
 
 using shell_test::exact_measure;
-using shell_test::total_measure;
 
 TEST(PolarAnnulus, CountsValidityAndLayerRadii) {
   const std::vector<double> radii{0.5, 0.52, 0.6, 1.0};

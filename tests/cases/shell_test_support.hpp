@@ -21,13 +21,6 @@ double exact_measure(double inner_radius, double outer_radius) {
   return (D == 2 ? std::numbers::pi : 4.0 / 3.0 * std::numbers::pi) * (std::pow(outer_radius, D) - std::pow(inner_radius, D));
 }
 
-template <int D>
-double total_measure(const Mesh<D>& mesh) {
-  double total = 0;
-  for (Index k = 0; k < mesh.element_count(); ++k) total += element_measure(mesh, k);
-  return total;
-}
-
 // Consistency with positive elements and a facet on every boundary face; element ref 1; facet refs
 // {1, 2} on the inner and outer wall with their vertices on it (to 1e-12); other vertices strictly
 // inside; facets outward: by the divergence theorem with the field x (divergence D), the flux of x

@@ -20,13 +20,6 @@ constexpr int kOperations = 600000;
 #endif
 
 template <int D>
-double total_measure(const Mesh<D>& mesh) {
-  double sum = 0;
-  for (Index k = 0; k < mesh.element_count(); ++k) sum += element_measure(mesh, k);
-  return sum;
-}
-
-template <int D>
 void expect_consistent(const Mesh<D>& mesh, double measure, int operation) {
   ConsistencyOptions options;
   options.require_boundary_facets = true;
