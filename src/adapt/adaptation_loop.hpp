@@ -23,6 +23,8 @@ struct AdaptationPass {
   OperationCount collapses, splits, swaps, moves;
   Index vertices = 0, elements = 0;  // after the pass
   double seconds = 0;
+  // Per operator (collapse, swap, split, smoothing) and for the compaction.
+  double seconds_collapse = 0, seconds_swap = 0, seconds_split = 0, seconds_smooth = 0, seconds_compact = 0;
 };
 
 struct AdaptationRun {

@@ -65,11 +65,13 @@ OperationCount collapse_short_edges(AdaptationMesh<D>& mesh, const AdaptationLim
 
 // Collapses `removed` onto `kept` (an edge) when the classes, the cavity operator and the tests
 // of collapse_short_edges allow it.
+template <int D>
 struct CollapseScratch {
   std::vector<Index> facets, lines;
+  std::vector<typename Mesh<D>::Element> star;
 };
 template <int D>
-Refusal collapse_edge(AdaptationMesh<D>& mesh, Index removed, Index kept, const AdaptationLimits& limits, CollapseScratch& scratch);
+Refusal collapse_edge(AdaptationMesh<D>& mesh, Index removed, Index kept, const AdaptationLimits& limits, CollapseScratch<D>& scratch);
 
 // Swaps that raise the worst quality of their cavity: 2D edge flips; 3D edge-shell swaps n → 2n − 4
 // (the shell re-starred from its best vertex) and face swaps 2 → 3, around elements of quality below 0.5.

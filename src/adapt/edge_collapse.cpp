@@ -2,6 +2,8 @@
 // kept one. A vertex collapses only onto one of its class or higher (a surface vertex along its
 // surface, a ridge vertex along its line, corners never), its facets and lines re-starred with it.
 #include <algorithm>
+#include <limits>
+#include <span>
 
 #include "adapt/adaptation_operations.hpp"
 #include "adapt/boundary_pieces.hpp"
@@ -13,7 +15,7 @@ namespace {
 // The boundary pieces around `removed` that the collapse onto `kept` re-stars; false when the
 // classes forbid it.
 template <int D>
-bool boundary_around(AdaptationMesh<D>& am, Index removed, Index kept, CollapseScratch& s) {
+bool boundary_around(AdaptationMesh<D>& am, Index removed, Index kept, CollapseScratch<D>& s) {
   const VertexClass from = am.vertex_class(removed), to = am.vertex_class(kept);
   if (from == VertexClass::kCorner || from > to) return false;
   const Index center[1] = {removed};
@@ -36,31 +38,54 @@ bool boundary_around(AdaptationMesh<D>& am, Index removed, Index kept, CollapseS
   return true;
 }
 
+// The elements the collapse makes: those of the ball without `kept`, `removed` moved onto it (the
+// star of the ball from `kept`, which the cavity operator then plans): the length and quality tests
+// run on them before the plan, which most refusals then skip.
+template <int D>
+void predicted_collapse(const Mesh<D>& mesh, std::span<const Index> ball, Index removed, Index kept,
+                        std::vector<typename Mesh<D>::Element>& star) {
+  star.clear();
+  for (Index k : ball) {
+    auto element = mesh.element(k);
+    if (std::find(element.begin(), element.end(), kept) != element.end()) continue;
+    std::replace(element.begin(), element.end(), removed, kept);
+    star.push_back(element);
+  }
+}
+
 // No edge from the kept vertex longer than the split threshold: a collapse must not make work for
 // the next split.
 template <int D>
-bool new_edges_short(const AdaptationMesh<D>& am, Index kept, const CavityOperator<D>& plan, double longest) {
-  for (const auto& element : plan.new_elements())
+bool new_edges_short(const AdaptationMesh<D>& am, Index kept, std::span<const typename Mesh<D>::Element> star, double longest) {
+  for (const auto& element : star)
     for (Index w : element)
       if (w != kept && am.edge_length(kept, w) > longest) return false;
   return true;
 }
 
+template <int D>
+double worst_of(const AdaptationMesh<D>& am, std::span<const typename Mesh<D>::Element> elements) {
+  double worst = std::numeric_limits<double>::infinity();
+  for (const auto& element : elements) worst = std::min(worst, am.quality(element));
+  return worst;
+}
+
 }  // namespace
 
 template <int D>
-Refusal collapse_edge(AdaptationMesh<D>& am, Index removed, Index kept, const AdaptationLimits& limits, CollapseScratch& s) {
+Refusal collapse_edge(AdaptationMesh<D>& am, Index removed, Index kept, const AdaptationLimits& limits, CollapseScratch<D>& s) {
   Mesh<D>& mesh = am.mesh();
   auto& work = am.workspace();
   collect_ball(mesh, removed, work.cavity);
   if (!boundary_around(am, removed, kept, s)) return Refusal::kClasses;
+  predicted_collapse(mesh, work.cavity, removed, kept, s.star);
+  if (!new_edges_short<D>(am, kept, s.star, limits.split_length)) return Refusal::kLength;
+  if (!(worst_of<D>(am, s.star) >= std::min(0.3 * worst_quality<D>(am, work.cavity), 0.1))) return Refusal::kQuality;
   CavityOptions options;
   options.removable_vertex = removed;
   options.removed_facets = s.facets;
   options.removed_lines = s.lines;
   if (work.cavity_operator.plan(mesh, work.cavity, kept, options) != CavityStatus::kAccepted) return Refusal::kTopology;
-  if (!(worst_planned_quality(am, work.cavity_operator) >= std::min(0.3 * worst_quality<D>(am, work.cavity), 0.1))) return Refusal::kQuality;
-  if (!new_edges_short(am, kept, work.cavity_operator, limits.split_length)) return Refusal::kLength;
   if (!s.facets.empty() && !boundary_change_acceptable(am, work.cavity_operator, limits.cos_feature_angle, limits.hausd))
     return Refusal::kGeometry;
   am.commit(work.cavity_operator);
@@ -72,7 +97,7 @@ template <int D>
 OperationCount collapse_short_edges(AdaptationMesh<D>& am, const AdaptationLimits& limits) {
   const std::vector<EdgeCandidate> candidates = edges_beyond(am, limits.collapse_length, false);
   OperationCount count;
-  CollapseScratch scratch;
+  CollapseScratch<D> scratch;
   const Mesh<D>& mesh = am.mesh();
   for (const EdgeCandidate& c : candidates) {
     if (mesh.vertex_removed(c.a) || mesh.vertex_removed(c.b) || am.edge_length(c.a, c.b) >= limits.collapse_length) continue;
@@ -85,8 +110,8 @@ OperationCount collapse_short_edges(AdaptationMesh<D>& am, const AdaptationLimit
   return count;
 }
 
-template Refusal collapse_edge(AdaptationMesh<2>&, Index, Index, const AdaptationLimits&, CollapseScratch&);
-template Refusal collapse_edge(AdaptationMesh<3>&, Index, Index, const AdaptationLimits&, CollapseScratch&);
+template Refusal collapse_edge(AdaptationMesh<2>&, Index, Index, const AdaptationLimits&, CollapseScratch<2>&);
+template Refusal collapse_edge(AdaptationMesh<3>&, Index, Index, const AdaptationLimits&, CollapseScratch<3>&);
 template OperationCount collapse_short_edges(AdaptationMesh<2>&, const AdaptationLimits&);
 template OperationCount collapse_short_edges(AdaptationMesh<3>&, const AdaptationLimits&);
 

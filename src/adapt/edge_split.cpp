@@ -13,7 +13,7 @@ namespace {
 template <int D>
 struct SplitScratch {
   std::vector<Index> facets, lines, candidate_lines;
-  CollapseScratch collapse;
+  CollapseScratch<D> collapse;
 };
 
 // After a split: the new vertex v onto its nearest neighbour, when their edge is short.

@@ -14,7 +14,8 @@ namespace {
 
 // A swap must beat the worst quality it replaces by this factor: no swap undoes another.
 constexpr double kSwapGain = 1.05;
-// Elements below this quality have their edges (and 3D faces) tried.
+// Elements below this quality have their edges (and 3D faces) tried: mmg's optimization threshold in
+// 3D; the cheap 2D flips are tried wider.
 template <int D>
 constexpr double swap_quality() {
   return D == 2 ? 0.9 : 0.7;
@@ -62,7 +63,8 @@ Refusal restar_best(AdaptationMesh<D>& am, SwapScratch<D>& scratch, const Adapta
   for (Index apex : scratch.apexes) {
     predicted_star(am.mesh(), work.cavity, apex, scratch.star);
     double worst = std::numeric_limits<double>::infinity();
-    for (const auto& element : scratch.star) worst = std::min(worst, am.quality(element));
+    for (const auto& element : scratch.star)
+      if (worst = std::min(worst, am.quality(element)); worst <= best) break;  // this apex cannot win
     if (worst > best && lengths_stay_in_window<D>(am, apex, length_range_from<D>(am, apex, scratch.old_elements), scratch.star, limits)) {
       best = worst;
       best_apex = apex;

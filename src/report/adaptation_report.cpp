@@ -35,6 +35,9 @@ void write_adaptation_report_json(std::ostream& out, const AdaptationReport& rep
     write_operation(json, "swaps", pass.swaps);
     write_operation(json, "moves", pass.moves);
     json.member("vertices", pass.vertices).member("elements", pass.elements).member("seconds", pass.seconds);
+    json.key("seconds_per_operator").begin_object();
+    json.member("collapse", pass.seconds_collapse).member("swap", pass.seconds_swap).member("split", pass.seconds_split);
+    json.member("smooth", pass.seconds_smooth).member("compact", pass.seconds_compact).end_object();
     json.end_object();
   }
   json.end_array();
