@@ -11,7 +11,8 @@ be valid for gmsh (minJ/maxJ > 0) and for hocav (`hocav stats` exits 0 and count
 
 The curved meshes are outputs of `hocav curve --surface p3`: the mmg torus in its own metric
 (third-party input), the 2D annulus in a circular shear layer, and the 3D sphere shell in a
-boundary-layer metric from `hocav metric --surface` (graded).
+boundary-layer metric from `hocav metric --surface` (graded); and outputs of `hocav adapt` (adapted,
+then curved): the annulus in the shear-circle metric and the sphere shell in its surface metric.
 Usage: gmsh_jacobian_check_test.py PATH_TO_HOCAV
 """
 import itertools
@@ -56,6 +57,23 @@ def curved_shell(work):
     run("generate", "sphere-shell", "--h", "0.25", "-o", mesh)
     run("metric", mesh, "--surface", "0.03", "0.25", "--gradation", "1.5", "-o", metric)
     run("curve", mesh, "--metric", metric, "--surface", "p3", "-o", os.path.join(work, "curved.meshb"), "-q")
+    return 3
+
+
+def adapted_annulus(work):
+    """`hocav adapt` end to end: the annulus adapted to the shear-circle metric, then curved."""
+    mesh = os.path.join(work, "annulus.meshb")
+    run("generate", "annulus", "--h", "0.1", "-o", mesh)
+    run("adapt", mesh, "--analytic", "shear-circle", "--hmin", "0.01", "-o", os.path.join(work, "curved.meshb"), "-q")
+    return 2
+
+
+def adapted_shell(work):
+    """`hocav adapt` end to end: the sphere shell adapted to its surface metric, then curved."""
+    mesh, metric = os.path.join(work, "shell.meshb"), os.path.join(work, "shell.solb")
+    run("generate", "sphere-shell", "--h", "0.3", "-o", mesh)
+    run("metric", mesh, "--surface", "0.04", "0.3", "--gradation", "1.5", "-o", metric)
+    run("adapt", mesh, "--metric", metric, "-o", os.path.join(work, "curved.meshb"), "-q")
     return 3
 
 
@@ -149,7 +167,8 @@ def check(name, make_curved):
 
 
 def main():
-    cases = [("torus", curved_torus), ("annulus", curved_annulus), ("sphere shell", curved_shell)]
+    cases = [("torus", curved_torus), ("annulus", curved_annulus), ("sphere shell", curved_shell),
+             ("adapted annulus", adapted_annulus), ("adapted sphere shell", adapted_shell)]
     torus = os.path.join(DATA, "torus.mesh")
     if not os.path.exists(torus):
         print(f"SKIPPED the torus case: missing {torus} (../shared/data is not beside the repository)")
