@@ -34,6 +34,19 @@ Vec<D> facet_centroid(const Mesh<D>& mesh, const typename Mesh<D>::Facet& facet)
   return (1.0 / D) * sum;
 }
 
+// A facet with these vertices and ref, replacing one of normal `old_normal`: turned by less than the
+// feature angle, and (with a geometry, hausd > 0) its centroid within hausd of the geometry.
+template <int D>
+bool facet_close(const AdaptationMesh<D>& adaptation, const typename Mesh<D>::Facet& vertices, int ref, const Vec<D>& old_normal,
+                 double cos_feature_angle, double hausd) {
+  const Mesh<D>& mesh = adaptation.mesh();
+  const Vec<D> normal = area_normal<D>(mesh, vertices);
+  if (!(dot(normal, old_normal) > cos_feature_angle * norm(normal) * norm(old_normal))) return false;
+  return !adaptation.geometry() || hausd <= 0 || adaptation.geometry()->project(facet_centroid<D>(mesh, vertices), {ref}).distance <= hausd;
+}
+
+}  // namespace
+
 template <int D>
 Vec<D> area_normal(const Mesh<D>& mesh, const typename Mesh<D>::Facet& f) {
   if constexpr (D == 2) {
@@ -44,24 +57,28 @@ Vec<D> area_normal(const Mesh<D>& mesh, const typename Mesh<D>::Facet& f) {
   }
 }
 
-}  // namespace
-
 template <int D>
 bool boundary_change_acceptable(const AdaptationMesh<D>& adaptation, const CavityOperator<D>& plan, double cos_feature_angle,
                                 double hausd) {
   const Mesh<D>& mesh = adaptation.mesh();
-  for (const auto& facet : plan.new_facets()) {
-    const Vec<D> normal = area_normal<D>(mesh, facet.vertices), old_normal = area_normal<D>(mesh, mesh.facet(facet.replaced));
-    if (!(dot(normal, old_normal) > cos_feature_angle * norm(normal) * norm(old_normal))) return false;
-    if (adaptation.geometry() && hausd > 0 &&
-        adaptation.geometry()->project(facet_centroid<D>(mesh, facet.vertices), {facet.ref}).distance > hausd)
-      return false;
-  }
-  return true;
+  return std::all_of(plan.new_facets().begin(), plan.new_facets().end(), [&](const auto& facet) {
+    return facet_close<D>(adaptation, facet.vertices, facet.ref, area_normal<D>(mesh, mesh.facet(facet.replaced)), cos_feature_angle, hausd);
+  });
+}
+
+template <int D>
+bool facet_stays_close(const AdaptationMesh<D>& adaptation, Index facet, const Vec<D>& old_area_normal, double cos_feature_angle,
+                       double hausd) {
+  const Mesh<D>& mesh = adaptation.mesh();
+  return facet_close<D>(adaptation, mesh.facet(facet), mesh.facet_ref(facet), old_area_normal, cos_feature_angle, hausd);
 }
 
 template void facets_through(const Mesh<2>&, std::span<const Index>, std::span<const Index>, std::vector<Index>&);
 template void facets_through(const Mesh<3>&, std::span<const Index>, std::span<const Index>, std::vector<Index>&);
+template bool facet_stays_close(const AdaptationMesh<2>&, Index, const Vec2&, double, double);
+template bool facet_stays_close(const AdaptationMesh<3>&, Index, const Vec3&, double, double);
+template Vec2 area_normal(const Mesh<2>&, const Mesh<2>::Facet&);
+template Vec3 area_normal(const Mesh<3>&, const Mesh<3>::Facet&);
 template bool boundary_change_acceptable(const AdaptationMesh<2>&, const CavityOperator<2>&, double, double);
 template bool boundary_change_acceptable(const AdaptationMesh<3>&, const CavityOperator<3>&, double, double);
 

@@ -23,4 +23,13 @@ void lines_through(const Mesh<3>& mesh, Index v, std::vector<Index>& out);
 template <int D>
 bool boundary_change_acceptable(const AdaptationMesh<D>& mesh, const CavityOperator<D>& plan, double cos_feature_angle, double hausd);
 
+// The same test for a facet of the mesh whose vertices moved: its normal against the one it had.
+template <int D>
+bool facet_stays_close(const AdaptationMesh<D>& mesh, Index facet, const Vec<D>& old_area_normal, double cos_feature_angle,
+                       double hausd);
+
+// The facet's normal scaled by its measure, outward.
+template <int D>
+Vec<D> area_normal(const Mesh<D>& mesh, const typename Mesh<D>::Facet& facet);
+
 }  // namespace hocav

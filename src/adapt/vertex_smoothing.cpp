@@ -1,11 +1,14 @@
-// Vertex smoothing (docs/adaptation.md §Smoothing): an interior vertex moves toward the mean of the
-// points that would make each of its edges unit (w + (v − w)/l(v, w) for each neighbour w), by the
-// whole step or a half or a quarter of it, when that raises the worst quality of its ball. The ball
-// keeps its topology, so the move is checked by the quality itself: it is positive only for
-// elements of positive measure.
+// Vertex smoothing (docs/adaptation.md §Smoothing): an interior or surface vertex moves toward the
+// mean of the points that would make each of its edges unit (w + (v − w)/l(v, w) for each neighbour
+// w), by the whole step or a half or a quarter of it, when that raises the worst quality of its ball.
+// A surface vertex stays on its surface (projected on the geometry, or kept in the plane of its
+// facets without one) and its facets pass the boundary test of splits and collapses. The ball keeps
+// its topology, so the move is checked by the quality itself: it is positive only for elements of
+// positive measure.
 #include <algorithm>
 
 #include "adapt/adaptation_operations.hpp"
+#include "adapt/boundary_pieces.hpp"
 #include "mesh/ball_and_shell.hpp"
 
 namespace hocav {
@@ -32,9 +35,28 @@ Vec<D> unit_edge_target(const AdaptationMesh<D>& am, Index v, std::span<const In
 
 template <int D>
 struct SmoothingScratch {
-  std::vector<Index> ball;
+  std::vector<Index> ball, facets;
   std::vector<typename Mesh<D>::Element> elements;
+  std::vector<Vec<D>> facet_normals;  // before the move
 };
+
+// Where a surface vertex may go near x: on the geometry of its facets' ref, or (without one) in the
+// plane through its start with the mean normal of its facets.
+template <int D>
+Vec<D> on_surface(const AdaptationMesh<D>& am, const Vec<D>& x, const Vec<D>& start, const SmoothingScratch<D>& scratch) {
+  if (am.geometry()) return am.geometry()->project(x, {am.mesh().facet_ref(scratch.facets.front())}).point;
+  Vec<D> normal{};
+  for (const Vec<D>& n : scratch.facet_normals) normal = normal + n;
+  normal = (1 / norm(normal)) * normal;
+  return x - dot(x - start, normal) * normal;
+}
+
+template <int D>
+bool facets_stay_close(const AdaptationMesh<D>& am, const SmoothingScratch<D>& scratch, const AdaptationLimits& limits) {
+  for (std::size_t i = 0; i < scratch.facets.size(); ++i)
+    if (!facet_stays_close<D>(am, scratch.facets[i], scratch.facet_normals[i], limits.cos_feature_angle, limits.hausd)) return false;
+  return true;
+}
 
 template <int D>
 bool smooth_vertex(AdaptationMesh<D>& am, Index v, SmoothingScratch<D>& scratch, const AdaptationLimits& limits) {
@@ -46,12 +68,22 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, SmoothingScratch<D>& scratch,
   const auto old_lengths = length_range_from<D>(am, v, scratch.elements);
   const Vec<D> start = am.mesh().vertex(v);
   const SymMat<D> start_metric = am.metric(v);
+  const bool on_boundary = am.vertex_class(v) == VertexClass::kSurface;
+  if (on_boundary) {
+    const Index center[1] = {v};
+    facets_through<D>(am.mesh(), ball, center, scratch.facets);
+    if (scratch.facets.empty()) return false;
+    scratch.facet_normals.clear();
+    for (Index f : scratch.facets) scratch.facet_normals.push_back(area_normal<D>(am.mesh(), am.mesh().facet(f)));
+  }
   const double old_worst = worst_quality<D>(am, ball);
   const Vec<D> step = unit_edge_target(am, v, ball) - start;
   for (double fraction : {1.0, 0.5, 0.25}) {
-    am.move_vertex(v, start + fraction * step);
+    const Vec<D> x = start + fraction * step;
+    am.move_vertex(v, on_boundary ? on_surface(am, x, start, scratch) : x);
     if (worst_quality<D>(am, ball) > kSmoothingGain * old_worst &&
-        lengths_stay_in_window<D>(am, v, old_lengths, scratch.elements, limits)) {
+        lengths_stay_in_window<D>(am, v, old_lengths, scratch.elements, limits) &&
+        (!on_boundary || facets_stay_close(am, scratch, limits))) {
       for (const auto& element : scratch.elements)
         for (Index w : element) am.mark_changed(w);
       return true;
@@ -68,7 +100,7 @@ OperationCount smooth_vertices(AdaptationMesh<D>& am, const AdaptationLimits& li
   OperationCount count;
   SmoothingScratch<D> scratch;
   for (Index v = 0; v < am.mesh().vertex_count(); ++v) {
-    if (am.mesh().vertex_removed(v) || am.vertex_class(v) != VertexClass::kInterior || !am.changed_recently(v)) continue;
+    if (am.mesh().vertex_removed(v) || am.vertex_class(v) > VertexClass::kSurface || !am.changed_recently(v)) continue;
     count.add(smooth_vertex(am, v, scratch, limits) ? Refusal::kNone : Refusal::kQuality);
   }
   return count;
