@@ -12,7 +12,7 @@ namespace {
 
 template <int D>
 struct SplitScratch {
-  std::vector<Index> facets, lines, candidate_lines;
+  std::vector<Index> facets, lines, candidate_lines, shell;
   CollapseScratch<D> collapse;
 };
 
@@ -58,6 +58,23 @@ Vec<D> point_on_boundary(const AdaptationMesh<D>& am, const Vec<D>& middle, cons
   return geometry->project(middle, {ref_a}).point;
 }
 
+// Plans the star of the new vertex v: inside the domain on the Delaunay cavity of v in its metric
+// grown from the edge's shell (mmg's insertion: the new vertex joins vertices farther than the
+// shell's, so fewer short edges for the collapses to undo), else on the shell alone.
+template <int D>
+bool plan_split(AdaptationMesh<D>& am, Index v, bool inside, const CavityOptions& options, SplitScratch<D>& s) {
+  auto& work = am.workspace();
+  if (inside) {
+    s.shell.assign(work.cavity.begin(), work.cavity.end());
+    grow_delaunay_cavity(am.mesh(), work.cavity, am.mesh().vertex(v), am.metric(v));
+    if (work.cavity.size() > s.shell.size()) {
+      if (work.cavity_operator.plan(am.mesh(), work.cavity, v, options) == CavityStatus::kAccepted) return true;
+      work.cavity.assign(s.shell.begin(), s.shell.end());
+    }
+  }
+  return work.cavity_operator.plan(am.mesh(), work.cavity, v, options) == CavityStatus::kAccepted;
+}
+
 template <int D>
 Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const AdaptationLimits& limits, SplitScratch<D>& s) {
   Mesh<D>& mesh = am.mesh();
@@ -74,7 +91,7 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const AdaptationLimi
   Refusal refusal = Refusal::kTopology;
   for (int attempt = 0; attempt < (points[0] == points[1] ? 1 : 2); ++attempt) {
     const Index v = am.add_vertex(points[attempt], new_class, a);
-    if (work.cavity_operator.plan(mesh, work.cavity, v, options) != CavityStatus::kAccepted) refusal = Refusal::kTopology;
+    if (!plan_split(am, v, s.facets.empty(), options, s)) refusal = Refusal::kTopology;
     else if (!(worst_planned_quality(am, work.cavity_operator) >= std::min(1e-3, 0.1 * old_worst))) refusal = Refusal::kQuality;
     else if (!s.facets.empty() && !boundary_change_acceptable(am, work.cavity_operator, limits.cos_feature_angle, 0)) refusal = Refusal::kGeometry;
     else {

@@ -49,6 +49,17 @@ bool in_circumsphere(const Mesh<D>& mesh, Index k, const Vec<D>& x, const SymMat
 }  // namespace
 
 template <int D>
+void grow_delaunay_cavity(const Mesh<D>& mesh, std::vector<Index>& cavity, const Vec<D>& x, const SymMat<D>& metric) {
+  for (std::size_t next = 0; next < cavity.size(); ++next)
+    for (int face = 0; face <= D; ++face) {
+      Index n = mesh.neighbor(cavity[next], face);
+      if (n == kNoIndex || std::find(cavity.begin(), cavity.end(), n) != cavity.end()) continue;
+      if (mesh.element_face_facet(cavity[next], face) != kNoIndex) continue;  // stay on one side of surfaces
+      if (in_circumsphere(mesh, n, x, metric)) cavity.push_back(n);
+    }
+}
+
+template <int D>
 CavityStatus reinsert_vertex(Mesh<D>& mesh, CavityWorkspace<D>& work, Index v, const CavityOptions& options) {
   collect_ball(mesh, v, work.cavity);
   return plan_and_commit(mesh, work, v, options);
@@ -85,13 +96,7 @@ CavityStatus insert_vertex(Mesh<D>& mesh, CavityWorkspace<D>& work, const Vec<D>
     k = next;
   }
   work.cavity.assign(1, k);
-  for (std::size_t next = 0; next < work.cavity.size(); ++next)
-    for (int face = 0; face <= D; ++face) {
-      Index n = mesh.neighbor(work.cavity[next], face);
-      if (n == kNoIndex || std::find(work.cavity.begin(), work.cavity.end(), n) != work.cavity.end()) continue;
-      if (mesh.element_face_facet(work.cavity[next], face) != kNoIndex) continue;  // stay on one side of surfaces
-      if (in_circumsphere(mesh, n, x, metric)) work.cavity.push_back(n);
-    }
+  grow_delaunay_cavity(mesh, work.cavity, x, metric);
   Index vertex = mesh.add_vertex(x);
   CavityStatus status = plan_and_commit(mesh, work, vertex, options);
   if (status != CavityStatus::kAccepted) mesh.pop_vertex();
@@ -100,6 +105,7 @@ CavityStatus insert_vertex(Mesh<D>& mesh, CavityWorkspace<D>& work, const Vec<D>
 }
 
 #define HOCAV_INSTANTIATE(D)                                                                                      \
+  template void grow_delaunay_cavity(const Mesh<D>&, std::vector<Index>&, const Vec<D>&, const SymMat<D>&);         \
   template CavityStatus reinsert_vertex(Mesh<D>&, CavityWorkspace<D>&, Index, const CavityOptions&);              \
   template CavityStatus collapse_edge(Mesh<D>&, CavityWorkspace<D>&, Index, Index, CavityOptions);                \
   template CavityStatus swap_edge(Mesh<D>&, CavityWorkspace<D>&, Index, Index, Index, const CavityOptions&);      \

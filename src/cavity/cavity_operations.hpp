@@ -34,6 +34,11 @@ template <int D>
 CavityStatus swap_edge(Mesh<D>& mesh, CavityWorkspace<D>& work, Index a, Index b, Index apex,
                        const CavityOptions& options);
 
+// Grows `cavity` (elements around x) by Bowyer–Watson in the constant metric `metric`: the
+// neighbours, through faces that carry no boundary facet, whose circumsphere in the metric contains x.
+template <int D>
+void grow_delaunay_cavity(const Mesh<D>& mesh, std::vector<Index>& cavity, const Vec<D>& x, const SymMat<D>& metric);
+
 // Inserts a new vertex at x (found from `hint`, an element near x). The cavity holds the elements,
 // connected to the one containing x, whose circumsphere in the constant metric `metric` contains x
 // (Bowyer–Watson in the metric space). Returns the new vertex's id through `inserted`.
