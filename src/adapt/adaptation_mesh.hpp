@@ -1,7 +1,8 @@
 // The mesh an adaptation run changes, with what its operators read at every vertex: the metric
-// (clamped, from the run's AdaptationMetric), the vertex's geometric class, and a back-mesh hint for
-// the next metric evaluation near it. All three are vertex attributes of the mesh, so they follow
-// every insertion, removal and compaction (docs/mesh-model.md).
+// (clamped, from the run's AdaptationMetric), the vertex's geometric class, a back-mesh hint for the
+// next metric evaluation near it, and the pass that last changed its ball. All four are vertex
+// attributes of the mesh, so they follow every insertion, removal and compaction
+// (docs/mesh-model.md).
 #pragma once
 
 #include <array>
@@ -26,9 +27,9 @@ class AdaptationMesh {
  public:
   using Element = typename Mesh<D>::Element;
 
-  // Takes a mesh with its topology and compacts it; classifies its vertices (feature_angle: boundary sides whose
-  // facets' normals differ by more, or whose refs differ, are ridges; 3D ones become feature lines)
-  // and evaluates the metric at every vertex.
+  // Takes a mesh with its topology and compacts it; classifies its vertices (feature_angle:
+  // boundary sides whose facets' normals differ by more, or whose refs differ, are ridges; 3D ones
+  // become feature lines) and evaluates the metric at every vertex.
   AdaptationMesh(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                  double feature_angle_degrees);
 
@@ -54,7 +55,7 @@ class AdaptationMesh {
   void start_pass() { ++pass_; }
   // Commits a plan of the cavity operator and marks the vertices of its new elements changed.
   void commit(CavityOperator<D>& plan);
-  // Marks a vertex (and, for a move, its ball's vertices) changed.
+  // Marks a vertex changed (a move marks its ball's vertices).
   void mark_changed(Index v) { mesh_.vertex_attribute(stamp_attribute_, v)[0] = pass_; }
   bool changed_recently(Index v) const { return mesh_.vertex_attribute(stamp_attribute_, v)[0] >= pass_ - 1; }
   // Swaps, the most tried operation, retry only around what this pass changed (every element in

@@ -191,52 +191,54 @@ CavityStatus CavityOperator<D>::collect_boundary(const Mesh<D>& mesh) {
 }
 
 template <int D>
-CavityStatus CavityOperator<D>::star_surface(const Mesh<D>& mesh, const CavityOptions& options) {
+void CavityOperator<D>::collect_surface_sides(const Mesh<D>& mesh) {
   // The removed facets' own faces (edges in 3D, vertices in 2D), directed by the outward facets,
-  // cancel in pairs inside each facet ref; those left bound the surface cavity and are starred from
-  // the vertex, except those through it and (3D) the removed lines, which the line star replaces.
-  new_facets_.clear();
-  new_lines_.clear();
-  if (removed_facets_.empty()) return CavityStatus::kAccepted;
-  struct SubFace {
-    Index from, to;  // 3D: a directed edge; 2D: the vertex as `from` (tail) or `to` (head)
-    int ref;
-    Index facet;
-  };
-  std::vector<SubFace> sub_faces;
+  // cancel in pairs inside each facet ref; those left bound the surface cavity.
+  surface_sides_.clear();
   for (const BoundaryFace& face : boundary_faces_) {
     if (!face.removed) continue;
     const int ref = mesh.facet_ref(face.facet);
     if constexpr (D == 2) {
-      sub_faces.push_back({face.vertices[0], kNoIndex, ref, face.facet});
-      sub_faces.push_back({kNoIndex, face.vertices[1], ref, face.facet});
+      surface_sides_.push_back({face.vertices[0], kNoIndex, ref, face.facet, false});
+      surface_sides_.push_back({kNoIndex, face.vertices[1], ref, face.facet, false});
     } else {
-      for (int i = 0; i < 3; ++i) sub_faces.push_back({face.vertices[i], face.vertices[(i + 1) % 3], ref, face.facet});
+      for (int i = 0; i < 3; ++i) surface_sides_.push_back({face.vertices[i], face.vertices[(i + 1) % 3], ref, face.facet, false});
     }
   }
-  const auto cancels = [](const SubFace& x, const SubFace& y) {
+  const auto cancels = [](const SurfaceSide& x, const SurfaceSide& y) {
     return x.ref == y.ref && (D == 2 ? (x.from == y.to && x.from != kNoIndex) || (x.to == y.from && x.to != kNoIndex)
                                      : x.from == y.to && x.to == y.from);
   };
-  std::vector<std::uint8_t> cancelled(sub_faces.size(), 0);
-  for (std::size_t i = 0; i < sub_faces.size(); ++i)
-    for (std::size_t j = i + 1; j < sub_faces.size() && !cancelled[i]; ++j)
-      if (!cancelled[j] && cancels(sub_faces[i], sub_faces[j])) cancelled[i] = cancelled[j] = 1;
-  for (std::size_t i = 0; i < sub_faces.size(); ++i) {
-    const SubFace& sub = sub_faces[i];
-    if (cancelled[i] || sub.from == vertex_ || sub.to == vertex_) continue;
+  for (std::size_t i = 0; i < surface_sides_.size(); ++i)
+    for (std::size_t j = i + 1; j < surface_sides_.size() && !surface_sides_[i].cancelled; ++j)
+      if (!surface_sides_[j].cancelled && cancels(surface_sides_[i], surface_sides_[j]))
+        surface_sides_[i].cancelled = surface_sides_[j].cancelled = true;
+}
+
+template <int D>
+CavityStatus CavityOperator<D>::star_surface(const Mesh<D>& mesh, const CavityOptions& options) {
+  // The sides bounding the surface cavity are starred from the vertex, except those through it and
+  // (3D) the removed lines, which the line star replaces.
+  new_facets_.clear();
+  new_lines_.clear();
+  if (removed_facets_.empty()) return CavityStatus::kAccepted;
+  collect_surface_sides(mesh);
+  for (const SurfaceSide& side : surface_sides_) {
+    if (side.cancelled || side.from == vertex_ || side.to == vertex_) continue;
     if constexpr (D == 2) {
-      new_facets_.push_back({sub.from != kNoIndex ? typename Mesh<D>::Facet{sub.from, vertex_} : typename Mesh<D>::Facet{vertex_, sub.to}, sub.ref, sub.facet});
+      const typename Mesh<D>::Facet facet = side.from != kNoIndex ? typename Mesh<D>::Facet{side.from, vertex_}
+                                                                  : typename Mesh<D>::Facet{vertex_, side.to};
+      new_facets_.push_back({facet, side.ref, side.facet});
     } else {
-      if (is_removed_line(mesh, sub.from, sub.to)) continue;
-      new_facets_.push_back({{sub.from, sub.to, vertex_}, sub.ref, sub.facet});
+      if (is_removed_line(mesh, side.from, side.to)) continue;
+      new_facets_.push_back({{side.from, side.to, vertex_}, side.ref, side.facet});
     }
   }
   // Two patches starring their shared side would stack two facets on one face.
-  std::vector<std::uint64_t> keys;
-  for (const NewFacet& facet : new_facets_) keys.push_back(ridge_key<D>(facet.vertices.data(), vertex_));
-  std::sort(keys.begin(), keys.end());
-  if (std::adjacent_find(keys.begin(), keys.end()) != keys.end()) return CavityStatus::kNotStarShaped;
+  scratch_keys_.clear();
+  for (const NewFacet& facet : new_facets_) scratch_keys_.push_back(ridge_key<D>(facet.vertices.data(), vertex_));
+  std::sort(scratch_keys_.begin(), scratch_keys_.end());
+  if (std::adjacent_find(scratch_keys_.begin(), scratch_keys_.end()) != scratch_keys_.end()) return CavityStatus::kNotStarShaped;
   if constexpr (D == 3) star_lines(mesh, options.removed_lines);
   return CavityStatus::kAccepted;
 }

@@ -121,6 +121,13 @@ class CavityOperator {
   bool in_cavity(Index k) const;
   CavityStatus collect_boundary(const Mesh<D>& mesh);
   // Boundary operations: the new facets and lines, starred from the vertex.
+  struct SurfaceSide {
+    Index from, to;  // 3D: a directed edge of a removed facet; 2D: its vertex as `from` (tail) or `to` (head)
+    int ref;
+    Index facet;
+    bool cancelled;  // met twice in its ref: inside the surface cavity
+  };
+  void collect_surface_sides(const Mesh<D>& mesh);
   CavityStatus star_surface(const Mesh<D>& mesh, const CavityOptions& options);
   void star_lines(const Mesh<D>& mesh, std::span<const Index> removed_lines);
   bool is_removed_line(const Mesh<D>& mesh, Index a, Index b) const;
@@ -147,6 +154,8 @@ class CavityOperator {
   std::vector<Index> removed_facets_, removed_lines_;  // sorted
   std::vector<NewFacet> new_facets_;
   std::vector<NewLine> new_lines_;
+  std::vector<SurfaceSide> surface_sides_;
+  std::vector<std::uint64_t> scratch_keys_;
   std::vector<std::uint64_t> boundary_edge_keys_;
   std::vector<Index> boundary_edge_ids_;
   std::vector<KeyedEdge> removed_edges_;   // by increasing id
