@@ -61,7 +61,7 @@ struct CurvingSettings {
   double jacobian_floor = 0.01;
   int passes = 1;
   int threads = 1;
-  bool progress = false;  // "curving: 10%", ... on stderr, for meshes large enough to wait for
+  bool progress = false;  // a progress line on stderr, if a terminal, for meshes large enough to wait for
 };
 
 // The geometry of `--surface`: none (nullptr), p3 (the P3 surrogate of the mesh's boundary) or

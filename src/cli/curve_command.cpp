@@ -28,7 +28,7 @@ void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& optio
   check_memory_fits("curving " + options.input, mesh.element_count(), kCurvingBytesPerElement);
   const MetricField<D> field(mesh, metrics_of_rows<D>(read_metric_for_mesh(options.metric, file, false)));
   CurvingSettings settings = options.settings;
-  settings.progress = !options.quiet;
+  settings.progress = !options.quiet;  // drawn only when stderr is a terminal
   const CurvingReport report = curve_in_metric(mesh, field, settings);
 
   write_mesh_file(options.output, mesh);
