@@ -7,6 +7,7 @@
 
 #include "base/error.hpp"
 #include "bench/bench_run.hpp"
+#include "cli/command_support.hpp"
 #include "cli/commands.hpp"
 #include "io/atomic_output.hpp"
 #include "io/output_set.hpp"
@@ -16,7 +17,7 @@ namespace {
 
 struct BenchOptions {
   std::vector<std::string> cases, sizes{"100k"};
-  std::vector<int> threads{1};
+  std::vector<int> threads{every_core()};
   int repeat = 3;
   std::string markdown, json;
 };
@@ -92,7 +93,7 @@ void add_bench_command(CLI::App& app) {
   command->add_option("--sizes", options->sizes, "element counts to aim at, comma-separated: 100k, 1M, 5M, 20M, ...")
       ->delimiter(',')
       ->capture_default_str();
-  command->add_option("--threads", options->threads, "thread counts to run each case with, comma-separated")
+  command->add_option("--threads", options->threads, "thread counts to run each case with, comma-separated (default: every core)")
       ->delimiter(',')
       ->check(CLI::Range(1, 256))
       ->capture_default_str();

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "adapt/curving_run.hpp"
 #include "base/error.hpp"
 #include "bezier/mesh_quality.hpp"
+#include "cli/progress_line.hpp"
 #include "geom/sym_functions.hpp"
 #include "mesh/consistency.hpp"
 #include "mesh/mesh_defects.hpp"
@@ -112,6 +114,9 @@ std::vector<VtuField> jacobian_cell_fields(const Mesh<D>& mesh) {
 
 namespace {
 
+// Curving meshes this large takes long enough to show its progress.
+constexpr Index kProgressVertices = 20000;
+
 // The metric at every output node (vertices, then P2 nodes from the back mesh), for the .vtu.
 template <int D>
 SolutionField metric_at_nodes(const Mesh<D>& mesh, const MetricField<D>& field) {
@@ -152,12 +157,14 @@ CurvingReport curve_in_metric(Mesh<D>& mesh, const MetricField<D>& field, const 
   reinsertion.threads = settings.threads;
   const QuadratureRule rule = quadrature_rule_named(settings.quadrature);
   reinsertion.cavity.optimizer.rule = &rule;
-  int reported = 0;
-  if (settings.progress && mesh.vertex_count() > 20000)
-    reinsertion.progress = [&](double fraction) {
-      for (; reported < static_cast<int>(10 * fraction); ++reported) std::cerr << "curving: " << 10 * (reported + 1) << "%\n";
-    };
+  std::optional<ProgressLine> progress;
+  if (settings.progress && stderr_is_terminal() && mesh.vertex_count() > kProgressVertices) {
+    const double total = static_cast<double>(volume_vertices(mesh).size()) * settings.passes;
+    progress.emplace(std::cerr, "curving", "vertices", total);
+    reinsertion.progress = [&progress, total](double fraction) { progress->update(fraction * total); };
+  }
   CurvingReport report = curve_with_boundary<D>(mesh, field, geometry.get(), reinsertion).report;
+  if (progress) progress->complete();  // the last few vertices are not reported
 
   ConsistencyOptions consistency;
   consistency.require_positive_orientation = false;

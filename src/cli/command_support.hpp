@@ -3,8 +3,10 @@
 // `hocav curve` and its .vtu (also run by `hocav demo`), and a one-line mesh summary.
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "geom/sym_mat.hpp"
@@ -16,6 +18,9 @@
 #include "surface/boundary_geometry.hpp"
 
 namespace hocav {
+
+// The default of --threads: every core the machine has.
+inline int every_core() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
 
 inline int dimension_of(const AnyMesh& mesh) { return std::holds_alternative<Mesh<2>>(mesh) ? 2 : 3; }
 
@@ -56,7 +61,7 @@ struct CurvingSettings {
   double jacobian_floor = 0.01;
   int passes = 1;
   int threads = 1;
-  bool progress = false;  // "curving: 10%", ... on stderr, for meshes large enough to wait for
+  bool progress = false;  // a progress line on stderr, if a terminal, for meshes large enough to wait for
 };
 
 // The geometry of `--surface`: none (nullptr), p3 (the P3 surrogate of the mesh's boundary) or

@@ -91,7 +91,8 @@ void add_convert_command(CLI::App& app) {
   command->add_option("--metric-out", options->metric_output,
                       "where to write the metric (default: OUT with extension .sol, .solb for a .meshb OUT; "
                       "none for a .vtu OUT, which carries the metric as point data)");
-  command->add_option("--order", options->order, "element order of the output: 1 drops the P2 nodes, 2 adds straight ones")
+  command->add_option("--order", options->order,
+                      "element order of the output: 1 drops the P2 nodes, 2 adds straight ones (default: the input's)")
       ->check(CLI::IsMember({1, 2}));
   command->add_option("--meshb-version", options->gamma_version,
                       "version of binary .meshb/.solb output: 1-4 (default: 3, or 4 when counts need 64 bits)")

@@ -28,7 +28,7 @@ void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& optio
   check_memory_fits("curving " + options.input, mesh.element_count(), kCurvingBytesPerElement);
   const MetricField<D> field(mesh, metrics_of_rows<D>(read_metric_for_mesh(options.metric, file, false)));
   CurvingSettings settings = options.settings;
-  settings.progress = !options.quiet;
+  settings.progress = !options.quiet;  // drawn only when stderr is a terminal
   const CurvingReport report = curve_in_metric(mesh, field, settings);
 
   write_mesh_file(options.output, mesh);
@@ -76,8 +76,10 @@ void add_curve_command(CLI::App& app) {
   command->add_option("--passes", options->settings.passes, "reinsertion passes over the volume vertices")
       ->check(CLI::Range(1, 100))
       ->capture_default_str();
+  options->settings.threads = every_core();
   command->add_option("--threads", options->settings.threads,
-                      "threads that prepare independent cavities at once (the output does not depend on it)")
+                      "threads that prepare independent cavities at once (default: every core; the output does not "
+                      "depend on it)")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
   command->add_option("--report", options->report, "write the run's figures (Table-1 columns, counters) as JSON");

@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
   constexpr int kFailure = 2;
   std::signal(SIGXFSZ, SIG_IGN);  // a file-size limit (ulimit -f) is a write error, reported and cleaned up, not a kill
   CLI::App app{"hocav: curved (P2) metric-based mesh adaptation", "hocav"};
-  app.set_version_flag("--version", std::string("hocav ") + HOCAV_VERSION);
+  app.set_version_flag("--version", std::string("hocav ") + HOCAV_VERSION + " (commit " + HOCAV_GIT_COMMIT + ")");
   app.require_subcommand(1);
   hocav::add_convert_command(app);
   hocav::add_stats_command(app);

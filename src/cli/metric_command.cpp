@@ -294,29 +294,29 @@ void add_metric_command(CLI::App& app) {
   command->add_option("--gradation", options->gradation, "grade the metric: sizes grow by at most BETA > 1 per unit length")
       ->check(finite_positive());
 
-  command->add_option("--h", options->h, "analytic uniform: size (0.1)")->check(finite_positive());
+  command->add_option("--h", options->h, "analytic uniform: size (default 0.1)")->check(finite_positive());
   command->add_option("--h-min", options->h_min,
-                      "analytic: smallest size (0.001); hessian: bound on |H| (1e-6 h-max)")
+                      "analytic: smallest size (default 0.001); hessian: bound on |H| (default 1e-6 h-max)")
       ->check(finite_positive());
   command->add_option("--h-max", options->h_max,
-                      "analytic: largest size (0.1); hessian: bound on |H|, surface: initial interior size "
-                      "(both: the bounding-box diagonal)")
+                      "analytic: largest size (default 0.1); hessian: bound on |H|, surface: initial interior size "
+                      "(default for both: the bounding-box diagonal)")
       ->check(finite_positive());
   command->add_option("--axis", options->axis, "analytic linear: the axis the size varies along (x, y, z; default the last)")
       ->check(CLI::IsMember({"x", "y", "z"}));
-  command->add_option("--center", options->center, "analytic linear: the coordinate of the smallest size (0.5)")
+  command->add_option("--center", options->center, "analytic linear: the coordinate of the smallest size (default 0.5)")
       ->check(finite_number());
-  command->add_option("--radius", options->radius, "analytic shear-*, tanh-shock: radius of the layer (0.75)")
+  command->add_option("--radius", options->radius, "analytic shear-*, tanh-shock: radius of the layer (default 0.75)")
       ->check(finite_number());
-  command->add_option("--width", options->width, "analytic shear-*, tanh-shock: width of the layer (0.05)")
+  command->add_option("--width", options->width, "analytic shear-*, tanh-shock: width of the layer (default 0.05)")
       ->check(finite_positive());
-  command->add_option("--origin", options->origin, "analytic shear-*, tanh-shock: centre X,Y[,Z] of the layer (0)")
+  command->add_option("--origin", options->origin, "analytic shear-*, tanh-shock: centre X,Y[,Z] of the layer (default 0)")
       ->delimiter(',')
       ->expected(2, 3)
       ->check(finite_number());
   command->add_option("--complexity", options->complexity, "hessian: target complexity N (about the vertex count)")
       ->check(finite_positive());
-  command->add_option("--norm", options->norm, "hessian: the p of the Lp norm of the error (2)")->check(finite_positive());
+  command->add_option("--norm", options->norm, "hessian: the p of the Lp norm of the error (default 2)")->check(finite_positive());
   command->callback([options] { run_metric(*options); });
 }
 

@@ -2,6 +2,8 @@
 // surrogate of their boundary; every element certified, gains positive, the output reads back.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "cli_test_support.hpp"
 
 namespace hocav::cli_test {
@@ -48,6 +50,28 @@ TEST_F(CurveCli, SphereShellInASphericalShearLayerOnTwoThreads) {
   // The thread count changes nothing.
   run_ok("curve shell.meshb --metric shell.solb -o one-thread.meshb -q --threads 1");
   EXPECT_EQ(read("curved.meshb"), read("one-thread.meshb"));
+}
+
+// A mesh large enough to show progress: one line redrawn on a terminal (stderr of `script`'s
+// pseudo-terminal, stdout to a file), nothing in a log or with --quiet.
+TEST_F(CurveCli, ProgressLineOnlyOnATerminal) {
+  run_ok("generate square --h 0.007 -o square.meshb");  // 144 x 144 vertices, 142 x 142 inside
+  run_ok("metric square.meshb --analytic uniform --h 0.007 -o square.solb");
+  auto on_terminal = [this](const std::string& options) {
+    const std::string command = "cd '" + directory_.string() + "' && script -qec \"'" HOCAV_BINARY
+                                "' curve square.meshb --metric square.solb -o curved.meshb " + options +
+                                " > stdout.txt\" /dev/null > terminal.txt";
+    EXPECT_EQ(std::system(command.c_str()), 0) << command;
+    return read("terminal.txt");
+  };
+  const std::string drawn = on_terminal("");
+  EXPECT_NE(drawn.find("\rcurving: 20,164/20,164 vertices (100%), "), std::string::npos) << drawn;
+  EXPECT_NE(drawn.find("/s, 0 s left"), std::string::npos) << drawn;
+  EXPECT_GE(std::count(drawn.begin(), drawn.end(), '\r'), 10);  // redrawn, ...
+  EXPECT_EQ(count_lines(drawn), 1) << drawn;                      // ... on one line
+  EXPECT_NE(read("stdout.txt").find("curved square.meshb"), std::string::npos);
+  EXPECT_EQ(on_terminal("--quiet"), "");
+  EXPECT_EQ(run_ok("curve square.meshb --metric square.solb -o curved.meshb").err, "");
 }
 
 TEST_F(CurveCli, BadInputGivesOneLineAndNoOutput) {
