@@ -6,7 +6,6 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <thread>
 
 #include "base/memory_budget.hpp"
 #include "cli/adaptation_driver.hpp"
@@ -29,7 +28,7 @@ struct AdaptOptions {
   double angle = 45;
   double jacobian_floor = 0.01;
   int iterations = 20;
-  int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  int threads = every_core();
   bool quiet = false;
 };
 

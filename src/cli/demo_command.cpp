@@ -11,7 +11,6 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <thread>
 
 #include "base/error.hpp"
 #include "cases/case_registry.hpp"
@@ -43,7 +42,7 @@ const ColorScale kJacobianColors{0, 1};
 
 struct DemoOptions {
   std::string directory = "out";
-  int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  int threads = every_core();
   double h = 0.25;  // the sphere-shell mesh's edge length and its metric's tangential size
 };
 
