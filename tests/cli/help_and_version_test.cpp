@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <map>
-#include <regex>
 #include <thread>
 
 #include "cli_test_support.hpp"
@@ -124,12 +123,21 @@ TEST_F(HelpCli, ThreadsDefaultToEveryCore) {
 
 // The version `hocav --version` prints is the top entry of CHANGELOG.md, and a commit is named.
 TEST_F(HelpCli, VersionIsTheChangelogsTopEntry) {
+  // Plain string parsing: std::regex trips GCC 12's uninitialized-use warnings in the sanitizer build.
   const std::string changelog = read_text(HOCAV_SOURCE_DIR "/CHANGELOG.md");
-  std::smatch top;
-  ASSERT_TRUE(std::regex_search(changelog, top, std::regex("\n## ([0-9]+\\.[0-9]+\\.[0-9]+)"))) << "no version heading";
-  const std::string version = std::regex_replace(top[1].str(), std::regex("\\."), "\\.");
+  const std::size_t heading = changelog.find("\n## ");
+  ASSERT_NE(heading, std::string::npos) << "no version heading";
+  const std::size_t start = heading + 4, end = changelog.find_first_not_of("0123456789.", start);
+  const std::string version = changelog.substr(start, end - start);
+  ASSERT_EQ(std::count(version.begin(), version.end(), '.'), 2) << "not a version: " << version;
   const std::string printed = run_ok("--version").out;
-  EXPECT_TRUE(std::regex_match(printed, std::regex("hocav " + version + " \\(commit ([0-9a-f]{4,40}|unknown)\\)\n"))) << printed;
+  const std::string prefix = "hocav " + version + " (commit ";
+  ASSERT_EQ(printed.rfind(prefix, 0), 0u) << printed;
+  ASSERT_TRUE(printed.ends_with(")\n")) << printed;
+  const std::string commit = printed.substr(prefix.size(), printed.size() - prefix.size() - 2);
+  EXPECT_TRUE(commit == "unknown" ||
+              (commit.size() >= 4 && commit.size() <= 40 && commit.find_first_not_of("0123456789abcdef") == std::string::npos))
+      << printed;
 }
 
 }  // namespace
