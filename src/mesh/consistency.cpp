@@ -133,7 +133,7 @@ class Checker {
     std::vector<Index> ball;
     for (Index l = 0; l < mesh_.line_count() && !full(); ++l) {
       if (mesh_.line_removed(l)) continue;
-      const auto [a, b] = mesh_.line(l);
+      const Index a = mesh_.line(l)[0], b = mesh_.line(l)[1];  // not a structured binding: the lambda below takes b
       if (a < 0 || a >= mesh_.vertex_count() || b < 0 || b >= mesh_.vertex_count() || mesh_.vertex_removed(a) ||
           mesh_.vertex_removed(b)) {
         report("edge (line) " + id(l) + " has a vertex out of range or removed");
