@@ -65,6 +65,7 @@ TEST_F(MetricCli, StatsOfTheUgawgLinearCaseShowAUnitMeshOfAnisotropyAbout100) {
 // The same mesh's element qualities in its metric, through the JSON: measured mean 0.85, min 0.46,
 // no element below 0.1, and a histogram that counts every element.
 TEST_F(MetricCli, StatsJsonCarriesTheElementQualitiesOfTheUgawgCase) {
+  if (auto missing = hocav::testing_support::missing_shared_data({kUgawgMesh, kUgawgMetric}); !missing.empty()) GTEST_SKIP() << missing;
   const std::string q = "d[\"metric\"][\"quality\"]";
   std::string figures = stats_json("'" + kUgawgMesh + "' --metric '" + kUgawgMetric + "'",
                                    q + "[\"mean\"], " + q + "[\"min\"], " + q + "[\"low_share\"], sum(b[\"count\"] for b in " + q +
