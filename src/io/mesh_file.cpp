@@ -42,6 +42,8 @@ void check_writable_mesh_format(const std::string& path) {
 template <int D>
 void write_mesh_file(const std::string& path, const Mesh<D>& mesh, const MeshWriteOptions& options) {
   check_writable_mesh_format(path);
+  // A removed vertex, facet or line (or a hole in the edge ids) would be written as if it were there.
+  if (!mesh.is_compact()) throw Error("internal error: " + path + ": the mesh holds removed entities; compact it before writing");
   const std::string extension = file_extension(path);
   if (extension == ".mesh") return write_gamma_mesh(path, mesh, false, 2);
   if (extension == ".meshb") return write_gamma_mesh(path, mesh, true, options.gamma_version);
