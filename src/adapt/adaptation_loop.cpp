@@ -20,14 +20,18 @@ auto timed(double& seconds, Step step) {
   return result;
 }
 
+// A swap sweep tries only around what changed since `since`: the first sweep of a pass since the
+// pass began (everything in the first pass), the second since the first began, so that a swap
+// refused once is retried only when its cavity has changed.
 template <int D>
-AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits) {
+AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits, bool first) {
   AdaptationPass pass;
-  am.start_pass();
+  const int pass_start = am.start_pass();
   pass.collapses = timed(pass.seconds_collapse, [&] { return collapse_short_edges(am, limits); });
-  pass.swaps = timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits); });
+  const int first_swaps = am.tick();
+  pass.swaps = timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, first ? 0 : pass_start); });
   pass.splits = timed(pass.seconds_split, [&] { return split_long_edges(am, limits); });
-  pass.swaps += timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits); });
+  pass.swaps += timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, first_swaps); });
   pass.moves = timed(pass.seconds_smooth, [&] { return smooth_vertices(am, limits); });
   timed(pass.seconds_compact, [&] { return am.mesh().compact(); });
   pass.vertices = am.mesh().vertex_count();
@@ -47,7 +51,7 @@ AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, 
   limits.hausd = settings.hausd;
   AdaptationRun run;
   for (int pass = 1; pass <= settings.max_passes && !run.converged; ++pass) {
-    run.passes.push_back(run_pass(am, limits));
+    run.passes.push_back(run_pass(am, limits, pass == 1));
     const AdaptationPass& last = run.passes.back();
     run.converged = last.splits.done + last.collapses.done <= kConvergedChange * last.vertices;
     if (settings.progress) settings.progress(pass, settings.max_passes);

@@ -14,13 +14,15 @@ AdaptationMesh<D>::AdaptationMesh(Mesh<D>& mesh, const AdaptationMetric<D>& metr
   metric_attribute_ = mesh_.add_vertex_attribute(SymMat<D>::kEntryCount);
   class_attribute_ = mesh_.add_vertex_attribute(1);
   hint_attribute_ = mesh_.add_vertex_attribute(1);
-  stamp_attribute_ = mesh_.add_vertex_attribute(1);  // the pass that last changed the vertex's ball
+  stamp_attribute_ = mesh_.add_vertex_attribute(1);  // the clock when the vertex's ball last changed
   const std::vector<VertexClass> classes = classify_vertices(mesh_, feature_angle_degrees);
   for (Index v = 0; v < mesh_.vertex_count(); ++v) {
     mesh_.vertex_attribute(class_attribute_, v)[0] = static_cast<double>(classes[v]);
     mesh_.vertex_attribute(hint_attribute_, v)[0] = kNoIndex;
     evaluate_metric(v, v);
   }
+  quality_attribute_ = mesh_.add_element_attribute(0);
+  for (Index k = 0; k < mesh_.element_count(); ++k) mesh_.set_element_attribute(quality_attribute_, k, quality(mesh_.element(k)));
 }
 
 template <int D>
@@ -28,6 +30,12 @@ void AdaptationMesh<D>::commit(CavityOperator<D>& plan) {
   plan.commit(mesh_);
   for (const auto& element : plan.new_elements())
     for (Index v : element) mark_changed(v);
+  update_qualities(plan.committed_element_ids());
+}
+
+template <int D>
+void AdaptationMesh<D>::update_qualities(std::span<const Index> elements) {
+  for (Index k : elements) mesh_.set_element_attribute(quality_attribute_, k, quality(mesh_.element(k)));
 }
 
 template <int D>
@@ -59,9 +67,10 @@ Index AdaptationMesh<D>::add_vertex(const Vec<D>& x, VertexClass vertex_class, I
 }
 
 template <int D>
-void AdaptationMesh<D>::move_vertex(Index v, const Vec<D>& x) {
+void AdaptationMesh<D>::move_vertex(Index v, const Vec<D>& x, std::span<const Index> ball) {
   mesh_.vertex(v) = x;
   evaluate_metric(v, v);
+  update_qualities(ball);
 }
 
 template <int D>

@@ -1,11 +1,12 @@
 // The mesh an adaptation run changes, with what its operators read at every vertex: the metric
 // (clamped, from the run's AdaptationMetric), the vertex's geometric class, a back-mesh hint for the
-// next metric evaluation near it, and the pass that last changed its ball. All four are vertex
-// attributes of the mesh, so they follow every insertion, removal and compaction
-// (docs/mesh-model.md).
+// next metric evaluation near it, and when its ball last changed. All four are vertex attributes of
+// the mesh, so they follow every insertion, removal and compaction (docs/mesh-model.md); each
+// element's quality is an element attribute.
 #pragma once
 
 #include <array>
+#include <span>
 
 #include "adapt/adaptation_metric.hpp"
 #include "adapt/metric_measures.hpp"
@@ -42,41 +43,51 @@ class AdaptationMesh {
   VertexClass vertex_class(Index v) const { return static_cast<VertexClass>(mesh_.vertex_attribute(class_attribute_, v)[0]); }
   // A new vertex at x with the metric there (evaluated from near vertex `near`).
   Index add_vertex(const Vec<D>& x, VertexClass vertex_class, Index near);
-  // Moves v to x and evaluates its metric there.
-  void move_vertex(Index v, const Vec<D>& x);
+  // Moves v to x and evaluates its metric there; `ball` is v's ball, whose qualities follow.
+  void move_vertex(Index v, const Vec<D>& x, std::span<const Index> ball);
   // Puts v back where it was, with the metric it had there (a refused move).
-  void restore_vertex(Index v, const Vec<D>& x, const SymMat<D>& metric) {
+  void restore_vertex(Index v, const Vec<D>& x, const SymMat<D>& metric, std::span<const Index> ball) {
     mesh_.vertex(v) = x;
     set_metric(v, metric);
+    update_qualities(ball);
   }
 
   // The active set: a pass tries only what changed since the start of the previous pass (the first
-  // pass tries everything), so that late passes cost what they change, not the mesh's size.
-  void start_pass() { ++pass_; }
+  // pass tries everything), so that late passes cost what they change, not the mesh's size. Changes
+  // are stamped with a clock that ticks at every pass and sweep.
+  // Starts a pass; returns the clock at its start.
+  int start_pass() {
+    previous_pass_start_ = pass_start_;
+    return pass_start_ = tick();
+  }
+  // Advances the clock (a sweep that later ones compare against); returns its new value.
+  int tick() { return ++clock_; }
   // Commits a plan of the cavity operator and marks the vertices of its new elements changed.
   void commit(CavityOperator<D>& plan);
   // Marks a vertex changed (a move marks its ball's vertices).
-  void mark_changed(Index v) { mesh_.vertex_attribute(stamp_attribute_, v)[0] = pass_; }
-  bool changed_recently(Index v) const { return mesh_.vertex_attribute(stamp_attribute_, v)[0] >= pass_ - 1; }
-  // Swaps, the most tried operation, retry only around what this pass changed (every element in
-  // the first pass): a swap refused once stays refused until its cavity changes.
-  bool changed_this_pass(Index v) const { return pass_ == 1 || mesh_.vertex_attribute(stamp_attribute_, v)[0] >= pass_; }
+  void mark_changed(Index v) { mesh_.vertex_attribute(stamp_attribute_, v)[0] = clock_; }
+  bool changed_recently(Index v) const { return changed_since(v, previous_pass_start_); }
+  // Whether v's ball changed at or after `clock` (everything did since clock 0).
+  bool changed_since(Index v, int clock) const { return mesh_.vertex_attribute(stamp_attribute_, v)[0] >= clock; }
 
   double edge_length(Index a, Index b) const {
     return metric_edge_length<D>(mesh_.vertex(a), mesh_.vertex(b), metric(a), metric(b));
   }
+  // The loop's quality (metric_measures.hpp) of any element, and of mesh element k: kept per
+  // element (the most read figure of the loop), renewed by every commit and move.
   double quality(const Element& element) const;
-  double quality(Index k) const { return quality(mesh_.element(k)); }
+  double quality(Index k) const { return mesh_.element_attribute(quality_attribute_, k); }
 
  private:
   void set_metric(Index v, const SymMat<D>& metric);
   void evaluate_metric(Index v, Index near);
+  void update_qualities(std::span<const Index> elements);
 
   Mesh<D>& mesh_;
   const AdaptationMetric<D>& metric_;
   const BoundaryGeometry<D>* geometry_;
-  int metric_attribute_, class_attribute_, hint_attribute_, stamp_attribute_;
-  int pass_ = 0;
+  int metric_attribute_, class_attribute_, hint_attribute_, stamp_attribute_, quality_attribute_;
+  int clock_ = 0, pass_start_ = 0, previous_pass_start_ = 0;
   CavityWorkspace<D> work_;
 };
 

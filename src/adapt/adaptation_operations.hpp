@@ -74,9 +74,10 @@ template <int D>
 Refusal collapse_edge(AdaptationMesh<D>& mesh, Index removed, Index kept, const AdaptationLimits& limits, CollapseScratch<D>& scratch);
 
 // Swaps that raise the worst quality of their cavity: 2D edge flips; 3D edge-shell swaps n → 2n − 4
-// (the shell re-starred from its best vertex) and face swaps 2 → 3, around elements of quality below 0.5.
+// (the shell re-starred from its best vertex) and face swaps 2 → 3, around elements of quality below
+// 0.7 (2D: 0.9) with a vertex whose ball changed since clock `since` (AdaptationMesh::changed_since).
 template <int D>
-OperationCount swap_for_quality(AdaptationMesh<D>& mesh, const AdaptationLimits& limits);
+OperationCount swap_for_quality(AdaptationMesh<D>& mesh, const AdaptationLimits& limits, int since);
 
 // Moves interior vertices toward the point where their edges would be unit, when that raises the
 // worst quality of their ball.

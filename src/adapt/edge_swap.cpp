@@ -127,15 +127,15 @@ Refusal swap_face(AdaptationMesh<3>& am, Index a, Index b, Index c, SwapScratch<
 }  // namespace
 
 template <int D>
-OperationCount swap_for_quality(AdaptationMesh<D>& am, const AdaptationLimits& limits) {
-  // Candidates by vertices (element ids move as cavities commit): 2D every edge of an element below
-  // quality 1, 3D the edges and faces of elements below kSwapQuality.
+OperationCount swap_for_quality(AdaptationMesh<D>& am, const AdaptationLimits& limits, int since) {
+  // Candidates by vertices (element ids move as cavities commit): the edges (and 3D faces) of the
+  // elements below swap_quality() around recent changes.
   const Mesh<D>& mesh = am.mesh();
   std::vector<std::array<Index, 2>> edges;
   std::vector<std::array<Index, 3>> faces;
   for (Index k = 0; k < mesh.element_count(); ++k) {
     const auto& e = mesh.element(k);
-    if (std::none_of(e.begin(), e.end(), [&](Index v) { return am.changed_this_pass(v); }) || am.quality(k) >= swap_quality<D>()) continue;
+    if (std::none_of(e.begin(), e.end(), [&](Index v) { return am.changed_since(v, since); }) || am.quality(k) >= swap_quality<D>()) continue;
     for (int i = 0; i <= D; ++i)
       for (int j = 0; j < i; ++j) edges.push_back({std::min(e[i], e[j]), std::max(e[i], e[j])});
     if constexpr (D == 3)
@@ -223,8 +223,8 @@ bool lengths_stay_in_window(const AdaptationMesh<D>& am, Index center, std::pair
   return shortest >= std::min(limits.collapse_length, before.first) && longest <= std::max(limits.split_length, before.second);
 }
 
-template OperationCount swap_for_quality(AdaptationMesh<2>&, const AdaptationLimits&);
-template OperationCount swap_for_quality(AdaptationMesh<3>&, const AdaptationLimits&);
+template OperationCount swap_for_quality(AdaptationMesh<2>&, const AdaptationLimits&, int);
+template OperationCount swap_for_quality(AdaptationMesh<3>&, const AdaptationLimits&, int);
 template std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<2>&, double, bool);
 template std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<3>&, double, bool);
 template std::pair<double, double> length_range_from(const AdaptationMesh<2>&, Index, std::span<const Mesh<2>::Element>);

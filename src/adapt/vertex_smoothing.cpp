@@ -80,7 +80,7 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, SmoothingScratch<D>& scratch,
   const Vec<D> step = unit_edge_target(am, v, ball) - start;
   for (double fraction : {1.0, 0.5, 0.25}) {
     const Vec<D> x = start + fraction * step;
-    am.move_vertex(v, on_boundary ? on_surface(am, x, start, scratch) : x);
+    am.move_vertex(v, on_boundary ? on_surface(am, x, start, scratch) : x, ball);
     if (worst_quality<D>(am, ball) > kSmoothingGain * old_worst &&
         lengths_stay_in_window<D>(am, v, old_lengths, scratch.elements, limits) &&
         (!on_boundary || facets_stay_close(am, scratch, limits))) {
@@ -89,7 +89,7 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, SmoothingScratch<D>& scratch,
       return true;
     }
   }
-  am.restore_vertex(v, start, start_metric);
+  am.restore_vertex(v, start, start_metric, ball);
   return false;
 }
 

@@ -424,16 +424,16 @@ void CavityOperator<D>::commit(Mesh<D>& mesh, std::span<const Point> inner_edge_
   }
 
   // New elements take the cavity's slots first, then new slots.
-  scratch_.assign(new_elements_.size(), kNoIndex);
+  new_element_ids_.assign(new_elements_.size(), kNoIndex);
   for (std::size_t n = 0; n < new_elements_.size(); ++n) {
     if (n < cavity_.size()) {
-      scratch_[n] = cavity_[n];
+      new_element_ids_[n] = cavity_[n];
       mesh.set_element(cavity_[n], new_elements_[n], ref_);
     } else {
-      scratch_[n] = mesh.append_element(new_elements_[n], ref_);
+      new_element_ids_[n] = mesh.append_element(new_elements_[n], ref_);
     }
   }
-  const std::vector<Index>& slot = scratch_;
+  const std::vector<Index>& slot = new_element_ids_;
   for (std::size_t n = 0; n < new_elements_.size(); ++n) {
     const BoundaryFace& face = boundary_faces_[starred_faces_[n]];
     mesh.set_neighbor(slot[n], 0, face.outer_element);

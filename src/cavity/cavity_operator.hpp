@@ -61,8 +61,9 @@ class CavityOperator {
   std::span<const Point> new_inner_edge_start_nodes() const { return start_nodes_; }
   // Per new inner edge: the id of the edge it recreates (a reinsertion), or kNoIndex for a new one.
   std::span<const Index> new_inner_edge_recreated_ids() const { return recreated_ids_; }
-  // After commit: the mesh id of each new inner edge.
+  // After commit: the mesh id of each new inner edge, and of each new element (in new_elements()'s order).
   std::span<const Index> committed_inner_edge_ids() const { return inner_edge_ids_; }
+  std::span<const Index> committed_element_ids() const { return new_element_ids_; }
   // Edges on the cavity's boundary, kept by the commit (P2: their nodes may be replaced), and the
   // id of one of them by its vertices (kNoIndex for an edge not on the cavity's boundary).
   std::span<const Index> boundary_edges() const { return boundary_edge_ids_; }
@@ -164,6 +165,7 @@ class CavityOperator {
   std::vector<std::array<Index, 2>> new_inner_edges_;
   std::vector<Index> recreated_ids_;  // per new inner edge: its old id when it existed (kept), else kNoIndex
   std::vector<Index> inner_edge_ids_;  // per new inner edge: its id once committed
+  std::vector<Index> new_element_ids_;  // per new element: its id once committed
   std::vector<Point> start_nodes_;
   std::vector<Index> scratch_;
 };

@@ -80,7 +80,14 @@ Index Mesh<D>::add_element(const Element& vertices, int ref) {
   Index id = checked_index(elements_.size(), "elements");
   elements_.push_back(vertices);
   element_refs_.push_back(ref);
+  for (ElementAttribute& attribute : element_attributes_) attribute.values.push_back(attribute.initial);
   return id;
+}
+
+template <int D>
+int Mesh<D>::add_element_attribute(double initial) {
+  element_attributes_.push_back({initial, std::vector<double>(elements_.size(), initial)});
+  return static_cast<int>(element_attributes_.size()) - 1;
 }
 
 template <int D>
@@ -323,6 +330,7 @@ template <int D>
 void Mesh<D>::move_element(Index from, Index to) {
   elements_[to] = elements_[from];
   element_refs_[to] = element_refs_[from];
+  for (ElementAttribute& attribute : element_attributes_) attribute.values[to] = attribute.values[from];
   if (!element_edges_.empty()) element_edges_[to] = element_edges_[from];
   adjacency_[to] = adjacency_[from];
   for (int face = 0; face <= D; ++face) {
@@ -344,6 +352,7 @@ template <int D>
 void Mesh<D>::pop_element() {
   elements_.pop_back();
   element_refs_.pop_back();
+  for (ElementAttribute& attribute : element_attributes_) attribute.values.pop_back();
   adjacency_.pop_back();
   faces_with_facet_.pop_back();
   if (!element_edges_.empty()) element_edges_.pop_back();
@@ -515,6 +524,7 @@ std::size_t Mesh<D>::memory_bytes() const {
          [&] {
            std::size_t total = 0;
            for (const auto& rows : attributes_) total += bytes(rows);
+           for (const auto& attribute : element_attributes_) total += bytes(attribute.values);
            return total;
          }();
 }

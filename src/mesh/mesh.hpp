@@ -11,7 +11,7 @@
 // lines by marking them removed (their ids stay valid and unused until compact()), so ids held by a
 // pass stay stable while it runs; compact() renumbers between passes. Vertex attributes (rows of
 // doubles per vertex, e.g. a log-metric) live with the mesh and follow every insertion and
-// compaction.
+// compaction; element attributes (a double per element, e.g. a cached quality) follow every move.
 #pragma once
 
 #include <array>
@@ -71,6 +71,13 @@ class Mesh {
   int element_ref(Index k) const { return element_refs_[k]; }
   std::span<const Element> elements() const { return elements_; }
   Index add_element(const Element& vertices, int ref = 0);
+
+  // ---- element attributes: one double per element that follows the element through every move;
+  // a slot that gets a new element (add, or set_element in a cavity's commit) starts again at the
+  // attribute's initial value ----
+  int add_element_attribute(double initial);
+  double element_attribute(int attribute, Index k) const { return element_attributes_[attribute].values[k]; }
+  void set_element_attribute(int attribute, Index k, double value) { element_attributes_[attribute].values[k] = value; }
 
   // ---- boundary facets (edges in 2D, triangles in 3D) ----
   Index facet_count() const { return static_cast<Index>(facets_.size()); }
@@ -154,6 +161,7 @@ class Mesh {
   void set_element(Index k, const Element& vertices, int ref) {
     elements_[k] = vertices;
     element_refs_[k] = ref;
+    for (ElementAttribute& attribute : element_attributes_) attribute.values[k] = attribute.initial;
   }
 
   // Drops removed vertices, facets and lines and renumbers what remains in its order (elements are
@@ -228,6 +236,11 @@ class Mesh {
   Index removed_vertex_count_ = 0, removed_facet_count_ = 0, removed_line_count_ = 0;
   std::vector<int> attribute_widths_;
   std::vector<std::vector<double>> attributes_;
+  struct ElementAttribute {
+    double initial;
+    std::vector<double> values;
+  };
+  std::vector<ElementAttribute> element_attributes_;
 
   int order_ = 1;
   std::vector<Line> edge_vertices_;

@@ -139,6 +139,39 @@ TEST(AdaptationPasses, SplitAndCollapseEachDoWhatTheySay) {
   EXPECT_NEAR(total_measure(mesh), 1, 1e-12);
 }
 
+// The quality AdaptationMesh keeps per element is the one evaluated afresh, after every operator.
+template <int D>
+void expect_kept_qualities_current(const AdaptationMesh<D>& am) {
+  for (Index k = 0; k < am.mesh().element_count(); ++k) ASSERT_EQ(am.quality(k), am.quality(am.mesh().element(k))) << "element " << k;
+}
+
+TEST(AdaptationPasses, KeptQualitiesFollowEveryOperation) {
+  Mesh<3> mesh = adapt_test::unit_mesh<3>(4);
+  AnalyticMetricSpec spec;
+  spec.name = "linear";
+  spec.h_min = 0.05;
+  const AdaptationMetric<3> metric(spec, {});
+  AdaptationMesh<3> am(mesh, metric, nullptr, 45);
+  const AdaptationLimits limits;
+  expect_kept_qualities_current(am);
+  EXPECT_GT(split_long_edges(am, limits).done, 0);
+  expect_kept_qualities_current(am);
+  EXPECT_GT(swap_for_quality(am, limits, 0).done, 0);
+  expect_kept_qualities_current(am);
+  EXPECT_GT(smooth_vertices(am, limits).done, 0);
+  expect_kept_qualities_current(am);
+  mesh.compact();
+  expect_kept_qualities_current(am);
+  spec.name = "uniform";
+  spec.h = 0.5;
+  const AdaptationMetric<3> coarse(spec, {});
+  AdaptationMesh<3> coarse_am(mesh, coarse, nullptr, 45);
+  EXPECT_GT(collapse_short_edges(coarse_am, limits).done, 0);
+  expect_kept_qualities_current(coarse_am);
+  mesh.compact();
+  expect_kept_qualities_current(coarse_am);
+}
+
 TEST(AdaptationPasses, SwapsAndSmoothingRaiseTheWorstQuality) {
   Mesh<3> mesh = adapt_test::unit_mesh<3>(3);
   AnalyticMetricSpec spec;
@@ -155,7 +188,7 @@ TEST(AdaptationPasses, SwapsAndSmoothingRaiseTheWorstQuality) {
   split_long_edges(am, limits);
   mesh.compact();
   const double before = worst();
-  const OperationCount swaps = swap_for_quality(am, limits);
+  const OperationCount swaps = swap_for_quality(am, limits, 0);
   const OperationCount moves = smooth_vertices(am, limits);
   EXPECT_GT(swaps.done + moves.done, 0);
   EXPECT_GE(worst(), before);  // neither ever lowers the worst element of what it changes
