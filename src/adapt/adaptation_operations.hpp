@@ -94,16 +94,18 @@ struct EdgeCandidate {
 template <int D>
 std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<D>& mesh, double bound, bool longer);
 
-// The range of the lengths of the edges from `center` in these elements (vertex lists).
+// The vertices of these elements (vertex lists) other than `center`, once each.
 template <int D>
-std::pair<double, double> length_range_from(const AdaptationMesh<D>& mesh, Index center, std::span<const typename Mesh<D>::Element> elements);
+void neighbors_in(std::span<const typename Mesh<D>::Element> elements, Index center, std::vector<Index>& out);
 
-// Whether the edges from `center` in `after` keep within the unit window [collapse, split] widened to
-// what `before` had: an operation may not create work for the next split or collapse (refine's
-// closing window, kept local).
+// The range of the lengths of the edges from `center` to these vertices.
 template <int D>
-bool lengths_stay_in_window(const AdaptationMesh<D>& mesh, Index center, std::pair<double, double> before,
-                            std::span<const typename Mesh<D>::Element> after, const AdaptationLimits& limits);
+std::pair<double, double> length_range(const AdaptationMesh<D>& mesh, Index center, std::span<const Index> neighbors);
+
+// Whether lengths in range `after` keep within the unit window [collapse, split] widened to what
+// `before` had: an operation may not create work for the next split or collapse (refine's closing
+// window, kept local).
+bool lengths_stay_in_window(std::pair<double, double> before, std::pair<double, double> after, const AdaptationLimits& limits);
 
 // The worst quality of these elements (+inf for none), and of the elements a plan would create.
 template <int D>

@@ -23,9 +23,18 @@ constexpr double swap_quality() {
 
 template <int D>
 struct SwapScratch {
-  std::vector<Index> apexes;
+  std::vector<Index> apexes, neighbors;
   std::vector<typename Mesh<D>::Element> old_elements, star;
 };
+
+// Whether the apex's edges in the star keep within the length window of its edges in the cavity.
+template <int D>
+bool apex_lengths_stay_in_window(const AdaptationMesh<D>& am, Index apex, SwapScratch<D>& scratch, const AdaptationLimits& limits) {
+  neighbors_in<D>(scratch.old_elements, apex, scratch.neighbors);
+  const auto before = length_range<D>(am, apex, scratch.neighbors);
+  neighbors_in<D>(scratch.star, apex, scratch.neighbors);
+  return lengths_stay_in_window(before, length_range<D>(am, apex, scratch.neighbors), limits);
+}
 
 // The elements the star of the cavity from `apex` would make (one per boundary face of the cavity
 // not through the apex, as the cavity operator makes them), without planning it: a swap tries
@@ -65,7 +74,7 @@ Refusal restar_best(AdaptationMesh<D>& am, SwapScratch<D>& scratch, const Adapta
     double worst = std::numeric_limits<double>::infinity();
     for (const auto& element : scratch.star)
       if (worst = std::min(worst, am.quality(element)); worst <= best) break;  // this apex cannot win
-    if (worst > best && lengths_stay_in_window<D>(am, apex, length_range_from<D>(am, apex, scratch.old_elements), scratch.star, limits)) {
+    if (worst > best && apex_lengths_stay_in_window(am, apex, scratch, limits)) {
       best = worst;
       best_apex = apex;
     }
@@ -98,29 +107,58 @@ bool shell_is_closed(const Mesh<D>& mesh, std::span<const Index> shell, Index a,
   return true;
 }
 
+// Whether element k (an element id from the sweep's start, perhaps moved or rewritten since)
+// still holds these vertices.
+template <int D, std::size_t N>
+bool still_holds(const Mesh<D>& mesh, Index k, const std::array<Index, N>& vertices) {
+  return k < mesh.element_count() && std::all_of(vertices.begin(), vertices.end(), [&](Index v) { return local_vertex(mesh, k, v) >= 0; });
+}
+
+// A swap candidate: an edge or face by its sorted vertices, with the element that listed it (the
+// shell's start while that element still holds it).
+template <std::size_t N>
+struct SwapCandidate {
+  std::array<Index, N> vertices;
+  Index element;
+  bool operator<(const SwapCandidate& other) const { return vertices < other.vertices; }
+  bool operator==(const SwapCandidate& other) const { return vertices == other.vertices; }
+};
+
 template <int D>
-Refusal swap_edge_shell(AdaptationMesh<D>& am, Index a, Index b, SwapScratch<D>& scratch, const AdaptationLimits& limits) {
+Refusal swap_edge_shell(AdaptationMesh<D>& am, const SwapCandidate<2>& edge, SwapScratch<D>& scratch, const AdaptationLimits& limits) {
   auto& work = am.workspace();
-  collect_shell(am.mesh(), a, b, work.cavity);
+  const auto [a, b] = edge.vertices;
+  if (still_holds(am.mesh(), edge.element, edge.vertices))
+    collect_shell_from(am.mesh(), edge.element, a, b, work.cavity);
+  else
+    collect_shell(am.mesh(), a, b, work.cavity);
   if (work.cavity.size() < (D == 2 ? 2u : 3u) || !shell_is_closed(am.mesh(), work.cavity, a, b)) return Refusal::kTopology;
   other_vertices(am.mesh(), work.cavity, a, b, scratch.apexes);
   return restar_best(am, scratch, limits);
 }
 
 // 3D, 2 → 3: the elements on both sides of interior face (a, b, c), re-starred from either apex.
-Refusal swap_face(AdaptationMesh<3>& am, Index a, Index b, Index c, SwapScratch<3>& scratch, const AdaptationLimits& limits) {
+Refusal swap_face(AdaptationMesh<3>& am, const SwapCandidate<3>& candidate, SwapScratch<3>& scratch, const AdaptationLimits& limits) {
   auto& work = am.workspace();
   const Mesh<3>& mesh = am.mesh();
-  collect_shell(mesh, a, b, work.cavity);
-  std::erase_if(work.cavity, [&](Index k) { return local_vertex(mesh, k, c) < 0; });
-  if (work.cavity.size() != 2) return Refusal::kTopology;
-  std::vector<Index>& apexes = scratch.apexes;
-  other_vertices(mesh, work.cavity, a, b, apexes);
-  std::erase(apexes, c);
-  // The face is the one of the first element opposite its apex.
-  const int face = local_vertex(mesh, work.cavity[0], apexes[0]) >= 0 ? local_vertex(mesh, work.cavity[0], apexes[0])
-                                                                     : local_vertex(mesh, work.cavity[0], apexes[1]);
-  if (mesh.element_face_facet(work.cavity[0], face) != kNoIndex) return Refusal::kTopology;
+  const auto [a, b, c] = candidate.vertices;
+  Index k = candidate.element;
+  if (!still_holds(mesh, k, candidate.vertices)) {
+    collect_shell(mesh, a, b, work.cavity);
+    const auto through_c = std::find_if(work.cavity.begin(), work.cavity.end(), [&](Index e) { return local_vertex(mesh, e, c) >= 0; });
+    if (through_c == work.cavity.end()) return Refusal::kTopology;
+    k = *through_c;
+  }
+  // The face is the one of k opposite its fourth vertex; the other side is its neighbour.
+  int face = 0;
+  while (face < 3 && (mesh.element(k)[face] == a || mesh.element(k)[face] == b || mesh.element(k)[face] == c)) ++face;
+  const Index other = mesh.neighbor(k, face);
+  if (other == kNoIndex || mesh.element_face_facet(k, face) != kNoIndex) return Refusal::kTopology;
+  work.cavity.clear();
+  work.cavity.push_back(k);
+  work.cavity.push_back(other);
+  other_vertices(mesh, work.cavity, a, b, scratch.apexes);
+  std::erase(scratch.apexes, c);
   return restar_best(am, scratch, limits);
 }
 
@@ -131,33 +169,30 @@ OperationCount swap_for_quality(AdaptationMesh<D>& am, const AdaptationLimits& l
   // Candidates by vertices (element ids move as cavities commit): the edges (and 3D faces) of the
   // elements below swap_quality() around recent changes.
   const Mesh<D>& mesh = am.mesh();
-  std::vector<std::array<Index, 2>> edges;
-  std::vector<std::array<Index, 3>> faces;
+  std::vector<SwapCandidate<2>> edges;
+  std::vector<SwapCandidate<3>> faces;
   for (Index k = 0; k < mesh.element_count(); ++k) {
     const auto& e = mesh.element(k);
     if (std::none_of(e.begin(), e.end(), [&](Index v) { return am.changed_since(v, since); }) || am.quality(k) >= swap_quality<D>()) continue;
     for (int i = 0; i <= D; ++i)
-      for (int j = 0; j < i; ++j) edges.push_back({std::min(e[i], e[j]), std::max(e[i], e[j])});
+      for (int j = 0; j < i; ++j) edges.push_back({{std::min(e[i], e[j]), std::max(e[i], e[j])}, k});
     if constexpr (D == 3)
       for (int f = 0; f < 4; ++f) {
         std::array<Index, 3> face{e[face_vertices<3>(f)[0]], e[face_vertices<3>(f)[1]], e[face_vertices<3>(f)[2]]};
         std::sort(face.begin(), face.end());
-        faces.push_back(face);
+        faces.push_back({face, k});
       }
   }
-  std::sort(edges.begin(), edges.end());
+  // Stable: among equal keys the first element lists it, whatever the sort does.
+  std::stable_sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  std::sort(faces.begin(), faces.end());
+  std::stable_sort(faces.begin(), faces.end());
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
   OperationCount count;
   SwapScratch<D> scratch;
-  for (const auto& [a, b] : edges) {
-    count.add(swap_edge_shell(am, a, b, scratch, limits));
-  }
+  for (const SwapCandidate<2>& edge : edges) count.add(swap_edge_shell(am, edge, scratch, limits));
   if constexpr (D == 3)
-    for (const auto& [a, b, c] : faces) {
-      count.add(swap_face(am, a, b, c, scratch, limits));
-    }
+    for (const SwapCandidate<3>& face : faces) count.add(swap_face(am, face, scratch, limits));
   return count;
 }
 
@@ -203,36 +238,37 @@ std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<D>& am, double boun
 }
 
 template <int D>
-std::pair<double, double> length_range_from(const AdaptationMesh<D>& am, Index center, std::span<const typename Mesh<D>::Element> elements) {
-  std::pair<double, double> range{std::numeric_limits<double>::infinity(), 0.0};
+void neighbors_in(std::span<const typename Mesh<D>::Element> elements, Index center, std::vector<Index>& out) {
+  out.clear();
   for (const auto& element : elements) {
     if (std::find(element.begin(), element.end(), center) == element.end()) continue;
     for (Index w : element)
-      if (w != center) {
-        const double length = am.edge_length(center, w);
-        range = {std::min(range.first, length), std::max(range.second, length)};
-      }
+      if (w != center && std::find(out.begin(), out.end(), w) == out.end()) out.push_back(w);
+  }
+}
+
+template <int D>
+std::pair<double, double> length_range(const AdaptationMesh<D>& am, Index center, std::span<const Index> neighbors) {
+  std::pair<double, double> range{std::numeric_limits<double>::infinity(), 0.0};
+  for (Index w : neighbors) {
+    const double length = am.edge_length(center, w);
+    range = {std::min(range.first, length), std::max(range.second, length)};
   }
   return range;
 }
 
-template <int D>
-bool lengths_stay_in_window(const AdaptationMesh<D>& am, Index center, std::pair<double, double> before,
-                            std::span<const typename Mesh<D>::Element> after, const AdaptationLimits& limits) {
-  const auto [shortest, longest] = length_range_from(am, center, after);
-  return shortest >= std::min(limits.collapse_length, before.first) && longest <= std::max(limits.split_length, before.second);
+bool lengths_stay_in_window(std::pair<double, double> before, std::pair<double, double> after, const AdaptationLimits& limits) {
+  return after.first >= std::min(limits.collapse_length, before.first) && after.second <= std::max(limits.split_length, before.second);
 }
 
 template OperationCount swap_for_quality(AdaptationMesh<2>&, const AdaptationLimits&, int);
 template OperationCount swap_for_quality(AdaptationMesh<3>&, const AdaptationLimits&, int);
 template std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<2>&, double, bool);
 template std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<3>&, double, bool);
-template std::pair<double, double> length_range_from(const AdaptationMesh<2>&, Index, std::span<const Mesh<2>::Element>);
-template std::pair<double, double> length_range_from(const AdaptationMesh<3>&, Index, std::span<const Mesh<3>::Element>);
-template bool lengths_stay_in_window(const AdaptationMesh<2>&, Index, std::pair<double, double>, std::span<const Mesh<2>::Element>,
-                                     const AdaptationLimits&);
-template bool lengths_stay_in_window(const AdaptationMesh<3>&, Index, std::pair<double, double>, std::span<const Mesh<3>::Element>,
-                                     const AdaptationLimits&);
+template void neighbors_in<2>(std::span<const Mesh<2>::Element>, Index, std::vector<Index>&);
+template void neighbors_in<3>(std::span<const Mesh<3>::Element>, Index, std::vector<Index>&);
+template std::pair<double, double> length_range(const AdaptationMesh<2>&, Index, std::span<const Index>);
+template std::pair<double, double> length_range(const AdaptationMesh<3>&, Index, std::span<const Index>);
 template double worst_quality(const AdaptationMesh<2>&, std::span<const Index>);
 template double worst_quality(const AdaptationMesh<3>&, std::span<const Index>);
 template double worst_planned_quality(const AdaptationMesh<2>&, const CavityOperator<2>&);

@@ -18,24 +18,22 @@ namespace {
 constexpr double kSmoothingGain = 1.01;
 
 template <int D>
-Vec<D> unit_edge_target(const AdaptationMesh<D>& am, Index v, std::span<const Index> ball) {
+Vec<D> unit_edge_target(const AdaptationMesh<D>& am, Index v, std::span<const Index> neighbors) {
   const Mesh<D>& mesh = am.mesh();
   Vec<D> sum{};
   int count = 0;
-  for (Index k : ball)
-    for (Index w : mesh.element(k))
-      if (w != v) {
-        const double length = am.edge_length(v, w);
-        if (!(length > 0)) continue;
-        sum = sum + (mesh.vertex(w) + (1 / length) * (mesh.vertex(v) - mesh.vertex(w)));
-        ++count;
-      }
+  for (Index w : neighbors) {
+    const double length = am.edge_length(v, w);
+    if (!(length > 0)) continue;
+    sum = sum + (mesh.vertex(w) + (1 / length) * (mesh.vertex(v) - mesh.vertex(w)));
+    ++count;
+  }
   return count ? (1.0 / count) * sum : mesh.vertex(v);
 }
 
 template <int D>
 struct SmoothingScratch {
-  std::vector<Index> ball, facets;
+  std::vector<Index> ball, neighbors, facets;
   std::vector<typename Mesh<D>::Element> elements;
   std::vector<Vec<D>> facet_normals;  // before the move
 };
@@ -65,7 +63,8 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, SmoothingScratch<D>& scratch,
   if (ball.empty()) return false;
   scratch.elements.clear();
   for (Index k : ball) scratch.elements.push_back(am.mesh().element(k));
-  const auto old_lengths = length_range_from<D>(am, v, scratch.elements);
+  neighbors_in<D>(scratch.elements, v, scratch.neighbors);
+  const auto old_lengths = length_range<D>(am, v, scratch.neighbors);
   const Vec<D> start = am.mesh().vertex(v);
   const SymMat<D> start_metric = am.metric(v);
   const bool on_boundary = am.vertex_class(v) == VertexClass::kSurface;
@@ -77,12 +76,12 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, SmoothingScratch<D>& scratch,
     for (Index f : scratch.facets) scratch.facet_normals.push_back(area_normal<D>(am.mesh(), am.mesh().facet(f)));
   }
   const double old_worst = worst_quality<D>(am, ball);
-  const Vec<D> step = unit_edge_target(am, v, ball) - start;
+  const Vec<D> step = unit_edge_target(am, v, scratch.neighbors) - start;
   for (double fraction : {1.0, 0.5, 0.25}) {
     const Vec<D> x = start + fraction * step;
     am.move_vertex(v, on_boundary ? on_surface(am, x, start, scratch) : x, ball);
     if (worst_quality<D>(am, ball) > kSmoothingGain * old_worst &&
-        lengths_stay_in_window<D>(am, v, old_lengths, scratch.elements, limits) &&
+        lengths_stay_in_window(old_lengths, length_range<D>(am, v, scratch.neighbors), limits) &&
         (!on_boundary || facets_stay_close(am, scratch, limits))) {
       for (const auto& element : scratch.elements)
         for (Index w : element) am.mark_changed(w);

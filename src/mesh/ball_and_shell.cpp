@@ -68,7 +68,12 @@ template <int D>
 void collect_shell(const Mesh<D>& mesh, Index a, Index b, std::vector<Index>& shell) {
   const Index start = element_of_edge(mesh, a, b, shell);
   shell.clear();
-  if (start == kNoIndex) return;
+  if (start != kNoIndex) collect_shell_from(mesh, start, a, b, shell);
+}
+
+template <int D>
+void collect_shell_from(const Mesh<D>& mesh, Index start, Index a, Index b, std::vector<Index>& shell) {
+  shell.clear();
   shell.push_back(start);
   // Each element of the shell has D − 1 vertices besides a and b; the faces opposite them hold the
   // edge. Turn one way until back at the start or at the boundary, then (open shell) the other way.
@@ -97,6 +102,8 @@ template void collect_ball(const Mesh<2>&, Index, std::vector<Index>&);
 template void collect_ball(const Mesh<3>&, Index, std::vector<Index>&);
 template void collect_shell(const Mesh<2>&, Index, Index, std::vector<Index>&);
 template void collect_shell(const Mesh<3>&, Index, Index, std::vector<Index>&);
+template void collect_shell_from(const Mesh<2>&, Index, Index, Index, std::vector<Index>&);
+template void collect_shell_from(const Mesh<3>&, Index, Index, Index, std::vector<Index>&);
 template int local_vertex(const Mesh<2>&, Index, Index);
 template int local_vertex(const Mesh<3>&, Index, Index);
 

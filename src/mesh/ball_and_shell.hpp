@@ -16,6 +16,9 @@ void collect_ball(const Mesh<D>& mesh, Index v, std::vector<Index>& ball);
 // Fills `shell` with the elements that contain both a and b (empty when (a, b) is not an edge).
 template <int D>
 void collect_shell(const Mesh<D>& mesh, Index a, Index b, std::vector<Index>& shell);
+// The same, from element `start`, which contains both a and b (no walk to find one).
+template <int D>
+void collect_shell_from(const Mesh<D>& mesh, Index start, Index a, Index b, std::vector<Index>& shell);
 
 // The local index of vertex v in element k, or -1.
 template <int D>
