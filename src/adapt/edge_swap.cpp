@@ -3,11 +3,11 @@
 // shell of an interior edge re-starred from the shell vertex that gives the best worst quality
 // (n → 2n − 4 elements), and two elements through a face re-starred from one's apex (2 → 3).
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 
 #include "adapt/adaptation_operations.hpp"
 #include "mesh/ball_and_shell.hpp"
-#include "mesh/vertex_graph.hpp"
 
 namespace hocav {
 namespace {
@@ -224,12 +224,20 @@ const char* to_string(Refusal refusal) {
 
 template <int D>
 std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<D>& am, double bound, bool longer) {
+  // The edges of the elements with a recently changed vertex, each once (by its key).
+  const Mesh<D>& mesh = am.mesh();
+  std::vector<std::uint64_t> keys;
+  for (const auto& element : mesh.elements())
+    for (int i = 0; i <= D; ++i)
+      for (int j = 0; j < i; ++j)
+        if (am.changed_recently(element[i]) || am.changed_recently(element[j])) keys.push_back(Mesh<D>::edge_key(element[i], element[j]));
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   std::vector<EdgeCandidate> candidates;
-  const VertexGraph graph = vertex_graph(am.mesh());
-  for (Index a = 0; a < graph.vertex_count(); ++a)
-    for (Index b : graph.neighbors_of(a))
-      if (b > a && (am.changed_recently(a) || am.changed_recently(b)))
-        if (const double length = am.edge_length(a, b); longer ? length > bound : length < bound) candidates.push_back({length, a, b});
+  for (const std::uint64_t key : keys) {
+    const auto a = static_cast<Index>(key >> 32), b = static_cast<Index>(key & 0xffffffffu);
+    if (const double length = am.edge_length(a, b); longer ? length > bound : length < bound) candidates.push_back({length, a, b});
+  }
   std::sort(candidates.begin(), candidates.end(), [longer](const EdgeCandidate& x, const EdgeCandidate& y) {
     if (x.length != y.length) return longer ? x.length > y.length : x.length < y.length;
     return std::pair(x.a, x.b) < std::pair(y.a, y.b);
