@@ -17,23 +17,31 @@ namespace {
 // A move must raise the ball's worst quality by this factor (mmg asks 1.02): no move undoes another.
 constexpr double kSmoothingGain = 1.01;
 
+// The mean over the ball's elements of w + (v − w)/l(v, w) for each other vertex w (a neighbour
+// counts once per element it shares with v); each length is evaluated once.
 template <int D>
-Vec<D> unit_edge_target(const AdaptationMesh<D>& am, Index v, std::span<const Index> neighbors) {
+Vec<D> unit_edge_target(const AdaptationMesh<D>& am, Index v, std::span<const Index> ball, std::span<const Index> neighbors,
+                        std::vector<double>& lengths) {
   const Mesh<D>& mesh = am.mesh();
+  lengths.clear();
+  for (Index w : neighbors) lengths.push_back(am.edge_length(v, w));
   Vec<D> sum{};
   int count = 0;
-  for (Index w : neighbors) {
-    const double length = am.edge_length(v, w);
-    if (!(length > 0)) continue;
-    sum = sum + (mesh.vertex(w) + (1 / length) * (mesh.vertex(v) - mesh.vertex(w)));
-    ++count;
-  }
+  for (Index k : ball)
+    for (Index w : mesh.element(k))
+      if (w != v) {
+        const double length = lengths[static_cast<std::size_t>(std::find(neighbors.begin(), neighbors.end(), w) - neighbors.begin())];
+        if (!(length > 0)) continue;
+        sum = sum + (mesh.vertex(w) + (1 / length) * (mesh.vertex(v) - mesh.vertex(w)));
+        ++count;
+      }
   return count ? (1.0 / count) * sum : mesh.vertex(v);
 }
 
 template <int D>
 struct SmoothingScratch {
   std::vector<Index> ball, neighbors, facets;
+  std::vector<double> lengths;
   std::vector<typename Mesh<D>::Element> elements;
   std::vector<Vec<D>> facet_normals;  // before the move
 };
@@ -76,7 +84,7 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, SmoothingScratch<D>& scratch,
     for (Index f : scratch.facets) scratch.facet_normals.push_back(area_normal<D>(am.mesh(), am.mesh().facet(f)));
   }
   const double old_worst = worst_quality<D>(am, ball);
-  const Vec<D> step = unit_edge_target(am, v, scratch.neighbors) - start;
+  const Vec<D> step = unit_edge_target(am, v, ball, scratch.neighbors, scratch.lengths) - start;
   for (double fraction : {1.0, 0.5, 0.25}) {
     const Vec<D> x = start + fraction * step;
     am.move_vertex(v, on_boundary ? on_surface(am, x, start, scratch) : x, ball);

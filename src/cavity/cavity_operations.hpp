@@ -20,7 +20,6 @@ template <int D>
 struct CavityWorkspace {
   CavityOperator<D> cavity_operator;
   std::vector<Index> cavity;
-  std::vector<Index> candidates;
 };
 
 template <int D>
