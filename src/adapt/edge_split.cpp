@@ -47,6 +47,16 @@ void boundary_through_edge(AdaptationMesh<D>& am, Index a, Index b, SplitScratch
     }
 }
 
+// Whether the boundary pieces through the edge hold a required edge or triangle (then the edge is
+// kept; both its ends are corners).
+template <int D>
+bool holds_required(const Mesh<D>& mesh, const SplitScratch<D>& s) {
+  const auto listed = [](const std::vector<Index>& ids, Index id) { return std::find(ids.begin(), ids.end(), id) != ids.end(); };
+  const std::vector<Index>& required_facets = D == 2 ? mesh.required_edges() : mesh.required_triangles();
+  return std::any_of(s.facets.begin(), s.facets.end(), [&](Index f) { return listed(required_facets, f); }) ||
+         std::any_of(s.lines.begin(), s.lines.end(), [&](Index l) { return listed(mesh.required_edges(), l); });
+}
+
 // Where the new vertex of a boundary edge goes: on the feature curve its two surfaces share, or
 // on its surface; the straight middle without a geometry (or on a ridge inside one surface).
 template <int D>
@@ -80,6 +90,8 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const AdaptationLimi
   Mesh<D>& mesh = am.mesh();
   auto& work = am.workspace();
   boundary_through_edge(am, a, b, s);
+  if (am.vertex_class(a) == VertexClass::kCorner && am.vertex_class(b) == VertexClass::kCorner && holds_required(mesh, s))
+    return Refusal::kClasses;
   const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
   const VertexClass new_class = s.facets.empty() ? VertexClass::kInterior : s.lines.empty() ? VertexClass::kSurface : VertexClass::kRidge;
   const double old_worst = worst_quality<D>(am, work.cavity);

@@ -1,6 +1,7 @@
 #include "adapt/vertex_classes.hpp"
 
 #include <algorithm>
+#include <array>
 #include <unordered_set>
 
 #include "surface/surface_topology.hpp"
@@ -51,6 +52,13 @@ std::vector<VertexClass> classify_vertices(Mesh<D>& mesh, double feature_angle_d
   for (Index v : mesh.corners()) classes[v] = VertexClass::kCorner;
   for (Index v : mesh.required_vertices()) classes[v] = VertexClass::kCorner;
   classify_features(mesh, build_surface_topology(mesh, feature_angle_degrees), classes);
+  // Required edges and triangles keep their vertices; split_long_edges keeps their edges.
+  for (Index e : mesh.required_edges()) {
+    const std::array<Index, 2> ends = D == 2 ? std::array<Index, 2>{mesh.facet(e)[0], mesh.facet(e)[D - 1]} : mesh.line(e);
+    for (Index v : ends) classes[v] = VertexClass::kCorner;
+  }
+  for (Index f : mesh.required_triangles())
+    for (Index v : mesh.facet(f)) classes[v] = VertexClass::kCorner;
   return classes;
 }
 

@@ -19,6 +19,8 @@ enum Keyword : int {
   kCorners = 13,
   kRidges = 14,
   kRequiredVertices = 15,
+  kRequiredEdges = 16,
+  kRequiredTriangles = 17,
   kTrianglesP2 = 24,
   kEdgesP2 = 25,
   kTetrahedraP2 = 30,

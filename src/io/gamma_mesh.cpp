@@ -35,7 +35,7 @@ struct MeshRecords {
   std::vector<int> node_refs;
   std::map<int, NodeTable> simplices;         // by keyword code
   std::map<int, std::vector<int>> orderings;  // by ordering keyword code: a Bézier index row per node
-  std::vector<Index> corners, ridges, required_vertices;
+  std::vector<Index> corners, ridges, required_vertices, required_edges, required_triangles;
 };
 
 // The width of a row of an ordering keyword, as libMeshb defines them: the full Bézier multi-index
@@ -126,7 +126,8 @@ MeshRecords read_records(Reader& reader) {
     const SimplexKeyword* simplex = gamma::simplex_keyword(code);
     const SimplexKeyword* ordered = gamma::ordered_keyword(code);
     const bool read = simplex || ordered || code == gamma::kVertices || code == gamma::kCorners ||
-                      code == gamma::kRidges || code == gamma::kRequiredVertices;
+                      code == gamma::kRidges || code == gamma::kRequiredVertices || code == gamma::kRequiredEdges ||
+                      code == gamma::kRequiredTriangles;
     if (!read) {
       if (gamma::is_unsupported_element(code)) reader.fail("element kind not supported (hocav reads triangles and tetrahedra)");
       reader.skip_keyword();
@@ -138,7 +139,9 @@ MeshRecords read_records(Reader& reader) {
     else if (code == gamma::kVertices) read_vertices(reader, records);
     else if (code == gamma::kCorners) read_id_list(reader, records.corners, "vertex");
     else if (code == gamma::kRidges) read_id_list(reader, records.ridges, "edge");
-    else read_id_list(reader, records.required_vertices, "vertex");
+    else if (code == gamma::kRequiredVertices) read_id_list(reader, records.required_vertices, "vertex");
+    else if (code == gamma::kRequiredEdges) read_id_list(reader, records.required_edges, "edge");
+    else read_id_list(reader, records.required_triangles, "triangle");
   }
   return records;
 }
@@ -250,6 +253,8 @@ MeshFileContent build_mesh(MeshRecords&& records, const std::string& path) {
   raw.corners = std::move(records.corners);
   raw.ridges = std::move(records.ridges);
   raw.required_vertices = std::move(records.required_vertices);
+  raw.required_edges = std::move(records.required_edges);
+  raw.required_triangles = std::move(records.required_triangles);
   return assemble_mesh(std::move(raw), path);
 }
 
@@ -335,6 +340,8 @@ void write_records(Writer& out, const Mesh<D>& mesh, const std::string& path) {
   write_ids(gamma::kCorners, mesh.corners());
   write_ids(gamma::kRidges, mesh.ridges());
   write_ids(gamma::kRequiredVertices, mesh.required_vertices());
+  write_ids(gamma::kRequiredEdges, mesh.required_edges());
+  write_ids(gamma::kRequiredTriangles, mesh.required_triangles());
 }
 
 }  // namespace

@@ -55,11 +55,13 @@ class Assembler {
     for (std::size_t i = 0; i < raw_.corners.size(); ++i) mesh.corners().push_back(vertex_of(raw_.corners[i], "Corners", i));
     for (std::size_t i = 0; i < raw_.required_vertices.size(); ++i)
       mesh.required_vertices().push_back(vertex_of(raw_.required_vertices[i], "RequiredVertices", i));
-    Index ridge_targets = D == 2 ? mesh.facet_count() : mesh.line_count();
-    for (std::size_t i = 0; i < raw_.ridges.size(); ++i) {
-      if (raw_.ridges[i] < 0 || raw_.ridges[i] >= ridge_targets) fail("Ridges", "names no edge in ridge", i);
-      mesh.ridges().push_back(raw_.ridges[i]);
-    }
+    const Index edge_entities = D == 2 ? mesh.facet_count() : mesh.line_count();
+    take_ids(raw_.ridges, edge_entities, "Ridges", "names no edge in ridge", mesh.ridges());
+    take_ids(raw_.required_edges, edge_entities, "RequiredEdges", "names no edge in required edge", mesh.required_edges());
+    // A 2D mesh's triangles are its elements, which adaptation and curving renumber: not kept.
+    if (D == 2 && !raw_.required_triangles.empty()) fail("RequiredTriangles", "not supported in a 2D mesh (its elements), entry", 0);
+    take_ids(raw_.required_triangles, mesh.facet_count(), "RequiredTriangles", "names no triangle in required triangle",
+             mesh.required_triangles());
 
     try {
       mesh.build_topology();
@@ -72,6 +74,15 @@ class Assembler {
   }
 
  private:
+  // Checks each id is below `count` and appends it to `out`.
+  void take_ids(const std::vector<Index>& ids, Index count, const std::string& keyword, const std::string& what,
+                std::vector<Index>& out) const {
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      if (ids[i] < 0 || ids[i] >= count) fail(keyword, what, i);
+      out.push_back(ids[i]);
+    }
+  }
+
   [[noreturn]] void fail(const std::string& keyword, const std::string& what, std::size_t entity) const {
     throw Error(path_ + ": " + keyword + ": " + what + " " + std::to_string(entity + 1));
   }

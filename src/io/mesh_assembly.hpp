@@ -26,9 +26,9 @@ struct RawMesh {
   std::vector<Index> line_nodes;
   std::vector<int> line_refs;
   int line_order = 1;
-  // Corners and RequiredVertices: file node ids. Ridges: ids of Edges entities (facets in 2D,
-  // lines in 3D), 0-based.
-  std::vector<Index> corners, required_vertices, ridges;
+  // Corners and RequiredVertices: file node ids. Ridges and RequiredEdges: ids of Edges entities
+  // (facets in 2D, lines in 3D); RequiredTriangles: ids of 3D Triangles (facets); all 0-based.
+  std::vector<Index> corners, required_vertices, ridges, required_edges, required_triangles;
   // Names for error messages: the file, and the keywords or element types the lists came from.
   std::string element_keyword = "elements", facet_keyword = "facets", line_keyword = "edges";
 };

@@ -494,6 +494,8 @@ std::vector<Index> Mesh<D>::compact() {
     for (Index& v : l) v = vertex_id[v];
   removed_line_count_ = 0;
   renumber_list(ridges_, D == 2 ? facet_id : line_id);
+  renumber_list(required_edges_, D == 2 ? facet_id : line_id);
+  renumber_list(required_triangles_, facet_id);
 
   rekey_after_renumbering();
   return vertex_id;
@@ -518,7 +520,7 @@ std::size_t Mesh<D>::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   return bytes(vertices_) + bytes(vertex_refs_) + bytes(elements_) + bytes(element_refs_) + bytes(facets_) +
          bytes(facet_refs_) + bytes(lines_) + bytes(line_refs_) + bytes(corners_) + bytes(ridges_) +
-         bytes(required_vertices_) + bytes(removed_vertices_) + bytes(edge_vertices_) + bytes(edge_nodes_) + bytes(element_edges_) +
+         bytes(required_vertices_) + bytes(required_edges_) + bytes(required_triangles_) + bytes(removed_vertices_) + bytes(edge_vertices_) + bytes(edge_nodes_) + bytes(element_edges_) +
          edge_ids_.memory_bytes() + bytes(adjacency_) + bytes(vertex_element_) + bytes(facet_element_face_) +
          element_face_facets_.memory_bytes() + bytes(faces_with_facet_) +
          [&] {

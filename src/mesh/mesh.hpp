@@ -96,14 +96,19 @@ class Mesh {
   // Whether line l is listed in ridges() (in 2D, facet l).
   bool is_ridge(Index l) const;
 
-  // ---- geometric tags carried through (Corners, RequiredVertices: vertex ids; Ridges: ids of
-  // the entities of the Edges keyword, i.e. facets in 2D and lines in 3D) ----
+  // ---- geometric tags carried through (Corners, RequiredVertices: vertex ids; Ridges and
+  // RequiredEdges: ids of the entities of the Edges keyword, i.e. facets in 2D and lines in 3D;
+  // RequiredTriangles: 3D facet ids) ----
   std::vector<Index>& corners() { return corners_; }
   const std::vector<Index>& corners() const { return corners_; }
   std::vector<Index>& ridges() { return ridges_; }
   const std::vector<Index>& ridges() const { return ridges_; }
   std::vector<Index>& required_vertices() { return required_vertices_; }
   const std::vector<Index>& required_vertices() const { return required_vertices_; }
+  std::vector<Index>& required_edges() { return required_edges_; }
+  const std::vector<Index>& required_edges() const { return required_edges_; }
+  std::vector<Index>& required_triangles() { return required_triangles_; }
+  const std::vector<Index>& required_triangles() const { return required_triangles_; }
 
   // ---- P2: edges and their mid nodes ----
   int order() const { return order_; }
@@ -231,7 +236,7 @@ class Mesh {
   std::vector<int> facet_refs_;
   std::vector<Line> lines_;
   std::vector<int> line_refs_;
-  std::vector<Index> corners_, ridges_, required_vertices_;
+  std::vector<Index> corners_, ridges_, required_vertices_, required_edges_, required_triangles_;
   std::vector<std::uint8_t> removed_vertices_;  // per vertex once one is removed, else empty
   Index removed_vertex_count_ = 0, removed_facet_count_ = 0, removed_line_count_ = 0;
   std::vector<int> attribute_widths_;

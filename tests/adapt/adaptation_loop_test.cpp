@@ -89,6 +89,53 @@ TEST(AdaptationLoop, CubeInTheLinearMetricBecomesUnit) {
     }
 }
 
+// The sorted vertex positions of a facet or line: what a required entity must still be after adapting.
+template <int D, std::size_t N>
+std::vector<std::array<double, D>> sorted_points(const Mesh<D>& mesh, const std::array<Index, N>& vertices) {
+  std::vector<std::array<double, D>> points;
+  for (Index v : vertices) {
+    std::array<double, D> point;
+    for (int i = 0; i < D; ++i) point[i] = mesh.vertex(v)[i];
+    points.push_back(point);
+  }
+  std::sort(points.begin(), points.end());
+  return points;
+}
+
+// Required edges and triangles (Gamma's RequiredEdges, RequiredTriangles) come out as they went in,
+// listed as required, while the loop refines everything around them.
+template <int D>
+void expect_required_kept(Mesh<D> mesh) {
+  // Required: the boundary facets on the side x = 0 (2D: they are the required edges) and, in 3D,
+  // the feature lines on it.
+  std::vector<Index>& required_facets = D == 2 ? mesh.required_edges() : mesh.required_triangles();
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    if (std::all_of(mesh.facet(f).begin(), mesh.facet(f).end(), [&](Index v) { return mesh.vertex(v)[0] == 0; })) required_facets.push_back(f);
+  if constexpr (D == 3)
+    for (Index l = 0; l < mesh.line_count(); ++l)
+      if (mesh.vertex(mesh.line(l)[0])[0] == 0 && mesh.vertex(mesh.line(l)[1])[0] == 0) mesh.required_edges().push_back(l);
+  const auto points_of = [](const Mesh<D>& m, bool lines) {
+    std::vector<std::vector<std::array<double, D>>> out;
+    for (Index id : lines ? m.required_edges() : (D == 2 ? m.required_edges() : m.required_triangles()))
+      out.push_back(lines && D == 3 ? sorted_points<D>(m, m.line(id)) : sorted_points<D>(m, m.facet(id)));
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  const auto facets_before = points_of(mesh, false), lines_before = points_of(mesh, true);
+  ASSERT_FALSE(facets_before.empty());
+  const Index elements_before = mesh.element_count();
+  adapt_to_metric<D>(mesh, linear_metric<D>(0.02), nullptr, {});
+  adapt_test::expect_closed_and_consistent(mesh);
+  EXPECT_GT(mesh.element_count(), 4 * elements_before);  // refined, also along x = 0 (a fine direction)
+  EXPECT_EQ(points_of(mesh, false), facets_before);
+  EXPECT_EQ(points_of(mesh, true), lines_before);
+}
+
+TEST(AdaptationLoop, RequiredEdgesAndTrianglesAreKept) {
+  expect_required_kept<2>(adapt_test::unit_mesh<2>(6));
+  expect_required_kept<3>(adapt_test::unit_mesh<3>(3));
+}
+
 TEST(AdaptationLoop, CoarseningAFineMeshInAUniformMetric) {
   Mesh<3> mesh = adapt_test::unit_mesh<3>(8);
   AnalyticMetricSpec spec;

@@ -37,6 +37,8 @@ Mesh<D> with_varied_tags(const Mesh<D>& mesh) {
   copy.corners() = mesh.corners();
   copy.ridges() = D == 2 ? std::vector<Index>{0, 2, 5} : mesh.ridges();
   copy.required_vertices() = {1, 4, 2};
+  copy.required_edges() = D == 2 ? std::vector<Index>{3, 1} : std::vector<Index>{mesh.line_count() - 1, 0};
+  if constexpr (D == 3) copy.required_triangles() = {2, 7, 0};
   copy.build_topology();
   return copy;
 }
@@ -93,6 +95,8 @@ void expect_same_mesh(const Mesh<D>& expected, const MeshFileContent& content, b
   EXPECT_EQ(actual.corners(), expected.corners());
   EXPECT_EQ(actual.ridges(), expected.ridges());
   EXPECT_EQ(actual.required_vertices(), expected.required_vertices());
+  EXPECT_EQ(actual.required_edges(), expected.required_edges());
+  EXPECT_EQ(actual.required_triangles(), expected.required_triangles());
   ASSERT_EQ(actual.order(), expected.order());
   if (!expected.is_p2()) {
     EXPECT_TRUE(content.edge_node_file_ids.empty());
@@ -271,6 +275,11 @@ TEST(GammaMesh, RefusesMalformedAsciiFiles) {
   expect_read_error("vertex_99.mesh", kTetVertices + "Tetrahedra\n2\n1 2 3 4 1\n1 2 99 4 1\n", {"Tetrahedra: ", "99 out of range", "entity 2"});
   expect_read_error("corner_50.mesh", kTetVertices + "Tetrahedra\n1\n1 2 3 4 1\nCorners\n1\n50\n", {"Corners: ", "50 out of range"});
   expect_read_error("ridge.mesh", kTetVertices + "Tetrahedra\n1\n1 2 3 4 1\nRidges\n1\n1\n", {"Ridges: ", "names no edge"});
+  expect_read_error("required_edge.mesh", kTetVertices + "Tetrahedra\n1\n1 2 3 4 1\nRequiredEdges\n1\n1\n", {"RequiredEdges: ", "names no edge"});
+  expect_read_error("required_triangle.mesh", kTetVertices + "Tetrahedra\n1\n1 2 3 4 1\nTriangles\n1\n1 2 3 1\nRequiredTriangles\n1\n2\n",
+                    {"RequiredTriangles: ", "names no triangle in required triangle 1"});
+  expect_read_error("required_2d.mesh", "Dimension 2\nVertices\n3\n0 0 0\n1 0 0\n0 1 0\nTriangles\n1\n1 2 3 1\nRequiredTriangles\n1\n1\n",
+                    {"RequiredTriangles: ", "not supported in a 2D mesh"});
   expect_read_error("no_dimension.mesh", "MeshVersionFormatted 2\nVertices\n1\n0 0 0 0\n", {"Vertices: ", "no Dimension"});
   expect_read_error("empty.mesh", "", {"Dimension: missing"});
   expect_read_error("dimension_4.mesh", "MeshVersionFormatted 2\nDimension 4\n", {"Dimension: ", "2 or 3, found 4"});
