@@ -76,6 +76,18 @@ double expected_elements(const Mesh<D>& input, const AdaptationMetric<D>& metric
   return complexity / (D == 3 ? std::sqrt(2.0) / 12 : std::sqrt(3.0) / 4);
 }
 
+// The loop stops at --iterations passes at the latest; when it stops there the metric may ask for
+// what the mesh cannot give (sizes below what corners, required entities or the geometry allow, or
+// a field too rough for its back mesh), and the user hears it.
+void warn_if_not_converged(const AdaptOptions& o, const AdaptationReport& report) {
+  if (report.run.converged || report.run.passes.empty()) return;
+  const AdaptationPass& last = report.run.passes.back();
+  std::cerr << "hocav adapt: warning: " << o.input << ": not converged after " << report.run.passes.size()
+            << " passes (the last split " << last.splits.done << " and collapsed " << last.collapses.done << " edges; "
+            << static_cast<int>(1000 * report.measures.unit_share) / 10.0
+            << "% of edges unit); raise --iterations, or check that the metric asks for sizes the geometry allows\n";
+}
+
 template <int D>
 void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, OutputSet& outputs) {
   check_input_mesh(mesh, o.input);
@@ -98,6 +110,7 @@ void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, Ou
   if (o.order == 2) curving = CurvingSettings{o.surface, "simpson", o.jacobian_floor, 1, o.threads, !o.quiet};
   const AdaptedMesh<D> adapted = adapt_and_curve(mesh, *run.metric, geometry.get(), settings, curving);
   const AdaptationReport& report = adapted.report;
+  warn_if_not_converged(o, report);
 
   write_mesh_file(o.output, mesh);
   if (!o.vtu.empty()) write_curved_vtu(o.vtu, mesh, *adapted.field);

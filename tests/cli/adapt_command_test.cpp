@@ -37,6 +37,16 @@ TEST_F(AdaptCli, CubeWithAMetricFileStopsAtOrderOne) {
   EXPECT_EQ(stats_json("adapted.meshb", "d[\"consistency\"][\"consistent\"], d[\"order\"], d[\"counts\"][\"corners\"]"), "(True, 1, 8)");
 }
 
+TEST_F(AdaptCli, StoppingAtTheIterationCapIsWarnedOf) {
+  run_ok("generate square --h 0.1 -o square.meshb");
+  const Outcome capped = run("adapt square.meshb --analytic linear --hmin 0.01 -o capped.meshb --order 1 --iterations 1 -q");
+  EXPECT_EQ(capped.exit_code, 0);
+  EXPECT_NE(capped.err.find("warning: square.meshb: not converged after 1 passes"), std::string::npos) << capped.err;
+  EXPECT_TRUE(fs::exists(path("capped.meshb")));  // the mesh as far as it got
+  const Outcome converged = run("adapt square.meshb --analytic linear --hmin 0.01 -o converged.meshb --order 1 -q");
+  EXPECT_EQ(converged.err.find("warning"), std::string::npos) << converged.err;
+}
+
 TEST_F(AdaptCli, OutputDoesNotDependOnTheThreadCount) {
   run_ok("generate square --h 0.1 -o square.meshb");
   run_ok("adapt square.meshb --analytic linear --hmin 0.02 -o one.meshb --threads 1 -q");
