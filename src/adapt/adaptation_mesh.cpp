@@ -39,14 +39,6 @@ void AdaptationMesh<D>::update_qualities(std::span<const Index> elements) {
 }
 
 template <int D>
-SymMat<D> AdaptationMesh<D>::metric(Index v) const {
-  SymMat<D> m;
-  const auto row = mesh_.vertex_attribute(metric_attribute_, v);
-  std::copy(row.begin(), row.end(), m.entries.begin());
-  return m;
-}
-
-template <int D>
 void AdaptationMesh<D>::set_metric(Index v, const SymMat<D>& metric) {
   std::copy(metric.entries.begin(), metric.entries.end(), mesh_.vertex_attribute(metric_attribute_, v).begin());
 }

@@ -39,7 +39,13 @@ class AdaptationMesh {
   const BoundaryGeometry<D>* geometry() const { return geometry_; }
   CavityWorkspace<D>& workspace() { return work_; }
 
-  SymMat<D> metric(Index v) const;
+  // (Inline: every length and quality reads it.)
+  SymMat<D> metric(Index v) const {
+    SymMat<D> m;
+    const auto row = mesh_.vertex_attribute(metric_attribute_, v);
+    for (std::size_t i = 0; i < m.entries.size(); ++i) m.entries[i] = row[i];
+    return m;
+  }
   VertexClass vertex_class(Index v) const { return static_cast<VertexClass>(mesh_.vertex_attribute(class_attribute_, v)[0]); }
   // A new vertex at x with the metric there (evaluated from near vertex `near`).
   Index add_vertex(const Vec<D>& x, VertexClass vertex_class, Index near);
