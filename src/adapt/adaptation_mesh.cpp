@@ -44,6 +44,12 @@ void AdaptationMesh<D>::set_metric(Index v, const SymMat<D>& metric) {
 }
 
 template <int D>
+SymMat<D> AdaptationMesh<D>::metric_near(const Vec<D>& x, Index near) const {
+  auto hint = static_cast<Index>(mesh_.vertex_attribute(hint_attribute_, near)[0]);
+  return metric_.metric_at(x, hint);
+}
+
+template <int D>
 void AdaptationMesh<D>::evaluate_metric(Index v, Index near) {
   auto hint = static_cast<Index>(mesh_.vertex_attribute(hint_attribute_, near)[0]);
   set_metric(v, metric_.metric_at(mesh_.vertex(v), hint));

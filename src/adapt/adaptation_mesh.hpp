@@ -49,6 +49,9 @@ class AdaptationMesh {
   VertexClass vertex_class(Index v) const { return static_cast<VertexClass>(mesh_.vertex_attribute(class_attribute_, v)[0]); }
   // A new vertex at x with the metric there (evaluated from near vertex `near`).
   Index add_vertex(const Vec<D>& x, VertexClass vertex_class, Index near);
+  // The metric at x, found from vertex `near`'s back-mesh hint; changes nothing (move_vertex to x
+  // from near = v evaluates the same).
+  SymMat<D> metric_near(const Vec<D>& x, Index near) const;
   // Moves v to x and evaluates its metric there; `ball` is v's ball, whose qualities follow.
   void move_vertex(Index v, const Vec<D>& x, std::span<const Index> ball);
   // Puts v back where it was, with the metric it had there (a refused move).

@@ -6,6 +6,8 @@
 // its topology, so the move is checked by the quality itself: it is positive only for elements of
 // positive measure.
 #include <algorithm>
+#include <array>
+#include <limits>
 
 #include "adapt/adaptation_operations.hpp"
 #include "adapt/boundary_pieces.hpp"
@@ -64,6 +66,30 @@ bool facets_stay_close(const AdaptationMesh<D>& am, const SmoothingScratch<D>& s
   return true;
 }
 
+// Whether v moved to x (metric there: metric_x) raises every element of its ball above `bar` and
+// keeps its edges in the length window of `old_lengths`; evaluated without moving it, and
+// stopped at the first element at or below the bar (most trials are refused).
+template <int D>
+bool move_passes(const AdaptationMesh<D>& am, Index v, const Vec<D>& x, const SymMat<D>& metric_x, const SmoothingScratch<D>& scratch,
+                 double bar, std::pair<double, double> old_lengths, const AdaptationLimits& limits) {
+  const Mesh<D>& mesh = am.mesh();
+  for (const auto& element : scratch.elements) {
+    SimplexPoints<D> points;
+    std::array<SymMat<D>, D + 1> metrics;
+    for (int i = 0; i <= D; ++i) {
+      points[i] = element[i] == v ? x : mesh.vertex(element[i]);
+      metrics[i] = element[i] == v ? metric_x : am.metric(element[i]);
+    }
+    if (!(mean_metric_ratio<D>(points, metrics) > bar)) return false;
+  }
+  std::pair<double, double> lengths{std::numeric_limits<double>::infinity(), 0.0};
+  for (Index w : scratch.neighbors) {
+    const double length = metric_edge_length<D>(x, mesh.vertex(w), metric_x, am.metric(w));
+    lengths = {std::min(lengths.first, length), std::max(lengths.second, length)};
+  }
+  return lengths_stay_in_window(old_lengths, lengths, limits);
+}
+
 template <int D>
 bool smooth_vertex(AdaptationMesh<D>& am, Index v, SmoothingScratch<D>& scratch, const AdaptationLimits& limits) {
   std::vector<Index>& ball = scratch.ball;
@@ -74,7 +100,6 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, SmoothingScratch<D>& scratch,
   neighbors_in<D>(scratch.elements, v, scratch.neighbors);
   const auto old_lengths = length_range<D>(am, v, scratch.neighbors);
   const Vec<D> start = am.mesh().vertex(v);
-  const SymMat<D> start_metric = am.metric(v);
   const bool on_boundary = am.vertex_class(v) == VertexClass::kSurface;
   if (on_boundary) {
     const Index center[1] = {v};
@@ -86,17 +111,18 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, SmoothingScratch<D>& scratch,
   const double old_worst = worst_quality<D>(am, ball);
   const Vec<D> step = unit_edge_target(am, v, ball, scratch.neighbors, scratch.lengths) - start;
   for (double fraction : {1.0, 0.5, 0.25}) {
-    const Vec<D> x = start + fraction * step;
-    am.move_vertex(v, on_boundary ? on_surface(am, x, start, scratch) : x, ball);
-    if (worst_quality<D>(am, ball) > kSmoothingGain * old_worst &&
-        lengths_stay_in_window(old_lengths, length_range<D>(am, v, scratch.neighbors), limits) &&
-        (!on_boundary || facets_stay_close(am, scratch, limits))) {
-      for (const auto& element : scratch.elements)
-        for (Index w : element) am.mark_changed(w);
-      return true;
+    const Vec<D> x = on_boundary ? on_surface(am, start + fraction * step, start, scratch) : start + fraction * step;
+    if (!move_passes(am, v, x, am.metric_near(x, v), scratch, kSmoothingGain * old_worst, old_lengths, limits)) continue;
+    const SymMat<D> start_metric = am.metric(v);
+    am.move_vertex(v, x, ball);
+    if (on_boundary && !facets_stay_close(am, scratch, limits)) {  // read on the moved mesh
+      am.restore_vertex(v, start, start_metric, ball);
+      continue;
     }
+    for (const auto& element : scratch.elements)
+      for (Index w : element) am.mark_changed(w);
+    return true;
   }
-  am.restore_vertex(v, start, start_metric, ball);
   return false;
 }
 
