@@ -3,7 +3,6 @@
 // shell of an interior edge re-starred from the shell vertex that gives the best worst quality
 // (n → 2n − 4 elements), and two elements through a face re-starred from one's apex (2 → 3).
 #include <algorithm>
-#include <cstdint>
 #include <limits>
 
 #include "adapt/adaptation_operations.hpp"
@@ -229,19 +228,28 @@ const char* to_string(Refusal refusal) {
 
 template <int D>
 std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<D>& am, double bound, bool longer) {
-  // The edges of the elements with a recently changed vertex, each once (by its key).
+  // The edges (a < b) of the elements with a recently changed vertex, bucketed by a (a counting
+  // sort: the whole mesh's edges in the first passes), then each bucket sorted and made unique.
   const Mesh<D>& mesh = am.mesh();
-  std::vector<std::uint64_t> keys;
-  for (const auto& element : mesh.elements())
-    for (int i = 0; i <= D; ++i)
-      for (int j = 0; j < i; ++j)
-        if (am.changed_recently(element[i]) || am.changed_recently(element[j])) keys.push_back(Mesh<D>::edge_key(element[i], element[j]));
-  std::sort(keys.begin(), keys.end());
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  const auto for_each_changed_edge = [&](auto visit) {
+    for (const auto& element : mesh.elements())
+      for (int i = 0; i <= D; ++i)
+        for (int j = 0; j < i; ++j)
+          if (am.changed_recently(element[i]) || am.changed_recently(element[j]))
+            visit(std::min(element[i], element[j]), std::max(element[i], element[j]));
+  };
+  std::vector<Index> first(static_cast<std::size_t>(mesh.vertex_count()) + 1, 0);
+  for_each_changed_edge([&](Index a, Index) { ++first[static_cast<std::size_t>(a) + 1]; });
+  for (std::size_t v = 1; v < first.size(); ++v) first[v] += first[v - 1];
+  std::vector<Index> ends(static_cast<std::size_t>(first.back())), fill(first.begin(), first.end() - 1);
+  for_each_changed_edge([&](Index a, Index b) { ends[static_cast<std::size_t>(fill[a]++)] = b; });
   std::vector<EdgeCandidate> candidates;
-  for (const std::uint64_t key : keys) {
-    const auto a = static_cast<Index>(key >> 32), b = static_cast<Index>(key & 0xffffffffu);
-    if (const double length = am.edge_length(a, b); longer ? length > bound : length < bound) candidates.push_back({length, a, b});
+  for (Index a = 0; a < mesh.vertex_count(); ++a) {
+    const auto bucket_begin = ends.begin() + first[a], bucket_end = ends.begin() + first[a + 1];
+    std::sort(bucket_begin, bucket_end);
+    for (auto b = bucket_begin; b != bucket_end; ++b)
+      if (b == bucket_begin || *b != *(b - 1))
+        if (const double length = am.edge_length(a, *b); longer ? length > bound : length < bound) candidates.push_back({length, a, *b});
   }
   std::sort(candidates.begin(), candidates.end(), [longer](const EdgeCandidate& x, const EdgeCandidate& y) {
     if (x.length != y.length) return longer ? x.length > y.length : x.length < y.length;
