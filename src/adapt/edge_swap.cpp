@@ -28,6 +28,7 @@ template <int D>
 struct SwapScratch {
   std::vector<Index> apexes, neighbors;
   std::vector<typename Mesh<D>::Element> old_elements, star;
+  std::vector<std::array<Index, D>> faces;  // the cavity's boundary faces, as its elements orient them
 };
 
 // Whether the apex's edges in the star keep within the length window of its edges in the cavity.
@@ -39,25 +40,34 @@ bool apex_lengths_stay_in_window(const AdaptationMesh<D>& am, Index apex, SwapSc
   return lengths_stay_in_window(before, length_range<D>(am, apex, scratch.neighbors), limits);
 }
 
-// The elements the star of the cavity from `apex` would make (one per boundary face of the cavity
-// not through the apex, as the cavity operator makes them), without planning it: a swap tries
-// every apex, and only the best is worth a plan.
+// The boundary faces of the cavity (faces whose neighbour is outside it), vertices in the order
+// the cavity operator stars them.
 template <int D>
-void predicted_star(const Mesh<D>& mesh, std::span<const Index> cavity, Index apex, std::vector<typename Mesh<D>::Element>& star) {
-  star.clear();
+void cavity_faces(const Mesh<D>& mesh, std::span<const Index> cavity, std::vector<std::array<Index, D>>& faces) {
+  faces.clear();
   for (Index k : cavity)
     for (int face = 0; face <= D; ++face) {
       const Index outer = mesh.neighbor(k, face);
       if (outer != kNoIndex && std::find(cavity.begin(), cavity.end(), outer) != cavity.end()) continue;
-      typename Mesh<D>::Element element;
-      element[0] = apex;
-      bool through_apex = false;
-      for (int i = 0; i < D; ++i) {
-        element[i + 1] = mesh.element(k)[face_vertices<D>(face)[i]];
-        through_apex = through_apex || element[i + 1] == apex;
-      }
-      if (!through_apex) star.push_back(element);
+      std::array<Index, D> vertices;
+      for (int i = 0; i < D; ++i) vertices[i] = mesh.element(k)[face_vertices<D>(face)[i]];
+      faces.push_back(vertices);
     }
+}
+
+// The elements the star of the cavity from `apex` would make (one per boundary face not through
+// the apex, as the cavity operator makes them), without planning it: a swap tries every apex, and
+// only the best is worth a plan.
+template <int D>
+void predicted_star(std::span<const std::array<Index, D>> faces, Index apex, std::vector<typename Mesh<D>::Element>& star) {
+  star.clear();
+  for (const auto& face : faces) {
+    if (std::find(face.begin(), face.end(), apex) != face.end()) continue;
+    typename Mesh<D>::Element element;
+    element[0] = apex;
+    std::copy(face.begin(), face.end(), element.begin() + 1);
+    star.push_back(element);
+  }
 }
 
 // Tries each of scratch.apexes as the star's centre for the cavity in work.cavity; commits the best
@@ -72,8 +82,9 @@ Refusal restar_best(AdaptationMesh<D>& am, SwapScratch<D>& scratch, const Adapta
   Index best_apex = kNoIndex;
   scratch.old_elements.clear();
   for (Index k : work.cavity) scratch.old_elements.push_back(am.mesh().element(k));
+  cavity_faces<D>(am.mesh(), work.cavity, scratch.faces);
   for (Index apex : scratch.apexes) {
-    predicted_star(am.mesh(), work.cavity, apex, scratch.star);
+    predicted_star<D>(scratch.faces, apex, scratch.star);
     double worst = std::numeric_limits<double>::infinity();
     for (const auto& element : scratch.star)
       if (worst = std::min(worst, am.quality(element)); worst <= best) break;  // this apex cannot win
