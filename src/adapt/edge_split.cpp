@@ -10,6 +10,9 @@
 namespace hocav {
 namespace {
 
+// The share of the long edges longer than 2 above which a pass splits only those.
+constexpr double kCoarsePhaseShare = 0.1;
+
 template <int D>
 struct SplitScratch {
   std::vector<Index> facets, lines, candidate_lines, shell;
@@ -120,7 +123,13 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const AdaptationLimi
 
 template <int D>
 OperationCount split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limits) {
-  const std::vector<EdgeCandidate> candidates = edges_beyond(am, limits.split_length, true);
+  std::vector<EdgeCandidate> candidates = edges_beyond(am, limits.split_length, true);
+  // Coarse phase: while many long edges are longer than 2, only those are split. Their halves are
+  // longer than 1, so the mesh never gets denser than the metric asks; halves of edges in (√2, 2)
+  // would be, while the coarse edges around them are still to be cut.
+  const auto beyond_two = std::partition_point(candidates.begin(), candidates.end(), [](const EdgeCandidate& c) { return c.length > 2; });
+  if (static_cast<double>(beyond_two - candidates.begin()) > kCoarsePhaseShare * static_cast<double>(candidates.size()))
+    candidates.erase(beyond_two, candidates.end());
   OperationCount count;
   SplitScratch<D> scratch;
   for (const EdgeCandidate& c : candidates) {
