@@ -156,7 +156,8 @@ Refusal swap_edge_shell(AdaptationMesh<D>& am, const SwapCandidate<2>& edge, Swa
 Refusal swap_face(AdaptationMesh<3>& am, const SwapCandidate<3>& candidate, SwapScratch<3>& scratch, const AdaptationLimits& limits) {
   auto& work = am.workspace();
   const Mesh<3>& mesh = am.mesh();
-  const auto [a, b, c] = candidate.vertices;
+  // Named one by one: clang refuses a structured binding captured by a lambda.
+  const Index a = candidate.vertices[0], b = candidate.vertices[1], c = candidate.vertices[2];
   Index k = candidate.element;
   if (!still_holds(mesh, k, candidate.vertices)) {
     collect_shell(mesh, a, b, work.cavity);
