@@ -72,12 +72,12 @@ void AdaptationMesh<D>::move_vertex(Index v, const Vec<D>& x, std::span<const In
 }
 
 template <int D>
-double AdaptationMesh<D>::quality(const Element& element) const {
+double AdaptationMesh<D>::quality(const Element& element, Index moved, const Vec<D>& x, const SymMat<D>& metric_x) const {
   SimplexPoints<D> points;
   std::array<SymMat<D>, D + 1> metrics;
   for (int i = 0; i <= D; ++i) {
-    points[i] = mesh_.vertex(element[i]);
-    metrics[i] = metric(element[i]);
+    points[i] = element[i] == moved ? x : mesh_.vertex(element[i]);
+    metrics[i] = element[i] == moved ? metric_x : metric(element[i]);
   }
   return mean_metric_ratio<D>(points, metrics);
 }

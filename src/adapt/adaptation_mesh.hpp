@@ -84,7 +84,9 @@ class AdaptationMesh {
   }
   // The loop's quality (metric_measures.hpp) of any element, and of mesh element k: kept per
   // element (the most read figure of the loop), renewed by every commit and move.
-  double quality(const Element& element) const;
+  double quality(const Element& element) const { return quality(element, kNoIndex, {}, {}); }
+  // The same with vertex `moved` at x with metric `metric_x` (a trial move; kNoIndex: none).
+  double quality(const Element& element, Index moved, const Vec<D>& x, const SymMat<D>& metric_x) const;
   double quality(Index k) const { return mesh_.element_attribute(quality_attribute_, k); }
 
  private:

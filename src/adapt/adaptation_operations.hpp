@@ -98,9 +98,15 @@ std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<D>& mesh, double bo
 template <int D>
 void neighbors_in(std::span<const typename Mesh<D>::Element> elements, Index center, std::vector<Index>& out);
 
-// The range of the lengths of the edges from `center` to these vertices.
+// The range of the lengths of the edges to these vertices from a point x with metric `metric_x`
+// (a trial position of a vertex), and from vertex `center` where it is.
 template <int D>
-std::pair<double, double> length_range(const AdaptationMesh<D>& mesh, Index center, std::span<const Index> neighbors);
+std::pair<double, double> length_range_from(const AdaptationMesh<D>& mesh, const Vec<D>& x, const SymMat<D>& metric_x,
+                                            std::span<const Index> neighbors);
+template <int D>
+std::pair<double, double> length_range(const AdaptationMesh<D>& mesh, Index center, std::span<const Index> neighbors) {
+  return length_range_from<D>(mesh, mesh.mesh().vertex(center), mesh.metric(center), neighbors);
+}
 
 // Whether lengths in range `after` keep within the unit window [collapse, split] widened to what
 // `before` had: an operation may not create work for the next split or collapse (refine's closing

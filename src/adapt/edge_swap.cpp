@@ -281,10 +281,11 @@ void neighbors_in(std::span<const typename Mesh<D>::Element> elements, Index cen
 }
 
 template <int D>
-std::pair<double, double> length_range(const AdaptationMesh<D>& am, Index center, std::span<const Index> neighbors) {
+std::pair<double, double> length_range_from(const AdaptationMesh<D>& am, const Vec<D>& x, const SymMat<D>& metric_x,
+                                            std::span<const Index> neighbors) {
   std::pair<double, double> range{std::numeric_limits<double>::infinity(), 0.0};
   for (Index w : neighbors) {
-    const double length = am.edge_length(center, w);
+    const double length = metric_edge_length<D>(x, am.mesh().vertex(w), metric_x, am.metric(w));
     range = {std::min(range.first, length), std::max(range.second, length)};
   }
   return range;
@@ -300,8 +301,8 @@ template std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<2>&, doubl
 template std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<3>&, double, bool);
 template void neighbors_in<2>(std::span<const Mesh<2>::Element>, Index, std::vector<Index>&);
 template void neighbors_in<3>(std::span<const Mesh<3>::Element>, Index, std::vector<Index>&);
-template std::pair<double, double> length_range(const AdaptationMesh<2>&, Index, std::span<const Index>);
-template std::pair<double, double> length_range(const AdaptationMesh<3>&, Index, std::span<const Index>);
+template std::pair<double, double> length_range_from(const AdaptationMesh<2>&, const Vec<2>&, const SymMat<2>&, std::span<const Index>);
+template std::pair<double, double> length_range_from(const AdaptationMesh<3>&, const Vec<3>&, const SymMat<3>&, std::span<const Index>);
 template double worst_quality(const AdaptationMesh<2>&, std::span<const Index>);
 template double worst_quality(const AdaptationMesh<3>&, std::span<const Index>);
 template double worst_planned_quality(const AdaptationMesh<2>&, const CavityOperator<2>&);

@@ -6,8 +6,6 @@
 // its topology, so the move is checked by the quality itself: it is positive only for elements of
 // positive measure.
 #include <algorithm>
-#include <array>
-#include <limits>
 
 #include "adapt/adaptation_operations.hpp"
 #include "adapt/boundary_pieces.hpp"
@@ -72,22 +70,9 @@ bool facets_stay_close(const AdaptationMesh<D>& am, const SmoothingScratch<D>& s
 template <int D>
 bool move_passes(const AdaptationMesh<D>& am, Index v, const Vec<D>& x, const SymMat<D>& metric_x, const SmoothingScratch<D>& scratch,
                  double bar, std::pair<double, double> old_lengths, const AdaptationLimits& limits) {
-  const Mesh<D>& mesh = am.mesh();
-  for (const auto& element : scratch.elements) {
-    SimplexPoints<D> points;
-    std::array<SymMat<D>, D + 1> metrics;
-    for (int i = 0; i <= D; ++i) {
-      points[i] = element[i] == v ? x : mesh.vertex(element[i]);
-      metrics[i] = element[i] == v ? metric_x : am.metric(element[i]);
-    }
-    if (!(mean_metric_ratio<D>(points, metrics) > bar)) return false;
-  }
-  std::pair<double, double> lengths{std::numeric_limits<double>::infinity(), 0.0};
-  for (Index w : scratch.neighbors) {
-    const double length = metric_edge_length<D>(x, mesh.vertex(w), metric_x, am.metric(w));
-    lengths = {std::min(lengths.first, length), std::max(lengths.second, length)};
-  }
-  return lengths_stay_in_window(old_lengths, lengths, limits);
+  for (const auto& element : scratch.elements)
+    if (!(am.quality(element, v, x, metric_x) > bar)) return false;
+  return lengths_stay_in_window(old_lengths, length_range_from<D>(am, x, metric_x, scratch.neighbors), limits);
 }
 
 template <int D>

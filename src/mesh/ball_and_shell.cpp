@@ -62,17 +62,10 @@ Index turn_around_edge(const Mesh<D>& mesh, Index k, Index other) {
   return mesh.neighbor(k, local_vertex(mesh, k, other));
 }
 
-}  // namespace
-
+// The shell of (a, b) from element `start`, which holds both; inlined into both entry points below
+// (collect_shell is on the P2 cavity operator's hot path).
 template <int D>
-void collect_shell(const Mesh<D>& mesh, Index a, Index b, std::vector<Index>& shell) {
-  const Index start = element_of_edge(mesh, a, b, shell);
-  shell.clear();
-  if (start != kNoIndex) collect_shell_from(mesh, start, a, b, shell);
-}
-
-template <int D>
-void collect_shell_from(const Mesh<D>& mesh, Index start, Index a, Index b, std::vector<Index>& shell) {
+inline void walk_shell(const Mesh<D>& mesh, Index start, Index a, Index b, std::vector<Index>& shell) {
   shell.clear();
   shell.push_back(start);
   // Each element of the shell has D − 1 vertices besides a and b; the faces opposite them hold the
@@ -96,6 +89,20 @@ void collect_shell_from(const Mesh<D>& mesh, Index start, Index a, Index b, std:
     }
     if (k == start) break;  // closed shell: one way round found all
   }
+}
+
+}  // namespace
+
+template <int D>
+void collect_shell(const Mesh<D>& mesh, Index a, Index b, std::vector<Index>& shell) {
+  const Index start = element_of_edge(mesh, a, b, shell);
+  shell.clear();
+  if (start != kNoIndex) walk_shell(mesh, start, a, b, shell);
+}
+
+template <int D>
+void collect_shell_from(const Mesh<D>& mesh, Index start, Index a, Index b, std::vector<Index>& shell) {
+  walk_shell(mesh, start, a, b, shell);
 }
 
 template void collect_ball(const Mesh<2>&, Index, std::vector<Index>&);

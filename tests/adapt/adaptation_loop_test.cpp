@@ -40,6 +40,14 @@ std::map<int, double> boundary_measure_by_ref(const Mesh<D>& mesh) {
 }
 
 template <int D>
+AdaptationMetric<D> uniform_metric(double h) {
+  AnalyticMetricSpec spec;
+  spec.name = "uniform";
+  spec.h = h;
+  return AdaptationMetric<D>(spec, {});
+}
+
+template <int D>
 AdaptationMetric<D> linear_metric(double h_min) {
   AnalyticMetricSpec spec;
   spec.name = "linear";
@@ -138,10 +146,7 @@ TEST(AdaptationLoop, RequiredEdgesAndTrianglesAreKept) {
 
 TEST(AdaptationLoop, CoarseningAFineMeshInAUniformMetric) {
   Mesh<3> mesh = adapt_test::unit_mesh<3>(8);
-  AnalyticMetricSpec spec;
-  spec.name = "uniform";
-  spec.h = 0.3;
-  const AdaptationMetric<3> metric(spec, {});
+  const AdaptationMetric<3> metric = uniform_metric<3>(0.3);
   const Index before = mesh.element_count();
   expect_adapted<3>(mesh, metric, 0.8, 0.6, 0.1);
   EXPECT_LT(mesh.element_count(), before / 4);
@@ -162,10 +167,7 @@ TEST(AdaptationLoop, SizeBoundsClampTheMetric) {
 // cut, a collapse pass no short interior edge it could remove, and neither breaks the mesh.
 TEST(AdaptationPasses, SplitAndCollapseEachDoWhatTheySay) {
   Mesh<2> mesh = adapt_test::unit_mesh<2>(6);
-  AnalyticMetricSpec spec;
-  spec.name = "uniform";
-  spec.h = 0.05;
-  const AdaptationMetric<2> fine(spec, {});
+  const AdaptationMetric<2> fine = uniform_metric<2>(0.05);
   AdaptationMesh<2> am(mesh, fine, nullptr, 45);
   const AdaptationLimits limits;
   const Index before = mesh.vertex_count();
@@ -173,8 +175,7 @@ TEST(AdaptationPasses, SplitAndCollapseEachDoWhatTheySay) {
   EXPECT_GT(splits.done, 0);
   EXPECT_EQ(mesh.vertex_count(), before + splits.done);
   adapt_test::expect_closed_and_consistent(mesh);
-  spec.h = 0.5;
-  const AdaptationMetric<2> coarse(spec, {});
+  const AdaptationMetric<2> coarse = uniform_metric<2>(0.5);
   AdaptationMesh<2> coarse_am(mesh, coarse, nullptr, 45);
   const Index vertices = mesh.live_vertex_count();
   const OperationCount collapses = collapse_short_edges(coarse_am, limits);
@@ -194,10 +195,7 @@ void expect_kept_qualities_current(const AdaptationMesh<D>& am) {
 
 TEST(AdaptationPasses, KeptQualitiesFollowEveryOperation) {
   Mesh<3> mesh = adapt_test::unit_mesh<3>(4);
-  AnalyticMetricSpec spec;
-  spec.name = "linear";
-  spec.h_min = 0.05;
-  const AdaptationMetric<3> metric(spec, {});
+  const AdaptationMetric<3> metric = linear_metric<3>(0.05);
   AdaptationMesh<3> am(mesh, metric, nullptr, 45);
   const AdaptationLimits limits;
   expect_kept_qualities_current(am);
@@ -209,9 +207,7 @@ TEST(AdaptationPasses, KeptQualitiesFollowEveryOperation) {
   expect_kept_qualities_current(am);
   mesh.compact();
   expect_kept_qualities_current(am);
-  spec.name = "uniform";
-  spec.h = 0.5;
-  const AdaptationMetric<3> coarse(spec, {});
+  const AdaptationMetric<3> coarse = uniform_metric<3>(0.5);
   AdaptationMesh<3> coarse_am(mesh, coarse, nullptr, 45);
   EXPECT_GT(collapse_short_edges(coarse_am, limits).done, 0);
   expect_kept_qualities_current(coarse_am);
@@ -221,10 +217,7 @@ TEST(AdaptationPasses, KeptQualitiesFollowEveryOperation) {
 
 TEST(AdaptationPasses, SwapsAndSmoothingRaiseTheWorstQuality) {
   Mesh<3> mesh = adapt_test::unit_mesh<3>(3);
-  AnalyticMetricSpec spec;
-  spec.name = "linear";
-  spec.h_min = 0.05;
-  const AdaptationMetric<3> metric(spec, {});
+  const AdaptationMetric<3> metric = linear_metric<3>(0.05);
   AdaptationMesh<3> am(mesh, metric, nullptr, 45);
   const AdaptationLimits limits;
   const auto worst = [&] {
