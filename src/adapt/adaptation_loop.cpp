@@ -1,5 +1,6 @@
 #include "adapt/adaptation_loop.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <numbers>
 
@@ -24,15 +25,15 @@ auto timed(double& seconds, Step step) {
 // pass began (everything in the first pass), the second since the first began, so that a swap
 // refused once is retried only when its cavity has changed.
 template <int D>
-AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits, bool first) {
+AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits, bool first, ThreadPool& pool) {
   AdaptationPass pass;
   const int pass_start = am.start_pass();
   pass.collapses = timed(pass.seconds_collapse, [&] { return collapse_short_edges(am, limits); });
   const int first_swaps = am.tick();
-  pass.swaps = timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, first ? 0 : pass_start); });
+  pass.swaps = timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, first ? 0 : pass_start, pool); });
   pass.splits = timed(pass.seconds_split, [&] { return split_long_edges(am, limits); });
-  pass.swaps += timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, first_swaps); });
-  pass.moves = timed(pass.seconds_smooth, [&] { return smooth_vertices(am, limits); });
+  pass.swaps += timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, first_swaps, pool); });
+  pass.moves = timed(pass.seconds_smooth, [&] { return smooth_vertices(am, limits, pool); });
   timed(pass.seconds_compact, [&] { return am.mesh().compact(); });
   pass.vertices = am.mesh().vertex_count();
   pass.elements = am.mesh().element_count();
@@ -49,9 +50,10 @@ AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, 
   AdaptationLimits limits;
   limits.cos_feature_angle = std::cos(settings.feature_angle_degrees * std::numbers::pi / 180);
   limits.hausd = settings.hausd;
+  ThreadPool pool(std::max(1, settings.threads));
   AdaptationRun run;
   for (int pass = 1; pass <= settings.max_passes && !run.converged; ++pass) {
-    run.passes.push_back(run_pass(am, limits, pass == 1));
+    run.passes.push_back(run_pass(am, limits, pass == 1, pool));
     const AdaptationPass& last = run.passes.back();
     run.converged = last.splits.done + last.collapses.done <= kConvergedChange * last.vertices;
     if (settings.progress) settings.progress(pass, settings.max_passes);

@@ -15,6 +15,7 @@ struct AdaptationSettings {
   int max_passes = 20;
   double feature_angle_degrees = 45;  // boundary sides meeting at more are ridges (2D: corners)
   double hausd = 0;                   // > 0: new boundary facets stay within this of the geometry
+  int threads = 1;                    // the output does not depend on it
   // Called after each pass with its number (1-based) and the passes' cap, for progress.
   std::function<void(int, int)> progress;
 };

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "adapt/adaptation_mesh.hpp"
+#include "base/thread_pool.hpp"
 
 namespace hocav {
 
@@ -76,13 +77,16 @@ Refusal collapse_edge(AdaptationMesh<D>& mesh, Index removed, Index kept, const 
 // Swaps that raise the worst quality of their cavity: 2D edge flips; 3D edge-shell swaps n → 2n − 4
 // (the shell re-starred from its best vertex) and face swaps 2 → 3, around elements of quality below
 // 0.7 (2D: 0.9) with a vertex whose ball changed since clock `since` (AdaptationMesh::changed_since).
+// Swaps whose cavities share no vertex are judged on the pool's threads at once (the result does
+// not depend on the thread count).
 template <int D>
-OperationCount swap_for_quality(AdaptationMesh<D>& mesh, const AdaptationLimits& limits, int since);
+OperationCount swap_for_quality(AdaptationMesh<D>& mesh, const AdaptationLimits& limits, int since, ThreadPool& pool);
 
 // Moves interior vertices toward the point where their edges would be unit, when that raises the
-// worst quality of their ball.
+// worst quality of their ball; vertices whose balls share no element are tried on the pool's
+// threads at once (the result does not depend on the thread count).
 template <int D>
-OperationCount smooth_vertices(AdaptationMesh<D>& mesh, const AdaptationLimits& limits);
+OperationCount smooth_vertices(AdaptationMesh<D>& mesh, const AdaptationLimits& limits, ThreadPool& pool);
 
 // The edges of recently changed vertices (AdaptationMesh::changed_recently) whose length is above
 // `bound` (longer = true: longest first) or below it (shortest first); ties by vertex ids, so the

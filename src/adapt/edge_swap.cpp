@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "adapt/adaptation_operations.hpp"
+#include "adapt/conflict_batches.hpp"
 #include "mesh/ball_and_shell.hpp"
 
 namespace hocav {
@@ -26,9 +27,37 @@ constexpr double swap_quality() {
 
 template <int D>
 struct SwapScratch {
-  std::vector<Index> apexes, neighbors;
+  std::vector<Index> neighbors;
   std::vector<typename Mesh<D>::Element> old_elements, star;
   std::vector<std::array<Index, D>> faces;  // the cavity's boundary faces, as its elements orient them
+};
+
+// The cavity of a swap and its candidate apexes as gathered, with its elements' vertices then: the
+// cavity is still current while its slots hold them.
+template <int D>
+struct SwapCavity {
+  std::vector<Index> elements, apexes;
+  std::vector<typename Mesh<D>::Element> vertices;
+
+  bool current(const Mesh<D>& mesh) const {
+    if (elements.empty()) return false;
+    for (std::size_t i = 0; i < elements.size(); ++i)
+      if (elements[i] >= mesh.element_count() || mesh.element(elements[i]) != vertices[i]) return false;
+    return true;
+  }
+};
+
+// A sweep's state: per candidate its cavity as last gathered; the batch's candidates and chosen
+// apexes; a scratch per thread; per vertex the batch that took it; what waits for the next round.
+template <int D>
+struct SwapRound {
+  std::vector<SwapCavity<D>> cavities;
+  std::vector<Index> batch, chosen;
+  std::vector<SwapScratch<D>> scratch;
+  std::vector<int> taken;  // per vertex: the stamp of the batch whose cavity holds it
+  int stamp = 0;
+  std::vector<Index> waiting;  // candidates (by position) left for the next round
+  std::vector<Index> keys;
 };
 
 // Whether the apex's edges in the star keep within the length window of its edges in the cavity.
@@ -70,33 +99,29 @@ void predicted_star(std::span<const std::array<Index, D>> faces, Index apex, std
   }
 }
 
-// Tries each of scratch.apexes as the star's centre for the cavity in work.cavity; commits the best
-// if it beats the old worst quality by kSwapGain, keeps the apex's edges in the length window and
-// the cavity operator accepts it.
+// The best of the cavity's apexes as the centre of its star: the one whose star beats the old
+// worst quality by kSwapGain by the most and keeps the apex's edges in the length window
+// (kNoIndex: none). Reads the mesh only, so cavities that share no vertex are judged at once.
 template <int D>
-Refusal restar_best(AdaptationMesh<D>& am, SwapScratch<D>& scratch, const AdaptationLimits& limits) {
-  auto& work = am.workspace();
-  const double old_worst = worst_quality<D>(am, work.cavity);
-  if (old_worst >= swap_quality<D>()) return Refusal::kQuality;  // an earlier swap mended it
+Index best_apex(const AdaptationMesh<D>& am, const SwapCavity<D>& cavity, SwapScratch<D>& scratch, const AdaptationLimits& limits) {
+  const double old_worst = worst_quality<D>(am, cavity.elements);
+  if (old_worst >= swap_quality<D>()) return kNoIndex;  // an earlier swap mended it
   double best = kSwapGain * old_worst;
-  Index best_apex = kNoIndex;
+  Index chosen = kNoIndex;
   scratch.old_elements.clear();
-  for (Index k : work.cavity) scratch.old_elements.push_back(am.mesh().element(k));
-  cavity_faces<D>(am.mesh(), work.cavity, scratch.faces);
-  for (Index apex : scratch.apexes) {
+  for (Index k : cavity.elements) scratch.old_elements.push_back(am.mesh().element(k));
+  cavity_faces<D>(am.mesh(), cavity.elements, scratch.faces);
+  for (Index apex : cavity.apexes) {
     predicted_star<D>(scratch.faces, apex, scratch.star);
     double worst = std::numeric_limits<double>::infinity();
     for (const auto& element : scratch.star)
       if (worst = std::min(worst, am.quality(element)); worst <= best) break;  // this apex cannot win
     if (worst > best && apex_lengths_stay_in_window(am, apex, scratch, limits)) {
       best = worst;
-      best_apex = apex;
+      chosen = apex;
     }
   }
-  if (best_apex == kNoIndex) return Refusal::kQuality;
-  if (work.cavity_operator.plan(am.mesh(), work.cavity, best_apex, {}) != CavityStatus::kAccepted) return Refusal::kTopology;
-  am.commit(work.cavity_operator);
-  return Refusal::kNone;
+  return chosen;
 }
 
 // The vertices of the cavity's elements other than a and b.
@@ -138,31 +163,31 @@ struct SwapCandidate {
   bool operator==(const SwapCandidate& other) const { return vertices == other.vertices; }
 };
 
+// The shell of edge (a, b); refused on the boundary and when too small or too large.
 template <int D>
-Refusal swap_edge_shell(AdaptationMesh<D>& am, const SwapCandidate<2>& edge, SwapScratch<D>& scratch, const AdaptationLimits& limits) {
-  auto& work = am.workspace();
+Refusal gather_cavity(const Mesh<D>& mesh, const SwapCandidate<2>& edge, SwapCavity<D>& cavity) {
   const auto [a, b] = edge.vertices;
-  if (still_holds(am.mesh(), edge.element, edge.vertices))
-    collect_shell_from(am.mesh(), edge.element, a, b, work.cavity);
+  if (still_holds(mesh, edge.element, edge.vertices))
+    collect_shell_from(mesh, edge.element, a, b, cavity.elements);
   else
-    collect_shell(am.mesh(), a, b, work.cavity);
-  if (work.cavity.size() < (D == 2 ? 2u : 3u) || work.cavity.size() > kLargestSwappedShell || !shell_is_closed(am.mesh(), work.cavity, a, b))
+    collect_shell(mesh, a, b, cavity.elements);
+  if (cavity.elements.size() < (D == 2 ? 2u : 3u) || cavity.elements.size() > kLargestSwappedShell ||
+      !shell_is_closed(mesh, cavity.elements, a, b))
     return Refusal::kTopology;
-  other_vertices(am.mesh(), work.cavity, a, b, scratch.apexes);
-  return restar_best(am, scratch, limits);
+  other_vertices(mesh, cavity.elements, a, b, cavity.apexes);
+  return Refusal::kNone;
 }
 
-// 3D, 2 → 3: the elements on both sides of interior face (a, b, c), re-starred from either apex.
-Refusal swap_face(AdaptationMesh<3>& am, const SwapCandidate<3>& candidate, SwapScratch<3>& scratch, const AdaptationLimits& limits) {
-  auto& work = am.workspace();
-  const Mesh<3>& mesh = am.mesh();
+// 3D, 2 → 3: the elements on both sides of interior face (a, b, c), to re-star from either apex.
+Refusal gather_cavity(const Mesh<3>& mesh, const SwapCandidate<3>& candidate, SwapCavity<3>& cavity) {
   // Named one by one: clang refuses a structured binding captured by a lambda.
   const Index a = candidate.vertices[0], b = candidate.vertices[1], c = candidate.vertices[2];
   Index k = candidate.element;
   if (!still_holds(mesh, k, candidate.vertices)) {
-    collect_shell(mesh, a, b, work.cavity);
-    const auto through_c = std::find_if(work.cavity.begin(), work.cavity.end(), [&](Index e) { return local_vertex(mesh, e, c) >= 0; });
-    if (through_c == work.cavity.end()) return Refusal::kTopology;
+    collect_shell(mesh, a, b, cavity.elements);
+    const auto through_c =
+        std::find_if(cavity.elements.begin(), cavity.elements.end(), [&](Index e) { return local_vertex(mesh, e, c) >= 0; });
+    if (through_c == cavity.elements.end()) return Refusal::kTopology;
     k = *through_c;
   }
   // The face is the one of k opposite its fourth vertex; the other side is its neighbour.
@@ -170,18 +195,107 @@ Refusal swap_face(AdaptationMesh<3>& am, const SwapCandidate<3>& candidate, Swap
   while (face < 3 && (mesh.element(k)[face] == a || mesh.element(k)[face] == b || mesh.element(k)[face] == c)) ++face;
   const Index other = mesh.neighbor(k, face);
   if (other == kNoIndex || mesh.element_face_facet(k, face) != kNoIndex) return Refusal::kTopology;
-  work.cavity.clear();
-  work.cavity.push_back(k);
-  work.cavity.push_back(other);
-  other_vertices(mesh, work.cavity, a, b, scratch.apexes);
-  std::erase(scratch.apexes, c);
-  return restar_best(am, scratch, limits);
+  cavity.elements.assign({k, other});
+  other_vertices(mesh, cavity.elements, a, b, cavity.apexes);
+  std::erase(cavity.apexes, c);
+  return Refusal::kNone;
+}
+
+// The cavity of a candidate on the current mesh, with its elements' vertices.
+template <int D, std::size_t N>
+Refusal gather(const Mesh<D>& mesh, const SwapCandidate<N>& candidate, SwapCavity<D>& cavity) {
+  const Refusal refusal = gather_cavity(mesh, candidate, cavity);
+  cavity.vertices.clear();
+  if (refusal == Refusal::kNone)
+    for (Index k : cavity.elements) cavity.vertices.push_back(mesh.element(k));
+  else
+    cavity.elements.clear();
+  return refusal;
+}
+
+// One batch of swaps (docs/adaptation.md §Threads): each candidate's cavity gathered again if it
+// changed since; one that now shares a vertex with an earlier one of the batch waits for the next
+// round. The batch's cavities are judged on the pool's threads, then the chosen stars committed in
+// order.
+template <int D, std::size_t N>
+void swap_batch(AdaptationMesh<D>& am, std::span<const SwapCandidate<N>> candidates, std::span<const Index> batch, SwapRound<D>& round,
+                const AdaptationLimits& limits, ThreadPool& pool, OperationCount& count) {
+  ++round.stamp;
+  const auto taken = [&](Index v) { return round.taken[static_cast<std::size_t>(v)] == round.stamp; };
+  round.batch.clear();
+  for (Index item : batch) {
+    const SwapCandidate<N>& candidate = candidates[static_cast<std::size_t>(item)];
+    SwapCavity<D>& cavity = round.cavities[static_cast<std::size_t>(item)];
+    if (!cavity.current(am.mesh()))
+      if (const Refusal refusal = gather(am.mesh(), candidate, cavity); refusal != Refusal::kNone) {
+        count.add(refusal);
+        continue;
+      }
+    if (std::any_of(candidate.vertices.begin(), candidate.vertices.end(), taken) ||
+        std::any_of(cavity.apexes.begin(), cavity.apexes.end(), taken)) {
+      round.waiting.push_back(item);
+      continue;
+    }
+    for (Index v : candidate.vertices) round.taken[static_cast<std::size_t>(v)] = round.stamp;
+    for (Index v : cavity.apexes) round.taken[static_cast<std::size_t>(v)] = round.stamp;
+    round.batch.push_back(item);
+  }
+  const std::vector<Index>& judged = round.batch;
+  round.chosen.assign(judged.size(), kNoIndex);
+  pool.run(round.scratch.size(), [&](std::size_t worker) {
+    for (std::size_t i = worker; i < judged.size(); i += round.scratch.size())
+      round.chosen[i] = best_apex(am, round.cavities[static_cast<std::size_t>(judged[i])], round.scratch[worker], limits);
+  });
+  auto& work = am.workspace();
+  for (std::size_t i = 0; i < judged.size(); ++i) {
+    const SwapCavity<D>& cavity = round.cavities[static_cast<std::size_t>(judged[i])];
+    if (round.chosen[i] == kNoIndex) {
+      count.add(Refusal::kQuality);
+    } else if (work.cavity_operator.plan(am.mesh(), cavity.elements, round.chosen[i], {}) != CavityStatus::kAccepted) {
+      count.add(Refusal::kTopology);
+    } else {
+      am.commit(work.cavity_operator);
+      count.add(Refusal::kNone);
+    }
+  }
+}
+
+// Rounds of batches until every candidate is tried: a round gathers the cavities that changed and
+// colours the candidates by their cavities' vertices; what a batch or the colouring left waits for
+// the next round.
+template <int D, std::size_t N>
+void swap_all(AdaptationMesh<D>& am, std::span<const SwapCandidate<N>> candidates, SwapRound<D>& round, const AdaptationLimits& limits,
+              ThreadPool& pool, OperationCount& count) {
+  const Mesh<D>& mesh = am.mesh();
+  round.taken.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
+  round.cavities.assign(candidates.size(), {});
+  std::vector<Index> pending(candidates.size());
+  for (std::size_t i = 0; i < pending.size(); ++i) pending[i] = static_cast<Index>(i);
+  while (!pending.empty()) {
+    ConflictBatches coloring(mesh.vertex_count());
+    for (Index item : pending) {
+      const SwapCandidate<N>& candidate = candidates[static_cast<std::size_t>(item)];
+      SwapCavity<D>& cavity = round.cavities[static_cast<std::size_t>(item)];
+      if (!cavity.current(mesh))
+        if (const Refusal refusal = gather(mesh, candidate, cavity); refusal != Refusal::kNone) {
+          count.add(refusal);
+          continue;
+        }
+      round.keys.assign(candidate.vertices.begin(), candidate.vertices.end());
+      round.keys.insert(round.keys.end(), cavity.apexes.begin(), cavity.apexes.end());
+      coloring.place(item, round.keys);
+    }
+    round.waiting = coloring.overflow();
+    for (const std::vector<Index>& batch : coloring.batches()) swap_batch<D, N>(am, candidates, batch, round, limits, pool, count);
+    std::sort(round.waiting.begin(), round.waiting.end());
+    pending.swap(round.waiting);
+  }
 }
 
 }  // namespace
 
 template <int D>
-OperationCount swap_for_quality(AdaptationMesh<D>& am, const AdaptationLimits& limits, int since) {
+OperationCount swap_for_quality(AdaptationMesh<D>& am, const AdaptationLimits& limits, int since, ThreadPool& pool) {
   // Candidates by vertices (element ids move as cavities commit): the edges (and 3D faces) of the
   // elements below swap_quality() around recent changes.
   const Mesh<D>& mesh = am.mesh();
@@ -205,10 +319,10 @@ OperationCount swap_for_quality(AdaptationMesh<D>& am, const AdaptationLimits& l
   std::stable_sort(faces.begin(), faces.end());
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
   OperationCount count;
-  SwapScratch<D> scratch;
-  for (const SwapCandidate<2>& edge : edges) count.add(swap_edge_shell(am, edge, scratch, limits));
-  if constexpr (D == 3)
-    for (const SwapCandidate<3>& face : faces) count.add(swap_face(am, face, scratch, limits));
+  SwapRound<D> round;
+  round.scratch.resize(static_cast<std::size_t>(pool.thread_count()));
+  swap_all<D, 2>(am, edges, round, limits, pool, count);
+  if constexpr (D == 3) swap_all<D, 3>(am, faces, round, limits, pool, count);
   return count;
 }
 
@@ -295,8 +409,8 @@ bool lengths_stay_in_window(std::pair<double, double> before, std::pair<double, 
   return after.first >= std::min(limits.collapse_length, before.first) && after.second <= std::max(limits.split_length, before.second);
 }
 
-template OperationCount swap_for_quality(AdaptationMesh<2>&, const AdaptationLimits&, int);
-template OperationCount swap_for_quality(AdaptationMesh<3>&, const AdaptationLimits&, int);
+template OperationCount swap_for_quality(AdaptationMesh<2>&, const AdaptationLimits&, int, ThreadPool&);
+template OperationCount swap_for_quality(AdaptationMesh<3>&, const AdaptationLimits&, int, ThreadPool&);
 template std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<2>&, double, bool);
 template std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<3>&, double, bool);
 template void neighbors_in<2>(std::span<const Mesh<2>::Element>, Index, std::vector<Index>&);

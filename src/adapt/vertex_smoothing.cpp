@@ -9,6 +9,7 @@
 
 #include "adapt/adaptation_operations.hpp"
 #include "adapt/boundary_pieces.hpp"
+#include "adapt/conflict_batches.hpp"
 #include "mesh/ball_and_shell.hpp"
 
 namespace hocav {
@@ -40,7 +41,7 @@ Vec<D> unit_edge_target(const AdaptationMesh<D>& am, Index v, std::span<const In
 
 template <int D>
 struct SmoothingScratch {
-  std::vector<Index> ball, neighbors, facets;
+  std::vector<Index> neighbors, facets;
   std::vector<double> lengths;
   std::vector<typename Mesh<D>::Element> elements;
   std::vector<Vec<D>> facet_normals;  // before the move
@@ -75,10 +76,10 @@ bool move_passes(const AdaptationMesh<D>& am, Index v, const Vec<D>& x, const Sy
   return lengths_stay_in_window(old_lengths, length_range_from<D>(am, x, metric_x, scratch.neighbors), limits);
 }
 
+// Tries to move v (its ball: `ball`); changes only v, its metric and its ball's kept qualities, so
+// vertices whose balls share no element may be tried at the same time.
 template <int D>
-bool smooth_vertex(AdaptationMesh<D>& am, Index v, SmoothingScratch<D>& scratch, const AdaptationLimits& limits) {
-  std::vector<Index>& ball = scratch.ball;
-  collect_ball(am.mesh(), v, ball);
+bool smooth_vertex(AdaptationMesh<D>& am, Index v, std::span<const Index> ball, SmoothingScratch<D>& scratch, const AdaptationLimits& limits) {
   if (ball.empty()) return false;
   scratch.elements.clear();
   for (Index k : ball) scratch.elements.push_back(am.mesh().element(k));
@@ -104,27 +105,78 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, SmoothingScratch<D>& scratch,
       am.restore_vertex(v, start, start_metric, ball);
       continue;
     }
-    for (const auto& element : scratch.elements)
-      for (Index w : element) am.mark_changed(w);
     return true;
   }
   return false;
 }
 
+// The vertices a sweep tries, with their balls: smoothing keeps the topology, so the balls
+// gathered at the start hold to the end.
+struct SmoothingCandidates {
+  std::vector<Index> vertices, ball_start, balls;  // ball i: balls[ball_start[i] .. ball_start[i + 1])
+
+  std::span<const Index> ball(std::size_t i) const {
+    return std::span<const Index>(balls).subspan(static_cast<std::size_t>(ball_start[i]), static_cast<std::size_t>(ball_start[i + 1] - ball_start[i]));
+  }
+};
+
+// The recently changed interior and surface vertices, with their balls.
+template <int D>
+SmoothingCandidates smoothing_candidates(const AdaptationMesh<D>& am) {
+  SmoothingCandidates candidates;
+  std::vector<Index> ball;
+  candidates.ball_start.push_back(0);
+  for (Index v = 0; v < am.mesh().vertex_count(); ++v) {
+    if (am.mesh().vertex_removed(v) || am.vertex_class(v) > VertexClass::kSurface || !am.changed_recently(v)) continue;
+    collect_ball(am.mesh(), v, ball);
+    candidates.vertices.push_back(v);
+    candidates.balls.insert(candidates.balls.end(), ball.begin(), ball.end());
+    candidates.ball_start.push_back(static_cast<Index>(candidates.balls.size()));
+  }
+  return candidates;
+}
+
+// Tries the candidates at these positions in batches whose balls share no element
+// (docs/adaptation.md §Threads); returns the positions that found no batch, for the next round.
+template <int D>
+std::vector<Index> smooth_round(AdaptationMesh<D>& am, const SmoothingCandidates& candidates, std::span<const Index> positions,
+                                std::vector<SmoothingScratch<D>>& scratch, const AdaptationLimits& limits, ThreadPool& pool,
+                                OperationCount& count) {
+  ConflictBatches batches(am.mesh().element_count());
+  for (Index i : positions) batches.place(i, candidates.ball(static_cast<std::size_t>(i)));
+  std::vector<char> moved;
+  for (const std::vector<Index>& batch : batches.batches()) {
+    moved.assign(batch.size(), 0);
+    pool.run(scratch.size(), [&](std::size_t worker) {
+      for (std::size_t n = worker; n < batch.size(); n += scratch.size()) {
+        const auto i = static_cast<std::size_t>(batch[n]);
+        moved[n] = smooth_vertex(am, candidates.vertices[i], candidates.ball(i), scratch[worker], limits);
+      }
+    });
+    for (std::size_t n = 0; n < batch.size(); ++n) {
+      count.add(moved[n] ? Refusal::kNone : Refusal::kQuality);
+      if (moved[n])
+        for (Index k : candidates.ball(static_cast<std::size_t>(batch[n])))
+          for (Index w : am.mesh().element(k)) am.mark_changed(w);
+    }
+  }
+  return batches.overflow();
+}
+
 }  // namespace
 
 template <int D>
-OperationCount smooth_vertices(AdaptationMesh<D>& am, const AdaptationLimits& limits) {
+OperationCount smooth_vertices(AdaptationMesh<D>& am, const AdaptationLimits& limits, ThreadPool& pool) {
+  std::vector<SmoothingScratch<D>> scratch(static_cast<std::size_t>(pool.thread_count()));
   OperationCount count;
-  SmoothingScratch<D> scratch;
-  for (Index v = 0; v < am.mesh().vertex_count(); ++v) {
-    if (am.mesh().vertex_removed(v) || am.vertex_class(v) > VertexClass::kSurface || !am.changed_recently(v)) continue;
-    count.add(smooth_vertex(am, v, scratch, limits) ? Refusal::kNone : Refusal::kQuality);
-  }
+  const SmoothingCandidates candidates = smoothing_candidates(am);
+  std::vector<Index> positions(candidates.vertices.size());
+  for (std::size_t i = 0; i < positions.size(); ++i) positions[i] = static_cast<Index>(i);
+  while (!positions.empty()) positions = smooth_round(am, candidates, positions, scratch, limits, pool, count);
   return count;
 }
 
-template OperationCount smooth_vertices(AdaptationMesh<2>&, const AdaptationLimits&);
-template OperationCount smooth_vertices(AdaptationMesh<3>&, const AdaptationLimits&);
+template OperationCount smooth_vertices(AdaptationMesh<2>&, const AdaptationLimits&, ThreadPool&);
+template OperationCount smooth_vertices(AdaptationMesh<3>&, const AdaptationLimits&, ThreadPool&);
 
 }  // namespace hocav

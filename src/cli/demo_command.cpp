@@ -123,6 +123,7 @@ AdaptationReport run_sphere_shell(const DemoOptions& options, Written& written) 
   progress("adapting to it, then curving on " + std::to_string(options.threads) + " threads");
   AdaptationSettings adaptation;
   adaptation.hausd = 0.01 * bounding_box_diagonal(input);
+  adaptation.threads = options.threads;
   adaptation.progress = [](int pass, int cap) { progress("adapting: pass " + std::to_string(pass) + " (at most " + std::to_string(cap) + ")"); };
   CurvingSettings settings;
   settings.threads = options.threads;

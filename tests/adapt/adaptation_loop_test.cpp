@@ -97,6 +97,25 @@ TEST(AdaptationLoop, CubeInTheLinearMetricBecomesUnit) {
     }
 }
 
+// Threads change when work is done, never what is done: the same vertices, elements and facets.
+TEST(AdaptationLoop, OutputDoesNotDependOnTheThreadCount) {
+  const Mesh<3> input = adapt_test::unit_mesh<3>(4);
+  const AdaptationMetric<3> metric = linear_metric<3>(0.03);
+  std::vector<Mesh<3>> outputs;
+  for (int threads : {1, 2, 3}) {
+    outputs.push_back(input);
+    AdaptationSettings settings;
+    settings.threads = threads;
+    adapt_to_metric<3>(outputs.back(), metric, nullptr, settings);
+  }
+  for (std::size_t i = 1; i < outputs.size(); ++i) {
+    ASSERT_EQ(outputs[i].vertex_count(), outputs[0].vertex_count());
+    EXPECT_TRUE(std::ranges::equal(outputs[i].vertices(), outputs[0].vertices()));
+    EXPECT_TRUE(std::ranges::equal(outputs[i].elements(), outputs[0].elements()));
+    ASSERT_EQ(outputs[i].facet_count(), outputs[0].facet_count());
+  }
+}
+
 // The sorted vertex positions of a facet or line: what a required entity must still be after adapting.
 template <int D, std::size_t N>
 std::vector<std::array<double, D>> sorted_points(const Mesh<D>& mesh, const std::array<Index, N>& vertices) {
@@ -198,12 +217,13 @@ TEST(AdaptationPasses, KeptQualitiesFollowEveryOperation) {
   const AdaptationMetric<3> metric = linear_metric<3>(0.05);
   AdaptationMesh<3> am(mesh, metric, nullptr, 45);
   const AdaptationLimits limits;
+  ThreadPool pool(2);
   expect_kept_qualities_current(am);
   EXPECT_GT(split_long_edges(am, limits).done, 0);
   expect_kept_qualities_current(am);
-  EXPECT_GT(swap_for_quality(am, limits, 0).done, 0);
+  EXPECT_GT(swap_for_quality(am, limits, 0, pool).done, 0);
   expect_kept_qualities_current(am);
-  EXPECT_GT(smooth_vertices(am, limits).done, 0);
+  EXPECT_GT(smooth_vertices(am, limits, pool).done, 0);
   expect_kept_qualities_current(am);
   mesh.compact();
   expect_kept_qualities_current(am);
@@ -220,6 +240,7 @@ TEST(AdaptationPasses, SwapsAndSmoothingRaiseTheWorstQuality) {
   const AdaptationMetric<3> metric = linear_metric<3>(0.05);
   AdaptationMesh<3> am(mesh, metric, nullptr, 45);
   const AdaptationLimits limits;
+  ThreadPool pool(2);
   const auto worst = [&] {
     double q = 1;
     for (Index k = 0; k < mesh.element_count(); ++k) q = std::min(q, am.quality(k));
@@ -228,8 +249,8 @@ TEST(AdaptationPasses, SwapsAndSmoothingRaiseTheWorstQuality) {
   split_long_edges(am, limits);
   mesh.compact();
   const double before = worst();
-  const OperationCount swaps = swap_for_quality(am, limits, 0);
-  const OperationCount moves = smooth_vertices(am, limits);
+  const OperationCount swaps = swap_for_quality(am, limits, 0, pool);
+  const OperationCount moves = smooth_vertices(am, limits, pool);
   EXPECT_GT(swaps.done + moves.done, 0);
   EXPECT_GE(worst(), before);  // neither ever lowers the worst element of what it changes
   adapt_test::expect_closed_and_consistent(mesh);
