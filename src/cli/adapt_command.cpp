@@ -3,11 +3,14 @@
 //                [--jacobian-floor J] [--iterations N] [--threads N] [--report R.json] [--vtu V.vtu]
 // Metric-based adaptation to a unit mesh (split, collapse, swap, smooth; boundary points on the
 // geometry), then, with --order 2, the curving of `hocav curve` in the same metric.
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
 
 #include "base/memory_budget.hpp"
+#include "geom/sym_eigen.hpp"
 #include "cli/adaptation_driver.hpp"
 #include "cli/commands.hpp"
 #include "cli/number_checks.hpp"
@@ -46,19 +49,46 @@ struct RunMetric {
   std::optional<AdaptationMetric<D>> metric;
 };
 
+// Sizes below this share of the input's bounding-box diagonal are never asked for: elements that
+// small lose the digits their orientation and volume tests need, and the loop could not converge.
+constexpr double kSmallestRelativeSize = 1e-6;
+
+// The smallest size the metric asks at the input's vertices.
+template <int D>
+double smallest_size_at_vertices(const Mesh<D>& input, const AdaptationMetric<D>& metric) {
+  double largest_eigenvalue = 0;
+  Index hint = kNoIndex;
+  for (const Vec<D>& x : input.vertices()) {
+    const SymEigen<D> eigen = spd_eigen(metric.metric_at(x, hint));
+    for (int k = 0; k < D; ++k) largest_eigenvalue = std::max(largest_eigenvalue, eigen.values[k]);
+  }
+  return 1 / std::sqrt(largest_eigenvalue);
+}
+
+template <int D>
+AdaptationMetric<D> metric_within(const RunMetric<D>& run, const AdaptOptions& o, const SizeBounds& bounds) {
+  if (run.field) return AdaptationMetric<D>(*run.field, bounds);
+  AnalyticMetricSpec spec;
+  spec.name = o.analytic;
+  return AdaptationMetric<D>(spec, bounds);
+}
+
 template <int D>
 void make_run_metric(RunMetric<D>& run, const Mesh<D>& input, const MeshFileContent& file, const AdaptOptions& o) {
-  const SizeBounds bounds{o.h_min.value_or(0), o.h_max.value_or(1e300)};
-  if (!o.analytic.empty()) {
-    AnalyticMetricSpec spec;
-    spec.name = o.analytic;
-    run.metric.emplace(spec, bounds);
-    return;
+  if (o.analytic.empty()) {
+    std::vector<SymMat<D>> metrics = metrics_of_rows<D>(read_metric_for_mesh(o.metric, file, false));
+    if (o.gradation) grade_metrics(input, metrics, {*o.gradation});
+    run.field.emplace(input, metrics);
   }
-  std::vector<SymMat<D>> metrics = metrics_of_rows<D>(read_metric_for_mesh(o.metric, file, false));
-  if (o.gradation) grade_metrics(input, metrics, {*o.gradation});
-  run.field.emplace(input, metrics);
-  run.metric.emplace(*run.field, bounds);
+  SizeBounds bounds{o.h_min.value_or(0), o.h_max.value_or(1e300)};
+  const double floor = kSmallestRelativeSize * bounding_box_diagonal(input);
+  const double smallest = std::min(bounds.h_min > 0 ? bounds.h_min : 1e300, smallest_size_at_vertices(input, metric_within(run, o, bounds)));
+  if (smallest < floor) {
+    std::cerr << "hocav adapt: warning: " << (o.analytic.empty() ? o.metric : "--analytic " + o.analytic) << ": sizes down to "
+              << smallest << " asked, below what the geometry allows; clamped to " << floor << " (1e-6 of the input's diagonal)\n";
+    bounds.h_min = std::min(floor, bounds.h_max);
+  }
+  run.metric.emplace(metric_within(run, o, bounds));
 }
 
 // The output's element count the metric asks for: its complexity ∫ √det M over the input (the
@@ -104,6 +134,7 @@ void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, Ou
   AdaptationSettings settings;
   settings.max_passes = o.iterations;
   settings.feature_angle_degrees = o.angle;
+  settings.threads = o.threads;
   settings.hausd = o.hausd_given.value_or(o.hausd * bounding_box_diagonal(input));
   if (!o.quiet) settings.progress = [](int pass, int cap) { std::cerr << "adapting: pass " << pass << " (at most " << cap << ")\n"; };
   std::optional<CurvingSettings> curving;
@@ -173,7 +204,7 @@ void add_adapt_command(CLI::App& app) {
   command->add_option("--iterations", o->iterations, "at most this many passes of the adaptation loop")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
-  command->add_option("--threads", o->threads, "threads of the curving (the output does not depend on it)")
+  command->add_option("--threads", o->threads, "threads of the smoothing and the curving (the output does not depend on it)")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
   command->add_option("--report", o->report, "write the run's figures (passes, lengths, qualities, Table-1 columns) as JSON");

@@ -47,6 +47,22 @@ TEST_F(AdaptCli, StoppingAtTheIterationCapIsWarnedOf) {
   EXPECT_EQ(converged.err.find("warning"), std::string::npos) << converged.err;
 }
 
+// Sizes below 1e-6 of the input's diagonal cannot be built reliably in double precision: asked
+// for by the metric file or by --hmin, they are clamped with a warning, and the run goes on.
+TEST_F(AdaptCli, SizesBelowWhatTheGeometryAllowsAreClampedWithAWarning) {
+  run_ok("generate square --h 0.1 -o square.meshb");
+  run_ok("metric square.meshb --analytic linear --h-min 1e-9 -o tiny.solb");
+  const Outcome tiny = run("adapt square.meshb --metric tiny.solb -o tiny.meshb --order 1 --iterations 2 -q");
+  EXPECT_EQ(tiny.exit_code, 0);
+  EXPECT_NE(tiny.err.find("warning: tiny.solb: sizes down to 1e-09 asked, below what the geometry allows; clamped to 1.41421e-06"),
+            std::string::npos)
+      << tiny.err;
+  const Outcome hmin = run("adapt square.meshb --analytic linear --hmin 1e-12 -o hmin.meshb --order 1 --iterations 1 -q");
+  EXPECT_NE(hmin.err.find("warning: --analytic linear: sizes down to 1e-12 asked"), std::string::npos) << hmin.err;
+  const Outcome fine = run("adapt square.meshb --analytic linear --hmin 0.01 -o fine.meshb --order 1 --iterations 1 -q");
+  EXPECT_EQ(fine.err.find("below what the geometry allows"), std::string::npos) << fine.err;
+}
+
 TEST_F(AdaptCli, OutputDoesNotDependOnTheThreadCount) {
   run_ok("generate square --h 0.1 -o square.meshb");
   run_ok("adapt square.meshb --analytic linear --hmin 0.02 -o one.meshb --threads 1 -q");
