@@ -16,10 +16,21 @@ bool ConflictBatches::place(Index item, std::span<const Index> keys) {
     overflow_.push_back(item);
     return false;
   }
-  for (Index key : keys) taken_[static_cast<std::size_t>(key)] |= std::uint64_t{1} << batch;
+  for (Index key : keys) {
+    std::uint64_t& bits = taken_[static_cast<std::size_t>(key)];
+    if (bits == 0) touched_.push_back(key);
+    bits |= std::uint64_t{1} << batch;
+  }
   if (batch == batches_.size()) batches_.emplace_back();
   batches_[batch].push_back(item);
   return true;
+}
+
+void ConflictBatches::clear() {
+  for (Index key : touched_) taken_[static_cast<std::size_t>(key)] = 0;
+  touched_.clear();
+  batches_.clear();
+  overflow_.clear();
 }
 
 }  // namespace hocav

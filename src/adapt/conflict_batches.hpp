@@ -17,6 +17,9 @@ class ConflictBatches {
   // Keys are in [0, key_count).
   explicit ConflictBatches(Index key_count) : taken_(static_cast<std::size_t>(key_count), 0) {}
 
+  // Forgets every item placed, at the cost of the keys they touched (a round after another).
+  void clear();
+
   // Places item `item` (touching `keys`) in the first batch free of them; false when none of the
   // 64 batches is (the item is then among overflow(), for the caller's next round).
   bool place(Index item, std::span<const Index> keys);
@@ -26,6 +29,7 @@ class ConflictBatches {
 
  private:
   std::vector<std::uint64_t> taken_;  // per key: a bit per batch that touches it
+  std::vector<Index> touched_;        // the keys whose bits are set
   std::vector<std::vector<Index>> batches_;
   std::vector<Index> overflow_;
 };

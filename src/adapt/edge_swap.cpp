@@ -16,6 +16,10 @@ namespace {
 // elements succeeded, against 1 in 100 of 6 and 1 in 5 of 4.
 constexpr std::size_t kLargestSwappedShell = 6;
 
+// Candidates are swept this many at a time, so that the cavities kept for them take little memory
+// whatever the mesh's size (a chunk's batches still hold hundreds of cavities each).
+constexpr std::size_t kSweepChunk = 16384;
+
 // A swap must beat the worst quality it replaces by this factor: no swap undoes another.
 constexpr double kSwapGain = 1.05;
 // Elements below this quality have their edges (and 3D faces) tried: mmg's optimization threshold in
@@ -58,6 +62,9 @@ struct SwapRound {
   int stamp = 0;
   std::vector<Index> waiting;  // candidates (by position) left for the next round
   std::vector<Index> keys;
+  ConflictBatches coloring;  // keys: vertices
+
+  explicit SwapRound(Index vertex_count) : taken(static_cast<std::size_t>(vertex_count), 0), coloring(vertex_count) {}
 };
 
 // Whether the apex's edges in the star keep within the length window of its edges in the cavity.
@@ -260,19 +267,20 @@ void swap_batch(AdaptationMesh<D>& am, std::span<const SwapCandidate<N>> candida
   }
 }
 
-// Rounds of batches until every candidate is tried: a round gathers the cavities that changed and
+// Rounds of batches until every candidate of a chunk is tried: a round gathers the cavities that changed and
 // colours the candidates by their cavities' vertices; what a batch or the colouring left waits for
 // the next round.
 template <int D, std::size_t N>
 void swap_all(AdaptationMesh<D>& am, std::span<const SwapCandidate<N>> candidates, SwapRound<D>& round, const AdaptationLimits& limits,
               ThreadPool& pool, OperationCount& count) {
   const Mesh<D>& mesh = am.mesh();
-  round.taken.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
-  round.cavities.assign(candidates.size(), {});
+  round.cavities.resize(candidates.size());
+  for (SwapCavity<D>& cavity : round.cavities) cavity.elements.clear();  // none gathered yet
   std::vector<Index> pending(candidates.size());
   for (std::size_t i = 0; i < pending.size(); ++i) pending[i] = static_cast<Index>(i);
   while (!pending.empty()) {
-    ConflictBatches coloring(mesh.vertex_count());
+    ConflictBatches& coloring = round.coloring;
+    coloring.clear();
     for (Index item : pending) {
       const SwapCandidate<N>& candidate = candidates[static_cast<std::size_t>(item)];
       SwapCavity<D>& cavity = round.cavities[static_cast<std::size_t>(item)];
@@ -319,10 +327,13 @@ OperationCount swap_for_quality(AdaptationMesh<D>& am, const AdaptationLimits& l
   std::stable_sort(faces.begin(), faces.end());
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
   OperationCount count;
-  SwapRound<D> round;
+  SwapRound<D> round(mesh.vertex_count());
   round.scratch.resize(static_cast<std::size_t>(pool.thread_count()));
-  swap_all<D, 2>(am, edges, round, limits, pool, count);
-  if constexpr (D == 3) swap_all<D, 3>(am, faces, round, limits, pool, count);
+  for (std::size_t start = 0; start < edges.size(); start += kSweepChunk)
+    swap_all<D, 2>(am, std::span(edges).subspan(start, std::min(kSweepChunk, edges.size() - start)), round, limits, pool, count);
+  if constexpr (D == 3)
+    for (std::size_t start = 0; start < faces.size(); start += kSweepChunk)
+      swap_all<D, 3>(am, std::span(faces).subspan(start, std::min(kSweepChunk, faces.size() - start)), round, limits, pool, count);
   return count;
 }
 

@@ -140,9 +140,9 @@ SmoothingCandidates smoothing_candidates(const AdaptationMesh<D>& am) {
 // (docs/adaptation.md §Threads); returns the positions that found no batch, for the next round.
 template <int D>
 std::vector<Index> smooth_round(AdaptationMesh<D>& am, const SmoothingCandidates& candidates, std::span<const Index> positions,
-                                std::vector<SmoothingScratch<D>>& scratch, const AdaptationLimits& limits, ThreadPool& pool,
-                                OperationCount& count) {
-  ConflictBatches batches(am.mesh().element_count());
+                                ConflictBatches& batches, std::vector<SmoothingScratch<D>>& scratch, const AdaptationLimits& limits,
+                                ThreadPool& pool, OperationCount& count) {
+  batches.clear();
   for (Index i : positions) batches.place(i, candidates.ball(static_cast<std::size_t>(i)));
   std::vector<char> moved;
   for (const std::vector<Index>& batch : batches.batches()) {
@@ -172,7 +172,8 @@ OperationCount smooth_vertices(AdaptationMesh<D>& am, const AdaptationLimits& li
   const SmoothingCandidates candidates = smoothing_candidates(am);
   std::vector<Index> positions(candidates.vertices.size());
   for (std::size_t i = 0; i < positions.size(); ++i) positions[i] = static_cast<Index>(i);
-  while (!positions.empty()) positions = smooth_round(am, candidates, positions, scratch, limits, pool, count);
+  ConflictBatches batches(am.mesh().element_count());  // keys: elements
+  while (!positions.empty()) positions = smooth_round(am, candidates, positions, batches, scratch, limits, pool, count);
   return count;
 }
 

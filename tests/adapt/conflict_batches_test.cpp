@@ -40,6 +40,10 @@ TEST(ConflictBatches, AnItemGoesToTheFirstFreeBatchAndOverflowsAfterSixtyFour) {
   const Index other[2] = {4, 5};
   EXPECT_TRUE(batches.place(66, other));
   EXPECT_EQ(batches.batches()[0], (std::vector<Index>{0, 66}));
+  batches.clear();  // a new round: every key free again
+  EXPECT_TRUE(batches.batches().empty() && batches.overflow().empty());
+  EXPECT_TRUE(batches.place(67, shared));
+  EXPECT_EQ(batches.batches().size(), 1u);
 }
 
 }  // namespace
