@@ -28,7 +28,7 @@ template <int D>
 AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits, bool first, ThreadPool& pool) {
   AdaptationPass pass;
   const int pass_start = am.start_pass();
-  pass.collapses = timed(pass.seconds_collapse, [&] { return collapse_short_edges(am, limits); });
+  pass.collapses = timed(pass.seconds_collapse, [&] { return collapse_short_edges(am, limits, pool); });
   const int first_swaps = am.tick();
   pass.swaps = timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, first ? 0 : pass_start, pool); });
   pass.splits = timed(pass.seconds_split, [&] { return split_long_edges(am, limits); });

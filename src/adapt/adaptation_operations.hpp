@@ -60,15 +60,16 @@ template <int D>
 OperationCount split_long_edges(AdaptationMesh<D>& mesh, const AdaptationLimits& limits);
 
 // Collapses edges shorter than collapse_length, shortest first, one end onto the other when the
-// classes allow it and no new edge is longer than split_length.
+// classes allow it and no new edge is longer than split_length. The tests before each plan run on
+// the pool's threads (the result does not depend on the thread count).
 template <int D>
-OperationCount collapse_short_edges(AdaptationMesh<D>& mesh, const AdaptationLimits& limits);
+OperationCount collapse_short_edges(AdaptationMesh<D>& mesh, const AdaptationLimits& limits, ThreadPool& pool);
 
 // Collapses `removed` onto `kept` (an edge) when the classes, the cavity operator and the tests
 // of collapse_short_edges allow it.
 template <int D>
 struct CollapseScratch {
-  std::vector<Index> facets, lines;
+  std::vector<Index> ball, facets, lines;
   std::vector<typename Mesh<D>::Element> star;
 };
 template <int D>

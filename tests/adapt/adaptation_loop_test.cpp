@@ -189,6 +189,7 @@ TEST(AdaptationPasses, SplitAndCollapseEachDoWhatTheySay) {
   const AdaptationMetric<2> fine = uniform_metric<2>(0.05);
   AdaptationMesh<2> am(mesh, fine, nullptr, 45);
   const AdaptationLimits limits;
+  ThreadPool pool(2);
   const Index before = mesh.vertex_count();
   const OperationCount splits = split_long_edges(am, limits);
   EXPECT_GT(splits.done, 0);
@@ -197,7 +198,7 @@ TEST(AdaptationPasses, SplitAndCollapseEachDoWhatTheySay) {
   const AdaptationMetric<2> coarse = uniform_metric<2>(0.5);
   AdaptationMesh<2> coarse_am(mesh, coarse, nullptr, 45);
   const Index vertices = mesh.live_vertex_count();
-  const OperationCount collapses = collapse_short_edges(coarse_am, limits);
+  const OperationCount collapses = collapse_short_edges(coarse_am, limits, pool);
   EXPECT_GT(collapses.done, 0);
   EXPECT_EQ(mesh.live_vertex_count(), vertices - collapses.done);
   adapt_test::expect_closed_and_consistent(mesh);
@@ -229,7 +230,7 @@ TEST(AdaptationPasses, KeptQualitiesFollowEveryOperation) {
   expect_kept_qualities_current(am);
   const AdaptationMetric<3> coarse = uniform_metric<3>(0.5);
   AdaptationMesh<3> coarse_am(mesh, coarse, nullptr, 45);
-  EXPECT_GT(collapse_short_edges(coarse_am, limits).done, 0);
+  EXPECT_GT(collapse_short_edges(coarse_am, limits, pool).done, 0);
   expect_kept_qualities_current(coarse_am);
   mesh.compact();
   expect_kept_qualities_current(coarse_am);
