@@ -204,7 +204,7 @@ void add_adapt_command(CLI::App& app) {
   command->add_option("--iterations", o->iterations, "at most this many passes of the adaptation loop")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
-  command->add_option("--threads", o->threads, "threads of the smoothing and the curving (the output does not depend on it)")
+  command->add_option("--threads", o->threads, "threads of the swaps, smoothing, collapse tests and curving (the output does not depend on it)")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
   command->add_option("--report", o->report, "write the run's figures (passes, lengths, qualities, Table-1 columns) as JSON");
