@@ -5,6 +5,7 @@
 #include <chrono>
 #include <optional>
 
+#include "adapt/proposal_completion.hpp"
 #include "adapt/proposal_node_source.hpp"
 
 namespace hocav {
@@ -33,9 +34,16 @@ CurvingRun curve_with_boundary(Mesh<D>& mesh, const MetricField<D>& field, const
   run.proposal_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - proposal_start).count();
   const Index points_before = mesh.vertex_count();
   const double processor_start = processor_seconds();
-  const ReinsertionResult result = curve_by_reinsertion<D>(mesh, field, boundary_nodes ? &*boundary_nodes : nullptr, options);
+  ReinsertionResult result = curve_by_reinsertion<D>(mesh, field, boundary_nodes ? &*boundary_nodes : nullptr, options);
+  ProposalCompletion completion;
+  if (proposals) {
+    completion = complete_boundary_proposals<D>(
+        mesh, *proposals, {.jacobian_floor = options.cavity.jacobian_floor, .correction_steps = options.cavity.correction_steps});
+    result.seconds += completion.seconds;
+  }
   run.cpu_seconds = processor_seconds() - processor_start;
   run.report = make_curving_report(mesh, field, points_before, result, proposals ? static_cast<Index>(proposals->size()) : 0);
+  run.report.boundary_completion = completion;
   run.report.threads = options.threads;
   return run;
 }

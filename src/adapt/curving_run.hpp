@@ -1,6 +1,7 @@
 // One curving of a mesh in its metric, as `hocav curve`, `hocav demo` and `hocav bench` run it:
 // boundary proposals from a geometry (none: boundary nodes stay), every volume vertex reinserted
-// by the P2 cavity operator, the output measured.
+// by the P2 cavity operator, the proposals no cavity consumed placed by a last pass
+// (proposal_completion.hpp; its time counts in the curving time), the output measured.
 #pragma once
 
 #include "adapt/reinsertion_curving.hpp"

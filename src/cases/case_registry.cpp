@@ -4,6 +4,7 @@
 
 #include "cases/concentric_shell.hpp"
 #include "cases/cubed_sphere_shell.hpp"
+#include "cases/machined_part.hpp"
 #include "cases/parameter_checks.hpp"
 #include "cases/polar_annulus.hpp"
 #include "cases/shear_circle_case.hpp"
@@ -102,6 +103,17 @@ CaseDefinition shear_circle_definition() {
           write_shell_model<2>};
 }
 
+MachinedPartParameters part_parameters(const CaseValues& values) { return {values.at("h"), values.at("wall")}; }
+
+CaseDefinition machined_part_definition() {
+  return {"part",
+          "a machined part (gmsh OpenCASCADE): block with rounded corners, a slanted face, a through hole, a spherical "
+          "pocket and a thin-walled pocket with a filleted floor; facet refs = CAD surface tags",
+          3, {size_option(0.03), {"wall", "thickness of the pocket's side walls", 0.03}},
+          [](const CaseValues& values) { return AnyMesh(generate_machined_part(part_parameters(values))); },
+          [](const CaseValues& values, const std::string& path) { write_machined_part_cad(part_parameters(values), path); }};
+}
+
 std::vector<CaseDefinition> make_definitions() {
   std::vector<CaseDefinition> definitions{
       {"square", "unit square [0,1]^2, right triangles; facet refs 1 bottom, 2 right, 3 top, 4 left", 2,
@@ -121,6 +133,7 @@ std::vector<CaseDefinition> make_definitions() {
   add_layered_shells(definitions, 2);
   definitions.push_back(shear_circle_definition());
   add_layered_shells(definitions, 3);
+  definitions.push_back(machined_part_definition());
   return definitions;
 }
 

@@ -101,6 +101,13 @@ void write_curving_report_object(JsonWriter& json, const CurvingReport& report) 
   json.member("average_gain", report.average_gain);
   json.member("max_gain", report.max_gain);
   json.member("boundary_proposals_left", report.boundary_proposals_left);
+  const ProposalCompletion& b = report.boundary_completion;
+  json.key("boundary_completion").begin_object();
+  json.member("placed", b.placed).member("already_placed", b.already_placed);
+  json.member("pulled_back", b.pulled_back).member("blocked", b.blocked).member("absent", b.absent);
+  json.member("largest_gap", b.largest_gap).member("elements_certified", b.elements_certified);
+  json.member("sweeps", b.sweeps).member("seconds", b.seconds);
+  json.end_object();
   const P2CavityCounters& c = report.counters;
   json.key("cavities").begin_object();
   json.member("tried", c.cavities).member("accepted", c.accepted);
@@ -140,6 +147,9 @@ void write_curving_report_table(std::ostream& out, const CurvingReport& report) 
       report.counters.certificates_kept);
   row("corrections", "%lld", report.counters.corrections);
   row("boundary nodes applied / left", "%lld / %d", report.counters.boundary_nodes_applied, report.boundary_proposals_left);
+  const ProposalCompletion& b = report.boundary_completion;
+  row("  placed by the last pass", "%d (+%d already there)", b.placed, b.already_placed);
+  row("  left: pulled back / blocked", "%d / %d (largest gap %.2g)", b.pulled_back, b.blocked, b.largest_gap);
 }
 
 template std::vector<double> volume_edge_gains(const Mesh<2>&, const MetricField<2>&);

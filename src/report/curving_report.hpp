@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "adapt/proposal_completion.hpp"
 #include "adapt/reinsertion_curving.hpp"
 #include "bezier/mesh_quality.hpp"
 #include "report/json_writer.hpp"
@@ -23,7 +24,8 @@ struct CurvingReport {
   ValueSummary normalized_jacobian;       // per element: min of J / |J_straight|
   ValueSummary scaled_jacobian;           // per element: min J / max J (gmsh's measure)
   double average_gain = 0, max_gain = 0;  // over volume edges: 1 − ℓ(curved) / ℓ(straight), 16-point Gauss
-  Index boundary_proposals_left = 0;      // proposals no cavity consumed
+  Index boundary_proposals_left = 0;      // proposals neither a cavity nor the last pass consumed
+  ProposalCompletion boundary_completion;  // the last pass over the proposals the cavities left
   P2CavityCounters counters;
   int threads = 1;
 };

@@ -25,7 +25,21 @@ BoundaryProposals<D>::BoundaryProposals(const Mesh<D>& mesh, const BoundaryGeome
     }
   }
   nodes_.resize(edges.size());
-  for (std::size_t i = 0; i < edges.size(); ++i) nodes_[i] = geometry.propose_edge_node(edges[i]);
+  ends_.resize(edges.size());
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    nodes_[i] = geometry.propose_edge_node(edges[i]);
+    ends_[i] = {edges[i].a, edges[i].b};
+  }
+}
+
+template <int D>
+std::vector<typename BoundaryProposals<D>::Left> BoundaryProposals<D>::left() const {
+  std::vector<Left> waiting;
+  for (std::size_t slot = 0; slot < ends_.size(); ++slot) {
+    const auto [a, b] = ends_[slot];
+    if (slot_of_edge_.find(Mesh<D>::edge_key(a, b)) != kNoIndex) waiting.push_back({a, b, nodes_[slot]});
+  }
+  return waiting;
 }
 
 template <int D>

@@ -30,8 +30,17 @@ class BoundaryProposals {
   // Returns the proposal for edge (a, b) and removes it from the table.
   std::optional<Vec<D>> take(Index a, Index b);
 
+  // A proposal not consumed yet.
+  struct Left {
+    Index a, b;
+    Vec<D> node;
+  };
+  // The proposals not consumed yet, in the order of the mesh's facets when the table was made.
+  std::vector<Left> left() const;
+
  private:
   IndexHashMap slot_of_edge_;
+  std::vector<std::array<Index, 2>> ends_;
   std::vector<Vec<D>> nodes_;
 };
 

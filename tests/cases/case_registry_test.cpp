@@ -21,7 +21,7 @@ TEST(Cases, RegistryHoldsTheDocumentedCases) {
   }
   EXPECT_EQ(names, (std::set<std::string>{"square", "cube", "annulus", "sphere-shell", "polar-annulus",
                                           "polar-annulus-bl-inner", "polar-annulus-bl-both", "shear-circle", "cubed-shell",
-                                          "cubed-shell-bl-inner", "cubed-shell-bl-both"}));
+                                          "cubed-shell-bl-inner", "cubed-shell-bl-both", "part"}));
   EXPECT_EQ(find_case("annulus").dimension, 2);
   EXPECT_EQ(find_case("sphere-shell").dimension, 3);
   EXPECT_EQ(find_case("shear-circle").dimension, 2);

@@ -1,0 +1,39 @@
+// The last step of `hocav curve` with a boundary geometry (docs/curving.md, "Boundary edges no
+// cavity reaches"): the reinsertion gives a boundary edge its proposed node only when a volume
+// vertex's ball holds one of the edge's elements, which misses every edge whose elements have all
+// their vertices on the boundary (along ridges, in thin walls), and a cavity may have applied a
+// proposal only in part. This pass takes every proposal left, in a fixed order, and moves its edge's
+// node toward it: in full when every element around the edge certifies above the Jacobian floor,
+// else by the largest fraction (bisection) that does. Sweeps repeat while they make progress, since
+// a node placed may free a neighbour blocked by an element they share.
+#pragma once
+
+#include "mesh/mesh.hpp"
+#include "surface/boundary_proposals.hpp"
+
+namespace hocav {
+
+struct ProposalCompletion {
+  Index placed = 0;          // proposals applied in full (consumed)
+  Index already_placed = 0;  // the edge's node was the proposal already (consumed)
+  Index pulled_back = 0;     // left: moved only part of the way, the Jacobian floor forbids more
+  Index blocked = 0;         // left: not moved at all (an element around the edge fails at any fraction)
+  Index absent = 0;          // left: the edge is not in the mesh any more
+  double largest_gap = 0;    // the largest distance left between a node and its proposal
+  long long elements_certified = 0;
+  int sweeps = 0;
+  double seconds = 0;
+};
+
+struct ProposalCompletionOptions {
+  double jacobian_floor = 0.01;
+  int correction_steps = 4;  // bisection steps of the fraction (resolution 2^-steps)
+  int max_sweeps = 4;
+};
+
+// The mesh must be P2 with its topology and its elements above the floor (a curving's output).
+template <int D>
+ProposalCompletion complete_boundary_proposals(Mesh<D>& mesh, BoundaryProposals<D>& proposals,
+                                               const ProposalCompletionOptions& options);
+
+}  // namespace hocav
