@@ -72,16 +72,27 @@ def distance_to_surface(tag, point):
     return math.dist(closest, point)
 
 
-def surfaces_of_refs(vertices, triangles):
-    """The CAD surface of each facet ref: the one nearest (largest distance) a sample of its vertices."""
+def in_box(surface, points, tolerance):
+    """Whether the points lie in the surface's bounding box (getClosestPoint ignores trimming)."""
+    box = gmsh.model.getBoundingBox(2, surface)
+    return all(box[c] - tolerance <= p[c] <= box[c + 3] + tolerance for p in points for c in range(3))
+
+
+def surfaces_of_refs(vertices, triangles, tolerance):
+    """The CAD surface of each facet ref, as `hocav curve` maps them: among the surfaces holding a
+    sample of the ref's vertices (within tolerance, and in their bounding box), the one nearest to the facets' centroids (a
+    narrow face has all its vertices on its neighbours too)."""
     samples = {}
     for ids, _, ref in triangles:
-        samples.setdefault(ref, []).append(vertices[ids[0]])
+        centroid = tuple(sum(vertices[i][c] for i in ids) / 3 for c in range(3))
+        samples.setdefault(ref, []).append((vertices[ids[0]], centroid))
     surfaces = [tag for _, tag in gmsh.model.getEntities(2)]
     mapping = {}
     for ref, points in samples.items():
         points = points[::max(1, len(points) // 16)]
-        mapping[ref] = min(surfaces, key=lambda s: max(distance_to_surface(s, p) for p in points))
+        holding = [s for s in surfaces if in_box(s, [p for p, _ in points], tolerance)
+                   and max(distance_to_surface(s, p) for p, _ in points) <= tolerance]
+        mapping[ref] = min(holding, key=lambda s: max(distance_to_surface(s, c) for _, c in points))
     return mapping
 
 
@@ -102,7 +113,7 @@ def main():
     gmsh.model.occ.synchronize()
     box = gmsh.model.getBoundingBox(-1, -1)
     model_size = math.dist(box[:3], box[3:])
-    surface_of = surfaces_of_refs(vertices, triangles)
+    surface_of = surfaces_of_refs(vertices, triangles, 1e-3 * model_size)
     face, ridge = [], []
     for node, refs in boundary_edges(vertices, triangles).values():
         error = max(distance_to_surface(surface_of[ref], node) for ref in refs)

@@ -71,15 +71,18 @@ CadBoundary<D>::CadBoundary(const std::string& path) : session_("cad") {
 
 template <int D>
 CadBoundary<D>::CadBoundary(const std::string& path, const Mesh<D>& mesh) : CadBoundary(path) {
-  // A sample of each ref's vertices: every stride-th facet's first vertex.
+  // A sample of each ref's facets: every stride-th facet's first vertex and centroid.
   std::map<int, Index> facet_counts;
   for (Index f = 0; f < mesh.facet_count(); ++f) ++facet_counts[mesh.facet_ref(f)];
-  std::map<int, std::vector<Vec<D>>> samples;
+  std::map<int, RefSample> samples;
   std::map<int, Index> seen;
   for (Index f = 0; f < mesh.facet_count(); ++f) {
     const int ref = mesh.facet_ref(f);
-    if (seen[ref]++ % std::max<Index>(1, facet_counts[ref] / kRefSamples) == 0)
-      samples[ref].push_back(mesh.vertex(mesh.facet(f)[0]));
+    if (seen[ref]++ % std::max<Index>(1, facet_counts[ref] / kRefSamples) != 0) continue;
+    Vec<D> centroid{};
+    for (Index v : mesh.facet(f)) centroid += mesh.vertex(v) * (1.0 / D);
+    samples[ref].vertices.push_back(mesh.vertex(mesh.facet(f)[0]));
+    samples[ref].centroids.push_back(centroid);
   }
   double x_min, y_min, z_min, x_max, y_max, z_max;
   call_gmsh([&] { gmsh::model::getBoundingBox(-1, -1, x_min, y_min, z_min, x_max, y_max, z_max); });
@@ -89,25 +92,46 @@ CadBoundary<D>::CadBoundary(const std::string& path, const Mesh<D>& mesh) : CadB
   std::vector<std::vector<int>> entity_curves = curves_of_piece_;
   pieces_.clear();
   curves_of_piece_.clear();
-  for (const auto& [ref, points] : samples) {
-    std::size_t best = 0;
-    double best_distance = std::numeric_limits<double>::infinity();
-    for (std::size_t e = 0; e < entities.size(); ++e) {
-      double farthest = 0;
-      for (const Vec<D>& point : points)
-        farthest =
-            std::max(farthest, call_gmsh([&] { return closest_on_entity<D>(D - 1, entities[e].tag, point).distance; }));
-      if (farthest < best_distance) {
-        best_distance = farthest;
-        best = e;
-      }
-    }
-    if (!(best_distance <= tolerance))
+  for (const auto& [ref, sample] : samples) {
+    const std::size_t best = nearest_entity(entities, sample, tolerance);
+    if (best == entities.size())
       throw Error(path + ": no CAD " + entity_name(D - 1) + " lies near the facets of ref " + std::to_string(ref));
     pieces_.push_back({ref, entities[best].tag});
     if constexpr (D == 3) curves_of_piece_.push_back(entity_curves[best]);
   }
   if (pieces_.empty()) throw Error("a CAD boundary needs a mesh with boundary facets");
+}
+
+template <int D>
+std::size_t CadBoundary<D>::nearest_entity(const std::vector<Piece>& entities, const RefSample& sample, double tolerance) {
+  auto farthest = [](int tag, const std::vector<Vec<D>>& points) {
+    double distance = 0;
+    for (const Vec<D>& point : points)
+      distance = std::max(distance, call_gmsh([&] { return closest_on_entity<D>(D - 1, tag, point).distance; }));
+    return distance;
+  };
+  // getClosestPoint projects on the untrimmed surface (a whole plane): a face must also hold the
+  // vertices in its bounding box.
+  auto in_box = [tolerance](int tag, const std::vector<Vec<D>>& points) {
+    double low[3], high[3];
+    call_gmsh([&] { gmsh::model::getBoundingBox(D - 1, tag, low[0], low[1], low[2], high[0], high[1], high[2]); });
+    return std::all_of(points.begin(), points.end(), [&](const Vec<D>& point) {
+      for (int i = 0; i < D; ++i)
+        if (point[i] < low[i] - tolerance || point[i] > high[i] + tolerance) return false;
+      return true;
+    });
+  };
+  std::size_t best = entities.size();
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (std::size_t e = 0; e < entities.size(); ++e) {
+    if (!in_box(entities[e].tag, sample.vertices) || !(farthest(entities[e].tag, sample.vertices) <= tolerance)) continue;
+    const double distance = farthest(entities[e].tag, sample.centroids);
+    if (distance < best_distance) {
+      best_distance = distance;
+      best = e;
+    }
+  }
+  return best;
 }
 
 template <int D>

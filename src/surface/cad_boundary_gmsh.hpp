@@ -6,10 +6,13 @@
 // Refs. Each facet ref names one CAD boundary entity (a surface in 3D, a curve in 2D):
 //   - by default the ref is the entity's tag, which is what gmsh writes for meshes it makes from the
 //     same file (physical groups aside);
-//   - built with a mesh, each ref of its facets goes to the entity nearest to that ref's vertices
-//     (the largest distance over a sample of them), for meshes whose refs follow another rule, such
-//     as the generated sphere shell (refs 1 inner, 2 outer, while its exported BREP reads back with
-//     tags 1 outer, 2 inner). Error when no entity lies near a ref.
+//   - built with a mesh, each ref of its facets goes to an entity that holds a sample of that ref's
+//     vertices (in its bounding box, and the largest distance within 1e-3 of the model's size:
+//     getClosestPoint projects on the untrimmed surface, so a narrow strip at the top of a thin
+//     wall lies on the whole top plane), the one nearest to the facets' centroids among those (a
+//     narrow face has all its vertices on its bounding curves, hence on its neighbours too), for meshes whose refs follow
+//     another rule, such as the generated sphere shell (refs 1 inner, 2 outer, while its exported
+//     BREP reads back with tags 1 outer, 2 inner). Error when no entity lies near a ref.
 //
 // gmsh keeps one global model and is not thread-safe: a CadBoundary holds gmsh (a GmshSession, the
 // process-wide gmsh lock) for its whole life and serializes its own calls with a mutex, so its
@@ -50,7 +53,13 @@ class CadBoundary final : public BoundaryGeometry<D> {
     int ref = 0;
     int tag = 0;
   };
+  // Points of a ref's facets, to find its entity.
+  struct RefSample {
+    std::vector<Vec<D>> vertices, centroids;
+  };
   BoundaryPoint<D> closest_unlocked(const Vec<D>& x, const ProjectionQuery& query) const;
+  // The entity holding every sampled vertex (within tolerance) nearest to the centroids; size() if none.
+  static std::size_t nearest_entity(const std::vector<Piece>& entities, const RefSample& sample, double tolerance);
 
   GmshSession session_;
   mutable std::mutex mutex_;
