@@ -7,6 +7,7 @@
 #include <string>
 
 #include "base/error.hpp"
+#include "surface/feature_lines.hpp"
 
 namespace hocav {
 namespace {
@@ -27,7 +28,8 @@ Vec<D> unit(const Vec<D>& v) {
 template <int D>
 P3Surrogate<D>::P3Surrogate(const Mesh<D>& mesh, const SurrogateOptions<D>& options)
     : topology_(build_surface_topology(mesh, options.normals.feature_angle_degrees)),
-      normals_(compute_vertex_normals(mesh, topology_, options.normals)) {
+      normals_(compute_vertex_normals(mesh, topology_, options.normals)),
+      feature_tangents_(feature_line_tangents(mesh, topology_, normals_)) {
   const Index count = mesh.facet_count();
   patches_.resize(count);
   refs_.resize(count);
@@ -62,7 +64,10 @@ void P3Surrogate<D>::build_patch(const Mesh<D>& mesh, Index f, TangentLength tan
       if (neighbor == kNoIndex) return unit(to - from);
       const int local_in_neighbor = facet_local_vertex(mesh, neighbor, facet[i]);
       if (normals_.corner_sides[neighbor][local_in_neighbor] != normals_.corner_sides[f][i]) {
-        // A ridge: the curve follows n_A × n_B, in both sides' tangent planes.
+        // A ridge: the curve follows its feature line where one passes through (feature_lines.hpp),
+        // else (a corner) n_A × n_B; either way in both sides' tangent planes.
+        const Vec3& feature_tangent = feature_tangents_[facet[i]];
+        if (norm(feature_tangent) > 0) return tangent_on_line(from, to, feature_tangent);
         const Vec3& other_normal = normals_.at(neighbor, local_in_neighbor);
         const Vec3 ridge = cross(normal, other_normal);
         if (norm(ridge) > kMinRidgeSine) return tangent_on_line(from, to, unit(ridge));

@@ -4,8 +4,9 @@
 // Per facet one patch (cubic_patch.hpp): the vertices, two control points per edge and (3D) the
 // centre. Edge control points b_ij = P_i + d t_i follow the vertex normals (vertex_normals.hpp): on
 // a smooth edge t_i is the edge projected on the tangent plane of n_i; on a ridge edge (3D: its two
-// facets are on different sides at P_i) t_i runs along n_i^A × n_i^B, so that the edge curve lies
-// in both sides' tangent planes; an edge that does not join exactly two facets stays straight. The
+// facets are on different sides at P_i) t_i runs along the feature line through P_i
+// (feature_lines.hpp), or along n_i^A × n_i^B at a corner, so that the edge curve lies in both
+// sides' tangent planes; an edge that does not join exactly two facets stays straight. The
 // length d is math.md's third of the projected edge, b_ij = (2 P_i + P_j − ((P_j − P_i)·n_i) n_i) / 3,
 // or by default the circular-arc length (cubic_patch.hpp: TangentLength), which removes the
 // O(θ⁴) error the third leaves at edge midpoints on curved surfaces. Each edge control
@@ -75,6 +76,7 @@ class P3Surrogate final : public BoundaryGeometry<D> {
   std::vector<Box<D>> boxes_;
   SurfaceTopology<D> topology_;
   VertexNormals<D> normals_;
+  std::vector<Vec<D>> feature_tangents_;  // per vertex, feature_lines.hpp
   PatchTree<D> tree_;
   IndexHashMap edge_patches_;  // mesh edge key -> CubicPatch<D>::kEdges * patch + local edge
 };
