@@ -24,7 +24,6 @@ constexpr double kMargin = 1e-5;
 void check_parameters(const MachinedPartParameters& p) {
   check_positive("size h", p.size);
   check_positive("wall", p.wall);
-  if (p.size > 0.1) throw Error("size h = " + number_text(p.size) + " is too large for the part (at most 0.1)");
   if (p.wall > 0.1) throw Error("wall = " + number_text(p.wall) + " is too thick for the part (at most 0.1)");
   // A regular tetrahedron of edge h has volume h³ / (6√2); the part's volume is below the block's.
   const double elements = kLength * kWidth * kHeight / (std::pow(p.size, 3) / (6 * std::sqrt(2.0)));

@@ -24,8 +24,8 @@ struct MachinedPartParameters {
 };
 
 // Tetrahedra with element ref 1, positively oriented; boundary triangles oriented outward with the
-// ref of their CAD surface. Deterministic. Error for a size or wall outside (0, 0.1], or a size so
-// small that the mesh would exceed 50 million elements.
+// ref of their CAD surface. Deterministic. Error for a non-positive size, a wall outside (0, 0.1],
+// or a size so small that the mesh would exceed 50 million elements.
 Mesh<3> generate_machined_part(const MachinedPartParameters& parameters);
 
 // Builds the part's model in the current gmsh model (a GmshSession must be open); returns its

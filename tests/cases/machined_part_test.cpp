@@ -61,7 +61,8 @@ TEST(MachinedPart, IsAValidDeterministicMeshWithItsFeatures) {
   const Mesh<3> again = generate_machined_part(kCoarse);
   ASSERT_EQ(again.vertex_count(), mesh.vertex_count());
   for (Index v = 0; v < mesh.vertex_count(); ++v) EXPECT_EQ(again.vertex(v), mesh.vertex(v));
-  EXPECT_THROW(generate_machined_part({.size = 0.2}), Error);
+  EXPECT_THROW(generate_machined_part({.size = 0}), Error);
+  EXPECT_THROW(generate_machined_part({.size = 0.06, .wall = 0.2}), Error);
   EXPECT_THROW(generate_machined_part({.size = 0.06, .wall = 0}), Error);
 }
 
