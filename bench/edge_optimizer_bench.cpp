@@ -1,4 +1,4 @@
-// Edge optimization throughput (math.md §7) on realistic edges: every edge of a back mesh of about 105k
+// Edge optimization throughput (docs/method.md §7) on realistic edges: every edge of a back mesh of about 105k
 // elements, in an adapted-looking shear field (size ratio h_max/h_min = 300 across a curved layer), optimized
 // with the default options (Simpson rule, localization included, hint = an element of the edge's first vertex),
 // the vertices' metrics made once per vertex.

@@ -1,4 +1,4 @@
-// Small linear algebra of metrics (math.md §1, §6): nanoseconds per eigen-decomposition with each solver,
+// Small linear algebra of metrics (docs/method.md §1, §6): nanoseconds per eigen-decomposition with each solver,
 // exp of a log-metric, exp with its Fréchet derivative in D directions (what one edge-length gradient needs per
 // quadrature point), log of a metric, and metric intersection.
 #include <benchmark/benchmark.h>

@@ -1,4 +1,4 @@
-// Accuracy of curved boundaries on the sphere shell (r_in = 0.5, r_out = 1), math.md §9: the largest
+// Accuracy of curved boundaries on the sphere shell (r_in = 0.5, r_out = 1), docs/method.md §9: the largest
 // distance to the true spheres of
 //   - the P1 boundary,
 //   - P2 boundaries whose mid-edge nodes are hocav's proposals: on the P3 surrogate with vertex
@@ -130,7 +130,7 @@ void report(double h) {
   rows.push_back({"(P1, straight)", max_boundary_distance(straight, spheres, kSamplesPerSide), 0});
   constexpr TangentLength kThird = TangentLength::kProjectedThird;
   const VertexNormalOptions<3> angle{.quadric_fit = false}, exact{.normal_source = &spheres};
-  rows.push_back(curved_with("surrogate, thirds, angle-weighted normals (math.md as written)", straight, spheres,
+  rows.push_back(curved_with("surrogate, thirds, angle-weighted normals (the usual rule)", straight, spheres,
                              surrogate({.normals = angle, .tangent_length = kThird})));
   rows.push_back(curved_with("surrogate, thirds, exact normals", straight, spheres,
                              surrogate({.normals = exact, .tangent_length = kThird})));

@@ -1,4 +1,4 @@
-// The P3 surrogate of the sphere shell's boundary (src/surface, math.md §9): building it, the
+// The P3 surrogate of the sphere shell's boundary (src/surface, docs/method.md §9): building it, the
 // projections the cavity operators ask for (points near the boundary, without and with a hint
 // patch), and the proposals for every boundary edge.
 #include <benchmark/benchmark.h>

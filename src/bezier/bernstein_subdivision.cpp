@@ -1,4 +1,4 @@
-// Regular subdivision of a Bernstein polynomial over a simplex by blossoming (math.md §8).
+// Regular subdivision of a Bernstein polynomial over a simplex by blossoming (docs/method.md §8).
 #include "bezier/bernstein_subdivision.hpp"
 
 namespace hocav {

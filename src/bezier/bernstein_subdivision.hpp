@@ -1,4 +1,4 @@
-// Regular subdivision of a polynomial in Bernstein form over a simplex (math.md §8: de Casteljau,
+// Regular subdivision of a polynomial in Bernstein form over a simplex (docs/method.md §8: de Casteljau,
 // 4 sub-triangles, 8 sub-tetrahedra), used to tighten the bounds that coefficients give on J.
 //
 // Children are the regular ("red") refinement: the D + 1 corner children, then the inner

@@ -1,4 +1,4 @@
-// Certified bounds of J by depth-first subdivision of its Bernstein form (math.md §8).
+// Certified bounds of J by depth-first subdivision of its Bernstein form (docs/method.md §8).
 #include "bezier/jacobian_bounds.hpp"
 
 #include <algorithm>

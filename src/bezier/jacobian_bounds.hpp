@@ -1,5 +1,5 @@
 // Certified validity and quality of P2 elements: bounds of the Jacobian determinant J by
-// subdivision of its Bernstein form (math.md §8).
+// subdivision of its Bernstein form (docs/method.md §8).
 //
 // Over any sub-simplex, the minimum of J's coefficients there is a lower bound of J, and the corner
 // coefficients are values J takes. Subdividing (bernstein_subdivision.hpp) shrinks the gap between

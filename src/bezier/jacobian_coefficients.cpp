@@ -1,7 +1,7 @@
-// Bernstein coefficients of the Jacobian of a P2 simplex (math.md §8).
+// Bernstein coefficients of the Jacobian of a P2 simplex (docs/method.md §8).
 //
 // F(λ) = Σ_{|α|=2} (2/α!) λ^α C_α, so ∂F/∂ξ_k = 2 Σ_i λ_i d_ik with d_ik = C_{e_i+e_k} − C_{e_i+e_0}
-// (the a_i, b_i, c_i of math.md for k = 1, 2, 3). Expanding the determinant multilinearly,
+// (the a_i, b_i, c_i of docs/method.md §8 for k = 1, 2, 3). Expanding the determinant multilinearly,
 //   J = 2^D Σ_{i,j(,k)} λ_i λ_j (λ_k) det(a_i, b_j(, c_k)),
 // and a monomial λ^γ is (γ!/D!) B_γ, hence N_γ = 2^D (γ!/D!) Σ det(...) over the index tuples whose
 // multiset is γ:

@@ -1,5 +1,5 @@
 // Bernstein (control) coefficients of the Jacobian determinant of a P2 triangle or tetrahedron
-// (math.md §8).
+// (docs/method.md §8).
 //
 // J is a polynomial of degree D over the reference simplex, written in barycentrics λ_0..λ_D
 // (reference axes ξ_k = λ_k, k ≥ 1):  J(λ) = Σ_{|γ| = D} N_γ B_γ(λ),  B_γ = (D!/γ!) λ^γ.

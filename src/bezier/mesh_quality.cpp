@@ -1,4 +1,4 @@
-// Curved-element quality over a whole mesh (math.md §8, §11).
+// Curved-element quality over a whole mesh (docs/method.md §8, §11).
 #include "bezier/mesh_quality.hpp"
 
 #include <algorithm>

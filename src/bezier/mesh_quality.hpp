@@ -1,5 +1,5 @@
 // Curved-element quality over a whole mesh: per-element min normalized Jacobian and scaled Jacobian,
-// and their summaries (math.md §8 quality figures; §11 min/avg/max normalized Jacobian).
+// and their summaries (docs/method.md §8 quality figures; §11 min/avg/max normalized Jacobian).
 #pragma once
 
 #include <span>

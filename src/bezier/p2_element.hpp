@@ -1,5 +1,5 @@
 // One P2 triangle or tetrahedron as a value: its Lagrange nodes and its Bézier control net
-// (math.md §8: C_ij = 2 M_ij − (P_i + P_j)/2; vertex nodes are unchanged).
+// (docs/method.md §8: C_ij = 2 M_ij − (P_i + P_j)/2; vertex nodes are unchanged).
 // Nodes are in hocav's local order (src/mesh/simplex.hpp): vertices, then one node per edge in
 // Simplex<D>::kEdgeLocalVertices order (triangle v0 v1 v2 m01 m12 m20; tetrahedron
 // v0 v1 v2 v3 m01 m12 m20 m03 m13 m23).

@@ -1,4 +1,4 @@
-// Where the P2 cavity operator finds curved positions for boundary edges (math.md §9): a table of
+// Where the P2 cavity operator finds curved positions for boundary edges (docs/method.md §9): a table of
 // proposed mid nodes, keyed by the edge, filled once from the boundary geometry (P3 surrogate or
 // CAD) and emptied as cavities consume the proposals.
 #pragma once

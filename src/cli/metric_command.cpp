@@ -1,8 +1,8 @@
 // hocav metric MESH -o OUT.sol|.solb SOURCE [--gradation BETA] [source options]
 //   SOURCE: --analytic NAME | --implied | --surface HN,HT | --hessian FIELD.sol|analytic:NAME | --input SOL
 //         | --from BACK.mesh --from-metric BACK.sol
-// A metric field on a mesh from one of the sources of math.md §10, or interpolated from another
-// mesh's metric (log-Euclidean, math.md §2: to measure a remesher's output in its input metric),
+// A metric field on a mesh from one of the sources of docs/method.md §10, or interpolated from another
+// mesh's metric (log-Euclidean, docs/method.md §2: to measure a remesher's output in its input metric),
 // optionally graded, written with one row per node of the mesh file in the file's own node numbering.
 // P2 mid nodes get the analytic or interpolated field at the node, or the input's row there;
 // otherwise (and after gradation) the log-Euclidean mean of the metrics of their edge's two vertices.

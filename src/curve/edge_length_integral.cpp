@@ -7,7 +7,7 @@
 namespace hocav {
 namespace {
 
-// The P2 curve t ↦ γ(t) through a, node, b and its tangent (math.md §4).
+// The P2 curve t ↦ γ(t) through a, node, b and its tangent (docs/method.md §4).
 template <int D>
 struct P2Curve {
   Vec<D> a, node, b;

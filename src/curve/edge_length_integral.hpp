@@ -1,4 +1,4 @@
-// ℓ of a P2 edge as an integral along the curve, ∫₀¹ sqrt(γ'(t)ᵀ M(t) γ'(t)) dt (math.md §3, §5), by a
+// ℓ of a P2 edge as an integral along the curve, ∫₀¹ sqrt(γ'(t)ᵀ M(t) γ'(t)) dt (docs/method.md §3, §5), by a
 // fixed rule or adaptively to a tolerance, under either metric model:
 // - interpolated: log M(t) = φ_A(t) L_A + φ_M(t) L^L + φ_B(t) L_B with L^L the back-mesh log-metric at the
 //   node, the closed form of eq 12 that the optimizer minimizes (smooth in t);
@@ -11,7 +11,7 @@
 
 namespace hocav {
 
-// The "true" Riemannian length of the curve by a fixed rule: a diagnostic (math.md §5).
+// The "true" Riemannian length of the curve by a fixed rule: a diagnostic (docs/method.md §5).
 template <int D>
 double true_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b, const Vec<D>& node,
                         const QuadratureRule& rule);

@@ -1,4 +1,4 @@
-// Length optimization of one P2 edge (math.md §7): minimize ℓ(X) over the Lagrange node X in the
+// Length optimization of one P2 edge (docs/method.md §7): minimize ℓ(X) over the Lagrange node X in the
 // bisector plane of the edge (sliding along the edge only reparametrizes it), endpoints fixed, re-localizing X in the back mesh at every iterate. ℓ is only piecewise smooth
 // (∇λ jumps across back-mesh faces), so the method is a safeguarded Newton iteration: Newton steps
 // where the Hessian is positive definite (shifted towards gradient descent where it is not), a

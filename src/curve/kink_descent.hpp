@@ -1,4 +1,4 @@
-// The steepest first-order descent of ℓ at a Lagrange node X that lies on a kink (math.md §7): the
+// The steepest first-order descent of ℓ at a Lagrange node X that lies on a kink (docs/method.md §7): the
 // back-mesh log-metric L^L(X) is continuous and piecewise linear, so on a back-mesh face shared by
 // several elements each element gives its own gradient of ℓ, and Newton's smooth model (one
 // element's) can neither tell whether X is optimal nor find the direction that descends. The straight

@@ -1,4 +1,4 @@
-// Quadrature rules on [0, 1] for the length integral of a P2 edge (math.md §5), and the rules by
+// Quadrature rules on [0, 1] for the length integral of a P2 edge (docs/method.md §5), and the rules by
 // name for the command line.
 //
 // The optimizer's default is Simpson's rule: the paper's three points (t = 0, 1/2, 1: one
@@ -32,7 +32,7 @@ const QuadratureRule& simpson_rule();
 // n-point Gauss–Legendre on [0, 1] (exact for polynomials of degree 2n − 1), 1 <= n <= 128.
 QuadratureRule gauss_legendre_rule(int points);
 
-// The rule used for every reported length and gain (math.md §5: >= 16 points).
+// The rule used for every reported length and gain (docs/method.md §5: >= 16 points).
 const QuadratureRule& high_precision_rule();
 
 // The optimizer's default (Simpson).

@@ -1,5 +1,5 @@
 // Barycentric coordinates of a point in a straight simplex and their (constant) gradients
-// (math.md §2: λ_i are ratios of signed sub-volumes; ∇λ_i are rows of the inverse edge matrix).
+// (docs/method.md §2: λ_i are ratios of signed sub-volumes; ∇λ_i are rows of the inverse edge matrix).
 #pragma once
 
 #include <array>

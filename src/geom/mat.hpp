@@ -1,4 +1,4 @@
-// Small dense D×D matrices (math.md §1, §6): the eigenvector bases V of the spectral forms
+// Small dense D×D matrices (docs/method.md §1, §6): the eigenvector bases V of the spectral forms
 // M = V diag(λ) Vᵀ, and the few products the metric kernels need.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Metric intersection by simultaneous reduction (math.md §1).
+// Metric intersection by simultaneous reduction (docs/method.md §1).
 #include "geom/metric_intersection.hpp"
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Intersection of two metrics by simultaneous reduction (math.md §1; used by gradation and to combine metric
+// Intersection of two metrics by simultaneous reduction (docs/method.md §1; used by gradation and to combine metric
 // fields, §10). With P the eigenvectors of M1⁻¹M2 and μ_i = max(p_iᵀM1p_i, p_iᵀM2p_i),
 // M1∩M2 = P⁻ᵀ diag(μ) P⁻¹: |v|_{M1∩M2} ≥ max(|v|_M1, |v|_M2) for every v, with equality along each p_i,
 // so its unit ball is the largest ellipsoid of that family inside both unit balls.

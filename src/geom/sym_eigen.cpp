@@ -1,4 +1,4 @@
-// Symmetric eigen-solvers (math.md §1, §6); see sym_eigen.hpp for the choice of two solvers.
+// Symmetric eigen-solvers (docs/method.md §1, §6); see sym_eigen.hpp for the choice of two solvers.
 #include "geom/sym_eigen.hpp"
 
 #include <algorithm>

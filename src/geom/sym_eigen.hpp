@@ -1,4 +1,4 @@
-// Eigen-decomposition of symmetric 2×2 and 3×3 matrices (math.md §1 spectral form M = R Λ Rᵀ, and §6 where
+// Eigen-decomposition of symmetric 2×2 and 3×3 matrices (docs/method.md §1 spectral form M = R Λ Rᵀ, and §6 where
 // Dexp(T) is built on T = V diag(θ) Vᵀ). Two solvers, named for what they are for:
 //
 // - sym_eigen: fast, for log-metrics T (the hot loop: exp and its Fréchet derivatives). Accuracy is ABSOLUTE,

@@ -1,4 +1,4 @@
-// Spectral functions of symmetric matrices and the Fréchet derivatives of exp (math.md §1, §6).
+// Spectral functions of symmetric matrices and the Fréchet derivatives of exp (docs/method.md §1, §6).
 #include "geom/sym_functions.hpp"
 
 #include <algorithm>

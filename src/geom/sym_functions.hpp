@@ -1,5 +1,5 @@
 // Functions of symmetric matrices through their spectral form f(M) = R f(Λ) Rᵀ: the logarithm and
-// exponential that move metrics to and from log form (math.md §1, §2, §4), powers and square roots
+// exponential that move metrics to and from log form (docs/method.md §1, §2, §4), powers and square roots
 // (for intersections and sizes, §1, §10), and the first and second Fréchet derivatives of exp that the
 // edge-length derivatives are built on (§6).
 //

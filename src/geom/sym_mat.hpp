@@ -1,4 +1,4 @@
-// Symmetric D×D matrices (math.md §1): metrics M and their logarithms log M, and the directions
+// Symmetric D×D matrices (docs/method.md §1): metrics M and their logarithms log M, and the directions
 // H of the Fréchet derivatives of exp (§6).
 // Storage is the D(D+1)/2 entries in the Gamma .sol order, the lower triangle row by row
 // (2D: m11 m12 m22; 3D: m11 m12 m22 m13 m23 m33), so the file readers and writers pass rows through.

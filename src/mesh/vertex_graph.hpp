@@ -1,5 +1,5 @@
 // The vertices joined by an element edge, as compressed rows: the neighbours of every vertex, for the
-// edge-based metric kernels (gradation and Hessian recovery, math.md §10). Built from the elements
+// edge-based metric kernels (gradation and Hessian recovery, docs/method.md §10). Built from the elements
 // alone, so it needs neither the edge table nor the topology.
 #pragma once
 

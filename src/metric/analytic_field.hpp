@@ -1,5 +1,5 @@
 // Analytic scalar fields with their exact Hessians, for `hocav metric --hessian analytic:NAME` and
-// for testing the Hessian recovery and the Lp metric (math.md §10):
+// for testing the Hessian recovery and the Lp metric (docs/method.md §10):
 //   quadratic   u = x² + xy − 4y² (+ 9z² in 3D): a constant, indefinite Hessian
 //               [[2, 1], [1, −8]] (3D: and 18 on the z diagonal);
 //   tanh-shock  u = tanh((r − radius) / width), r = |x − origin|: a smooth step across the circle

@@ -1,4 +1,4 @@
-// Analytic metric fields for tests, benchmarks and `hocav metric --analytic` (math.md §10).
+// Analytic metric fields for tests, benchmarks and `hocav metric --analytic` (docs/method.md §10).
 //   uniform       M = h⁻² I
 //   linear        size h_axis(s) = h_min + 2 (h_max − h_min) |s − center| along one axis (s = that
 //                 coordinate; the UGAWG "linear" field with the defaults), h_max across it

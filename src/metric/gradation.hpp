@@ -1,4 +1,4 @@
-// Size gradation (math.md §10): bounds how fast the sizes of a metric field may grow along the
+// Size gradation (docs/method.md §10): bounds how fast the sizes of a metric field may grow along the
 // mesh edges, so that a small size somewhere spreads into its surroundings instead of ending in a
 // jump. This is the "metric-space" homogeneous gradation of F. Alauzet, "Size gradation control of
 // anisotropic meshes", Finite Elements in Analysis and Design 46 (2010) 181–202,
@@ -6,7 +6,7 @@
 // also implements): the metric of p, grown to a point q, is
 //   M_p(q) = η(ℓ) M_p,  η(ℓ) = (1 + ℓ log β)⁻²,  ℓ = sqrt(pqᵀ M_p pq) the length of pq in M_p,
 // every size of M_p multiplied by 1 + ℓ log β, its anisotropy kept. Each end of each edge is then
-// limited by the other's grown metric, M_q ← M_q ∩ M_p(q) (metric intersection, math.md §1).
+// limited by the other's grown metric, M_q ← M_q ∩ M_p(q) (metric intersection, docs/method.md §1).
 // Along a line in an isotropic field h(x) = h_p + |x − p| log β: sizes grow linearly with distance,
 // i.e. geometrically, by β per unit of length measured in the graded field itself
 // (∫ dx / h = log(h / h_p) / log β).

@@ -1,4 +1,4 @@
-// The Hessian-based Lp metric (math.md §10), optimal for the Lp norm of the P1 interpolation error
+// The Hessian-based Lp metric (docs/method.md §10), optimal for the Lp norm of the P1 interpolation error
 // of a field with Hessian H at a target complexity N:
 //   |H| = R |Λ| Rᵀ, the eigenvalues' absolute values clamped to [h_max⁻², h_min⁻²],
 //   M = D_N det(|H|)^{−1/(2p+d)} |H|,   D_N = N^{2/d} ( ∫ det(|H|)^{p/(2p+d)} )^{−2/d}.

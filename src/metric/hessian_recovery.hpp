@@ -1,4 +1,4 @@
-// Recovery of the Hessian of a scalar field known at the vertices (math.md §10, the input of the
+// Recovery of the Hessian of a scalar field known at the vertices (docs/method.md §10, the input of the
 // Hessian-based Lp metric). Method: a least-squares quadratic fit on the vertex's neighbourhood.
 // At vertex v with value u_v, find the gradient g and the symmetric H minimizing
 //   Σ_j ( u_v + g·d_j + ½ d_jᵀ H d_j − u_j )²,   d_j = x_j − x_v,

@@ -1,9 +1,9 @@
-// The natural (implied) metric of a mesh (math.md §10): the metric in which the mesh is a unit mesh.
+// The natural (implied) metric of a mesh (docs/method.md §10): the metric in which the mesh is a unit mesh.
 //
 // Element metric: the unique M with eᵀ M e = 1 on the d(d+1)/2 edges e of the element. These are
 // d(d+1)/2 linear equations in the d(d+1)/2 entries of M; their solution has the closed form
 //   M_K = ½ Σ_{i=0..d} ∇λ_i ∇λ_iᵀ
-// (∇λ_i the constant barycentric gradients, math.md §2): for e = P_j − P_k, ∇λ_i·e = δ_ij − δ_ik,
+// (∇λ_i the constant barycentric gradients, docs/method.md §2): for e = P_j − P_k, ∇λ_i·e = δ_ij − δ_ik,
 // so eᵀ M_K e = ½ (1 + 1) = 1. It is SPD for every non-flat element, since the ∇λ_i span R^d. If
 // K = F(K̂) with F(x) = A x + b and K̂ the regular simplex of unit edges, M_K = (A Aᵀ)⁻¹.
 // Vertex metric: the log-Euclidean mean of the metrics of the elements around the vertex, weighted

@@ -1,4 +1,4 @@
-// MetricField<D>: the metric known on a back mesh (math.md §2). The back mesh is a P1 copy of the
+// MetricField<D>: the metric known on a back mesh (docs/method.md §2). The back mesh is a P1 copy of the
 // input mesh, never modified, with the log-metric R_i = log M_i at each of its vertices; the metric
 // anywhere is M(X) = exp(Σ λ_i(X) R_i) in the back element that contains X (log-Euclidean
 // interpolation, eq 2), so repeated interpolation never dissipates anisotropy.
@@ -35,7 +35,7 @@ class MetricField {
   Sample sample(const Vec<D>& x, Index hint = kNoIndex) const;
   SymMat<D> log_metric_at(const Vec<D>& x, Index hint = kNoIndex) const { return sample(x, hint).log_metric; }
 
-  // ∂(log M)/∂x_i = Σ_j (∂λ_j/∂x_i) R_j in back element k (constant inside it, math.md §6).
+  // ∂(log M)/∂x_i = Σ_j (∂λ_j/∂x_i) R_j in back element k (constant inside it, docs/method.md §6).
   std::array<SymMat<D>, D> log_metric_gradient(Index back_element) const;
 
   // One back element prepared for many samples near it (an optimizer's iterates): its barycentric

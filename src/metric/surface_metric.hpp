@@ -1,4 +1,4 @@
-// The surface metric (math.md §10): at the vertices of the boundary facets,
+// The surface metric (docs/method.md §10): at the vertices of the boundary facets,
 //   M = h_n⁻² n nᵀ + h_t⁻² (I − n nᵀ),
 // size h_n along the unit normal n and h_t in the tangent plane. n is the area-weighted vertex
 // normal: the sum of the outward normals of the boundary facets around the vertex, each as long as

@@ -1,5 +1,5 @@
 // The rows of `hocav bench`: one curving run per case, size and thread count, in the columns of the
-// paper's Table 1 (shared design benchmarks.md) plus time per tetrahedron, peak memory, the runs
+// paper's Table 1 (docs/method.md §11) plus time per tetrahedron, peak memory, the runs
 // the median came from, and a fingerprint of the output to check thread independence.
 #pragma once
 

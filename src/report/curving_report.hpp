@@ -1,5 +1,5 @@
-// The figures of a curving run in the columns of the paper's Table 1 (math.md §11,
-// shared design benchmarks.md), measured on the output mesh, plus the operator's counters.
+// The figures of a curving run in the columns of the paper's Table 1 (docs/method.md §11),
+// measured on the output mesh, plus the operator's counters.
 #pragma once
 
 #include <iosfwd>

@@ -100,7 +100,7 @@ struct MeshStatistics {
 // Computes the statistics; builds the mesh's edge table when it has none (so memory_bytes is taken
 // first). `node_metrics`, when not empty, holds symmetric matrices in .sol order (D (D + 1) / 2
 // values each): one per vertex, then, for a P2 mesh, optionally one per edge node.
-// The length of an edge is its Riemannian length as a P2 edge (math.md §5, eq 12) with the 16-point
+// The length of an edge is its Riemannian length as a P2 edge (docs/method.md §5, eq 12) with the 16-point
 // Gauss rule: log M varies along it as the P2 interpolation of the log-metrics at its ends and at its
 // node. A P1 edge is straight, its node the midpoint with log M the mean of its ends' (so log M is
 // linear along it); a P2 edge has its node, with the metric given there or else that mean.

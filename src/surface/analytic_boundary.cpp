@@ -1,4 +1,4 @@
-// Exact projections onto spheres, cylinders and planes (math.md §9).
+// Exact projections onto spheres, cylinders and planes (docs/method.md §9).
 #include "surface/analytic_boundary.hpp"
 
 #include <cmath>

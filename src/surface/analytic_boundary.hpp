@@ -1,4 +1,4 @@
-// Boundaries known in closed form (math.md §9, "from the CAD or an analytic geometry when known"):
+// Boundaries known in closed form (docs/method.md §9, "from the CAD or an analytic geometry when known"):
 // spheres (circles in 2D), cylinders (3D) and planes (lines in 2D), one per facet ref, with exact
 // projections and normals. For tests and for generated cases whose geometry is known.
 #pragma once

@@ -1,4 +1,4 @@
-// Distance of a (P1 or P2) boundary to a geometry, by dense sampling (math.md §9).
+// Distance of a (P1 or P2) boundary to a geometry, by dense sampling (docs/method.md §9).
 #include "surface/boundary_distance.hpp"
 
 #include <algorithm>

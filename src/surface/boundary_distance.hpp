@@ -1,4 +1,4 @@
-// How far a mesh's boundary is from the true geometry (math.md §9, the accuracy of curved
+// How far a mesh's boundary is from the true geometry (docs/method.md §9, the accuracy of curved
 // boundaries): the largest distance to the geometry over points sampled densely on every boundary
 // facet — straight for a P1 mesh, the quadratic map of its vertices and edge nodes for a P2 mesh.
 #pragma once

@@ -1,4 +1,4 @@
-// Default ridge projection and edge proposal of every boundary geometry (math.md §9).
+// Default ridge projection and edge proposal of every boundary geometry (docs/method.md §9).
 #include "surface/boundary_geometry.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// The geometry of the domain boundary as the cavity operators see it (math.md §9): project a point
+// The geometry of the domain boundary as the cavity operators see it (docs/method.md §9): project a point
 // onto it, its normal there, and the P2 node proposed for a boundary edge. Implemented by the P3
 // surrogate of the input boundary (p3_surrogate.hpp), by analytic shapes (analytic_boundary.hpp)
 // and by a CAD model read through gmsh (cad_boundary_gmsh.hpp).

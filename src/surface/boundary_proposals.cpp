@@ -1,4 +1,4 @@
-// Boundary-node proposals (math.md §9).
+// Boundary-node proposals (docs/method.md §9).
 #include "surface/boundary_proposals.hpp"
 
 #include "surface/cubic_patch.hpp"

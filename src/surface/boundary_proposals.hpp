@@ -1,4 +1,4 @@
-// Boundary-node proposals (math.md §9, surface curvature recovery): for every boundary edge, the
+// Boundary-node proposals (docs/method.md §9, surface curvature recovery): for every boundary edge, the
 // P2 node the geometry proposes for it, kept in a table keyed by the edge's vertex pair until a
 // cavity consumes it.
 //

@@ -1,4 +1,4 @@
-// Projection onto a STEP/BREP model through gmsh and OpenCASCADE (math.md §9).
+// Projection onto a STEP/BREP model through gmsh and OpenCASCADE (docs/method.md §9).
 #include "surface/cad_boundary_gmsh.hpp"
 
 #include <gmsh.h>

@@ -1,4 +1,4 @@
-// The CAD backend of the boundary geometry (math.md §9, "the real CAD"): a STEP or BREP model read
+// The CAD backend of the boundary geometry (docs/method.md §9, "the real CAD"): a STEP or BREP model read
 // by gmsh's OpenCASCADE kernel, projected on with gmsh::model::getClosestPoint (its closest
 // coordinates; the parametric coordinates it returns are wrong in gmsh 4.8.4, so normals use
 // getParametrization). In 3D the facets lie on CAD surfaces, in 2D on CAD curves (z = 0).

@@ -1,4 +1,4 @@
-// One cubic Bézier patch of the P3 boundary surrogate (math.md §9): a curve with 4 control points
+// One cubic Bézier patch of the P3 boundary surrogate (docs/method.md §9): a curve with 4 control points
 // (D = 2) or a triangle with 10 (D = 3), evaluated with its first and second derivatives by de
 // Casteljau, and the rules that place its control points from vertices and normals.
 //
@@ -101,7 +101,7 @@ Vec<D> edge_curve_midpoint(const CubicPatch<D>& patch, int edge) {
 // How far along its tangent an edge control point goes: b_ij = P_i + d t_i, t_i the unit tangent
 // at P_i toward P_j, e = P_j − P_i, cos α = (e·t_i) / |e|.
 enum class TangentLength {
-  // d = (e·t_i) / 3: the third of the edge projected on the tangent, math.md §9's rule
+  // d = (e·t_i) / 3: the third of the edge projected on the tangent, docs/method.md §9's rule
   // b_ij = (2 P_i + P_j − (e·n_i) n_i) / 3. On a circular arc its midpoint errs by 9 r θ⁴ / 384.
   kProjectedThird,
   // d = 2 |e| / (3 (1 + cos α)) = |e| / (3 cos²(α/2)): a cubic with these end tangents reproduces

@@ -1,4 +1,4 @@
-// The P3 surrogate of the boundary: construction and projection (math.md §9).
+// The P3 surrogate of the boundary: construction and projection (docs/method.md §9).
 #include "surface/p3_surrogate.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// The P3 surrogate of the boundary (math.md §9): the input boundary's facets lifted once to cubic
+// The P3 surrogate of the boundary (docs/method.md §9): the input boundary's facets lifted once to cubic
 // Bézier patches that stand in for the CAD during the whole run.
 //
 // Per facet one patch (cubic_patch.hpp): the vertices, two control points per edge and (3D) the
@@ -7,7 +7,7 @@
 // facets are on different sides at P_i) t_i runs along the feature line through P_i
 // (feature_lines.hpp), or along n_i^A × n_i^B at a corner, so that the edge curve lies in both
 // sides' tangent planes; an edge that does not join exactly two facets stays straight. The
-// length d is math.md's third of the projected edge, b_ij = (2 P_i + P_j − ((P_j − P_i)·n_i) n_i) / 3,
+// length d is the usual third of the projected edge (docs/method.md §9), b_ij = (2 P_i + P_j − ((P_j − P_i)·n_i) n_i) / 3,
 // or by default the circular-arc length (cubic_patch.hpp: TangentLength), which removes the
 // O(θ⁴) error the third leaves at edge midpoints on curved surfaces. Each edge control
 // point depends only on the edge's two vertices and on normals both facets of the edge share, so

@@ -1,4 +1,4 @@
-// Closest point on one cubic patch (math.md §9, projection).
+// Closest point on one cubic patch (docs/method.md §9, projection).
 #include "surface/patch_closest_point.hpp"
 
 #include <algorithm>

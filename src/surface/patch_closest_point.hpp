@@ -1,4 +1,4 @@
-// The closest point of one cubic patch to a point (math.md §9, projection): Newton on the patch
+// The closest point of one cubic patch to a point (docs/method.md §9, projection): Newton on the patch
 // parameters with clamping to the parameter domain (the segment [0, 1] or the triangle u, v ≥ 0,
 // u + v ≤ 1), safeguarded by a projected-gradient step and halving so that every accepted step
 // lowers the distance.

@@ -1,4 +1,4 @@
-// Bounding-box tree over boundary patches (math.md §9, projection).
+// Bounding-box tree over boundary patches (docs/method.md §9, projection).
 #include "surface/patch_tree.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// A bounding-box tree over the patches of a boundary (math.md §9, projection: "candidate triangles
+// A bounding-box tree over the patches of a boundary (docs/method.md §9, projection: "candidate triangles
 // from a spatial index"). Each patch lies inside the box of its control points (the convex-hull
 // property of Bézier patches), so the distance to a box bounds the distance to its patches from
 // below: the nearest-patch search visits the nearer child first and skips every box farther than

@@ -1,4 +1,4 @@
-// Least-squares quadric normals (math.md §9).
+// Least-squares quadric normals (docs/method.md §9).
 #include "surface/quadric_fit.hpp"
 
 #include <array>

@@ -1,4 +1,4 @@
-// A vertex normal from a least-squares quadric (math.md §9: better normals than averaged facet
+// A vertex normal from a least-squares quadric (docs/method.md §9: better normals than averaged facet
 // normals). In a frame whose last axis is a first guess n0 of the normal, the surface near the
 // vertex is a height function z = q(x) + g·x (q quadratic, g the slope); fitting it to neighbouring
 // surface points by least squares and tilting n0 by −g gives a normal whose error is O(h²) on any

@@ -1,4 +1,4 @@
-// Facet neighbours and ridges of the boundary (math.md §9).
+// Facet neighbours and ridges of the boundary (docs/method.md §9).
 #include "surface/surface_topology.hpp"
 
 #include <algorithm>

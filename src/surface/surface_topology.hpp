@@ -1,4 +1,4 @@
-// The boundary facets as a surface (math.md §9: "split at ridges/feature edges"): the neighbour of
+// The boundary facets as a surface (docs/method.md §9: "split at ridges/feature edges"): the neighbour of
 // each facet across each of its sides, and which sides are ridges — where the surface may fold, so
 // that vertex normals are not averaged across them.
 //

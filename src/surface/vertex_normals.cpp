@@ -1,4 +1,4 @@
-// Vertex normals per smooth side (math.md §9).
+// Vertex normals per smooth side (docs/method.md §9).
 #include "surface/vertex_normals.hpp"
 
 #include <algorithm>

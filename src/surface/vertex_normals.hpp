@@ -1,4 +1,4 @@
-// Vertex normals of the boundary, one per smooth side of each vertex (math.md §9: "a normal n_i at
+// Vertex normals of the boundary, one per smooth side of each vertex (docs/method.md §9: "a normal n_i at
 // each surface vertex ... split at ridges/feature edges").
 //
 // The facets around a vertex fall into sides: two facets sharing a side through the vertex that is

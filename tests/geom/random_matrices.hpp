@@ -1,4 +1,4 @@
-// Random and special symmetric matrices for the tests of the geom kernels (math.md §1): random rotations
+// Random and special symmetric matrices for the tests of the geom kernels (docs/method.md §1): random rotations
 // times log-eigenvalues up to ±18.4 (metric size ratios up to 1e8, eigenvalue ratios up to 1e16),
 // repeated and nearly repeated eigenvalues.
 #pragma once

@@ -90,7 +90,7 @@ TEST(SurfaceCubicPatch, TangentRules) {
   const Vec3 in_plane = tangent_in_plane(from, to, normal);
   EXPECT_NEAR(dot(in_plane, normal), 0.0, 1e-15);
   EXPECT_NEAR(norm(in_plane), 1.0, 1e-15);
-  // math.md's rule: (2 P_i + P_j − ((P_j − P_i)·n) n) / 3.
+  // The usual rule (docs/method.md §9): (2 P_i + P_j − ((P_j − P_i)·n) n) / 3.
   const Vec3 third = edge_control_point(from, to, in_plane, TangentLength::kProjectedThird);
   EXPECT_LT(norm(third - (2.0 * from + to - dot(to - from, normal) * normal) * (1.0 / 3)), 1e-15);
   EXPECT_LT(norm(tangent_on_line(from, to, Vec3{{-1, 0, 0}}) - Vec3{{1, 0, 0}}), 1e-15);
