@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Everything from a fresh Debian machine to a full test run: packages, the optimized build and
-# its tests (unit, end-to-end, third-party readers), the sanitizer build and its tests, and a
-# bounded fuzzing run of the file readers.
+# its tests (unit, end-to-end, third-party readers, ParaView), the same without gmsh, the sanitizer
+# build and its tests, and a bounded fuzzing run of the file readers.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 fuzz_seconds=${HOCAV_FUZZ_SECONDS:-60}
@@ -22,6 +22,10 @@ run_ctest() {
 echo "== release build and tests"
 bash scripts/build.sh release
 run_ctest --test-dir build/release --output-on-failure -j "$(nproc)"
+
+echo "== without gmsh (HOCAV_WITH_GMSH=OFF): build and tests (those that need gmsh skip)"
+bash scripts/build.sh nogmsh
+run_ctest --test-dir build/nogmsh --output-on-failure -j "$(nproc)"
 
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 bash scripts/build.sh asan

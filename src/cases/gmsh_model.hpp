@@ -12,6 +12,11 @@
 
 namespace hocav {
 
+// Whether this build has gmsh (the CMake option HOCAV_WITH_GMSH). Without it the entry points that
+// need gmsh (a GmshSession, the gmsh-meshed shells, CAD models) throw Error saying so
+// (src/cases/gmsh_cases_without_gmsh.cpp, src/surface/cad_boundary_without_gmsh.cpp).
+bool gmsh_available();
+
 // Holds gmsh for the lifetime of one generation: gmsh keeps one global model, so sessions are
 // serialized by a process-wide mutex (every use of the gmsh API in hocav goes through one); a
 // second session in the thread that holds one is an Error rather than a deadlock. Reads no user

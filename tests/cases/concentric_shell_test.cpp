@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "base/error.hpp"
+#include "gmsh_requirement.hpp"
 #include "shell_test_support.hpp"
 
 namespace hocav {
@@ -47,9 +48,13 @@ void expect_deterministic(const ShellParameters& p) {
   shell_test::expect_identical(generate<D>(p), generate<D>(p));
 }
 
-TEST(Annulus, DefaultIsValidAndHasTheExactArea) { expect_valid_shell<2>({}); }
+TEST(Annulus, DefaultIsValidAndHasTheExactArea) {
+  HOCAV_SKIP_WITHOUT_GMSH();
+  expect_valid_shell<2>({});
+}
 
 TEST(Annulus, OtherRadiiAndSizes) {
+  HOCAV_SKIP_WITHOUT_GMSH();
   expect_valid_shell<2>({0.2, 1.5, 0.05});
   expect_valid_shell<2>({0.9, 1.0, 0.02});
   expect_valid_shell<2>({1.0, 3.0, 0.3});
@@ -65,11 +70,18 @@ void expect_measure_convergence(double coarse_size) {
   EXPECT_LT(fine_error, coarse_error / 3) << "coarse error " << coarse_error << ", fine error " << fine_error;
 }
 
-TEST(Annulus, AreaConvergesAsTheSizeDecreases) { expect_measure_convergence<2>(0.1); }
+TEST(Annulus, AreaConvergesAsTheSizeDecreases) {
+  HOCAV_SKIP_WITHOUT_GMSH();
+  expect_measure_convergence<2>(0.1);
+}
 
-TEST(Annulus, IsDeterministic) { expect_deterministic<2>({0.5, 1.0, 0.07}); }
+TEST(Annulus, IsDeterministic) {
+  HOCAV_SKIP_WITHOUT_GMSH();
+  expect_deterministic<2>({0.5, 1.0, 0.07});
+}
 
 TEST(Annulus, RejectsBadParameters) {
+  HOCAV_SKIP_WITHOUT_GMSH();
   EXPECT_THROW(generate_annulus({1.0, 0.5, 0.1}), Error);
   EXPECT_THROW(generate_annulus({0.0, 1.0, 0.1}), Error);
   EXPECT_THROW(generate_annulus({0.5, 1.0, 0.0}), Error);
@@ -77,18 +89,29 @@ TEST(Annulus, RejectsBadParameters) {
   EXPECT_THROW(generate_annulus({0.5, 1.0, 1e-6}), Error);  // far too many elements
 }
 
-TEST(SphereShell, DefaultIsValidAndHasTheExactVolume) { expect_valid_shell<3>({0.5, 1.0, 0.25}); }
+TEST(SphereShell, DefaultIsValidAndHasTheExactVolume) {
+  HOCAV_SKIP_WITHOUT_GMSH();
+  expect_valid_shell<3>({0.5, 1.0, 0.25});
+}
 
 TEST(SphereShell, OtherRadiiAndSizes) {
+  HOCAV_SKIP_WITHOUT_GMSH();
   expect_valid_shell<3>({0.3, 1.0, 0.15});
   expect_valid_shell<3>({2.0, 3.0, 0.5});
 }
 
-TEST(SphereShell, VolumeConvergesAsTheSizeDecreases) { expect_measure_convergence<3>(0.3); }
+TEST(SphereShell, VolumeConvergesAsTheSizeDecreases) {
+  HOCAV_SKIP_WITHOUT_GMSH();
+  expect_measure_convergence<3>(0.3);
+}
 
-TEST(SphereShell, IsDeterministic) { expect_deterministic<3>({0.5, 1.0, 0.25}); }
+TEST(SphereShell, IsDeterministic) {
+  HOCAV_SKIP_WITHOUT_GMSH();
+  expect_deterministic<3>({0.5, 1.0, 0.25});
+}
 
 TEST(SphereShell, RejectsBadParameters) {
+  HOCAV_SKIP_WITHOUT_GMSH();
   EXPECT_THROW(generate_sphere_shell({0.5, 0.5, 0.1}), Error);
   EXPECT_THROW(generate_sphere_shell({0.5, 1.0, -1.0}), Error);
   EXPECT_THROW(generate_sphere_shell({0.5, 1.0, 1e-4}), Error);

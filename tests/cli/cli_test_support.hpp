@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "gmsh_requirement.hpp"
+
 namespace hocav::cli_test {
 
 namespace fs = std::filesystem;

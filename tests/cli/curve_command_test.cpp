@@ -40,12 +40,14 @@ class CurveCli : public Cli {
 };
 
 TEST_F(CurveCli, AnnulusInACircularShearLayer) {
+  HOCAV_SKIP_WITHOUT_GMSH();
   run_ok("generate annulus --h 0.05 -o annulus.meshb");
   run_ok("metric annulus.meshb --analytic shear-circle --radius 0.75 --width 0.05 --h-min 0.005 --h-max 0.05 -o annulus.solb");
   curve_and_check("annulus.meshb", "annulus.solb");
 }
 
 TEST_F(CurveCli, SphereShellInASphericalShearLayerOnTwoThreads) {
+  HOCAV_SKIP_WITHOUT_GMSH();
   run_ok("generate sphere-shell --h 0.2 -o shell.meshb");
   run_ok("metric shell.meshb --analytic shear-sphere --radius 0.75 --width 0.1 --h-min 0.02 --h-max 0.2 -o shell.solb");
   curve_and_check("shell.meshb", "shell.solb", "--threads 2");

@@ -17,6 +17,7 @@ int element_count(const std::string& outline, const std::string& element) {
 }
 
 TEST_F(DemoCli, WritesTheCurvedMeshTheReportAndThePictures) {
+  HOCAV_SKIP_WITHOUT_GMSH();
   Outcome demo = run_ok("demo --h 0.4 --threads 2 -o results");
   const std::vector<std::string> names{"sphere-shell-p2.meshb", "sphere-shell-p2.vtu", "sphere-shell-report.json",
                                        "sphere-shell-cut.svg",  "shear-circle-p2.svg", "edge-gains.svg",

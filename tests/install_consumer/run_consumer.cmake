@@ -26,7 +26,7 @@ step("configure the consumer" ${CMAKE_COMMAND} -S ${CONSUMER_DIR} -B ${WORK_DIR}
 step("build the consumer" ${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 
 set(hocav ${prefix}/bin/hocav)
-step("generate" ${hocav} generate annulus --h 0.1 -o ${WORK_DIR}/annulus.meshb)
+step("generate" ${hocav} generate polar-annulus --target-triangles 1000 -o ${WORK_DIR}/annulus.meshb)
 step("run the consumer" ${WORK_DIR}/build/hocav_consumer ${WORK_DIR}/annulus.meshb ${WORK_DIR}/adapted.meshb)
 step("check its output" ${hocav} stats ${WORK_DIR}/adapted.meshb)
 

@@ -1,6 +1,5 @@
 #include "surface/cad_boundary_gmsh.hpp"
 
-#include <gmsh.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +10,10 @@
 #include "cases/concentric_shell.hpp"
 #include "surface/analytic_boundary.hpp"
 #include "surface/boundary_proposals.hpp"
+#include "gmsh_requirement.hpp"
+#if HOCAV_WITH_GMSH
+#include <gmsh.h>  // the cylinder of RidgeCurveBetweenTwoSurfaces
+#endif
 
 namespace hocav {
 namespace {
@@ -23,6 +26,7 @@ std::string temporary_path(const std::string& name) {
 constexpr double kCadTolerance = 1e-9;
 
 TEST(SurfaceCad, SphereShellBrepWithRefsAsTags) {
+  HOCAV_SKIP_WITHOUT_GMSH();
   const std::string path = temporary_path("hocav_shell.brep");
   write_shell_cad<3>(0.5, 1.0, path);
   const CadBoundary<3> cad(path);
@@ -42,6 +46,7 @@ TEST(SurfaceCad, SphereShellBrepWithRefsAsTags) {
 }
 
 TEST(SurfaceCad, SphereShellRefsMapByProximity) {
+  HOCAV_SKIP_WITHOUT_GMSH();
   const ShellParameters parameters{0.5, 1.0, 0.5};
   const Mesh<3> mesh = generate_sphere_shell(parameters);
   const std::string path = temporary_path("hocav_shell.step");
@@ -59,6 +64,7 @@ TEST(SurfaceCad, SphereShellRefsMapByProximity) {
 }
 
 TEST(SurfaceCad, AnnulusCurves) {
+  HOCAV_SKIP_WITHOUT_GMSH();
   const ShellParameters parameters{0.5, 1.0, 0.2};
   const Mesh<2> mesh = generate_annulus(parameters);
   const std::string path = temporary_path("hocav_annulus.brep");
@@ -73,7 +79,9 @@ TEST(SurfaceCad, AnnulusCurves) {
 
 // A cylinder's side and top meet along a circle: edges across them are projected onto it.
 TEST(SurfaceCad, RidgeCurveBetweenTwoSurfaces) {
+  HOCAV_SKIP_WITHOUT_GMSH();
   const std::string path = temporary_path("hocav_cylinder.brep");
+#if HOCAV_WITH_GMSH
   {
     GmshSession session("cylinder");
     call_gmsh([&] {
@@ -82,6 +90,7 @@ TEST(SurfaceCad, RidgeCurveBetweenTwoSurfaces) {
       gmsh::write(path);
     });
   }
+#endif
   const CadBoundary<3> cad(path);
   // Find the side (the surface with a radial normal) and a cap among the tags.
   int side = 0, cap = 0;
@@ -98,6 +107,7 @@ TEST(SurfaceCad, RidgeCurveBetweenTwoSurfaces) {
 }
 
 TEST(SurfaceCad, Errors) {
+  HOCAV_SKIP_WITHOUT_GMSH();
   EXPECT_THROW(CadBoundary<3>(temporary_path("no_such_file.brep")), Error);
   const std::string path = temporary_path("hocav_shell_errors.brep");
   write_shell_cad<3>(0.5, 1.0, path);
