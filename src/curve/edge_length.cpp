@@ -7,7 +7,7 @@
 namespace hocav {
 namespace {
 
-// The P2 Lagrange basis along the edge (math.md §4).
+// The P2 Lagrange basis along the edge (docs/method.md §4).
 struct EdgeBasis {
   double a, middle, b;
 };

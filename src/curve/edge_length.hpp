@@ -1,4 +1,4 @@
-// Riemannian length of a P2 edge as a function of its Lagrange (mid) node X (math.md §3–6, eq 12):
+// Riemannian length of a P2 edge as a function of its Lagrange (mid) node X (docs/method.md §3–6, eq 12):
 //   ℓ(X) = Σ_q w_q sqrt(g(t_q)),  g(t) = γ'(t)ᵀ exp(T(t)) γ'(t),
 //   γ'(t) = (4t−3)A + 4(1−2t)X + (4t−1)B,  T(t) = φ_A(t) L_A + φ_M(t) L^L + φ_B(t) L_B,
 // with L_A, L_B the log-metrics of the edge's vertices and L^L the back-mesh log-metric at X. The
@@ -30,7 +30,7 @@ struct EdgeLengthValue {
 };
 
 // An edge's vertex with its metric: exp(log_metric), the metric at the nodes t = 0, 1 of rules that
-// have them. A caller curving many edges around one vertex makes it once (math.md §4).
+// have them. A caller curving many edges around one vertex makes it once (docs/method.md §4).
 template <int D>
 struct EdgeEndpoint {
   Vec<D> position{};

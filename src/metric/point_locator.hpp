@@ -1,4 +1,4 @@
-// Localization of points in the back mesh (math.md §2, step 1): the back element containing a
+// Localization of points in the back mesh (docs/method.md §2, step 1): the back element containing a
 // point and the point's barycentric coordinates there.
 //
 // A walk from a hint element moves across the face with the most negative barycentric coordinate
