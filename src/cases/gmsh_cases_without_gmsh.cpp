@@ -1,9 +1,10 @@
 // The gmsh entry points of src/cases/ in a build without gmsh (CMake option HOCAV_WITH_GMSH=OFF): the
-// same interface as gmsh_model.cpp and concentric_shell.cpp, every call an Error that says what needed
+// same interface as gmsh_model.cpp, concentric_shell.cpp and machined_part.cpp, every call an Error that says what needed
 // gmsh, so that the command line reports it in one line and the rest of hocav works without it.
 #include "base/error.hpp"
 #include "cases/concentric_shell.hpp"
 #include "cases/gmsh_model.hpp"
+#include "cases/machined_part.hpp"
 
 namespace hocav {
 namespace {
@@ -34,6 +35,14 @@ Mesh<2> generate_annulus(const ShellParameters&) {
 
 Mesh<3> generate_sphere_shell(const ShellParameters&) {
   throw_gmsh_missing("case sphere-shell", "the structured cubed-shell case needs none");
+}
+
+Mesh<3> generate_machined_part(const MachinedPartParameters&) { throw_gmsh_missing("case part"); }
+
+std::vector<GmshBoundaryEntity> build_machined_part_model(const MachinedPartParameters&) { throw_gmsh_missing("a CAD model"); }
+
+void write_machined_part_cad(const MachinedPartParameters&, const std::string& path) {
+  throw_gmsh_missing("writing the CAD model " + path);
 }
 
 template <int D>

@@ -19,6 +19,7 @@
 #include "surface/cad_boundary_gmsh.hpp"
 #include "surface/cubic_patch.hpp"
 #include "surface/surrogate_checks.hpp"
+#include "gmsh_requirement.hpp"
 
 namespace hocav {
 namespace {
@@ -49,6 +50,7 @@ std::vector<Index> boundary_only_elements(const Mesh<3>& mesh) {
 }
 
 TEST(MachinedPart, IsAValidDeterministicMeshWithItsFeatures) {
+  HOCAV_SKIP_WITHOUT_GMSH();
   const Mesh<3> mesh = generate_machined_part(kCoarse);
   EXPECT_EQ(check_consistency(mesh), std::vector<std::string>{});
   std::set<int> refs;
@@ -67,6 +69,7 @@ TEST(MachinedPart, IsAValidDeterministicMeshWithItsFeatures) {
 }
 
 TEST(MachinedPart, CurvedWithTheCadEveryBoundaryNodeOnItOrHeldByTheFloor) {
+  HOCAV_SKIP_WITHOUT_GMSH();
   Mesh<3> mesh = generate_machined_part(kCoarse);
   const std::string path = (std::filesystem::path(::testing::TempDir()) / "hocav_part.step").string();
   write_machined_part_cad(kCoarse, path);
@@ -124,6 +127,7 @@ TEST(MachinedPart, CurvedWithTheCadEveryBoundaryNodeOnItOrHeldByTheFloor) {
 }
 
 TEST(MachinedPart, SurrogateRidgeCurvesAreSharedBitForBitByBothPatches) {
+  HOCAV_SKIP_WITHOUT_GMSH();
   const Mesh<3> mesh = generate_machined_part(kCoarse);
   const P3Surrogate<3> surrogate(mesh);
   Index ridge_sides = 0;
