@@ -68,7 +68,7 @@ OperationCount collapse_short_edges(AdaptationMesh<D>& mesh, const AdaptationLim
 // Collapses `removed` onto `kept` (an edge) when the classes, the cavity operator and the tests
 // of collapse_short_edges allow it.
 template <int D>
-struct CollapseScratch {
+struct alignas(64) CollapseScratch {  // a cache line of its own: each thread writes its own
   std::vector<Index> ball, facets, lines;
   std::vector<typename Mesh<D>::Element> star;
 };

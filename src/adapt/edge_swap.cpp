@@ -19,6 +19,8 @@ constexpr std::size_t kLargestSwappedShell = 6;
 // Candidates are swept this many at a time, so that the cavities kept for them take little memory
 // whatever the mesh's size (a chunk's batches still hold hundreds of cavities each).
 constexpr std::size_t kSweepChunk = 16384;
+// Smaller batches are judged on the calling thread alone.
+constexpr std::size_t kSmallestThreadedBatch = 256;
 
 // A swap must beat the worst quality it replaces by this factor: no swap undoes another.
 constexpr double kSwapGain = 1.05;
@@ -30,7 +32,7 @@ constexpr double swap_quality() {
 }
 
 template <int D>
-struct SwapScratch {
+struct alignas(64) SwapScratch {  // a cache line of its own: each thread writes its own
   std::vector<Index> neighbors;
   std::vector<typename Mesh<D>::Element> old_elements, star;
   std::vector<std::array<Index, D>> faces;  // the cavity's boundary faces, as its elements orient them
@@ -249,9 +251,8 @@ void swap_batch(AdaptationMesh<D>& am, std::span<const SwapCandidate<N>> candida
   }
   const std::vector<Index>& judged = round.batch;
   round.chosen.assign(judged.size(), kNoIndex);
-  pool.run(round.scratch.size(), [&](std::size_t worker) {
-    for (std::size_t i = worker; i < judged.size(); i += round.scratch.size())
-      round.chosen[i] = best_apex(am, round.cavities[static_cast<std::size_t>(judged[i])], round.scratch[worker], limits);
+  run_strided(pool, judged.size(), kSmallestThreadedBatch, [&](std::size_t worker, std::size_t i) {
+    round.chosen[i] = best_apex(am, round.cavities[static_cast<std::size_t>(judged[i])], round.scratch[worker], limits);
   });
   auto& work = am.workspace();
   for (std::size_t i = 0; i < judged.size(); ++i) {

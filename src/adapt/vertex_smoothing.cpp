@@ -17,6 +17,8 @@ namespace {
 
 // A move must raise the ball's worst quality by this factor (mmg asks 1.02): no move undoes another.
 constexpr double kSmoothingGain = 1.01;
+// Smaller batches are tried on the calling thread alone.
+constexpr std::size_t kSmallestThreadedBatch = 256;
 
 // The mean over the ball's elements of w + (v − w)/l(v, w) for each other vertex w (a neighbour
 // counts once per element it shares with v); each length is evaluated once.
@@ -40,7 +42,7 @@ Vec<D> unit_edge_target(const AdaptationMesh<D>& am, Index v, std::span<const In
 }
 
 template <int D>
-struct SmoothingScratch {
+struct alignas(64) SmoothingScratch {  // a cache line of its own: each thread writes its own
   std::vector<Index> neighbors, facets;
   std::vector<double> lengths;
   std::vector<typename Mesh<D>::Element> elements;
@@ -147,11 +149,9 @@ std::vector<Index> smooth_round(AdaptationMesh<D>& am, const SmoothingCandidates
   std::vector<char> moved;
   for (const std::vector<Index>& batch : batches.batches()) {
     moved.assign(batch.size(), 0);
-    pool.run(scratch.size(), [&](std::size_t worker) {
-      for (std::size_t n = worker; n < batch.size(); n += scratch.size()) {
-        const auto i = static_cast<std::size_t>(batch[n]);
-        moved[n] = smooth_vertex(am, candidates.vertices[i], candidates.ball(i), scratch[worker], limits);
-      }
+    run_strided(pool, batch.size(), kSmallestThreadedBatch, [&](std::size_t worker, std::size_t n) {
+      const auto i = static_cast<std::size_t>(batch[n]);
+      moved[n] = smooth_vertex(am, candidates.vertices[i], candidates.ball(i), scratch[worker], limits);
     });
     for (std::size_t n = 0; n < batch.size(); ++n) {
       count.add(moved[n] ? Refusal::kNone : Refusal::kQuality);

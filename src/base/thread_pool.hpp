@@ -39,4 +39,17 @@ class ThreadPool {
   bool stopping_ = false;
 };
 
+// Calls work(worker, i) for every i in [0, count): worker w of the pool's threads takes i = w, w + W,
+// … (so each worker may keep its own scratch), or the calling thread alone takes them all (worker 0)
+// when there are fewer than `serial_below`, where waking the threads would cost more than it saves.
+template <typename Work>
+void run_strided(ThreadPool& pool, std::size_t count, std::size_t serial_below, const Work& work) {
+  const std::size_t workers = count < serial_below ? 1 : static_cast<std::size_t>(pool.thread_count());
+  const auto run_worker = [&](std::size_t worker) {
+    for (std::size_t i = worker; i < count; i += workers) work(worker, i);
+  };
+  if (workers == 1) run_worker(0);
+  else pool.run(workers, run_worker);
+}
+
 }  // namespace hocav
