@@ -7,7 +7,8 @@ include(CMakePackageConfigHelpers)
 set(HOCAV_INCLUDE_DIR ${CMAKE_INSTALL_INCLUDEDIR}/hocav)
 set(HOCAV_PUBLIC_HEADERS
     mesh/mesh.hpp mesh/consistency.hpp mesh/measure.hpp io/mesh_file.hpp metric/analytic_metric.hpp
-    metric/metric_field.hpp adapt/adaptation_metric.hpp adapt/adaptation_loop.hpp surface/p3_surrogate.hpp)
+    metric/metric_field.hpp adapt/adaptation_metric.hpp adapt/adaptation_loop.hpp adapt/adaptation_driver.hpp
+    adapt/curving_run.hpp surface/p3_surrogate.hpp)
 install(CODE "set(HOCAV_SOURCE_DIR [[${PROJECT_SOURCE_DIR}]])
               set(HOCAV_PUBLIC_HEADERS [[${HOCAV_PUBLIC_HEADERS}]])
               set(HOCAV_HEADER_DESTINATION [[${HOCAV_INCLUDE_DIR}]])")

@@ -11,6 +11,10 @@
 
 namespace hocav {
 
+// The default largest distance of a new boundary facet from the geometry, relative to the bounding box's
+// diagonal (`hocav adapt --hausd`).
+constexpr double kRelativeHausd = 0.01;
+
 struct AdaptationSettings {
   int max_passes = 20;
   double feature_angle_degrees = 45;  // boundary sides meeting at more are ridges (2D: corners)

@@ -1,9 +1,11 @@
 #include "adapt/adaptation_metric.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "geom/sym_eigen.hpp"
 #include "geom/sym_functions.hpp"
+#include "mesh/measure.hpp"
 
 namespace hocav {
 
@@ -25,6 +27,20 @@ SymMat<D> AdaptationMetric<D>::clamped(const SymMat<D>& metric) const {
   return SymMat<D>::from_eigen(eigen.vectors, eigen.values);
 }
 
+template <int D>
+double expected_element_count(const Mesh<D>& input, const AdaptationMetric<D>& metric) {
+  double complexity = 0;
+  Index hint = kNoIndex;
+  for (Index k = 0; k < input.element_count(); ++k) {
+    Vec<D> centroid{};
+    for (Index v : input.element(k)) centroid = centroid + (1.0 / (D + 1)) * input.vertex(v);
+    complexity += std::sqrt(determinant(metric.metric_at(centroid, hint))) * std::abs(element_measure(input, k));
+  }
+  return complexity / (D == 3 ? std::sqrt(2.0) / 12 : std::sqrt(3.0) / 4);
+}
+
+template double expected_element_count(const Mesh<2>&, const AdaptationMetric<2>&);
+template double expected_element_count(const Mesh<3>&, const AdaptationMetric<3>&);
 template class AdaptationMetric<2>;
 template class AdaptationMetric<3>;
 

@@ -36,6 +36,12 @@ class AdaptationMetric {
   SizeBounds bounds_;
 };
 
+// The output's element count `metric` asks for on the domain of `input`: its complexity ∫ √det M (the
+// metric at each element's centroid) divided by the metric volume of a regular unit simplex (√2/12 in
+// 3D, √3/4 in 2D). For the memory check before a run.
+template <int D>
+double expected_element_count(const Mesh<D>& input, const AdaptationMetric<D>& metric);
+
 extern template class AdaptationMetric<2>;
 extern template class AdaptationMetric<3>;
 

@@ -1,10 +1,13 @@
-// One curving of a mesh in its metric, as `hocav curve`, `hocav demo` and `hocav bench` run it:
-// boundary proposals from a geometry (none: boundary nodes stay), every volume vertex reinserted
-// by the P2 cavity operator, the proposals no cavity consumed placed by a last pass
-// (proposal_completion.hpp; its time counts in the curving time), the output measured.
+// One curving of a mesh in its metric, as `hocav curve`, `hocav demo`, `hocav bench` and the Python
+// module run it: boundary proposals from a geometry (none: boundary nodes stay), every volume vertex
+// reinserted by the P2 cavity operator, the proposals no cavity consumed placed by a last pass
+// (proposal_completion.hpp; its time counts in the curving time), the output measured (docs/curving.md).
 #pragma once
 
+#include <functional>
+
 #include "adapt/reinsertion_curving.hpp"
+#include "curve/quadrature.hpp"
 #include "report/curving_report.hpp"
 #include "surface/boundary_geometry.hpp"
 
@@ -19,5 +22,22 @@ struct CurvingRun {
 template <int D>
 CurvingRun curve_with_boundary(Mesh<D>& mesh, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
                                const ReinsertionOptions& options);
+
+// The options of `hocav curve` (docs/usage.md).
+struct CurvingOptions {
+  QuadratureRule quadrature = default_optimizer_rule();  // of the length the edge optimizer minimizes
+  double jacobian_floor = 0.01;  // every element the operator creates keeps its min normalized Jacobian above
+  int passes = 1;                // reinsertion passes over the volume vertices
+  int threads = 1;               // the output does not depend on it
+  // Called now and then with the fraction of the work done.
+  std::function<void(double)> progress;
+};
+
+// The paper's algorithm on `mesh` (P1 or P2; the field's back mesh is its P1 copy, or any mesh
+// covering it): boundary nodes proposed from `geometry` (may be null), every volume vertex
+// reinserted, the result checked consistent (Error otherwise) and measured.
+template <int D>
+CurvingReport curve_in_metric(Mesh<D>& mesh, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
+                              const CurvingOptions& options);
 
 }  // namespace hocav

@@ -3,6 +3,7 @@
 // handed out one at a time, so uneven items balance themselves.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
@@ -38,6 +39,9 @@ class ThreadPool {
   int busy_ = 0;
   bool stopping_ = false;
 };
+
+// The default thread count of every command (and of the Python module): every core the machine has.
+inline int every_core() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
 
 // Calls work(worker, i) for every i in [0, count): worker w of the pool's threads takes i = w, w + W,
 // … (so each worker may keep its own scratch), or the calling thread alone takes them all (worker 0)

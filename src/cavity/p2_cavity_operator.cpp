@@ -155,7 +155,7 @@ void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh) {
       end_a_vertex = a;
     }
     auto result = optimize_edge_length(field_, end_a, edge_endpoint(mesh.vertex(b), vertex_log_metrics_[b]), starts[i],
-                                       vertex_hints_[a], options_.optimizer);
+                                       vertex_hints_[a], options_.optimizer, locator_scratch_);
     ++counters_.edges_optimized;
     counters_.optimizer_iterations += result.iterations;
     vertex_hints_[a] = result.back_element;  // near a: the next walk from a starts close

@@ -138,6 +138,7 @@ class P2CavityOperator {
   std::vector<Index> shell_;
   std::vector<std::pair<typename Mesh<D>::Element, bool>> cavity_vertex_sets_;
   std::vector<Vec<D>> inner_nodes_;
+  LocatorScratch locator_scratch_;  // the optimizer's localizations, from one edge to the next
   std::vector<std::pair<Index, Vec<D>>> boundary_nodes_;
 };
 

@@ -3,21 +3,17 @@
 //                [--jacobian-floor J] [--iterations N] [--threads N] [--report R.json] [--vtu V.vtu]
 // Metric-based adaptation to a unit mesh (split, collapse, swap, smooth; boundary points on the
 // geometry), then, with --order 2, the curving of `hocav curve` in the same metric.
-#include <algorithm>
-#include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
 
 #include "base/memory_budget.hpp"
-#include "geom/sym_eigen.hpp"
-#include "cli/adaptation_driver.hpp"
+#include "adapt/adaptation_driver.hpp"
+#include "cli/command_support.hpp"
 #include "cli/commands.hpp"
 #include "cli/number_checks.hpp"
 #include "io/atomic_output.hpp"
 #include "io/output_set.hpp"
-#include "mesh/measure.hpp"
-#include "metric/gradation.hpp"
 
 namespace hocav {
 namespace {
@@ -26,7 +22,6 @@ struct AdaptOptions {
   std::string input, metric, analytic, output, report, vtu, surface = "p3";
   int order = 2;
   std::optional<double> h_min, h_max, gradation;
-  double hausd = 0.01;  // relative to the bounding box's diagonal when --hausd is not given
   std::optional<double> hausd_given;
   double angle = 45;
   double jacobian_floor = 0.01;
@@ -42,104 +37,51 @@ void check_options(const AdaptOptions& o) {
     throw Error("--hgrad grades a metric given on a mesh: make one with `hocav metric --analytic NAME --gradation BETA`");
 }
 
-// The metric of the run: the input mesh as back mesh with its graded metric, or the analytic field.
-template <int D>
-struct RunMetric {
-  std::optional<MetricField<D>> field;
-  std::optional<AdaptationMetric<D>> metric;
-};
-
-// Sizes below this share of the input's bounding-box diagonal are never asked for: elements that
-// small lose the digits their orientation and volume tests need, and the loop could not converge.
-constexpr double kSmallestRelativeSize = 1e-6;
-
-// The smallest size the metric asks at the input's vertices.
-template <int D>
-double smallest_size_at_vertices(const Mesh<D>& input, const AdaptationMetric<D>& metric) {
-  double largest_eigenvalue = 0;
-  Index hint = kNoIndex;
-  for (const Vec<D>& x : input.vertices()) {
-    const SymEigen<D> eigen = spd_eigen(metric.metric_at(x, hint));
-    for (int k = 0; k < D; ++k) largest_eigenvalue = std::max(largest_eigenvalue, eigen.values[k]);
-  }
-  return 1 / std::sqrt(largest_eigenvalue);
-}
-
-template <int D>
-AdaptationMetric<D> metric_within(const RunMetric<D>& run, const AdaptOptions& o, const SizeBounds& bounds) {
-  if (run.field) return AdaptationMetric<D>(*run.field, bounds);
-  AnalyticMetricSpec spec;
-  spec.name = o.analytic;
-  return AdaptationMetric<D>(spec, bounds);
-}
-
-template <int D>
-void make_run_metric(RunMetric<D>& run, const Mesh<D>& input, const MeshFileContent& file, const AdaptOptions& o) {
-  if (o.analytic.empty()) {
-    std::vector<SymMat<D>> metrics = metrics_of_rows<D>(read_metric_for_mesh(o.metric, file, false));
-    if (o.gradation) grade_metrics(input, metrics, {*o.gradation});
-    run.field.emplace(input, metrics);
-  }
-  SizeBounds bounds{o.h_min.value_or(0), o.h_max.value_or(1e300)};
-  const double floor = kSmallestRelativeSize * bounding_box_diagonal(input);
-  const double smallest = std::min(bounds.h_min > 0 ? bounds.h_min : 1e300, smallest_size_at_vertices(input, metric_within(run, o, bounds)));
-  if (smallest < floor) {
-    std::cerr << "hocav adapt: warning: " << (o.analytic.empty() ? o.metric : "--analytic " + o.analytic) << ": sizes down to "
-              << smallest << " asked, below what the geometry allows; clamped to " << floor << " (1e-6 of the input's diagonal)\n";
-    bounds.h_min = std::min(floor, bounds.h_max);
-  }
-  run.metric.emplace(metric_within(run, o, bounds));
-}
-
-// The output's element count the metric asks for: its complexity ∫ √det M over the input (the
-// metric at each element's centroid) divided by the metric volume of a regular unit simplex
-// (√2/12 in 3D, √3/4 in 2D).
-template <int D>
-double expected_elements(const Mesh<D>& input, const AdaptationMetric<D>& metric) {
-  double complexity = 0;
-  Index hint = kNoIndex;
-  for (Index k = 0; k < input.element_count(); ++k) {
-    Vec<D> centroid{};
-    for (Index v : input.element(k)) centroid = centroid + (1.0 / (D + 1)) * input.vertex(v);
-    complexity += std::sqrt(determinant(metric.metric_at(centroid, hint))) * std::abs(element_measure(input, k));
-  }
-  return complexity / (D == 3 ? std::sqrt(2.0) / 12 : std::sqrt(3.0) / 4);
-}
-
-// The loop stops at --iterations passes at the latest; when it stops there the metric may ask for
-// what the mesh cannot give (sizes below what corners, required entities or the geometry allow, or
-// a field too rough for its back mesh), and the user hears it.
+// A loop stopped by --iterations is worth a warning (non_convergence_summary says why).
 void warn_if_not_converged(const AdaptOptions& o, const AdaptationReport& report) {
-  if (report.run.converged || report.run.passes.empty()) return;
-  const AdaptationPass& last = report.run.passes.back();
-  std::cerr << "hocav adapt: warning: " << o.input << ": not converged after " << report.run.passes.size()
-            << " passes (the last split " << last.splits.done << " and collapsed " << last.collapses.done << " edges; "
-            << static_cast<int>(1000 * report.measures.unit_share) / 10.0
-            << "% of edges unit); raise --iterations, or check that the metric asks for sizes the geometry allows\n";
+  if (const std::string why = non_convergence_summary(report); !why.empty())
+    std::cerr << "hocav adapt: warning: " << o.input << ": " << why << '\n';
+}
+
+// The command's options as the library's job.
+template <int D>
+AdaptationJob<D> adaptation_job(const AdaptOptions& o) {
+  AdaptationJob<D> job;
+  if (!o.analytic.empty()) {
+    job.analytic.emplace();
+    job.analytic->name = o.analytic;
+  }
+  job.bounds = {o.h_min.value_or(0), o.h_max.value_or(1e300)};
+  job.gradation = o.gradation;
+  job.hausd = o.hausd_given;
+  job.angle = o.angle;
+  job.iterations = o.iterations;
+  job.threads = o.threads;
+  job.metric_name = o.analytic.empty() ? o.metric : "--analytic " + o.analytic;
+  job.warn = [](const std::string& warning) { std::cerr << "hocav adapt: warning: " << warning << '\n'; };
+  if (o.order == 2) {
+    job.curving.emplace();
+    job.curving->jacobian_floor = o.jacobian_floor;
+    job.curving->threads = o.threads;
+  }
+  job.geometry = [surface = boundary_choice_named(o.surface)](const Mesh<D>& mesh) { return make_boundary_geometry<D>(surface, mesh); };
+  if (!o.quiet) job.pass_progress = [](int pass, int cap) { std::cerr << "adapting: pass " << pass << " (at most " << cap << ")\n"; };
+  return job;
 }
 
 template <int D>
 void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, OutputSet& outputs) {
-  check_input_mesh(mesh, o.input);
-  mesh.forget_edges();
-  const Mesh<D> input = mesh;
-  RunMetric<D> run;
-  make_run_metric(run, input, file, o);
-  const double expected = expected_elements(input, *run.metric);
-  check_memory_fits("adapting " + o.input + " (the metric asks for about " + std::to_string(static_cast<long long>(expected)) +
-                        " elements)",
-                    expected, kAdaptationBytesPerElement);
-  const auto geometry = boundary_geometry<D>(o.surface, input);
-
-  AdaptationSettings settings;
-  settings.max_passes = o.iterations;
-  settings.feature_angle_degrees = o.angle;
-  settings.threads = o.threads;
-  settings.hausd = o.hausd_given.value_or(o.hausd * bounding_box_diagonal(input));
-  if (!o.quiet) settings.progress = [](int pass, int cap) { std::cerr << "adapting: pass " << pass << " (at most " << cap << ")\n"; };
-  std::optional<CurvingSettings> curving;
-  if (o.order == 2) curving = CurvingSettings{o.surface, "simpson", o.jacobian_floor, 1, o.threads, !o.quiet};
-  const AdaptedMesh<D> adapted = adapt_and_curve(mesh, *run.metric, geometry.get(), settings, curving);
+  check_mesh_or_warn(mesh, o.input);
+  std::vector<SymMat<D>> metrics;
+  if (o.analytic.empty()) metrics = metrics_of_rows<D>(read_metric_for_mesh(o.metric, file, false));
+  AdaptationJob<D> job = adaptation_job<D>(o);
+  std::optional<CurvingProgress> progress;  // drawn on a terminal, unless quiet
+  job.before_curving = [&progress, &o](const Mesh<D>& adapted, CurvingOptions& curving) {
+    progress.emplace(adapted, curving.passes, !o.quiet);
+    progress->attach(curving);
+  };
+  const AdaptedMesh<D> adapted = run_adaptation_job(mesh, std::move(metrics), job, o.input);
+  if (progress) progress->complete();
   const AdaptationReport& report = adapted.report;
   warn_if_not_converged(o, report);
 

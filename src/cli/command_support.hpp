@@ -1,86 +1,44 @@
-// What the commands share: the dimension of a mesh read from a file, the metric (or scalar field)
-// that goes with a mesh file (checked and renumbered to hocav's node order), the curving run of
-// `hocav curve` and its .vtu (also run by `hocav demo`), and a one-line mesh summary.
+// What the commands share: the input mesh's check with its warning and the progress line of a
+// curving run. The rest they share is the library's (io/node_metrics.hpp,
+// report/curved_vtu.hpp, report/mesh_summary.hpp, surface/boundary_choice.hpp).
 #pragma once
 
 #include <algorithm>
+#include <iostream>
 #include <memory>
 #include <string>
-#include <thread>
-#include <vector>
 
-#include "geom/sym_mat.hpp"
-#include "io/mesh_file.hpp"
-#include "io/solution_file.hpp"
-#include "io/vtu_file.hpp"
-#include "metric/metric_field.hpp"
-#include "report/curving_report.hpp"
-#include "surface/boundary_geometry.hpp"
+#include "adapt/curving_run.hpp"
+#include "base/thread_pool.hpp"
+#include "cli/progress_line.hpp"
+#include "io/node_metrics.hpp"
+#include "mesh/input_check.hpp"
+#include "report/curved_vtu.hpp"
+#include "report/mesh_summary.hpp"
+#include "surface/boundary_choice.hpp"
 
 namespace hocav {
 
-// The default of --threads: every core the machine has.
-inline int every_core() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
-
-inline int dimension_of(const AnyMesh& mesh) { return std::holds_alternative<Mesh<2>>(mesh) ? 2 : 3; }
-
-// Reads the metric file given with a mesh file and checks it against that file (a symmetric matrix
-// per file node, finite and positive definite). Returns its rows in the node order every writer
-// uses: the mesh's vertices, then, when with_edge_nodes (a P2 mesh read as P2), each edge's node.
-SolutionField read_metric_for_mesh(const std::string& metric_path, const MeshFileContent& mesh_file, bool with_edge_nodes);
-
-// The scalar field of a solution file given with a mesh file (the first scalar field, one finite
-// value per file node), at the mesh's vertices.
-std::vector<double> read_scalar_for_mesh(const std::string& solution_path, const MeshFileContent& mesh_file);
-
-// Metric rows in .sol order and the matrices they hold, both ways.
+// check_input_mesh, its defects (which the operators work around) as a warning on stderr.
 template <int D>
-std::vector<SymMat<D>> metrics_of_rows(const SolutionField& rows);
-template <int D>
-SolutionField rows_of_metrics(const std::vector<SymMat<D>>& metrics);
+void check_mesh_or_warn(const Mesh<D>& mesh, const std::string& path) {
+  if (const std::string defects = check_input_mesh(mesh, path); !defects.empty()) std::cerr << "hocav: warning: " << defects << '\n';
+}
 
-// Metric rows (SolutionField, .sol order) as a ParaView tensor field (9 components, row-major; the
-// z row and column are 0 in 2D).
-template <int D>
-VtuField metric_tensor_field(const SolutionField& metric);
+// The progress line of a curving of a mesh on stderr: drawn when wanted, stderr is a terminal and the
+// mesh is large enough to wait for.
+class CurvingProgress {
+ public:
+  template <int D>
+  CurvingProgress(const Mesh<D>& mesh, int passes, bool wanted);
+  // Makes `options` redraw the line (when there is one).
+  void attach(CurvingOptions& options);
+  // Shows the whole work done: the last few vertices are not reported.
+  void complete();
 
-// Per element: "min_normalized_jacobian" (min of J / |J_straight|) and "scaled_jacobian" (min J /
-// max J, gmsh's measure), refined bounds, for the .vtu cell data.
-template <int D>
-std::vector<VtuField> jacobian_cell_fields(const Mesh<D>& mesh);
-
-// Refuses an input mesh that `hocav stats` calls inconsistent, naming its first problem, and warns on
-// stderr of the defects curving works around (open boundary, non-manifold parts, overlaps).
-template <int D>
-void check_input_mesh(const Mesh<D>& mesh, const std::string& path);
-
-// The options of a curving run (`hocav curve`).
-struct CurvingSettings {
-  std::string surface = "p3";  // boundary curvature: p3, cad:FILE or none
-  std::string quadrature = "simpson";
-  double jacobian_floor = 0.01;
-  int passes = 1;
-  int threads = 1;
-  bool progress = false;  // a progress line on stderr, if a terminal, for meshes large enough to wait for
+ private:
+  double total_ = 0;
+  std::unique_ptr<ProgressLine> line_;
 };
-
-// The geometry of `--surface`: none (nullptr), p3 (the P3 surrogate of the mesh's boundary) or
-// cad:FILE (a STEP or BREP model).
-template <int D>
-std::unique_ptr<BoundaryGeometry<D>> boundary_geometry(const std::string& surface, const Mesh<D>& mesh);
-
-// The paper's algorithm on `mesh` (P1 or P2; its P1 copy is the field's back mesh): boundary
-// curvature proposed from `settings.surface`, every volume vertex reinserted with the P2 cavity
-// operator, the result checked consistent and measured.
-template <int D>
-CurvingReport curve_in_metric(Mesh<D>& mesh, const MetricField<D>& field, const CurvingSettings& settings);
-
-// The curved mesh as a .vtu for ParaView: the metric at every node and jacobian_cell_fields.
-template <int D>
-void write_curved_vtu(const std::string& path, const Mesh<D>& mesh, const MetricField<D>& field);
-
-// "2D P1: 356 vertices, 605 triangles, 95 boundary edges"
-template <int D>
-std::string mesh_summary(const Mesh<D>& mesh);
 
 }  // namespace hocav

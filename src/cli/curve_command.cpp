@@ -18,18 +18,23 @@ namespace {
 
 struct CurveOptions {
   std::string input, metric, output, report, vtu;
-  CurvingSettings settings;
+  std::string surface = "p3", quadrature = "simpson";
+  CurvingOptions curving;
   bool quiet = false;
 };
 
 template <int D>
 void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& options, OutputSet& outputs) {
-  check_input_mesh(mesh, options.input);
+  check_mesh_or_warn(mesh, options.input);
   check_memory_fits("curving " + options.input, mesh.element_count(), kCurvingBytesPerElement);
   const MetricField<D> field(mesh, metrics_of_rows<D>(read_metric_for_mesh(options.metric, file, false)));
-  CurvingSettings settings = options.settings;
-  settings.progress = !options.quiet;  // drawn only when stderr is a terminal
-  const CurvingReport report = curve_in_metric(mesh, field, settings);
+  const auto geometry = make_boundary_geometry<D>(boundary_choice_named(options.surface), mesh);
+  CurvingOptions curving = options.curving;
+  curving.quadrature = quadrature_rule_named(options.quadrature);
+  CurvingProgress progress(mesh, curving.passes, !options.quiet);
+  progress.attach(curving);
+  const CurvingReport report = curve_in_metric(mesh, field, geometry.get(), curving);
+  progress.complete();
 
   write_mesh_file(options.output, mesh);
   if (!options.vtu.empty()) write_curved_vtu(options.vtu, mesh, field);
@@ -48,7 +53,7 @@ void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& optio
 void declare_curve_files(OutputSet& outputs, const CurveOptions& options) {
   outputs.add_input(options.input, "the input mesh");
   outputs.add_input(options.metric, "--metric");
-  if (options.settings.surface.starts_with("cad:")) outputs.add_input(options.settings.surface.substr(4), "--surface cad:");
+  if (options.surface.starts_with("cad:")) outputs.add_input(options.surface.substr(4), "--surface cad:");
   check_writable_mesh_format(options.output);
   outputs.add_output(options.output, "-o");
   if (!options.report.empty()) outputs.add_output(options.report, "--report");
@@ -64,20 +69,20 @@ void add_curve_command(CLI::App& app) {
   command->add_option("input", options->input, "mesh to curve (.mesh, .meshb, .msh; P1 or P2)")->required();
   command->add_option("--metric", options->metric, "metric at the input's nodes (.sol/.solb)")->required();
   command->add_option("-o,--output", options->output, "curved P2 mesh to write (.mesh, .meshb, .msh, .vtu)")->required();
-  command->add_option("--surface", options->settings.surface, "boundary curvature: p3 (a cubic surrogate of the input boundary), cad:FILE (a STEP or BREP model; "
+  command->add_option("--surface", options->surface, "boundary curvature: p3 (a cubic surrogate of the input boundary), cad:FILE (a STEP or BREP model; "
                       "facet refs name its surfaces or are matched by proximity), none")->capture_default_str();
-  command->add_option("--jacobian-floor", options->settings.jacobian_floor,
+  command->add_option("--jacobian-floor", options->curving.jacobian_floor,
                       "every element the operator creates keeps its min normalized Jacobian above this")
       ->check(finite_range(0.0, 1.0, "0 to 1"))
       ->capture_default_str();
-  command->add_option("--quadrature", options->settings.quadrature,
+  command->add_option("--quadrature", options->quadrature,
                       "rule of the length the optimizer minimizes: simpson, trapezoid (the paper's), gauss-N")
       ->capture_default_str();
-  command->add_option("--passes", options->settings.passes, "reinsertion passes over the volume vertices")
+  command->add_option("--passes", options->curving.passes, "reinsertion passes over the volume vertices")
       ->check(CLI::Range(1, 100))
       ->capture_default_str();
-  options->settings.threads = every_core();
-  command->add_option("--threads", options->settings.threads,
+  options->curving.threads = every_core();
+  command->add_option("--threads", options->curving.threads,
                       "threads that prepare independent cavities at once (default: every core; the output does not "
                       "depend on it)")
       ->check(CLI::Range(1, 256))

@@ -14,7 +14,7 @@
 
 #include "base/error.hpp"
 #include "cases/case_registry.hpp"
-#include "cli/adaptation_driver.hpp"
+#include "adapt/adaptation_driver.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
 #include "cli/number_checks.hpp"
@@ -118,18 +118,23 @@ AdaptationReport run_sphere_shell(const DemoOptions& options, Written& written) 
   grade_metrics(input, metrics, GradationOptions{kShellGradation});
   const MetricField<3> back(input, metrics);
   const AdaptationMetric<3> metric(back, {});
-  const auto surface = boundary_geometry<3>("p3", input);
+  const BoundaryChoice p3{BoundaryKind::kP3Surrogate, ""};
+  const auto surface = make_boundary_geometry<3>(p3, input);
 
   progress("adapting to it, then curving on " + std::to_string(options.threads) + " threads");
   AdaptationSettings adaptation;
   adaptation.hausd = 0.01 * bounding_box_diagonal(input);
   adaptation.threads = options.threads;
   adaptation.progress = [](int pass, int cap) { progress("adapting: pass " + std::to_string(pass) + " (at most " + std::to_string(cap) + ")"); };
-  CurvingSettings settings;
-  settings.threads = options.threads;
-  settings.progress = true;
   Mesh<3> mesh = input;
-  const AdaptedMesh<3> adapted = adapt_and_curve(mesh, metric, surface.get(), adaptation, settings);
+  AdaptedMesh<3> adapted = adapt_in_metric(mesh, metric, surface.get(), adaptation);
+  CurvingOptions curving;
+  curving.threads = options.threads;
+  const auto adapted_surface = make_boundary_geometry<3>(p3, mesh);
+  CurvingProgress curving_progress(mesh, curving.passes, true);
+  curving_progress.attach(curving);
+  curve_adapted_mesh(adapted, mesh, adapted_surface.get(), curving);
+  curving_progress.complete();
   const AdaptationReport& report = adapted.report;
   const MetricField<3>& field = *adapted.field;
 
@@ -167,9 +172,10 @@ CurvingReport run_shear_circle(const DemoOptions& options, Written& written) {
   shear.name = "shear-circle";
   const MetricField<2> field(mesh, analytic_metric_at_vertices(shear, mesh));
   progress("curving it in its metric (" + mesh_summary(mesh) + ")");
-  CurvingSettings settings;
-  settings.threads = options.threads;
-  const CurvingReport report = curve_in_metric(mesh, field, settings);
+  CurvingOptions curving;
+  curving.threads = options.threads;
+  const auto surface = make_boundary_geometry<2>({BoundaryKind::kP3Surrogate, ""}, mesh);
+  const CurvingReport report = curve_in_metric(mesh, field, surface.get(), curving);
   MeshFigureOptions figure{"Shear-circle case (the paper's Fig. 1), curved",
                            "P2 triangles drawn exactly (quadratic Bézier edges), filled by their min normalized Jacobian; "
                            "sizes 0.001 across the circle r = 0.75, 0.1 along it",

@@ -32,8 +32,6 @@ namespace {
 enum class Source { kAnalytic, kImplied, kSurface, kHessian, kInput, kInterpolated };
 
 constexpr const char* kAnalyticFieldPrefix = "analytic:";
-// Default h-min of --hessian, as a fraction of h-max: a bound on |H| that only extreme fields reach.
-constexpr double kHessianSizeRange = 1e-6;
 
 struct MetricOptions {
   std::string mesh, output;
@@ -159,16 +157,10 @@ SourceMetrics<D> interpolated_metrics(const Mesh<D>& mesh, const MetricOptions& 
   const auto* back = std::get_if<Mesh<D>>(&back_file.mesh);
   if (back == nullptr) throw Error(options.back_mesh + ": the back mesh is not " + std::to_string(D) + "D like the mesh");
   const MetricField<D> field(*back, metrics_of_rows<D>(read_metric_for_mesh(options.back_metric, back_file, false)));
-  Index hint = kNoIndex;  // nodes in file order are mostly near their predecessor
-  auto metric_at = [&field, &hint](const Vec<D>& x) {
-    typename MetricField<D>::Sample sample = field.sample(x, hint);
-    hint = sample.where.element;
-    return exp_sym(sample.log_metric);
-  };
+  Index hint = kNoIndex;  // the edge nodes continue from the last vertex
   SourceMetrics<D> metrics;
-  for (const auto& x : mesh.vertices()) metrics.vertices.push_back(metric_at(x));
-  if (mesh.is_p2())
-    for (Index e = 0; e < mesh.edge_count(); ++e) metrics.edge_nodes.push_back(metric_at(mesh.edge_node(e)));
+  metrics.vertices = metrics_at(field, mesh.vertices(), hint);
+  if (mesh.is_p2()) metrics.edge_nodes = metrics_at(field, mesh.edge_nodes(), hint);
   return metrics;
 }
 

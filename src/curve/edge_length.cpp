@@ -26,38 +26,40 @@ EdgeLengthFunction<D>::EdgeLengthFunction(const EdgeEndpoint<D>& a, const EdgeEn
     : a_(a), b_(b), rule_(rule) {}
 
 template <int D>
-const ExpSpectrum<D>& EdgeLengthFunction<D>::spectrum_at(std::size_t q, const SymMat<D>& log_node, bool same_point,
-                                                         LazySlot<ExpSpectrum<D>>& scratch) const {
-  if (same_point) return *last_spectrum_[q];
+const ExpSpectrum<D>& EdgeLengthFunction<D>::spectrum_at(std::size_t q, const SymMat<D>& log_node, bool at_same_point,
+                                                         EdgeLengthScratch<D>& scratch,
+                                                         LazySlot<ExpSpectrum<D>>& uncached) const {
+  if (at_same_point) return *scratch.spectrum[q];
   const EdgeBasis phi = edge_basis(rule_.nodes[q]);
-  if (q < kCachedNodes) last_frechet_[q].reset();
-  LazySlot<ExpSpectrum<D>>& spectrum = q < kCachedNodes ? last_spectrum_[q] : scratch;
+  if (q < kCachedNodes) scratch.frechet[q].reset();
+  LazySlot<ExpSpectrum<D>>& spectrum = q < kCachedNodes ? scratch.spectrum[q] : uncached;
   return spectrum.emplace(exp_spectrum(phi.a * a_.log_metric + phi.middle * log_node + phi.b * b_.log_metric));
 }
 
 template <int D>
 const ExpFrechet<D>& EdgeLengthFunction<D>::frechet_at(std::size_t q, const ExpSpectrum<D>& spectrum,
-                                                       LazySlot<ExpFrechet<D>>& scratch) const {
-  LazySlot<ExpFrechet<D>>& frechet = q < kCachedNodes ? last_frechet_[q] : scratch;
+                                                       EdgeLengthScratch<D>& scratch,
+                                                       LazySlot<ExpFrechet<D>>& uncached) const {
+  LazySlot<ExpFrechet<D>>& frechet = q < kCachedNodes ? scratch.frechet[q] : uncached;
   if (!frechet) frechet.emplace(spectrum);  // spectrum_at resets the cached one when it decomposes anew
   return *frechet;
 }
 
 template <int D>
-void EdgeLengthFunction<D>::remember(const SymMat<D>& log_node) const {
-  last_log_node_ = log_node;
-  has_last_ = rule_.nodes.size() <= kCachedNodes;
+void EdgeLengthFunction<D>::remember(const SymMat<D>& log_node, EdgeLengthScratch<D>& scratch) const {
+  scratch.log_node = log_node;
+  scratch.owner = rule_.nodes.size() <= kCachedNodes ? this : nullptr;
 }
 
 template <int D>
 EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const SymMat<D>& log_node,
                                                    const std::array<SymMat<D>, D>& log_node_gradient,
-                                                   Order order) const {
+                                                   Order order, EdgeLengthScratch<D>& scratch) const {
   // Accumulated in locals and returned whole: a zero-initialized result object in memory costs a block clear.
   double length = 0;
   Vec<D> gradient{}, node_gradient{};
   SymMat<D> hessian{}, log_node_gradient_part{};
-  const bool same_point = has_last_ && log_node == last_log_node_;
+  const bool at_same_point = same_point(scratch, log_node);
   for (std::size_t q = 0; q < rule_.nodes.size(); ++q) {
     const double t = rule_.nodes[q], w = rule_.weights[q];
     const EdgeBasis phi = edge_basis(t);
@@ -75,13 +77,13 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
       if (order != Order::kValue) dg = dg_dnode = (2 * du) * eu;
       if (order == Order::kHessian) d2g = (2 * du * du) * e;
     } else {
-      LazySlot<ExpSpectrum<D>> scratch;
-      const ExpSpectrum<D>& spectrum = spectrum_at(q, log_node, same_point, scratch);
+      LazySlot<ExpSpectrum<D>> uncached;
+      const ExpSpectrum<D>& spectrum = spectrum_at(q, log_node, at_same_point, scratch, uncached);
       // In the eigenbasis: keeps g relatively accurate along the small eigenvalues (high anisotropy).
       g = exp_squared_length(spectrum, u);
       if (order != Order::kValue) {
-        LazySlot<ExpFrechet<D>> frechet_scratch;
-        const ExpFrechet<D>& exp_t = frechet_at(q, spectrum, frechet_scratch);
+        LazySlot<ExpFrechet<D>> frechet_uncached;
+        const ExpFrechet<D>& exp_t = frechet_at(q, spectrum, scratch, frechet_uncached);
         // uᵀ Dexp[H] u = <Dexp[u uᵀ], H> (Dexp is self-adjoint): one derivative serves every direction.
         const SymMat<D> adjoint = exp_t.squared_length_gradient(u);
         std::array<SymMat<D>, D> directions;
@@ -116,21 +118,22 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
       for (int i = 0; i < D; ++i)
         for (int j = 0; j <= i; ++j) hessian(i, j) += w * (d2g(i, j) / (2 * root) - dg[i] * dg[j] / (4 * g * root));
   }
-  remember(log_node);
+  remember(log_node, scratch);
   return {length, gradient, hessian, node_gradient, log_node_gradient_part};
 }
 
 template <int D>
-double EdgeLengthFunction<D>::length(const Vec<D>& node, const SymMat<D>& log_node) const {
-  return evaluate(node, log_node, {}, Order::kValue).length;
+double EdgeLengthFunction<D>::length(const Vec<D>& node, const SymMat<D>& log_node,
+                                     EdgeLengthScratch<D>& scratch) const {
+  return evaluate(node, log_node, {}, Order::kValue, scratch).length;
 }
 
 template <int D>
 double EdgeLengthFunction<D>::curvature(const Vec<D>& node, const SymMat<D>& log_node, const Vec<D>& d,
-                                       const SymMat<D>& log_node_derivative) const {
+                                       const SymMat<D>& log_node_derivative, EdgeLengthScratch<D>& scratch) const {
   // Along the line, g(s) = u(s)ᵀ E(s) u(s) with u' = du·d and E' = Dexp[φ_M δ]:
   //   g' = 2 du dᵀE u + uᵀ Dexp[φ_M δ] u,  g'' = 2 du² dᵀE d + 4 du dᵀ Dexp[φ_M δ] u + uᵀ D²exp[φ_M δ, φ_M δ] u.
-  const bool same_point = has_last_ && log_node == last_log_node_;
+  const bool at_same_point = same_point(scratch, log_node);
   double result = 0;
   for (std::size_t q = 0; q < rule_.nodes.size(); ++q) {
     const double t = rule_.nodes[q], w = rule_.weights[q];
@@ -145,9 +148,10 @@ double EdgeLengthFunction<D>::curvature(const Vec<D>& node, const SymMat<D>& log
       dg = 2 * du * dot(d, eu);
       d2g = 2 * du * du * dot(d, e * d);
     } else {
-      LazySlot<ExpSpectrum<D>> scratch;
-      LazySlot<ExpFrechet<D>> frechet_scratch;
-      const ExpFrechet<D>& exp_t = frechet_at(q, spectrum_at(q, log_node, same_point, scratch), frechet_scratch);
+      LazySlot<ExpSpectrum<D>> uncached;
+      LazySlot<ExpFrechet<D>> frechet_uncached;
+      const ExpFrechet<D>& exp_t =
+          frechet_at(q, spectrum_at(q, log_node, at_same_point, scratch, uncached), scratch, frechet_uncached);
       const SymMat<D> direction = phi.middle * log_node_derivative;
       const auto along = exp_t.squared_length_derivatives(direction, u);
       g = exp_t.squared_length(u);
@@ -162,7 +166,7 @@ double EdgeLengthFunction<D>::curvature(const Vec<D>& node, const SymMat<D>& log
     if (root == 0) continue;
     result += w * (d2g / (2 * root) - dg * dg / (4 * g * root));
   }
-  remember(log_node);
+  remember(log_node, scratch);
   return result;
 }
 

@@ -40,11 +40,26 @@ struct EdgeEndpoint {
 template <int D>
 EdgeEndpoint<D> edge_endpoint(const Vec<D>& position, const SymMat<D>& log_metric);
 
+// What an EdgeLengthFunction reuses between evaluations at the same point: the eigen-decompositions of
+// T(t_q) at the last evaluated L^L(X) (rules of up to kCachedNodes nodes) and their Fréchet set-ups once
+// made, so raising the order at the same point (the accepted trial of a line search) or asking a
+// curvature there does not repeat them. The caller owns it (one per thread), so the function itself is
+// immutable and may be shared by threads; a scratch last used by another function is not reused, and
+// it does not outlive the functions it serves (one at the same address would take its contents).
+template <int D>
+struct EdgeLengthScratch {
+  // The 3-point rules (the optimizer's): larger rules recompute at each evaluation. Made once per edge,
+  // so it stays small; nothing is allocated.
+  static constexpr std::size_t kCachedNodes = 3;
+  std::array<LazySlot<ExpSpectrum<D>>, kCachedNodes> spectrum;
+  std::array<LazySlot<ExpFrechet<D>>, kCachedNodes> frechet;
+  SymMat<D> log_node{};
+  const void* owner = nullptr;  // the function whose last point this is; none: nothing kept
+};
+
 // ℓ as a function of X for one edge and one quadrature rule; the parts that do not depend on X
-// (the vertex metrics at nodes where φ_M = 0, i.e. t = 0 and 1) come with the endpoints. The
-// eigen-decompositions of the last evaluation are kept (rules of up to kCachedNodes nodes), and their
-// Fréchet set-ups once made, so raising the order at the same point (the accepted trial of a line
-// search) or asking a curvature there does not repeat them: one object per thread. Nothing is allocated: the optimizer makes one object per edge.
+// (the vertex metrics at nodes where φ_M = 0, i.e. t = 0 and 1) come with the endpoints. Each
+// evaluation may take an EdgeLengthScratch to reuse the work of the previous one at the same point.
 template <int D>
 class EdgeLengthFunction {
  public:
@@ -56,38 +71,51 @@ class EdgeLengthFunction {
   enum class Order { kValue, kGradient, kHessian };
   // `log_node` = L^L(X), `log_node_gradient[i]` = ∂L^L/∂X_i (needed from Order::kGradient on).
   EdgeLengthValue<D> evaluate(const Vec<D>& node, const SymMat<D>& log_node,
-                              const std::array<SymMat<D>, D>& log_node_gradient, Order order) const;
-  double length(const Vec<D>& node, const SymMat<D>& log_node) const;
+                              const std::array<SymMat<D>, D>& log_node_gradient, Order order,
+                              EdgeLengthScratch<D>& scratch) const;
+  double length(const Vec<D>& node, const SymMat<D>& log_node, EdgeLengthScratch<D>& scratch) const;
   // dᵀ ∂²ℓ/∂X² d, the curvature of ℓ along the line X + s·d, where `log_node_derivative` = Σ_i d_i ∂L^L/∂X_i:
   // one direction of the Hessian for a fraction of its cost (a step along a known direction needs no more).
   double curvature(const Vec<D>& node, const SymMat<D>& log_node, const Vec<D>& d,
-                   const SymMat<D>& log_node_derivative) const;
+                   const SymMat<D>& log_node_derivative, EdgeLengthScratch<D>& scratch) const;
+
+  // The same, nothing reused.
+  EdgeLengthValue<D> evaluate(const Vec<D>& node, const SymMat<D>& log_node,
+                              const std::array<SymMat<D>, D>& log_node_gradient, Order order) const {
+    EdgeLengthScratch<D> scratch;
+    return evaluate(node, log_node, log_node_gradient, order, scratch);
+  }
+  double length(const Vec<D>& node, const SymMat<D>& log_node) const {
+    EdgeLengthScratch<D> scratch;
+    return length(node, log_node, scratch);
+  }
+  double curvature(const Vec<D>& node, const SymMat<D>& log_node, const Vec<D>& d,
+                   const SymMat<D>& log_node_derivative) const {
+    EdgeLengthScratch<D> scratch;
+    return curvature(node, log_node, d, log_node_derivative, scratch);
+  }
 
   const Vec<D>& a() const { return a_.position; }
   const Vec<D>& b() const { return b_.position; }
 
-  // The 3-point rules (the optimizer's): larger rules recompute at each evaluation. The cache is part of
-  // the object, made once per edge, so it stays small.
-  static constexpr std::size_t kCachedNodes = 3;
-
  private:
-  // exp_spectrum(T(t_q)) at node q, from the cache when L^L(X) is the last one evaluated.
-  const ExpSpectrum<D>& spectrum_at(std::size_t q, const SymMat<D>& log_node, bool same_point,
-                                    LazySlot<ExpSpectrum<D>>& scratch) const;
-  // ExpFrechet of `spectrum`, the one spectrum_at just gave for node q: from the cache when it was made at the
-  // same point (a curvature after a gradient there).
-  const ExpFrechet<D>& frechet_at(std::size_t q, const ExpSpectrum<D>& spectrum,
-                                  LazySlot<ExpFrechet<D>>& scratch) const;
-  // Remembers L^L(X) as the point of the cached decompositions.
-  void remember(const SymMat<D>& log_node) const;
+  static constexpr std::size_t kCachedNodes = EdgeLengthScratch<D>::kCachedNodes;
+  // Whether `scratch` holds this function's decompositions at L^L(X) = log_node.
+  bool same_point(const EdgeLengthScratch<D>& scratch, const SymMat<D>& log_node) const {
+    return scratch.owner == this && log_node == scratch.log_node;
+  }
+  // exp_spectrum(T(t_q)) at node q, from the scratch when at the same point.
+  const ExpSpectrum<D>& spectrum_at(std::size_t q, const SymMat<D>& log_node, bool at_same_point,
+                                    EdgeLengthScratch<D>& scratch, LazySlot<ExpSpectrum<D>>& uncached) const;
+  // ExpFrechet of `spectrum`, the one spectrum_at just gave for node q: from the scratch when it was made at
+  // the same point (a curvature after a gradient there).
+  const ExpFrechet<D>& frechet_at(std::size_t q, const ExpSpectrum<D>& spectrum, EdgeLengthScratch<D>& scratch,
+                                  LazySlot<ExpFrechet<D>>& uncached) const;
+  // Marks the scratch as holding the decompositions at L^L(X) = log_node.
+  void remember(const SymMat<D>& log_node, EdgeLengthScratch<D>& scratch) const;
 
   EdgeEndpoint<D> a_, b_;
   const QuadratureRule& rule_;
-  // exp_spectrum(T(t_q)) where φ_M(t_q) ≠ 0 at the last evaluated L^L(X) (T depends on X only through it).
-  mutable std::array<LazySlot<ExpSpectrum<D>>, kCachedNodes> last_spectrum_;
-  mutable std::array<LazySlot<ExpFrechet<D>>, kCachedNodes> last_frechet_;
-  mutable SymMat<D> last_log_node_;
-  mutable bool has_last_ = false;
 };
 
 extern template class EdgeLengthFunction<2>;

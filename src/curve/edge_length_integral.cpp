@@ -21,13 +21,14 @@ double metric_length(const SymMat<D>& log_metric, const Vec<D>& u) {
   return std::sqrt(ExpFrechet<D>(log_metric).squared_length(u));
 }
 
-// The localized integrand; successive points reuse the last element as hint (thread-safe per object).
+// The localized integrand; successive points reuse the last element as hint and the locator's scratch
+// (one object per thread).
 template <int D>
 class LocalizedIntegrand {
  public:
   LocalizedIntegrand(const MetricField<D>& field, const P2Curve<D>& curve) : field_(field), curve_(curve) {}
   double operator()(double t) {
-    auto sample = field_.sample(curve_.point(t), hint_);
+    auto sample = field_.sample(curve_.point(t), hint_, scratch_);
     hint_ = sample.where.element;
     return metric_length(sample.log_metric, curve_.tangent(t));
   }
@@ -36,6 +37,7 @@ class LocalizedIntegrand {
   const MetricField<D>& field_;
   P2Curve<D> curve_;
   Index hint_ = kNoIndex;
+  LocatorScratch scratch_;
 };
 
 }  // namespace

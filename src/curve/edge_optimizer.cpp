@@ -77,9 +77,10 @@ bool newton_step_in_plane(const EdgeLengthValue<D>& value, const std::array<Vec<
 template <int D>
 EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& end_a,
                                          const EdgeEndpoint<D>& end_b, const Vec<D>& start, Index hint,
-                                         const EdgeOptimizerOptions& options) {
+                                         const EdgeOptimizerOptions& options, LocatorScratch& scratch) {
   using Order = typename EdgeLengthFunction<D>::Order;
-  const EdgeLengthFunction<D> function(end_a, end_b, *options.rule);
+  const EdgeLengthFunction<D> function(end_a, end_b, options.rule);
+  EdgeLengthScratch<D> length_scratch;  // the decompositions of the last point, for its next evaluation
   const Vec<D>& a = end_a.position;
   const Vec<D>& b = end_b.position;
   const double edge_size = norm(b - a);
@@ -119,7 +120,7 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
       // The kink analysis needs only the gradient's parts, which no element's ∂L^L/∂X enters (a constant
       // zero: a temporary would be cleared at every call).
       static const std::array<SymMat<D>, D> no_log_metric_gradient{};
-      value = function.evaluate(node, at.log_metric, no_log_metric_gradient, Order::kGradient);
+      value = function.evaluate(node, at.log_metric, no_log_metric_gradient, Order::kGradient, length_scratch);
       kink = steepest_descent_on_kink(field, at.where, direction, value);
       const double margin = kKinkSlopeMargin * value.length / edge_size;
       optimal = kink.analysed && kink.whole_plane && kink.slope >= -margin;
@@ -131,7 +132,7 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
       kink = {};  // at the boundary, no descent into the domain: Newton's model decides
     }
     value = function.evaluate(node, at.log_metric, frame_of(result.back_element).log_metric_gradient,
-                              Order::kHessian);
+                              Order::kHessian, length_scratch);
   };
   // The slope and curvature of ℓ along d in the model of the node's element.
   auto log_metric_derivative = [&](const Vec<D>& d) {
@@ -145,10 +146,10 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
                          : dot(value.gradient, d);
   };
   auto curvature_along = [&](const Vec<D>& d) {
-    return kink.analysed ? function.curvature(result.node, node_log_metric, d, log_metric_derivative(d))
+    return kink.analysed ? function.curvature(result.node, node_log_metric, d, log_metric_derivative(d), length_scratch)
                          : dot(d, value.hessian * d);
   };
-  arrive(first, field.sample(first, hint));
+  arrive(first, field.sample(first, hint, scratch));
   ++result.evaluations;
   const double initial_length = value.length;
   const bool starts_straight = norm(first - midpoint) == 0;
@@ -228,9 +229,9 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
       Vec<D> offset = trial - midpoint;
       double displacement = norm(offset);
       if (displacement > max_displacement) trial = midpoint + (max_displacement / displacement) * offset;
-      auto trial_sample = field.sample(trial, frame_of(result.back_element));
+      auto trial_sample = field.sample(trial, frame_of(result.back_element), scratch);
       ++result.evaluations;
-      double trial_length = function.length(trial, trial_sample.log_metric);
+      double trial_length = function.length(trial, trial_sample.log_metric, length_scratch);
       if (trial_length < value.length) {
         accepted = true;
         moved = norm(trial - result.node);
@@ -263,7 +264,7 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
 
   // Worth curving? Compare with the straight edge in the same rule.
   double straight_length =
-      starts_straight ? initial_length : function.length(midpoint, field.log_metric_at(midpoint, hint));
+      starts_straight ? initial_length : function.length(midpoint, field.sample(midpoint, hint, scratch).log_metric, length_scratch);
   if (result.length > (1 - options.min_relative_decrease) * straight_length) {
     result.node = midpoint;
     result.length = straight_length;
@@ -286,7 +287,7 @@ double high_precision_edge_length(const MetricField<D>& field, const EdgeEndpoin
 #define HOCAV_INSTANTIATE(D)                                                                                        \
   template EdgeOptimization<D> optimize_edge_length(const MetricField<D>&, const EdgeEndpoint<D>&,                 \
                                                     const EdgeEndpoint<D>&, const Vec<D>&, Index,                    \
-                                                    const EdgeOptimizerOptions&);                                   \
+                                                    const EdgeOptimizerOptions&, LocatorScratch&);                  \
   template double high_precision_edge_length(const MetricField<D>&, const EdgeEndpoint<D>&, const EdgeEndpoint<D>&, \
                                              const Vec<D>&, Index);
 HOCAV_INSTANTIATE(2)

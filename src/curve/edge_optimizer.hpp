@@ -12,7 +12,7 @@
 namespace hocav {
 
 struct EdgeOptimizerOptions {
-  const QuadratureRule* rule = &default_optimizer_rule();
+  QuadratureRule rule = default_optimizer_rule();
   int max_iterations = 30;
   // Stop when a step moves the node less than this fraction of |B − A|.
   double step_tolerance = 1e-7;
@@ -49,11 +49,19 @@ struct EdgeOptimization {
 
 // The edge is (a, b), its vertices with their metrics (edge_endpoint: make one per vertex when many
 // edges share it); `start` is the first node (the current one, or the straight midpoint); `hint` a
-// back element near it.
+// back element near it; `scratch` the caller's (one per thread), reused by the localizations.
+template <int D>
+EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& a,
+                                         const EdgeEndpoint<D>& b, const Vec<D>& start, Index hint,
+                                         const EdgeOptimizerOptions& options, LocatorScratch& scratch);
+// The same with a scratch of its own.
 template <int D>
 EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& a,
                                          const EdgeEndpoint<D>& b, const Vec<D>& start, Index hint = kNoIndex,
-                                         const EdgeOptimizerOptions& options = {});
+                                         const EdgeOptimizerOptions& options = {}) {
+  LocatorScratch scratch;
+  return optimize_edge_length(field, a, b, start, hint, options, scratch);
+}
 // The same from the vertices' positions and log-metrics (log_a, log_b).
 template <int D>
 EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b,

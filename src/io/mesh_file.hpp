@@ -20,6 +20,8 @@ namespace hocav {
 
 using AnyMesh = std::variant<Mesh<2>, Mesh<3>>;
 
+inline int dimension_of(const AnyMesh& mesh) { return std::holds_alternative<Mesh<2>>(mesh) ? 2 : 3; }
+
 struct MeshFileContent {
   AnyMesh mesh;
   // The 0-based position in the file's node list of each mesh vertex, and of each edge's P2 node

@@ -44,6 +44,7 @@ class Mesh {
   Point& vertex(Index v) { return vertices_[v]; }
   int vertex_ref(Index v) const { return vertex_refs_[v]; }
   std::span<const Point> vertices() const { return vertices_; }
+  std::span<const int> vertex_refs() const { return vertex_refs_; }
   // A new vertex; its attribute rows start at zero.
   Index add_vertex(const Point& point, int ref = 0);
   // Removes the last vertex (an insertion that was refused); no element may use it.
@@ -70,6 +71,7 @@ class Mesh {
   const Element& element(Index k) const { return elements_[k]; }
   int element_ref(Index k) const { return element_refs_[k]; }
   std::span<const Element> elements() const { return elements_; }
+  std::span<const int> element_refs() const { return element_refs_; }
   Index add_element(const Element& vertices, int ref = 0);
 
   // ---- element attributes: one double per element that follows the element through every move;
@@ -84,6 +86,7 @@ class Mesh {
   const Facet& facet(Index f) const { return facets_[f]; }
   int facet_ref(Index f) const { return facet_refs_[f]; }
   std::span<const Facet> facets() const { return facets_; }
+  std::span<const int> facet_refs() const { return facet_refs_; }
   Index add_facet(const Facet& vertices, int ref = 0);
   bool facet_removed(Index f) const { return facets_[f][0] == kNoIndex; }
 
@@ -130,6 +133,10 @@ class Mesh {
   const ElementEdges& element_edges(Index k) const { return element_edges_[k]; }
   const Point& edge_node(Index e) const { return edge_nodes_[e]; }
   Point& edge_node(Index e) { return edge_nodes_[e]; }
+  // The same as arrays (views for Python): every edge's vertices and node, every element's edge ids.
+  std::span<const Line> edges() const { return edge_vertices_; }
+  std::span<const Point> edge_nodes() const { return edge_nodes_; }
+  std::span<const ElementEdges> element_edge_table() const { return element_edges_; }
 
   // ---- topology (derived) ----
   // Face adjacency, vertex -> element and boundary facet <-> element face. Throws Error on a face

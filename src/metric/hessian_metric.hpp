@@ -16,6 +16,10 @@
 
 namespace hocav {
 
+// The default h_min of a Hessian metric, as a fraction of its h_max: a bound on |H| that only extreme
+// fields reach (`hocav metric --hessian`).
+constexpr double kHessianSizeRange = 1e-6;
+
 struct LpMetricOptions {
   double complexity = 1000;  // N > 0
   double norm = 2;           // p > 0

@@ -63,16 +63,17 @@ SymMat<D> MetricField<D>::interpolate(Index back_element, const Barycentrics<D>&
 }
 
 template <int D>
-typename MetricField<D>::Sample MetricField<D>::sample(const Vec<D>& x, Index hint) const {
-  Sample result{locator_->localize(x, hint), {}};
+typename MetricField<D>::Sample MetricField<D>::sample(const Vec<D>& x, Index hint, LocatorScratch& scratch) const {
+  Sample result{locator_->localize(x, hint, scratch), {}};
   result.log_metric = interpolate(result.where.element, result.where.barycentrics);
   return result;
 }
 
 template <int D>
-typename MetricField<D>::Sample MetricField<D>::sample(const Vec<D>& x, const ElementFrame& frame) const {
+typename MetricField<D>::Sample MetricField<D>::sample(const Vec<D>& x, const ElementFrame& frame,
+                                                      LocatorScratch& scratch) const {
   const Barycentrics<D> lambda = barycentric_coordinates<D>(frame.barycentric_gradients, frame.origin, x);
-  if (!PointLocator<D>::contains(lambda)) return sample(x, frame.element);
+  if (!PointLocator<D>::contains(lambda)) return sample(x, frame.element, scratch);
   return {{frame.element, lambda, true}, interpolate(frame.element, lambda)};
 }
 
@@ -99,6 +100,21 @@ typename MetricField<D>::ElementFrame MetricField<D>::element_frame(Index back_e
   return {back_element, points[0], gradients, log_metric_gradient(back_element, gradients)};
 }
 
+template <int D>
+std::vector<SymMat<D>> metrics_at(const MetricField<D>& field, std::span<const Vec<D>> points, Index& hint) {
+  LocatorScratch scratch;
+  std::vector<SymMat<D>> metrics;
+  metrics.reserve(points.size());
+  for (const Vec<D>& x : points) {
+    const typename MetricField<D>::Sample sample = field.sample(x, hint, scratch);
+    hint = sample.where.element;
+    metrics.push_back(exp_sym(sample.log_metric));
+  }
+  return metrics;
+}
+
+template std::vector<SymMat<2>> metrics_at(const MetricField<2>&, std::span<const Vec<2>>, Index&);
+template std::vector<SymMat<3>> metrics_at(const MetricField<3>&, std::span<const Vec<3>>, Index&);
 template class MetricField<2>;
 template class MetricField<3>;
 

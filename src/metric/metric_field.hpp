@@ -6,6 +6,7 @@
 
 #include <array>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "geom/sym_mat.hpp"
@@ -31,8 +32,13 @@ class MetricField {
     Localization<D> where;
     SymMat<D> log_metric;  // Σ λ_i R_i (affine extension just outside the back mesh)
   };
-  // Thread-safe. `hint`: a back element near x, e.g. where the previous sample of an edge fell.
-  Sample sample(const Vec<D>& x, Index hint = kNoIndex) const;
+  // Thread-safe. `hint`: a back element near x, e.g. where the previous sample of an edge fell;
+  // `scratch`: the caller's, reused from one sample to the next (point_locator.hpp).
+  Sample sample(const Vec<D>& x, Index hint, LocatorScratch& scratch) const;
+  Sample sample(const Vec<D>& x, Index hint = kNoIndex) const {
+    LocatorScratch scratch;
+    return sample(x, hint, scratch);
+  }
   SymMat<D> log_metric_at(const Vec<D>& x, Index hint = kNoIndex) const { return sample(x, hint).log_metric; }
 
   // ∂(log M)/∂x_i = Σ_j (∂λ_j/∂x_i) R_j in back element k (constant inside it, docs/method.md §6).
@@ -48,7 +54,7 @@ class MetricField {
     std::array<SymMat<D>, D> log_metric_gradient{};
   };
   ElementFrame element_frame(Index back_element) const;
-  Sample sample(const Vec<D>& x, const ElementFrame& frame) const;
+  Sample sample(const Vec<D>& x, const ElementFrame& frame, LocatorScratch& scratch) const;
 
  private:
   MetricField(const Mesh<D>& mesh, std::vector<SymMat<D>> log_metrics, bool);
@@ -61,6 +67,11 @@ class MetricField {
   std::vector<SymMat<D>> log_metrics_;
   std::unique_ptr<PointLocator<D>> locator_;
 };
+
+// The metric (not its log) at each point, each localization starting where the previous point fell
+// (`hint`, updated): points in a mesh's order are mostly near their predecessor.
+template <int D>
+std::vector<SymMat<D>> metrics_at(const MetricField<D>& field, std::span<const Vec<D>> points, Index& hint);
 
 extern template class MetricField<2>;
 extern template class MetricField<3>;

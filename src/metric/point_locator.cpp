@@ -174,7 +174,7 @@ Index PointLocator<D>::walk(const Vec<D>& x, Index start, Barycentrics<D>& lambd
 }
 
 template <int D>
-Localization<D> PointLocator<D>::localize(const Vec<D>& x, Index hint) const {
+Localization<D> PointLocator<D>::localize(const Vec<D>& x, Index hint, LocatorScratch& scratch) const {
   Barycentrics<D> lambda;
   int exit_face = -1;
   Index grid_start = grid_element(x);
@@ -185,7 +185,7 @@ Localization<D> PointLocator<D>::localize(const Vec<D>& x, Index hint) const {
   }
   if (k == kNoIndex) return exhaustive_search(x);
   if (exit_face < 0) return {k, lambda, true};
-  return closest_boundary_element(x, k, exit_face);
+  return closest_boundary_element(x, k, exit_face, scratch);
 }
 
 template <int D>
@@ -196,36 +196,27 @@ bool PointLocator<D>::is_boundary_element(Index k) const {
 }
 
 template <int D>
-Localization<D> PointLocator<D>::closest_boundary_element(const Vec<D>& x, Index near_element,
-                                                          int near_face) const {
-  // Per thread, reused (no allocation per call; the locator serves several threads at once) and kept for
-  // the next call: an optimizer's trial points near a boundary leave the mesh through the same face again
-  // and again. Keyed by the locator's id, never reused by another locator.
-  thread_local struct {
-    std::uint64_t locator_id = 0;
-    Index element = kNoIndex;
-    int face = -1;
-    std::vector<Index> elements;
-  } candidates;
-  thread_local std::vector<Index> ball;
-  if (candidates.locator_id != id_ || candidates.element != near_element || candidates.face != near_face) {
-    candidates.locator_id = id_;
-    candidates.element = near_element;
-    candidates.face = near_face;
-    candidates.elements.clear();
+Localization<D> PointLocator<D>::closest_boundary_element(const Vec<D>& x, Index near_element, int near_face,
+                                                          LocatorScratch& scratch) const {
+  // Kept in the scratch for the next call (and reused: no allocation per call).
+  if (scratch.locator_id != id_ || scratch.element != near_element || scratch.face != near_face) {
+    scratch.locator_id = id_;
+    scratch.element = near_element;
+    scratch.face = near_face;
+    scratch.candidates.clear();
     for (int i = 0; i < D; ++i) {
-      collect_ball(mesh_, mesh_.element(near_element)[face_vertices<D>(near_face)[i]], ball);
+      collect_ball(mesh_, mesh_.element(near_element)[face_vertices<D>(near_face)[i]], scratch.ball);
       // Only boundary elements can win, and an element met again in a later ball cannot (closest_among
       // keeps the first of equals): each boundary element once, at its first place in the balls' order.
-      for (Index k : ball)
-        if (is_boundary_element(k) && std::find(candidates.elements.begin(), candidates.elements.end(), k) ==
-                                          candidates.elements.end())
-          candidates.elements.push_back(k);
+      for (Index k : scratch.ball)
+        if (is_boundary_element(k) &&
+            std::find(scratch.candidates.begin(), scratch.candidates.end(), k) == scratch.candidates.end())
+          scratch.candidates.push_back(k);
     }
   }
   // The exit face bounds the winner's distance from the start, so farther faces are skipped early; unless
   // its element is not a candidate (a vertex pinching two parts of the mesh: its ball lists one part).
-  const auto& elements = candidates.elements;
+  const auto& elements = scratch.candidates;
   if (std::find(elements.begin(), elements.end(), near_element) == elements.end()) return closest_among(x, elements);
   return closest_among(x, elements, squared_distance_to_face<D>(face_corners(near_element, near_face), x));
 }

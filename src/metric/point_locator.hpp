@@ -27,14 +27,31 @@ struct Localization {
   bool inside = true;
 };
 
+// What a localization may reuse from the previous ones of the same caller: the boundary elements near the
+// face where the last walk left the mesh (an optimizer's trial points near a boundary leave it through the
+// same face again and again) and a buffer for the balls that list them. One per thread, owned by the
+// caller: the locator itself never changes, so threads share it.
+struct LocatorScratch {
+  std::uint64_t locator_id = 0;  // the locator the candidates are from (0: none yet)
+  Index element = kNoIndex;      // and the boundary face they are around
+  int face = -1;
+  std::vector<Index> candidates;
+  std::vector<Index> ball;
+};
+
 template <int D>
 class PointLocator {
  public:
   // The mesh must be P1-valid (positive elements), have its topology, and outlive the locator unchanged.
   explicit PointLocator(const Mesh<D>& mesh);
 
-  // Thread-safe: reads only. `hint` is an element near x (e.g. where a nearby point was found).
-  Localization<D> localize(const Vec<D>& x, Index hint = kNoIndex) const;
+  // Thread-safe: reads only the locator. `hint` is an element near x (e.g. where a nearby point was found).
+  Localization<D> localize(const Vec<D>& x, Index hint, LocatorScratch& scratch) const;
+  // The same, nothing reused.
+  Localization<D> localize(const Vec<D>& x, Index hint = kNoIndex) const {
+    LocatorScratch scratch;
+    return localize(x, hint, scratch);
+  }
 
   // Whether barycentrics put their point in the element, as the walk decides it (faces included).
   static bool contains(const Barycentrics<D>& lambda);
@@ -42,7 +59,8 @@ class PointLocator {
   // The closest-element rule for a point x that left the mesh through boundary face `near_face` of
   // `near_element`: among the elements around the vertices of that face (the balls of its vertices, in
   // order), the one whose boundary face is closest to x; of equals, the first met.
-  Localization<D> closest_boundary_element(const Vec<D>& x, Index near_element, int near_face) const;
+  Localization<D> closest_boundary_element(const Vec<D>& x, Index near_element, int near_face,
+                                           LocatorScratch& scratch) const;
 
   const Mesh<D>& mesh() const { return mesh_; }
   SimplexPoints<D> element_points(Index k) const;
@@ -62,7 +80,7 @@ class PointLocator {
   Localization<D> exhaustive_search(const Vec<D>& x) const;
 
   const Mesh<D>& mesh_;
-  std::uint64_t id_;  // keys the per-thread candidates of closest_boundary_element
+  std::uint64_t id_;  // keys the candidates a LocatorScratch holds
   Vec<D> grid_origin_{};
   double grid_cell_size_ = 1;
   double coordinate_scale_ = 0;  // the largest coordinate magnitude of the mesh

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <ostream>
+#include <sstream>
 
 #include "report/json_writer.hpp"
 
@@ -19,6 +20,19 @@ void write_operation(JsonWriter& json, const char* name, const OperationCount& c
 }
 
 }  // namespace
+
+// The loop stops at its cap of passes at the latest; when it stops there the metric may ask for what the
+// mesh cannot give (sizes below what corners, required entities or the geometry allow, or a field too
+// rough for its back mesh), and the user hears it.
+std::string non_convergence_summary(const AdaptationReport& report) {
+  if (report.run.converged || report.run.passes.empty()) return "";
+  const AdaptationPass& last = report.run.passes.back();
+  std::ostringstream text;
+  text << "not converged after " << report.run.passes.size() << " passes (the last split " << last.splits.done
+       << " and collapsed " << last.collapses.done << " edges; " << static_cast<int>(1000 * report.measures.unit_share) / 10.0
+       << "% of edges unit); raise --iterations, or check that the metric asks for sizes the geometry allows";
+  return text.str();
+}
 
 void write_adaptation_report_json(std::ostream& out, const AdaptationReport& report) {
   JsonWriter json(out);

@@ -5,6 +5,7 @@
 
 #include <iosfwd>
 #include <optional>
+#include <string>
 
 #include "adapt/adaptation_loop.hpp"
 #include "report/curving_report.hpp"
@@ -26,6 +27,9 @@ struct AdaptationReport {
 };
 
 void write_adaptation_report_json(std::ostream& out, const AdaptationReport& report);
+// "" when the loop converged; else why the user should look: "not converged after N passes (the last
+// split ... and collapsed ... edges; X% of edges unit); raise --iterations, or check ...".
+std::string non_convergence_summary(const AdaptationReport& report);
 void write_adaptation_report_table(std::ostream& out, const AdaptationReport& report);
 
 }  // namespace hocav

@@ -91,7 +91,7 @@ TEST_P(EdgeOptimizerRule, EdgeTangentToTheShearLayerBendsAlongIt) {
   const QuadratureRule rule = quadrature_rule_named(GetParam());
   shear.rule = &rule;
   EdgeOptimizerOptions options;
-  options.rule = &rule;
+  options.rule = rule;
   options.measure_gain = true;
   auto result = optimize_edge_length(*shear.field, shear.a, shear.b, shear.log_a, shear.log_b,
                                      0.5 * (shear.a + shear.b), kNoIndex, options);

@@ -120,8 +120,9 @@ void expect_closest_rule_matches_reference(const Mesh<D>& mesh, std::uint32_t se
   std::mt19937 random(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0), offset(-0.3, 0.3);
   int compared = 0;
+  LocatorScratch scratch;  // reused, as an optimizer does
   auto expect_same = [&](const Vec<D>& x, Index k, int face) {
-    auto found = locator.closest_boundary_element(x, k, face);
+    auto found = locator.closest_boundary_element(x, k, face, scratch);
     auto expected = reference_closest_boundary_element(locator, x, k, face);
     ASSERT_EQ(found.element, expected.element);
     EXPECT_FALSE(found.inside);
@@ -185,10 +186,11 @@ TEST(PointLocator, ClosestElementRuleIsTheReferenceOnAPerturbedSquare) {
 }
 
 TEST(PointLocator, ClosestElementRuleOfTwoLocatorsInTurnIsEachOnesReference) {
-  // The rule's candidates are kept per thread for the next call through the same face: calls alternating
-  // between two meshes through the same (element, face) must not take the other mesh's candidates.
+  // The rule's candidates are kept in the scratch for the next call through the same face: calls with one
+  // scratch alternating between two meshes through the same (element, face) must not take the other mesh's.
   const Mesh<3> coarse = generate_cube(4), fine = generate_cube(5);
   const PointLocator<3> coarse_locator(coarse), fine_locator(fine);
+  LocatorScratch scratch;
   int compared = 0;
   for (Index k = 0; k < coarse.element_count(); ++k)
     for (int face = 0; face <= 3; ++face) {
@@ -196,7 +198,7 @@ TEST(PointLocator, ClosestElementRuleOfTwoLocatorsInTurnIsEachOnesReference) {
       for (const PointLocator<3>* locator : {&coarse_locator, &fine_locator, &coarse_locator}) {
         const SimplexPoints<3> corners = locator->element_points(k);
         const Vec3 x = 1.05 * corners[face_vertices<3>(face)[0]] - 0.05 * corners[face];
-        auto found = locator->closest_boundary_element(x, k, face);
+        auto found = locator->closest_boundary_element(x, k, face, scratch);
         auto expected = reference_closest_boundary_element(*locator, x, k, face);
         ASSERT_EQ(found.element, expected.element);
         for (int i = 0; i <= 3; ++i) ASSERT_EQ(found.barycentrics[i], expected.barycentrics[i]);

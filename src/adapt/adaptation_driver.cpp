@@ -1,0 +1,161 @@
+#include "adapt/adaptation_driver.hpp"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "base/memory_budget.hpp"
+#include "geom/sym_eigen.hpp"
+#include "io/node_metrics.hpp"
+#include "mesh/measure.hpp"
+#include "metric/gradation.hpp"
+
+namespace hocav {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+long long peak_memory_bytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<long long>(usage.ru_maxrss) * 1024;
+}
+
+template <int D>
+std::vector<SymMat<D>> metrics_at_vertices(const Mesh<D>& mesh, const AdaptationMetric<D>& metric) {
+  std::vector<SymMat<D>> metrics;
+  Index hint = kNoIndex;
+  for (const auto& x : mesh.vertices()) metrics.push_back(metric.metric_at(x, hint));
+  return metrics;
+}
+
+}  // namespace
+
+template <int D>
+AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
+                               const AdaptationSettings& settings) {
+  AdaptedMesh<D> out;
+  AdaptationReport& report = out.report;
+  report.dimension = D;
+  report.input_vertices = mesh.vertex_count();
+  report.input_elements = mesh.element_count();
+  auto start = std::chrono::steady_clock::now();
+  report.run = adapt_to_metric(mesh, metric, geometry, settings);
+  report.seconds_adapt = seconds_since(start);
+  report.output_vertices = mesh.vertex_count();
+  report.output_elements = mesh.element_count();
+
+  const std::vector<SymMat<D>> metrics = metrics_at_vertices(mesh, metric);
+  Mesh<D> copy = mesh;  // the statistics build an edge table
+  report.measures = *compute_mesh_statistics(copy, rows_of_metrics(metrics).values).metric;
+  out.field = std::make_unique<MetricField<D>>(mesh, metrics);
+  report.peak_memory_bytes = peak_memory_bytes();
+  return out;
+}
+
+template <int D>
+void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGeometry<D>* geometry,
+                        const CurvingOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  adapted.report.curving = curve_in_metric(mesh, *adapted.field, geometry, options);
+  adapted.report.seconds_curve = seconds_since(start);
+  adapted.report.peak_memory_bytes = peak_memory_bytes();
+}
+
+namespace {
+
+// The job's metric: the input mesh as back mesh with its (graded) metric, or the analytic field.
+template <int D>
+struct JobMetric {
+  std::optional<MetricField<D>> field;
+  std::optional<AdaptationMetric<D>> metric;
+};
+
+// Sizes below this share of the input's bounding-box diagonal are never asked for: elements that
+// small lose the digits their orientation and volume tests need, and the loop could not converge.
+constexpr double kSmallestRelativeSize = 1e-6;
+
+// The smallest size the metric asks at the input's vertices.
+template <int D>
+double smallest_size_at_vertices(const Mesh<D>& input, const AdaptationMetric<D>& metric) {
+  double largest_eigenvalue = 0;
+  Index hint = kNoIndex;
+  for (const Vec<D>& x : input.vertices()) {
+    const SymEigen<D> eigen = spd_eigen(metric.metric_at(x, hint));
+    for (int k = 0; k < D; ++k) largest_eigenvalue = std::max(largest_eigenvalue, eigen.values[k]);
+  }
+  return 1 / std::sqrt(largest_eigenvalue);
+}
+
+template <int D>
+AdaptationMetric<D> metric_within(const JobMetric<D>& out, const AdaptationJob<D>& job, const SizeBounds& bounds) {
+  if (out.field) return AdaptationMetric<D>(*out.field, bounds);
+  return AdaptationMetric<D>(*job.analytic, bounds);
+}
+
+template <int D>
+void make_job_metric(JobMetric<D>& out, const Mesh<D>& input, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job) {
+  if (!job.analytic) {
+    if (job.gradation) grade_metrics(input, metrics, {*job.gradation});
+    out.field.emplace(input, metrics);
+  }
+  SizeBounds bounds = job.bounds;
+  const double floor = kSmallestRelativeSize * bounding_box_diagonal(input);
+  const double smallest =
+      std::min(bounds.h_min > 0 ? bounds.h_min : 1e300, smallest_size_at_vertices(input, metric_within(out, job, bounds)));
+  if (smallest < floor) {
+    if (job.warn) {
+      std::ostringstream warning;
+      warning << job.metric_name << ": sizes down to " << smallest << " asked, below what the geometry allows; clamped to "
+              << floor << " (1e-6 of the input's diagonal)";
+      job.warn(warning.str());
+    }
+    bounds.h_min = std::min(floor, bounds.h_max);
+  }
+  out.metric.emplace(metric_within(out, job, bounds));
+}
+
+}  // namespace
+
+template <int D>
+AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job,
+                                  const std::string& name) {
+  mesh.forget_edges();
+  const Mesh<D> input = mesh;
+  JobMetric<D> metric;
+  make_job_metric(metric, input, std::move(metrics), job);
+  const double expected = expected_element_count(input, *metric.metric);
+  check_memory_fits("adapting " + name + " (the metric asks for about " + std::to_string(static_cast<long long>(expected)) +
+                        " elements)",
+                    expected, kAdaptationBytesPerElement);
+  const auto geometry = job.geometry(input);
+
+  AdaptationSettings settings;
+  settings.max_passes = job.iterations;
+  settings.feature_angle_degrees = job.angle;
+  settings.hausd = job.hausd.value_or(kRelativeHausd * bounding_box_diagonal(input));
+  settings.threads = job.threads;
+  settings.progress = job.pass_progress;
+  AdaptedMesh<D> adapted = adapt_in_metric(mesh, *metric.metric, geometry.get(), settings);
+  if (job.curving) {
+    CurvingOptions curving = *job.curving;
+    if (job.before_curving) job.before_curving(mesh, curving);
+    const auto curving_geometry = job.geometry(mesh);  // of the adapted boundary
+    curve_adapted_mesh(adapted, mesh, curving_geometry.get(), curving);
+  }
+  return adapted;
+}
+
+template AdaptedMesh<2> run_adaptation_job(Mesh<2>&, std::vector<SymMat<2>>, const AdaptationJob<2>&, const std::string&);
+template AdaptedMesh<3> run_adaptation_job(Mesh<3>&, std::vector<SymMat<3>>, const AdaptationJob<3>&, const std::string&);
+template AdaptedMesh<2> adapt_in_metric(Mesh<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*, const AdaptationSettings&);
+template AdaptedMesh<3> adapt_in_metric(Mesh<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*, const AdaptationSettings&);
+template void curve_adapted_mesh(AdaptedMesh<2>&, Mesh<2>&, const BoundaryGeometry<2>*, const CurvingOptions&);
+template void curve_adapted_mesh(AdaptedMesh<3>&, Mesh<3>&, const BoundaryGeometry<3>*, const CurvingOptions&);
+
+}  // namespace hocav

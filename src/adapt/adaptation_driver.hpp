@@ -1,0 +1,66 @@
+// The paper's pipeline as `hocav adapt`, `hocav demo` and the Python module run it: the P1
+// adaptation loop, the metric measured on its output, then (optionally) the curving of
+// `hocav curve` in that metric (docs/adaptation.md).
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "adapt/adaptation_loop.hpp"
+#include "adapt/curving_run.hpp"
+#include "report/adaptation_report.hpp"
+
+namespace hocav {
+
+template <int D>
+struct AdaptedMesh {
+  AdaptationReport report;
+  // The metric on the adapted mesh (its vertices carry the clamped metric the loop used): the
+  // curving's field and the .vtu's.
+  std::unique_ptr<MetricField<D>> field;
+};
+
+// Adapts `mesh` (P1, compact) to `metric`, new boundary points on `geometry` (may be null). Fills
+// the report's figures from the input's and output's counts, and its peak memory.
+template <int D>
+AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
+                               const AdaptationSettings& settings);
+
+// Then curves the adapted `mesh` in `adapted.field` (curve_in_metric; `geometry` is usually made
+// from the adapted mesh) and adds the curving's figures, time and the peak memory to the report.
+template <int D>
+void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGeometry<D>* geometry,
+                        const CurvingOptions& options);
+
+// `hocav adapt`'s job with its options as values (docs/usage.md): the metric set up, the memory
+// checked, the adaptation, then (with `curving`) the curving.
+template <int D>
+struct AdaptationJob {
+  std::optional<AnalyticMetricSpec> analytic;  // the metric, evaluated exactly; else the one given per vertex
+  SizeBounds bounds;
+  std::optional<double> gradation;  // grades the given metric first
+  std::optional<double> hausd;      // default kRelativeHausd × the input's bounding box diagonal
+  double angle = 45;                // AdaptationSettings::feature_angle_degrees
+  int iterations = 20;              // AdaptationSettings::max_passes
+  int threads = 1;                  // AdaptationSettings::threads
+  std::optional<CurvingOptions> curving;  // order 2
+  // The boundary geometry of a mesh (the input's for the adaptation, the adapted one's for the
+  // curving); may return null (no geometry).
+  std::function<std::unique_ptr<BoundaryGeometry<D>>(const Mesh<D>&)> geometry;
+  std::function<void(int, int)> pass_progress;  // AdaptationSettings::progress
+  // Warnings on the way ("<metric_name>: sizes down to ... clamped"), when set.
+  std::string metric_name = "the metric";
+  std::function<void(const std::string&)> warn;
+  // Called with the adapted mesh just before its curving, e.g. to set the curving's progress.
+  std::function<void(const Mesh<D>&, CurvingOptions&)> before_curving;
+};
+
+// Runs `job` on `mesh` (P1 or P2, whose nodes are dropped), `metrics` the metric at its vertices
+// (empty with an analytic metric). `name` names the mesh in errors (a job too large for the memory).
+template <int D>
+AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job,
+                                  const std::string& name);
+
+}  // namespace hocav

@@ -1,0 +1,30 @@
+// Which geometry the boundary follows (`--surface` of `hocav curve` and `hocav adapt`,
+// docs/surface.md): none (boundary nodes stay), the P3 surrogate of the mesh's own boundary, or a
+// CAD model. Named by text only at the edges (command line, Python); the drivers take the geometry.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "mesh/mesh.hpp"
+#include "surface/boundary_geometry.hpp"
+
+namespace hocav {
+
+enum class BoundaryKind { kNone, kP3Surrogate, kCad };
+
+struct BoundaryChoice {
+  BoundaryKind kind = BoundaryKind::kP3Surrogate;
+  std::string cad_path;  // kCad: a STEP or BREP file
+};
+
+// "none", "p3" or "cad:FILE"; throws Error for anything else.
+BoundaryChoice boundary_choice_named(const std::string& name);
+
+// The geometry of `choice` for `mesh`: nullptr for none, the P3 surrogate of its boundary, or the
+// CAD model with the mesh's facet refs matched to its entities. Defined with the code that calls
+// gmsh (boundary_choice_gmsh.cpp): the CAD backend reads the model through it.
+template <int D>
+std::unique_ptr<BoundaryGeometry<D>> make_boundary_geometry(const BoundaryChoice& choice, const Mesh<D>& mesh);
+
+}  // namespace hocav
