@@ -1,7 +1,8 @@
 # The installed library as another project uses it: `cmake --install` of the build into a scratch
 # prefix, then tests/install_consumer configured with find_package(hocav), built and run on a mesh
 # the installed `hocav` generates, its output checked by the installed `hocav stats`; then the
-# same program compiled with the flags of the installed hocav.pc, and run.
+# same program compiled with the flags of the installed hocav.pc, and run; and the installed Python
+# module imported.
 #   cmake -DBUILD_DIR=... -DCONSUMER_DIR=... -DWORK_DIR=... -DCXX=... -P run_consumer.cmake
 foreach(variable BUILD_DIR CONSUMER_DIR WORK_DIR CXX)
   if(NOT DEFINED ${variable})
@@ -41,3 +42,11 @@ endif()
 separate_arguments(flags UNIX_COMMAND "${flags}")
 step("build with pkg-config" ${CXX} -O1 ${CONSUMER_DIR}/main.cpp ${flags} -o ${WORK_DIR}/pkg_config_consumer)
 step("run the pkg-config build" ${WORK_DIR}/pkg_config_consumer ${WORK_DIR}/annulus.meshb ${WORK_DIR}/adapted-again.meshb)
+
+# The installed Python module (given PYTHON_INSTALL_DIR, the package's folder under the prefix, when
+# the build has it): Debian's Python imports it from there and reads a mesh with it.
+if(DEFINED PYTHON_INSTALL_DIR)
+  set(ENV{PYTHONPATH} ${prefix}/${PYTHON_INSTALL_DIR})
+  step("import the installed Python module" /usr/bin/python3 -c "import hocav, sys; print(hocav.read(sys.argv[1]))"
+       ${WORK_DIR}/annulus.meshb)
+endif()

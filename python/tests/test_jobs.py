@@ -1,0 +1,122 @@
+"""The jobs: the module calls the library's drivers the commands call, so the same job gives the same
+mesh, bit for bit; reports as dicts; the GIL released while the library works."""
+import json
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import hocav
+from conftest import run_cli
+
+
+def test_curve_gives_the_commands_mesh(tmp_path, annulus):
+    run_cli("metric", annulus, "-o", tmp_path / "m.sol", "--analytic", "shear-circle", "--radius", "0.7")
+    run_cli("curve", annulus, "--metric", tmp_path / "m.sol", "-o", tmp_path / "cli.meshb", "--report", tmp_path / "cli.json")
+    mesh = hocav.read(annulus)
+    curved, report = hocav.curve(mesh, hocav.read_metric(tmp_path / "m.sol", mesh), threads=1)
+    hocav.write(tmp_path / "module.meshb", curved)
+    assert (tmp_path / "cli.meshb").read_bytes() == (tmp_path / "module.meshb").read_bytes()
+    expected = json.loads((tmp_path / "cli.json").read_text())
+    assert report["normalized_jacobian"] == expected["normalized_jacobian"]
+    assert report["cavities"]["accepted"] == expected["cavities"]["accepted"] > 0
+    assert (curved.order, mesh.order) == (2, 1)  # a new mesh; the input is unchanged
+
+
+@pytest.mark.parametrize("order", [1, 2])
+def test_adapt_gives_the_commands_mesh(tmp_path, annulus, order):
+    run_cli("metric", annulus, "-o", tmp_path / "m.sol", "--analytic", "uniform", "--h", "0.06")
+    run_cli("adapt", annulus, "--metric", tmp_path / "m.sol", "--order", order, "--hgrad", "1.5", "-o", tmp_path / "cli.meshb",
+            "--report", tmp_path / "cli.json")
+    mesh = hocav.read(annulus)
+    adapted, report = hocav.adapt(mesh, hocav.read_metric(tmp_path / "m.sol", mesh), order=order, hgrad=1.5)
+    hocav.write(tmp_path / "module.meshb", adapted)
+    assert (tmp_path / "cli.meshb").read_bytes() == (tmp_path / "module.meshb").read_bytes()
+    expected = json.loads((tmp_path / "cli.json").read_text())
+    assert report["output_elements"] == expected["output_elements"] > report["input_elements"]
+    assert ("curving" in report) == (order == 2)
+
+
+def test_adapt_refuses_what_the_command_refuses(annulus):
+    mesh = hocav.read(annulus)
+    with pytest.raises(hocav.Error, match="exactly one metric source"):
+        hocav.adapt(mesh)
+    with pytest.raises(hocav.Error, match="hmin must not exceed hmax"):
+        hocav.adapt(mesh, analytic="uniform", hmin=0.2, hmax=0.1)
+    with pytest.raises(hocav.Error, match="--surface: 'p3', 'cad:FILE' or 'none'"):
+        hocav.adapt(mesh, analytic="uniform", surface="sphere")
+
+
+def test_an_unconverged_adaptation_warns(annulus):
+    mesh = hocav.read(annulus)
+    with pytest.warns(UserWarning, match="not converged after 1 passes"):
+        hocav.adapt(mesh, analytic="uniform", iterations=1, order=1)
+
+
+@pytest.mark.parametrize("arguments, call", [
+    (["--analytic", "linear", "--h-min", "0.01"], lambda m: hocav.analytic_metric(m, "linear", h_min=0.01)),
+    (["--implied"], hocav.implied_metric),
+    (["--surface", "0.01,0.1", "--gradation", "1.5"], lambda m: hocav.surface_metric(m, 0.01, 0.1, gradation=1.5)),
+    (["--hessian", "analytic:tanh-shock", "--complexity", "500"],
+     lambda m: hocav.hessian_metric(m, "tanh-shock", complexity=500)),
+    (["--analytic", "uniform", "--gradation", "1.2"],
+     lambda m: hocav.grade_metric(m, hocav.analytic_metric(m, "uniform"), 1.2)),
+])
+def test_metric_sources_are_the_commands(tmp_path, annulus, arguments, call):
+    run_cli("metric", annulus, "-o", tmp_path / "m.solb", *arguments)
+    mesh = hocav.read(annulus)
+    np.testing.assert_array_equal(call(mesh), hocav.read_metric(tmp_path / "m.solb", mesh))
+
+
+def test_a_hessian_metric_of_a_numpy_field_follows_the_field(annulus):
+    mesh = hocav.read(annulus)
+    x, y = mesh.points.T
+    metric = hocav.hessian_metric(mesh, x * x, complexity=400)  # ∂²/∂x² = 2, the rest 0
+    # |H| = diag(2, 0) with its eigenvalues clamped below by 1/h_max², h_max the bounding box's diagonal,
+    # then scaled: M is a multiple of diag(2, 1/h_max²).
+    diagonal2 = np.sum((mesh.points.max(axis=0) - mesh.points.min(axis=0)) ** 2)
+    np.testing.assert_allclose(metric[:, 0] / metric[:, 2], 2 * diagonal2, rtol=1e-9)
+    np.testing.assert_allclose(metric[:, 1], 0, atol=1e-9 * metric[:, 0].max())
+    assert abs(hocav.metric_complexity(mesh, metric) - 400) < 1e-6 * 400
+
+
+def test_interpolating_a_metric_on_its_own_mesh_gives_it_back(cube):
+    mesh = hocav.read(cube)
+    metric = hocav.analytic_metric(mesh, "linear")
+    np.testing.assert_allclose(hocav.interpolate_metric(mesh, mesh, metric), metric, rtol=1e-12)
+
+
+def test_stats_are_the_commands(tmp_path, cube):
+    run_cli("metric", cube, "-o", tmp_path / "m.sol", "--analytic", "uniform")
+    _, out, _ = run_cli("stats", cube, "--metric", tmp_path / "m.sol", "--json")
+    mesh = hocav.read(cube)
+    expected, figures = json.loads(out), hocav.stats(mesh, hocav.read_metric(tmp_path / "m.sol", mesh))
+    assert figures["metric"]["edges"] > 0
+    figures["mesh"], figures["metric"]["file"] = expected["mesh"], expected["metric"]["file"]  # file names
+    # The arrays' capacity: the module measures its (tight) copy, the command the mesh as read.
+    assert figures.pop("memory_bytes") <= expected.pop("memory_bytes")
+    assert figures == expected
+
+
+def test_the_gil_is_released_while_the_library_works(tmp_path):
+    path = tmp_path / "shell.meshb"
+    run_cli("generate", "polar-annulus", "--target-triangles", "40000", "-o", path)
+    mesh = hocav.read(path)
+    metric = hocav.analytic_metric(mesh, "uniform", h=0.02)
+    span = {}
+
+    def curve():
+        span["start"] = time.perf_counter()
+        hocav.curve(mesh, metric, threads=1)
+        span["end"] = time.perf_counter()
+
+    worker = threading.Thread(target=curve)
+    ticks = []
+    worker.start()
+    while worker.is_alive():
+        ticks.append(time.perf_counter())
+    worker.join()
+    inside = [t for t in ticks if span["start"] + 0.05 < t < span["end"] - 0.05]
+    assert span["end"] - span["start"] > 0.2, "the job is too short to tell"
+    assert len(inside) > 1000  # this thread ran Python all along
