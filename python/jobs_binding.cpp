@@ -151,6 +151,8 @@ AdaptationJob<D> adaptation_job(const AdaptArguments& a) {
   job.hausd = a.hausd;
   job.angle = a.angle;
   job.iterations = a.iterations;
+  job.threads = a.threads.value_or(every_core());
+  job.metric_name = a.analytic ? "analytic " + *a.analytic : "metric";
   if (a.order == 2) {
     job.curving.emplace();
     job.curving->jacobian_floor = a.jacobian_floor;
@@ -171,17 +173,18 @@ py::tuple adapt(const PyMesh& mesh, const AdaptArguments& a) {
     std::vector<SymMat<D>> metrics;
     if (a.metric) metrics = metrics_of_array<D>(*a.metric, input.vertex_count(), "metric");
     warn(check_input_mesh(input, "mesh"));
-    const AdaptationJob<D> job = adaptation_job<D>(a);
+    AdaptationJob<D> job = adaptation_job<D>(a);
+    std::vector<std::string> warnings;  // given to Python once it holds the GIL again
+    job.warn = [&warnings](const std::string& warning) { warnings.push_back(warning); };
     Mesh<D> output = input;
     std::ostringstream report;
-    std::string convergence;
     {
       py::gil_scoped_release release;
       const AdaptedMesh<D> result = run_adaptation_job(output, std::move(metrics), job, "the mesh");
       write_adaptation_report_json(report, result.report);
-      convergence = non_convergence_summary(result.report);
+      warnings.push_back(non_convergence_summary(result.report));
     }
-    warn(convergence);
+    for (const std::string& warning : warnings) warn(warning);
     return py::make_tuple(with_writer_numbering(std::move(output)), parsed_json(report.str()));
   });
 }
@@ -248,7 +251,8 @@ evaluated exactly. order: 2 curves the adapted mesh, 1 stops after the P1 adapta
 clamp the sizes; hgrad: grade the metric first; hausd: largest distance of a new boundary facet from
 the geometry (default 0.01 of the bounding box's diagonal); angle: ridges above this dihedral angle;
 surface: 'p3', 'cad:FILE' or 'none'; iterations: at most this many passes (a warning when the loop
-stops there); threads: of the curving, default every core.)");
+stops there); threads: of the smoothing and the curving, default every core. Sizes below 1e-6 of the
+input's diagonal are clamped there, with a warning.)");
   module.def("stats", &stats, py::arg("mesh"), py::arg("metric") = py::none(),
              R"(The figures of `hocav stats --json` as a dict: counts, refs, measures, consistency, Jacobian
 figures, memory; with a metric (one row per vertex, or per node), edge lengths and qualities in it.)");

@@ -48,10 +48,12 @@ def test_adapt_refuses_what_the_command_refuses(annulus):
         hocav.adapt(mesh, analytic="uniform", surface="sphere")
 
 
-def test_an_unconverged_adaptation_warns(annulus):
+def test_the_commands_warnings_are_python_warnings(annulus):
     mesh = hocav.read(annulus)
     with pytest.warns(UserWarning, match="not converged after 1 passes"):
         hocav.adapt(mesh, analytic="uniform", iterations=1, order=1)
+    with pytest.warns(UserWarning, match="analytic linear: sizes down to 1e-12 asked, below what the geometry allows"):
+        hocav.adapt(mesh, analytic="linear", hmin=1e-12, iterations=1, order=1)
 
 
 @pytest.mark.parametrize("arguments, call", [
