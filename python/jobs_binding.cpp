@@ -251,8 +251,8 @@ evaluated exactly. order: 2 curves the adapted mesh, 1 stops after the P1 adapta
 clamp the sizes; hgrad: grade the metric first; hausd: largest distance of a new boundary facet from
 the geometry (default 0.01 of the bounding box's diagonal); angle: ridges above this dihedral angle;
 surface: 'p3', 'cad:FILE' or 'none'; iterations: at most this many passes (a warning when the loop
-stops there); threads: of the smoothing and the curving, default every core. Sizes below 1e-6 of the
-input's diagonal are clamped there, with a warning.)");
+stops there); threads: of the swaps, smoothing, collapse tests and curving, default every core. Sizes
+below 1e-6 of the input's diagonal are clamped there, with a warning.)");
   module.def("stats", &stats, py::arg("mesh"), py::arg("metric") = py::none(),
              R"(The figures of `hocav stats --json` as a dict: counts, refs, measures, consistency, Jacobian
 figures, memory; with a metric (one row per vertex, or per node), edge lengths and qualities in it.)");
