@@ -103,7 +103,7 @@ def test_stats_are_the_commands(tmp_path, cube):
 
 def test_the_gil_is_released_while_the_library_works(tmp_path):
     path = tmp_path / "shell.meshb"
-    run_cli("generate", "polar-annulus", "--target-triangles", "40000", "-o", path)
+    run_cli("generate", "polar-annulus", "--target-triangles", "160000", "-o", path)
     mesh = hocav.read(path)
     metric = hocav.analytic_metric(mesh, "uniform", h=0.02)
     span = {}
