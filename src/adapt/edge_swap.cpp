@@ -7,6 +7,7 @@
 
 #include "adapt/adaptation_operations.hpp"
 #include "adapt/conflict_batches.hpp"
+#include "base/small_set.hpp"
 #include "mesh/ball_and_shell.hpp"
 
 namespace hocav {
@@ -64,6 +65,7 @@ struct SwapRound {
   int stamp = 0;
   std::vector<Index> waiting;  // candidates (by position) left for the next round
   std::vector<Index> keys;
+  std::vector<Refusal> gathered;  // per pending candidate: why its cavity could not be gathered
   ConflictBatches coloring;  // keys: vertices
 
   explicit SwapRound(Index vertex_count) : taken(static_cast<std::size_t>(vertex_count), 0), coloring(vertex_count) {}
@@ -86,7 +88,7 @@ void cavity_faces(const Mesh<D>& mesh, std::span<const Index> cavity, std::vecto
   for (Index k : cavity)
     for (int face = 0; face <= D; ++face) {
       const Index outer = mesh.neighbor(k, face);
-      if (outer != kNoIndex && std::find(cavity.begin(), cavity.end(), outer) != cavity.end()) continue;
+      if (outer != kNoIndex && small_set_holds(cavity, outer)) continue;
       std::array<Index, D> vertices;
       for (int i = 0; i < D; ++i) vertices[i] = mesh.element(k)[face_vertices<D>(face)[i]];
       faces.push_back(vertices);
@@ -139,7 +141,7 @@ void other_vertices(const Mesh<D>& mesh, std::span<const Index> cavity, Index a,
   out.clear();
   for (Index k : cavity)
     for (Index v : mesh.element(k))
-      if (v != a && v != b && std::find(out.begin(), out.end(), v) == out.end()) out.push_back(v);
+      if (v != a && v != b && !small_set_holds(out, v)) out.push_back(v);
 }
 
 // Whether the edge's shell touches the boundary (then the edge is kept: boundary edges change only
@@ -280,16 +282,22 @@ void swap_all(AdaptationMesh<D>& am, std::span<const SwapCandidate<N>> candidate
   std::vector<Index> pending(candidates.size());
   for (std::size_t i = 0; i < pending.size(); ++i) pending[i] = static_cast<Index>(i);
   while (!pending.empty()) {
+    // Gathering reads the mesh and writes only the candidate's own cavity: on the pool's threads.
+    round.gathered.assign(pending.size(), Refusal::kNone);
+    run_strided(pool, pending.size(), kSmallestThreadedBatch, [&](std::size_t, std::size_t i) {
+      const auto item = static_cast<std::size_t>(pending[i]);
+      if (!round.cavities[item].current(mesh)) round.gathered[i] = gather(mesh, candidates[item], round.cavities[item]);
+    });
     ConflictBatches& coloring = round.coloring;
     coloring.clear();
-    for (Index item : pending) {
+    for (std::size_t i = 0; i < pending.size(); ++i) {
+      const Index item = pending[i];
       const SwapCandidate<N>& candidate = candidates[static_cast<std::size_t>(item)];
-      SwapCavity<D>& cavity = round.cavities[static_cast<std::size_t>(item)];
-      if (!cavity.current(mesh))
-        if (const Refusal refusal = gather(mesh, candidate, cavity); refusal != Refusal::kNone) {
-          count.add(refusal);
-          continue;
-        }
+      const SwapCavity<D>& cavity = round.cavities[static_cast<std::size_t>(item)];
+      if (round.gathered[i] != Refusal::kNone) {
+        count.add(round.gathered[i]);
+        continue;
+      }
       round.keys.assign(candidate.vertices.begin(), candidate.vertices.end());
       round.keys.insert(round.keys.end(), cavity.apexes.begin(), cavity.apexes.end());
       coloring.place(item, round.keys);

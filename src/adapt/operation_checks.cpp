@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "adapt/adaptation_operations.hpp"
+#include "base/small_set.hpp"
 
 namespace hocav {
 
@@ -39,7 +40,7 @@ void neighbors_in(std::span<const typename Mesh<D>::Element> elements, Index cen
   for (const auto& element : elements) {
     if (std::find(element.begin(), element.end(), center) == element.end()) continue;
     for (Index w : element)
-      if (w != center && std::find(out.begin(), out.end(), w) == out.end()) out.push_back(w);
+      if (w != center && !small_set_holds(out, w)) out.push_back(w);
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "base/small_set.hpp"
 #include "geom/barycentric.hpp"
 #include "mesh/ball_and_shell.hpp"
 
@@ -53,7 +54,7 @@ void grow_delaunay_cavity(const Mesh<D>& mesh, std::vector<Index>& cavity, const
   for (std::size_t next = 0; next < cavity.size(); ++next)
     for (int face = 0; face <= D; ++face) {
       Index n = mesh.neighbor(cavity[next], face);
-      if (n == kNoIndex || std::find(cavity.begin(), cavity.end(), n) != cavity.end()) continue;
+      if (n == kNoIndex || small_set_holds(cavity, n)) continue;
       if (mesh.element_face_facet(cavity[next], face) != kNoIndex) continue;  // stay on one side of surfaces
       if (in_circumsphere(mesh, n, x, metric)) cavity.push_back(n);
     }

@@ -1,7 +1,8 @@
 #include "mesh/ball_and_shell.hpp"
 
-#include <algorithm>
 #include <array>
+
+#include "base/small_set.hpp"
 
 namespace hocav {
 
@@ -26,7 +27,7 @@ void collect_ball(const Mesh<D>& mesh, Index v, std::vector<Index>& ball) {
     for (int face = 0; face <= D; ++face) {
       if (face == own) continue;  // the face opposite v does not contain v
       Index neighbor = mesh.neighbor(k, face);
-      if (neighbor != kNoIndex && std::find(ball.begin(), ball.end(), neighbor) == ball.end()) {
+      if (neighbor != kNoIndex && !small_set_holds(ball, neighbor)) {
         mesh.prefetch_element(neighbor);  // read when its turn comes, and by the ball's users
         ball.push_back(neighbor);
       }
@@ -49,7 +50,7 @@ Index element_of_edge(const Mesh<D>& mesh, Index a, Index b, std::vector<Index>&
     const int own = local_vertex(mesh, k, a);
     for (int face = 0; face <= D; ++face) {
       const Index neighbor = face == own ? kNoIndex : mesh.neighbor(k, face);
-      if (neighbor != kNoIndex && std::find(visited.begin(), visited.end(), neighbor) == visited.end()) visited.push_back(neighbor);
+      if (neighbor != kNoIndex && !small_set_holds(visited, neighbor)) visited.push_back(neighbor);
     }
   }
   return kNoIndex;
