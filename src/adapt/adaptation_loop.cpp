@@ -21,17 +21,18 @@ auto timed(double& seconds, Step step) {
   return result;
 }
 
-// A swap sweep tries only around what changed since `since`: the first sweep of a pass since the
-// pass began (everything in the first pass), the second since the first began, so that a swap
-// refused once is retried only when its cavity has changed.
+// A swap sweep tries only what changed since the previous sweep began (everything in the first
+// pass): a swap refused once is retried only when its cavity has changed. `last_sweep` holds the
+// clock at the start of the latest sweep.
 template <int D>
-AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits, bool first, ThreadPool& pool) {
+AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits, int& last_sweep, ThreadPool& pool) {
   AdaptationPass pass;
-  const int pass_start = am.start_pass();
+  am.start_pass();
   pass.collapses = timed(pass.seconds_collapse, [&] { return collapse_short_edges(am, limits, pool); });
   const int first_swaps = am.tick();
-  pass.swaps = timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, first ? 0 : pass_start, pool); });
+  pass.swaps = timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, last_sweep, pool); });
   pass.splits = timed(pass.seconds_split, [&] { return split_long_edges(am, limits); });
+  last_sweep = am.tick();
   pass.swaps += timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, first_swaps, pool); });
   pass.moves = timed(pass.seconds_smooth, [&] { return smooth_vertices(am, limits, pool); });
   timed(pass.seconds_compact, [&] { return am.mesh().compact(); });
@@ -52,8 +53,9 @@ AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, 
   limits.hausd = settings.hausd;
   ThreadPool pool(std::max(1, settings.threads));
   AdaptationRun run;
+  int last_sweep = 0;
   for (int pass = 1; pass <= settings.max_passes && !run.converged; ++pass) {
-    run.passes.push_back(run_pass(am, limits, pass == 1, pool));
+    run.passes.push_back(run_pass(am, limits, last_sweep, pool));
     const AdaptationPass& last = run.passes.back();
     run.converged = last.splits.done + last.collapses.done <= kConvergedChange * last.vertices;
     if (settings.progress) settings.progress(pass, settings.max_passes);

@@ -22,6 +22,7 @@ AdaptationMesh<D>::AdaptationMesh(Mesh<D>& mesh, const AdaptationMetric<D>& metr
     evaluate_metric(v, v);
   }
   quality_attribute_ = mesh_.add_element_attribute(0);
+  element_stamp_attribute_ = mesh_.add_element_attribute(0);  // every element changed at clock 0
   for (Index k = 0; k < mesh_.element_count(); ++k) mesh_.set_element_attribute(quality_attribute_, k, quality(mesh_.element(k)));
 }
 
@@ -35,7 +36,10 @@ void AdaptationMesh<D>::commit(CavityOperator<D>& plan) {
 
 template <int D>
 void AdaptationMesh<D>::update_qualities(std::span<const Index> elements) {
-  for (Index k : elements) mesh_.set_element_attribute(quality_attribute_, k, quality(mesh_.element(k)));
+  for (Index k : elements) {
+    mesh_.set_element_attribute(quality_attribute_, k, quality(mesh_.element(k)));
+    mesh_.set_element_attribute(element_stamp_attribute_, k, clock_);
+  }
 }
 
 template <int D>

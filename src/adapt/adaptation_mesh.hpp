@@ -78,6 +78,8 @@ class AdaptationMesh {
   bool changed_recently(Index v) const { return changed_since(v, previous_pass_start_); }
   // Whether v's ball changed at or after `clock` (everything did since clock 0).
   bool changed_since(Index v, int clock) const { return mesh_.vertex_attribute(stamp_attribute_, v)[0] >= clock; }
+  // Whether element k was made, or one of its vertices moved, at or after `clock`.
+  bool element_changed_since(Index k, int clock) const { return mesh_.element_attribute(element_stamp_attribute_, k) >= clock; }
 
   double edge_length(Index a, Index b) const {
     return metric_edge_length<D>(mesh_.vertex(a), mesh_.vertex(b), metric(a), metric(b));
@@ -92,12 +94,13 @@ class AdaptationMesh {
  private:
   void set_metric(Index v, const SymMat<D>& metric);
   void evaluate_metric(Index v, Index near);
+  // Renews the qualities of these elements and stamps them changed.
   void update_qualities(std::span<const Index> elements);
 
   Mesh<D>& mesh_;
   const AdaptationMetric<D>& metric_;
   const BoundaryGeometry<D>* geometry_;
-  int metric_attribute_, class_attribute_, hint_attribute_, stamp_attribute_, quality_attribute_;
+  int metric_attribute_, class_attribute_, hint_attribute_, stamp_attribute_, quality_attribute_, element_stamp_attribute_;
   int clock_ = 0, pass_start_ = 0, previous_pass_start_ = 0;
   CavityWorkspace<D> work_;
 };

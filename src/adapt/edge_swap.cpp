@@ -66,6 +66,7 @@ struct SwapRound {
   std::vector<Index> waiting;  // candidates (by position) left for the next round
   std::vector<Index> keys;
   std::vector<Refusal> gathered;  // per pending candidate: why its cavity could not be gathered
+  std::vector<char> unchanged;    // per pending candidate: no element of its cavity changed since the sweep's clock
   ConflictBatches coloring;  // keys: vertices
 
   explicit SwapRound(Index vertex_count) : taken(static_cast<std::size_t>(vertex_count), 0), coloring(vertex_count) {}
@@ -274,8 +275,8 @@ void swap_batch(AdaptationMesh<D>& am, std::span<const SwapCandidate<N>> candida
 // colours the candidates by their cavities' vertices; what a batch or the colouring left waits for
 // the next round.
 template <int D, std::size_t N>
-void swap_all(AdaptationMesh<D>& am, std::span<const SwapCandidate<N>> candidates, SwapRound<D>& round, const AdaptationLimits& limits,
-              ThreadPool& pool, OperationCount& count) {
+void swap_all(AdaptationMesh<D>& am, std::span<const SwapCandidate<N>> candidates, int since, SwapRound<D>& round,
+              const AdaptationLimits& limits, ThreadPool& pool, OperationCount& count) {
   const Mesh<D>& mesh = am.mesh();
   round.cavities.resize(candidates.size());
   for (SwapCavity<D>& cavity : round.cavities) cavity.elements.clear();  // none gathered yet
@@ -284,9 +285,12 @@ void swap_all(AdaptationMesh<D>& am, std::span<const SwapCandidate<N>> candidate
   while (!pending.empty()) {
     // Gathering reads the mesh and writes only the candidate's own cavity: on the pool's threads.
     round.gathered.assign(pending.size(), Refusal::kNone);
+    round.unchanged.assign(pending.size(), 0);
     run_strided(pool, pending.size(), kSmallestThreadedBatch, [&](std::size_t, std::size_t i) {
       const auto item = static_cast<std::size_t>(pending[i]);
-      if (!round.cavities[item].current(mesh)) round.gathered[i] = gather(mesh, candidates[item], round.cavities[item]);
+      SwapCavity<D>& cavity = round.cavities[item];
+      if (!cavity.current(mesh)) round.gathered[i] = gather(mesh, candidates[item], cavity);
+      round.unchanged[i] = std::none_of(cavity.elements.begin(), cavity.elements.end(), [&](Index k) { return am.element_changed_since(k, since); });
     });
     ConflictBatches& coloring = round.coloring;
     coloring.clear();
@@ -298,6 +302,7 @@ void swap_all(AdaptationMesh<D>& am, std::span<const SwapCandidate<N>> candidate
         count.add(round.gathered[i]);
         continue;
       }
+      if (round.unchanged[i]) continue;  // judged on this same cavity before, and refused
       round.keys.assign(candidate.vertices.begin(), candidate.vertices.end());
       round.keys.insert(round.keys.end(), cavity.apexes.begin(), cavity.apexes.end());
       coloring.place(item, round.keys);
@@ -339,10 +344,10 @@ OperationCount swap_for_quality(AdaptationMesh<D>& am, const AdaptationLimits& l
   SwapRound<D> round(mesh.vertex_count());
   round.scratch.resize(static_cast<std::size_t>(pool.thread_count()));
   for (std::size_t start = 0; start < edges.size(); start += kSweepChunk)
-    swap_all<D, 2>(am, std::span(edges).subspan(start, std::min(kSweepChunk, edges.size() - start)), round, limits, pool, count);
+    swap_all<D, 2>(am, std::span(edges).subspan(start, std::min(kSweepChunk, edges.size() - start)), since, round, limits, pool, count);
   if constexpr (D == 3)
     for (std::size_t start = 0; start < faces.size(); start += kSweepChunk)
-      swap_all<D, 3>(am, std::span(faces).subspan(start, std::min(kSweepChunk, faces.size() - start)), round, limits, pool, count);
+      swap_all<D, 3>(am, std::span(faces).subspan(start, std::min(kSweepChunk, faces.size() - start)), since, round, limits, pool, count);
   return count;
 }
 
