@@ -197,7 +197,7 @@ py::object stats(const PyMesh& mesh, const std::optional<DoubleArray>& metric) {
     {
       py::gil_scoped_release release;
       auto copy = input;  // the statistics build an edge table
-      write_statistics_json(json, compute_mesh_statistics(copy, node_metrics), "mesh", metric ? "metric" : "");
+      write_statistics_json(json, compute_mesh_statistics(copy, node_metrics, every_core()), "mesh", metric ? "metric" : "");
     }
     return parsed_json(json.str());
   });

@@ -1,4 +1,4 @@
-// hocav stats MESH [--metric SOL] [--json]: counts, refs, P1 measures, the consistency verdict, the
+// hocav stats MESH [--metric SOL] [--json] [--threads N]: counts, refs, P1 measures, the consistency verdict, the
 // certified Jacobian figures and memory of a mesh; with a metric, the edge lengths and element
 // qualities in it and its largest anisotropy. A table for people or one JSON object. An invalid mesh (inconsistent, or an
 // element not certified positive) is reported in full, then named on stderr with exit code 2, so
@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "base/error.hpp"
+#include "base/thread_pool.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
 #include "report/mesh_statistics.hpp"
@@ -17,6 +18,7 @@ namespace {
 struct StatsOptions {
   std::string mesh, metric;
   bool json = false;
+  int threads = every_core();
 };
 
 void run_stats(const StatsOptions& options) {
@@ -25,7 +27,7 @@ void run_stats(const StatsOptions& options) {
       [&](auto& mesh) {
         std::vector<double> node_metrics;  // vertices, then P2 nodes
         if (!options.metric.empty()) node_metrics = read_metric_for_mesh(options.metric, file, mesh.is_p2()).values;
-        return compute_mesh_statistics(mesh, node_metrics);
+        return compute_mesh_statistics(mesh, node_metrics, options.threads);
       },
       file.mesh);
   if (options.json)
@@ -52,6 +54,9 @@ void add_stats_command(CLI::App& app) {
                       "histogram, share in [1/sqrt(2), sqrt(2)]), the elements' mean-ratio quality in it (min/mean, histogram, "
                       "share below 0.1) and the max anisotropy");
   command->add_flag("--json", options->json, "print one JSON object instead of the table");
+  command->add_option("--threads", options->threads, "threads of the metric figures (the figures do not depend on it)")
+      ->check(CLI::Range(1, 256))
+      ->capture_default_str();
   command->callback([options] { run_stats(*options); });
 }
 

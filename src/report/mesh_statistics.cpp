@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "base/error.hpp"
+#include "base/thread_pool.hpp"
 #include "bezier/mesh_quality.hpp"
 #include "curve/edge_length.hpp"
 #include "geom/sym_functions.hpp"
@@ -28,21 +29,35 @@ std::vector<RefCount> count_refs(Index count, RefOf ref_of) {
   return out;
 }
 
+// Calls value(i) for every i in [0, count) on the pool's threads, in chunks, and returns the
+// values in order: the figures are then summed serially, the same for any thread count.
+template <typename Value>
+std::vector<double> values_on_threads(ThreadPool& pool, std::size_t count, const Value& value) {
+  constexpr std::size_t kChunk = 1024;
+  std::vector<double> values(count);
+  pool.run((count + kChunk - 1) / kChunk, [&](std::size_t chunk) {
+    for (std::size_t i = chunk * kChunk; i < std::min(count, (chunk + 1) * kChunk); ++i) values[i] = value(i);
+  });
+  return values;
+}
+
 // The quality figures of the straight elements, each in the metric at its centroid.
 template <int D>
-void add_quality_figures(const Mesh<D>& mesh, const std::vector<SymMat<D>>& vertex_logs, MetricStatistics& s) {
+void add_quality_figures(const Mesh<D>& mesh, const std::vector<SymMat<D>>& vertex_logs, ThreadPool& pool, MetricStatistics& s) {
   if (mesh.element_count() == 0) return;
-  s.quality_min = std::numeric_limits<double>::infinity();
-  double sum = 0;
-  for (Index k = 0; k < mesh.element_count(); ++k) {
+  const std::vector<double> qualities = values_on_threads(pool, static_cast<std::size_t>(mesh.element_count()), [&](std::size_t k) {
     SimplexPoints<D> corners;
     SymMat<D> log_sum;
     for (int i = 0; i <= D; ++i) {
-      const Index v = mesh.element(k)[i];
+      const Index v = mesh.element(static_cast<Index>(k))[i];
       corners[static_cast<std::size_t>(i)] = mesh.vertex(v);
       log_sum += vertex_logs[static_cast<std::size_t>(v)];
     }
-    const double quality = metric_mean_ratio<D>(corners, exp_sym((1.0 / (D + 1)) * log_sum));
+    return metric_mean_ratio<D>(corners, exp_sym((1.0 / (D + 1)) * log_sum));
+  });
+  s.quality_min = std::numeric_limits<double>::infinity();
+  double sum = 0;
+  for (double quality : qualities) {
     s.quality_min = std::min(s.quality_min, quality);
     sum += quality;
     ++s.quality_histogram[quality_bin(quality)];
@@ -52,7 +67,7 @@ void add_quality_figures(const Mesh<D>& mesh, const std::vector<SymMat<D>>& vert
 }
 
 template <int D>
-MetricStatistics metric_statistics(const Mesh<D>& mesh, std::span<const double> node_metrics) {
+MetricStatistics metric_statistics(const Mesh<D>& mesh, std::span<const double> node_metrics, ThreadPool& pool) {
   constexpr std::size_t kComponents = SymMat<D>::kEntryCount;
   const auto vertex_count = static_cast<std::size_t>(mesh.vertex_count());
   const std::size_t rows = node_metrics.size() / kComponents;
@@ -67,27 +82,31 @@ MetricStatistics metric_statistics(const Mesh<D>& mesh, std::span<const double> 
   };
   MetricStatistics s;
   std::vector<SymMat<D>> vertex_logs(vertex_count);
-  for (std::size_t v = 0; v < vertex_count; ++v) {
+  const std::vector<double> anisotropies = values_on_threads(pool, vertex_count, [&](std::size_t v) {
     vertex_logs[v] = log_metric_of_row(v);
     // Sizes are e^{−θ/2} for the eigenvalues θ of log M.
     Vec<D> theta = sym_eigen(vertex_logs[v]).values;
-    s.max_anisotropy = std::max(s.max_anisotropy, std::exp(0.5 * (theta[D - 1] - theta[0])));
-  }
-  add_quality_figures(mesh, vertex_logs, s);
+    return std::exp(0.5 * (theta[D - 1] - theta[0]));
+  });
+  for (double anisotropy : anisotropies) s.max_anisotropy = std::max(s.max_anisotropy, anisotropy);
+  add_quality_figures(mesh, vertex_logs, pool, s);
 
   s.edge_count = mesh.edge_count();
   if (s.edge_count == 0) return s;
-  s.min = std::numeric_limits<double>::infinity();
-  s.max = -s.min;
-  double sum = 0;
-  for (Index e = 0; e < mesh.edge_count(); ++e) {
+  const std::vector<double> lengths = values_on_threads(pool, static_cast<std::size_t>(s.edge_count), [&](std::size_t i) {
+    const auto e = static_cast<Index>(i);
     auto [a, b] = mesh.edge_vertices(e);
     const SymMat<D>& log_a = vertex_logs[static_cast<std::size_t>(a)];
     const SymMat<D>& log_b = vertex_logs[static_cast<std::size_t>(b)];
     EdgeLengthFunction<D> edge(mesh.vertex(a), mesh.vertex(b), log_a, log_b, high_precision_rule());
     Vec<D> node = mesh.is_p2() ? mesh.edge_node(e) : 0.5 * (mesh.vertex(a) + mesh.vertex(b));
-    SymMat<D> log_node = with_edge_nodes ? log_metric_of_row(vertex_count + static_cast<std::size_t>(e)) : 0.5 * (log_a + log_b);
-    double length = edge.length(node, log_node);
+    SymMat<D> log_node = with_edge_nodes ? log_metric_of_row(vertex_count + i) : 0.5 * (log_a + log_b);
+    return edge.length(node, log_node);
+  });
+  s.min = std::numeric_limits<double>::infinity();
+  s.max = -s.min;
+  double sum = 0;
+  for (double length : lengths) {
     s.min = std::min(s.min, length);
     s.max = std::max(s.max, length);
     sum += length;
@@ -269,7 +288,7 @@ std::string invalidity_summary(const MeshStatistics& s) {
 }
 
 template <int D>
-MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> node_metrics) {
+MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> node_metrics, int threads) {
   MeshStatistics s;
   s.memory_bytes = mesh.memory_bytes();
   if (!mesh.has_edges()) mesh.build_edges();
@@ -301,12 +320,15 @@ MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> no
   options.require_positive_orientation = !mesh.is_p2();  // a valid curved element may be an inverted P1 one
   s.consistency_problems = check_consistency(mesh, options);
   s.jacobian = jacobian_statistics(mesh);
-  if (!node_metrics.empty()) s.metric = metric_statistics(mesh, node_metrics);
+  if (!node_metrics.empty()) {
+    ThreadPool pool(std::max(1, threads));
+    s.metric = metric_statistics(mesh, node_metrics, pool);
+  }
   return s;
 }
 
-template MeshStatistics compute_mesh_statistics(Mesh<2>&, std::span<const double>);
-template MeshStatistics compute_mesh_statistics(Mesh<3>&, std::span<const double>);
+template MeshStatistics compute_mesh_statistics(Mesh<2>&, std::span<const double>, int);
+template MeshStatistics compute_mesh_statistics(Mesh<3>&, std::span<const double>, int);
 
 void write_statistics_table(std::ostream& out, const MeshStatistics& s, const std::string& mesh_name,
                             const std::string& metric_name) {

@@ -104,9 +104,10 @@ struct MeshStatistics {
 // Gauss rule: log M varies along it as the P2 interpolation of the log-metrics at its ends and at its
 // node. A P1 edge is straight, its node the midpoint with log M the mean of its ends' (so log M is
 // linear along it); a P2 edge has its node, with the metric given there or else that mean.
-// The quality of an element is that of its straight (P1) simplex.
+// The quality of an element is that of its straight (P1) simplex. The metric figures are computed
+// on `threads` threads (the same figures for any count).
 template <int D>
-MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> node_metrics = {});
+MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> node_metrics = {}, int threads = 1);
 
 // The bin of an edge length (index into MetricStatistics::histogram).
 std::size_t edge_length_bin(double length);
