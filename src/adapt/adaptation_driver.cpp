@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "base/memory_budget.hpp"
+#include "base/thread_pool.hpp"
 #include "geom/sym_eigen.hpp"
 #include "io/node_metrics.hpp"
 #include "mesh/measure.hpp"
@@ -26,11 +27,19 @@ long long peak_memory_bytes() {
   return static_cast<long long>(usage.ru_maxrss) * 1024;
 }
 
+// On the pool's threads, in chunks that each start their back-mesh walk afresh: the same metrics for
+// any thread count.
 template <int D>
-std::vector<SymMat<D>> metrics_at_vertices(const Mesh<D>& mesh, const AdaptationMetric<D>& metric) {
-  std::vector<SymMat<D>> metrics;
-  Index hint = kNoIndex;
-  for (const auto& x : mesh.vertices()) metrics.push_back(metric.metric_at(x, hint));
+std::vector<SymMat<D>> metrics_at_vertices(const Mesh<D>& mesh, const AdaptationMetric<D>& metric, int threads) {
+  constexpr std::size_t kChunk = 1024;
+  const auto count = static_cast<std::size_t>(mesh.vertex_count());
+  std::vector<SymMat<D>> metrics(count);
+  ThreadPool pool(std::max(1, threads));
+  pool.run((count + kChunk - 1) / kChunk, [&](std::size_t chunk) {
+    Index hint = kNoIndex;
+    for (std::size_t v = chunk * kChunk; v < std::min(count, (chunk + 1) * kChunk); ++v)
+      metrics[v] = metric.metric_at(mesh.vertex(static_cast<Index>(v)), hint);
+  });
   return metrics;
 }
 
@@ -50,7 +59,7 @@ AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric,
   report.output_vertices = mesh.vertex_count();
   report.output_elements = mesh.element_count();
 
-  const std::vector<SymMat<D>> metrics = metrics_at_vertices(mesh, metric);
+  const std::vector<SymMat<D>> metrics = metrics_at_vertices(mesh, metric, settings.threads);
   Mesh<D> copy = mesh;  // the statistics build an edge table
   report.measures = *compute_mesh_statistics(copy, rows_of_metrics(metrics).values, settings.threads).metric;
   out.field = std::make_unique<MetricField<D>>(mesh, metrics);
