@@ -31,7 +31,7 @@ AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits, i
   pass.collapses = timed(pass.seconds_collapse, [&] { return collapse_short_edges(am, limits, pool); });
   const int first_swaps = am.tick();
   pass.swaps = timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, last_sweep, pool); });
-  pass.splits = timed(pass.seconds_split, [&] { return split_long_edges(am, limits); });
+  pass.splits = timed(pass.seconds_split, [&] { return split_long_edges(am, limits, pool); });
   last_sweep = am.tick();
   pass.swaps += timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, first_swaps, pool); });
   pass.moves = timed(pass.seconds_smooth, [&] { return smooth_vertices(am, limits, pool); });

@@ -57,7 +57,7 @@ struct OperationCount {
 // edge's other end when it can be: the long edge is cut at a vertex already there, not beside it
 // (anisotropic refinement by midpoints would otherwise crowd the directions that need no refinement).
 template <int D>
-OperationCount split_long_edges(AdaptationMesh<D>& mesh, const AdaptationLimits& limits);
+OperationCount split_long_edges(AdaptationMesh<D>& mesh, const AdaptationLimits& limits, ThreadPool& pool);
 
 // Collapses edges shorter than collapse_length, shortest first, one end onto the other when the
 // classes allow it and no new edge is longer than split_length. The tests before each plan run on
@@ -91,13 +91,13 @@ OperationCount smooth_vertices(AdaptationMesh<D>& mesh, const AdaptationLimits& 
 
 // The edges of recently changed vertices (AdaptationMesh::changed_recently) whose length is above
 // `bound` (longer = true: longest first) or below it (shortest first); ties by vertex ids, so the
-// order does not depend on anything but the mesh.
+// order does not depend on anything but the mesh (the lengths are measured on the pool's threads).
 struct EdgeCandidate {
   double length;
   Index a, b;
 };
 template <int D>
-std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<D>& mesh, double bound, bool longer);
+std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<D>& mesh, double bound, bool longer, ThreadPool& pool);
 
 // The vertices of these elements (vertex lists) other than `center`, once each.
 template <int D>

@@ -6,7 +6,7 @@
 namespace hocav {
 
 template <int D>
-std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<D>& am, double bound, bool longer) {
+std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<D>& am, double bound, bool longer, ThreadPool& pool) {
   // The edges (a < b) of the elements with a recently changed vertex, bucketed by a (a counting
   // sort: the whole mesh's edges in the first passes), then each bucket sorted and made unique.
   const Mesh<D>& mesh = am.mesh();
@@ -22,14 +22,22 @@ std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<D>& am, double boun
   for (std::size_t v = 1; v < first.size(); ++v) first[v] += first[v - 1];
   std::vector<Index> ends(static_cast<std::size_t>(first.back())), fill(first.begin(), first.end() - 1);
   for_each_changed_edge([&](Index a, Index b) { ends[static_cast<std::size_t>(fill[a]++)] = b; });
+  // Each bucket's sort and lengths on the pool's threads, in chunks of vertices gathered in order.
+  constexpr Index kChunk = 2048;
+  const Index chunks = (mesh.vertex_count() + kChunk - 1) / kChunk;
+  std::vector<std::vector<EdgeCandidate>> found(static_cast<std::size_t>(chunks));
+  pool.run(static_cast<std::size_t>(chunks), [&](std::size_t chunk) {
+    const Index begin = static_cast<Index>(chunk) * kChunk, end = std::min(mesh.vertex_count(), begin + kChunk);
+    for (Index a = begin; a < end; ++a) {
+      const auto bucket_begin = ends.begin() + first[a], bucket_end = ends.begin() + first[a + 1];
+      std::sort(bucket_begin, bucket_end);
+      for (auto b = bucket_begin; b != bucket_end; ++b)
+        if (b == bucket_begin || *b != *(b - 1))
+          if (const double length = am.edge_length(a, *b); longer ? length > bound : length < bound) found[chunk].push_back({length, a, *b});
+    }
+  });
   std::vector<EdgeCandidate> candidates;
-  for (Index a = 0; a < mesh.vertex_count(); ++a) {
-    const auto bucket_begin = ends.begin() + first[a], bucket_end = ends.begin() + first[a + 1];
-    std::sort(bucket_begin, bucket_end);
-    for (auto b = bucket_begin; b != bucket_end; ++b)
-      if (b == bucket_begin || *b != *(b - 1))
-        if (const double length = am.edge_length(a, *b); longer ? length > bound : length < bound) candidates.push_back({length, a, *b});
-  }
+  for (const std::vector<EdgeCandidate>& part : found) candidates.insert(candidates.end(), part.begin(), part.end());
   std::sort(candidates.begin(), candidates.end(), [longer](const EdgeCandidate& x, const EdgeCandidate& y) {
     if (x.length != y.length) return longer ? x.length > y.length : x.length < y.length;
     return std::pair(x.a, x.b) < std::pair(y.a, y.b);
@@ -37,7 +45,7 @@ std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<D>& am, double boun
   return candidates;
 }
 
-template std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<2>&, double, bool);
-template std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<3>&, double, bool);
+template std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<2>&, double, bool, ThreadPool&);
+template std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<3>&, double, bool, ThreadPool&);
 
 }  // namespace hocav

@@ -123,7 +123,7 @@ Refusal collapse_edge(AdaptationMesh<D>& am, Index removed, Index kept, const Ad
 // since (docs/adaptation.md §Threads), so the result is the serial one.
 template <int D>
 OperationCount collapse_short_edges(AdaptationMesh<D>& am, const AdaptationLimits& limits, ThreadPool& pool) {
-  const std::vector<EdgeCandidate> candidates = edges_beyond(am, limits.collapse_length, false);
+  const std::vector<EdgeCandidate> candidates = edges_beyond(am, limits.collapse_length, false, pool);
   OperationCount count;
   std::vector<CollapseScratch<D>> scratch(static_cast<std::size_t>(pool.thread_count()));
   std::vector<std::array<Refusal, 2>> pretests;

@@ -122,8 +122,8 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const AdaptationLimi
 }  // namespace
 
 template <int D>
-OperationCount split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limits) {
-  std::vector<EdgeCandidate> candidates = edges_beyond(am, limits.split_length, true);
+OperationCount split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limits, ThreadPool& pool) {
+  std::vector<EdgeCandidate> candidates = edges_beyond(am, limits.split_length, true, pool);
   // 3D coarse phase: while many long edges are longer than 2, only those are split. Their halves
   // are longer than 1, so the mesh never gets denser than the metric asks; halves of edges in
   // (√2, 2) would be, while the coarse edges around them are still to be cut. (In 2D, where a
@@ -141,7 +141,7 @@ OperationCount split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& l
   return count;
 }
 
-template OperationCount split_long_edges(AdaptationMesh<2>&, const AdaptationLimits&);
-template OperationCount split_long_edges(AdaptationMesh<3>&, const AdaptationLimits&);
+template OperationCount split_long_edges(AdaptationMesh<2>&, const AdaptationLimits&, ThreadPool&);
+template OperationCount split_long_edges(AdaptationMesh<3>&, const AdaptationLimits&, ThreadPool&);
 
 }  // namespace hocav

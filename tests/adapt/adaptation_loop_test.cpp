@@ -191,7 +191,7 @@ TEST(AdaptationPasses, SplitAndCollapseEachDoWhatTheySay) {
   const AdaptationLimits limits;
   ThreadPool pool(2);
   const Index before = mesh.vertex_count();
-  const OperationCount splits = split_long_edges(am, limits);
+  const OperationCount splits = split_long_edges(am, limits, pool);
   EXPECT_GT(splits.done, 0);
   EXPECT_EQ(mesh.vertex_count(), before + splits.done);
   adapt_test::expect_closed_and_consistent(mesh);
@@ -220,7 +220,7 @@ TEST(AdaptationPasses, KeptQualitiesFollowEveryOperation) {
   const AdaptationLimits limits;
   ThreadPool pool(2);
   expect_kept_qualities_current(am);
-  EXPECT_GT(split_long_edges(am, limits).done, 0);
+  EXPECT_GT(split_long_edges(am, limits, pool).done, 0);
   expect_kept_qualities_current(am);
   EXPECT_GT(swap_for_quality(am, limits, 0, pool).done, 0);
   expect_kept_qualities_current(am);
@@ -247,7 +247,7 @@ TEST(AdaptationPasses, SwapsAndSmoothingRaiseTheWorstQuality) {
     for (Index k = 0; k < mesh.element_count(); ++k) q = std::min(q, am.quality(k));
     return q;
   };
-  split_long_edges(am, limits);
+  split_long_edges(am, limits, pool);
   mesh.compact();
   const double before = worst();
   const OperationCount swaps = swap_for_quality(am, limits, 0, pool);
