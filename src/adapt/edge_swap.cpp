@@ -4,6 +4,7 @@
 // (n → 2n − 4 elements), and two elements through a face re-starred from one's apex (2 → 3).
 #include <algorithm>
 #include <limits>
+#include <tuple>
 
 #include "adapt/adaptation_operations.hpp"
 #include "adapt/conflict_batches.hpp"
@@ -175,6 +176,28 @@ struct SwapCandidate {
   bool operator==(const SwapCandidate& other) const { return vertices == other.vertices; }
 };
 
+// Sorts the candidates by vertices and keeps one of each, the one the lowest element listed: a
+// counting sort by the first vertex, then each bucket sorted on the pool's threads.
+template <std::size_t N>
+void sort_unique(std::vector<SwapCandidate<N>>& candidates, Index vertex_count, ThreadPool& pool) {
+  std::vector<Index> first(static_cast<std::size_t>(vertex_count) + 1, 0);
+  for (const auto& c : candidates) ++first[static_cast<std::size_t>(c.vertices[0]) + 1];
+  for (std::size_t v = 1; v < first.size(); ++v) first[v] += first[v - 1];
+  std::vector<SwapCandidate<N>> sorted(candidates.size());
+  std::vector<Index> fill(first.begin(), first.end() - 1);
+  for (const auto& c : candidates) sorted[static_cast<std::size_t>(fill[static_cast<std::size_t>(c.vertices[0])]++)] = c;
+  constexpr std::size_t kChunk = 2048;
+  const std::size_t chunks = (static_cast<std::size_t>(vertex_count) + kChunk - 1) / kChunk;
+  pool.run(chunks, [&](std::size_t chunk) {
+    for (std::size_t v = chunk * kChunk; v < std::min(static_cast<std::size_t>(vertex_count), (chunk + 1) * kChunk); ++v)
+      std::sort(sorted.begin() + first[v], sorted.begin() + first[v + 1], [](const SwapCandidate<N>& x, const SwapCandidate<N>& y) {
+        return std::tie(x.vertices, x.element) < std::tie(y.vertices, y.element);
+      });
+  });
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  candidates.swap(sorted);
+}
+
 // The shell of edge (a, b); refused on the boundary and when too small or too large.
 template <int D>
 Refusal gather_cavity(const Mesh<D>& mesh, const SwapCandidate<2>& edge, SwapCavity<D>& cavity) {
@@ -335,11 +358,8 @@ OperationCount swap_for_quality(AdaptationMesh<D>& am, const AdaptationLimits& l
         faces.push_back({face, k});
       }
   }
-  // Stable: among equal keys the first element lists it, whatever the sort does.
-  std::stable_sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  std::stable_sort(faces.begin(), faces.end());
-  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  sort_unique(edges, mesh.vertex_count(), pool);
+  sort_unique(faces, mesh.vertex_count(), pool);
   OperationCount count;
   SwapRound<D> round(mesh.vertex_count());
   round.scratch.resize(static_cast<std::size_t>(pool.thread_count()));
