@@ -11,7 +11,7 @@
 //   read_integer(entity), read_real(entity)
 //   fail(what, entity)     throws Error "<file>: <keyword>: <what>, entity N[, line L]"
 // The binary layout (endianness code, 32/64-bit positions, counts, integers and reals by version) is
-// in shared design formats.md. Counts are checked against the bytes left before anything is
+// in docs/formats.md, "Binary layout". Counts are checked against the bytes left before anything is
 // allocated from them; NextPos must move forward inside the file, so a corrupt chain cannot loop.
 #pragma once
 

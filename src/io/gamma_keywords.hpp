@@ -1,5 +1,5 @@
 // The keywords of the Gamma/Medit formats (.mesh/.meshb/.sol/.solb) that hocav reads, writes or
-// recognizes: codes as in the public libMeshb header (shared design formats.md), names as written in
+// recognizes: codes as in the public libMeshb header (docs/formats.md lists them), names as written in
 // ASCII files. One table serves the ASCII and binary readers and writers of meshes and solutions.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Gamma/Medit meshes: .mesh (ASCII) and .meshb (binary, versions 1-4). Keywords and layouts are in
-// shared design formats.md; P2 node order follows the *P2Ordering keywords when present.
+// docs/formats.md, "Gamma / Medit"; P2 node order follows the *P2Ordering keywords when present.
 #pragma once
 
 #include <string>

@@ -1,5 +1,5 @@
 // Gmsh MSH 4.1 ASCII: reading into RawMesh (then the shared assembly) and writing with one entity
-// per ref, so that gmsh and meshio see refs as physical tags. Node orders: shared design formats.md.
+// per ref, so that gmsh and meshio see refs as physical tags. Node orders: docs/formats.md, "Gmsh .msh 4.1".
 #include "io/gmsh_msh.hpp"
 
 #include <algorithm>

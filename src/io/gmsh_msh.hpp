@@ -1,5 +1,5 @@
 // Gmsh .msh 4.1 ASCII meshes: lines (1, 8), triangles (2, 9), tetrahedra (4, 11), points (15);
-// physical tags become refs. Node orders are in shared design formats.md.
+// physical tags become refs. Node orders are in docs/formats.md, "Gmsh .msh 4.1".
 #pragma once
 
 #include <string>

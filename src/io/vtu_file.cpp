@@ -1,6 +1,6 @@
 // VTK XML unstructured grid with the data appended as raw binary (header_type UInt64): compact and
 // fast for million-element meshes, read by VTK/ParaView and meshio. Cell types and node orders:
-// shared design formats.md (VTK's quadratic order is hocav's).
+// docs/formats.md, "VTK .vtu" (VTK's quadratic order is hocav's).
 #include "io/vtu_file.hpp"
 
 #include <bit>

@@ -1,6 +1,6 @@
 // Helpers of the Gamma mesh and solution tests: scratch files, and a builder of binary files
 // written independently of hocav's writer (it patches NextPos after the fact, the writer computes it
-// ahead), so the tests can check the layout against shared design formats.md byte by byte.
+// ahead), so the tests can check the layout against docs/formats.md ("Binary layout") byte by byte.
 #pragma once
 
 #include <gtest/gtest.h>
