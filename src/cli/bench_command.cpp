@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "base/error.hpp"
+#include "base/thread_pool.hpp"
 #include "bench/bench_run.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"

@@ -1,21 +1,15 @@
 // What the commands share: the input mesh's check with its warning and the progress line of a
-// curving run. The rest they share is the library's (io/node_metrics.hpp,
-// report/curved_vtu.hpp, report/mesh_summary.hpp, surface/boundary_choice.hpp).
+// curving run. The rest they share is the library's, which each command includes itself
+// (io/node_metrics.hpp, report/curved_vtu.hpp, report/mesh_summary.hpp, surface/boundary_choice.hpp).
 #pragma once
 
-#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <string>
 
 #include "adapt/curving_run.hpp"
-#include "base/thread_pool.hpp"
 #include "cli/progress_line.hpp"
-#include "io/node_metrics.hpp"
 #include "mesh/input_check.hpp"
-#include "report/curved_vtu.hpp"
-#include "report/mesh_summary.hpp"
-#include "surface/boundary_choice.hpp"
 
 namespace hocav {
 

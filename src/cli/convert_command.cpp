@@ -10,8 +10,11 @@
 #include "base/error.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
+#include "io/node_metrics.hpp"
 #include "io/output_set.hpp"
 #include "io/vtu_file.hpp"
+#include "report/curved_vtu.hpp"
+#include "report/mesh_summary.hpp"
 
 namespace hocav {
 namespace {

@@ -6,12 +6,16 @@
 #include <memory>
 
 #include "base/memory_budget.hpp"
+#include "base/thread_pool.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
 #include "cli/number_checks.hpp"
 #include "io/atomic_output.hpp"
+#include "io/node_metrics.hpp"
 #include "io/output_set.hpp"
+#include "report/curved_vtu.hpp"
 #include "report/curving_report.hpp"
+#include "surface/boundary_choice.hpp"
 
 namespace hocav {
 namespace {

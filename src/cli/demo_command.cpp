@@ -12,9 +12,10 @@
 #include <iostream>
 #include <memory>
 
-#include "base/error.hpp"
-#include "cases/case_registry.hpp"
 #include "adapt/adaptation_driver.hpp"
+#include "base/error.hpp"
+#include "base/thread_pool.hpp"
+#include "cases/case_registry.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
 #include "cli/number_checks.hpp"
@@ -27,6 +28,9 @@
 #include "picture/histogram_chart.hpp"
 #include "picture/p2_mesh_picture.hpp"
 #include "picture/section_picture.hpp"
+#include "report/curved_vtu.hpp"
+#include "report/mesh_summary.hpp"
+#include "surface/boundary_choice.hpp"
 
 namespace hocav {
 namespace {

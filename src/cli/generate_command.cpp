@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/number_checks.hpp"
 #include "io/output_set.hpp"
+#include "report/mesh_summary.hpp"
 
 namespace hocav {
 namespace {

@@ -6,6 +6,7 @@
 // optionally graded, written with one row per node of the mesh file in the file's own node numbering.
 // P2 mid nodes get the analytic or interpolated field at the node, or the input's row there;
 // otherwise (and after gradation) the log-Euclidean mean of the metrics of their edge's two vertices.
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -16,6 +17,7 @@
 #include "cli/commands.hpp"
 #include "cli/number_checks.hpp"
 #include "geom/sym_functions.hpp"
+#include "io/node_metrics.hpp"
 #include "io/output_set.hpp"
 #include "mesh/measure.hpp"
 #include "metric/analytic_field.hpp"
@@ -25,6 +27,7 @@
 #include "metric/hessian_recovery.hpp"
 #include "metric/implied_metric.hpp"
 #include "metric/surface_metric.hpp"
+#include "report/mesh_summary.hpp"
 
 namespace hocav {
 namespace {

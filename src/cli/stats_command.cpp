@@ -10,6 +10,7 @@
 #include "base/thread_pool.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
+#include "io/node_metrics.hpp"
 #include "report/mesh_statistics.hpp"
 
 namespace hocav {
