@@ -5,11 +5,14 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "geom/sym_mat.hpp"
 #include "io/mesh_file.hpp"
+#include "surface/boundary_geometry.hpp"
 
 namespace hocav::python {
 
@@ -44,6 +47,14 @@ py::array_t<double> array_of_metrics(std::vector<SymMat<D>>&& metrics);
 // And back, checking the shape: `rows` matrices expected. `what` names the argument in errors.
 template <int D>
 std::vector<SymMat<D>> metrics_of_array(const DoubleArray& array, Index rows, const std::string& what);
+
+// The boundary geometry that a `surface` option ('p3', 'none', 'cad:FILE') names, as a function of
+// the mesh whose boundary it follows, called without the GIL. Made with the GIL held: a CAD surface
+// imports hocav._gmsh (python/cad_geometry.hpp).
+template <int D>
+using GeometryMaker = std::function<std::unique_ptr<BoundaryGeometry<D>>(const Mesh<D>&)>;
+template <int D>
+GeometryMaker<D> geometry_maker(const std::string& surface);
 
 void bind_mesh(py::module_& module);
 void bind_metrics(py::module_& module);

@@ -17,7 +17,6 @@
 #include "mesh/input_check.hpp"
 #include "report/curved_vtu.hpp"
 #include "report/mesh_statistics.hpp"
-#include "surface/boundary_choice.hpp"
 
 namespace hocav::python {
 namespace {
@@ -111,6 +110,7 @@ py::tuple curve(const PyMesh& input_mesh, const DoubleArray& metric, const std::
     options.jacobian_floor = jacobian_floor;
     options.passes = passes;
     options.threads = threads.value_or(every_core());
+    const GeometryMaker<D> make_geometry = geometry_maker<D>(surface);
     warn(check_input_mesh(input, "mesh"));
     Mesh<D> mesh = input;  // a Mesh never changes: the result is a new one
     std::ostringstream report;
@@ -118,7 +118,7 @@ py::tuple curve(const PyMesh& input_mesh, const DoubleArray& metric, const std::
       py::gil_scoped_release release;
       check_memory_fits("curving the mesh", mesh.element_count(), kCurvingBytesPerElement);
       const MetricField<D> field(mesh, metrics);
-      const auto geometry = make_boundary_geometry<D>(boundary_choice_named(surface), mesh);
+      const auto geometry = make_geometry(mesh);
       write_curving_report_json(report, curve_in_metric(mesh, field, geometry.get(), options));
     }
     return py::make_tuple(with_writer_numbering(std::move(mesh)), parsed_json(report.str()));
@@ -158,7 +158,7 @@ AdaptationJob<D> adaptation_job(const AdaptArguments& a) {
     job.curving->jacobian_floor = a.jacobian_floor;
     job.curving->threads = a.threads.value_or(every_core());
   }
-  job.geometry = [surface = boundary_choice_named(a.surface)](const Mesh<D>& mesh) { return make_boundary_geometry<D>(surface, mesh); };
+  job.geometry = geometry_maker<D>(a.surface);
   return job;
 }
 

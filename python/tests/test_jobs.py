@@ -11,10 +11,10 @@ import hocav
 from conftest import run_cli
 
 
-def test_curve_gives_the_commands_mesh(tmp_path, annulus):
-    run_cli("metric", annulus, "-o", tmp_path / "m.sol", "--analytic", "shear-circle", "--radius", "0.7")
-    run_cli("curve", annulus, "--metric", tmp_path / "m.sol", "-o", tmp_path / "cli.meshb", "--report", tmp_path / "cli.json")
-    mesh = hocav.read(annulus)
+def test_curve_gives_the_commands_mesh(tmp_path, ring):
+    run_cli("metric", ring, "-o", tmp_path / "m.sol", "--analytic", "shear-circle", "--radius", "0.7")
+    run_cli("curve", ring, "--metric", tmp_path / "m.sol", "-o", tmp_path / "cli.meshb", "--report", tmp_path / "cli.json")
+    mesh = hocav.read(ring)
     curved, report = hocav.curve(mesh, hocav.read_metric(tmp_path / "m.sol", mesh), threads=1)
     hocav.write(tmp_path / "module.meshb", curved)
     assert (tmp_path / "cli.meshb").read_bytes() == (tmp_path / "module.meshb").read_bytes()
@@ -25,11 +25,11 @@ def test_curve_gives_the_commands_mesh(tmp_path, annulus):
 
 
 @pytest.mark.parametrize("order", [1, 2])
-def test_adapt_gives_the_commands_mesh(tmp_path, annulus, order):
-    run_cli("metric", annulus, "-o", tmp_path / "m.sol", "--analytic", "uniform", "--h", "0.06")
-    run_cli("adapt", annulus, "--metric", tmp_path / "m.sol", "--order", order, "--hgrad", "1.5", "-o", tmp_path / "cli.meshb",
+def test_adapt_gives_the_commands_mesh(tmp_path, ring, order):
+    run_cli("metric", ring, "-o", tmp_path / "m.sol", "--analytic", "uniform", "--h", "0.06")
+    run_cli("adapt", ring, "--metric", tmp_path / "m.sol", "--order", order, "--hgrad", "1.5", "-o", tmp_path / "cli.meshb",
             "--report", tmp_path / "cli.json")
-    mesh = hocav.read(annulus)
+    mesh = hocav.read(ring)
     adapted, report = hocav.adapt(mesh, hocav.read_metric(tmp_path / "m.sol", mesh), order=order, hgrad=1.5)
     hocav.write(tmp_path / "module.meshb", adapted)
     assert (tmp_path / "cli.meshb").read_bytes() == (tmp_path / "module.meshb").read_bytes()
@@ -38,8 +38,8 @@ def test_adapt_gives_the_commands_mesh(tmp_path, annulus, order):
     assert ("curving" in report) == (order == 2)
 
 
-def test_adapt_refuses_what_the_command_refuses(annulus):
-    mesh = hocav.read(annulus)
+def test_adapt_refuses_what_the_command_refuses(ring):
+    mesh = hocav.read(ring)
     with pytest.raises(hocav.Error, match="exactly one metric source"):
         hocav.adapt(mesh)
     with pytest.raises(hocav.Error, match="hmin must not exceed hmax"):
@@ -48,8 +48,8 @@ def test_adapt_refuses_what_the_command_refuses(annulus):
         hocav.adapt(mesh, analytic="uniform", surface="sphere")
 
 
-def test_the_commands_warnings_are_python_warnings(annulus):
-    mesh = hocav.read(annulus)
+def test_the_commands_warnings_are_python_warnings(ring):
+    mesh = hocav.read(ring)
     with pytest.warns(UserWarning, match="not converged after 1 passes"):
         hocav.adapt(mesh, analytic="uniform", iterations=1, order=1)
     with pytest.warns(UserWarning, match="analytic linear: sizes down to 1e-12 asked, below what the geometry allows"):
@@ -65,14 +65,14 @@ def test_the_commands_warnings_are_python_warnings(annulus):
     (["--analytic", "uniform", "--gradation", "1.2"],
      lambda m: hocav.grade_metric(m, hocav.analytic_metric(m, "uniform"), 1.2)),
 ])
-def test_metric_sources_are_the_commands(tmp_path, annulus, arguments, call):
-    run_cli("metric", annulus, "-o", tmp_path / "m.solb", *arguments)
-    mesh = hocav.read(annulus)
+def test_metric_sources_are_the_commands(tmp_path, ring, arguments, call):
+    run_cli("metric", ring, "-o", tmp_path / "m.solb", *arguments)
+    mesh = hocav.read(ring)
     np.testing.assert_array_equal(call(mesh), hocav.read_metric(tmp_path / "m.solb", mesh))
 
 
-def test_a_hessian_metric_of_a_numpy_field_follows_the_field(annulus):
-    mesh = hocav.read(annulus)
+def test_a_hessian_metric_of_a_numpy_field_follows_the_field(ring):
+    mesh = hocav.read(ring)
     x, y = mesh.points.T
     metric = hocav.hessian_metric(mesh, x * x, complexity=400)  # ∂²/∂x² = 2, the rest 0
     # |H| = diag(2, 0) with its eigenvalues clamped below by 1/h_max², h_max the bounding box's diagonal,

@@ -7,8 +7,8 @@ import hocav
 from conftest import run_cli
 
 
-def test_arrays_are_read_only_views_of_one_storage(annulus):
-    mesh = hocav.read(annulus)
+def test_arrays_are_read_only_views_of_one_storage(ring):
+    mesh = hocav.read(ring)
     points, again = mesh.points, mesh.points
     assert points.shape == (len(points), 2) and points.dtype == np.float64
     assert np.shares_memory(points, again)  # the same storage, no copy per access
@@ -19,8 +19,8 @@ def test_arrays_are_read_only_views_of_one_storage(annulus):
     assert len(mesh.element_refs) == len(mesh.elements) and len(mesh.facet_refs) == len(mesh.facets)
 
 
-def test_a_view_keeps_its_mesh_alive(annulus):
-    points = hocav.read(annulus).points  # the mesh has no other reference
+def test_a_view_keeps_its_mesh_alive(ring):
+    points = hocav.read(ring).points  # the mesh has no other reference
     copy = np.array(points)
     np.testing.assert_array_equal(points, copy)
     assert points.base is not None
@@ -75,8 +75,8 @@ def test_meshio_round_trip_keeps_the_mesh(tmp_path, order):
         np.testing.assert_array_equal(back.edge_nodes, mesh.edge_nodes)
 
 
-def test_meshio_reads_what_hocav_gives_it(tmp_path, annulus):
-    mesh = hocav.read(annulus)
+def test_meshio_reads_what_hocav_gives_it(tmp_path, ring):
+    mesh = hocav.read(ring)
     path = tmp_path / "through-meshio.vtu"
     mesh.to_meshio().write(path)
     read = meshio.read(path)

@@ -1,0 +1,13 @@
+// The module hocav._gmsh: the part of hocav that links gmsh (python/cad_geometry.hpp), imported by
+// hocav._hocav on the first CAD surface only.
+#include <pybind11/pybind11.h>
+
+#include "cad_geometry.hpp"
+
+PYBIND11_MODULE(_gmsh, module) {
+  namespace py = pybind11;
+  using hocav::make_boundary_geometry;
+  static const hocav::python::CadGeometryMakers makers{&make_boundary_geometry<2>, &make_boundary_geometry<3>};
+  module.doc() = "hocav's CAD boundaries, read through gmsh (imported when a surface names a CAD model)";
+  module.attr("cad_geometry_makers") = py::capsule(&makers, hocav::python::kCadGeometryMakersName);
+}
