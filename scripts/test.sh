@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Everything from a fresh Debian machine to a full test run: packages, the optimized build and
-# its tests (unit, end-to-end, third-party readers, ParaView), the same without gmsh, the sanitizer
-# build and its tests, and a bounded fuzzing run of the file readers.
+# Everything from a fresh Debian machine to a full test run: packages, the layout of the C++ files
+# (.clang-format), the optimized build and its tests (unit, end-to-end, third-party readers,
+# ParaView, Python), the same without gmsh, the sanitizer build and its tests, and a bounded fuzzing
+# run of the file readers.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 fuzz_seconds=${HOCAV_FUZZ_SECONDS:-60}
@@ -18,6 +19,9 @@ run_ctest() {
   rm -f "$log"
   return "$status"
 }
+
+echo "== C++ layout (.clang-format; bash scripts/format.sh applies it)"
+bash scripts/check_format.sh
 
 echo "== release build and tests"
 bash scripts/build.sh release
