@@ -142,7 +142,7 @@ AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics,
   check_memory_fits("adapting " + name + " (the metric asks for about " + std::to_string(static_cast<long long>(expected)) +
                         " elements)",
                     expected, kAdaptationBytesPerElement);
-  const auto geometry = job.geometry(input);
+  auto geometry = job.geometry(input);
 
   AdaptationSettings settings;
   settings.max_passes = job.iterations;
@@ -154,6 +154,7 @@ AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics,
   if (job.curving) {
     CurvingOptions curving = *job.curving;
     if (job.before_curving) job.before_curving(mesh, curving);
+    geometry.reset();  // a CAD model is open once at a time (gmsh's one model per thread)
     const auto curving_geometry = job.geometry(mesh);  // of the adapted boundary
     curve_adapted_mesh(adapted, mesh, curving_geometry.get(), curving);
   }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "cli_test_support.hpp"
+#include "gmsh_requirement.hpp"
 
 namespace hocav::cli_test {
 namespace {
@@ -26,6 +27,16 @@ TEST_F(AdaptCli, SquareInTheLinearMetricIsAdaptedThenCurved) {
   EXPECT_GE(report_value("d[\"curving\"][\"normalized_jacobian\"][\"min\"]"), 0.01);
   EXPECT_EQ(stats_json("adapted.meshb", "d[\"consistency\"][\"consistent\"], d[\"order\"], d[\"counts\"][\"corners\"]"), "(True, 2, 4)");
   EXPECT_TRUE(fs::exists(path("adapted.vtu")));
+}
+
+// The CAD model serves the loop's new boundary points, then the curving of the adapted boundary.
+TEST_F(AdaptCli, ACadSurfaceServesTheLoopAndTheCurving) {
+  HOCAV_SKIP_WITHOUT_GMSH();
+  run_ok("generate annulus --h 0.4 -o annulus.meshb --cad-out annulus.step");
+  run_ok("adapt annulus.meshb --analytic uniform --hmax 0.15 --surface cad:annulus.step -o adapted.meshb --report report.json -q");
+  EXPECT_GT(report_value("d[\"output_elements\"]"), 2 * report_value("d[\"input_elements\"]"));
+  EXPECT_GE(report_value("d[\"curving\"][\"normalized_jacobian\"][\"min\"]"), 0.01);
+  EXPECT_EQ(stats_json("adapted.meshb", "d[\"consistency\"][\"consistent\"], d[\"order\"]"), "(True, 2)");
 }
 
 TEST_F(AdaptCli, CubeWithAMetricFileStopsAtOrderOne) {
