@@ -12,6 +12,24 @@ namespace {
 // A pass that splits and collapses fewer than this share of the vertices ends the loop.
 constexpr double kConvergedChange = 1e-3;
 
+// The loop's window (docs/adaptation.md §The loop): while it is open, a collapse may make edges up
+// to kOpenCollapseLength, which the next split cuts; short edges that no collapse within √2 can
+// remove then go. It closes for good when a pass after the busiest one changes more than
+// kStalledChange of the pass before it: what is left is split/collapse ping-pong, and the loop then
+// converges with the closed window's rule (no collapse makes work for the next split).
+constexpr double kOpenCollapseLength = 2.0;
+constexpr double kStalledChange = 0.9;
+
+Index changes(const AdaptationPass& pass) { return pass.splits.done + pass.collapses.done; }
+
+bool stalled(const std::vector<AdaptationPass>& passes) {
+  if (passes.size() < 2) return false;
+  Index busiest = 0;
+  for (std::size_t i = 0; i + 1 < passes.size(); ++i) busiest = std::max(busiest, changes(passes[i]));
+  const Index before = changes(passes[passes.size() - 2]);
+  return before < busiest && static_cast<double>(changes(passes.back())) > kStalledChange * static_cast<double>(before);
+}
+
 // Runs `step` and adds its wall time to `seconds`.
 template <typename Step>
 auto timed(double& seconds, Step step) {
@@ -49,6 +67,7 @@ AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, 
                               const AdaptationSettings& settings) {
   AdaptationMesh<D> am(mesh, metric, geometry, settings.feature_angle_degrees);
   AdaptationLimits limits;
+  limits.collapse_new_length = kOpenCollapseLength;
   limits.cos_feature_angle = std::cos(settings.feature_angle_degrees * std::numbers::pi / 180);
   limits.hausd = settings.hausd;
   ThreadPool pool(std::max(1, settings.threads));
@@ -57,7 +76,8 @@ AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, 
   for (int pass = 1; pass <= settings.max_passes && !run.converged; ++pass) {
     run.passes.push_back(run_pass(am, limits, last_sweep, pool));
     const AdaptationPass& last = run.passes.back();
-    run.converged = last.splits.done + last.collapses.done <= kConvergedChange * last.vertices;
+    run.converged = changes(last) <= kConvergedChange * last.vertices;
+    if (stalled(run.passes)) limits.collapse_new_length = limits.split_length;
     if (settings.progress) settings.progress(pass, settings.max_passes);
   }
   mesh.compact();

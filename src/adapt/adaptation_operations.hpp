@@ -16,6 +16,9 @@ namespace hocav {
 struct AdaptationLimits {
   double split_length = std::sqrt(2.0);         // edges longer are split
   double collapse_length = 1 / std::sqrt(2.0);  // edges shorter are collapsed
+  // A collapse may make edges up to this long: split_length once the loop's window has closed
+  // (docs/adaptation.md §The loop), so that no collapse makes work for the next split.
+  double collapse_new_length = std::sqrt(2.0);
   double cos_feature_angle = 0.7071067811865476;  // cos 45°: boundary changes may turn a facet by less
   double hausd = 0;  // > 0 with a geometry: new boundary facets stay within it
 };
@@ -60,7 +63,7 @@ template <int D>
 OperationCount split_long_edges(AdaptationMesh<D>& mesh, const AdaptationLimits& limits, ThreadPool& pool);
 
 // Collapses edges shorter than collapse_length, shortest first, one end onto the other when the
-// classes allow it and no new edge is longer than split_length. The tests before each plan run on
+// classes allow it and no new edge is longer than collapse_new_length. The tests before each plan run on
 // the pool's threads (the result does not depend on the thread count).
 template <int D>
 OperationCount collapse_short_edges(AdaptationMesh<D>& mesh, const AdaptationLimits& limits, ThreadPool& pool);
