@@ -86,7 +86,8 @@ TEST(AdaptationLoop, SquareInTheLinearMetricBecomesUnit) {
 TEST(AdaptationLoop, CubeInTheLinearMetricBecomesUnit) {
   Mesh<3> mesh = adapt_test::unit_mesh<3>(4);
   const auto ridges_before = mesh.ridges().size();
-  expect_adapted<3>(mesh, linear_metric<3>(0.02), 0.9, 0.75, 0.05);
+  // 96%: the loop's open window (docs/adaptation.md §The loop); 95.4% with collapses kept within √2.
+  expect_adapted<3>(mesh, linear_metric<3>(0.02), 0.96, 0.75, 0.05);
   EXPECT_GT(mesh.ridges().size(), ridges_before);  // the cube's edges, split along them
   // Every ridge stays on a cube edge: two of its coordinates are 0 or 1.
   for (Index l : mesh.ridges())
@@ -167,7 +168,9 @@ TEST(AdaptationLoop, CoarseningAFineMeshInAUniformMetric) {
   Mesh<3> mesh = adapt_test::unit_mesh<3>(8);
   const AdaptationMetric<3> metric = uniform_metric<3>(0.3);
   const Index before = mesh.element_count();
-  expect_adapted<3>(mesh, metric, 0.8, 0.6, 0.1);
+  // Short edges that no collapse within √2 removes go while the loop's window is open
+  // (docs/adaptation.md §The loop): 98.8% unit, 87.4% with the window closed from the start.
+  expect_adapted<3>(mesh, metric, 0.95, 0.8, 0.1);
   EXPECT_LT(mesh.element_count(), before / 4);
 }
 
