@@ -63,8 +63,8 @@ template <int D>
 OperationCount split_long_edges(AdaptationMesh<D>& mesh, const AdaptationLimits& limits, ThreadPool& pool);
 
 // Collapses edges shorter than collapse_length, shortest first, one end onto the other when the
-// classes allow it and no new edge is longer than collapse_new_length. The tests before each plan run on
-// the pool's threads (the result does not depend on the thread count).
+// classes allow it and no new edge is longer than collapse_new_length. The tests before each plan
+// run on the pool's threads (the result does not depend on the thread count).
 template <int D>
 OperationCount collapse_short_edges(AdaptationMesh<D>& mesh, const AdaptationLimits& limits, ThreadPool& pool);
 
