@@ -27,7 +27,8 @@ bool stalled(const std::vector<AdaptationPass>& passes) {
   Index busiest = 0;
   for (std::size_t i = 0; i + 1 < passes.size(); ++i) busiest = std::max(busiest, changes(passes[i]));
   const Index before = changes(passes[passes.size() - 2]);
-  return before < busiest && static_cast<double>(changes(passes.back())) > kStalledChange * static_cast<double>(before);
+  const bool past_the_busiest = before < busiest;
+  return past_the_busiest && static_cast<double>(changes(passes.back())) > kStalledChange * static_cast<double>(before);
 }
 
 // Runs `step` and adds its wall time to `seconds`.
