@@ -2,7 +2,11 @@
 
 #include <gmsh.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
+#include <set>
 #include <numbers>
 
 #include "base/memory_budget.hpp"
@@ -67,6 +71,37 @@ int pocket_tool(double wall) {
   return filleted.front().second;
 }
 
+// The CAD points where three or more surfaces meet: the ends of the model's curves, where the
+// feature lines turn or change curvature (a straight edge running into a fillet's arc).
+std::vector<Vec3> corner_points() {
+  gmsh::vectorpair points;
+  gmsh::model::getEntities(points, 0);
+  std::vector<Vec3> corners;
+  for (const auto& point : points) {
+    std::vector<int> curves, unused, surfaces;
+    gmsh::model::getAdjacencies(0, point.second, curves, unused);
+    std::set<int> around;
+    for (int curve : curves) {
+      gmsh::model::getAdjacencies(1, curve, surfaces, unused);
+      around.insert(surfaces.begin(), surfaces.end());
+    }
+    if (around.size() < 3) continue;
+    std::vector<double> xyz, parametric;
+    gmsh::model::getValue(0, point.second, parametric, xyz);
+    corners.push_back(Vec3{{xyz[0], xyz[1], xyz[2]}});
+  }
+  return corners;
+}
+
+// Lists the mesh vertices at the corner points as Corners (gmsh puts a node on every model point).
+void add_corners(Mesh<3>& mesh, const std::vector<Vec3>& points) {
+  std::map<std::array<double, 3>, Index> vertex_at;
+  for (Index v = 0; v < mesh.vertex_count(); ++v) vertex_at[mesh.vertex(v).c] = v;
+  for (const Vec3& point : points)
+    if (const auto found = vertex_at.find(point.c); found != vertex_at.end()) mesh.corners().push_back(found->second);
+  std::sort(mesh.corners().begin(), mesh.corners().end());
+}
+
 }  // namespace
 
 std::vector<GmshBoundaryEntity> build_machined_part_model(const MachinedPartParameters& p) {
@@ -96,12 +131,15 @@ Mesh<3> generate_machined_part(const MachinedPartParameters& p) {
   check_parameters(p);
   GmshSession session("machined-part");
   const auto boundary = build_machined_part_model(p);
-  call_gmsh([&p] {
+  const std::vector<Vec3> corners = call_gmsh([&p] {
     gmsh::option::setNumber("Mesh.MeshSizeMin", p.size);
     gmsh::option::setNumber("Mesh.MeshSizeMax", p.size);
     gmsh::model::mesh::generate(3);
+    return corner_points();
   });
-  return extract_gmsh_mesh<3>(boundary, 1);
+  Mesh<3> mesh = extract_gmsh_mesh<3>(boundary, 1);
+  add_corners(mesh, corners);
+  return mesh;
 }
 
 void write_machined_part_cad(const MachinedPartParameters& p, const std::string& path) {

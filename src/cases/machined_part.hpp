@@ -7,7 +7,8 @@
 //  - a rectangular pocket whose floor meets its walls through a fillet and whose side walls are
 //    `wall` thick: a thin wall, where elements have all their vertices on the boundary.
 // Built with gmsh's OpenCASCADE kernel and meshed by gmsh with a uniform size; facet refs are the
-// CAD surface tags (what gmsh writes for the model's own meshes).
+// CAD surface tags (what gmsh writes for the model's own meshes), and the CAD points where three or
+// more surfaces meet are listed as Corners (the ends of its feature lines).
 #pragma once
 
 #include <string>

@@ -27,6 +27,12 @@ Vec<D> BoundaryGeometry<D>::project_on_intersection(const Vec<D>& x, int ref_a, 
 }
 
 template <int D>
+Vec<D> BoundaryGeometry<D>::project_on_ridge(const Vec<D>& x, int ref_a, int ref_b) const {
+  if (ref_a != ref_b) return project_on_intersection(x, ref_a, ref_b);
+  return project(x, {.ref = ref_a}).point;
+}
+
+template <int D>
 Vec<D> BoundaryGeometry<D>::propose_edge_node(const BoundaryEdge<D>& edge) const {
   if (edge.refs[0] != edge.refs[1]) return project_on_intersection(edge.node, edge.refs[0], edge.refs[1]);
   return project(edge.node, {.ref = edge.refs[0]}).point;

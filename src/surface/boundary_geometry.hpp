@@ -59,6 +59,13 @@ class BoundaryGeometry {
   // at an angle; a backend that knows the curve does better.
   virtual Vec<D> project_on_intersection(const Vec<D>& x, int ref_a, int ref_b) const;
 
+  // The closest point to x on the feature curve of a ridge edge whose facets have refs ref_a and
+  // ref_b: where a split puts the new vertex of a ridge edge, on the curve the mid nodes follow.
+  // Two refs: this default is project_on_intersection; one ref (a ridge inside one part, from a
+  // dihedral angle or a Ridges tag): the projection onto that part, which has no curve of its own
+  // here. The P3 surrogate answers both from its shared cubic ridge curves (ridge_curves.hpp).
+  virtual Vec<D> project_on_ridge(const Vec<D>& x, int ref_a, int ref_b) const;
+
   // The P2 node proposed for a boundary edge. This default projects the edge's node onto the part
   // of its ref, or onto the meeting curve when its two sides have different refs.
   virtual Vec<D> propose_edge_node(const BoundaryEdge<D>& edge) const;

@@ -1,4 +1,4 @@
-// Feature line tangents (docs/surface.md, "Feature lines").
+// Feature lines (docs/surface.md, "Feature lines").
 #include "surface/feature_lines.hpp"
 
 #include <array>
@@ -31,31 +31,61 @@ Vec3 circle_tangent(const Vec3& p, const Vec3& x, const Vec3& q) {
   return dot(to_p, to_p) * to_q - dot(to_q, to_q) * to_p;
 }
 
+Vec3 unit_or_zero(const Vec3& v) {
+  const double length = norm(v);
+  return length > 0 ? v * (1 / length) : Vec3{};
+}
+
+template <int D>
+std::vector<bool> listed_corners(const Mesh<D>& mesh) {
+  std::vector<bool> listed(static_cast<std::size_t>(mesh.vertex_count()), false);
+  for (const auto* ids : {&mesh.corners(), &mesh.required_vertices()})
+    for (Index v : *ids)
+      if (v >= 0 && v < mesh.vertex_count()) listed[v] = true;
+  return listed;
+}
+
+// Whether a line passes through v: two feature edges, and not an input corner.
+bool passes_through(const FeatureLines<3>& lines, Index v) {
+  return lines.neighbours[v].size() == 2 && !lines.input_corners[v];
+}
+
 }  // namespace
 
 template <int D>
-std::vector<Vec<D>> feature_line_tangents(const Mesh<D>& mesh, [[maybe_unused]] const SurfaceTopology<D>& topology,
-                                          [[maybe_unused]] VertexNormals<D>& normals) {
-  std::vector<Vec<D>> tangents(static_cast<std::size_t>(mesh.vertex_count()), Vec<D>{});
+FeatureLines<D> find_feature_lines(const Mesh<D>& mesh, [[maybe_unused]] const SurfaceTopology<D>& topology,
+                                   [[maybe_unused]] VertexNormals<D>& normals) {
+  FeatureLines<D> lines;
+  lines.tangents.assign(static_cast<std::size_t>(mesh.vertex_count()), Vec<D>{});
+  lines.neighbours.resize(static_cast<std::size_t>(mesh.vertex_count()));
+  lines.input_corners = listed_corners(mesh);
   if constexpr (D == 3) {
-    const auto neighbours = feature_neighbours(mesh, topology, normals);
-    for (Index v = 0; v < mesh.vertex_count(); ++v) {
-      if (neighbours[v].size() != 2) continue;
-      const Vec3 tangent = circle_tangent(mesh.vertex(neighbours[v][0]), mesh.vertex(v), mesh.vertex(neighbours[v][1]));
-      if (norm(tangent) > 0) tangents[v] = tangent * (1 / norm(tangent));
-    }
+    lines.neighbours = feature_neighbours(mesh, topology, normals);
+    for (Index v = 0; v < mesh.vertex_count(); ++v)
+      if (passes_through(lines, v))
+        lines.tangents[v] = unit_or_zero(
+            circle_tangent(mesh.vertex(lines.neighbours[v][0]), mesh.vertex(v), mesh.vertex(lines.neighbours[v][1])));
     for (Index f = 0; f < mesh.facet_count(); ++f)
       for (int i = 0; i < 3; ++i) {
-        const Vec3& tangent = tangents[mesh.facet(f)[i]];
+        const Vec3& tangent = lines.tangents[mesh.facet(f)[i]];
         Vec3& normal = normals.normals[normals.corner_sides[f][i]];
         const Vec3 orthogonal = normal - dot(normal, tangent) * tangent;
         if (norm(orthogonal) > 0) normal = orthogonal * (1 / norm(orthogonal));
       }
   }
-  return tangents;
+  return lines;
 }
 
-template std::vector<Vec2> feature_line_tangents(const Mesh<2>&, const SurfaceTopology<2>&, VertexNormals<2>&);
-template std::vector<Vec3> feature_line_tangents(const Mesh<3>&, const SurfaceTopology<3>&, VertexNormals<3>&);
+Vec3 branch_tangent(const Mesh<3>& mesh, const FeatureLines<3>& lines, Index v, Index w) {
+  const Vec3 chord = mesh.vertex(w) - mesh.vertex(v);
+  if (!passes_through(lines, w)) return unit_or_zero(chord);
+  const auto& beyond = lines.neighbours[w];
+  const Index next = beyond[0] == v ? beyond[1] : beyond[0];
+  const Vec3 tangent = unit_or_zero(circle_tangent(mesh.vertex(w), mesh.vertex(v), mesh.vertex(next)));
+  return dot(tangent, chord) < 0 ? -tangent : tangent;
+}
+
+template FeatureLines<2> find_feature_lines(const Mesh<2>&, const SurfaceTopology<2>&, VertexNormals<2>&);
+template FeatureLines<3> find_feature_lines(const Mesh<3>&, const SurfaceTopology<3>&, VertexNormals<3>&);
 
 }  // namespace hocav

@@ -1,12 +1,16 @@
-// The tangents of the boundary's feature lines (docs/surface.md, "Feature lines"): where the
-// facets around a vertex split into two sides along exactly two edges (a ridge passing through,
-// not a corner), the ridge curve's tangent there comes from the feature line itself — the tangent
-// at the vertex of the circle through it and its two neighbours along the line — rather than from
-// n_A × n_B. That is exact on circular and straight features, and it does not degrade when the two
-// sides' normals are nearly parallel (a shallow ridge, a fillet's tangent edge), where the cross
-// product's direction is lost in their errors. Both sides' normals at the vertex are then made
-// orthogonal to the tangent, so every patch stays tangent to its side's plane (G1 at vertices) and
-// both patches of a ridge edge get the same edge curve (it depends on the line only).
+// The boundary's feature lines (docs/surface.md, "Feature lines"): where the facets around a
+// vertex split into two sides along exactly two edges (a ridge passing through, not a corner), the
+// ridge curve's tangent there comes from the feature line itself — the tangent at the vertex of the
+// circle through it and its two neighbours along the line — rather than from n_A × n_B. That is
+// exact on circular and straight features, and it does not degrade when the two sides' normals are
+// nearly parallel (a shallow ridge, a fillet's tangent edge), where the cross product's direction is
+// lost in their errors. Both sides' normals at the vertex are then made orthogonal to the tangent,
+// so every patch stays tangent to its side's plane (G1 at vertices) and both patches of a ridge edge
+// get the same edge curve (it depends on the line only).
+//
+// The input's corners (Gamma `Corners` and `RequiredVertices`) end the lines through them: no
+// tangent is shared across such a vertex; each ridge edge there leaves it along its own branch
+// (branch_tangent).
 #pragma once
 
 #include <vector>
@@ -17,10 +21,25 @@
 
 namespace hocav {
 
-// Per vertex: the unit tangent of the feature line through it (either orientation), or zero
-// where no feature line passes through exactly (a smooth vertex, a corner, an end). Adjusts the
-// normals of the sides at those vertices as said above. 2D: all zero (features are points).
 template <int D>
-std::vector<Vec<D>> feature_line_tangents(const Mesh<D>& mesh, const SurfaceTopology<D>& topology, VertexNormals<D>& normals);
+struct FeatureLines {
+  // Per vertex: the unit tangent of the line through it (either orientation), or zero where no
+  // line passes through (a smooth vertex, a corner, an end). 2D: all zero (features are points).
+  std::vector<Vec<D>> tangents;
+  // Per vertex: the vertices joined to it by a feature edge (one whose facets are on different sides).
+  std::vector<std::vector<Index>> neighbours;
+  // Per vertex: listed in the input's Corners or RequiredVertices.
+  std::vector<bool> input_corners;
+};
+
+// Finds the lines and adjusts the normals of the sides at their vertices as said above.
+template <int D>
+FeatureLines<D> find_feature_lines(const Mesh<D>& mesh, const SurfaceTopology<D>& topology, VertexNormals<D>& normals);
+
+// The unit tangent at vertex v of the feature line's branch toward its neighbour w, for a line that
+// ends at v: the tangent of the circle through v, w and w's other neighbour when the line passes
+// through w, else the chord toward w. Depends on the line's points only, so both patches of the
+// edge (v, w) get it bit for bit.
+Vec3 branch_tangent(const Mesh<3>& mesh, const FeatureLines<3>& lines, Index v, Index w);
 
 }  // namespace hocav

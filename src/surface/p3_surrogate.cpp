@@ -7,7 +7,6 @@
 #include <string>
 
 #include "base/error.hpp"
-#include "surface/feature_lines.hpp"
 
 namespace hocav {
 namespace {
@@ -23,13 +22,36 @@ Vec<D> unit(const Vec<D>& v) {
   return v * (1 / norm(v));
 }
 
+// The edge curves of the feature edges: their facets' refs differ, or their sides do at an end.
+RidgeCurves ridge_curves_of(const Mesh<3>& mesh, const std::vector<CubicPatch<3>>& patches,
+                            const SurfaceTopology<3>& topology, const VertexNormals<3>& normals) {
+  std::vector<CubicCurve> curves;
+  std::vector<std::array<int, 2>> refs;
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    for (int s = 0; s < 3; ++s) {
+      const Index g = topology.neighbors[f][s];
+      if (g == kNoIndex || g < f) continue;  // each edge once
+      const int e = (s + 1) % 3;             // the patch edge opposite local vertex s
+      const Index first = mesh.facet(f)[kPatchEdges<3>[e][0]], second = mesh.facet(f)[kPatchEdges<3>[e][1]];
+      auto sides_differ = [&](Index v) {
+        return normals.corner_sides[f][facet_local_vertex(mesh, f, v)] !=
+               normals.corner_sides[g][facet_local_vertex(mesh, g, v)];
+      };
+      if (mesh.facet_ref(f) == mesh.facet_ref(g) && !sides_differ(first) && !sides_differ(second)) continue;
+      const CubicPatch<3>& patch = patches[f];
+      curves.push_back({mesh.vertex(first), patch.edge_point(e, 0), patch.edge_point(e, 1), mesh.vertex(second)});
+      refs.push_back({mesh.facet_ref(f), mesh.facet_ref(g)});
+    }
+  return RidgeCurves(std::move(curves), std::move(refs));
+}
+
 }  // namespace
 
 template <int D>
 P3Surrogate<D>::P3Surrogate(const Mesh<D>& mesh, const SurrogateOptions<D>& options)
     : topology_(build_surface_topology(mesh, options.normals.feature_angle_degrees)),
       normals_(compute_vertex_normals(mesh, topology_, options.normals)),
-      feature_tangents_(feature_line_tangents(mesh, topology_, normals_)) {
+      lines_(find_feature_lines(mesh, topology_, normals_)) {
   const Index count = mesh.facet_count();
   patches_.resize(count);
   refs_.resize(count);
@@ -47,6 +69,27 @@ P3Surrogate<D>::P3Surrogate(const Mesh<D>& mesh, const SurrogateOptions<D>& opti
     }
   }
   tree_ = PatchTree<D>(boxes_);
+  if constexpr (D == 3) ridge_curves_ = ridge_curves_of(mesh, patches_, topology_, normals_);
+}
+
+template <int D>
+std::optional<Vec<D>> P3Surrogate<D>::closest_on_ridges(const Vec<D>& x, int ref_a, int ref_b) const {
+  if constexpr (D == 3)
+    return ridge_curves_.closest(x, ref_a, ref_b);
+  else
+    return std::nullopt;
+}
+
+template <int D>
+Vec<D> P3Surrogate<D>::project_on_intersection(const Vec<D>& x, int ref_a, int ref_b) const {
+  if (std::optional<Vec<D>> point = closest_on_ridges(x, ref_a, ref_b)) return *point;
+  return BoundaryGeometry<D>::project_on_intersection(x, ref_a, ref_b);
+}
+
+template <int D>
+Vec<D> P3Surrogate<D>::project_on_ridge(const Vec<D>& x, int ref_a, int ref_b) const {
+  if (std::optional<Vec<D>> point = closest_on_ridges(x, ref_a, ref_b)) return *point;
+  return BoundaryGeometry<D>::project_on_ridge(x, ref_a, ref_b);
 }
 
 template <int D>
@@ -65,9 +108,10 @@ void P3Surrogate<D>::build_patch(const Mesh<D>& mesh, Index f, TangentLength tan
       const int local_in_neighbor = facet_local_vertex(mesh, neighbor, facet[i]);
       if (normals_.corner_sides[neighbor][local_in_neighbor] != normals_.corner_sides[f][i]) {
         // A ridge: the curve follows its feature line where one passes through (feature_lines.hpp),
-        // else (a corner) n_A × n_B; either way in both sides' tangent planes.
-        const Vec3& feature_tangent = feature_tangents_[facet[i]];
+        // its own branch at an input corner, else (a corner) n_A × n_B, in both sides' tangent planes.
+        const Vec3& feature_tangent = lines_.tangents[facet[i]];
         if (norm(feature_tangent) > 0) return tangent_on_line(from, to, feature_tangent);
+        if (lines_.input_corners[facet[i]]) return branch_tangent(mesh, lines_, facet[i], facet[j]);
         const Vec3& other_normal = normals_.at(neighbor, local_in_neighbor);
         const Vec3 ridge = cross(normal, other_normal);
         if (norm(ridge) > kMinRidgeSine) return tangent_on_line(from, to, unit(ridge));

@@ -6,13 +6,18 @@
 // a smooth edge t_i is the edge projected on the tangent plane of n_i; on a ridge edge (3D: its two
 // facets are on different sides at P_i) t_i runs along the feature line through P_i
 // (feature_lines.hpp), or along n_i^A × n_i^B at a corner, so that the edge curve lies in both
-// sides' tangent planes; an edge that does not join exactly two facets stays straight. The
+// sides' tangent planes (at an input corner, Corners or RequiredVertices, along its own branch of the
+// line); an edge that does not join exactly two facets stays straight. The
 // length d is the usual third of the projected edge (docs/method.md §9), b_ij = (2 P_i + P_j − ((P_j − P_i)·n_i) n_i) / 3,
 // or by default the circular-arc length (cubic_patch.hpp: TangentLength), which removes the
 // O(θ⁴) error the third leaves at edge midpoints on curved surfaces. Each edge control
 // point depends only on the edge's two vertices and on normals both facets of the edge share, so
 // the two patches of an edge have the same edge curve (C0 across edges), and every patch at a
 // vertex is tangent to its side's plane there (G1 at vertices).
+//
+// Ridge curves: the edge curves of feature edges (refs or sides differ), kept apart with the refs
+// on their two sides, answer project_on_intersection and project_on_ridge exactly on the curve the
+// proposed mid nodes follow.
 //
 // Projection: candidate patches from a bounding-box tree, Newton with clamping on each
 // (patch_closest_point.hpp), the closest kept. With a hint, the search first walks from the hinted
@@ -27,8 +32,10 @@
 #include "mesh/mesh.hpp"
 #include "surface/boundary_geometry.hpp"
 #include "surface/cubic_patch.hpp"
+#include "surface/feature_lines.hpp"
 #include "surface/patch_closest_point.hpp"
 #include "surface/patch_tree.hpp"
+#include "surface/ridge_curves.hpp"
 #include "surface/surface_topology.hpp"
 #include "surface/vertex_normals.hpp"
 
@@ -49,6 +56,10 @@ class P3Surrogate final : public BoundaryGeometry<D> {
   BoundaryPoint<D> project(const Vec<D>& x, const ProjectionQuery& query = {}) const override;
   // The patch normal at the projection, outward like the facets.
   Vec<D> normal(const Vec<D>& x, const ProjectionQuery& query = {}) const override;
+  // 3D: the closest point on the ridge curves between the two refs (ridge_curves.hpp); the
+  // defaults where none separates them, and in 2D.
+  Vec<D> project_on_intersection(const Vec<D>& x, int ref_a, int ref_b) const override;
+  Vec<D> project_on_ridge(const Vec<D>& x, int ref_a, int ref_b) const override;
   // The midpoint of the surrogate's edge curve when (a, b) is an edge of the surrogate: it lies on
   // the surrogate exactly, ridge edges included. Other edges: the default projection.
   Vec<D> propose_edge_node(const BoundaryEdge<D>& edge) const override;
@@ -70,14 +81,16 @@ class P3Surrogate final : public BoundaryGeometry<D> {
   Closest closest(const Vec<D>& x, const ProjectionQuery& query) const;
   std::optional<Closest> walk_from(Index patch, const Vec<D>& x, const ProjectionQuery& query) const;
   void build_patch(const Mesh<D>& mesh, Index f, TangentLength tangent_length);
+  std::optional<Vec<D>> closest_on_ridges(const Vec<D>& x, int ref_a, int ref_b) const;
 
   std::vector<CubicPatch<D>> patches_;
   std::vector<int> refs_;
   std::vector<Box<D>> boxes_;
   SurfaceTopology<D> topology_;
   VertexNormals<D> normals_;
-  std::vector<Vec<D>> feature_tangents_;  // per vertex, feature_lines.hpp
+  FeatureLines<D> lines_;
   PatchTree<D> tree_;
+  RidgeCurves ridge_curves_;  // 3D
   IndexHashMap edge_patches_;  // mesh edge key -> CubicPatch<D>::kEdges * patch + local edge
 };
 

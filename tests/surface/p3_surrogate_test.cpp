@@ -187,6 +187,22 @@ TEST(SurfaceSurrogate, CubeIsItsFacetsAndItsNormalsSplitAtRidges) {
   EXPECT_GT(max_distance_to_facets(smooth, P3Surrogate<3>(smooth, {.normals = {.feature_angle_degrees = 100}})), 0.01);
 }
 
+// Gamma Edges listed in Ridges are ridges of their own: on a single-ref cube whose dihedral angle
+// the feature angle does not catch, the tagged edges alone split the normals and keep it flat.
+TEST(SurfaceSurrogate, TaggedRidgesSplitTheNormals) {
+  const Mesh<3> cube = generate_cube(3);
+  Mesh<3> tagged = facets_only(cube, 1);
+  for (Index l = 0; l < cube.line_count(); ++l) tagged.add_line(cube.line(l), cube.line_ref(l));
+  tagged.ridges() = cube.ridges();
+  ASSERT_GT(tagged.ridges().size(), 0u);
+  const SurrogateOptions<3> blunt{.normals = {.feature_angle_degrees = 100}};
+  const P3Surrogate<3> surrogate(tagged, blunt);
+  EXPECT_LT(max_distance_to_facets(tagged, surrogate), 1e-15);
+  expect_no_cracks(tagged, surrogate);
+  tagged.ridges().clear();
+  EXPECT_GT(max_distance_to_facets(tagged, P3Surrogate<3>(tagged, blunt)), 0.01);
+}
+
 TEST(SurfaceSurrogate, SquareIsItsSegments) {
   const Mesh<2> square = generate_square(4);
   EXPECT_LT(max_distance_to_facets(square, P3Surrogate<2>(square)), 1e-15);
