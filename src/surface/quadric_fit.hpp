@@ -12,11 +12,27 @@
 
 namespace hocav {
 
-// The unit normal at `point` fitted to `neighbors` (points of the surface near it, `point` itself
-// excluded), oriented like `initial` (unit). Returns `initial` when the points do not determine the
-// fit (too few, or all on a line), or when the fit turns the normal by more than `max_turn_radians`.
 template <int D>
-Vec<D> quadric_fitted_normal(const Vec<D>& point, std::span<const Vec<D>> neighbors, const Vec<D>& initial,
-                             double max_turn_radians);
+struct QuadricNormal {
+  Vec<D> normal{};
+  // The weighted root-mean-square height residual of the fit, in units of the mean neighbour
+  // distance: how well one quadric explains the points (0 on a plane; large across a fold or where
+  // a fillet meets a plane). Infinite when the fit failed.
+  double residual = 0;
+};
+
+// The unit normal at `point` fitted to `neighbors` (points of the surface near it, `point` itself
+// excluded), oriented like `initial` (unit). Returns `initial` with an infinite residual when the
+// points do not determine the fit (too few, or all on a line), or when the fit turns the normal by
+// more than `max_turn_radians`.
+template <int D>
+QuadricNormal<D> quadric_fitted_normal(const Vec<D>& point, std::span<const Vec<D>> neighbors, const Vec<D>& initial,
+                                       double max_turn_radians);
+
+// The same with the slopes only (the plane z = g·x): for neighbourhoods too small for the quadric,
+// exact when the points lie on a plane through `point`.
+template <int D>
+QuadricNormal<D> plane_fitted_normal(const Vec<D>& point, std::span<const Vec<D>> neighbors, const Vec<D>& initial,
+                                     double max_turn_radians);
 
 }  // namespace hocav

@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <string>
 
@@ -26,6 +28,9 @@ namespace {
 
 // Coarse: the 0.03 walls are half an element thick, and the test stays fast (about 5,000 tetrahedra).
 const MachinedPartParameters kCoarse{.size = 0.06, .wall = 0.03};
+// How far below P1's largest boundary error the surrogate's is on the part at h = 0.03 (measured
+// 4.2; issue 17 asks 10, docs/surface.md says what is left).
+constexpr double kSurrogateGain = 4;
 
 double bounding_box_diagonal(const Mesh<3>& mesh) {
   Vec3 low = mesh.vertex(0), high = mesh.vertex(0);
@@ -124,6 +129,46 @@ TEST(MachinedPart, CurvedWithTheCadEveryBoundaryNodeOnItOrHeldByTheFloor) {
       curved_boundary_only += norm(mesh.edge_node(mesh.find_edge(a, b)) - 0.5 * (mesh.vertex(a) + mesh.vertex(b))) > 1e-6;
     }
   EXPECT_GT(curved_boundary_only, 100);
+}
+
+// The largest distance from the CAD surfaces of the refs around each boundary edge (both, for a
+// ridge edge) of its straight midpoint and of the surrogate's edge-curve midpoint.
+struct EdgeErrors {
+  double straight = 0, surrogate = 0;
+};
+
+EdgeErrors largest_edge_errors(const Mesh<3>& mesh, const CadBoundary<3>& cad, const P3Surrogate<3>& surrogate) {
+  std::map<std::uint64_t, std::set<int>> refs_of_edge;
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    for (const auto& ends : kPatchEdges<3>)
+      refs_of_edge[Mesh<3>::edge_key(mesh.facet(f)[ends[0]], mesh.facet(f)[ends[1]])].insert(mesh.facet_ref(f));
+  EdgeErrors largest;
+  for (const auto& [key, refs] : refs_of_edge) {
+    const Index a = static_cast<Index>(key >> 32), b = static_cast<Index>(key & 0xffffffffu);
+    const Vec3 straight = 0.5 * (mesh.vertex(a) + mesh.vertex(b)), curved = *surrogate.edge_midpoint(a, b);
+    for (int ref : refs) {
+      largest.straight = std::max(largest.straight, cad.project(straight, {.ref = ref}).distance);
+      largest.surrogate = std::max(largest.surrogate, cad.project(curved, {.ref = ref}).distance);
+    }
+  }
+  return largest;
+}
+
+// The part of docs/benchmarks.md (h = 0.03, its floor fillets one or two edges wide): the
+// surrogate's mid nodes, measured against the CAD, and the figures docs/surface.md reports.
+TEST(MachinedPart, SurrogateMidNodesAreWellBelowTheStraightOnes) {
+  HOCAV_SKIP_WITHOUT_GMSH();
+  const MachinedPartParameters part{.size = 0.03, .wall = 0.03};
+  const Mesh<3> mesh = generate_machined_part(part);
+  EXPECT_GT(mesh.corners().size(), 20u);  // the CAD points where three surfaces meet
+  const std::string path = (std::filesystem::path(::testing::TempDir()) / "hocav_part_fine.step").string();
+  write_machined_part_cad(part, path);
+  const CadBoundary<3> cad(path, mesh);
+  std::filesystem::remove(path);
+  const EdgeErrors largest = largest_edge_errors(mesh, cad, P3Surrogate<3>(mesh));
+  std::printf("machined part h = 0.03: largest mid-node error P1 %.3e, surrogate %.3e (%.1fx)\n", largest.straight,
+              largest.surrogate, largest.straight / largest.surrogate);
+  EXPECT_GT(largest.straight / largest.surrogate, kSurrogateGain);
 }
 
 TEST(MachinedPart, SurrogateRidgeCurvesAreSharedBitForBitByBothPatches) {
