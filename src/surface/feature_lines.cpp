@@ -2,6 +2,8 @@
 #include "surface/feature_lines.hpp"
 
 #include <array>
+#include <cmath>
+#include <numbers>
 
 namespace hocav {
 namespace {
@@ -45,26 +47,59 @@ std::vector<bool> listed_corners(const Mesh<D>& mesh) {
   return listed;
 }
 
+// A listed corner's branches meeting at more than this from a straight continuation make a turn.
+const double kMaxTurn = 15 * std::numbers::pi / 180;
+
 // Whether a line passes through v: two feature edges, and not an input corner.
 bool passes_through(const FeatureLines<3>& lines, Index v) {
   return lines.neighbours[v].size() == 2 && !lines.input_corners[v];
+}
+
+// Whether the feature line turns at v: two branches whose tangents are more than kMaxTurn from
+// opposite (where more meet, each pair of sides has its own n_A × n_B).
+bool line_turns_at(const Mesh<3>& mesh, const FeatureLines<3>& lines, Index v) {
+  const auto& neighbours = lines.neighbours[v];
+  if (neighbours.size() != 2) return false;
+  return dot(branch_tangent(mesh, lines, v, neighbours[0]), branch_tangent(mesh, lines, v, neighbours[1])) >
+         -std::cos(kMaxTurn);
 }
 
 }  // namespace
 
 template <int D>
 FeatureLines<D> find_feature_lines(const Mesh<D>& mesh, [[maybe_unused]] const SurfaceTopology<D>& topology,
-                                   [[maybe_unused]] VertexNormals<D>& normals) {
+                                   [[maybe_unused]] VertexNormals<D>& normals, [[maybe_unused]] LineTangents rule) {
   FeatureLines<D> lines;
   lines.tangents.assign(static_cast<std::size_t>(mesh.vertex_count()), Vec<D>{});
   lines.neighbours.resize(static_cast<std::size_t>(mesh.vertex_count()));
   lines.input_corners = listed_corners(mesh);
+  lines.turns.assign(static_cast<std::size_t>(mesh.vertex_count()), false);
   if constexpr (D == 3) {
     lines.neighbours = feature_neighbours(mesh, topology, normals);
+    std::vector<std::array<Index, 2>> side_pair(static_cast<std::size_t>(mesh.vertex_count()), {kNoIndex, kNoIndex});
+    for (Index f = 0; f < mesh.facet_count(); ++f)
+      for (int s = 0; s < 3; ++s) {
+        const Index g = topology.neighbors[f][s];
+        if (g == kNoIndex) continue;
+        for (int k = 1; k <= 2; ++k) {
+          const int i = (s + k) % 3;
+          const Index vertex = mesh.facet(f)[i];
+          const Index a = normals.corner_sides[f][i], b = normals.corner_sides[g][facet_local_vertex(mesh, g, vertex)];
+          if (a != b) side_pair[vertex] = {a, b};
+        }
+      }
     for (Index v = 0; v < mesh.vertex_count(); ++v)
-      if (passes_through(lines, v))
+      if (passes_through(lines, v)) {
+        const Vec3 across = side_pair[v][0] == kNoIndex ? Vec3{} : cross(normals.normals[side_pair[v][0]], normals.normals[side_pair[v][1]]);
+        if (rule == LineTangents::kSharpFromNormals && norm(across) > kSharpRidgeSine) {
+          lines.tangents[v] = unit_or_zero(across);
+          continue;
+        }
         lines.tangents[v] = unit_or_zero(
             circle_tangent(mesh.vertex(lines.neighbours[v][0]), mesh.vertex(v), mesh.vertex(lines.neighbours[v][1])));
+      }
+    for (Index v = 0; v < mesh.vertex_count(); ++v)
+      if (lines.input_corners[v]) lines.turns[v] = line_turns_at(mesh, lines, v);
     for (Index f = 0; f < mesh.facet_count(); ++f)
       for (int i = 0; i < 3; ++i) {
         const Vec3& tangent = lines.tangents[mesh.facet(f)[i]];
@@ -85,7 +120,7 @@ Vec3 branch_tangent(const Mesh<3>& mesh, const FeatureLines<3>& lines, Index v, 
   return dot(tangent, chord) < 0 ? -tangent : tangent;
 }
 
-template FeatureLines<2> find_feature_lines(const Mesh<2>&, const SurfaceTopology<2>&, VertexNormals<2>&);
-template FeatureLines<3> find_feature_lines(const Mesh<3>&, const SurfaceTopology<3>&, VertexNormals<3>&);
+template FeatureLines<2> find_feature_lines(const Mesh<2>&, const SurfaceTopology<2>&, VertexNormals<2>&, LineTangents);
+template FeatureLines<3> find_feature_lines(const Mesh<3>&, const SurfaceTopology<3>&, VertexNormals<3>&, LineTangents);
 
 }  // namespace hocav

@@ -111,9 +111,10 @@ void P3Surrogate<D>::build_patch(const Mesh<D>& mesh, Index f, TangentLength tan
         // its own branch at an input corner, else (a corner) n_A × n_B, in both sides' tangent planes.
         const Vec3& feature_tangent = lines_.tangents[facet[i]];
         if (norm(feature_tangent) > 0) return tangent_on_line(from, to, feature_tangent);
-        if (lines_.input_corners[facet[i]]) return branch_tangent(mesh, lines_, facet[i], facet[j]);
         const Vec3& other_normal = normals_.at(neighbor, local_in_neighbor);
         const Vec3 ridge = cross(normal, other_normal);
+        if (lines_.input_corners[facet[i]] && (lines_.turns[facet[i]] || norm(ridge) <= kSharpRidgeSine))
+          return branch_tangent(mesh, lines_, facet[i], facet[j]);
         if (norm(ridge) > kMinRidgeSine) return tangent_on_line(from, to, unit(ridge));
         return tangent_in_plane(from, to, unit(normal + other_normal));
       }

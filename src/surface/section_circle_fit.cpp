@@ -11,6 +11,9 @@ namespace {
 
 // Points whose (x, z) moments are this close to singular lie on a line through the vertex.
 constexpr double kCollinear = 1e-10;
+// The largest root-mean-square distance of the points to the fitted surface, in units of their mean
+// distance to the vertex, for the fit to count.
+constexpr double kMaxResidual = 1e-3;
 
 }  // namespace
 
@@ -32,9 +35,12 @@ std::optional<Vec3> section_circle_normal(const Vec3& point, const Vec3& tangent
   std::array<std::array<double, 4>, 4> matrix{};
   std::array<double, 4> right{};
   std::array<double, 3> moments{};  // xx, xz, zz
-  for (const Vec3& q : neighbors) {
+  auto coordinates = [&](const Vec3& q) {
     const Vec3 offset = (q - point) * scale;
-    const double x = dot(offset, u), y = dot(offset, tangent), z = dot(offset, w);
+    return std::array<double, 3>{dot(offset, u), dot(offset, tangent), dot(offset, w)};
+  };
+  for (const Vec3& q : neighbors) {
+    const auto [x, y, z] = coordinates(q);
     const std::array<double, 4> basis{x, z, y, y * y};
     for (int r = 0; r < 4; ++r) {
       right[r] -= basis[r] * (x * x + z * z);
@@ -51,6 +57,16 @@ std::optional<Vec3> section_circle_normal(const Vec3& point, const Vec3& tangent
   if (determinant > kCollinear * trace * trace) {
     if (!solve_small_system<4>(matrix, right)) return std::nullopt;
     normal = right[0] * u + right[1] * w + right[2] * tangent;  // the gradient at the vertex
+    // The points' distances to the fitted surface, about its value over its gradient there: a
+    // surface the model does not describe (a cylinder across the line, a free-form face) says
+    // nothing reliable.
+    double squares = 0;
+    for (const Vec3& q : neighbors) {
+      const auto [x, y, z] = coordinates(q);
+      const double value = x * x + z * z + right[0] * x + right[1] * z + right[2] * y + right[3] * y * y;
+      squares += value * value;
+    }
+    if (!(std::sqrt(squares / static_cast<double>(neighbors.size())) <= kMaxResidual * norm(normal))) return std::nullopt;
   } else {
     const double angle = 0.5 * std::atan2(2 * moments[1], moments[0] - moments[2]);  // the line's direction
     normal = -std::sin(angle) * u + std::cos(angle) * w;

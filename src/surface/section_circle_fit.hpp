@@ -18,7 +18,8 @@ namespace hocav {
 
 // The unit normal at `point` of the side whose points (the vertex excluded) are `neighbors`, for a
 // feature line of unit tangent `tangent` there, oriented like `initial`; none when the points do
-// not determine it (fewer than kSectionFitPoints, or a singular system).
+// not determine it (fewer than kSectionFitPoints, a singular system) or do not lie on the fitted
+// surface (within a thousandth of their mean distance: the model does not describe them).
 inline constexpr int kSectionFitPoints = 5;
 std::optional<Vec3> section_circle_normal(const Vec3& point, const Vec3& tangent, std::span<const Vec3> neighbors,
                                           const Vec3& initial);

@@ -18,6 +18,9 @@ namespace {
 
 // A fitted normal that turns further than this from the weighted one is a failed fit.
 const double kMaxFitTurn = 30 * std::numbers::pi / 180;
+// Rings of facets around a side for its quadric fit, and for its section fit (a side at a corner
+// may have a single facet; the section fit has four unknowns).
+constexpr int kQuadricRings = 1, kSectionRings = 2;
 // A fit over one ref's points replaces the fit over the whole neighbourhood when its residual is
 // below this share of the whole one's (a smooth surface split by refs stays well below the gain).
 constexpr double kRefFitGain = 0.1;
@@ -90,9 +93,9 @@ VertexNormals<D> weighted_side_normals(const Mesh<D>& mesh, CornerSets& sets, No
   return result;
 }
 
-// The neighbourhood of a side for its quadric fit: the vertices of the side's facets and of the
-// facets next to them on the same side (sharing a normal at a vertex of the side between them), each
-// with the ref of the facet it came from.
+// The neighbourhood of a side: the vertices of the side's facets and of the facets reached from them
+// in `rings` steps across sides that are not ridges there (the two facets share a normal at a
+// vertex of that side), each with the ref of the facet it came from.
 struct RefVertex {
   int ref;
   Index vertex;
@@ -101,24 +104,30 @@ struct RefVertex {
 
 template <int D>
 void gather_neighbourhood(const Mesh<D>& mesh, const SurfaceTopology<D>& topology, const VertexNormals<D>& normals,
-                          std::span<const Index> side_corners, std::vector<RefVertex>& gathered) {
-  gathered.clear();
+                          std::span<const Index> side_corners, int rings, std::vector<Index>& facets,
+                          std::vector<RefVertex>& gathered) {
+  facets.clear();
+  for (Index corner : side_corners) facets.push_back(corner / D);
+  std::size_t layer_begin = 0;
+  for (int ring = 0; ring < rings; ++ring) {
+    const std::size_t layer_end = facets.size();
+    for (std::size_t k = layer_begin; k < layer_end; ++k) {
+      const Index f = facets[k];
+      for (int s = 0; s < D; ++s) {
+        const Index g = topology.neighbors[f][s];
+        if (g == kNoIndex || std::find(facets.begin(), facets.end(), g) != facets.end()) continue;
+        const int i = (s + 1) % D;  // a vertex of side s
+        if (normals.corner_sides[f][i] == normals.corner_sides[g][facet_local_vertex(mesh, g, mesh.facet(f)[i])])
+          facets.push_back(g);
+      }
+    }
+    layer_begin = layer_end;
+  }
   const Index vertex = mesh.facet(side_corners.front() / D)[side_corners.front() % D];
-  auto add_facet_vertices = [&](Index f) {
+  gathered.clear();
+  for (Index f : facets)
     for (Index v : mesh.facet(f))
       if (v != vertex) gathered.push_back({mesh.facet_ref(f), v});
-  };
-  for (Index corner : side_corners) {
-    const Index f = corner / D;
-    add_facet_vertices(f);
-    for (int s = 0; s < D; ++s) {
-      const Index g = topology.neighbors[f][s];
-      if (g == kNoIndex) continue;
-      const int i = (s + 1) % D;  // a vertex of side s
-      if (normals.corner_sides[f][i] == normals.corner_sides[g][facet_local_vertex(mesh, g, mesh.facet(f)[i])])
-        add_facet_vertices(g);
-    }
-  }
   std::sort(gathered.begin(), gathered.end());
   gathered.erase(std::unique(gathered.begin(), gathered.end()), gathered.end());
 }
@@ -165,14 +174,14 @@ template <int D>
 void fit_quadric_normals(const Mesh<D>& mesh, const SurfaceTopology<D>& topology, VertexNormals<D>& normals) {
   const SideCorners rows = side_corners_of(mesh, normals);
   std::vector<RefVertex> gathered;
-  std::vector<Index> vertices;
+  std::vector<Index> facets, vertices;
   std::vector<Vec<D>> points;
   std::vector<int> own_refs;
   for (std::size_t side = 0; side < normals.normals.size(); ++side) {
     const std::span<const Index> side_corners = rows.of(side);
     const Vec<D> point = mesh.vertex(mesh.facet(side_corners.front() / D)[side_corners.front() % D]);
     const Vec<D> initial = normals.normals[side];
-    gather_neighbourhood(mesh, topology, normals, side_corners, gathered);
+    gather_neighbourhood(mesh, topology, normals, side_corners, kQuadricRings, facets, gathered);
     neighbourhood_points(mesh, gathered, std::nullopt, vertices, points);
     QuadricNormal<D> best = quadric_fitted_normal<D>(point, points, initial, kMaxFitTurn);
     const bool several_refs = !gathered.empty() && gathered.front().ref != gathered.back().ref;
@@ -200,7 +209,7 @@ class SectionFits {
   SectionFits(const Mesh<3>& mesh, const SurfaceTopology<3>& topology, const VertexNormals<3>& separate)
       : mesh_(mesh), topology_(topology), separate_(separate), rows_(side_corners_of(mesh, separate)) {
     VertexNormals<3> adjusted = separate;
-    lines_ = find_feature_lines(mesh, topology, adjusted);
+    lines_ = find_feature_lines(mesh, topology, adjusted, LineTangents::kCircle);  // the weighted normals lean
   }
 
   // The normals of sides a and b at vertex v across their ridge edge (v, w): in the normal plane of
@@ -221,7 +230,8 @@ class SectionFits {
 
  private:
   std::optional<Vec3> fit(Index side, Index v, const Vec3& tangent) {
-    gather_neighbourhood(mesh_, topology_, separate_, rows_.of(static_cast<std::size_t>(side)), gathered_);
+    gather_neighbourhood(mesh_, topology_, separate_, rows_.of(static_cast<std::size_t>(side)), kSectionRings, facets_,
+                         gathered_);
     neighbourhood_points(mesh_, gathered_, std::nullopt, vertices_, points_);
     return section_circle_normal(mesh_.vertex(v), tangent, points_, separate_.normals[side]);
   }
@@ -232,7 +242,7 @@ class SectionFits {
   SideCorners rows_;
   FeatureLines<3> lines_;
   std::vector<RefVertex> gathered_;
-  std::vector<Index> vertices_;
+  std::vector<Index> facets_, vertices_;
   std::vector<Vec3> points_;
 };
 

@@ -36,7 +36,7 @@ struct VertexNormalOptions {
   double feature_angle_degrees = 45;
   // Ridges (refs, tags) where the sides' normals differ by less than this are smooth there. Half
   // fans of a smooth surface differ by about h / (curvature radius), hence a margin.
-  double smooth_ridge_angle_degrees = 20;
+  double smooth_ridge_angle_degrees = 15;
   NormalWeights weights = NormalWeights::kAngle;
   // Refine each side's weighted normal by a least-squares quadric (quadric_fit.hpp) through the
   // vertices of its facets and of their neighbours on the same side. Off, the weighted normals err
