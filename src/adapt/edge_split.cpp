@@ -61,13 +61,14 @@ bool holds_required(const Mesh<D>& mesh, const SplitScratch<D>& s) {
 }
 
 // Where the new vertex of a boundary edge goes: on the feature curve its two surfaces share, or
-// on its surface; the straight middle without a geometry (or on a ridge inside one surface).
+// on its surface (a ridge inside one surface: on its curve where the geometry has one); the
+// straight middle without a geometry.
 template <int D>
 Vec<D> point_on_boundary(const AdaptationMesh<D>& am, const Vec<D>& middle, const SplitScratch<D>& s) {
   const BoundaryGeometry<D>* geometry = am.geometry();
   if (!geometry) return middle;
   const int ref_a = am.mesh().facet_ref(s.facets.front()), ref_b = am.mesh().facet_ref(s.facets.back());
-  if (!s.lines.empty()) return ref_a != ref_b ? geometry->project_on_intersection(middle, ref_a, ref_b) : middle;
+  if (!s.lines.empty()) return geometry->project_on_ridge(middle, ref_a, ref_b);
   return geometry->project(middle, {ref_a}).point;
 }
 
