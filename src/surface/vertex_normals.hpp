@@ -2,10 +2,13 @@
 // each surface vertex ... split at ridges/feature edges").
 //
 // The facets around a vertex fall into sides: two facets sharing a side through the vertex that is
-// not a ridge (surface_topology.hpp) are on the same side. Two sides that meet at a ridge with
-// normals less than a smooth-ridge angle apart (a ref boundary or a tagged ridge across a smooth
-// part of the surface) are merged into one: the surface does not fold there, and the ridge rule
-// would need a well-defined tangent n_A × n_B. Each side gets one normal, the weighted
+// not a ridge (surface_topology.hpp) are on the same side. Two sides that meet at a ridge where
+// the surface does not fold (a ref boundary or a tagged ridge across a smooth part, a fillet tangent
+// to a plane) are merged into one, since the ridge rule would need a well-defined tangent n_A × n_B:
+// along a feature line when their normals fitted in the line's normal plane (section_circle_fit.hpp)
+// are within 5°, elsewhere when their weighted normals are within the smooth-ridge angle. With the
+// quadric fit, a side whose neighbourhood spans several refs takes the fit over one ref's points
+// where that explains them far better (docs/surface.md). Each side gets one normal, the weighted
 // mean of its facets' unit normals, or the normal of a given geometry (analytic or CAD) at the
 // vertex when that one agrees with the facets within the feature angle (at a ridge, where the
 // geometry's single normal cannot serve both sides, the facets' normal is kept). Facets of one side
@@ -34,8 +37,9 @@ template <int D>
 struct VertexNormalOptions {
   // Facets meeting at more than this angle are on different sides.
   double feature_angle_degrees = 45;
-  // Ridges (refs, tags) where the sides' normals differ by less than this are smooth there. Half
-  // fans of a smooth surface differ by about h / (curvature radius), hence a margin.
+  // Ridges (refs, tags) where the sides' weighted normals differ by less than this are smooth there
+  // (where no section fit decides). Half fans of a smooth surface differ by about
+  // h / (curvature radius), hence a margin; below the machined part's 20° crease.
   double smooth_ridge_angle_degrees = 15;
   NormalWeights weights = NormalWeights::kAngle;
   // Refine each side's weighted normal by a least-squares quadric (quadric_fit.hpp) through the
