@@ -90,22 +90,20 @@ void report(const MachinedPartParameters& parameters) {
     groups[refs].add(straight, curved, exact_normals, middle, length);
     (refs.size() > 1 ? ridge : face).add(straight, curved, exact_normals, middle, length);
   }
-  std::printf("\nmachined part, h = %g, wall = %g: %d boundary triangles, %zu corners\n\n", parameters.size,
-              parameters.wall, mesh.facet_count(), mesh.corners().size());
+  std::printf("\nmachined part, h = %g, wall = %g: %d boundary triangles, %zu corners\n\n", parameters.size, parameters.wall,
+              mesh.facet_count(), mesh.corners().size());
   std::printf("| edges | count | P1 max | surrogate mean | surrogate max | P1 max / surrogate max | with CAD normals, max |\n");
   std::printf("|---|---|---|---|---|---|---|\n");
   print_row("face", face);
   print_row("ridge", ridge);
   std::vector<std::pair<std::set<int>, Errors>> sorted(groups.begin(), groups.end());
-  std::sort(sorted.begin(), sorted.end(),
-            [](const auto& a, const auto& b) { return a.second.surrogate_max > b.second.surrogate_max; });
+  std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.second.surrogate_max > b.second.surrogate_max; });
   std::printf("\n| refs (CAD surface types) | edges | P1 max | surrogate mean | surrogate max | with CAD normals | at | edge length |\n");
   std::printf("|---|---|---|---|---|---|---|---|\n");
   for (const auto& [refs, errors] : sorted)
-    std::printf("| %s | %d | %.3g | %.3g | %.3g | %.3g | (%.3f, %.3f, %.3f) | %.3f |\n", surface_types(cad, refs).c_str(),
-                errors.count, errors.straight_max, errors.surrogate_sum / errors.count, errors.surrogate_max,
-                errors.exact_normals_max,
-                errors.worst[0], errors.worst[1], errors.worst[2], errors.worst_length);
+    std::printf("| %s | %d | %.3g | %.3g | %.3g | %.3g | (%.3f, %.3f, %.3f) | %.3f |\n", surface_types(cad, refs).c_str(), errors.count,
+                errors.straight_max, errors.surrogate_sum / errors.count, errors.surrogate_max, errors.exact_normals_max, errors.worst[0],
+                errors.worst[1], errors.worst[2], errors.worst_length);
 }
 
 }  // namespace

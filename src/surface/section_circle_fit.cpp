@@ -17,8 +17,7 @@ constexpr double kMaxResidual = 1e-3;
 
 }  // namespace
 
-std::optional<Vec3> section_circle_normal(const Vec3& point, const Vec3& tangent, std::span<const Vec3> neighbors,
-                                          const Vec3& initial) {
+std::optional<Vec3> section_circle_normal(const Vec3& point, const Vec3& tangent, std::span<const Vec3> neighbors, const Vec3& initial) {
   if (static_cast<int>(neighbors.size()) < kSectionFitPoints) return std::nullopt;
   // A frame of the normal plane: w along the initial normal, u across.
   Vec3 w = initial - dot(initial, tangent) * tangent;

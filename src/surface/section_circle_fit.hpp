@@ -21,7 +21,6 @@ namespace hocav {
 // not determine it (fewer than kSectionFitPoints, a singular system) or do not lie on the fitted
 // surface (within a thousandth of their mean distance: the model does not describe them).
 inline constexpr int kSectionFitPoints = 5;
-std::optional<Vec3> section_circle_normal(const Vec3& point, const Vec3& tangent, std::span<const Vec3> neighbors,
-                                          const Vec3& initial);
+std::optional<Vec3> section_circle_normal(const Vec3& point, const Vec3& tangent, std::span<const Vec3> neighbors, const Vec3& initial);
 
 }  // namespace hocav
