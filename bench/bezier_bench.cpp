@@ -20,7 +20,7 @@ Mesh<D> structured_mesh() {
   if constexpr (D == 2)
     return generate_square(24);  // 1152 triangles
   else
-    return generate_cube(6);     // 1296 tetrahedra
+    return generate_cube(6);  // 1296 tetrahedra
 }
 
 // The mesh's elements after moving every edge node by up to `amplitude` × edge length.
@@ -76,16 +76,12 @@ void certify_benchmark(benchmark::State& state, Outcome wanted, double amplitude
   }
   state.SetItemsProcessed(state.iterations());
   state.counters["splits_per_check"] = double(subdivisions) / double(state.iterations());
-  state.counters["ns_per_check"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate |
-                                                                                    benchmark::Counter::kInvert);
+  state.counters["ns_per_check"] = benchmark::Counter(double(state.iterations()),
+                                                      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
-void BM_CertifyTetrahedron(benchmark::State& state, Outcome wanted, double amplitude) {
-  certify_benchmark<3>(state, wanted, amplitude);
-}
-void BM_CertifyTriangle(benchmark::State& state, Outcome wanted, double amplitude) {
-  certify_benchmark<2>(state, wanted, amplitude);
-}
+void BM_CertifyTetrahedron(benchmark::State& state, Outcome wanted, double amplitude) { certify_benchmark<3>(state, wanted, amplitude); }
+void BM_CertifyTriangle(benchmark::State& state, Outcome wanted, double amplitude) { certify_benchmark<2>(state, wanted, amplitude); }
 BENCHMARK_CAPTURE(BM_CertifyTetrahedron, mildly_curved_fast_path, Outcome::kFastPath, 0.1);
 BENCHMARK_CAPTURE(BM_CertifyTetrahedron, certified_after_subdivision, Outcome::kCertifiedAfterSubdivision, 0.35);
 BENCHMARK_CAPTURE(BM_CertifyTetrahedron, rejected_after_subdivision, Outcome::kRejectedAfterSubdivision, 0.35);

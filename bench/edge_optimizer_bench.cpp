@@ -76,9 +76,9 @@ std::vector<MidpointInput<D>> sampled_midpoints(const EdgeCase<D>& c) {
     const auto& edge = c.edges[e];
     const Vec<D> a = mesh.vertex(edge[0]), b = mesh.vertex(edge[1]), node = 0.5 * (a + b);
     const auto sample = c.field.sample(node, c.vertex_element[static_cast<std::size_t>(edge[0])]);
-    inputs.push_back({EdgeLengthFunction<D>(a, b, c.field.vertex_log_metric(edge[0]), c.field.vertex_log_metric(edge[1]),
-                                            default_optimizer_rule()),
-                      node, (1 / norm(b - a)) * (b - a), sample, c.field.log_metric_gradient(sample.where.element)});
+    inputs.push_back(
+        {EdgeLengthFunction<D>(a, b, c.field.vertex_log_metric(edge[0]), c.field.vertex_log_metric(edge[1]), default_optimizer_rule()),
+         node, (1 / norm(b - a)) * (b - a), sample, c.field.log_metric_gradient(sample.where.element)});
   }
   return inputs;
 }
@@ -148,9 +148,9 @@ void BM_LocalizeOutside(benchmark::State& state) {
   const std::array<std::array<double, D>, 3> spots = [] {
     std::array<std::array<double, D>, 3> s{};
     for (int i = 0; i < D; ++i) {
-      s[0][i] = 1.0 / D;                              // centroid
-      s[1][i] = i == 0 ? 0.9 : 0.1 / (D - 1);         // near a corner
-      s[2][i] = i == D - 1 ? 0.02 : 0.98 / (D - 1);   // near an edge (in 2D, near the other corner)
+      s[0][i] = 1.0 / D;                             // centroid
+      s[1][i] = i == 0 ? 0.9 : 0.1 / (D - 1);        // near a corner
+      s[2][i] = i == D - 1 ? 0.02 : 0.98 / (D - 1);  // near an edge (in 2D, near the other corner)
     }
     return s;
   }();
@@ -200,9 +200,8 @@ void BM_EdgeLengthEvaluate(benchmark::State& state) {
   std::size_t next = 0, visit = 0;
   for (auto _ : state) {
     const MidpointInput<D>& input = inputs[next];
-    benchmark::DoNotOptimize(input.function.evaluate(
-        input.node, visit % 2 == 0 ? input.sample.log_metric : input.sample.log_metric + shift,
-        input.log_metric_gradient, order));
+    benchmark::DoNotOptimize(input.function.evaluate(input.node, visit % 2 == 0 ? input.sample.log_metric : input.sample.log_metric + shift,
+                                                     input.log_metric_gradient, order));
     next = (next + 1) % inputs.size();
     if (next == 0) ++visit;
   }
@@ -224,8 +223,7 @@ void BM_KinkDescent(benchmark::State& state) {
   std::vector<Input> inputs;
   for (const MidpointInput<D>& m : sampled_midpoints(c))
     inputs.push_back({m.sample.where, m.edge_direction,
-                      m.function.evaluate(m.node, m.sample.log_metric, m.log_metric_gradient,
-                                          EdgeLengthFunction<D>::Order::kGradient)});
+                      m.function.evaluate(m.node, m.sample.log_metric, m.log_metric_gradient, EdgeLengthFunction<D>::Order::kGradient)});
   std::size_t next = 0;
   for (auto _ : state) {
     const Input& input = inputs[next];

@@ -99,8 +99,7 @@ BENCHMARK_TEMPLATE(BM_ExpAndLengthGradientInDDirections, 3);
 template <int D>
 void BM_ExpSecondDerivative(benchmark::State& state) {
   std::vector<SymMat<D>> directions = log_metric_pool<D>();
-  run_over_pool<D>(state, log_metric_pool<D>(),
-                   [&](const SymMat<D>& t) { return d2exp(t, directions[0], directions[1]); });
+  run_over_pool<D>(state, log_metric_pool<D>(), [&](const SymMat<D>& t) { return d2exp(t, directions[0], directions[1]); });
 }
 BENCHMARK_TEMPLATE(BM_ExpSecondDerivative, 2);
 BENCHMARK_TEMPLATE(BM_ExpSecondDerivative, 3);

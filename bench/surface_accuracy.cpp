@@ -70,12 +70,10 @@ ShellBoundaries mesh_shell_boundary(double h) {
         facet[i] = slot->second;
       }
       // gmsh's tri6 mid nodes are on edges (0,1), (1,2), (2,0).
-      std::array<Vec3, 3> middles{node_point.at(nodes[first + 3]), node_point.at(nodes[first + 4]),
-                                  node_point.at(nodes[first + 5])};
+      std::array<Vec3, 3> middles{node_point.at(nodes[first + 3]), node_point.at(nodes[first + 4]), node_point.at(nodes[first + 5])};
       // Outward from the shell: toward the centre on the inner sphere, away from it on the outer.
       const Vec3& p0 = result.straight.vertex(facet[0]);
-      const double outward =
-          dot(cross(result.straight.vertex(facet[1]) - p0, result.straight.vertex(facet[2]) - p0), p0);
+      const double outward = dot(cross(result.straight.vertex(facet[1]) - p0, result.straight.vertex(facet[2]) - p0), p0);
       if ((ref == 1) == (outward > 0)) {
         std::swap(facet[1], facet[2]);
         middles = {middles[2], middles[1], middles[0]};
@@ -86,8 +84,7 @@ ShellBoundaries mesh_shell_boundary(double h) {
   result.gmsh_p2 = result.straight;
   result.gmsh_p2.make_p2();
   for (const auto& [facet, middles] : mid_nodes)
-    for (int e = 0; e < 3; ++e)
-      result.gmsh_p2.edge_node(result.gmsh_p2.find_edge(facet[e], facet[(e + 1) % 3])) = middles[e];
+    for (int e = 0; e < 3; ++e) result.gmsh_p2.edge_node(result.gmsh_p2.find_edge(facet[e], facet[(e + 1) % 3])) = middles[e];
   return result;
 }
 
@@ -113,8 +110,7 @@ struct Row {
   double boundary = 0, nodes = 0;
 };
 
-Row curved_with(const std::string& name, const Mesh<3>& straight, const BoundaryGeometry<3>& spheres,
-                const BoundaryGeometry<3>& geometry) {
+Row curved_with(const std::string& name, const Mesh<3>& straight, const BoundaryGeometry<3>& spheres, const BoundaryGeometry<3>& geometry) {
   BoundaryProposals<3> proposals(straight, geometry);
   Mesh<3> curved = straight;
   apply_boundary_proposals(curved, proposals);
@@ -132,10 +128,9 @@ void report(double h) {
   const VertexNormalOptions<3> angle{.quadric_fit = false}, exact{.normal_source = &spheres};
   rows.push_back(curved_with("surrogate, thirds, angle-weighted normals (the usual rule)", straight, spheres,
                              surrogate({.normals = angle, .tangent_length = kThird})));
-  rows.push_back(curved_with("surrogate, thirds, exact normals", straight, spheres,
-                             surrogate({.normals = exact, .tangent_length = kThird})));
   rows.push_back(
-      curved_with("surrogate, arcs, angle-weighted normals", straight, spheres, surrogate({.normals = angle})));
+      curved_with("surrogate, thirds, exact normals", straight, spheres, surrogate({.normals = exact, .tangent_length = kThird})));
+  rows.push_back(curved_with("surrogate, arcs, angle-weighted normals", straight, spheres, surrogate({.normals = angle})));
   rows.push_back(curved_with("surrogate, arcs, area-weighted normals", straight, spheres,
                              surrogate({.normals = {.weights = NormalWeights::kArea, .quadric_fit = false}})));
   rows.push_back(curved_with("surrogate, arcs, Max-weighted normals", straight, spheres,
@@ -147,14 +142,12 @@ void report(double h) {
                   max_node_distance(shell.gmsh_p2, spheres)});
 
   const double p1 = rows.front().boundary, gmsh = rows.back().boundary;
-  std::printf("\nh = %g: %d boundary triangles, %d boundary vertices\n\n", h, straight.facet_count(),
-              straight.vertex_count());
-  std::printf(
-      "| P2 mid nodes from | max distance to the spheres | P1 / this | this / gmsh P2 | max mid-node distance |\n");
+  std::printf("\nh = %g: %d boundary triangles, %d boundary vertices\n\n", h, straight.facet_count(), straight.vertex_count());
+  std::printf("| P2 mid nodes from | max distance to the spheres | P1 / this | this / gmsh P2 | max mid-node distance |\n");
   std::printf("|---|---|---|---|---|\n");
   for (const Row& row : rows)
-    std::printf("| %s | %.2e | %.0f | %.2f | %s |\n", row.name.c_str(), row.boundary, p1 / row.boundary,
-                row.boundary / gmsh, row.nodes > 0 ? scientific(row.nodes).c_str() : "—");
+    std::printf("| %s | %.2e | %.0f | %.2f | %s |\n", row.name.c_str(), row.boundary, p1 / row.boundary, row.boundary / gmsh,
+                row.nodes > 0 ? scientific(row.nodes).c_str() : "—");
 }
 
 }  // namespace

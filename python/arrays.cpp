@@ -27,8 +27,8 @@ py::array_t<double> array_of_metrics(std::vector<SymMat<D>>&& metrics) {
   auto* owned = new std::vector<SymMat<D>>(std::move(metrics));
   py::capsule owner(owned, [](void* vector) { delete static_cast<std::vector<SymMat<D>>*>(vector); });
   const auto rows = static_cast<py::ssize_t>(owned->size());
-  return py::array_t<double>({rows, static_cast<py::ssize_t>(SymMat<D>::kEntryCount)},
-                             reinterpret_cast<const double*>(owned->data()), owner);
+  return py::array_t<double>({rows, static_cast<py::ssize_t>(SymMat<D>::kEntryCount)}, reinterpret_cast<const double*>(owned->data()),
+                             owner);
 }
 
 template <int D>

@@ -85,8 +85,7 @@ void write_metric(const Path& file, const PyMesh& mesh, const DoubleArray& metri
     const SolutionField rows = metric_rows(m, metric);
     py::gil_scoped_release release;
     const std::string extension = file_extension(path);
-    if (extension != ".sol" && extension != ".solb")
-      throw Error(path + ": a metric is written as .sol or .solb, not '" + extension + "'");
+    if (extension != ".sol" && extension != ".solb") throw Error(path + ": a metric is written as .sol or .solb, not '" + extension + "'");
     write_solution_file(path, {D, rows.count(), {rows}}, meshb_version);
   });
 }
@@ -208,8 +207,7 @@ py::object stats(const PyMesh& mesh, const std::optional<DoubleArray>& metric) {
 void bind_jobs(py::module_& module) {
   module.def("read", &read, py::arg("path"),
              "Reads a .mesh, .meshb or .msh file (2D or 3D, P1 or P2) into a Mesh (`hocav convert`'s reader).");
-  module.def("write", &write, py::arg("path"), py::arg("mesh"), py::kw_only(), py::arg("metric") = py::none(),
-             py::arg("meshb_version") = 0,
+  module.def("write", &write, py::arg("path"), py::arg("mesh"), py::kw_only(), py::arg("metric") = py::none(), py::arg("meshb_version") = 0,
              R"(Writes a mesh as .mesh, .meshb, .msh or .vtu, by the extension (replaced whole or not at all).
 
 A .vtu carries, as `hocav convert` writes it, the Jacobian figures of every element and, given a
@@ -224,8 +222,7 @@ when edge_nodes).)");
   module.def("read_field", &read_field, py::arg("path"), py::arg("mesh"),
              "Reads the first scalar field of a .sol/.solb given with a mesh: one value per vertex.");
   module.def("curve", &curve, py::arg("mesh"), py::arg("metric"), py::kw_only(), py::arg("surface") = "p3",
-             py::arg("jacobian_floor") = 0.01, py::arg("quadrature") = "simpson", py::arg("passes") = 1,
-             py::arg("threads") = py::none(),
+             py::arg("jacobian_floor") = 0.01, py::arg("quadrature") = "simpson", py::arg("passes") = 1, py::arg("threads") = py::none(),
              R"(Curves a mesh in its metric (`hocav curve`): the P2 mesh and the report (a dict, as --report writes it).
 
 metric: one matrix per vertex ((n, 3) in 2D, (n, 6) in 3D). surface: 'p3' (a cubic surrogate of the
@@ -234,9 +231,9 @@ normalized Jacobian above it. quadrature: 'simpson', 'trapezoid' or 'gauss-N'. p
 passes. threads: default every core (the output does not depend on it).)");
   module.def(
       "adapt",
-      [](const PyMesh& mesh, std::optional<DoubleArray> metric, std::optional<std::string> analytic, int order,
-         std::optional<double> hmin, std::optional<double> hmax, std::optional<double> hgrad, std::optional<double> hausd,
-         double angle, std::string surface, double jacobian_floor, int iterations, std::optional<int> threads) {
+      [](const PyMesh& mesh, std::optional<DoubleArray> metric, std::optional<std::string> analytic, int order, std::optional<double> hmin,
+         std::optional<double> hmax, std::optional<double> hgrad, std::optional<double> hausd, double angle, std::string surface,
+         double jacobian_floor, int iterations, std::optional<int> threads) {
         return adapt(mesh, {std::move(metric), std::move(analytic), order, hmin, hmax, hgrad, hausd, angle, std::move(surface),
                             jacobian_floor, iterations, threads});
       },

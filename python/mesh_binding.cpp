@@ -54,9 +54,8 @@ py::array refs(const py::object& self, Refs refs_of) {
 // The P2 nodes: every edge's two vertices, its node, and each element's edges (hocav's local edge order,
 // docs/mesh-model.md, which is VTK's and meshio's). Empty on a P1 mesh.
 py::array edges(const py::object& self) {
-  return visit_mesh(self.cast<const PyMesh&>(), [&self](const auto& m) {
-    return view<Index>(m.edges().data(), m.is_p2() ? m.edges().size() : 0, 2, self);
-  });
+  return visit_mesh(self.cast<const PyMesh&>(),
+                    [&self](const auto& m) { return view<Index>(m.edges().data(), m.is_p2() ? m.edges().size() : 0, 2, self); });
 }
 
 py::array edge_nodes(const py::object& self) {
@@ -82,8 +81,8 @@ int columns(int corners, int order) { return order == 1 ? corners : corners + co
 int order_of(const IntArray& nodes, int corners, const std::string& what) {
   if (nodes.ndim() == 2 && nodes.shape(1) == columns(corners, 1)) return 1;
   if (nodes.ndim() == 2 && nodes.shape(1) == columns(corners, 2)) return 2;
-  throw Error("Mesh: " + what + ": an array of " + std::to_string(columns(corners, 1)) + " (P1) or " +
-              std::to_string(columns(corners, 2)) + " (P2) columns expected");
+  throw Error("Mesh: " + what + ": an array of " + std::to_string(columns(corners, 1)) + " (P1) or " + std::to_string(columns(corners, 2)) +
+              " (P2) columns expected");
 }
 
 std::vector<int> refs_or_zeros(const std::optional<IntArray>& refs, std::size_t count, const std::string& what) {
@@ -148,28 +147,28 @@ error raises hocav.Error. The arrays are copied once into the library's storage.
 
 Its arrays (points, elements, facets, refs, and the P2 edges, edge_nodes and element_edges) are
 read-only views of that storage: no copy. A Mesh never changes: adapt and curve return new ones.)")
-      .def(py::init(&mesh_from_arrays), py::arg("points"), py::arg("elements"), py::arg("facets") = py::none(),
-           py::kw_only(), py::arg("point_refs") = py::none(), py::arg("element_refs") = py::none(),
-           py::arg("facet_refs") = py::none())
-      .def_property_readonly("dimension", [](const PyMesh& mesh) { return dimension_of(mesh.mesh); }, "2 or 3")
-      .def_property_readonly("order", [](const PyMesh& mesh) { return visit_mesh(mesh, [](const auto& m) { return m.order(); }); },
-                             "1 (straight) or 2 (P2 nodes on the edges)")
+      .def(py::init(&mesh_from_arrays), py::arg("points"), py::arg("elements"), py::arg("facets") = py::none(), py::kw_only(),
+           py::arg("point_refs") = py::none(), py::arg("element_refs") = py::none(), py::arg("facet_refs") = py::none())
+      .def_property_readonly(
+          "dimension", [](const PyMesh& mesh) { return dimension_of(mesh.mesh); }, "2 or 3")
+      .def_property_readonly(
+          "order", [](const PyMesh& mesh) { return visit_mesh(mesh, [](const auto& m) { return m.order(); }); },
+          "1 (straight) or 2 (P2 nodes on the edges)")
       .def_property_readonly("points", &points, "(vertices, dimension) float64 view: the element corners")
       .def_property_readonly("elements", &elements, "(elements, dimension + 1) int32 view: corner ids")
       .def_property_readonly("facets", &facets, "(facets, dimension) int32 view: boundary facets' corner ids")
-      .def_property_readonly("point_refs", [](const py::object& self) {
-        return refs(self, [](const auto& m) { return m.vertex_refs(); });
-      }, "(vertices,) int32 view")
-      .def_property_readonly("element_refs", [](const py::object& self) {
-        return refs(self, [](const auto& m) { return m.element_refs(); });
-      }, "(elements,) int32 view")
-      .def_property_readonly("facet_refs", [](const py::object& self) {
-        return refs(self, [](const auto& m) { return m.facet_refs(); });
-      }, "(facets,) int32 view")
+      .def_property_readonly(
+          "point_refs", [](const py::object& self) { return refs(self, [](const auto& m) { return m.vertex_refs(); }); },
+          "(vertices,) int32 view")
+      .def_property_readonly(
+          "element_refs", [](const py::object& self) { return refs(self, [](const auto& m) { return m.element_refs(); }); },
+          "(elements,) int32 view")
+      .def_property_readonly(
+          "facet_refs", [](const py::object& self) { return refs(self, [](const auto& m) { return m.facet_refs(); }); },
+          "(facets,) int32 view")
       .def_property_readonly("edges", &edges, "P2: (edges, 2) int32 view, each edge's vertices (empty for P1)")
       .def_property_readonly("edge_nodes", &edge_nodes, "P2: (edges, dimension) float64 view, each edge's node")
-      .def_property_readonly("element_edges", &element_edges,
-                             "P2: (elements, 3|6) int32 view, each element's edges in VTK's local order")
+      .def_property_readonly("element_edges", &element_edges, "P2: (elements, 3|6) int32 view, each element's edges in VTK's local order")
       .def("__repr__", &representation);
 }
 

@@ -41,10 +41,9 @@ std::array<double, 3> origin_of(const Origin& origin) {
   return point;
 }
 
-py::array_t<double> analytic(const PyMesh& mesh, const std::string& name, std::optional<double> h,
-                             std::optional<double> h_min, std::optional<double> h_max, std::optional<std::string> axis,
-                             std::optional<double> center, std::optional<double> radius, std::optional<double> width,
-                             const Origin& origin) {
+py::array_t<double> analytic(const PyMesh& mesh, const std::string& name, std::optional<double> h, std::optional<double> h_min,
+                             std::optional<double> h_max, std::optional<std::string> axis, std::optional<double> center,
+                             std::optional<double> radius, std::optional<double> width, const Origin& origin) {
   AnalyticMetricSpec spec;
   spec.name = name;
   spec.h = h.value_or(spec.h);
@@ -67,8 +66,7 @@ py::array_t<double> implied(const PyMesh& mesh) {
   return visit_mesh(mesh, [](const auto& m) { return metric_array([&m] { return implied_metric_at_vertices(m); }); });
 }
 
-py::array_t<double> surface(const PyMesh& mesh, double h_normal, double h_tangent, double gradation,
-                            std::optional<double> h_max) {
+py::array_t<double> surface(const PyMesh& mesh, double h_normal, double h_tangent, double gradation, std::optional<double> h_max) {
   return visit_mesh(mesh, [&](const auto& m) {
     return metric_array([&] {
       auto metrics = surface_metric_at_vertices(m, SurfaceSizes{h_normal, h_tangent, h_max.value_or(bounding_box_diagonal(m))});
@@ -80,8 +78,8 @@ py::array_t<double> surface(const PyMesh& mesh, double h_normal, double h_tangen
 
 // The Hessians of a field given at the vertices (an array) or analytic (its name).
 template <int D>
-std::vector<SymMat<D>> hessians_of(const Mesh<D>& mesh, const std::variant<DoubleArray, std::string>& field,
-                                   const Origin& origin, std::optional<double> radius, std::optional<double> width) {
+std::vector<SymMat<D>> hessians_of(const Mesh<D>& mesh, const std::variant<DoubleArray, std::string>& field, const Origin& origin,
+                                   std::optional<double> radius, std::optional<double> width) {
   if (const auto* name = std::get_if<std::string>(&field)) {
     AnalyticFieldSpec spec;
     spec.name = *name;
@@ -99,8 +97,8 @@ std::vector<SymMat<D>> hessians_of(const Mesh<D>& mesh, const std::variant<Doubl
 }
 
 py::array_t<double> hessian(const PyMesh& mesh, const std::variant<DoubleArray, std::string>& field, double complexity,
-                            std::optional<double> norm, std::optional<double> h_min, std::optional<double> h_max,
-                            const Origin& origin, std::optional<double> radius, std::optional<double> width) {
+                            std::optional<double> norm, std::optional<double> h_min, std::optional<double> h_max, const Origin& origin,
+                            std::optional<double> radius, std::optional<double> width) {
   return visit_mesh(mesh, [&](const auto& m) {
     const auto hessians = hessians_of(m, field, origin, radius, width);  // with the GIL: reads the array
     return metric_array([&] {
@@ -149,24 +147,22 @@ double complexity(const PyMesh& mesh, const DoubleArray& metric) {
 
 void bind_metrics(py::module_& module) {
   module.def("analytic_metric", &analytic, py::arg("mesh"), py::arg("name"), py::kw_only(), py::arg("h") = py::none(),
-             py::arg("h_min") = py::none(), py::arg("h_max") = py::none(), py::arg("axis") = py::none(),
-             py::arg("center") = py::none(), py::arg("radius") = py::none(), py::arg("width") = py::none(),
-             py::arg("origin") = py::none(),
+             py::arg("h_min") = py::none(), py::arg("h_max") = py::none(), py::arg("axis") = py::none(), py::arg("center") = py::none(),
+             py::arg("radius") = py::none(), py::arg("width") = py::none(), py::arg("origin") = py::none(),
              R"(An analytic metric at the vertices (`hocav metric --analytic NAME`).
 
 name: one of analytic_metric_names(). h (uniform; default 0.1), h_min, h_max (linear, shear-*;
 defaults 0.001, 0.1), axis ('x', 'y', 'z'; linear), center (linear; 0.5), radius, width, origin
 (shear-*; 0.75, 0.05, the origin). Returns an (n, 3) (2D) or (n, 6) (3D) array.)");
-  module.def("implied_metric", &implied, py::arg("mesh"),
-             "The metric in which the mesh is a unit mesh (`hocav metric --implied`).");
-  module.def("surface_metric", &surface, py::arg("mesh"), py::arg("h_normal"), py::arg("h_tangent"), py::kw_only(),
-             py::arg("gradation"), py::arg("h_max") = py::none(),
+  module.def("implied_metric", &implied, py::arg("mesh"), "The metric in which the mesh is a unit mesh (`hocav metric --implied`).");
+  module.def("surface_metric", &surface, py::arg("mesh"), py::arg("h_normal"), py::arg("h_tangent"), py::kw_only(), py::arg("gradation"),
+             py::arg("h_max") = py::none(),
              R"(Size h_normal along the boundary normals and h_tangent along the boundary, carried into the
 volume by gradation (> 1); interior vertices start at h_max (default the bounding box's diagonal)
 (`hocav metric --surface HN,HT --gradation BETA`).)");
   module.def("hessian_metric", &hessian, py::arg("mesh"), py::arg("field"), py::kw_only(), py::arg("complexity"),
-             py::arg("norm") = py::none(), py::arg("h_min") = py::none(), py::arg("h_max") = py::none(),
-             py::arg("origin") = py::none(), py::arg("radius") = py::none(), py::arg("width") = py::none(),
+             py::arg("norm") = py::none(), py::arg("h_min") = py::none(), py::arg("h_max") = py::none(), py::arg("origin") = py::none(),
+             py::arg("radius") = py::none(), py::arg("width") = py::none(),
              R"(The Lp metric of the Hessian of a field, at a target complexity (about the vertex count)
 (`hocav metric --hessian`).
 

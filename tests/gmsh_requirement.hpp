@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 // Use as the first statement of a test body or fixture SetUp.
-#define HOCAV_SKIP_WITHOUT_GMSH()                                                                   \
-  do {                                                                                              \
+#define HOCAV_SKIP_WITHOUT_GMSH()                                                                      \
+  do {                                                                                                 \
     if (!HOCAV_WITH_GMSH) GTEST_SKIP() << "needs gmsh: this hocav was built with HOCAV_WITH_GMSH=OFF"; \
   } while (false)

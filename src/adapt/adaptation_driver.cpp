@@ -68,8 +68,7 @@ AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric,
 }
 
 template <int D>
-void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGeometry<D>* geometry,
-                        const CurvingOptions& options) {
+void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGeometry<D>* geometry, const CurvingOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   adapted.report.curving = curve_in_metric(mesh, *adapted.field, geometry, options);
   adapted.report.seconds_curve = seconds_since(start);
@@ -115,13 +114,13 @@ void make_job_metric(JobMetric<D>& out, const Mesh<D>& input, std::vector<SymMat
   }
   SizeBounds bounds = job.bounds;
   const double floor = kSmallestRelativeSize * bounding_box_diagonal(input);
-  const double smallest =
-      std::min(bounds.h_min > 0 ? bounds.h_min : 1e300, smallest_size_at_vertices(input, metric_within(out, job, bounds)));
+  const double smallest = std::min(bounds.h_min > 0 ? bounds.h_min : 1e300,
+                                   smallest_size_at_vertices(input, metric_within(out, job, bounds)));
   if (smallest < floor) {
     if (job.warn) {
       std::ostringstream warning;
-      warning << job.metric_name << ": sizes down to " << smallest << " asked, below what the geometry allows; clamped to "
-              << floor << " (1e-6 of the input's diagonal)";
+      warning << job.metric_name << ": sizes down to " << smallest << " asked, below what the geometry allows; clamped to " << floor
+              << " (1e-6 of the input's diagonal)";
       job.warn(warning.str());
     }
     bounds.h_min = std::min(floor, bounds.h_max);
@@ -132,15 +131,13 @@ void make_job_metric(JobMetric<D>& out, const Mesh<D>& input, std::vector<SymMat
 }  // namespace
 
 template <int D>
-AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job,
-                                  const std::string& name) {
+AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job, const std::string& name) {
   mesh.forget_edges();
   const Mesh<D> input = mesh;
   JobMetric<D> metric;
   make_job_metric(metric, input, std::move(metrics), job);
   const double expected = expected_element_count(input, *metric.metric);
-  check_memory_fits("adapting " + name + " (the metric asks for about " + std::to_string(static_cast<long long>(expected)) +
-                        " elements)",
+  check_memory_fits("adapting " + name + " (the metric asks for about " + std::to_string(static_cast<long long>(expected)) + " elements)",
                     expected, kAdaptationBytesPerElement);
   auto geometry = job.geometry(input);
 
@@ -154,7 +151,7 @@ AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics,
   if (job.curving) {
     CurvingOptions curving = *job.curving;
     if (job.before_curving) job.before_curving(mesh, curving);
-    geometry.reset();  // a CAD model is open once at a time (gmsh's one model per thread)
+    geometry.reset();                                  // a CAD model is open once at a time (gmsh's one model per thread)
     const auto curving_geometry = job.geometry(mesh);  // of the adapted boundary
     curve_adapted_mesh(adapted, mesh, curving_geometry.get(), curving);
   }

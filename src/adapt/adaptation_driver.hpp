@@ -31,8 +31,7 @@ AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric,
 // Then curves the adapted `mesh` in `adapted.field` (curve_in_metric; `geometry` is usually made
 // from the adapted mesh) and adds the curving's figures, time and the peak memory to the report.
 template <int D>
-void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGeometry<D>* geometry,
-                        const CurvingOptions& options);
+void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGeometry<D>* geometry, const CurvingOptions& options);
 
 // `hocav adapt`'s job with its options as values (docs/usage.md): the metric set up, the memory
 // checked, the adaptation, then (with `curving`) the curving.
@@ -40,11 +39,11 @@ template <int D>
 struct AdaptationJob {
   std::optional<AnalyticMetricSpec> analytic;  // the metric, evaluated exactly; else the one given per vertex
   SizeBounds bounds;
-  std::optional<double> gradation;  // grades the given metric first
-  std::optional<double> hausd;      // default kRelativeHausd × the input's bounding box diagonal
-  double angle = 45;                // AdaptationSettings::feature_angle_degrees
-  int iterations = 20;              // AdaptationSettings::max_passes
-  int threads = 1;                  // AdaptationSettings::threads
+  std::optional<double> gradation;        // grades the given metric first
+  std::optional<double> hausd;            // default kRelativeHausd × the input's bounding box diagonal
+  double angle = 45;                      // AdaptationSettings::feature_angle_degrees
+  int iterations = 20;                    // AdaptationSettings::max_passes
+  int threads = 1;                        // AdaptationSettings::threads
   std::optional<CurvingOptions> curving;  // order 2
   // The boundary geometry of a mesh (the input's for the adaptation, the adapted one's for the
   // curving); may return null (no geometry).
@@ -60,7 +59,6 @@ struct AdaptationJob {
 // Runs `job` on `mesh` (P1 or P2, whose nodes are dropped), `metrics` the metric at its vertices
 // (empty with an analytic metric). `name` names the mesh in errors (a job too large for the memory).
 template <int D>
-AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job,
-                                  const std::string& name);
+AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job, const std::string& name);
 
 }  // namespace hocav

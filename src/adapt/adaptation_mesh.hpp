@@ -31,8 +31,7 @@ class AdaptationMesh {
   // Takes a mesh with its topology and compacts it; classifies its vertices (feature_angle:
   // boundary sides whose facets' normals differ by more, or whose refs differ, are ridges; 3D ones
   // become feature lines) and evaluates the metric at every vertex.
-  AdaptationMesh(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
-                 double feature_angle_degrees);
+  AdaptationMesh(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry, double feature_angle_degrees);
 
   Mesh<D>& mesh() { return mesh_; }
   const Mesh<D>& mesh() const { return mesh_; }
@@ -81,9 +80,7 @@ class AdaptationMesh {
   // Whether element k was made, or one of its vertices moved, at or after `clock`.
   bool element_changed_since(Index k, int clock) const { return mesh_.element_attribute(element_stamp_attribute_, k) >= clock; }
 
-  double edge_length(Index a, Index b) const {
-    return metric_edge_length<D>(mesh_.vertex(a), mesh_.vertex(b), metric(a), metric(b));
-  }
+  double edge_length(Index a, Index b) const { return metric_edge_length<D>(mesh_.vertex(a), mesh_.vertex(b), metric(a), metric(b)); }
   // The loop's quality (metric_measures.hpp) of any element, and of mesh element k: kept per
   // element (the most read figure of the loop), renewed by every commit and move.
   double quality(const Element& element) const { return quality(element, kNoIndex, {}, {}); }

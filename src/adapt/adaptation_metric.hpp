@@ -12,8 +12,8 @@
 namespace hocav {
 
 struct SizeBounds {
-  double h_min = 0;         // 0: no lower bound on the sizes
-  double h_max = 1e300;     // no upper bound
+  double h_min = 0;      // 0: no lower bound on the sizes
+  double h_max = 1e300;  // no upper bound
 };
 
 template <int D>

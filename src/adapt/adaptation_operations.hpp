@@ -20,17 +20,17 @@ struct AdaptationLimits {
   // (docs/adaptation.md §The loop), so that no collapse makes work for the next split.
   double collapse_new_length = std::sqrt(2.0);
   double cos_feature_angle = 0.7071067811865476;  // cos 45°: boundary changes may turn a facet by less
-  double hausd = 0;  // > 0 with a geometry: new boundary facets stay within it
+  double hausd = 0;                               // > 0 with a geometry: new boundary facets stay within it
 };
 
 // Why a candidate operation was refused.
 enum class Refusal : int {
-  kNone = -1,     // accepted
-  kClasses = 0,   // the vertices' classes forbid it (a corner, a collapse off its surface or line)
-  kTopology,      // the cavity operator refused the star (not star-shaped, a boundary in the way, a flat element)
-  kQuality,       // a new element below the quality floor
-  kLength,        // a new edge outside the length window
-  kGeometry,      // a new boundary facet turned or left the geometry
+  kNone = -1,    // accepted
+  kClasses = 0,  // the vertices' classes forbid it (a corner, a collapse off its surface or line)
+  kTopology,     // the cavity operator refused the star (not star-shaped, a boundary in the way, a flat element)
+  kQuality,      // a new element below the quality floor
+  kLength,       // a new edge outside the length window
+  kGeometry,     // a new boundary facet turned or left the geometry
 };
 inline constexpr int kRefusalKinds = 5;
 const char* to_string(Refusal refusal);
@@ -40,8 +40,10 @@ struct OperationCount {
   std::array<Index, kRefusalKinds> refused{};  // candidates tried and refused, by reason
 
   void add(Refusal outcome) {
-    if (outcome == Refusal::kNone) ++done;
-    else ++refused[static_cast<std::size_t>(outcome)];
+    if (outcome == Refusal::kNone)
+      ++done;
+    else
+      ++refused[static_cast<std::size_t>(outcome)];
   }
   Index refused_total() const {
     Index total = 0;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-
 namespace hocav {
 
 template <int D>
@@ -13,7 +12,8 @@ void facets_through(const Mesh<D>& mesh, std::span<const Index> elements, std::s
       const Index f = mesh.element_face_facet(k, face);
       if (f == kNoIndex) continue;
       const auto& vertices = mesh.facet(f);
-      if (std::all_of(through.begin(), through.end(), [&](Index v) { return std::find(vertices.begin(), vertices.end(), v) != vertices.end(); }) &&
+      if (std::all_of(through.begin(), through.end(),
+                      [&](Index v) { return std::find(vertices.begin(), vertices.end(), v) != vertices.end(); }) &&
           std::find(out.begin(), out.end(), f) == out.end())
         out.push_back(f);
     }
@@ -62,7 +62,8 @@ bool boundary_change_acceptable(const AdaptationMesh<D>& adaptation, const Cavit
                                 double hausd) {
   const Mesh<D>& mesh = adaptation.mesh();
   return std::all_of(plan.new_facets().begin(), plan.new_facets().end(), [&](const auto& facet) {
-    return facet_close<D>(adaptation, facet.vertices, facet.ref, area_normal<D>(mesh, mesh.facet(facet.replaced)), cos_feature_angle, hausd);
+    return facet_close<D>(adaptation, facet.vertices, facet.ref, area_normal<D>(mesh, mesh.facet(facet.replaced)), cos_feature_angle,
+                          hausd);
   });
 }
 

@@ -25,8 +25,7 @@ bool boundary_change_acceptable(const AdaptationMesh<D>& mesh, const CavityOpera
 
 // The same test for a facet of the mesh whose vertices moved: its normal against the one it had.
 template <int D>
-bool facet_stays_close(const AdaptationMesh<D>& mesh, Index facet, const Vec<D>& old_area_normal, double cos_feature_angle,
-                       double hausd);
+bool facet_stays_close(const AdaptationMesh<D>& mesh, Index facet, const Vec<D>& old_area_normal, double cos_feature_angle, double hausd);
 
 // The facet's normal scaled by its measure, outward.
 template <int D>

@@ -33,7 +33,8 @@ std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<D>& am, double boun
       std::sort(bucket_begin, bucket_end);
       for (auto b = bucket_begin; b != bucket_end; ++b)
         if (b == bucket_begin || *b != *(b - 1))
-          if (const double length = am.edge_length(a, *b); longer ? length > bound : length < bound) found[chunk].push_back({length, a, *b});
+          if (const double length = am.edge_length(a, *b); longer ? length > bound : length < bound)
+            found[chunk].push_back({length, a, *b});
     }
   });
   std::vector<EdgeCandidate> candidates;

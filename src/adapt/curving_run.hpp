@@ -26,9 +26,9 @@ CurvingRun curve_with_boundary(Mesh<D>& mesh, const MetricField<D>& field, const
 // The options of `hocav curve` (docs/usage.md).
 struct CurvingOptions {
   QuadratureRule quadrature = default_optimizer_rule();  // of the length the edge optimizer minimizes
-  double jacobian_floor = 0.01;  // every element the operator creates keeps its min normalized Jacobian above
-  int passes = 1;                // reinsertion passes over the volume vertices
-  int threads = 1;               // the output does not depend on it
+  double jacobian_floor = 0.01;                          // every element the operator creates keeps its min normalized Jacobian above
+  int passes = 1;                                        // reinsertion passes over the volume vertices
+  int threads = 1;                                       // the output does not depend on it
   // Called now and then with the fraction of the work done.
   std::function<void(double)> progress;
 };

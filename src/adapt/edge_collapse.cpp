@@ -36,9 +36,8 @@ bool boundary_around(const AdaptationMesh<D>& am, std::span<const Index> ball, I
   if constexpr (D == 3)
     if (from == VertexClass::kRidge) {
       lines_through(am.mesh(), removed, s.lines);
-      return s.lines.size() == 2 && std::any_of(s.lines.begin(), s.lines.end(), [&](Index l) {
-               return am.mesh().line(l)[0] == kept || am.mesh().line(l)[1] == kept;
-             });
+      return s.lines.size() == 2 && std::any_of(s.lines.begin(), s.lines.end(),
+                                                [&](Index l) { return am.mesh().line(l)[0] == kept || am.mesh().line(l)[1] == kept; });
     }
   return true;
 }
@@ -116,7 +115,6 @@ Refusal collapse_edge(AdaptationMesh<D>& am, Index removed, Index kept, const Ad
   return Refusal::kNone;
 }
 
-
 // Chunk by chunk, the pretests of every candidate run on the pool's threads on the mesh as it is
 // at the chunk's start (a clock tick); a candidate's verdict is used while neither end has changed
 // since (docs/adaptation.md §Threads), so the result is the serial one.
@@ -131,9 +129,8 @@ OperationCount collapse_short_edges(AdaptationMesh<D>& am, const AdaptationLimit
     const std::span<const EdgeCandidate> chunk = std::span(candidates).subspan(start, std::min(kCollapseChunk, candidates.size() - start));
     const int chunk_clock = am.tick();
     pretests.resize(chunk.size());
-    run_strided(pool, chunk.size(), 1, [&](std::size_t worker, std::size_t i) {
-      pretests[i] = pretest_both_ways(am, chunk[i], limits, scratch[worker]);
-    });
+    run_strided(pool, chunk.size(), 1,
+                [&](std::size_t worker, std::size_t i) { pretests[i] = pretest_both_ways(am, chunk[i], limits, scratch[worker]); });
     for (std::size_t i = 0; i < chunk.size(); ++i) {
       const EdgeCandidate& c = chunk[i];
       if (mesh.vertex_removed(c.a) || mesh.vertex_removed(c.b) || am.edge_length(c.a, c.b) >= limits.collapse_length) continue;

@@ -107,9 +107,12 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const AdaptationLimi
   Refusal refusal = Refusal::kTopology;
   for (int attempt = 0; attempt < (points[0] == points[1] ? 1 : 2); ++attempt) {
     const Index v = am.add_vertex(points[attempt], new_class, a);
-    if (!plan_split(am, v, s.facets.empty(), options, s)) refusal = Refusal::kTopology;
-    else if (!(worst_planned_quality(am, work.cavity_operator) >= std::min(1e-3, 0.1 * old_worst))) refusal = Refusal::kQuality;
-    else if (!s.facets.empty() && !boundary_change_acceptable(am, work.cavity_operator, limits.cos_feature_angle, 0)) refusal = Refusal::kGeometry;
+    if (!plan_split(am, v, s.facets.empty(), options, s))
+      refusal = Refusal::kTopology;
+    else if (!(worst_planned_quality(am, work.cavity_operator) >= std::min(1e-3, 0.1 * old_worst)))
+      refusal = Refusal::kQuality;
+    else if (!s.facets.empty() && !boundary_change_acceptable(am, work.cavity_operator, limits.cos_feature_angle, 0))
+      refusal = Refusal::kGeometry;
     else {
       am.commit(work.cavity_operator);
       snap_to_nearest(am, v, limits, s);

@@ -68,7 +68,7 @@ struct SwapRound {
   std::vector<Index> keys;
   std::vector<Refusal> gathered;  // per pending candidate: why its cavity could not be gathered
   std::vector<char> unchanged;    // per pending candidate: no element of its cavity changed since the sweep's clock
-  ConflictBatches coloring;  // keys: vertices
+  ConflictBatches coloring;       // keys: vertices
 
   explicit SwapRound(Index vertex_count) : taken(static_cast<std::size_t>(vertex_count), 0), coloring(vertex_count) {}
 };
@@ -220,8 +220,8 @@ Refusal gather_cavity(const Mesh<3>& mesh, const SwapCandidate<3>& candidate, Sw
   Index k = candidate.element;
   if (!still_holds(mesh, k, candidate.vertices)) {
     collect_shell(mesh, a, b, cavity.elements);
-    const auto through_c =
-        std::find_if(cavity.elements.begin(), cavity.elements.end(), [&](Index e) { return local_vertex(mesh, e, c) >= 0; });
+    const auto through_c = std::find_if(cavity.elements.begin(), cavity.elements.end(),
+                                        [&](Index e) { return local_vertex(mesh, e, c) >= 0; });
     if (through_c == cavity.elements.end()) return Refusal::kTopology;
     k = *through_c;
   }
@@ -313,7 +313,8 @@ void swap_all(AdaptationMesh<D>& am, std::span<const SwapCandidate<N>> candidate
       const auto item = static_cast<std::size_t>(pending[i]);
       SwapCavity<D>& cavity = round.cavities[item];
       if (!cavity.current(mesh)) round.gathered[i] = gather(mesh, candidates[item], cavity);
-      round.unchanged[i] = std::none_of(cavity.elements.begin(), cavity.elements.end(), [&](Index k) { return am.element_changed_since(k, since); });
+      round.unchanged[i] = std::none_of(cavity.elements.begin(), cavity.elements.end(),
+                                        [&](Index k) { return am.element_changed_since(k, since); });
     });
     ConflictBatches& coloring = round.coloring;
     coloring.clear();
@@ -348,7 +349,8 @@ OperationCount swap_for_quality(AdaptationMesh<D>& am, const AdaptationLimits& l
   std::vector<SwapCandidate<3>> faces;
   for (Index k = 0; k < mesh.element_count(); ++k) {
     const auto& e = mesh.element(k);
-    if (std::none_of(e.begin(), e.end(), [&](Index v) { return am.changed_since(v, since); }) || am.quality(k) >= swap_quality<D>()) continue;
+    if (std::none_of(e.begin(), e.end(), [&](Index v) { return am.changed_since(v, since); }) || am.quality(k) >= swap_quality<D>())
+      continue;
     for (int i = 0; i <= D; ++i)
       for (int j = 0; j < i; ++j) edges.push_back({{std::min(e[i], e[j]), std::max(e[i], e[j])}, k});
     if constexpr (D == 3)

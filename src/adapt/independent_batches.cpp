@@ -2,8 +2,7 @@
 
 namespace hocav {
 
-std::vector<std::vector<Index>> independent_batches(const VertexGraph& graph, std::span<const Index> vertices,
-                                                    int min_distance) {
+std::vector<std::vector<Index>> independent_batches(const VertexGraph& graph, std::span<const Index> vertices, int min_distance) {
   const auto vertex_count = static_cast<std::size_t>(graph.vertex_count());
   std::vector<int> color(vertex_count, -1);
   std::vector<std::size_t> reached(vertex_count, 0);  // stamp: position + 1 of the search that reached it

@@ -16,7 +16,6 @@ namespace hocav {
 
 // Greedy colouring of `vertices` (in their given order) so that two vertices of one colour are
 // at least `min_distance` edges apart; each colour is one batch, keeping that order. Deterministic.
-std::vector<std::vector<Index>> independent_batches(const VertexGraph& graph, std::span<const Index> vertices,
-                                                    int min_distance);
+std::vector<std::vector<Index>> independent_batches(const VertexGraph& graph, std::span<const Index> vertices, int min_distance);
 
 }  // namespace hocav

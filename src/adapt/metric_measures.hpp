@@ -8,8 +8,8 @@
 #include <array>
 #include <cmath>
 
-#include "geom/sym_mat.hpp"
 #include "geom/barycentric.hpp"
+#include "geom/sym_mat.hpp"
 #include "metric/metric_quality.hpp"
 
 namespace hocav {

@@ -15,8 +15,8 @@ enum class Placement { kFull, kPart, kNone };
 template <int D>
 class EdgeNodeMove {
  public:
-  EdgeNodeMove(Mesh<D>& mesh, const std::vector<Index>& shell, Index edge, const Vec<D>& target,
-               const ProposalCompletionOptions& options, ProposalCompletion& result)
+  EdgeNodeMove(Mesh<D>& mesh, const std::vector<Index>& shell, Index edge, const Vec<D>& target, const ProposalCompletionOptions& options,
+               ProposalCompletion& result)
       : mesh_(mesh), shell_(shell), edge_(edge), start_(mesh.edge_node(edge)), target_(target), options_(options), result_(result) {}
 
   Placement run() {
@@ -53,8 +53,7 @@ class EdgeNodeMove {
 
 // One sweep over the proposals left; returns how many were consumed.
 template <int D>
-Index sweep(Mesh<D>& mesh, BoundaryProposals<D>& proposals, const ProposalCompletionOptions& options,
-            ProposalCompletion& result) {
+Index sweep(Mesh<D>& mesh, BoundaryProposals<D>& proposals, const ProposalCompletionOptions& options, ProposalCompletion& result) {
   std::vector<Index> shell;
   Index consumed = 0;
   result.pulled_back = result.blocked = result.absent = 0;
@@ -89,8 +88,7 @@ Index sweep(Mesh<D>& mesh, BoundaryProposals<D>& proposals, const ProposalComple
 }  // namespace
 
 template <int D>
-ProposalCompletion complete_boundary_proposals(Mesh<D>& mesh, BoundaryProposals<D>& proposals,
-                                               const ProposalCompletionOptions& options) {
+ProposalCompletion complete_boundary_proposals(Mesh<D>& mesh, BoundaryProposals<D>& proposals, const ProposalCompletionOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   ProposalCompletion result;
   while (result.sweeps < options.max_sweeps && proposals.size() > 0) {

@@ -33,7 +33,6 @@ struct ProposalCompletionOptions {
 
 // The mesh must be P2 with its topology and its elements above the floor (a curving's output).
 template <int D>
-ProposalCompletion complete_boundary_proposals(Mesh<D>& mesh, BoundaryProposals<D>& proposals,
-                                               const ProposalCompletionOptions& options);
+ProposalCompletion complete_boundary_proposals(Mesh<D>& mesh, BoundaryProposals<D>& proposals, const ProposalCompletionOptions& options);
 
 }  // namespace hocav

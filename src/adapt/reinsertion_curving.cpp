@@ -5,9 +5,9 @@
 
 #include "adapt/independent_batches.hpp"
 #include "base/error.hpp"
+#include "base/thread_pool.hpp"
 #include "bezier/jacobian_bounds.hpp"
 #include "bezier/p2_element.hpp"
-#include "base/thread_pool.hpp"
 #include "mesh/ball_and_shell.hpp"
 #include "mesh/boundary_vertices.hpp"
 #include "mesh/vertex_graph.hpp"
@@ -53,8 +53,8 @@ template <int D>
 ReinsertionResult curve_by_reinsertion(Mesh<D>& mesh, const MetricField<D>& field, BoundaryNodeSource<D>* boundary,
                                        const ReinsertionOptions& options) {
   if (field.back_mesh().vertex_count() != mesh.vertex_count())
-    throw Error("curving: the metric's back mesh has " + std::to_string(field.back_mesh().vertex_count()) +
-                " vertices, the mesh " + std::to_string(mesh.vertex_count()));
+    throw Error("curving: the metric's back mesh has " + std::to_string(field.back_mesh().vertex_count()) + " vertices, the mesh " +
+                std::to_string(mesh.vertex_count()));
   if (!mesh.has_topology()) mesh.build_topology();
   if (!mesh.is_p2()) mesh.make_p2();
   // The time counts everything from here: the metric at the front vertices, the batches, the passes.
@@ -73,12 +73,11 @@ ReinsertionResult curve_by_reinsertion(Mesh<D>& mesh, const MetricField<D>& fiel
   OptimizedEdgeMarks optimized_edges;
   P2CavityOptions cavity_options = options.cavity;
   if (options.reuse_results)
-    cavity_options.every_element_above_floor =
-        every_element_above_floor(mesh, cavity_options.jacobian_floor, pool, result.counters);
+    cavity_options.every_element_above_floor = every_element_above_floor(mesh, cavity_options.jacobian_floor, pool, result.counters);
   std::vector<std::unique_ptr<P2CavityOperator<D>>> operators;
   for (std::size_t i = 0; i < kCavitiesPerRound; ++i)
-    operators.push_back(std::make_unique<P2CavityOperator<D>>(
-        field, log_metrics, hints, options.reuse_results ? &optimized_edges : nullptr, boundary, cavity_options));
+    operators.push_back(std::make_unique<P2CavityOperator<D>>(field, log_metrics, hints, options.reuse_results ? &optimized_edges : nullptr,
+                                                              boundary, cavity_options));
   std::vector<std::vector<Index>> balls(kCavitiesPerRound);
   std::vector<CavityStatus> statuses(kCavitiesPerRound);
 
@@ -111,9 +110,7 @@ ReinsertionResult curve_by_reinsertion(Mesh<D>& mesh, const MetricField<D>& fiel
 
 template std::vector<Index> volume_vertices(const Mesh<2>&);
 template std::vector<Index> volume_vertices(const Mesh<3>&);
-template ReinsertionResult curve_by_reinsertion(Mesh<2>&, const MetricField<2>&, BoundaryNodeSource<2>*,
-                                                const ReinsertionOptions&);
-template ReinsertionResult curve_by_reinsertion(Mesh<3>&, const MetricField<3>&, BoundaryNodeSource<3>*,
-                                                const ReinsertionOptions&);
+template ReinsertionResult curve_by_reinsertion(Mesh<2>&, const MetricField<2>&, BoundaryNodeSource<2>*, const ReinsertionOptions&);
+template ReinsertionResult curve_by_reinsertion(Mesh<3>&, const MetricField<3>&, BoundaryNodeSource<3>*, const ReinsertionOptions&);
 
 }  // namespace hocav

@@ -30,7 +30,7 @@ struct ReinsertionOptions {
 
 struct ReinsertionResult {
   P2CavityCounters counters;
-  double seconds = 0;          // the passes and their set-up (batches), no I/O, no topology
+  double seconds = 0;  // the passes and their set-up (batches), no I/O, no topology
   Index vertices_reinserted = 0;
 };
 

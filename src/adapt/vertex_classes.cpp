@@ -30,8 +30,10 @@ void classify_features(Mesh<3>& mesh, const SurfaceTopology<3>& surface, std::ve
   for (Index l = 0; l < mesh.line_count(); ++l)
     for (Index v : mesh.line(l)) ++line_edges[v];
   for (Index v = 0; v < mesh.vertex_count(); ++v) {
-    if (line_edges[v] == 2 && classes[v] != VertexClass::kCorner) classes[v] = VertexClass::kRidge;
-    else if (line_edges[v] > 0) tag_corner(mesh.corners(), classes, v);
+    if (line_edges[v] == 2 && classes[v] != VertexClass::kCorner)
+      classes[v] = VertexClass::kRidge;
+    else if (line_edges[v] > 0)
+      tag_corner(mesh.corners(), classes, v);
   }
 }
 

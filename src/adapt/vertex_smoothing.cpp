@@ -81,7 +81,8 @@ bool move_passes(const AdaptationMesh<D>& am, Index v, const Vec<D>& x, const Sy
 // Tries to move v (its ball: `ball`); changes only v, its metric and its ball's kept qualities, so
 // vertices whose balls share no element may be tried at the same time.
 template <int D>
-bool smooth_vertex(AdaptationMesh<D>& am, Index v, std::span<const Index> ball, SmoothingScratch<D>& scratch, const AdaptationLimits& limits) {
+bool smooth_vertex(AdaptationMesh<D>& am, Index v, std::span<const Index> ball, SmoothingScratch<D>& scratch,
+                   const AdaptationLimits& limits) {
   if (ball.empty()) return false;
   scratch.elements.clear();
   for (Index k : ball) scratch.elements.push_back(am.mesh().element(k));
@@ -118,7 +119,8 @@ struct SmoothingCandidates {
   std::vector<Index> vertices, ball_start, balls;  // ball i: balls[ball_start[i] .. ball_start[i + 1])
 
   std::span<const Index> ball(std::size_t i) const {
-    return std::span<const Index>(balls).subspan(static_cast<std::size_t>(ball_start[i]), static_cast<std::size_t>(ball_start[i + 1] - ball_start[i]));
+    return std::span<const Index>(balls).subspan(static_cast<std::size_t>(ball_start[i]),
+                                                 static_cast<std::size_t>(ball_start[i + 1] - ball_start[i]));
   }
 };
 

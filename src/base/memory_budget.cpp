@@ -25,9 +25,7 @@ std::string count_text(double count) {
 
 }  // namespace
 
-double physical_memory_bytes() {
-  return static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGE_SIZE));
-}
+double physical_memory_bytes() { return static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGE_SIZE)); }
 
 void check_memory_fits(const std::string& job, double elements, double bytes_per_element) {
   if (elements > static_cast<double>(std::numeric_limits<Index>::max()))
@@ -35,8 +33,8 @@ void check_memory_fits(const std::string& job, double elements, double bytes_per
                 count_text(static_cast<double>(std::numeric_limits<Index>::max())) + " hocav can index");
   const double needed = elements * bytes_per_element, available = physical_memory_bytes();
   if (needed > available)
-    throw Error(job + ": about " + count_text(elements) + " elements would need about " + gigabytes(needed) +
-                ", more than the " + gigabytes(available) + " of this machine");
+    throw Error(job + ": about " + count_text(elements) + " elements would need about " + gigabytes(needed) + ", more than the " +
+                gigabytes(available) + " of this machine");
 }
 
 }  // namespace hocav

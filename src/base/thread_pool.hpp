@@ -52,8 +52,10 @@ void run_strided(ThreadPool& pool, std::size_t count, std::size_t serial_below, 
   const auto run_worker = [&](std::size_t worker) {
     for (std::size_t i = worker; i < count; i += workers) work(worker, i);
   };
-  if (workers == 1) run_worker(0);
-  else pool.run(workers, run_worker);
+  if (workers == 1)
+    run_worker(0);
+  else
+    pool.run(workers, run_worker);
 }
 
 }  // namespace hocav

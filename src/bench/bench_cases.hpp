@@ -22,8 +22,8 @@ struct BenchCase {
   // The generator's options that give about `target` elements.
   std::function<CaseValues(double target)> options_for_target;
   BenchMetric metric;
-  std::string surface;       // boundary curvature, as `hocav curve --surface`
-  double largest_target;     // sizes above are skipped (the generator would take too long)
+  std::string surface;    // boundary curvature, as `hocav curve --surface`
+  double largest_target;  // sizes above are skipped (the generator would take too long)
   std::string description;
 };
 

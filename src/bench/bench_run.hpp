@@ -11,8 +11,8 @@ namespace hocav {
 
 struct BenchRunOptions {
   int threads = 1;
-  int repeat = 3;                       // runs when the first one is short
-  double repeat_below_seconds = 10;     // a first run at least this long is not repeated
+  int repeat = 3;                    // runs when the first one is short
+  double repeat_below_seconds = 10;  // a first run at least this long is not repeated
 };
 
 // Throws Error (with the child's message) when the case fails.

@@ -6,8 +6,7 @@ namespace {
 
 template <int D>
 using SubdivisionMatrices =
-    std::array<std::array<std::array<double, kJacobianCoefficientCount<D>>, kJacobianCoefficientCount<D>>,
-               kSubdivisionChildCount<D>>;
+    std::array<std::array<std::array<double, kJacobianCoefficientCount<D>>, kJacobianCoefficientCount<D>>, kSubdivisionChildCount<D>>;
 
 // matrices[child][β][α]: weight of parent coefficient α in child coefficient β. The blossom of B_α
 // at the points (u_1, …, u_D) is Σ Π_m u_m[i_m] over the index sequences (i_1, …, i_D) whose

@@ -28,10 +28,8 @@ using SubdivisionChildVertices = std::array<std::array<ParentVertexPair, D + 1>,
 template <int D>
 inline constexpr SubdivisionChildVertices<D> kSubdivisionChildVertices = [] {
   if constexpr (D == 2)
-    return SubdivisionChildVertices<2>{{{{{0, 0}, {0, 1}, {0, 2}}},
-                                        {{{0, 1}, {1, 1}, {1, 2}}},
-                                        {{{0, 2}, {1, 2}, {2, 2}}},
-                                        {{{1, 2}, {0, 2}, {0, 1}}}}};
+    return SubdivisionChildVertices<2>{
+        {{{{0, 0}, {0, 1}, {0, 2}}}, {{{0, 1}, {1, 1}, {1, 2}}}, {{{0, 2}, {1, 2}, {2, 2}}}, {{{1, 2}, {0, 2}, {0, 1}}}}};
   else
     return SubdivisionChildVertices<3>{{{{{0, 0}, {0, 1}, {0, 2}, {0, 3}}},
                                         {{{0, 1}, {1, 1}, {1, 2}, {1, 3}}},

@@ -103,22 +103,19 @@ JacobianCertificate certify_bernstein_above(const JacobianCoefficients<D>& coeff
 }
 
 template <int D>
-JacobianCertificate certify_min_normalized_jacobian(const P2Element<D>& element, double floor,
-                                                    const SubdivisionLimits& limits) {
+JacobianCertificate certify_min_normalized_jacobian(const P2Element<D>& element, double floor, const SubdivisionLimits& limits) {
   const ElementJacobian<D> jacobian = element_jacobian(element);
   // Compare J with floor·|J_straight| rather than dividing: no division, and a flat straight element
   // (|J_straight| = 0, normalized J infinite) simply asks for J > 0. The rounding margin keeps a
   // computed coefficient that is only positive by rounding from certifying anything.
   const double threshold = floor * std::abs(jacobian.straight_jacobian) + jacobian.rounding_margin;
   const auto& coefficients = jacobian.coefficients;
-  if (std::all_of(coefficients.begin(), coefficients.end(), [&](double c) { return c > threshold; }))
-    return {true, true, 0};
+  if (std::all_of(coefficients.begin(), coefficients.end(), [&](double c) { return c > threshold; })) return {true, true, 0};
   return certify_bernstein_above<D>(coefficients, threshold, limits);
 }
 
 template <int D>
-MinimumBounds bound_bernstein_minimum(const JacobianCoefficients<D>& coefficients, double tolerance,
-                                      const SubdivisionLimits& limits) {
+MinimumBounds bound_bernstein_minimum(const JacobianCoefficients<D>& coefficients, double tolerance, const SubdivisionLimits& limits) {
   MinimumBounds bounds{kInfinity, min_corner<D>(coefficients), false, 0};
   auto visit = [&](const JacobianCoefficients<D>& c, double minimum, bool can_split) {
     bounds.upper = std::min(bounds.upper, min_corner<D>(c));
@@ -140,16 +137,14 @@ JacobianRange normalized_jacobian_range(const P2Element<D>& element, const Refin
   const JacobianRange range = jacobian_range<D>(jacobian.coefficients, options);
   const double straight = jacobian.straight_jacobian;
   return {normalize_jacobian(range.min_lower, straight), normalize_jacobian(range.min_upper, straight),
-          normalize_jacobian(range.max_lower, straight), normalize_jacobian(range.max_upper, straight),
-          range.converged};
+          normalize_jacobian(range.max_lower, straight), normalize_jacobian(range.max_upper, straight), range.converged};
 }
 
 template <int D>
 JacobianQuality jacobian_quality(const P2Element<D>& element, const RefinementOptions& options) {
   const ElementJacobian<D> jacobian = element_jacobian(element);
   const JacobianRange range = jacobian_range<D>(jacobian.coefficients, options);
-  return {normalize_jacobian(range.min_lower, jacobian.straight_jacobian),
-          scaled_jacobian(range.min_lower, range.max_upper)};
+  return {normalize_jacobian(range.min_lower, jacobian.straight_jacobian), scaled_jacobian(range.min_lower, range.max_upper)};
 }
 
 double scaled_jacobian(double min_lower, double max_upper) {

@@ -40,19 +40,17 @@ JacobianCertificate certify_bernstein_above(const JacobianCoefficients<D>& coeff
 // Is J / |J_straight| > floor on the whole element? Tested as J > floor·|J_straight| + rounding margin.
 // Fast path: all coefficients above the threshold, no subdivision.
 template <int D>
-JacobianCertificate certify_min_normalized_jacobian(const P2Element<D>& element, double floor,
-                                                    const SubdivisionLimits& limits = {});
+JacobianCertificate certify_min_normalized_jacobian(const P2Element<D>& element, double floor, const SubdivisionLimits& limits = {});
 
 // The cavity operator's question: true only when proven.
 template <int D>
-bool certify_min_normalized_jacobian_above(const P2Element<D>& element, double floor,
-                                           const SubdivisionLimits& limits = {}) {
+bool certify_min_normalized_jacobian_above(const P2Element<D>& element, double floor, const SubdivisionLimits& limits = {}) {
   return certify_min_normalized_jacobian(element, floor, limits).certified;
 }
 
 struct MinimumBounds {
-  double lower = 0.0;  // ≤ the minimum (the smallest coefficient over the leaves)
-  double upper = 0.0;  // ≥ the minimum, and a value the polynomial takes (a leaf corner)
+  double lower = 0.0;      // ≤ the minimum (the smallest coefficient over the leaves)
+  double upper = 0.0;      // ≥ the minimum, and a value the polynomial takes (a leaf corner)
   bool converged = false;  // upper − lower ≤ tolerance
   int subdivisions = 0;
 };
@@ -60,8 +58,7 @@ struct MinimumBounds {
 // Bounds of the minimum of the polynomial over the simplex, refined depth first (most promising
 // sub-simplex first) until upper − lower ≤ tolerance or the limits are hit.
 template <int D>
-MinimumBounds bound_bernstein_minimum(const JacobianCoefficients<D>& coefficients, double tolerance,
-                                      const SubdivisionLimits& limits);
+MinimumBounds bound_bernstein_minimum(const JacobianCoefficients<D>& coefficients, double tolerance, const SubdivisionLimits& limits);
 
 struct RefinementOptions {
   double relative_tolerance = 1e-3;  // wanted gap of the bounds, relative to max |N_γ| (≈ max |J|)

@@ -67,9 +67,9 @@ ElementJacobian<D> element_jacobian(const P2Element<D>& element) {
     }
     for (int face = 0; face <= D; ++face) {
       const auto& [i, j, k] = face_vertices<3>(face);
-      coefficients[kJacobianCoefficientCount<3> - 4 + face] =
-          (4.0 / 3) * (dot(a[i], s[p2_node_of_pair<3>(j, k)]) + dot(a[j], s[p2_node_of_pair<3>(i, k)]) +
-                       dot(a[k], s[p2_node_of_pair<3>(i, j)]));
+      coefficients[kJacobianCoefficientCount<3> - 4 + face] = (4.0 / 3) * (dot(a[i], s[p2_node_of_pair<3>(j, k)]) +
+                                                                           dot(a[j], s[p2_node_of_pair<3>(i, k)]) +
+                                                                           dot(a[k], s[p2_node_of_pair<3>(i, j)]));
     }
   }
 
@@ -91,8 +91,7 @@ double normalize_jacobian(double value, double straight_jacobian) {
 template <int D>
 JacobianCoefficients<D> normalized_jacobian_coefficients(const P2Element<D>& element) {
   ElementJacobian<D> jacobian = element_jacobian(element);
-  for (double& coefficient : jacobian.coefficients)
-    coefficient = normalize_jacobian(coefficient, jacobian.straight_jacobian);
+  for (double& coefficient : jacobian.coefficients) coefficient = normalize_jacobian(coefficient, jacobian.straight_jacobian);
   return jacobian.coefficients;
 }
 

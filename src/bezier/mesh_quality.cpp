@@ -15,8 +15,7 @@ std::vector<JacobianQuality> mesh_jacobian_quality(const Mesh<D>& mesh, const Re
   return qualities;
 }
 
-ValueSummary summarize_values(std::span<const double> values, int bin_count, double histogram_lower,
-                              double histogram_upper) {
+ValueSummary summarize_values(std::span<const double> values, int bin_count, double histogram_lower, double histogram_upper) {
   ValueSummary summary;
   summary.histogram_lower = histogram_lower;
   summary.histogram_upper = histogram_upper;

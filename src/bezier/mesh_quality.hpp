@@ -27,8 +27,7 @@ struct ValueSummary {
   Index below = 0, above = 0;
 };
 
-ValueSummary summarize_values(std::span<const double> values, int bin_count, double histogram_lower,
-                              double histogram_upper);
+ValueSummary summarize_values(std::span<const double> values, int bin_count, double histogram_lower, double histogram_upper);
 
 struct MeshJacobianSummary {
   ValueSummary min_normalized_jacobian;  // histogram over [0, 1]; curved elements may exceed 1

@@ -15,9 +15,7 @@ namespace {
 
 CaseOption size_option(double default_value) { return {"h", "target edge length", default_value}; }
 
-ShellParameters shell_parameters(const CaseValues& values) {
-  return {values.at("r-in"), values.at("r-out"), values.at("h")};
-}
+ShellParameters shell_parameters(const CaseValues& values) { return {values.at("r-in"), values.at("r-out"), values.at("h")}; }
 
 const std::vector<CaseOption> kShellOptions{{"r-in", "inner radius", 0.5}, {"r-out", "outer radius", 1.0}};
 
@@ -52,9 +50,9 @@ ShellLayering shell_layering(const CaseValues& values, LayerWalls walls) {
 void add_layered_shells(std::vector<CaseDefinition>& definitions, int dimension) {
   const bool three_d = dimension == 3;
   const std::string name = three_d ? "cubed-shell" : "polar-annulus";
-  const std::string domain =
-      three_d ? "between two concentric spheres, structured (cubed sphere x radial layers, 6 tetrahedra per hexahedron)"
-              : "between two concentric circles, structured (polar grid, 2 triangles per cell)";
+  const std::string domain = three_d
+                                 ? "between two concentric spheres, structured (cubed sphere x radial layers, 6 tetrahedra per hexahedron)"
+                                 : "between two concentric circles, structured (polar grid, 2 triangles per cell)";
   const CaseOption target = three_d ? CaseOption{"target-tets", "number of tetrahedra wanted (the resolution nearest it)", 1e5}
                                     : CaseOption{"target-triangles", "number of triangles wanted (the resolution nearest it)", 1e4};
   const struct {
@@ -70,14 +68,13 @@ void add_layered_shells(std::vector<CaseDefinition>& definitions, int dimension)
     if (variant.walls != LayerWalls::kNone) options.insert(options.end(), kBoundaryLayerOptions.begin(), kBoundaryLayerOptions.end());
     const LayerWalls walls = variant.walls;
     const std::string target_name = target.name;
-    definitions.push_back(
-        {name + variant.suffix, domain + ", " + variant.layers + "; facet refs 1 inner, 2 outer", dimension, options,
-         [walls, three_d, target_name](const CaseValues& values) {
-           const ShellLayering layering = shell_layering(values, walls);
-           return three_d ? AnyMesh(generate_cubed_sphere_shell(layering, values.at(target_name)))
-                          : AnyMesh(generate_polar_annulus(layering, values.at(target_name)));
-         },
-         three_d ? write_shell_model<3> : write_shell_model<2>});
+    definitions.push_back({name + variant.suffix, domain + ", " + variant.layers + "; facet refs 1 inner, 2 outer", dimension, options,
+                           [walls, three_d, target_name](const CaseValues& values) {
+                             const ShellLayering layering = shell_layering(values, walls);
+                             return three_d ? AnyMesh(generate_cubed_sphere_shell(layering, values.at(target_name)))
+                                            : AnyMesh(generate_polar_annulus(layering, values.at(target_name)));
+                           },
+                           three_d ? write_shell_model<3> : write_shell_model<2>});
   }
 }
 
@@ -91,7 +88,9 @@ CaseDefinition shear_circle_definition() {
   return {"shear-circle",
           "polar annulus, a unit mesh of the shear-circle metric of the same options (the paper's Fig. 1); facet refs "
           "1 inner, 2 outer",
-          2, options, [](const CaseValues& values) {
+          2,
+          options,
+          [](const CaseValues& values) {
             AnalyticMetricSpec metric;
             metric.name = "shear-circle";
             metric.radius = values.at("radius");
@@ -109,23 +108,35 @@ CaseDefinition machined_part_definition() {
   return {"part",
           "a machined part (gmsh OpenCASCADE): block with rounded corners, a slanted face, a through hole, a spherical "
           "pocket and a thin-walled pocket with a filleted floor; facet refs = CAD surface tags",
-          3, {size_option(0.03), {"wall", "thickness of the pocket's side walls", 0.03}},
+          3,
+          {size_option(0.03), {"wall", "thickness of the pocket's side walls", 0.03}},
           [](const CaseValues& values) { return AnyMesh(generate_machined_part(part_parameters(values))); },
           [](const CaseValues& values, const std::string& path) { write_machined_part_cad(part_parameters(values), path); }};
 }
 
 std::vector<CaseDefinition> make_definitions() {
   std::vector<CaseDefinition> definitions{
-      {"square", "unit square [0,1]^2, right triangles; facet refs 1 bottom, 2 right, 3 top, 4 left", 2,
-       {size_option(0.1)}, [](const CaseValues& values) { return AnyMesh(generate_square(cells_for_size(values.at("h")))); },
+      {"square",
+       "unit square [0,1]^2, right triangles; facet refs 1 bottom, 2 right, 3 top, 4 left",
+       2,
+       {size_option(0.1)},
+       [](const CaseValues& values) { return AnyMesh(generate_square(cells_for_size(values.at("h")))); },
        nullptr},
-      {"cube", "unit cube [0,1]^3, 6 tetrahedra per cell; facet refs 1/2 x=0/1, 3/4 y=0/1, 5/6 z=0/1", 3,
-       {size_option(0.25)}, [](const CaseValues& values) { return AnyMesh(generate_cube(cells_for_size(values.at("h")))); },
+      {"cube",
+       "unit cube [0,1]^3, 6 tetrahedra per cell; facet refs 1/2 x=0/1, 3/4 y=0/1, 5/6 z=0/1",
+       3,
+       {size_option(0.25)},
+       [](const CaseValues& values) { return AnyMesh(generate_cube(cells_for_size(values.at("h")))); },
        nullptr},
-      {"annulus", "region between two concentric circles (gmsh); facet refs 1 inner, 2 outer", 2,
+      {"annulus",
+       "region between two concentric circles (gmsh); facet refs 1 inner, 2 outer",
+       2,
        {kShellOptions[0], kShellOptions[1], size_option(0.1)},
-       [](const CaseValues& values) { return AnyMesh(generate_annulus(shell_parameters(values))); }, write_shell_model<2>},
-      {"sphere-shell", "region between two concentric spheres (gmsh); facet refs 1 inner, 2 outer", 3,
+       [](const CaseValues& values) { return AnyMesh(generate_annulus(shell_parameters(values))); },
+       write_shell_model<2>},
+      {"sphere-shell",
+       "region between two concentric spheres (gmsh); facet refs 1 inner, 2 outer",
+       3,
        {kShellOptions[0], kShellOptions[1], size_option(0.25)},
        [](const CaseValues& values) { return AnyMesh(generate_sphere_shell(shell_parameters(values))); },
        write_shell_model<3>},

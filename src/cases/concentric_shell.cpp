@@ -109,9 +109,7 @@ Mesh<D> generate_shell(const ShellParameters& p, const std::string& name) {
 
 Mesh<2> generate_annulus(const ShellParameters& parameters) { return generate_shell<2>(parameters, "annulus"); }
 
-Mesh<3> generate_sphere_shell(const ShellParameters& parameters) {
-  return generate_shell<3>(parameters, "sphere-shell");
-}
+Mesh<3> generate_sphere_shell(const ShellParameters& parameters) { return generate_shell<3>(parameters, "sphere-shell"); }
 
 template std::vector<GmshBoundaryEntity> build_shell_model<2>(double, double);
 template std::vector<GmshBoundaryEntity> build_shell_model<3>(double, double);

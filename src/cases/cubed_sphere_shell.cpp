@@ -101,9 +101,9 @@ Mesh<3> generate_cubed_sphere_shell(int n, std::span<const double> radii) {
     for (Triangle t : grid.triangles) {
       std::sort(t.begin(), t.end());
       const auto [a, b, c] = t;
-      for (Mesh<3>::Element tet : {Mesh<3>::Element{lower + a, lower + b, lower + c, upper + c},
-                                   Mesh<3>::Element{lower + a, lower + b, upper + b, upper + c},
-                                   Mesh<3>::Element{lower + a, upper + a, upper + b, upper + c}}) {
+      for (Mesh<3>::Element tet :
+           {Mesh<3>::Element{lower + a, lower + b, lower + c, upper + c}, Mesh<3>::Element{lower + a, lower + b, upper + b, upper + c},
+            Mesh<3>::Element{lower + a, upper + a, upper + b, upper + c}}) {
         if (signed_measure(mesh.vertex(tet[0]), mesh.vertex(tet[1]), mesh.vertex(tet[2]), mesh.vertex(tet[3])) < 0)
           std::swap(tet[2], tet[3]);
         mesh.add_element(tet, 1);
@@ -120,7 +120,7 @@ Mesh<3> generate_cubed_sphere_shell(int n, std::span<const double> radii) {
 
 Mesh<3> generate_cubed_sphere_shell(const ShellLayering& layering, double target_tets) {
   const auto [n, radii] = layered_resolution_for_target("target-tets", target_tets, 1, layering, cubed_sphere_angular_step,
-                                                         cubed_sphere_shell_tet_count);
+                                                        cubed_sphere_shell_tet_count);
   return generate_cubed_sphere_shell(n, radii);
 }
 

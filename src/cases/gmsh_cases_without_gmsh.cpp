@@ -29,9 +29,7 @@ Mesh<D> extract_gmsh_mesh(const std::vector<GmshBoundaryEntity>&, int) {
 }
 
 // The gmsh-meshed cases; the structured ones (polar-annulus, cubed-shell, shear-circle) need no gmsh.
-Mesh<2> generate_annulus(const ShellParameters&) {
-  throw_gmsh_missing("case annulus", "the structured polar-annulus case needs none");
-}
+Mesh<2> generate_annulus(const ShellParameters&) { throw_gmsh_missing("case annulus", "the structured polar-annulus case needs none"); }
 
 Mesh<3> generate_sphere_shell(const ShellParameters&) {
   throw_gmsh_missing("case sphere-shell", "the structured cubed-shell case needs none");

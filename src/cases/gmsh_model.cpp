@@ -82,7 +82,7 @@ std::vector<Index> add_used_nodes(Mesh<D>& mesh, const std::vector<std::size_t>&
 // The ref of every boundary facet gmsh meshed on the listed entities, keyed by sorted vertices.
 template <int D>
 std::map<std::array<Index, D>, int> boundary_facet_refs(const std::vector<GmshBoundaryEntity>& boundary,
-                                                       const std::vector<Index>& vertex_of_tag) {
+                                                        const std::vector<Index>& vertex_of_tag) {
   std::map<std::array<Index, D>, int> refs;
   for (const GmshBoundaryEntity& entity : boundary) {
     std::vector<std::size_t> facet_tags, facet_node_tags;
@@ -138,8 +138,7 @@ Mesh<D> extract(const std::vector<GmshBoundaryEntity>& boundary, int element_ref
 
 bool gmsh_available() { return true; }
 
-GmshSession::GmshSession(const std::string& model_name)
-    : lock_(lock_gmsh()), saved_locale_(std::setlocale(LC_ALL, nullptr)) {
+GmshSession::GmshSession(const std::string& model_name) : lock_(lock_gmsh()), saved_locale_(std::setlocale(LC_ALL, nullptr)) {
   bool initialized = false;
   try {
     call_gmsh([] { gmsh::initialize(0, nullptr, /*readConfigFiles=*/false); });

@@ -6,8 +6,8 @@
 #include <array>
 #include <cmath>
 #include <map>
-#include <set>
 #include <numbers>
+#include <set>
 
 #include "base/memory_budget.hpp"
 #include "base/quiet_stdout.hpp"
@@ -39,8 +39,7 @@ void check_parameters(const MachinedPartParameters& p) {
 // The curves of the current model lying inside a box.
 std::vector<int> curves_in(double x0, double y0, double z0, double x1, double y1, double z1) {
   gmsh::vectorpair found;
-  gmsh::model::occ::getEntitiesInBoundingBox(x0 - kMargin, y0 - kMargin, z0 - kMargin, x1 + kMargin, y1 + kMargin,
-                                             z1 + kMargin, found, 1);
+  gmsh::model::occ::getEntitiesInBoundingBox(x0 - kMargin, y0 - kMargin, z0 - kMargin, x1 + kMargin, y1 + kMargin, z1 + kMargin, found, 1);
   std::vector<int> tags;
   for (const auto& entity : found) tags.push_back(entity.second);
   return tags;

@@ -12,9 +12,7 @@ namespace hocav {
 
 double polar_angular_step(int sectors) { return 2 * std::numbers::pi / sectors; }
 
-double polar_annulus_triangle_count(int sectors, std::size_t radii) {
-  return 2.0 * sectors * (static_cast<double>(radii) - 1);
-}
+double polar_annulus_triangle_count(int sectors, std::size_t radii) { return 2.0 * sectors * (static_cast<double>(radii) - 1); }
 
 Mesh<2> generate_polar_annulus(int sectors, std::span<const double> radii) {
   if (sectors < 3) throw Error("a polar annulus needs at least 3 sectors, got " + std::to_string(sectors));
@@ -42,8 +40,8 @@ Mesh<2> generate_polar_annulus(int sectors, std::span<const double> radii) {
 }
 
 Mesh<2> generate_polar_annulus(const ShellLayering& layering, double target_triangles) {
-  const auto [sectors, radii] = layered_resolution_for_target("target-triangles", target_triangles, 3, layering,
-                                                               polar_angular_step, polar_annulus_triangle_count);
+  const auto [sectors, radii] = layered_resolution_for_target("target-triangles", target_triangles, 3, layering, polar_angular_step,
+                                                              polar_annulus_triangle_count);
   return generate_polar_annulus(sectors, radii);
 }
 

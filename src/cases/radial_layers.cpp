@@ -47,8 +47,7 @@ std::vector<double> layer_radii(const ShellLayering& layering, double angular_st
 
   // Radii of the inner front upward, and of the outer front downward.
   std::vector<double> from_inner{layering.inner_radius}, from_outer{layering.outer_radius};
-  const double first = layering.first_layer > 0 ? layering.first_layer
-                                                : layering.inner_radius * angular_step / kDefaultWallAspect;
+  const double first = layering.first_layer > 0 ? layering.first_layer : layering.inner_radius * angular_step / kDefaultWallAspect;
   Front fronts[2] = {{layering.inner_radius, first, 0, layering.walls != LayerWalls::kNone},
                      {layering.outer_radius, first, 0, layering.walls == LayerWalls::kBoth}};
   bool met = false;
@@ -86,8 +85,7 @@ std::vector<double> unit_layer_radii(double inner_radius, double outer_radius, c
   check_shell_radii(inner_radius, outer_radius);
   auto size_at = [&size](double r) {
     const double h = size(r);
-    if (!(std::isfinite(h) && h > 0))
-      throw Error("the radial size must be positive, got " + number_text(h) + " at r = " + number_text(r));
+    if (!(std::isfinite(h) && h > 0)) throw Error("the radial size must be positive, got " + number_text(h) + " at r = " + number_text(r));
     return h;
   };
   // Samples of ∫ dr / h from r_in, at least kSamples and at least 8 per layer; a first pass on the

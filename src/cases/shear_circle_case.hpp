@@ -10,8 +10,8 @@
 // defaults): curving is both rewarding and constrained by validity there.
 #pragma once
 
-#include "metric/analytic_metric.hpp"
 #include "mesh/mesh.hpp"
+#include "metric/analytic_metric.hpp"
 
 namespace hocav {
 

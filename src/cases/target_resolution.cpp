@@ -9,8 +9,7 @@ namespace hocav {
 
 int resolution_for_target(const char* what, double target, int minimum, const std::function<double(int)>& elements) {
   if (!(std::isfinite(target) && target >= 1 && target <= kMaximumTargetElements))
-    throw Error(std::string(what) + " must be between 1 and " + number_text(kMaximumTargetElements) + ", got " +
-                number_text(target));
+    throw Error(std::string(what) + " must be between 1 and " + number_text(kMaximumTargetElements) + ", got " + number_text(target));
   // The smallest n reaching the target: doubling, then bisection.
   int low = minimum, high = minimum;
   while (elements(high) < target) {
@@ -27,9 +26,8 @@ int resolution_for_target(const char* what, double target, int minimum, const st
 
 LayeredResolution layered_resolution_for_target(const char* what, double target, int minimum, const ShellLayering& layering,
                                                 double (*angular_step)(int), double (*elements)(int, std::size_t)) {
-  const int resolution = resolution_for_target(what, target, minimum, [&](int n) {
-    return elements(n, layer_radii(layering, angular_step(n)).size());
-  });
+  const int resolution = resolution_for_target(what, target, minimum,
+                                               [&](int n) { return elements(n, layer_radii(layering, angular_step(n)).size()); });
   return {resolution, layer_radii(layering, angular_step(resolution))};
 }
 

@@ -24,7 +24,6 @@ struct LayeredResolution {
   std::vector<double> radii;
 };
 LayeredResolution layered_resolution_for_target(const char* what, double target, int minimum, const ShellLayering& layering,
-                                                double (*angular_step)(int),
-                                                double (*elements)(int resolution, std::size_t radii));
+                                                double (*angular_step)(int), double (*elements)(int resolution, std::size_t radii));
 
 }  // namespace hocav

@@ -67,23 +67,21 @@ CavityStatus reinsert_vertex(Mesh<D>& mesh, CavityWorkspace<D>& work, Index v, c
 }
 
 template <int D>
-CavityStatus collapse_edge(Mesh<D>& mesh, CavityWorkspace<D>& work, Index removed, Index kept,
-                           CavityOptions options) {
+CavityStatus collapse_edge(Mesh<D>& mesh, CavityWorkspace<D>& work, Index removed, Index kept, CavityOptions options) {
   collect_ball(mesh, removed, work.cavity);
   options.removable_vertex = removed;
   return plan_and_commit(mesh, work, kept, options);
 }
 
 template <int D>
-CavityStatus swap_edge(Mesh<D>& mesh, CavityWorkspace<D>& work, Index a, Index b, Index apex,
-                       const CavityOptions& options) {
+CavityStatus swap_edge(Mesh<D>& mesh, CavityWorkspace<D>& work, Index a, Index b, Index apex, const CavityOptions& options) {
   collect_shell(mesh, a, b, work.cavity);
   return plan_and_commit(mesh, work, apex, options);
 }
 
 template <int D>
-CavityStatus insert_vertex(Mesh<D>& mesh, CavityWorkspace<D>& work, const Vec<D>& x, Index hint,
-                           const SymMat<D>& metric, const CavityOptions& options, Index* inserted) {
+CavityStatus insert_vertex(Mesh<D>& mesh, CavityWorkspace<D>& work, const Vec<D>& x, Index hint, const SymMat<D>& metric,
+                           const CavityOptions& options, Index* inserted) {
   // The element containing x, by a walk from the hint.
   Index k = hint;
   for (int step = 0; step < 100000; ++step) {
@@ -100,18 +98,19 @@ CavityStatus insert_vertex(Mesh<D>& mesh, CavityWorkspace<D>& work, const Vec<D>
   grow_delaunay_cavity(mesh, work.cavity, x, metric);
   Index vertex = mesh.add_vertex(x);
   CavityStatus status = plan_and_commit(mesh, work, vertex, options);
-  if (status != CavityStatus::kAccepted) mesh.pop_vertex();
-  else if (inserted) *inserted = vertex;
+  if (status != CavityStatus::kAccepted)
+    mesh.pop_vertex();
+  else if (inserted)
+    *inserted = vertex;
   return status;
 }
 
-#define HOCAV_INSTANTIATE(D)                                                                                      \
-  template void grow_delaunay_cavity(const Mesh<D>&, std::vector<Index>&, const Vec<D>&, const SymMat<D>&);         \
-  template CavityStatus reinsert_vertex(Mesh<D>&, CavityWorkspace<D>&, Index, const CavityOptions&);              \
-  template CavityStatus collapse_edge(Mesh<D>&, CavityWorkspace<D>&, Index, Index, CavityOptions);                \
-  template CavityStatus swap_edge(Mesh<D>&, CavityWorkspace<D>&, Index, Index, Index, const CavityOptions&);      \
-  template CavityStatus insert_vertex(Mesh<D>&, CavityWorkspace<D>&, const Vec<D>&, Index, const SymMat<D>&,      \
-                                      const CavityOptions&, Index*);
+#define HOCAV_INSTANTIATE(D)                                                                                 \
+  template void grow_delaunay_cavity(const Mesh<D>&, std::vector<Index>&, const Vec<D>&, const SymMat<D>&);  \
+  template CavityStatus reinsert_vertex(Mesh<D>&, CavityWorkspace<D>&, Index, const CavityOptions&);         \
+  template CavityStatus collapse_edge(Mesh<D>&, CavityWorkspace<D>&, Index, Index, CavityOptions);           \
+  template CavityStatus swap_edge(Mesh<D>&, CavityWorkspace<D>&, Index, Index, Index, const CavityOptions&); \
+  template CavityStatus insert_vertex(Mesh<D>&, CavityWorkspace<D>&, const Vec<D>&, Index, const SymMat<D>&, const CavityOptions&, Index*);
 HOCAV_INSTANTIATE(2)
 HOCAV_INSTANTIATE(3)
 #undef HOCAV_INSTANTIATE

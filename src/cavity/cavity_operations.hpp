@@ -26,12 +26,10 @@ template <int D>
 CavityStatus reinsert_vertex(Mesh<D>& mesh, CavityWorkspace<D>& work, Index v, const CavityOptions& options);
 
 template <int D>
-CavityStatus collapse_edge(Mesh<D>& mesh, CavityWorkspace<D>& work, Index removed, Index kept,
-                           CavityOptions options);
+CavityStatus collapse_edge(Mesh<D>& mesh, CavityWorkspace<D>& work, Index removed, Index kept, CavityOptions options);
 
 template <int D>
-CavityStatus swap_edge(Mesh<D>& mesh, CavityWorkspace<D>& work, Index a, Index b, Index apex,
-                       const CavityOptions& options);
+CavityStatus swap_edge(Mesh<D>& mesh, CavityWorkspace<D>& work, Index a, Index b, Index apex, const CavityOptions& options);
 
 // Grows `cavity` (elements around x) by Bowyer–Watson in the constant metric `metric`: the
 // neighbours, through faces that carry no boundary facet, whose circumsphere in the metric contains x.
@@ -42,7 +40,7 @@ void grow_delaunay_cavity(const Mesh<D>& mesh, std::vector<Index>& cavity, const
 // connected to the one containing x, whose circumsphere in the constant metric `metric` contains x
 // (Bowyer–Watson in the metric space). Returns the new vertex's id through `inserted`.
 template <int D>
-CavityStatus insert_vertex(Mesh<D>& mesh, CavityWorkspace<D>& work, const Vec<D>& x, Index hint,
-                           const SymMat<D>& metric, const CavityOptions& options, Index* inserted = nullptr);
+CavityStatus insert_vertex(Mesh<D>& mesh, CavityWorkspace<D>& work, const Vec<D>& x, Index hint, const SymMat<D>& metric,
+                           const CavityOptions& options, Index* inserted = nullptr);
 
 }  // namespace hocav

@@ -51,8 +51,7 @@ template <int D>
 constexpr LocalEdges<D> kLocalEdge{};
 
 template <int D>
-double longest_edge(const Mesh<D>& mesh, const typename Mesh<D>::Element& element, const Vec<D>& extra,
-                    bool use_extra) {
+double longest_edge(const Mesh<D>& mesh, const typename Mesh<D>::Element& element, const Vec<D>& extra, bool use_extra) {
   double longest = 0;
   for (int i = 0; i <= D; ++i)
     for (int j = 0; j < i; ++j) {
@@ -78,8 +77,7 @@ bool CavityOperator<D>::in_cavity(Index k) const {
 }
 
 template <int D>
-CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index> cavity, Index vertex,
-                                     const CavityOptions& options) {
+CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index> cavity, Index vertex, const CavityOptions& options) {
   cavity_.assign(cavity.begin(), cavity.end());
   std::sort(cavity_.begin(), cavity_.end());
   vertex_ = vertex;
@@ -151,8 +149,10 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
       typename Mesh<D>::Point p[D + 1];
       for (int i = 0; i <= D; ++i) p[i] = mesh.vertex(element[i]);
       double measure;
-      if constexpr (D == 2) measure = signed_measure(p[0], p[1], p[2]);
-      else measure = signed_measure(p[0], p[1], p[2], p[3]);
+      if constexpr (D == 2)
+        measure = signed_measure(p[0], p[1], p[2]);
+      else
+        measure = signed_measure(p[0], p[1], p[2], p[3]);
       if (!(measure > options.min_relative_measure * std::pow(longest_edge(mesh, element, p[0], false), D)))
         return CavityStatus::kNonPositiveMeasure;
     }
@@ -206,8 +206,8 @@ void CavityOperator<D>::collect_surface_sides(const Mesh<D>& mesh) {
     }
   }
   const auto cancels = [](const SurfaceSide& x, const SurfaceSide& y) {
-    return x.ref == y.ref && (D == 2 ? (x.from == y.to && x.from != kNoIndex) || (x.to == y.from && x.to != kNoIndex)
-                                     : x.from == y.to && x.to == y.from);
+    return x.ref == y.ref &&
+           (D == 2 ? (x.from == y.to && x.from != kNoIndex) || (x.to == y.from && x.to != kNoIndex) : x.from == y.to && x.to == y.from);
   };
   for (std::size_t i = 0; i < surface_sides_.size(); ++i)
     for (std::size_t j = i + 1; j < surface_sides_.size() && !surface_sides_[i].cancelled; ++j)
@@ -372,8 +372,7 @@ CavityStatus CavityOperator<D>::plan_edges(const Mesh<D>& mesh) {
         return CavityStatus::kNotStarShaped;
       }
       recreated_ids_.push_back(kept);
-      start_nodes_.push_back(kept != kNoIndex && mesh.is_p2() ? mesh.edge_node(kept)
-                                                              : 0.5 * (mesh.vertex(vertex_) + mesh.vertex(v)));
+      start_nodes_.push_back(kept != kNoIndex && mesh.is_p2() ? mesh.edge_node(kept) : 0.5 * (mesh.vertex(vertex_) + mesh.vertex(v)));
     }
   }
   return CavityStatus::kAccepted;
@@ -383,7 +382,7 @@ template <int D>
 std::size_t CavityOperator<D>::boundary_edge_slot(std::uint64_t key) const {
   auto found = std::lower_bound(boundary_edge_keys_.begin(), boundary_edge_keys_.end(), key);
   return found != boundary_edge_keys_.end() && *found == key ? static_cast<std::size_t>(found - boundary_edge_keys_.begin())
-                                                            : boundary_edge_keys_.size();
+                                                             : boundary_edge_keys_.size();
 }
 
 template <int D>

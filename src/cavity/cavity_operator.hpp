@@ -93,10 +93,10 @@ class CavityOperator {
     std::array<Index, D> vertices;  // oriented as seen from inside the cavity
     Index outer_element;            // the neighbour outside, or kNoIndex
     int outer_face;
-    Index facet;                    // the boundary facet on the face, or kNoIndex
-    Index inner_element;            // the cavity element it is a face of, and its local face there
+    Index facet;          // the boundary facet on the face, or kNoIndex
+    Index inner_element;  // the cavity element it is a face of, and its local face there
     int inner_face;
-    bool removed;                   // its facet is replaced by the surface star
+    bool removed;  // its facet is replaced by the surface star
   };
   // A face containing the vertex, keyed by its other D − 1 vertices: a new element's face or a
   // kept boundary face; matched in pairs.
@@ -147,7 +147,7 @@ class CavityOperator {
   std::vector<BoundaryFace> boundary_faces_;
   std::vector<std::uint8_t> boundary_face_bits_;  // per cavity element: bit f set when its face f is a boundary face
   bool vertex_on_boundary_ = false;               // the vertex is on a boundary face (not inside the cavity)
-  std::vector<Index> starred_faces_;  // boundary face of each new element
+  std::vector<Index> starred_faces_;              // boundary face of each new element
   std::vector<Element> new_elements_;
   std::vector<RidgeFace> ridge_faces_;
   std::vector<Link> links_;
@@ -159,12 +159,12 @@ class CavityOperator {
   std::vector<std::uint64_t> scratch_keys_;
   std::vector<std::uint64_t> boundary_edge_keys_;
   std::vector<Index> boundary_edge_ids_;
-  std::vector<KeyedEdge> removed_edges_;   // by increasing id
-  std::vector<KeyedEdge> keyed_edges_;     // scratch
+  std::vector<KeyedEdge> removed_edges_;  // by increasing id
+  std::vector<KeyedEdge> keyed_edges_;    // scratch
   std::vector<typename Mesh<D>::ElementEdges> new_element_edges_;
   std::vector<std::array<Index, 2>> new_inner_edges_;
-  std::vector<Index> recreated_ids_;  // per new inner edge: its old id when it existed (kept), else kNoIndex
-  std::vector<Index> inner_edge_ids_;  // per new inner edge: its id once committed
+  std::vector<Index> recreated_ids_;    // per new inner edge: its old id when it existed (kept), else kNoIndex
+  std::vector<Index> inner_edge_ids_;   // per new inner edge: its id once committed
   std::vector<Index> new_element_ids_;  // per new element: its id once committed
   std::vector<Point> start_nodes_;
   std::vector<Index> scratch_;

@@ -13,9 +13,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // Sorts the vertices of an element; true when that takes an odd permutation (so two elements with
 // the same sorted vertices and parity are one element, with one orientation).
@@ -154,8 +152,8 @@ void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh) {
       end_a = edge_endpoint(mesh.vertex(a), vertex_log_metrics_[a]);
       end_a_vertex = a;
     }
-    auto result = optimize_edge_length(field_, end_a, edge_endpoint(mesh.vertex(b), vertex_log_metrics_[b]), starts[i],
-                                       vertex_hints_[a], options_.optimizer, locator_scratch_);
+    auto result = optimize_edge_length(field_, end_a, edge_endpoint(mesh.vertex(b), vertex_log_metrics_[b]), starts[i], vertex_hints_[a],
+                                       options_.optimizer, locator_scratch_);
     ++counters_.edges_optimized;
     counters_.optimizer_iterations += result.iterations;
     vertex_hints_[a] = result.back_element;  // near a: the next walk from a starts close
@@ -248,16 +246,15 @@ template <int D>
 void P2CavityOperator<D>::mark_optimized_edges() {
   const auto inner_ids = p1_.committed_inner_edge_ids();
   for (const CurvedEdge& edge : curved_)
-    optimized_edges_->set(edge.inner ? inner_ids[static_cast<std::size_t>(edge.id)] : edge.id,
-                          edge.optimal && edge.scale == 1);
+    optimized_edges_->set(edge.inner ? inner_ids[static_cast<std::size_t>(edge.id)] : edge.id, edge.optimal && edge.scale == 1);
 }
 
 template <int D>
 void P2CavityOperator<D>::forget_certificates_of_corrected_edges() {
   for (std::size_t i = 0; i < candidates_.size(); ++i)
     for (int index : candidates_[i].curved)
-      if (index >= 0 && std::find(corrected_edges_.begin(), corrected_edges_.end(), &curved_[static_cast<std::size_t>(index)]) !=
-                            corrected_edges_.end())
+      if (index >= 0 &&
+          std::find(corrected_edges_.begin(), corrected_edges_.end(), &curved_[static_cast<std::size_t>(index)]) != corrected_edges_.end())
         certified_already_[i] = false;
 }
 
@@ -284,8 +281,7 @@ bool P2CavityOperator<D>::correct(const Candidate& candidate) {
       if (index < 0) continue;
       CurvedEdge& edge = curved_[static_cast<std::size_t>(index)];
       // An edge whose node does not move (kept at its optimum, or optimized back to its start) cannot help.
-      if (edge.scale > 0 && edge.target != edge.fallback && (edge.inner || with_boundary))
-        corrected_edges_.push_back(&edge);
+      if (edge.scale > 0 && edge.target != edge.fallback && (edge.inner || with_boundary)) corrected_edges_.push_back(&edge);
     }
     if (corrected_edges_.empty()) continue;
     corrected_scales_.clear();

@@ -48,11 +48,11 @@ struct P2CavityCounters {
   long long cavities = 0, accepted = 0;
   long long rejected_topology = 0, rejected_curving = 0;
   long long edges_optimized = 0, optimizer_iterations = 0;
-  long long edges_kept_optimal = 0;    // recreated at their optimum: not optimized again
+  long long edges_kept_optimal = 0;  // recreated at their optimum: not optimized again
   long long boundary_nodes_applied = 0;
-  long long corrections = 0;           // elements that needed their edges pulled back
+  long long corrections = 0;  // elements that needed their edges pulled back
   long long elements_certified = 0;
-  long long certificates_kept = 0;     // new elements identical to a certified cavity element
+  long long certificates_kept = 0;  // new elements identical to a certified cavity element
   double seconds_plan = 0, seconds_optimize = 0, seconds_certify = 0, seconds_commit = 0;
 
   P2CavityCounters& operator+=(const P2CavityCounters& other);
@@ -65,9 +65,8 @@ class P2CavityOperator {
   // (both grow with the mesh: the caller owns them). `optimized_edges` (shared by the operators
   // working on one mesh, or null: every new inner edge is optimized) is read by prepare and updated
   // by commit. `boundary` may be null (no surface curving).
-  P2CavityOperator(const MetricField<D>& field, std::vector<SymMat<D>>& vertex_log_metrics,
-                   std::vector<Index>& vertex_hints, OptimizedEdgeMarks* optimized_edges,
-                   BoundaryNodeSource<D>* boundary, const P2CavityOptions& options);
+  P2CavityOperator(const MetricField<D>& field, std::vector<SymMat<D>>& vertex_log_metrics, std::vector<Index>& vertex_hints,
+                   OptimizedEdgeMarks* optimized_edges, BoundaryNodeSource<D>* boundary, const P2CavityOptions& options);
 
   // Replaces `cavity` by the star of its boundary from `vertex`, curved and certified. The mesh
   // must be P2 with its topology; it is unchanged unless the result is kAccepted.

@@ -121,12 +121,12 @@ void add_adapt_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand("adapt", "Adapt a mesh to a metric (a unit mesh: split, collapse, swap, smooth), then curve it");
   command->add_option("input", o->input, "mesh to adapt (.mesh, .meshb, .msh; P1, or P2 whose nodes are dropped)")->required();
   command->add_option("--metric", o->metric, "metric at the input's vertices (.sol/.solb); the input is the back mesh");
-  command->add_option("--analytic", o->analytic, "or an analytic metric, evaluated exactly at every vertex (" +
-                                                     [] {
-                                                       std::string names;
-                                                       for (const auto& n : analytic_metric_names()) names += (names.empty() ? "" : ", ") + n;
-                                                       return names;
-                                                     }() + ")");
+  command->add_option(
+      "--analytic", o->analytic, "or an analytic metric, evaluated exactly at every vertex (" + [] {
+        std::string names;
+        for (const auto& n : analytic_metric_names()) names += (names.empty() ? "" : ", ") + n;
+        return names;
+      }() + ")");
   command->add_option("-o,--output", o->output, "adapted mesh to write (.mesh, .meshb, .msh, .vtu)")->required();
   command->add_option("--order", o->order, "2: curve the adapted mesh (P2 output); 1: stop after the P1 adaptation")
       ->check(CLI::IsMember({1, 2}))
@@ -135,14 +135,16 @@ void add_adapt_command(CLI::App& app) {
   command->add_option("--hmax", o->h_max, "largest size: the metric's sizes are clamped to it")->check(finite_positive());
   command->add_option("--hgrad", o->gradation, "grade the metric first: sizes grow by at most BETA > 1 per unit length")
       ->check(finite_range(1.0 + 1e-12, 1e6, "BETA > 1"));
-  command->add_option("--hausd", o->hausd_given,
-                      "largest distance from a new boundary facet to the geometry (default 0.01 x the bounding box's diagonal)")
+  command
+      ->add_option("--hausd", o->hausd_given,
+                   "largest distance from a new boundary facet to the geometry (default 0.01 x the bounding box's diagonal)")
       ->check(finite_positive());
   command->add_option("--angle", o->angle, "boundary sides meeting at more than this dihedral angle are ridges (degrees)")
       ->check(finite_range(0.0, 180.0, "0 to 180"))
       ->capture_default_str();
-  command->add_option("--surface", o->surface,
-                      "geometry of new boundary points and P2 nodes: p3 (a cubic surrogate of the input boundary), cad:FILE, none")
+  command
+      ->add_option("--surface", o->surface,
+                   "geometry of new boundary points and P2 nodes: p3 (a cubic surrogate of the input boundary), cad:FILE, none")
       ->capture_default_str();
   command->add_option("--jacobian-floor", o->jacobian_floor, "curving: every element keeps its min normalized Jacobian above this")
       ->check(finite_range(0.0, 1.0, "0 to 1"))
@@ -150,7 +152,9 @@ void add_adapt_command(CLI::App& app) {
   command->add_option("--iterations", o->iterations, "at most this many passes of the adaptation loop")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
-  command->add_option("--threads", o->threads, "threads of the swaps, smoothing, collapse tests and curving (the output does not depend on it)")
+  command
+      ->add_option("--threads", o->threads,
+                   "threads of the swaps, smoothing, collapse tests and curving (the output does not depend on it)")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
   command->add_option("--report", o->report, "write the run's figures (passes, lengths, qualities, Table-1 columns) as JSON");

@@ -88,8 +88,8 @@ std::string cases_footer() {
 
 void add_bench_command(CLI::App& app) {
   auto options = std::make_shared<BenchOptions>();
-  CLI::App* command = app.add_subcommand(
-      "bench", "Curve every benchmark case at every size and print the paper's Table-1 rows (Markdown, JSON)");
+  CLI::App* command = app.add_subcommand("bench",
+                                         "Curve every benchmark case at every size and print the paper's Table-1 rows (Markdown, JSON)");
   command->add_option("--cases", options->cases, "cases to run, comma-separated (default: all)")->delimiter(',');
   command->add_option("--sizes", options->sizes, "element counts to aim at, comma-separated: 100k, 1M, 5M, 20M, ...")
       ->delimiter(',')

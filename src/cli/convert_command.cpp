@@ -36,8 +36,7 @@ std::string metric_output_path(const ConvertOptions& options) {
     path = options.output.substr(0, options.output.size() - extension.size()) + (extension == ".meshb" ? ".solb" : ".sol");
   }
   std::string extension = file_extension(path);
-  if (extension != ".sol" && extension != ".solb")
-    throw Error(path + ": a metric is written as .sol or .solb, not '" + extension + "'");
+  if (extension != ".sol" && extension != ".solb") throw Error(path + ": a metric is written as .sol or .solb, not '" + extension + "'");
   return path;
 }
 
@@ -45,8 +44,7 @@ template <int D>
 void change_order(Mesh<D>& mesh, int order, bool with_metric) {
   if (order == 1) mesh.make_p1();
   if (order == 2 && !mesh.is_p2()) {
-    if (with_metric)
-      throw Error("--order 2 with --metric: the metric has no values at the new P2 nodes (convert the mesh alone)");
+    if (with_metric) throw Error("--order 2 with --metric: the metric has no values at the new P2 nodes (convert the mesh alone)");
     mesh.make_p2();
   }
 }
@@ -68,8 +66,7 @@ void convert(Mesh<D>& mesh, const MeshFileContent& file, const ConvertOptions& o
   }
   if (metric && !metric_output.empty()) write_solution_file(metric_output, {D, metric->count(), {*metric}}, options.gamma_version);
   outputs.commit();
-  std::cout << "wrote " << options.output << (metric_output.empty() ? "" : " and " + metric_output) << ": "
-            << mesh_summary(mesh) << '\n';
+  std::cout << "wrote " << options.output << (metric_output.empty() ? "" : " and " + metric_output) << ": " << mesh_summary(mesh) << '\n';
 }
 
 void declare_convert_files(OutputSet& outputs, const ConvertOptions& options) {
@@ -85,20 +82,21 @@ void declare_convert_files(OutputSet& outputs, const ConvertOptions& options) {
 
 void add_convert_command(CLI::App& app) {
   auto options = std::make_shared<ConvertOptions>();
-  CLI::App* command = app.add_subcommand(
-      "convert", "Convert a mesh (and its metric) between formats: .mesh .meshb .msh -> .mesh .meshb .msh .vtu");
+  CLI::App* command = app.add_subcommand("convert",
+                                         "Convert a mesh (and its metric) between formats: .mesh .meshb .msh -> .mesh .meshb .msh .vtu");
   command->add_option("input", options->input, "mesh to read (.mesh, .meshb, .msh)")->required();
-  command->add_option("output", options->output, "mesh to write; the format follows the extension (.mesh, .meshb, .msh, .vtu)")
-      ->required();
+  command->add_option("output", options->output, "mesh to write; the format follows the extension (.mesh, .meshb, .msh, .vtu)")->required();
   command->add_option("--metric", options->metric, "metric of the input mesh (.sol/.solb, one matrix per file node)");
   command->add_option("--metric-out", options->metric_output,
                       "where to write the metric (default: OUT with extension .sol, .solb for a .meshb OUT; "
                       "none for a .vtu OUT, which carries the metric as point data)");
-  command->add_option("--order", options->order,
-                      "element order of the output: 1 drops the P2 nodes, 2 adds straight ones (default: the input's)")
+  command
+      ->add_option("--order", options->order,
+                   "element order of the output: 1 drops the P2 nodes, 2 adds straight ones (default: the input's)")
       ->check(CLI::IsMember({1, 2}));
-  command->add_option("--meshb-version", options->gamma_version,
-                      "version of binary .meshb/.solb output: 1-4 (default: 3, or 4 when counts need 64 bits)")
+  command
+      ->add_option("--meshb-version", options->gamma_version,
+                   "version of binary .meshb/.solb output: 1-4 (default: 3, or 4 when counts need 64 bits)")
       ->check(CLI::Range(1, 4));
   command->callback([options] {
     OutputSet outputs;

@@ -68,27 +68,32 @@ void declare_curve_files(OutputSet& outputs, const CurveOptions& options) {
 
 void add_curve_command(CLI::App& app) {
   auto options = std::make_shared<CurveOptions>();
-  CLI::App* command = app.add_subcommand(
-      "curve", "Curve a mesh in its metric: reinsert every volume vertex with the P2 cavity operator");
+  CLI::App* command = app.add_subcommand("curve", "Curve a mesh in its metric: reinsert every volume vertex with the P2 cavity operator");
   command->add_option("input", options->input, "mesh to curve (.mesh, .meshb, .msh; P1 or P2)")->required();
   command->add_option("--metric", options->metric, "metric at the input's nodes (.sol/.solb)")->required();
   command->add_option("-o,--output", options->output, "curved P2 mesh to write (.mesh, .meshb, .msh, .vtu)")->required();
-  command->add_option("--surface", options->surface, "boundary curvature: p3 (a cubic surrogate of the input boundary), cad:FILE (a STEP or BREP model; "
-                      "facet refs name its surfaces or are matched by proximity), none")->capture_default_str();
-  command->add_option("--jacobian-floor", options->curving.jacobian_floor,
-                      "every element the operator creates keeps its min normalized Jacobian above this")
+  command
+      ->add_option("--surface", options->surface,
+                   "boundary curvature: p3 (a cubic surrogate of the input boundary), cad:FILE (a STEP or BREP model; "
+                   "facet refs name its surfaces or are matched by proximity), none")
+      ->capture_default_str();
+  command
+      ->add_option("--jacobian-floor", options->curving.jacobian_floor,
+                   "every element the operator creates keeps its min normalized Jacobian above this")
       ->check(finite_range(0.0, 1.0, "0 to 1"))
       ->capture_default_str();
-  command->add_option("--quadrature", options->quadrature,
-                      "rule of the length the optimizer minimizes: simpson, trapezoid (the paper's), gauss-N")
+  command
+      ->add_option("--quadrature", options->quadrature,
+                   "rule of the length the optimizer minimizes: simpson, trapezoid (the paper's), gauss-N")
       ->capture_default_str();
   command->add_option("--passes", options->curving.passes, "reinsertion passes over the volume vertices")
       ->check(CLI::Range(1, 100))
       ->capture_default_str();
   options->curving.threads = every_core();
-  command->add_option("--threads", options->curving.threads,
-                      "threads that prepare independent cavities at once (default: every core; the output does not "
-                      "depend on it)")
+  command
+      ->add_option("--threads", options->curving.threads,
+                   "threads that prepare independent cavities at once (default: every core; the output does not "
+                   "depend on it)")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
   command->add_option("--report", options->report, "write the run's figures (Table-1 columns, counters) as JSON");

@@ -60,8 +60,7 @@ Mesh<D> generated(const std::string& name, const CaseValues& values) {
 
 std::vector<double> min_normalized_jacobians(const auto& mesh) {
   std::vector<double> values;
-  for (const JacobianQuality& quality : mesh_jacobian_quality(mesh, kReportedRefinement))
-    values.push_back(quality.min_normalized_jacobian);
+  for (const JacobianQuality& quality : mesh_jacobian_quality(mesh, kReportedRefinement)) values.push_back(quality.min_normalized_jacobian);
   return values;
 }
 
@@ -102,14 +101,12 @@ void write_histograms(const std::vector<double>& gains, const std::vector<double
   }
   write_svg(written.path(options, "edge-gains.svg"),
             histogram_chart(summarize_values(gains, kBins, gain_lower, gain_upper),
-                            {"Gain of each volume edge (sphere shell)",
-                             "gain 1 − ℓ(curved) / ℓ(straight), lengths in the metric", "edges (logarithmic)",
-                             std::nullopt, true}));
+                            {"Gain of each volume edge (sphere shell)", "gain 1 − ℓ(curved) / ℓ(straight), lengths in the metric",
+                             "edges (logarithmic)", std::nullopt, true}));
   write_svg(written.path(options, "normalized-jacobians.svg"),
             histogram_chart(summarize_values(jacobians, 2 * kBins, 0, 2),
                             {"Min normalized Jacobian of each tetrahedron (sphere shell)",
-                             "min of J / |J_straight| over the element (1: as the straight element)", "tetrahedra",
-                             kJacobianColors}));
+                             "min of J / |J_straight| over the element (1: as the straight element)", "tetrahedra", kJacobianColors}));
 }
 
 // Generates the sphere-shell case and its surface metric, adapts the mesh to the metric, curves
@@ -129,7 +126,9 @@ AdaptationReport run_sphere_shell(const DemoOptions& options, Written& written) 
   AdaptationSettings adaptation;
   adaptation.hausd = 0.01 * bounding_box_diagonal(input);
   adaptation.threads = options.threads;
-  adaptation.progress = [](int pass, int cap) { progress("adapting: pass " + std::to_string(pass) + " (at most " + std::to_string(cap) + ")"); };
+  adaptation.progress = [](int pass, int cap) {
+    progress("adapting: pass " + std::to_string(pass) + " (at most " + std::to_string(cap) + ")");
+  };
   Mesh<3> mesh = input;
   AdaptedMesh<3> adapted = adapt_in_metric(mesh, metric, surface.get(), adaptation);
   CurvingOptions curving;
@@ -144,8 +143,7 @@ AdaptationReport run_sphere_shell(const DemoOptions& options, Written& written) 
 
   progress("writing the P2 mesh, its .vtu and the report");
   write_mesh_file(written.path(options, "sphere-shell-p2.meshb"), mesh);
-  write_curved_vtu(written.path(options, "sphere-shell-p2.vtu"),
-                   mesh, field);
+  write_curved_vtu(written.path(options, "sphere-shell-p2.vtu"), mesh, field);
   {
     AtomicOutput out(written.path(options, "sphere-shell-report.json"));
     write_adaptation_report_json(out.stream(), report);
@@ -159,8 +157,7 @@ AdaptationReport run_sphere_shell(const DemoOptions& options, Written& written) 
                 "adapted to a surface metric (normal size %.3g, tangential %.3g) and curved; each section filled by its "
                 "element's min normalized Jacobian",
                 kShellNormalRatio * options.h, options.h);
-  MeshFigureOptions figure{"Adapted and curved sphere shell, cut by the plane z = 0", subtitle,
-                           kJacobianColors, "min normalized Jacobian",
+  MeshFigureOptions figure{"Adapted and curved sphere shell, cut by the plane z = 0", subtitle, kJacobianColors, "min normalized Jacobian",
                            Box{{{0.28, 0.28}}, {{0.58, 0.58}}}};  // the detail: where the inner sphere meets x = y
   write_svg(written.path(options, "sphere-shell-cut.svg"),
             section_picture(cut_p2_mesh(mesh, CutPlane{}, kCutSubdivisions), jacobians, figure));
@@ -185,8 +182,7 @@ CurvingReport run_shear_circle(const DemoOptions& options, Written& written) {
                            "sizes 0.001 across the circle r = 0.75, 0.1 along it",
                            kJacobianColors, "min normalized Jacobian",
                            Box{{{-0.06, 0.69}}, {{0.06, 0.81}}}};  // the detail: the layer at its top
-  write_svg(written.path(options, "shear-circle-p2.svg"),
-            p2_mesh_picture(mesh, min_normalized_jacobians(mesh), figure));
+  write_svg(written.path(options, "shear-circle-p2.svg"), p2_mesh_picture(mesh, min_normalized_jacobians(mesh), figure));
   return report;
 }
 
@@ -207,8 +203,7 @@ void run_demo(const DemoOptions& options) {
   char line[200];
   std::snprintf(line, sizeof line,
                 "curved the shear circle (2D): %d triangles, normalized Jacobian min %.3g, gain avg / max %.2f%% / %.1f%%",
-                shear_circle.elements, shear_circle.normalized_jacobian.min, 100 * shear_circle.average_gain,
-                100 * shear_circle.max_gain);
+                shear_circle.elements, shear_circle.normalized_jacobian.min, 100 * shear_circle.average_gain, 100 * shear_circle.max_gain);
   std::cout << line << '\n';
   std::size_t width = 0;
   for (const auto& file : written.files) width = std::max(width, file.first.size());
@@ -222,16 +217,17 @@ void run_demo(const DemoOptions& options) {
 void add_demo_command(CLI::App& app) {
   auto options = std::make_shared<DemoOptions>();
   CLI::App* command = app.add_subcommand(
-      "demo", "The main job, no input needed: adapt the sphere-shell case to a surface metric and curve it (and the 2D "
-              "shear circle), write the P2 mesh, the report and pictures");
-  command->add_option("-o,--output", options->directory, "folder of the output files (created if needed)")
-      ->capture_default_str();
+      "demo",
+      "The main job, no input needed: adapt the sphere-shell case to a surface metric and curve it (and the 2D "
+      "shear circle), write the P2 mesh, the report and pictures");
+  command->add_option("-o,--output", options->directory, "folder of the output files (created if needed)")->capture_default_str();
   command->add_option("--threads", options->threads, "threads of the curving (the output does not depend on it)")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
-  command->add_option("--h", options->h,
-                      "the sphere-shell mesh's edge length and its metric's tangential size; the normal size is a tenth "
-                      "(smaller: more tetrahedra: 121,094 at 0.2)")
+  command
+      ->add_option("--h", options->h,
+                   "the sphere-shell mesh's edge length and its metric's tangential size; the normal size is a tenth "
+                   "(smaller: more tetrahedra: 121,094 at 0.2)")
       ->check(finite_range(0.02, 0.5, "0.02 to 0.5"))
       ->capture_default_str();
   command->callback([options] { run_demo(*options); });

@@ -79,8 +79,8 @@ void add_generate_command(CLI::App& app) {
   command->footer(cases_footer());
   for (const CaseDefinition& definition : case_definitions()) {
     auto values = std::make_shared<CaseValues>();
-    CLI::App* case_command =
-        command->add_subcommand(definition.name, definition.description + " (" + std::to_string(definition.dimension) + "D)");
+    CLI::App* case_command = command->add_subcommand(definition.name,
+                                                     definition.description + " (" + std::to_string(definition.dimension) + "D)");
     case_command->fallthrough();  // -o and --order may follow the case name
     for (const CaseOption& option : definition.options) {
       (*values)[option.name] = option.default_value;

@@ -57,8 +57,9 @@ Source chosen_source(const MetricOptions& options) {
   if (!options.input.empty()) given.push_back(Source::kInput);
   if (!options.back_mesh.empty()) given.push_back(Source::kInterpolated);
   if (given.size() != 1)
-    throw Error("give exactly one metric source: --analytic NAME, --implied, --surface HN,HT, --hessian FIELD, --input SOL "
-                "or --from MESH --from-metric SOL");
+    throw Error(
+        "give exactly one metric source: --analytic NAME, --implied, --surface HN,HT, --hessian FIELD, --input SOL "
+        "or --from MESH --from-metric SOL");
   return given.front();
 }
 
@@ -80,8 +81,7 @@ void check_options_apply(const MetricOptions& options, Source source) {
   };
   refuse_unless(options.h.has_value(), uniform, "--h");
   refuse_unless(options.center.has_value() || !options.axis.empty(), linear, "--center, --axis");
-  refuse_unless(options.radius.has_value() || options.width.has_value() || !options.origin.empty(), shaped,
-                "--radius, --width, --origin");
+  refuse_unless(options.radius.has_value() || options.width.has_value() || !options.origin.empty(), shaped, "--radius, --width, --origin");
   refuse_unless(options.h_min.has_value(), linear || shear || hessian, "--h-min");
   refuse_unless(options.h_max.has_value(), linear || shear || hessian || source == Source::kSurface, "--h-max");
   refuse_unless(options.complexity.has_value() || options.norm.has_value(), hessian, "--complexity, --norm");
@@ -219,8 +219,7 @@ SolutionField rows_in_file_order(const Mesh<D>& mesh, const MeshFileContent& fil
 }
 
 template <int D>
-void write_metric(const Mesh<D>& mesh, const MeshFileContent& file, const MetricOptions& options, Source source,
-                  OutputSet& outputs) {
+void write_metric(const Mesh<D>& mesh, const MeshFileContent& file, const MetricOptions& options, Source source, OutputSet& outputs) {
   check_memory_fits("the metric on " + options.mesh, mesh.element_count(), kMetricBytesPerElement);
   SourceMetrics<D> metrics = source_metrics(mesh, file, options, source);
   if (options.gradation) {
@@ -230,8 +229,8 @@ void write_metric(const Mesh<D>& mesh, const MeshFileContent& file, const Metric
   SolutionField rows = rows_in_file_order(mesh, file, metrics);
   write_solution_file(options.output, {D, rows.count(), {rows}});
   outputs.commit();
-  std::cout << "wrote " << options.output << ": " << rows.count() << " metrics, complexity "
-            << metric_complexity(mesh, metrics.vertices) << " (" << mesh_summary(mesh) << ")\n";
+  std::cout << "wrote " << options.output << ": " << rows.count() << " metrics, complexity " << metric_complexity(mesh, metrics.vertices)
+            << " (" << mesh_summary(mesh) << ")\n";
 }
 
 void run_metric(const MetricOptions& options) {
@@ -272,15 +271,17 @@ void add_metric_command(CLI::App& app) {
 
   command->add_option("--analytic", options->analytic, "source: an analytic metric (" + names_text(analytic_metric_names()) + ")");
   command->add_flag("--implied", options->implied, "source: the metric in which MESH is a unit mesh");
-  command->add_option("--surface", options->surface,
-                      "source: size HN along the boundary normal and HT along the boundary, carried inside by "
-                      "--gradation (required)")
+  command
+      ->add_option("--surface", options->surface,
+                   "source: size HN along the boundary normal and HT along the boundary, carried inside by "
+                   "--gradation (required)")
       ->delimiter(',')
       ->expected(2)
       ->check(finite_positive());
   command->add_option("--hessian", options->hessian,
                       "source: the Lp metric of the Hessian of a scalar field, FIELD.sol(b) at the nodes or "
-                      "analytic:NAME (" + names_text(analytic_field_names()) + ")");
+                      "analytic:NAME (" +
+                          names_text(analytic_field_names()) + ")");
   command->add_option("--input", options->input, "source: an existing metric of MESH (.sol/.solb), e.g. to grade it");
   command->add_option("--from", options->back_mesh,
                       "source: the metric of another mesh BACK (.mesh, .meshb, .msh; --from-metric) interpolated "
@@ -290,12 +291,12 @@ void add_metric_command(CLI::App& app) {
       ->check(finite_positive());
 
   command->add_option("--h", options->h, "analytic uniform: size (default 0.1)")->check(finite_positive());
-  command->add_option("--h-min", options->h_min,
-                      "analytic: smallest size (default 0.001); hessian: bound on |H| (default 1e-6 h-max)")
+  command->add_option("--h-min", options->h_min, "analytic: smallest size (default 0.001); hessian: bound on |H| (default 1e-6 h-max)")
       ->check(finite_positive());
-  command->add_option("--h-max", options->h_max,
-                      "analytic: largest size (default 0.1); hessian: bound on |H|, surface: initial interior size "
-                      "(default for both: the bounding-box diagonal)")
+  command
+      ->add_option("--h-max", options->h_max,
+                   "analytic: largest size (default 0.1); hessian: bound on |H|, surface: initial interior size "
+                   "(default for both: the bounding-box diagonal)")
       ->check(finite_positive());
   command->add_option("--axis", options->axis, "analytic linear: the axis the size varies along (x, y, z; default the last)")
       ->check(CLI::IsMember({"x", "y", "z"}));

@@ -16,7 +16,8 @@ inline CLI::Validator finite_range(double min, double max, const std::string& de
       [min, max](std::string& input) -> std::string {
         double value = 0;
         if (!CLI::detail::lexical_cast(input, value) || !std::isfinite(value)) return "'" + input + "' is not a finite number";
-        if (value < min || value > max) return "'" + input + "' is not in " + CLI::detail::to_string(min) + " to " + CLI::detail::to_string(max);
+        if (value < min || value > max)
+          return "'" + input + "' is not in " + CLI::detail::to_string(min) + " to " + CLI::detail::to_string(max);
         return "";
       },
       description);

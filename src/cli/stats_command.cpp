@@ -46,7 +46,8 @@ void run_stats(const StatsOptions& options) {
 void add_stats_command(CLI::App& app) {
   auto options = std::make_shared<StatsOptions>();
   CLI::App* command = app.add_subcommand(
-      "stats", "Report a mesh: counts, refs, P1 measures, consistency, Jacobian figures, memory; edge lengths and element "
+      "stats",
+      "Report a mesh: counts, refs, P1 measures, consistency, Jacobian figures, memory; edge lengths and element "
       "qualities in a metric. "
       "Exit code 2 when the mesh is invalid");
   command->add_option("mesh", options->mesh, "mesh to read (.mesh, .meshb, .msh)")->required();

@@ -10,7 +10,8 @@ namespace {
 
 template <int D>
 double determinant(const Mat<D>& a) {
-  if constexpr (D == 2) return a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0);
+  if constexpr (D == 2)
+    return a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0);
   else
     return a(0, 0) * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)) - a(0, 1) * (a(1, 0) * a(2, 2) - a(1, 2) * a(2, 0)) +
            a(0, 2) * (a(1, 0) * a(2, 1) - a(1, 1) * a(2, 0));

@@ -21,14 +21,12 @@ EdgeEndpoint<D> edge_endpoint(const Vec<D>& position, const SymMat<D>& log_metri
 }
 
 template <int D>
-EdgeLengthFunction<D>::EdgeLengthFunction(const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b,
-                                          const QuadratureRule& rule)
+EdgeLengthFunction<D>::EdgeLengthFunction(const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b, const QuadratureRule& rule)
     : a_(a), b_(b), rule_(rule) {}
 
 template <int D>
 const ExpSpectrum<D>& EdgeLengthFunction<D>::spectrum_at(std::size_t q, const SymMat<D>& log_node, bool at_same_point,
-                                                         EdgeLengthScratch<D>& scratch,
-                                                         LazySlot<ExpSpectrum<D>>& uncached) const {
+                                                         EdgeLengthScratch<D>& scratch, LazySlot<ExpSpectrum<D>>& uncached) const {
   if (at_same_point) return *scratch.spectrum[q];
   const EdgeBasis phi = edge_basis(rule_.nodes[q]);
   if (q < kCachedNodes) scratch.frechet[q].reset();
@@ -37,8 +35,7 @@ const ExpSpectrum<D>& EdgeLengthFunction<D>::spectrum_at(std::size_t q, const Sy
 }
 
 template <int D>
-const ExpFrechet<D>& EdgeLengthFunction<D>::frechet_at(std::size_t q, const ExpSpectrum<D>& spectrum,
-                                                       EdgeLengthScratch<D>& scratch,
+const ExpFrechet<D>& EdgeLengthFunction<D>::frechet_at(std::size_t q, const ExpSpectrum<D>& spectrum, EdgeLengthScratch<D>& scratch,
                                                        LazySlot<ExpFrechet<D>>& uncached) const {
   LazySlot<ExpFrechet<D>>& frechet = q < kCachedNodes ? scratch.frechet[q] : uncached;
   if (!frechet) frechet.emplace(spectrum);  // spectrum_at resets the cached one when it decomposes anew
@@ -53,8 +50,8 @@ void EdgeLengthFunction<D>::remember(const SymMat<D>& log_node, EdgeLengthScratc
 
 template <int D>
 EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const SymMat<D>& log_node,
-                                                   const std::array<SymMat<D>, D>& log_node_gradient,
-                                                   Order order, EdgeLengthScratch<D>& scratch) const {
+                                                   const std::array<SymMat<D>, D>& log_node_gradient, Order order,
+                                                   EdgeLengthScratch<D>& scratch) const {
   // Accumulated in locals and returned whole: a zero-initialized result object in memory costs a block clear.
   double length = 0;
   Vec<D> gradient{}, node_gradient{};
@@ -68,7 +65,7 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
 
     // g = uᵀ E u; ∂_i g = 2 du (E u)_i + uᵀ ∂_iE u; ∂_ij g = 2 du² E_ij + 2 du ((∂_jE u)_i + (∂_iE u)_j) + uᵀ ∂_ijE u.
     double g;
-    Vec<D> dg{}, dg_dnode{};  // ∂g/∂X, and its part at fixed T
+    Vec<D> dg{}, dg_dnode{};     // ∂g/∂X, and its part at fixed T
     SymMat<D> d2g{}, dg_dlog{};  // ∂²g/∂X², ∂g/∂L^L
     if (phi.middle == 0) {
       const SymMat<D>& e = t == 0 ? a_.metric : b_.metric;  // φ_M = 0 only at the ends
@@ -101,8 +98,7 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
             std::array<Vec<D>, D> de_u;  // ∂_iE u
             for (int i = 0; i < D; ++i) de_u[i] = exp_t.derivative(directions[i]) * u;
             for (int i = 0; i < D; ++i)
-              for (int j = 0; j <= i; ++j)
-                d2g(i, j) += 2 * du * du * exp_t.value()(i, j) + 2 * du * (de_u[j][i] + de_u[i][j]);
+              for (int j = 0; j <= i; ++j) d2g(i, j) += 2 * du * du * exp_t.value()(i, j) + 2 * du * (de_u[j][i] + de_u[i][j]);
           }
         }
       }
@@ -123,14 +119,13 @@ EdgeLengthValue<D> EdgeLengthFunction<D>::evaluate(const Vec<D>& node, const Sym
 }
 
 template <int D>
-double EdgeLengthFunction<D>::length(const Vec<D>& node, const SymMat<D>& log_node,
-                                     EdgeLengthScratch<D>& scratch) const {
+double EdgeLengthFunction<D>::length(const Vec<D>& node, const SymMat<D>& log_node, EdgeLengthScratch<D>& scratch) const {
   return evaluate(node, log_node, {}, Order::kValue, scratch).length;
 }
 
 template <int D>
 double EdgeLengthFunction<D>::curvature(const Vec<D>& node, const SymMat<D>& log_node, const Vec<D>& d,
-                                       const SymMat<D>& log_node_derivative, EdgeLengthScratch<D>& scratch) const {
+                                        const SymMat<D>& log_node_derivative, EdgeLengthScratch<D>& scratch) const {
   // Along the line, g(s) = u(s)ᵀ E(s) u(s) with u' = du·d and E' = Dexp[φ_M δ]:
   //   g' = 2 du dᵀE u + uᵀ Dexp[φ_M δ] u,  g'' = 2 du² dᵀE d + 4 du dᵀ Dexp[φ_M δ] u + uᵀ D²exp[φ_M δ, φ_M δ] u.
   const bool at_same_point = same_point(scratch, log_node);
@@ -150,8 +145,7 @@ double EdgeLengthFunction<D>::curvature(const Vec<D>& node, const SymMat<D>& log
     } else {
       LazySlot<ExpSpectrum<D>> uncached;
       LazySlot<ExpFrechet<D>> frechet_uncached;
-      const ExpFrechet<D>& exp_t =
-          frechet_at(q, spectrum_at(q, log_node, at_same_point, scratch, uncached), scratch, frechet_uncached);
+      const ExpFrechet<D>& exp_t = frechet_at(q, spectrum_at(q, log_node, at_same_point, scratch, uncached), scratch, frechet_uncached);
       const SymMat<D> direction = phi.middle * log_node_derivative;
       const auto along = exp_t.squared_length_derivatives(direction, u);
       g = exp_t.squared_length(u);

@@ -20,7 +20,7 @@ namespace hocav {
 template <int D>
 struct EdgeLengthValue {
   double length = 0;
-  Vec<D> gradient{};   // ∂ℓ/∂X (when asked)
+  Vec<D> gradient{};    // ∂ℓ/∂X (when asked)
   SymMat<D> hessian{};  // ∂²ℓ/∂X² (when asked)
   // With the gradient, its two parts: ∂ℓ/∂X with L^L held fixed, and ∂ℓ/∂L^L with X held fixed, so that
   // gradient_i = node_gradient_i + ⟨log_node_gradient, ∂L^L/∂X_i⟩. Where L^L(X) has a kink (a back-mesh
@@ -64,24 +64,22 @@ template <int D>
 class EdgeLengthFunction {
  public:
   EdgeLengthFunction(const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b, const QuadratureRule& rule);
-  EdgeLengthFunction(const Vec<D>& a, const Vec<D>& b, const SymMat<D>& log_a, const SymMat<D>& log_b,
-                     const QuadratureRule& rule)
+  EdgeLengthFunction(const Vec<D>& a, const Vec<D>& b, const SymMat<D>& log_a, const SymMat<D>& log_b, const QuadratureRule& rule)
       : EdgeLengthFunction(edge_endpoint(a, log_a), edge_endpoint(b, log_b), rule) {}
 
   enum class Order { kValue, kGradient, kHessian };
   // `log_node` = L^L(X), `log_node_gradient[i]` = ∂L^L/∂X_i (needed from Order::kGradient on).
-  EdgeLengthValue<D> evaluate(const Vec<D>& node, const SymMat<D>& log_node,
-                              const std::array<SymMat<D>, D>& log_node_gradient, Order order,
+  EdgeLengthValue<D> evaluate(const Vec<D>& node, const SymMat<D>& log_node, const std::array<SymMat<D>, D>& log_node_gradient, Order order,
                               EdgeLengthScratch<D>& scratch) const;
   double length(const Vec<D>& node, const SymMat<D>& log_node, EdgeLengthScratch<D>& scratch) const;
   // dᵀ ∂²ℓ/∂X² d, the curvature of ℓ along the line X + s·d, where `log_node_derivative` = Σ_i d_i ∂L^L/∂X_i:
   // one direction of the Hessian for a fraction of its cost (a step along a known direction needs no more).
-  double curvature(const Vec<D>& node, const SymMat<D>& log_node, const Vec<D>& d,
-                   const SymMat<D>& log_node_derivative, EdgeLengthScratch<D>& scratch) const;
+  double curvature(const Vec<D>& node, const SymMat<D>& log_node, const Vec<D>& d, const SymMat<D>& log_node_derivative,
+                   EdgeLengthScratch<D>& scratch) const;
 
   // The same, nothing reused.
-  EdgeLengthValue<D> evaluate(const Vec<D>& node, const SymMat<D>& log_node,
-                              const std::array<SymMat<D>, D>& log_node_gradient, Order order) const {
+  EdgeLengthValue<D> evaluate(const Vec<D>& node, const SymMat<D>& log_node, const std::array<SymMat<D>, D>& log_node_gradient,
+                              Order order) const {
     EdgeLengthScratch<D> scratch;
     return evaluate(node, log_node, log_node_gradient, order, scratch);
   }
@@ -89,8 +87,7 @@ class EdgeLengthFunction {
     EdgeLengthScratch<D> scratch;
     return length(node, log_node, scratch);
   }
-  double curvature(const Vec<D>& node, const SymMat<D>& log_node, const Vec<D>& d,
-                   const SymMat<D>& log_node_derivative) const {
+  double curvature(const Vec<D>& node, const SymMat<D>& log_node, const Vec<D>& d, const SymMat<D>& log_node_derivative) const {
     EdgeLengthScratch<D> scratch;
     return curvature(node, log_node, d, log_node_derivative, scratch);
   }
@@ -105,8 +102,8 @@ class EdgeLengthFunction {
     return scratch.owner == this && log_node == scratch.log_node;
   }
   // exp_spectrum(T(t_q)) at node q, from the scratch when at the same point.
-  const ExpSpectrum<D>& spectrum_at(std::size_t q, const SymMat<D>& log_node, bool at_same_point,
-                                    EdgeLengthScratch<D>& scratch, LazySlot<ExpSpectrum<D>>& uncached) const;
+  const ExpSpectrum<D>& spectrum_at(std::size_t q, const SymMat<D>& log_node, bool at_same_point, EdgeLengthScratch<D>& scratch,
+                                    LazySlot<ExpSpectrum<D>>& uncached) const;
   // ExpFrechet of `spectrum`, the one spectrum_at just gave for node q: from the scratch when it was made at
   // the same point (a curvature after a gradient there).
   const ExpFrechet<D>& frechet_at(std::size_t q, const ExpSpectrum<D>& spectrum, EdgeLengthScratch<D>& scratch,

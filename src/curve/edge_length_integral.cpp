@@ -43,8 +43,7 @@ class LocalizedIntegrand {
 }  // namespace
 
 template <int D>
-double true_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b, const Vec<D>& node,
-                        const QuadratureRule& rule) {
+double true_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b, const Vec<D>& node, const QuadratureRule& rule) {
   LocalizedIntegrand<D> integrand(field, {a, node, b});
   double length = 0;
   for (std::size_t q = 0; q < rule.nodes.size(); ++q) length += rule.weights[q] * integrand(rule.nodes[q]);
@@ -52,8 +51,8 @@ double true_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<
 }
 
 template <int D>
-AdaptiveIntegral adaptive_true_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b,
-                                           const Vec<D>& node, double tolerance) {
+AdaptiveIntegral adaptive_true_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b, const Vec<D>& node,
+                                           double tolerance) {
   LocalizedIntegrand<D> integrand(field, {a, node, b});
   // Kinked: 16 initial pieces, so that chance agreements of K15 and G7 on long pieces across several
   // back-mesh faces do not end it early (with 1 or 4, an error 4× the tolerance was seen at 1e-5).
@@ -61,9 +60,8 @@ AdaptiveIntegral adaptive_true_edge_length(const MetricField<D>& field, const Ve
 }
 
 template <int D>
-AdaptiveIntegral adaptive_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b,
-                                      const SymMat<D>& log_a, const SymMat<D>& log_b, const Vec<D>& node,
-                                      double tolerance, Index hint) {
+AdaptiveIntegral adaptive_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b, const SymMat<D>& log_a,
+                                      const SymMat<D>& log_b, const Vec<D>& node, double tolerance, Index hint) {
   const P2Curve<D> curve{a, node, b};
   const SymMat<D> log_node = field.log_metric_at(node, hint);
   return adaptive_integral(
@@ -74,13 +72,11 @@ AdaptiveIntegral adaptive_edge_length(const MetricField<D>& field, const Vec<D>&
       tolerance);
 }
 
-#define HOCAV_INSTANTIATE(D)                                                                                     \
-  template double true_edge_length(const MetricField<D>&, const Vec<D>&, const Vec<D>&, const Vec<D>&,          \
-                                   const QuadratureRule&);                                                      \
-  template AdaptiveIntegral adaptive_true_edge_length(const MetricField<D>&, const Vec<D>&, const Vec<D>&,      \
-                                                      const Vec<D>&, double);                                   \
-  template AdaptiveIntegral adaptive_edge_length(const MetricField<D>&, const Vec<D>&, const Vec<D>&,           \
-                                                 const SymMat<D>&, const SymMat<D>&, const Vec<D>&, double, Index);
+#define HOCAV_INSTANTIATE(D)                                                                                                              \
+  template double true_edge_length(const MetricField<D>&, const Vec<D>&, const Vec<D>&, const Vec<D>&, const QuadratureRule&);            \
+  template AdaptiveIntegral adaptive_true_edge_length(const MetricField<D>&, const Vec<D>&, const Vec<D>&, const Vec<D>&, double);        \
+  template AdaptiveIntegral adaptive_edge_length(const MetricField<D>&, const Vec<D>&, const Vec<D>&, const SymMat<D>&, const SymMat<D>&, \
+                                                 const Vec<D>&, double, Index);
 HOCAV_INSTANTIATE(2)
 HOCAV_INSTANTIATE(3)
 #undef HOCAV_INSTANTIATE

@@ -13,19 +13,17 @@ namespace hocav {
 
 // The "true" Riemannian length of the curve by a fixed rule: a diagnostic (docs/method.md §5).
 template <int D>
-double true_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b, const Vec<D>& node,
-                        const QuadratureRule& rule);
+double true_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b, const Vec<D>& node, const QuadratureRule& rule);
 
 // The same to a relative tolerance (adaptive Gauss–Kronrod).
 template <int D>
-AdaptiveIntegral adaptive_true_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b,
-                                           const Vec<D>& node, double tolerance);
+AdaptiveIntegral adaptive_true_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b, const Vec<D>& node,
+                                           double tolerance);
 
 // The interpolated model (vertex log-metrics log_a, log_b; L^L localized at the node from `hint`) to a
 // relative tolerance.
 template <int D>
-AdaptiveIntegral adaptive_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b,
-                                      const SymMat<D>& log_a, const SymMat<D>& log_b, const Vec<D>& node,
-                                      double tolerance, Index hint = kNoIndex);
+AdaptiveIntegral adaptive_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b, const SymMat<D>& log_a,
+                                      const SymMat<D>& log_b, const Vec<D>& node, double tolerance, Index hint = kNoIndex);
 
 }  // namespace hocav

@@ -36,8 +36,7 @@ double fraction_inside(const typename MetricField<D>::ElementFrame& frame, const
 // Hessian shifted until positive definite (between Newton and gradient descent). `shift` is 0 for a pure
 // Newton step; false when no shift makes it definite (non-finite values).
 template <int D>
-bool newton_step_in_plane(const EdgeLengthValue<D>& value, const std::array<Vec<D>, D - 1>& basis, Vec<D>& step,
-                          double& shift) {
+bool newton_step_in_plane(const EdgeLengthValue<D>& value, const std::array<Vec<D>, D - 1>& basis, Vec<D>& step, double& shift) {
   if constexpr (D == 2) {
     const double g = dot(value.gradient, basis[0]), h = dot(basis[0], value.hessian * basis[0]);
     const double scale = std::max(1e-300, std::abs(h));
@@ -75,9 +74,8 @@ bool newton_step_in_plane(const EdgeLengthValue<D>& value, const std::array<Vec<
 }  // namespace
 
 template <int D>
-EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& end_a,
-                                         const EdgeEndpoint<D>& end_b, const Vec<D>& start, Index hint,
-                                         const EdgeOptimizerOptions& options, LocatorScratch& scratch) {
+EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& end_a, const EdgeEndpoint<D>& end_b,
+                                         const Vec<D>& start, Index hint, const EdgeOptimizerOptions& options, LocatorScratch& scratch) {
   using Order = typename EdgeLengthFunction<D>::Order;
   const EdgeLengthFunction<D> function(end_a, end_b, options.rule);
   EdgeLengthScratch<D> length_scratch;  // the decompositions of the last point, for its next evaluation
@@ -131,8 +129,7 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
       }
       kink = {};  // at the boundary, no descent into the domain: Newton's model decides
     }
-    value = function.evaluate(node, at.log_metric, frame_of(result.back_element).log_metric_gradient,
-                              Order::kHessian, length_scratch);
+    value = function.evaluate(node, at.log_metric, frame_of(result.back_element).log_metric_gradient, Order::kHessian, length_scratch);
   };
   // The slope and curvature of ℓ along d in the model of the node's element.
   auto log_metric_derivative = [&](const Vec<D>& d) {
@@ -157,8 +154,8 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
 
   for (; !optimal && result.iterations < options.max_iterations; ++result.iterations) {
     Vec<D> step;
-    double predicted;    // the decrease the step's model predicts
-    bool convex_model;   // and whether that model is convex
+    double predicted;   // the decrease the step's model predicts
+    bool convex_model;  // and whether that model is convex
     if (kink.analysed) {
       // Along d* the model is ℓ + s*t + κt²/2, κ of the element d* enters.
       const double curvature = curvature_along(kink.direction);
@@ -191,8 +188,7 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
         if (!(slope < 0)) break;
         // Along the bound's arc, s from the node, the node also moves in by s²/(2r): ℓ gains −(∂ℓ/∂r) s²/(2r)
         // over the tangent line's model, a curvature that bounds the step when ℓ pulls outward.
-        const double curvature =
-            curvature_along(tangent) + std::max(0.0, -slope_along((1 / radius) * outward)) / radius;
+        const double curvature = curvature_along(tangent) + std::max(0.0, -slope_along((1 / radius) * outward)) / radius;
         convex_model = curvature > 0;
         const double length = convex_model ? std::min(max_displacement, -slope / curvature) : max_displacement;
         step = length * tangent;
@@ -203,14 +199,11 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
     const bool along_kink = kink.analysed;
     // Converged: a step this small, or one whose predicted decrease is this small, only meets
     // round-off, where every halving of the line search would fail.
-    if (step_size < options.step_tolerance * edge_size || predicted < options.decrease_tolerance * value.length)
-      break;
+    if (step_size < options.step_tolerance * edge_size || predicted < options.decrease_tolerance * value.length) break;
     // Futile (options.futile_model_factor): the edge would stay straight. Newton's model at the start, inside
     // one element, may miss other elements' descent across a kink: only after an accepted step then.
-    if (options.futile_model_factor > 0 && starts_straight && (result.iterations > 0 || kink.analysed) &&
-        convex_model &&
-        (initial_length - value.length) + options.futile_model_factor * predicted <
-            options.min_relative_decrease * initial_length)
+    if (options.futile_model_factor > 0 && starts_straight && (result.iterations > 0 || kink.analysed) && convex_model &&
+        (initial_length - value.length) + options.futile_model_factor * predicted < options.min_relative_decrease * initial_length)
       break;
     if (step_size > trust) step = (trust / step_size) * step;
 
@@ -239,8 +232,7 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
         break;
       }
       const double increase = trial_length - value.length;
-      if (rejected_increase > 0 && rejected_increase < 1e-3 * value.length && increase > 0.25 * rejected_increase)
-        break;
+      if (rejected_increase > 0 && rejected_increase < 1e-3 * value.length && increase > 0.25 * rejected_increase) break;
       rejected_increase = increase;
       // (Not along the bound: the segment to a trial clipped onto it cuts inside, where ℓ grows fast.)
       if (halving == 0 && !along_bound) {
@@ -263,8 +255,8 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
   result.length = value.length;
 
   // Worth curving? Compare with the straight edge in the same rule.
-  double straight_length =
-      starts_straight ? initial_length : function.length(midpoint, field.sample(midpoint, hint, scratch).log_metric, length_scratch);
+  double straight_length = starts_straight ? initial_length
+                                           : function.length(midpoint, field.sample(midpoint, hint, scratch).log_metric, length_scratch);
   if (result.length > (1 - options.min_relative_decrease) * straight_length) {
     result.node = midpoint;
     result.length = straight_length;
@@ -279,17 +271,15 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
 }
 
 template <int D>
-double high_precision_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b,
-                                  const Vec<D>& node, Index hint) {
+double high_precision_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b, const Vec<D>& node,
+                                  Index hint) {
   return EdgeLengthFunction<D>(a, b, high_precision_rule()).length(node, field.log_metric_at(node, hint));
 }
 
-#define HOCAV_INSTANTIATE(D)                                                                                        \
-  template EdgeOptimization<D> optimize_edge_length(const MetricField<D>&, const EdgeEndpoint<D>&,                 \
-                                                    const EdgeEndpoint<D>&, const Vec<D>&, Index,                    \
-                                                    const EdgeOptimizerOptions&, LocatorScratch&);                  \
-  template double high_precision_edge_length(const MetricField<D>&, const EdgeEndpoint<D>&, const EdgeEndpoint<D>&, \
-                                             const Vec<D>&, Index);
+#define HOCAV_INSTANTIATE(D)                                                                                                              \
+  template EdgeOptimization<D> optimize_edge_length(const MetricField<D>&, const EdgeEndpoint<D>&, const EdgeEndpoint<D>&, const Vec<D>&, \
+                                                    Index, const EdgeOptimizerOptions&, LocatorScratch&);                                 \
+  template double high_precision_edge_length(const MetricField<D>&, const EdgeEndpoint<D>&, const EdgeEndpoint<D>&, const Vec<D>&, Index);
 HOCAV_INSTANTIATE(2)
 HOCAV_INSTANTIATE(3)
 #undef HOCAV_INSTANTIATE

@@ -1,6 +1,6 @@
 // Length optimization of one P2 edge (docs/method.md §7): minimize ℓ(X) over the Lagrange node X in the
-// bisector plane of the edge (sliding along the edge only reparametrizes it), endpoints fixed, re-localizing X in the back mesh at every iterate. ℓ is only piecewise smooth
-// (∇λ jumps across back-mesh faces), so the method is a safeguarded Newton iteration: Newton steps
+// bisector plane of the edge (sliding along the edge only reparametrizes it), endpoints fixed, re-localizing X in the back mesh at every
+// iterate. ℓ is only piecewise smooth (∇λ jumps across back-mesh faces), so the method is a safeguarded Newton iteration: Newton steps
 // where the Hessian is positive definite (shifted towards gradient descent where it is not), a
 // trust radius tied to the edge's length, and backtracking that accepts only decrease.
 #pragma once
@@ -44,42 +44,39 @@ struct EdgeOptimization {
   double optimized_length = 0;    // high-precision ℓ at the optimum (measure_gain)
   double gain = 0;                // 1 − optimized / straight (measure_gain)
   int iterations = 0;
-  int evaluations = 0;            // back-mesh localizations + length evaluations
+  int evaluations = 0;  // back-mesh localizations + length evaluations
 };
 
 // The edge is (a, b), its vertices with their metrics (edge_endpoint: make one per vertex when many
 // edges share it); `start` is the first node (the current one, or the straight midpoint); `hint` a
 // back element near it; `scratch` the caller's (one per thread), reused by the localizations.
 template <int D>
-EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& a,
-                                         const EdgeEndpoint<D>& b, const Vec<D>& start, Index hint,
-                                         const EdgeOptimizerOptions& options, LocatorScratch& scratch);
+EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b,
+                                         const Vec<D>& start, Index hint, const EdgeOptimizerOptions& options, LocatorScratch& scratch);
 // The same with a scratch of its own.
 template <int D>
-EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& a,
-                                         const EdgeEndpoint<D>& b, const Vec<D>& start, Index hint = kNoIndex,
-                                         const EdgeOptimizerOptions& options = {}) {
+EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b,
+                                         const Vec<D>& start, Index hint = kNoIndex, const EdgeOptimizerOptions& options = {}) {
   LocatorScratch scratch;
   return optimize_edge_length(field, a, b, start, hint, options, scratch);
 }
 // The same from the vertices' positions and log-metrics (log_a, log_b).
 template <int D>
-EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b,
-                                         const SymMat<D>& log_a, const SymMat<D>& log_b, const Vec<D>& start,
-                                         Index hint = kNoIndex, const EdgeOptimizerOptions& options = {}) {
+EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b, const SymMat<D>& log_a,
+                                         const SymMat<D>& log_b, const Vec<D>& start, Index hint = kNoIndex,
+                                         const EdgeOptimizerOptions& options = {}) {
   return optimize_edge_length(field, edge_endpoint(a, log_a), edge_endpoint(b, log_b), start, hint, options);
 }
 
 // High-precision ℓ of the P2 edge (a, node, b) in the closed form of eq 12 (metric from the back
 // mesh at the node only).
 template <int D>
-double high_precision_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b,
-                                  const Vec<D>& node, Index hint = kNoIndex);
+double high_precision_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b, const Vec<D>& node,
+                                  Index hint = kNoIndex);
 // The same from the vertices' positions and log-metrics.
 template <int D>
-double high_precision_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b,
-                                  const SymMat<D>& log_a, const SymMat<D>& log_b, const Vec<D>& node,
-                                  Index hint = kNoIndex) {
+double high_precision_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b, const SymMat<D>& log_a,
+                                  const SymMat<D>& log_b, const Vec<D>& node, Index hint = kNoIndex) {
   return high_precision_edge_length(field, edge_endpoint(a, log_a), edge_endpoint(b, log_b), node, hint);
 }
 

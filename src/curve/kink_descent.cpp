@@ -60,8 +60,7 @@ KinkDescent<2> descent_2d(const MetricField<2>& field, const Localization<2>& wh
   KinkDescent<2> best;
   consider(best, slope_into(where.element, gradients, inward), inward, where.element);
   if (other != kNoIndex) {  // else a boundary edge: the ray into the domain only
-    consider(best, slope_into(other, barycentric_gradients<2>(field.locator().element_points(other)), -inward),
-             -inward, other);
+    consider(best, slope_into(other, barycentric_gradients<2>(field.locator().element_points(other)), -inward), -inward, other);
     best.whole_plane = true;
   }
   best.analysed = true;
@@ -69,8 +68,7 @@ KinkDescent<2> descent_2d(const MetricField<2>& field, const Localization<2>& wh
 }
 
 // ∂ℓ/∂X in back element k: the part at fixed L^L plus Σ_j ⟨∂ℓ/∂L^L, R_j⟩ ∇λ_j.
-Vec3 element_gradient(const MetricField<3>& field, const EdgeLengthValue<3>& value, Index k,
-                      const std::array<Vec3, 4>& gradients) {
+Vec3 element_gradient(const MetricField<3>& field, const EdgeLengthValue<3>& value, Index k, const std::array<Vec3, 4>& gradients) {
   Vec3 result = value.node_gradient;
   for (int j = 0; j < 4; ++j) result += vertex_rate(field, value, field.back_mesh().element(k)[j]) * gradients[j];
   return result;
@@ -101,8 +99,7 @@ KinkDescent<3> face_descent(const MetricField<3>& field, const Localization<3>& 
   const double norm1 = norm(g1);
   if (norm1 > 0 && side * dot(g1, into_k1) < 0) consider(best, -norm1, (-1 / norm1) * g1, k1);
   if (k2 != kNoIndex) {  // else a boundary face: the domain's half plane only
-    const Vec3 g2 = onto_plane(
-        element_gradient(field, value, k2, barycentric_gradients<3>(field.locator().element_points(k2))));
+    const Vec3 g2 = onto_plane(element_gradient(field, value, k2, barycentric_gradients<3>(field.locator().element_points(k2))));
     const double norm2 = norm(g2);
     if (norm2 > 0 && side * dot(g2, into_k1) > 0) consider(best, -norm2, (-1 / norm2) * g2, k2);
     best.whole_plane = true;
@@ -166,8 +163,7 @@ KinkDescent<3> descent_3d(const MetricField<3>& field, const Localization<3>& wh
     const Vec3 to_s = mesh.vertex(s) - point_p;
     const double dq = orientation * dot(edge_direction, to_s);
     const Vec3 ray = dq * along + ds * to_s;
-    const double slope =
-        dot(value.node_gradient, ray) + rate_q * dq + vertex_rate(field, value, s) * ds - rate_p * (dq + ds);
+    const double slope = dot(value.node_gradient, ray) + rate_q * dq + vertex_rate(field, value, s) * ds - rate_p * (dq + ds);
     const double length = norm(ray);
     consider(best, slope / length, (1 / length) * ray, element);
     return Ray{ray, slope, s};
@@ -221,13 +217,13 @@ bool on_back_mesh_face(const Localization<D>& where) {
 template bool on_back_mesh_face(const Localization<2>&);
 template bool on_back_mesh_face(const Localization<3>&);
 
-KinkDescent<2> steepest_descent_on_kink(const MetricField<2>& field, const Localization<2>& where,
-                                        const Vec2& edge_direction, const EdgeLengthValue<2>& value) {
+KinkDescent<2> steepest_descent_on_kink(const MetricField<2>& field, const Localization<2>& where, const Vec2& edge_direction,
+                                        const EdgeLengthValue<2>& value) {
   return where.inside ? descent_2d(field, where, edge_direction, value) : KinkDescent<2>{};
 }
 
-KinkDescent<3> steepest_descent_on_kink(const MetricField<3>& field, const Localization<3>& where,
-                                        const Vec3& edge_direction, const EdgeLengthValue<3>& value) {
+KinkDescent<3> steepest_descent_on_kink(const MetricField<3>& field, const Localization<3>& where, const Vec3& edge_direction,
+                                        const EdgeLengthValue<3>& value) {
   return where.inside ? descent_3d(field, where, edge_direction, value) : KinkDescent<3>{};
 }
 

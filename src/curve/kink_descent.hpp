@@ -39,7 +39,7 @@ bool on_back_mesh_face(const Localization<D>& where);
 
 template <int D>
 struct KinkDescent {
-  bool analysed = false;     // X is on a kink of the kinds above; the rest holds only then
+  bool analysed = false;  // X is on a kink of the kinds above; the rest holds only then
   // Whether the sectors tile the whole plane. At the boundary (an open ring of a boundary edge, a boundary
   // face, a 2D boundary edge) only the domain's side is analysed: s* is then the least slope into the domain,
   // which proves a descent when negative but no minimum (outside, the metric is an extension).
@@ -51,9 +51,9 @@ struct KinkDescent {
 
 // `where`: the localization of X; `edge_direction`: the unit direction of the edge; `value`: ℓ at X
 // with the parts of its gradient (EdgeLengthValue::node_gradient and log_node_gradient).
-KinkDescent<2> steepest_descent_on_kink(const MetricField<2>& field, const Localization<2>& where,
-                                        const Vec2& edge_direction, const EdgeLengthValue<2>& value);
-KinkDescent<3> steepest_descent_on_kink(const MetricField<3>& field, const Localization<3>& where,
-                                        const Vec3& edge_direction, const EdgeLengthValue<3>& value);
+KinkDescent<2> steepest_descent_on_kink(const MetricField<2>& field, const Localization<2>& where, const Vec2& edge_direction,
+                                        const EdgeLengthValue<2>& value);
+KinkDescent<3> steepest_descent_on_kink(const MetricField<3>& field, const Localization<3>& where, const Vec3& edge_direction,
+                                        const EdgeLengthValue<3>& value);
 
 }  // namespace hocav

@@ -60,8 +60,7 @@ const QuadratureRule& default_optimizer_rule() { return simpson_rule(); }
 QuadratureRule quadrature_rule_named(const std::string& name) {
   if (name == "trapezoid") return trapezoid_rule();
   if (name == "simpson") return simpson_rule();
-  if (name.starts_with("gauss-") && name.size() > 6 && name.find_first_not_of("0123456789", 6) == std::string::npos &&
-      name.size() < 10)
+  if (name.starts_with("gauss-") && name.size() > 6 && name.find_first_not_of("0123456789", 6) == std::string::npos && name.size() < 10)
     return gauss_legendre_rule(std::stoi(name.substr(6)));
   throw Error("unknown quadrature '" + name + "' (trapezoid, simpson, gauss-N)");
 }
@@ -74,13 +73,13 @@ namespace {
 // The 15-point Kronrod extension of the 7-point Gauss–Legendre rule on [−1, 1] (nodes ±x_k, the Gauss
 // points being the odd k; x_7 = 0), as tabulated in QUADPACK's qk15.
 constexpr std::array<double, 8> kKronrodNodes = {0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
-                                                  0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
-                                                  0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
-                                                  0.207784955007898467600689403773245, 0.0};
-constexpr std::array<double, 8> kKronrodWeights = {
-    0.022935322010529224963732008058970, 0.063092092629978553290700663189204, 0.104790010322250183839876322541518,
-    0.140653259715525918745189590510238, 0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
-    0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
+                                                 0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
+                                                 0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
+                                                 0.207784955007898467600689403773245, 0.0};
+constexpr std::array<double, 8> kKronrodWeights = {0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
+                                                   0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
+                                                   0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
+                                                   0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
 // Weights of the Gauss points x_1, x_3, x_5, x_7.
 constexpr std::array<double, 4> kGaussWeights = {0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
                                                  0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
@@ -114,8 +113,7 @@ Piece kronrod_piece(const std::function<double(double)>& f, double low, double h
 
 }  // namespace
 
-AdaptiveIntegral adaptive_integral(const std::function<double(double)>& f, double tolerance, int initial_pieces,
-                                   int max_pieces) {
+AdaptiveIntegral adaptive_integral(const std::function<double(double)>& f, double tolerance, int initial_pieces, int max_pieces) {
   std::vector<Piece> pieces;
   for (int p = 0; p < initial_pieces; ++p)
     pieces.push_back(kronrod_piece(f, static_cast<double>(p) / initial_pieces, static_cast<double>(p + 1) / initial_pieces));
@@ -126,8 +124,7 @@ AdaptiveIntegral adaptive_integral(const std::function<double(double)>& f, doubl
     for (const Piece& piece : pieces) result.value += piece.value, result.error_estimate += piece.error;
     result.converged = result.error_estimate <= tolerance * std::abs(result.value);
     if (result.converged || static_cast<int>(pieces.size()) >= max_pieces) return result;
-    auto worst = std::max_element(pieces.begin(), pieces.end(),
-                                  [](const Piece& x, const Piece& y) { return x.error < y.error; });
+    auto worst = std::max_element(pieces.begin(), pieces.end(), [](const Piece& x, const Piece& y) { return x.error < y.error; });
     const double low = worst->low, high = worst->high, centre = 0.5 * (low + high);
     *worst = kronrod_piece(f, low, centre);
     pieces.push_back(kronrod_piece(f, centre, high));

@@ -54,7 +54,6 @@ struct AdaptiveIntegral {
   int evaluations = 0;        // calls of f: 15 per piece
   bool converged = false;     // error_estimate <= tolerance·|value|
 };
-AdaptiveIntegral adaptive_integral(const std::function<double(double)>& f, double tolerance, int initial_pieces = 1,
-                                   int max_pieces = 1000);
+AdaptiveIntegral adaptive_integral(const std::function<double(double)>& f, double tolerance, int initial_pieces = 1, int max_pieces = 1000);
 
 }  // namespace hocav

@@ -24,8 +24,7 @@ SymMat<D> intersect_metrics(const SymMat<D>& m1, const SymMat<D>& m2) {
   SymEigen<D> relative = spd_eigen(reduced);
   // N has the signs of M2's eigenvalues; ask is_spd itself only in the rare case N looks indefinite, which rounding
   // can cause for an SPD M2 near κ = 1/eps (its directions with ν ≤ 0 < 1 are then simply not grown).
-  if (!is_positive_definite(relative) && !is_spd(m2))
-    throw Error("intersect_metrics: the second metric is not positive definite");
+  if (!is_positive_definite(relative) && !is_spd(m2)) throw Error("intersect_metrics: the second metric is not positive definite");
   // N = Q diag(ν) Qᵀ gives p_k = V Λ^{-1/2} q_k, p_kᵀM1p_k = 1, p_kᵀM2p_k = ν_k, hence
   // M1∩M2 = M1 + Σ_k (ν_k − 1)⁺ w_k w_kᵀ with w_k = V Λ^{1/2} q_k. Adding PSD terms to M1 itself keeps the
   // result ≥ M1 to rounding however ill-conditioned M1 is, and returns M1 unchanged when M2 ≤ M1.

@@ -21,8 +21,7 @@ struct Rotation {
 Rotation jacobi_rotation(double a_pp, double a_qq, double a_pq) {
   double zeta = (a_qq - a_pp) / (2.0 * a_pq);
   // Past 1e150, ζ² would overflow; tan ≈ 1/(2ζ) is then exact to rounding.
-  double tan =
-      std::abs(zeta) < 1e150 ? std::copysign(1.0, zeta) / (std::abs(zeta) + std::sqrt(1.0 + zeta * zeta)) : 0.5 / zeta;
+  double tan = std::abs(zeta) < 1e150 ? std::copysign(1.0, zeta) / (std::abs(zeta) + std::sqrt(1.0 + zeta * zeta)) : 0.5 / zeta;
   double cos = 1.0 / std::sqrt(1.0 + tan * tan);
   return {cos, tan * cos, tan};
 }
@@ -183,8 +182,7 @@ SymEigen<3> closed_form_eigen(const SymMat<3>& a) {
   Vec3 low_vector = x[1] * u - x[0] * w, high_vector = x[0] * u + x[1] * w;
 
   double separated_value = shift + p * quadratic_form(b, v0), low = shift + p * pair.low, high = shift + p * pair.high;
-  if (largest_is_separated)
-    return {{{low, high, separated_value}}, Mat<3>::from_columns({low_vector, high_vector, v0})};
+  if (largest_is_separated) return {{{low, high, separated_value}}, Mat<3>::from_columns({low_vector, high_vector, v0})};
   return {{{separated_value, low, high}}, Mat<3>::from_columns({v0, low_vector, high_vector})};
 }
 

@@ -29,8 +29,7 @@ SymEigen<D> checked_spd_eigen(const SymMat<D>& m, const char* caller) {
   if (!is_positive_definite(eigen)) {
     char smallest[32];
     std::snprintf(smallest, sizeof smallest, "%.3g", eigen.values[0]);
-    throw Error(std::string(caller) + ": the matrix is not symmetric positive definite (smallest eigenvalue " +
-                smallest + ")");
+    throw Error(std::string(caller) + ": the matrix is not symmetric positive definite (smallest eigenvalue " + smallest + ")");
   }
   return eigen;
 }
@@ -115,8 +114,7 @@ double exp_divided_difference(double a, double b, double c) {
   std::array<double, 3> sorted = {a, b, c};
   std::sort(sorted.begin(), sorted.end());
   auto [lo, mid, hi] = sorted;
-  return second_difference(lo, mid, hi, exp_divided_difference(hi, mid), exp_divided_difference(mid, lo), std::exp(lo),
-                           std::exp(hi));
+  return second_difference(lo, mid, hi, exp_divided_difference(hi, mid), exp_divided_difference(mid, lo), std::exp(lo), std::exp(hi));
 }
 
 template <int D>
@@ -187,8 +185,7 @@ typename ExpFrechet<D>::SecondDifferences ExpFrechet<D>::second_differences() co
 }
 
 template <int D>
-SymMat<D> ExpFrechet<D>::second_derivative_in_eigenbasis(const SecondDifferences& second, const SymMat<D>& a,
-                                                         const SymMat<D>& b) const {
+SymMat<D> ExpFrechet<D>::second_derivative_in_eigenbasis(const SecondDifferences& second, const SymMat<D>& a, const SymMat<D>& b) const {
   SymMat<D> in_eigenbasis;
   for (int k = 0; k < D; ++k)
     for (int l = 0; l <= k; ++l)
@@ -198,8 +195,7 @@ SymMat<D> ExpFrechet<D>::second_derivative_in_eigenbasis(const SecondDifferences
 
 template <int D>
 SymMat<D> ExpFrechet<D>::second_derivative(const SymMat<D>& direction1, const SymMat<D>& direction2) const {
-  return congruence(eigen_.vectors, second_derivative_in_eigenbasis(second_differences(),
-                                                                    congruence_transposed(eigen_.vectors, direction1),
+  return congruence(eigen_.vectors, second_derivative_in_eigenbasis(second_differences(), congruence_transposed(eigen_.vectors, direction1),
                                                                     congruence_transposed(eigen_.vectors, direction2)));
 }
 

@@ -97,8 +97,7 @@ class ExpFrechet {
   using SecondDifferences = std::array<std::array<std::array<double, D>, D>, D>;
   SecondDifferences second_differences() const;
   // D²exp(T)[A, B] in the eigenbasis, for directions a = VᵀAV, b = VᵀBV already in it.
-  SymMat<D> second_derivative_in_eigenbasis(const SecondDifferences& second, const SymMat<D>& a,
-                                            const SymMat<D>& b) const;
+  SymMat<D> second_derivative_in_eigenbasis(const SecondDifferences& second, const SymMat<D>& a, const SymMat<D>& b) const;
 
   SymEigen<D> eigen_;
   SymMat<D> value_;

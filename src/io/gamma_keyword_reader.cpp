@@ -66,8 +66,7 @@ bool TextKeywordReader::next_keyword() {
     std::string_view token = pending_.empty() ? scanner_.next_token() : std::exchange(pending_, {});
     if (token.empty()) return false;
     if (is_number(token))
-      fail("found the number " + printable_excerpt(token) +
-           " where a keyword was expected (does a count disagree with the data?)");
+      fail("found the number " + printable_excerpt(token) + " where a keyword was expected (does a count disagree with the data?)");
     keyword_.clear();
     // Control bytes or megabytes without a space: not a keyword, and not to be echoed raw.
     if (printable_excerpt(token) != token)
@@ -134,8 +133,10 @@ BinaryKeywordReader::BinaryKeywordReader(const std::string& path) : KeywordReade
   in_.seekg(0);
   block_end_ = file_size_;
   std::int32_t code = read_word<std::int32_t>();
-  if (code == kSwappedEndianCode) swap_bytes_ = true;
-  else if (code != kNativeEndianCode) fail("not a Gamma binary file (endianness code " + std::to_string(code) + ")");
+  if (code == kSwappedEndianCode)
+    swap_bytes_ = true;
+  else if (code != kNativeEndianCode)
+    fail("not a Gamma binary file (endianness code " + std::to_string(code) + ")");
   set_version(*this, read_word<std::int32_t>());
   next_block_ = position();
 }
@@ -208,8 +209,7 @@ void BinaryKeywordReader::seek(std::uint64_t target) {
 }
 
 const char* BinaryKeywordReader::refill(std::size_t bytes) {
-  if (position() + bytes > block_end_)
-    fail(block_end_ == file_size_ ? "truncated file" : "data runs past the next keyword (NextPos)");
+  if (position() + bytes > block_end_) fail(block_end_ == file_size_ ? "truncated file" : "data runs past the next keyword (NextPos)");
   std::size_t unread = filled_ - cursor_;
   if (buffer_.size() < std::max(bytes, kReadChunkBytes)) buffer_.resize(std::max(bytes, kReadChunkBytes));
   std::copy(buffer_.begin() + static_cast<std::ptrdiff_t>(cursor_), buffer_.begin() + static_cast<std::ptrdiff_t>(filled_),

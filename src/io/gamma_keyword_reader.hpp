@@ -106,8 +106,10 @@ class BinaryKeywordReader : public KeywordReaderState {
   }
   template <class Word>
   static Word byte_swapped(Word value) {
-    if constexpr (sizeof(Word) == 4) return std::bit_cast<Word>(__builtin_bswap32(std::bit_cast<std::uint32_t>(value)));
-    else return std::bit_cast<Word>(__builtin_bswap64(std::bit_cast<std::uint64_t>(value)));
+    if constexpr (sizeof(Word) == 4)
+      return std::bit_cast<Word>(__builtin_bswap32(std::bit_cast<std::uint32_t>(value)));
+    else
+      return std::bit_cast<Word>(__builtin_bswap64(std::bit_cast<std::uint64_t>(value)));
   }
   std::int64_t read_position() { return version_ >= 3 ? read_word<std::int64_t>() : read_word<std::int32_t>(); }
   std::uint64_t position() const { return buffer_offset_ + cursor_; }

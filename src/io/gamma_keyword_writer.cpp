@@ -27,11 +27,10 @@ void append_number(std::string& buffer, Number value) {
 
 int resolve_version(const std::string& path, int requested, std::int64_t largest_integer, int default_version) {
   if (requested == 0) return largest_integer > kInt32Max ? 4 : default_version;
-  if (requested < 1 || requested > 4)
-    throw Error(path + ": unknown Gamma version " + std::to_string(requested) + " (1 to 4 are known)");
+  if (requested < 1 || requested > 4) throw Error(path + ": unknown Gamma version " + std::to_string(requested) + " (1 to 4 are known)");
   if (requested < 4 && largest_integer > kInt32Max)
-    throw Error(path + ": Gamma version " + std::to_string(requested) + " cannot hold node number " +
-                std::to_string(largest_integer) + " (use version 4)");
+    throw Error(path + ": Gamma version " + std::to_string(requested) + " cannot hold node number " + std::to_string(largest_integer) +
+                " (use version 4)");
   return requested;
 }
 
@@ -85,8 +84,7 @@ void TextKeywordWriter::flush() {
 
 // ---- binary ----
 
-BinaryKeywordWriter::BinaryKeywordWriter(const std::string& path, int version, int dimension)
-    : out_(path), path_(path), version_(version) {
+BinaryKeywordWriter::BinaryKeywordWriter(const std::string& path, int version, int dimension) : out_(path), path_(path), version_(version) {
   put<std::int32_t>(1);  // endianness code
   put<std::int32_t>(version);
   put<std::int32_t>(kDimension);
@@ -102,12 +100,14 @@ void BinaryKeywordWriter::begin_keyword(int code, std::int64_t count, int intege
   const std::uint64_t header_bytes = 4 + (version_ >= 3 ? 8 : 4) + (version_ >= 4 ? 8 : 4) + 4 * header.size();
   block_end_ = offset_ + header_bytes + record_bytes * static_cast<std::uint64_t>(count);
   if (version_ <= 2 && block_end_ > static_cast<std::uint64_t>(kInt32Max))
-    throw Error(path_ + ": " + keyword_name(code) + ": the file outgrows the 2 GiB reach of Gamma version " +
-                std::to_string(version_) + " (use version 3)");
+    throw Error(path_ + ": " + keyword_name(code) + ": the file outgrows the 2 GiB reach of Gamma version " + std::to_string(version_) +
+                " (use version 3)");
   put<std::int32_t>(code);
   put_position(block_end_);
-  if (version_ >= 4) put<std::int64_t>(count);
-  else put<std::int32_t>(static_cast<std::int32_t>(count));
+  if (version_ >= 4)
+    put<std::int64_t>(count);
+  else
+    put<std::int32_t>(static_cast<std::int32_t>(count));
   for (int value : header) put<std::int32_t>(value);  // solution type codes stay 32-bit in every version
 }
 
@@ -121,8 +121,7 @@ void BinaryKeywordWriter::write_integer(std::int64_t value) {
 void BinaryKeywordWriter::write_real(double value) {
   if (version_ >= 2) return put<double>(value);
   auto single = static_cast<float>(value);
-  if (!std::isfinite(single))
-    throw Error(path_ + ": value " + std::to_string(value) + " exceeds the 32-bit reals of Gamma version 1");
+  if (!std::isfinite(single)) throw Error(path_ + ": value " + std::to_string(value) + " exceeds the 32-bit reals of Gamma version 1");
   put<float>(single);
 }
 
@@ -139,8 +138,10 @@ void BinaryKeywordWriter::finish() {
 }
 
 void BinaryKeywordWriter::put_position(std::uint64_t position) {
-  if (version_ >= 3) put<std::int64_t>(static_cast<std::int64_t>(position));
-  else put<std::int32_t>(static_cast<std::int32_t>(position));
+  if (version_ >= 3)
+    put<std::int64_t>(static_cast<std::int64_t>(position));
+  else
+    put<std::int32_t>(static_cast<std::int32_t>(position));
 }
 
 void BinaryKeywordWriter::check_block_complete() const {

@@ -40,9 +40,7 @@ struct MeshRecords {
 
 // The width of a row of an ordering keyword, as libMeshb defines them: the full Bézier multi-index
 // for triangles and tetrahedra, a single integer (the weight of the first vertex) for edges.
-int ordering_width(const SimplexKeyword& keyword) {
-  return keyword.simplex_dimension == 1 ? 1 : keyword.simplex_dimension + 1;
-}
+int ordering_width(const SimplexKeyword& keyword) { return keyword.simplex_dimension == 1 ? 1 : keyword.simplex_dimension + 1; }
 
 // ---- reading keywords (Reader: gamma::TextKeywordReader or gamma::BinaryKeywordReader) ----
 
@@ -50,8 +48,7 @@ int ordering_width(const SimplexKeyword& keyword) {
 template <class Reader>
 Index read_id(Reader& reader, Index entity, const char* what) {
   std::int64_t id = reader.read_integer(entity);
-  if (id < 1 || id > std::numeric_limits<Index>::max())
-    reader.fail(std::string(what) + " " + std::to_string(id) + " out of range", entity);
+  if (id < 1 || id > std::numeric_limits<Index>::max()) reader.fail(std::string(what) + " " + std::to_string(id) + " out of range", entity);
   return static_cast<Index>(id - 1);
 }
 
@@ -125,23 +122,30 @@ MeshRecords read_records(Reader& reader) {
     const int code = reader.keyword_code();
     const SimplexKeyword* simplex = gamma::simplex_keyword(code);
     const SimplexKeyword* ordered = gamma::ordered_keyword(code);
-    const bool read = simplex || ordered || code == gamma::kVertices || code == gamma::kCorners ||
-                      code == gamma::kRidges || code == gamma::kRequiredVertices || code == gamma::kRequiredEdges ||
-                      code == gamma::kRequiredTriangles;
+    const bool read = simplex || ordered || code == gamma::kVertices || code == gamma::kCorners || code == gamma::kRidges ||
+                      code == gamma::kRequiredVertices || code == gamma::kRequiredEdges || code == gamma::kRequiredTriangles;
     if (!read) {
       if (gamma::is_unsupported_element(code)) reader.fail("element kind not supported (hocav reads triangles and tetrahedra)");
       reader.skip_keyword();
       continue;
     }
     if (!seen.insert(code).second) reader.fail("keyword appears twice");
-    if (simplex) read_simplices(reader, *simplex, records.simplices[code]);
-    else if (ordered) read_ordering(reader, *ordered, records.orderings[code]);
-    else if (code == gamma::kVertices) read_vertices(reader, records);
-    else if (code == gamma::kCorners) read_id_list(reader, records.corners, "vertex");
-    else if (code == gamma::kRidges) read_id_list(reader, records.ridges, "edge");
-    else if (code == gamma::kRequiredVertices) read_id_list(reader, records.required_vertices, "vertex");
-    else if (code == gamma::kRequiredEdges) read_id_list(reader, records.required_edges, "edge");
-    else read_id_list(reader, records.required_triangles, "triangle");
+    if (simplex)
+      read_simplices(reader, *simplex, records.simplices[code]);
+    else if (ordered)
+      read_ordering(reader, *ordered, records.orderings[code]);
+    else if (code == gamma::kVertices)
+      read_vertices(reader, records);
+    else if (code == gamma::kCorners)
+      read_id_list(reader, records.corners, "vertex");
+    else if (code == gamma::kRidges)
+      read_id_list(reader, records.ridges, "edge");
+    else if (code == gamma::kRequiredVertices)
+      read_id_list(reader, records.required_vertices, "vertex");
+    else if (code == gamma::kRequiredEdges)
+      read_id_list(reader, records.required_edges, "edge");
+    else
+      read_id_list(reader, records.required_triangles, "triangle");
   }
   return records;
 }
@@ -166,8 +170,7 @@ std::array<int, 4> local_multi_index(int simplex_dimension, int local_node) {
 
 // Puts the node lists of a P2 keyword, given in the order of its *P2Ordering rows, into hocav's
 // local order.
-void apply_ordering(std::vector<Index>& nodes, const SimplexKeyword& keyword, const std::vector<int>& rows,
-                    const std::string& path) {
+void apply_ordering(std::vector<Index>& nodes, const SimplexKeyword& keyword, const std::vector<int>& rows, const std::string& path) {
   const int count = keyword.node_count, width = ordering_width(keyword);
   std::vector<int> file_position(static_cast<std::size_t>(count), -1);
   bool identity = true;
@@ -220,15 +223,14 @@ MeshFileContent build_mesh(MeshRecords&& records, const std::string& path) {
     if (D == 3 && present_keyword(records, 2, path))
       throw Error(path + ": Triangles: surface meshes (triangles without tetrahedra) are not supported");
     throw Error(path + ": no " + gamma::keyword_name(gamma::simplex_keyword(D, 1).code) + " or " +
-                gamma::keyword_name(gamma::simplex_keyword(D, 2).code) + ": hocav reads meshes of a " +
-                std::to_string(D) + "D domain");
+                gamma::keyword_name(gamma::simplex_keyword(D, 2).code) + ": hocav reads meshes of a " + std::to_string(D) + "D domain");
   }
   const SimplexKeyword* facet = present_keyword(records, D - 1, path);
   const SimplexKeyword* line = D == 3 ? present_keyword(records, 1, path) : nullptr;
   for (const SimplexKeyword* boundary : {facet, line})
     if (boundary && boundary->order > element->order)
-      throw Error(path + ": " + gamma::keyword_name(boundary->code) + ": P2 entities in a P1 mesh (" +
-                  gamma::keyword_name(element->code) + ")");
+      throw Error(path + ": " + gamma::keyword_name(boundary->code) + ": P2 entities in a P1 mesh (" + gamma::keyword_name(element->code) +
+                  ")");
 
   RawMesh<D> raw;
   const std::size_t node_count = records.node_refs.size();
@@ -298,8 +300,7 @@ void write_records(Writer& out, const Mesh<D>& mesh, const std::string& path) {
   // File node number (1-based) of the P2 node of an edge found from its vertices.
   auto edge_node_of = [&](Index a, Index b) {
     Index edge = mesh.find_edge(a, b);
-    if (edge == kNoIndex)
-      throw Error(path + ": edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) + ") has no P2 node");
+    if (edge == kNoIndex) throw Error(path + ": edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) + ") has no P2 node");
     return vertex_count + edge + 1;
   };
   // vertices_of(k): the entity's vertices; mid_node_of(k, vertices, local edge): its edge's node.
@@ -321,13 +322,15 @@ void write_records(Writer& out, const Mesh<D>& mesh, const std::string& path) {
   };
   // By dimension, as Gamma files usually are: (3D) feature lines, facets, elements.
   if constexpr (D == 3)
-    write_simplices(1, mesh.line_count(), [&](Index l) -> const auto& { return mesh.line(l); },
-                    [&](Index l) { return mesh.line_ref(l); }, mid_node_by_search);
-  write_simplices(D - 1, mesh.facet_count(), [&](Index f) -> const auto& { return mesh.facet(f); },
-                  [&](Index f) { return mesh.facet_ref(f); }, mid_node_by_search);
-  write_simplices(D, mesh.element_count(), [&](Index k) -> const auto& { return mesh.element(k); },
-                  [&](Index k) { return mesh.element_ref(k); },
-                  [&](Index k, const auto&, int e) { return vertex_count + mesh.element_edge(k, e) + 1; });
+    write_simplices(
+        1, mesh.line_count(), [&](Index l) -> const auto& { return mesh.line(l); }, [&](Index l) { return mesh.line_ref(l); },
+        mid_node_by_search);
+  write_simplices(
+      D - 1, mesh.facet_count(), [&](Index f) -> const auto& { return mesh.facet(f); }, [&](Index f) { return mesh.facet_ref(f); },
+      mid_node_by_search);
+  write_simplices(
+      D, mesh.element_count(), [&](Index k) -> const auto& { return mesh.element(k); }, [&](Index k) { return mesh.element_ref(k); },
+      [&](Index k, const auto&, int e) { return vertex_count + mesh.element_edge(k, e) + 1; });
 
   auto write_ids = [&](int code, const std::vector<Index>& ids) {
     if (ids.empty()) return;

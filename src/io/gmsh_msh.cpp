@@ -65,13 +65,36 @@ const ElementType& element_type(int dimension, int order) {
 // Shape names of the Gmsh element types hocav refuses, so the message says what was found.
 std::string_view unsupported_type_name(std::int64_t gmsh_type) {
   switch (gmsh_type) {
-    case 3: case 10: case 16: return "quadrangle";
-    case 5: case 12: case 17: case 92: case 93: return "hexahedron";
-    case 6: case 13: case 18: case 90: case 91: return "prism";
-    case 7: case 14: case 19: case 118: case 119: return "pyramid";
-    case 20: case 21: case 22: case 23: case 24: case 25: return "triangle of order 3 or more";
-    case 26: case 27: case 28: return "line of order 3 or more";
-    case 29: case 30: case 31: return "tetrahedron of order 3 or more";
+    case 3:
+    case 10:
+    case 16: return "quadrangle";
+    case 5:
+    case 12:
+    case 17:
+    case 92:
+    case 93: return "hexahedron";
+    case 6:
+    case 13:
+    case 18:
+    case 90:
+    case 91: return "prism";
+    case 7:
+    case 14:
+    case 19:
+    case 118:
+    case 119: return "pyramid";
+    case 20:
+    case 21:
+    case 22:
+    case 23:
+    case 24:
+    case 25: return "triangle of order 3 or more";
+    case 26:
+    case 27:
+    case 28: return "line of order 3 or more";
+    case 29:
+    case 30:
+    case 31: return "tetrahedron of order 3 or more";
     default: return "unknown";
   }
 }
@@ -126,12 +149,12 @@ class MshReader {
       } else if (section == "$PhysicalNames") {
         skip_section(section);  // names are not kept; the physical tags themselves are in $Entities
       } else if (section.size() > 1 && section[0] == '$' && section.compare(0, 4, "$End") != 0) {
-        std::cerr << in_.path() << ": warning: skipping section " << printable_excerpt(section) << " (not used by hocav), line " << in_.line()
-                  << "\n";
+        std::cerr << in_.path() << ": warning: skipping section " << printable_excerpt(section) << " (not used by hocav), line "
+                  << in_.line() << "\n";
         skip_section(section);
       } else {
-        throw Error(in_.path() + ": expected a section such as $Nodes, found '" + printable_excerpt(token) +
-                    "', line " + std::to_string(in_.line()));
+        throw Error(in_.path() + ": expected a section such as $Nodes, found '" + printable_excerpt(token) + "', line " +
+                    std::to_string(in_.line()));
       }
     }
     if (!have_nodes) throw Error(in_.path() + ": no $Nodes section");
@@ -143,8 +166,7 @@ class MshReader {
   void expect(std::string_view expected, std::string_view section) {
     std::string_view token = in_.next_token();
     if (token.empty()) in_.fail(section, "unexpected end of file, expected " + std::string(expected));
-    if (token != expected)
-      in_.fail(section, "expected " + std::string(expected) + ", found '" + printable_excerpt(token) + "'");
+    if (token != expected) in_.fail(section, "expected " + std::string(expected) + ", found '" + printable_excerpt(token) + "'");
   }
 
   void skip_section(const std::string& section) {
@@ -173,8 +195,7 @@ class MshReader {
                             std::string(kConvertHint));
     std::int64_t file_type = in_.next_integer(section);
     if (file_type == 1)
-      in_.fail(section, "binary .msh is not supported: hocav reads MSH 4.1 ASCII; " + std::string(kConvertHint) +
-                            " (without -bin)");
+      in_.fail(section, "binary .msh is not supported: hocav reads MSH 4.1 ASCII; " + std::string(kConvertHint) + " (without -bin)");
     if (file_type != 0) in_.fail(section, "file type " + std::to_string(file_type) + " is neither 0 (ASCII) nor 1 (binary)");
     in_.next_integer(section);  // data size: meaningful for binary files only
     expect("$EndMeshFormat", section);
@@ -234,8 +255,8 @@ class MshReader {
       }
     }
     if (static_cast<std::int64_t>(content_.nodes.size()) != node_count)
-      in_.fail(section, "the header announces " + std::to_string(node_count) + " nodes, the blocks hold " +
-                            std::to_string(content_.nodes.size()));
+      in_.fail(section,
+               "the header announces " + std::to_string(node_count) + " nodes, the blocks hold " + std::to_string(content_.nodes.size()));
     expect("$EndNodes", section);
   }
 
@@ -259,8 +280,7 @@ class MshReader {
                               " elements (P1 and P2 elements of one dimension cannot be mixed)");
       list.type = type;
       int ref = entity_tag;
-      if (auto physical = physical_tags_.find({entity_dimension, entity_tag}); physical != physical_tags_.end())
-        ref = physical->second;
+      if (auto physical = physical_tags_.find({entity_dimension, entity_tag}); physical != physical_tags_.end()) ref = physical->second;
       std::int64_t count = read_count(section);
       bounded_reserve(list.nodes, std::min(count, kMaxUncheckedReserve) * type->node_count);
       bounded_reserve(list.refs, count);
@@ -275,8 +295,8 @@ class MshReader {
       read_so_far += count;
     }
     if (read_so_far != element_count)
-      in_.fail(section, "the header announces " + std::to_string(element_count) + " elements, the blocks hold " +
-                            std::to_string(read_so_far));
+      in_.fail(section,
+               "the header announces " + std::to_string(element_count) + " elements, the blocks hold " + std::to_string(read_so_far));
     expect("$EndElements", section);
   }
 
@@ -302,7 +322,8 @@ int mesh_dimension(const MshContent& content, const std::string& path) {
     z << content.first_nonzero_z;
     throw Error(path + ": $Nodes: triangles with z = " + z.str() +
                 " make a surface mesh, which hocav does not support (it reads planar triangle meshes with z = 0 and "
-                "tetrahedral meshes), line " + std::to_string(content.first_nonzero_z_line));
+                "tetrahedral meshes), line " +
+                std::to_string(content.first_nonzero_z_line));
   }
   return 2;
 }
@@ -364,8 +385,7 @@ class TextWriter {
     return flush_if_full();
   }
   template <typename Number>
-    requires std::is_arithmetic_v<Number>
-  TextWriter& operator<<(Number value) {
+  requires std::is_arithmetic_v<Number> TextWriter& operator<<(Number value) {
     char digits[32];
     auto result = std::to_chars(digits, digits + sizeof digits, value);
     buffer_.append(digits, result.ptr);
@@ -425,27 +445,29 @@ std::array<WrittenGroup, 4> written_groups(const Mesh<D>& mesh) {
   groups[0] = WrittenGroup(
       element_type(0, 1), static_cast<Index>(mesh.corners().size()), [&mesh](Index i) { return mesh.vertex_ref(mesh.corners()[i]); },
       [&mesh](Index i, Index* nodes) { nodes[0] = mesh.corners()[i]; });
-  groups[D] = WrittenGroup(element_type(D, order), mesh.element_count(), [&mesh](Index k) { return mesh.element_ref(k); },
-                           [&mesh, order, vertex_count](Index k, Index* nodes) {
-                             std::copy(mesh.element(k).begin(), mesh.element(k).end(), nodes);
-                             if (order == 2)
-                               for (int e = 0; e < Simplex<D>::kEdges; ++e) nodes[D + 1 + e] = vertex_count + mesh.element_edge(k, e);
-                           });
-  groups[D - 1] = WrittenGroup(element_type(D - 1, order), mesh.facet_count(), [&mesh](Index f) { return mesh.facet_ref(f); },
-                               [&mesh, order, edge_node](Index f, Index* nodes) {
-                                 const auto& facet = mesh.facet(f);
-                                 std::copy(facet.begin(), facet.end(), nodes);
-                                 if (order == 2)  // a facet's edges in triangle order; a segment has (0, 1)
-                                   for (int e = 0; e < (D == 3 ? 3 : 1); ++e)
-                                     nodes[D + e] = edge_node(facet[edge_vertices<2>(e)[0]], facet[edge_vertices<2>(e)[1]]);
-                               });
+  groups[D] = WrittenGroup(
+      element_type(D, order), mesh.element_count(), [&mesh](Index k) { return mesh.element_ref(k); },
+      [&mesh, order, vertex_count](Index k, Index* nodes) {
+        std::copy(mesh.element(k).begin(), mesh.element(k).end(), nodes);
+        if (order == 2)
+          for (int e = 0; e < Simplex<D>::kEdges; ++e) nodes[D + 1 + e] = vertex_count + mesh.element_edge(k, e);
+      });
+  groups[D - 1] = WrittenGroup(
+      element_type(D - 1, order), mesh.facet_count(), [&mesh](Index f) { return mesh.facet_ref(f); },
+      [&mesh, order, edge_node](Index f, Index* nodes) {
+        const auto& facet = mesh.facet(f);
+        std::copy(facet.begin(), facet.end(), nodes);
+        if (order == 2)  // a facet's edges in triangle order; a segment has (0, 1)
+          for (int e = 0; e < (D == 3 ? 3 : 1); ++e) nodes[D + e] = edge_node(facet[edge_vertices<2>(e)[0]], facet[edge_vertices<2>(e)[1]]);
+      });
   if constexpr (D == 3)
-    groups[1] = WrittenGroup(element_type(1, order), mesh.line_count(), [&mesh](Index l) { return mesh.line_ref(l); },
-                             [&mesh, order, edge_node](Index l, Index* nodes) {
-                               nodes[0] = mesh.line(l)[0];
-                               nodes[1] = mesh.line(l)[1];
-                               if (order == 2) nodes[2] = edge_node(nodes[0], nodes[1]);
-                             });
+    groups[1] = WrittenGroup(
+        element_type(1, order), mesh.line_count(), [&mesh](Index l) { return mesh.line_ref(l); },
+        [&mesh, order, edge_node](Index l, Index* nodes) {
+          nodes[0] = mesh.line(l)[0];
+          nodes[1] = mesh.line(l)[1];
+          if (order == 2) nodes[2] = edge_node(nodes[0], nodes[1]);
+        });
   return groups;
 }
 
@@ -473,8 +495,7 @@ void write_entities(TextWriter& out, const Mesh<D>& mesh, const std::array<Writt
   for (const auto& vertex : mesh.vertices()) extend(vertex);
   for (Index e = 0; mesh.is_p2() && e < mesh.edge_count(); ++e) extend(mesh.edge_node(e));
   out << "$Entities\n";
-  for (int dimension = 0; dimension < 4; ++dimension)
-    out << groups[dimension].entity_count() << (dimension < 3 ? ' ' : '\n');
+  for (int dimension = 0; dimension < 4; ++dimension) out << groups[dimension].entity_count() << (dimension < 3 ? ' ' : '\n');
   for (int dimension = 0; dimension < 4; ++dimension) {
     const WrittenGroup& group = groups[dimension];
     for (std::size_t entity = 0; entity < group.entity_count(); ++entity) {

@@ -141,8 +141,7 @@ class Assembler {
         give(file_to_vertex_[nodes[0]], file_to_vertex_[nodes[1]], nodes[2], raw_.line_keyword, l);
       }
     for (Index e = 0; e < mesh.edge_count(); ++e)
-      if (content.edge_node_file_ids[e] == kNoIndex)
-        fail(raw_.element_keyword, "no mid node given for edge", static_cast<std::size_t>(e));
+      if (content.edge_node_file_ids[e] == kNoIndex) fail(raw_.element_keyword, "no mid node given for edge", static_cast<std::size_t>(e));
   }
 
   RawMesh<D>& raw_;

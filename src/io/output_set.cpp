@@ -20,8 +20,7 @@ OutputSet* active_set = nullptr;
 // symlinks), otherwise the resolved path (symlinked folders, ./ and ../ forms).
 std::string file_identity(const std::string& path) {
   struct stat status {};
-  if (::stat(path.c_str(), &status) == 0)
-    return "inode " + std::to_string(status.st_dev) + ":" + std::to_string(status.st_ino);
+  if (::stat(path.c_str(), &status) == 0) return "inode " + std::to_string(status.st_dev) + ":" + std::to_string(status.st_ino);
   std::error_code error;
   return "path " + fs::weakly_canonical(fs::absolute(path), error).string();
 }
@@ -37,8 +36,7 @@ void check_writable(const std::string& path, const std::string& option) {
   if (::stat(path.c_str(), &status) == 0 && !S_ISREG(status.st_mode))
     throw Error(path + ": " + option + " names " + (S_ISDIR(status.st_mode) ? "a folder" : "something other than a file"));
   const std::string folder = folder_of(path);
-  if (::stat(folder.c_str(), &status) != 0 || !S_ISDIR(status.st_mode))
-    throw Error(path + ": " + option + ": no folder " + folder);
+  if (::stat(folder.c_str(), &status) != 0 || !S_ISDIR(status.st_mode)) throw Error(path + ": " + option + ": no folder " + folder);
   if (::access(folder.c_str(), W_OK | X_OK) != 0) throw Error(path + ": " + option + ": folder " + folder + " is not writable");
 }
 

@@ -29,8 +29,7 @@ void read_sol_at_vertices(Reader& reader, SolutionFileContent& content) {
     reals_per_row += field.components();
   }
   reader.expect_records(content.count, 0, reals_per_row);
-  for (SolutionField& field : content.fields)
-    field.values.reserve(reader.reserve_hint(content.count) * field.components());
+  for (SolutionField& field : content.fields) field.values.reserve(reader.reserve_hint(content.count) * field.components());
   for (Index row = 0; row < content.count; ++row)
     for (SolutionField& field : content.fields)
       for (int c = 0; c < field.components(); ++c) {
@@ -107,8 +106,7 @@ int SolutionField::components() const {
 Index SolutionField::count() const { return static_cast<Index>(values.size() / static_cast<std::size_t>(components())); }
 
 SolutionFileContent read_solution_file(const std::string& path) {
-  return gamma::is_binary_file(path) ? read_solution(gamma::BinaryKeywordReader(path))
-                                     : read_solution(gamma::TextKeywordReader(path));
+  return gamma::is_binary_file(path) ? read_solution(gamma::BinaryKeywordReader(path)) : read_solution(gamma::TextKeywordReader(path));
 }
 
 void write_solution_file(const std::string& path, const SolutionFileContent& content, int gamma_version) {
@@ -144,8 +142,8 @@ const SolutionField& checked_metric_field(const SolutionFileContent& content, co
     }
   if (!metric) throw Error(path + ": SolAtVertices: no symmetric-matrix field (type 3), so no metric");
   if (metric->count() != file_node_count)
-    throw Error(path + ": SolAtVertices: " + std::to_string(metric->count()) + " metrics for a mesh of " +
-                std::to_string(file_node_count) + " nodes");
+    throw Error(path + ": SolAtVertices: " + std::to_string(metric->count()) + " metrics for a mesh of " + std::to_string(file_node_count) +
+                " nodes");
   const auto components = static_cast<std::size_t>(metric->components());
   for (Index vertex = 0; vertex < file_node_count; ++vertex) {
     const double* m = &metric->values[vertex * components];

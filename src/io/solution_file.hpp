@@ -37,7 +37,7 @@ void write_solution_file(const std::string& path, const SolutionFileContent& con
 // Checks a metric field against the mesh it goes with: a symmetric-matrix field of the mesh's
 // dimension, one row per file node, every matrix finite and positive definite. Throws Error
 // "<file>: SolAtVertices: <what> at vertex N" otherwise. Returns the field.
-const SolutionField& checked_metric_field(const SolutionFileContent& content, const std::string& path,
-                                          int dimension, Index file_node_count);
+const SolutionField& checked_metric_field(const SolutionFileContent& content, const std::string& path, int dimension,
+                                          Index file_node_count);
 
 }  // namespace hocav

@@ -77,8 +77,7 @@ double TextScanner::next_real(std::string_view what) {
     if (std::isinf(value)) fail(what, "real out of range '" + printable_excerpt(copy) + "'");
     return value;
   }
-  if (error != std::errc() || end != token.data() + token.size())
-    fail(what, "expected a real, found '" + printable_excerpt(token) + "'");
+  if (error != std::errc() || end != token.data() + token.size()) fail(what, "expected a real, found '" + printable_excerpt(token) + "'");
   if (!std::isfinite(value)) fail(what, "value is not finite '" + printable_excerpt(token) + "'");
   return value;
 }

@@ -25,7 +25,7 @@ class BinaryWriter {
   explicit BinaryWriter(std::ostream& out) : out_(out) { buffer_.reserve(kFlushSize + 64); }
 
   template <typename T>
-    requires std::is_arithmetic_v<T>
+  requires std::is_arithmetic_v<T>
   void put(T value) {
     char bytes[sizeof(T)];
     std::memcpy(bytes, &value, sizeof(T));
@@ -67,10 +67,10 @@ std::vector<AppendedArray> field_arrays(const std::vector<VtuField>& fields, std
       throw Error(path + ": " + std::string(kind) + " field '" + field.name + "' has " + std::to_string(field.values.size()) +
                   " values, expected " + std::to_string(rows) + " rows of " + std::to_string(field.components));
     if (kind == "cell" && field.name == "ref") throw Error(path + ": cell field name 'ref' is reserved for the element refs");
-    arrays.push_back({attributes("Float64", field.name, field.components), field.values.size() * sizeof(double),
-                      [&field](BinaryWriter& out) {
-                        for (double value : field.values) out.put(value);
-                      }});
+    arrays.push_back(
+        {attributes("Float64", field.name, field.components), field.values.size() * sizeof(double), [&field](BinaryWriter& out) {
+           for (double value : field.values) out.put(value);
+         }});
   }
   return arrays;
 }
@@ -91,13 +91,11 @@ void write_vtu(const std::string& path, const Mesh<D>& mesh, const VtuData& data
   const std::size_t element_size = D + 1 + (p2 ? Simplex<D>::kEdges : 0);
 
   std::vector<AppendedArray> point_data = field_arrays(data.point_fields, node_count, "point", path);
-  std::vector<AppendedArray> cell_data{{attributes("Int32", "ref", 1), element_count * sizeof(std::int32_t),
-                                        [&mesh](BinaryWriter& out) {
+  std::vector<AppendedArray> cell_data{{attributes("Int32", "ref", 1), element_count * sizeof(std::int32_t), [&mesh](BinaryWriter& out) {
                                           for (Index k = 0; k < mesh.element_count(); ++k) out.put(std::int32_t{mesh.element_ref(k)});
                                         }}};
   for (AppendedArray& array : field_arrays(data.cell_fields, element_count, "cell", path)) cell_data.push_back(std::move(array));
-  std::vector<AppendedArray> points{{attributes("Float64", "Points", 3), node_count * 3 * sizeof(double),
-                                     [&mesh, p2](BinaryWriter& out) {
+  std::vector<AppendedArray> points{{attributes("Float64", "Points", 3), node_count * 3 * sizeof(double), [&mesh, p2](BinaryWriter& out) {
                                        auto put_point = [&out](const Vec<D>& point) {
                                          for (int c = 0; c < 3; ++c) out.put(c < D ? point[c] : 0.0);
                                        };

@@ -44,7 +44,8 @@ class Checker {
     for (Index k = 0; k < mesh_.element_count() && !full(); ++k) {
       auto e = mesh_.element(k);
       std::sort(e.begin(), e.end());
-      if (std::adjacent_find(e.begin(), e.end()) != e.end()) report("element " + id(k) + " repeats a vertex");
+      if (std::adjacent_find(e.begin(), e.end()) != e.end())
+        report("element " + id(k) + " repeats a vertex");
       else if (options_.require_positive_orientation && !(element_measure(mesh_, k) > 0))
         report("element " + id(k) + " has non-positive P1 measure " + std::to_string(element_measure(mesh_, k)));
     }
@@ -68,7 +69,8 @@ class Checker {
         int back = -1;
         for (int g = 0; g <= D; ++g)
           if (mesh_.neighbor(n, g) == k) back = g;
-        if (back < 0) report("adjacency is not symmetric between elements " + id(k) + " and " + id(n));
+        if (back < 0)
+          report("adjacency is not symmetric between elements " + id(k) + " and " + id(n));
         else if (sorted_face<D>(mesh_.element(k), face) != sorted_face<D>(mesh_.element(n), back))
           report("elements " + id(k) + " and " + id(n) + " are neighbors but do not share the face");
         else if (!opposite_orientation(ordered_face(k, face), ordered_face(n, back)))
@@ -134,8 +136,7 @@ class Checker {
     for (Index l = 0; l < mesh_.line_count() && !full(); ++l) {
       if (mesh_.line_removed(l)) continue;
       const Index a = mesh_.line(l)[0], b = mesh_.line(l)[1];  // not a structured binding: the lambda below takes b
-      if (a < 0 || a >= mesh_.vertex_count() || b < 0 || b >= mesh_.vertex_count() || mesh_.vertex_removed(a) ||
-          mesh_.vertex_removed(b)) {
+      if (a < 0 || a >= mesh_.vertex_count() || b < 0 || b >= mesh_.vertex_count() || mesh_.vertex_removed(a) || mesh_.vertex_removed(b)) {
         report("edge (line) " + id(l) + " has a vertex out of range or removed");
         continue;
       }
@@ -158,8 +159,7 @@ class Checker {
         // Every element of an edge refers to the one edge record, hence to the one P2 node.
         const auto& ends = mesh_.edge_vertices(edge);
         if (ends[0] != std::min(a, b) || ends[1] != std::max(a, b))
-          report("local edge " + std::to_string(e + 1) + " of element " + id(k) + " refers to edge " + id(edge) +
-                 " of other vertices");
+          report("local edge " + std::to_string(e + 1) + " of element " + id(k) + " refers to edge " + id(edge) + " of other vertices");
         else if (mesh_.find_edge(a, b) != edge)
           report("edge (" + id(a) + ", " + id(b) + ") of element " + id(k) + " is not the one the edge table finds");
       }
@@ -170,9 +170,12 @@ class Checker {
     for (Index edge = 0; edge < mesh_.edge_count() && !full(); ++edge) {
       auto [a, b] = mesh_.edge_vertices(edge);
       if (a == kNoIndex) continue;  // a removed edge's id, waiting for reuse
-      if (!used[edge]) report("edge " + id(edge) + " (" + id(a) + ", " + id(b) + ") belongs to no element");
-      else if (mesh_.find_edge(a, b) != edge) report("edge " + id(edge) + " is not where the edge table finds it");
-      else if (mesh_.is_p2() && !is_finite(mesh_.edge_node(edge))) report("the P2 node of edge " + id(edge) + " is not finite");
+      if (!used[edge])
+        report("edge " + id(edge) + " (" + id(a) + ", " + id(b) + ") belongs to no element");
+      else if (mesh_.find_edge(a, b) != edge)
+        report("edge " + id(edge) + " is not where the edge table finds it");
+      else if (mesh_.is_p2() && !is_finite(mesh_.edge_node(edge)))
+        report("the P2 node of edge " + id(edge) + " is not finite");
     }
   }
 

@@ -8,9 +8,7 @@
 
 namespace hocav {
 
-inline double signed_measure(const Vec2& p0, const Vec2& p1, const Vec2& p2) {
-  return 0.5 * determinant(p1 - p0, p2 - p0);
-}
+inline double signed_measure(const Vec2& p0, const Vec2& p1, const Vec2& p2) { return 0.5 * determinant(p1 - p0, p2 - p0); }
 
 inline double signed_measure(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
   return determinant(p1 - p0, p2 - p0, p3 - p0) / 6.0;

@@ -16,7 +16,8 @@ Index Mesh<D>::add_vertex(const Point& point, int ref) {
   vertex_refs_.push_back(ref);
   if (vertex_element_.size() + 1 == vertices_.size()) vertex_element_.push_back(kNoIndex);
   if (!removed_vertices_.empty()) removed_vertices_.push_back(0);
-  for (std::size_t a = 0; a < attributes_.size(); ++a) attributes_[a].resize(attributes_[a].size() + static_cast<std::size_t>(attribute_widths_[a]), 0.0);
+  for (std::size_t a = 0; a < attributes_.size(); ++a)
+    attributes_[a].resize(attributes_[a].size() + static_cast<std::size_t>(attribute_widths_[a]), 0.0);
   return id;
 }
 
@@ -26,7 +27,8 @@ void Mesh<D>::pop_vertex() {
   vertex_refs_.pop_back();
   if (vertex_element_.size() > vertices_.size()) vertex_element_.pop_back();
   if (!removed_vertices_.empty()) removed_vertices_.pop_back();
-  for (std::size_t a = 0; a < attributes_.size(); ++a) attributes_[a].resize(attributes_[a].size() - static_cast<std::size_t>(attribute_widths_[a]));
+  for (std::size_t a = 0; a < attributes_.size(); ++a)
+    attributes_[a].resize(attributes_[a].size() - static_cast<std::size_t>(attribute_widths_[a]));
 }
 
 template <int D>
@@ -76,7 +78,8 @@ bool Mesh<D>::is_ridge(Index l) const {
 template <int D>
 Index Mesh<D>::add_element(const Element& vertices, int ref) {
   for (Index v : vertices)
-    if (v < 0 || v >= vertex_count()) throw Error("element " + std::to_string(elements_.size() + 1) + " has vertex " + std::to_string(v + 1) + " out of range");
+    if (v < 0 || v >= vertex_count())
+      throw Error("element " + std::to_string(elements_.size() + 1) + " has vertex " + std::to_string(v + 1) + " out of range");
   Index id = checked_index(elements_.size(), "elements");
   elements_.push_back(vertices);
   element_refs_.push_back(ref);
@@ -93,7 +96,8 @@ int Mesh<D>::add_element_attribute(double initial) {
 template <int D>
 Index Mesh<D>::add_facet(const Facet& vertices, int ref) {
   for (Index v : vertices)
-    if (v < 0 || v >= vertex_count()) throw Error("boundary facet " + std::to_string(facets_.size() + 1) + " has vertex " + std::to_string(v + 1) + " out of range");
+    if (v < 0 || v >= vertex_count())
+      throw Error("boundary facet " + std::to_string(facets_.size() + 1) + " has vertex " + std::to_string(v + 1) + " out of range");
   Index id = checked_index(facets_.size(), "boundary facets");
   facets_.push_back(vertices);
   facet_refs_.push_back(ref);
@@ -103,7 +107,8 @@ Index Mesh<D>::add_facet(const Facet& vertices, int ref) {
 template <int D>
 Index Mesh<D>::add_line(const Line& vertices, int ref) {
   for (Index v : vertices)
-    if (v < 0 || v >= vertex_count()) throw Error("edge " + std::to_string(lines_.size() + 1) + " has vertex " + std::to_string(v + 1) + " out of range");
+    if (v < 0 || v >= vertex_count())
+      throw Error("edge " + std::to_string(lines_.size() + 1) + " has vertex " + std::to_string(v + 1) + " out of range");
   Index id = checked_index(lines_.size(), "edges");
   lines_.push_back(vertices);
   line_refs_.push_back(ref);
@@ -223,9 +228,7 @@ bool element_has_vertices(const typename Mesh<D>::Element& element, const Index*
 template <int D>
 int local_face_of(const typename Mesh<D>::Element& element, const Index* vertices) {
   for (int face = 0; face <= D; ++face)
-    if (std::find(vertices, vertices + D, element[face]) == vertices + D &&
-        element_has_vertices<D>(element, vertices, D))
-      return face;
+    if (std::find(vertices, vertices + D, element[face]) == vertices + D && element_has_vertices<D>(element, vertices, D)) return face;
   return -1;
 }
 
@@ -300,8 +303,7 @@ void Mesh<D>::build_topology() {
       int face = local_face_of<D>(elements_[incident[slot]], facet.data());
       if (face >= 0) facet_element_face_[f] = incident[slot] * (D + 1) + face;
     }
-    if (facet_element_face_[f] == kNoIndex)
-      throw Error("boundary facet " + std::to_string(f + 1) + " is not a face of any element");
+    if (facet_element_face_[f] == kNoIndex) throw Error("boundary facet " + std::to_string(f + 1) + " is not a face of any element");
     link_face_facet(facet_element_face_[f] / (D + 1), facet_element_face_[f] % (D + 1), f);
   }
 }
@@ -361,8 +363,7 @@ void Mesh<D>::pop_element() {
 template <int D>
 void Mesh<D>::attach_facet(Index f, Index k, int face) {
   Index old = facet_element_face_[f];
-  if (old != kNoIndex && element_face_facets_.find(static_cast<std::uint64_t>(old)) == f)
-    unlink_face_facet(old / (D + 1), old % (D + 1));
+  if (old != kNoIndex && element_face_facets_.find(static_cast<std::uint64_t>(old)) == f) unlink_face_facet(old / (D + 1), old % (D + 1));
   facet_element_face_[f] = k * (D + 1) + face;
   link_face_facet(k, face, f);
 }
@@ -462,7 +463,9 @@ std::vector<Index> Mesh<D>::compact() {
     const auto w = static_cast<std::size_t>(attribute_widths_[a]);
     std::vector<double>& rows = attributes_[a];
     for (std::size_t v = 0; v < vertex_id.size(); ++v)
-      if (vertex_id[v] != kNoIndex) std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>(v * w), w, rows.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(vertex_id[v]) * w));
+      if (vertex_id[v] != kNoIndex)
+        std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>(v * w), w,
+                    rows.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(vertex_id[v]) * w));
     rows.resize(vertices_.size() * w);
   }
   removed_vertices_.clear();
@@ -518,12 +521,11 @@ void Mesh<D>::rekey_after_renumbering() {
 template <int D>
 std::size_t Mesh<D>::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  return bytes(vertices_) + bytes(vertex_refs_) + bytes(elements_) + bytes(element_refs_) + bytes(facets_) +
-         bytes(facet_refs_) + bytes(lines_) + bytes(line_refs_) + bytes(corners_) + bytes(ridges_) +
-         bytes(required_vertices_) + bytes(required_edges_) + bytes(required_triangles_) + bytes(removed_vertices_) + bytes(edge_vertices_) + bytes(edge_nodes_) + bytes(element_edges_) +
+  return bytes(vertices_) + bytes(vertex_refs_) + bytes(elements_) + bytes(element_refs_) + bytes(facets_) + bytes(facet_refs_) +
+         bytes(lines_) + bytes(line_refs_) + bytes(corners_) + bytes(ridges_) + bytes(required_vertices_) + bytes(required_edges_) +
+         bytes(required_triangles_) + bytes(removed_vertices_) + bytes(edge_vertices_) + bytes(edge_nodes_) + bytes(element_edges_) +
          edge_ids_.memory_bytes() + bytes(adjacency_) + bytes(vertex_element_) + bytes(facet_element_face_) +
-         element_face_facets_.memory_bytes() + bytes(faces_with_facet_) +
-         [&] {
+         element_face_facets_.memory_bytes() + bytes(faces_with_facet_) + [&] {
            std::size_t total = 0;
            for (const auto& rows : attributes_) total += bytes(rows);
            for (const auto& attribute : element_attributes_) total += bytes(attribute.values);

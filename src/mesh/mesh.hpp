@@ -228,9 +228,7 @@ class Mesh {
   Index insert_edge(Index a, Index b);
   // After compact(): the hashes keyed by vertex or facet ids, rebuilt from the renumbered arrays.
   void rekey_after_renumbering();
-  static std::uint64_t face_key(Index k, int face) {
-    return static_cast<std::uint64_t>(k) * (D + 1) + static_cast<std::uint64_t>(face);
-  }
+  static std::uint64_t face_key(Index k, int face) { return static_cast<std::uint64_t>(k) * (D + 1) + static_cast<std::uint64_t>(face); }
   // The element-face -> facet map and its per-element bits change together.
   void link_face_facet(Index k, int face, Index f);
   void unlink_face_facet(Index k, int face);

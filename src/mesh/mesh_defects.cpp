@@ -39,15 +39,15 @@ double corner_angle(const Mesh<D>& mesh, Index k, int i) {
   const auto& element = mesh.element(k);
   const auto& apex = mesh.vertex(element[static_cast<std::size_t>(i)]);
   std::array<Vec<D>, D> sides;
-  for (int j = 0; j < D; ++j) sides[static_cast<std::size_t>(j)] = mesh.vertex(element[static_cast<std::size_t>((i + 1 + j) % (D + 1))]) - apex;
+  for (int j = 0; j < D; ++j)
+    sides[static_cast<std::size_t>(j)] = mesh.vertex(element[static_cast<std::size_t>((i + 1 + j) % (D + 1))]) - apex;
   if constexpr (D == 2) {
     return std::abs(std::atan2(sides[0][0] * sides[1][1] - sides[0][1] * sides[1][0], dot(sides[0], sides[1])));
   } else {
     // Van Oosterom and Strackee: tan(Ω/2) = |a·(b×c)| / (abc + (a·b)c + (a·c)b + (b·c)a).
     const double a = norm(sides[0]), b = norm(sides[1]), c = norm(sides[2]);
     const double numerator = std::abs(determinant(sides[0], sides[1], sides[2]));
-    const double denominator =
-        a * b * c + dot(sides[0], sides[1]) * c + dot(sides[0], sides[2]) * b + dot(sides[1], sides[2]) * a;
+    const double denominator = a * b * c + dot(sides[0], sides[1]) * c + dot(sides[0], sides[2]) * b + dot(sides[1], sides[2]) * a;
     return 2 * std::atan2(numerator, denominator);
   }
 }

@@ -54,7 +54,7 @@ SymMat<D> analytic_field_hessian(const AnalyticFieldSpec& spec, const Vec<D>& x)
   Vec<D> radial = from_origin(spec, x);
   double r = norm(radial);
   double t = std::tanh((r - spec.radius) / spec.width);
-  double first = (1 - t * t) / spec.width;                             // f'(r)
+  double first = (1 - t * t) / spec.width;                           // f'(r)
   double second = -2 * t * (1 - t * t) / (spec.width * spec.width);  // f''(r)
   if (r == 0) return second * SymMat<D>::identity();
   return (first / r) * SymMat<D>::identity() + (second - first / r) * outer((1 / r) * radial);

@@ -19,13 +19,13 @@ namespace hocav {
 
 struct AnalyticMetricSpec {
   std::string name = "uniform";
-  double h = 0.1;        // uniform
-  double h_min = 0.001;  // linear, shear
-  double h_max = 0.1;    // linear, shear
-  int axis = -1;         // linear: 0 x, 1 y, 2 z; −1 = the last axis
-  double center = 0.5;   // linear
-  double radius = 0.75;  // shear
-  double width = 0.05;   // shear
+  double h = 0.1;                         // uniform
+  double h_min = 0.001;                   // linear, shear
+  double h_max = 0.1;                     // linear, shear
+  int axis = -1;                          // linear: 0 x, 1 y, 2 z; −1 = the last axis
+  double center = 0.5;                    // linear
+  double radius = 0.75;                   // shear
+  double width = 0.05;                    // shear
   std::array<double, 3> origin{0, 0, 0};  // shear
 };
 

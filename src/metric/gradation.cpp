@@ -55,12 +55,10 @@ double largest_relative_eigenvalue(const SymMat<D>& a, const SymMat<D>& b) {
 
 template <int D>
 GradationReport grade_metrics(const Mesh<D>& mesh, std::vector<SymMat<D>>& metrics, const GradationOptions& options) {
-  if (!(options.growth > 1) || !std::isfinite(options.growth))
-    throw Error("gradation: the growth factor must be > 1");
+  if (!(options.growth > 1) || !std::isfinite(options.growth)) throw Error("gradation: the growth factor must be > 1");
   if (!(options.tolerance >= 0)) throw Error("gradation: the tolerance must be >= 0");
   if (metrics.size() != static_cast<std::size_t>(mesh.vertex_count()))
-    throw Error("gradation: " + std::to_string(metrics.size()) + " metrics for " + std::to_string(mesh.vertex_count()) +
-                " vertices");
+    throw Error("gradation: " + std::to_string(metrics.size()) + " metrics for " + std::to_string(mesh.vertex_count()) + " vertices");
   for (std::size_t v = 0; v < metrics.size(); ++v)
     if (!is_spd(metrics[v])) throw Error("gradation: the metric at vertex " + std::to_string(v + 1) + " is not positive definite");
 

@@ -24,8 +24,8 @@
 namespace hocav {
 
 struct GradationOptions {
-  double growth = 1.5;       // β > 1: the size ratio allowed per unit metric length
-  double tolerance = 1e-3;   // a metric changes only when a constraint is violated by more than this
+  double growth = 1.5;      // β > 1: the size ratio allowed per unit metric length
+  double tolerance = 1e-3;  // a metric changes only when a constraint is violated by more than this
 };
 
 struct GradationReport {

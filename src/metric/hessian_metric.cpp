@@ -30,14 +30,13 @@ double metric_complexity(const Mesh<D>& mesh, const std::vector<SymMat<D>>& metr
 
 template <int D>
 std::vector<SymMat<D>> lp_metric(const Mesh<D>& mesh, const std::vector<SymMat<D>>& hessians, const LpMetricOptions& options) {
-  if (!(options.complexity > 0) || !std::isfinite(options.complexity))
-    throw Error("hessian metric: the complexity must be positive");
+  if (!(options.complexity > 0) || !std::isfinite(options.complexity)) throw Error("hessian metric: the complexity must be positive");
   if (!(options.norm > 0) || !std::isfinite(options.norm)) throw Error("hessian metric: the norm p must be positive");
   if (!(options.h_min > 0) || !(options.h_min <= options.h_max) || !std::isfinite(options.h_max))
     throw Error("hessian metric: sizes must satisfy 0 < h-min <= h-max");
   if (hessians.size() != static_cast<std::size_t>(mesh.vertex_count()))
-    throw Error("hessian metric: " + std::to_string(hessians.size()) + " Hessians for " +
-                std::to_string(mesh.vertex_count()) + " vertices");
+    throw Error("hessian metric: " + std::to_string(hessians.size()) + " Hessians for " + std::to_string(mesh.vertex_count()) +
+                " vertices");
   const double smallest = 1 / (options.h_max * options.h_max), largest = 1 / (options.h_min * options.h_min);
   const double exponent = -1 / (2 * options.norm + D);  // of det(|H|) in M
   std::vector<SymMat<D>> metrics(hessians.size());

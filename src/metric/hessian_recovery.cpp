@@ -82,8 +82,8 @@ template <int D>
 std::vector<SymMat<D>> recover_hessians(const Mesh<D>& mesh, std::span<const double> vertex_values) {
   constexpr int kUnknowns = D + SymMat<D>::kEntryCount;  // g, then H
   if (vertex_values.size() != static_cast<std::size_t>(mesh.vertex_count()))
-    throw Error("hessian recovery: " + std::to_string(vertex_values.size()) + " values for " +
-                std::to_string(mesh.vertex_count()) + " vertices");
+    throw Error("hessian recovery: " + std::to_string(vertex_values.size()) + " values for " + std::to_string(mesh.vertex_count()) +
+                " vertices");
   const VertexGraph graph = vertex_graph(mesh);
   std::vector<SymMat<D>> hessians(vertex_values.size());
   std::vector<Index> stencil, mark(vertex_values.size(), kNoIndex);
@@ -114,12 +114,12 @@ std::vector<SymMat<D>> recover_hessians(const Mesh<D>& mesh, std::span<const dou
       solved = solve_least_squares(matrix, right, rows, kUnknowns, solution);
       if (solved)
         for (int e = 0; e < SymMat<D>::kEntryCount; ++e)
-          hessians[static_cast<std::size_t>(v)].entries[static_cast<std::size_t>(e)] =
-              solution[static_cast<std::size_t>(D + e)] / (radius * radius);
+          hessians[static_cast<std::size_t>(v)].entries[static_cast<std::size_t>(e)] = solution[static_cast<std::size_t>(D + e)] /
+                                                                                       (radius * radius);
     }
     if (!solved)
-      throw Error("hessian recovery: the neighbours of vertex " + std::to_string(v + 1) + " within " +
-                  std::to_string(kMaxRings) + " edges do not determine a quadratic");
+      throw Error("hessian recovery: the neighbours of vertex " + std::to_string(v + 1) + " within " + std::to_string(kMaxRings) +
+                  " edges do not determine a quadratic");
   }
   return hessians;
 }

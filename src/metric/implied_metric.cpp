@@ -37,8 +37,7 @@ std::vector<SymMat<D>> implied_metric_at_vertices(const Mesh<D>& mesh) {
   }
   std::vector<SymMat<D>> metrics(vertex_count);
   for (std::size_t v = 0; v < vertex_count; ++v) {
-    if (weights[v] == 0)
-      throw Error("implied metric: vertex " + std::to_string(v + 1) + " belongs to no element, so it has no metric");
+    if (weights[v] == 0) throw Error("implied metric: vertex " + std::to_string(v + 1) + " belongs to no element, so it has no metric");
     metrics[v] = exp_sym((1 / weights[v]) * log_sums[v]);
   }
   return metrics;

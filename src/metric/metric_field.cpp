@@ -40,14 +40,13 @@ template <int D>
 MetricField<D>::MetricField(const Mesh<D>& mesh, std::vector<SymMat<D>> log_metrics, bool)
     : back_mesh_(straight_copy(mesh)), log_metrics_(std::move(log_metrics)) {
   if (log_metrics_.size() != static_cast<std::size_t>(back_mesh_->vertex_count()))
-    throw Error("metric field: " + std::to_string(log_metrics_.size()) + " metrics for " +
-                std::to_string(back_mesh_->vertex_count()) + " vertices");
+    throw Error("metric field: " + std::to_string(log_metrics_.size()) + " metrics for " + std::to_string(back_mesh_->vertex_count()) +
+                " vertices");
   locator_ = std::make_unique<PointLocator<D>>(*back_mesh_);
 }
 
 template <int D>
-MetricField<D>::MetricField(const Mesh<D>& mesh, const std::vector<SymMat<D>>& metrics)
-    : MetricField(mesh, logarithms(metrics), true) {}
+MetricField<D>::MetricField(const Mesh<D>& mesh, const std::vector<SymMat<D>>& metrics) : MetricField(mesh, logarithms(metrics), true) {}
 
 template <int D>
 MetricField<D> MetricField<D>::from_log_metrics(const Mesh<D>& mesh, std::vector<SymMat<D>> log_metrics) {
@@ -70,16 +69,15 @@ typename MetricField<D>::Sample MetricField<D>::sample(const Vec<D>& x, Index hi
 }
 
 template <int D>
-typename MetricField<D>::Sample MetricField<D>::sample(const Vec<D>& x, const ElementFrame& frame,
-                                                      LocatorScratch& scratch) const {
+typename MetricField<D>::Sample MetricField<D>::sample(const Vec<D>& x, const ElementFrame& frame, LocatorScratch& scratch) const {
   const Barycentrics<D> lambda = barycentric_coordinates<D>(frame.barycentric_gradients, frame.origin, x);
   if (!PointLocator<D>::contains(lambda)) return sample(x, frame.element, scratch);
   return {{frame.element, lambda, true}, interpolate(frame.element, lambda)};
 }
 
 template <int D>
-std::array<SymMat<D>, D> MetricField<D>::log_metric_gradient(
-    Index back_element, const std::array<Vec<D>, D + 1>& barycentric_gradients) const {
+std::array<SymMat<D>, D> MetricField<D>::log_metric_gradient(Index back_element,
+                                                             const std::array<Vec<D>, D + 1>& barycentric_gradients) const {
   const auto& element = back_mesh_->element(back_element);
   std::array<SymMat<D>, D> result{};
   for (int i = 0; i < D; ++i)

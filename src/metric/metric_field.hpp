@@ -60,8 +60,7 @@ class MetricField {
   MetricField(const Mesh<D>& mesh, std::vector<SymMat<D>> log_metrics, bool);
   // Σ_i λ_i R_i over the corners of a back element.
   SymMat<D> interpolate(Index back_element, const Barycentrics<D>& lambda) const;
-  std::array<SymMat<D>, D> log_metric_gradient(Index back_element,
-                                               const std::array<Vec<D>, D + 1>& barycentric_gradients) const;
+  std::array<SymMat<D>, D> log_metric_gradient(Index back_element, const std::array<Vec<D>, D + 1>& barycentric_gradients) const;
 
   std::unique_ptr<Mesh<D>> back_mesh_;  // behind a pointer: the locator refers to it across moves
   std::vector<SymMat<D>> log_metrics_;

@@ -209,8 +209,7 @@ Localization<D> PointLocator<D>::closest_boundary_element(const Vec<D>& x, Index
       // Only boundary elements can win, and an element met again in a later ball cannot (closest_among
       // keeps the first of equals): each boundary element once, at its first place in the balls' order.
       for (Index k : scratch.ball)
-        if (is_boundary_element(k) &&
-            std::find(scratch.candidates.begin(), scratch.candidates.end(), k) == scratch.candidates.end())
+        if (is_boundary_element(k) && std::find(scratch.candidates.begin(), scratch.candidates.end(), k) == scratch.candidates.end())
           scratch.candidates.push_back(k);
     }
   }
@@ -229,8 +228,7 @@ std::array<Vec<D>, D> PointLocator<D>::face_corners(Index k, int face) const {
 }
 
 template <int D>
-Localization<D> PointLocator<D>::closest_among(const Vec<D>& x, const std::vector<Index>& candidates,
-                                               double upper_bound2) const {
+Localization<D> PointLocator<D>::closest_among(const Vec<D>& x, const std::vector<Index>& candidates, double upper_bound2) const {
   // A face whose bounding box is farther from x than the bound by more than the rounding of
   // squared_distance_to_face (its closest point is a convex combination of the corners, so lies in the
   // box up to a few ulps of the coordinates) has a distance above the bound: it can neither win nor tie.

@@ -6,8 +6,8 @@
 // the bounding box. Points outside the back mesh (curved boundary nodes lie up to ~h²/8 outside a
 // convex P1 boundary) get the documented closest-element rule: the boundary element, among those
 // around the boundary face where the walk left the mesh, whose boundary face is closest to the
-// point (the last-resort exhaustive search takes the closest over all boundary faces); its barycentrics are returned unclamped, so the log-metric is extended affinely (and stays
-// differentiable) just outside the mesh.
+// point (the last-resort exhaustive search takes the closest over all boundary faces); its barycentrics are returned unclamped, so the
+// log-metric is extended affinely (and stays differentiable) just outside the mesh.
 #pragma once
 
 #include <array>
@@ -59,8 +59,7 @@ class PointLocator {
   // The closest-element rule for a point x that left the mesh through boundary face `near_face` of
   // `near_element`: among the elements around the vertices of that face (the balls of its vertices, in
   // order), the one whose boundary face is closest to x; of equals, the first met.
-  Localization<D> closest_boundary_element(const Vec<D>& x, Index near_element, int near_face,
-                                           LocatorScratch& scratch) const;
+  Localization<D> closest_boundary_element(const Vec<D>& x, Index near_element, int near_face, LocatorScratch& scratch) const;
 
   const Mesh<D>& mesh() const { return mesh_; }
   SimplexPoints<D> element_points(Index k) const;

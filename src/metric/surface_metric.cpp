@@ -24,8 +24,7 @@ Vec<D> facet_normal(const Mesh<D>& mesh, const typename Mesh<D>::Facet& facet) {
 
 template <int D>
 std::vector<Vec<D>> boundary_vertex_normals(const Mesh<D>& mesh) {
-  if (!mesh.has_topology() && mesh.facet_count() > 0)
-    throw Error("boundary normals: the mesh has no topology (build_topology)");
+  if (!mesh.has_topology() && mesh.facet_count() > 0) throw Error("boundary normals: the mesh has no topology (build_topology)");
   std::vector<Vec<D>> sums(static_cast<std::size_t>(mesh.vertex_count()));
   std::vector<double> magnitudes(sums.size(), 0.0);
   for (Index f = 0; f < mesh.facet_count(); ++f) {

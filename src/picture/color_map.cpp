@@ -16,16 +16,15 @@ std::string Color::hex() const {
 
 Color viridis(double t) {
   // Viridis (matplotlib's default map, CC0) at t = 0, 1/8, ..., 1 (as R's viridis(9)); linear between.
-  static constexpr std::array<std::array<int, 3>, 9> kStops{{
-      {0x44, 0x01, 0x54},
-      {0x47, 0x2d, 0x7b},
-      {0x3b, 0x52, 0x8b},
-      {0x2c, 0x72, 0x8e},
-      {0x21, 0x90, 0x8c},
-      {0x27, 0xad, 0x81},
-      {0x5d, 0xc8, 0x63},
-      {0xaa, 0xdc, 0x32},
-      {0xfd, 0xe7, 0x25}}};
+  static constexpr std::array<std::array<int, 3>, 9> kStops{{{0x44, 0x01, 0x54},
+                                                             {0x47, 0x2d, 0x7b},
+                                                             {0x3b, 0x52, 0x8b},
+                                                             {0x2c, 0x72, 0x8e},
+                                                             {0x21, 0x90, 0x8c},
+                                                             {0x27, 0xad, 0x81},
+                                                             {0x5d, 0xc8, 0x63},
+                                                             {0xaa, 0xdc, 0x32},
+                                                             {0xfd, 0xe7, 0x25}}};
   const double position = std::clamp(std::isnan(t) ? 0.0 : t, 0.0, 1.0) * (kStops.size() - 1);
   const auto below = std::min(static_cast<std::size_t>(position), kStops.size() - 2);
   const double weight = position - static_cast<double>(below);

@@ -16,8 +16,8 @@ const ShapeStyle kAxisStyle{"none", "#444444", 1};
 
 std::string figures_line(const ValueSummary& summary) {
   char text[200];
-  std::snprintf(text, sizeof text, "%lld values, min %.3g, avg %.3g, max %.3g", static_cast<long long>(summary.count),
-                summary.min, summary.average, summary.max);
+  std::snprintf(text, sizeof text, "%lld values, min %.3g, avg %.3g, max %.3g", static_cast<long long>(summary.count), summary.min,
+                summary.average, summary.max);
   std::string line = text;
   if (summary.below > 0) line += ", " + std::to_string(summary.below) + " below " + tick_label(summary.histogram_lower);
   if (summary.above > 0) line += ", " + std::to_string(summary.above) + " above " + tick_label(summary.histogram_upper);
@@ -77,8 +77,7 @@ SvgCanvas histogram_chart(const ValueSummary& summary, const HistogramLabels& la
   }
   canvas.text({{(kPlot.lower[0] + kPlot.upper[0]) / 2, kPlot.upper[1] + 44}}, labels.x_label, {15, "middle"});
   canvas.text({{28, (kPlot.lower[1] + kPlot.upper[1]) / 2}}, labels.y_label, {15, "middle", false, -90});
-  canvas.text({{(kPlot.lower[0] + kPlot.upper[0]) / 2, kHeight - 18}}, figures_line(summary),
-              {13, "middle", false, 0, "#555555"});
+  canvas.text({{(kPlot.lower[0] + kPlot.upper[0]) / 2, kHeight - 18}}, figures_line(summary), {13, "middle", false, 0, "#555555"});
   return canvas;
 }
 

@@ -27,9 +27,9 @@ SvgCanvas mesh_figure(const Box& world, const MeshFigureOptions& options, const 
   const PageTransform whole(world, {main.lower + Vec2{{6, 6}}, main.upper - Vec2{{6, 6}}});
   draw(canvas, {whole, world, 0.35});
   if (options.detail) {
-    canvas.rect({whole({{options.detail->lower[0], options.detail->upper[1]}}),
-                 whole({{options.detail->upper[0], options.detail->lower[1]}})},
-                kDetailStyle);
+    canvas.rect(
+        {whole({{options.detail->lower[0], options.detail->upper[1]}}), whole({{options.detail->upper[0], options.detail->lower[1]}})},
+        kDetailStyle);
     const Box side = panel_box(1);
     const PageTransform enlarged(*options.detail, side);
     canvas.begin_clip(side);

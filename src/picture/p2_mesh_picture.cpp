@@ -25,8 +25,7 @@ SvgCanvas p2_mesh_picture(const Mesh<2>& mesh, std::span<const double> element_v
     for (std::size_t k = 0; k < elements.size(); ++k) {
       // The Lagrange nodes' box is close enough to the triangle's for skipping what is far outside.
       if (!view.visible.intersects(bounding_box(elements[k].nodes))) continue;
-      canvas.path(p2_triangle_path(elements[k], view.transform),
-                  {options.colors(element_values[k]).hex(), "#1a1a1a", view.line_width});
+      canvas.path(p2_triangle_path(elements[k], view.transform), {options.colors(element_values[k]).hex(), "#1a1a1a", view.line_width});
     }
   });
 }

@@ -94,8 +94,8 @@ class CrossingTracer {
 // and marches over its sub-triangles. Lattice nodes are named by their integer barycentric
 // coordinates in the whole simplex, so faces sharing an edge share its samples.
 template <int D>
-void trace_face(const std::array<Vec3, kP2NodeCount<D>>& nodes, const std::array<int, 3>& face, int n,
-                const CutPlane& plane, CrossingTracer& tracer) {
+void trace_face(const std::array<Vec3, kP2NodeCount<D>>& nodes, const std::array<int, 3>& face, int n, const CutPlane& plane,
+                CrossingTracer& tracer) {
   auto sample = [&](int i, int j) {
     std::array<int, D + 1> counts{};
     counts[face[0]] = n - i - j;

@@ -14,8 +14,7 @@ double distance_to_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
 }
 
 // Marks the points to keep strictly between `first` and `last` (both kept).
-void keep_between(std::span<const Vec2> points, std::size_t first, std::size_t last, double tolerance,
-                  std::vector<bool>& keep) {
+void keep_between(std::span<const Vec2> points, std::size_t first, std::size_t last, double tolerance, std::vector<bool>& keep) {
   if (last <= first + 1) return;
   std::size_t farthest = first;
   double largest = -1;

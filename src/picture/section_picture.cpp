@@ -10,8 +10,7 @@ constexpr double kPageTolerance = 0.05;
 
 }  // namespace
 
-SvgCanvas section_picture(const std::vector<CutCell>& cells, std::span<const double> element_values,
-                          const MeshFigureOptions& options) {
+SvgCanvas section_picture(const std::vector<CutCell>& cells, std::span<const double> element_values, const MeshFigureOptions& options) {
   std::vector<Vec2> all_points;
   for (const CutCell& cell : cells) all_points.insert(all_points.end(), cell.outline.begin(), cell.outline.end());
   return mesh_figure(bounding_box(all_points), options, [&](SvgCanvas& canvas, const PanelView& view) {

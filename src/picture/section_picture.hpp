@@ -11,7 +11,6 @@
 namespace hocav {
 
 // `element_values[k]`: the value element k is coloured by.
-SvgCanvas section_picture(const std::vector<CutCell>& cells, std::span<const double> element_values,
-                          const MeshFigureOptions& options);
+SvgCanvas section_picture(const std::vector<CutCell>& cells, std::span<const double> element_values, const MeshFigureOptions& options);
 
 }  // namespace hocav

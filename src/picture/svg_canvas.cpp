@@ -28,18 +28,18 @@ void SvgCanvas::path(const SvgPath& path, const ShapeStyle& style) {
 }
 
 void SvgCanvas::rect(const Box& box, const ShapeStyle& style) {
-  body_ << "<rect x=\"" << box.lower[0] << "\" y=\"" << box.lower[1] << "\" width=\"" << box.width() << "\" height=\""
-        << box.height() << '"' << style_attributes(style) << "/>\n";
+  body_ << "<rect x=\"" << box.lower[0] << "\" y=\"" << box.lower[1] << "\" width=\"" << box.width() << "\" height=\"" << box.height()
+        << '"' << style_attributes(style) << "/>\n";
 }
 
 void SvgCanvas::line(const Vec2& from, const Vec2& to, const ShapeStyle& style) {
-  body_ << "<line x1=\"" << from[0] << "\" y1=\"" << from[1] << "\" x2=\"" << to[0] << "\" y2=\"" << to[1] << '"'
-        << style_attributes(style) << "/>\n";
+  body_ << "<line x1=\"" << from[0] << "\" y1=\"" << from[1] << "\" x2=\"" << to[0] << "\" y2=\"" << to[1] << '"' << style_attributes(style)
+        << "/>\n";
 }
 
 void SvgCanvas::text(const Vec2& at, std::string_view text, const TextStyle& style) {
-  body_ << "<text x=\"" << at[0] << "\" y=\"" << at[1] << "\" font-size=\"" << style.size << "\" text-anchor=\""
-        << style.anchor << "\" fill=\"" << style.fill << '"';
+  body_ << "<text x=\"" << at[0] << "\" y=\"" << at[1] << "\" font-size=\"" << style.size << "\" text-anchor=\"" << style.anchor
+        << "\" fill=\"" << style.fill << '"';
   if (style.bold) body_ << " font-weight=\"bold\"";
   if (style.rotation != 0) body_ << " transform=\"rotate(" << style.rotation << ' ' << at[0] << ' ' << at[1] << ")\"";
   body_ << '>' << xml_escaped(text) << "</text>\n";
@@ -47,8 +47,8 @@ void SvgCanvas::text(const Vec2& at, std::string_view text, const TextStyle& sty
 
 void SvgCanvas::begin_clip(const Box& box) {
   ++clips_;
-  definitions_ << "<clipPath id=\"clip" << clips_ << "\"><rect x=\"" << box.lower[0] << "\" y=\"" << box.lower[1]
-               << "\" width=\"" << box.width() << "\" height=\"" << box.height() << "\"/></clipPath>\n";
+  definitions_ << "<clipPath id=\"clip" << clips_ << "\"><rect x=\"" << box.lower[0] << "\" y=\"" << box.lower[1] << "\" width=\""
+               << box.width() << "\" height=\"" << box.height() << "\"/></clipPath>\n";
   body_ << "<g clip-path=\"url(#clip" << clips_ << ")\">\n";
 }
 
@@ -58,8 +58,8 @@ std::string SvgCanvas::document() const {
   std::ostringstream out;
   out << std::fixed << std::setprecision(2);
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << width_ << "\" height=\"" << height_
-      << "\" viewBox=\"0 0 " << width_ << ' ' << height_ << "\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n";
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << width_ << "\" height=\"" << height_ << "\" viewBox=\"0 0 "
+      << width_ << ' ' << height_ << "\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n";
   out << "<defs>\n" << definitions_.str() << "</defs>\n";
   out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   out << body_.str() << "</svg>\n";

@@ -12,7 +12,7 @@
 namespace hocav {
 
 struct ShapeStyle {
-  std::string fill = "none";    // an SVG colour, e.g. "#21908c", or "none"
+  std::string fill = "none";  // an SVG colour, e.g. "#21908c", or "none"
   std::string stroke = "none";
   double stroke_width = 1;
 };
@@ -21,7 +21,7 @@ struct TextStyle {
   double size = 14;
   std::string anchor = "start";  // start, middle, end: where `at` is along the text
   bool bold = false;
-  double rotation = 0;           // degrees, clockwise, about `at` (−90: reads bottom to top)
+  double rotation = 0;  // degrees, clockwise, about `at` (−90: reads bottom to top)
   std::string fill = "#222222";
 };
 

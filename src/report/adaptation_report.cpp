@@ -28,8 +28,8 @@ std::string non_convergence_summary(const AdaptationReport& report) {
   if (report.run.converged || report.run.passes.empty()) return "";
   const AdaptationPass& last = report.run.passes.back();
   std::ostringstream text;
-  text << "not converged after " << report.run.passes.size() << " passes (the last split " << last.splits.done
-       << " and collapsed " << last.collapses.done << " edges; " << static_cast<int>(1000 * report.measures.unit_share) / 10.0
+  text << "not converged after " << report.run.passes.size() << " passes (the last split " << last.splits.done << " and collapsed "
+       << last.collapses.done << " edges; " << static_cast<int>(1000 * report.measures.unit_share) / 10.0
        << "% of edges unit); raise --iterations, or check that the metric asks for sizes the geometry allows";
   return text.str();
 }
@@ -86,12 +86,10 @@ void write_adaptation_report_table(std::ostream& out, const AdaptationReport& re
                 "%s after %zu passes: %d -> %d elements; edges unit %.1f%% (length %.3f/%.3f/%.3f min/mean/max); "
                 "quality min %.3f mean %.3f (%.2f%% below 0.1); adapt %.2f s, curve %.2f s, peak %.0f MiB\n",
                 report.run.converged ? "converged" : "stopped at the cap", report.run.passes.size(), report.input_elements,
-                report.output_elements, 100 * report.measures.unit_share, report.measures.min, report.measures.mean,
-                report.measures.max, report.measures.quality_min, report.measures.quality_mean, 100 * report.measures.low_quality_share,
-                report.seconds_adapt,
+                report.output_elements, 100 * report.measures.unit_share, report.measures.min, report.measures.mean, report.measures.max,
+                report.measures.quality_min, report.measures.quality_mean, 100 * report.measures.low_quality_share, report.seconds_adapt,
                 report.seconds_curve, static_cast<double>(report.peak_memory_bytes) / (1 << 20));
   out << summary;
 }
-
 
 }  // namespace hocav

@@ -77,8 +77,8 @@ std::string formatted(const char* format, double value) {
 // Whether two runs curved the same mesh into the same output (times aside).
 bool same_output(const BenchFigures& a, const BenchFigures& b) {
   return a.output_hash == b.output_hash && a.elements == b.elements && a.points_after == b.points_after &&
-         a.normalized_jacobian_min == b.normalized_jacobian_min && a.average_gain == b.average_gain &&
-         a.corrections == b.corrections && a.rejections == b.rejections;
+         a.normalized_jacobian_min == b.normalized_jacobian_min && a.average_gain == b.average_gain && a.corrections == b.corrections &&
+         a.rejections == b.rejections;
 }
 
 // "yes"/"no" against the one-thread row of the same case and size; "" when there is none.
@@ -107,18 +107,15 @@ void write_bench_markdown(std::ostream& out, const MachineInfo& machine, const s
   out << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const BenchRow& row : rows) {
     const BenchFigures& f = row.figures;
-    out << "| " << row.case_name << " | " << grouped(f.elements) << " | " << grouped(f.points_before) << " / "
-        << grouped(f.points_after) << " | " << formatted("%.3g", f.max_anisotropy) << " | "
-        << grouped(static_cast<long long>(f.edges_optimized_per_second)) << " | " << formatted("%.2f s", f.seconds)
-        << " | " << formatted("%.2f", 1e6 * f.seconds / static_cast<double>(f.elements)) << " | "
+    out << "| " << row.case_name << " | " << grouped(f.elements) << " | " << grouped(f.points_before) << " / " << grouped(f.points_after)
+        << " | " << formatted("%.3g", f.max_anisotropy) << " | " << grouped(static_cast<long long>(f.edges_optimized_per_second)) << " | "
+        << formatted("%.2f s", f.seconds) << " | " << formatted("%.2f", 1e6 * f.seconds / static_cast<double>(f.elements)) << " | "
         << formatted("%.2f s", f.cpu_seconds) << " | " << formatted("%.2f s", f.setup_seconds) << " | "
-        << formatted("%.2g", f.normalized_jacobian_min) << " / "
-        << formatted("%.2f", f.normalized_jacobian_avg) << " / " << formatted("%.3g", f.normalized_jacobian_max)
-        << " | " << formatted("%.2g", f.scaled_jacobian_min) << " | " << formatted("%.2f%%", 100 * f.average_gain)
-        << " / " << formatted("%.0f%%", 100 * f.max_gain) << " | " << grouped(f.rejections) << " | "
-        << grouped(f.corrections) << " | " << row.threads << " | " << row.run_seconds.size() << " | "
-        << formatted("%.0f MiB", static_cast<double>(row.peak_rss_bytes) / (1 << 20)) << " | "
-        << thread_check(row, rows) << " |\n";
+        << formatted("%.2g", f.normalized_jacobian_min) << " / " << formatted("%.2f", f.normalized_jacobian_avg) << " / "
+        << formatted("%.3g", f.normalized_jacobian_max) << " | " << formatted("%.2g", f.scaled_jacobian_min) << " | "
+        << formatted("%.2f%%", 100 * f.average_gain) << " / " << formatted("%.0f%%", 100 * f.max_gain) << " | " << grouped(f.rejections)
+        << " | " << grouped(f.corrections) << " | " << row.threads << " | " << row.run_seconds.size() << " | "
+        << formatted("%.0f MiB", static_cast<double>(row.peak_rss_bytes) / (1 << 20)) << " | " << thread_check(row, rows) << " |\n";
   }
 }
 

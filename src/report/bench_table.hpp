@@ -17,9 +17,9 @@ struct BenchFigures {
   int dimension = 3;
   Index elements = 0, points_before = 0, points_after = 0;
   double max_anisotropy = 0;
-  double seconds = 0;          // curving, no I/O (the reinsertion passes, as `hocav curve` reports)
-  double cpu_seconds = 0;      // processor time of the curving, all threads (shows a loaded machine)
-  double setup_seconds = 0;    // metric field, boundary surrogate and its proposals, before the passes
+  double seconds = 0;        // curving, no I/O (the reinsertion passes, as `hocav curve` reports)
+  double cpu_seconds = 0;    // processor time of the curving, all threads (shows a loaded machine)
+  double setup_seconds = 0;  // metric field, boundary surrogate and its proposals, before the passes
   double edges_optimized_per_second = 0;
   double normalized_jacobian_min = 0, normalized_jacobian_avg = 0, normalized_jacobian_max = 0;
   double scaled_jacobian_min = 0;
@@ -35,15 +35,15 @@ struct BenchRow {
   std::string case_name;
   double target = 0;  // the element count asked for
   int threads = 1;
-  BenchFigures figures;               // of the run of median time
-  std::vector<double> run_seconds;    // every run, in order
-  long long peak_rss_bytes = 0;       // largest over the runs, each in its own process
+  BenchFigures figures;             // of the run of median time
+  std::vector<double> run_seconds;  // every run, in order
+  long long peak_rss_bytes = 0;     // largest over the runs, each in its own process
 };
 
 struct MachineInfo {
-  std::string cpu;            // model name from /proc/cpuinfo
-  int cores = 0;              // hardware threads
-  double load_average = 0;    // 1-minute load average when the bench started
+  std::string cpu;          // model name from /proc/cpuinfo
+  int cores = 0;            // hardware threads
+  double load_average = 0;  // 1-minute load average when the bench started
   long long memory_bytes = 0;
 };
 MachineInfo this_machine();

@@ -38,8 +38,8 @@ std::vector<double> volume_edge_gains(const Mesh<D>& mesh, const MetricField<D>&
 }
 
 template <int D>
-CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& field, Index points_before,
-                                  const ReinsertionResult& result, Index boundary_proposals_left) {
+CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& field, Index points_before, const ReinsertionResult& result,
+                                  Index boundary_proposals_left) {
   CurvingReport report;
   report.dimension = D;
   report.elements = mesh.element_count();
@@ -47,8 +47,7 @@ CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& fie
   report.points_after = mesh.vertex_count() + mesh.edge_count();
   report.seconds = result.seconds;
   report.counters = result.counters;
-  report.edges_optimized_per_second =
-      result.seconds > 0 ? static_cast<double>(result.counters.edges_optimized) / result.seconds : 0;
+  report.edges_optimized_per_second = result.seconds > 0 ? static_cast<double>(result.counters.edges_optimized) / result.seconds : 0;
   report.boundary_proposals_left = boundary_proposals_left;
 
   for (Index v = 0; v < field.back_mesh().vertex_count(); ++v) {
@@ -135,16 +134,14 @@ void write_curving_report_table(std::ostream& out, const CurvingReport& report) 
   row("max anisotropy", "%.3g", report.max_anisotropy);
   row("edges optimized per second", "%.0f", report.edges_optimized_per_second);
   row("time without I/O", "%.3f s", report.seconds);
-  row("normalized Jacobian min/avg/max", "%.3g / %.3g / %.3g", report.normalized_jacobian.min,
-      report.normalized_jacobian.average, report.normalized_jacobian.max);
+  row("normalized Jacobian min/avg/max", "%.3g / %.3g / %.3g", report.normalized_jacobian.min, report.normalized_jacobian.average,
+      report.normalized_jacobian.max);
   row("scaled Jacobian min", "%.3g", report.scaled_jacobian.min);
   row("gain avg / max", "%.2f%% / %.1f%%", 100 * report.average_gain, 100 * report.max_gain);
   row("cavities accepted / tried", "%lld / %lld", report.counters.accepted, report.counters.cavities);
   row("rejected (topology / curving)", "%lld / %lld", report.counters.rejected_topology, report.counters.rejected_curving);
-  row("edges optimized / kept optimal", "%lld / %lld", report.counters.edges_optimized,
-      report.counters.edges_kept_optimal);
-  row("elements certified / kept", "%lld / %lld", report.counters.elements_certified,
-      report.counters.certificates_kept);
+  row("edges optimized / kept optimal", "%lld / %lld", report.counters.edges_optimized, report.counters.edges_kept_optimal);
+  row("elements certified / kept", "%lld / %lld", report.counters.elements_certified, report.counters.certificates_kept);
   row("corrections", "%lld", report.counters.corrections);
   row("boundary nodes applied / left", "%lld / %d", report.counters.boundary_nodes_applied, report.boundary_proposals_left);
   const ProposalCompletion& b = report.boundary_completion;

@@ -16,15 +16,15 @@ namespace hocav {
 struct CurvingReport {
   int dimension = 3;
   Index elements = 0;
-  Index points_before = 0;  // P1 points of the input
-  Index points_after = 0;   // P1 points + P2 nodes of the output
-  double max_anisotropy = 0;  // largest ratio of largest to smallest metric size at a vertex
-  double seconds = 0;         // curving time, no I/O
-  double edges_optimized_per_second = 0;  // over the whole curving time
-  ValueSummary normalized_jacobian;       // per element: min of J / |J_straight|
-  ValueSummary scaled_jacobian;           // per element: min J / max J (gmsh's measure)
-  double average_gain = 0, max_gain = 0;  // over volume edges: 1 − ℓ(curved) / ℓ(straight), 16-point Gauss
-  Index boundary_proposals_left = 0;      // proposals neither a cavity nor the last pass consumed
+  Index points_before = 0;                 // P1 points of the input
+  Index points_after = 0;                  // P1 points + P2 nodes of the output
+  double max_anisotropy = 0;               // largest ratio of largest to smallest metric size at a vertex
+  double seconds = 0;                      // curving time, no I/O
+  double edges_optimized_per_second = 0;   // over the whole curving time
+  ValueSummary normalized_jacobian;        // per element: min of J / |J_straight|
+  ValueSummary scaled_jacobian;            // per element: min J / max J (gmsh's measure)
+  double average_gain = 0, max_gain = 0;   // over volume edges: 1 − ℓ(curved) / ℓ(straight), 16-point Gauss
+  Index boundary_proposals_left = 0;       // proposals neither a cavity nor the last pass consumed
   ProposalCompletion boundary_completion;  // the last pass over the proposals the cavities left
   P2CavityCounters counters;
   int threads = 1;
@@ -37,8 +37,8 @@ std::vector<double> volume_edge_gains(const Mesh<D>& mesh, const MetricField<D>&
 
 // Measures the output (Jacobians, gains) and gathers the run's figures.
 template <int D>
-CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& field, Index points_before,
-                                  const ReinsertionResult& result, Index boundary_proposals_left);
+CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& field, Index points_before, const ReinsertionResult& result,
+                                  Index boundary_proposals_left);
 
 void write_curving_report_json(std::ostream& out, const CurvingReport& report);
 // The same object, as a value inside a larger report.

@@ -91,8 +91,7 @@ void JsonWriter::open(char bracket, bool is_object) {
 }
 
 void JsonWriter::close(char bracket, bool is_object) {
-  if (levels_.empty() || levels_.back().is_object != is_object || after_key_)
-    throw std::logic_error("JsonWriter: unbalanced close");
+  if (levels_.empty() || levels_.back().is_object != is_object || after_key_) throw std::logic_error("JsonWriter: unbalanced close");
   bool empty = levels_.back().empty;
   levels_.pop_back();
   if (!empty) new_line();

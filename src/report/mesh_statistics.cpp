@@ -215,11 +215,15 @@ std::string memory_text(std::size_t bytes) {
 // The bounds of a histogram bin in JSON: "from" and "to", null for an infinite end.
 void write_bin_bounds(JsonWriter& json, const std::string& label, std::optional<double> from, std::optional<double> to) {
   json.member("bin", label).key("from");
-  if (from) json.value(*from);
-  else json.null();
+  if (from)
+    json.value(*from);
+  else
+    json.null();
   json.key("to");
-  if (to) json.value(*to);
-  else json.null();
+  if (to)
+    json.value(*to);
+  else
+    json.null();
 }
 
 void write_jacobian_figures_json(JsonWriter& json, std::string_view name, const JacobianFigures& figures) {
@@ -282,8 +286,8 @@ std::string invalidity_summary(const MeshStatistics& s) {
     summary = std::to_string(jacobian.invalid) + (jacobian.invalid == 1 ? " element" : " elements") +
               " with a non-positive Jacobian (first: element " + std::to_string(jacobian.first_invalid_element + 1) + ")";
   if (!s.consistency_problems.empty())
-    summary += (summary.empty() ? "" : "; ") + std::string("consistency: ") +
-               std::to_string(s.consistency_problems.size()) + " problems (first: " + s.consistency_problems.front() + ")";
+    summary += (summary.empty() ? "" : "; ") + std::string("consistency: ") + std::to_string(s.consistency_problems.size()) +
+               " problems (first: " + s.consistency_problems.front() + ")";
   return summary;
 }
 
@@ -330,11 +334,8 @@ MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> no
 template MeshStatistics compute_mesh_statistics(Mesh<2>&, std::span<const double>, int);
 template MeshStatistics compute_mesh_statistics(Mesh<3>&, std::span<const double>, int);
 
-void write_statistics_table(std::ostream& out, const MeshStatistics& s, const std::string& mesh_name,
-                            const std::string& metric_name) {
-  auto row = [&out](const std::string& label, const std::string& value) {
-    out << std::left << std::setw(22) << label << value << '\n';
-  };
+void write_statistics_table(std::ostream& out, const MeshStatistics& s, const std::string& mesh_name, const std::string& metric_name) {
+  auto row = [&out](const std::string& label, const std::string& value) { out << std::left << std::setw(22) << label << value << '\n'; };
   const char* measure_name = s.dimension == 2 ? "area" : "volume";
   row("mesh", mesh_name);
   row("dimension", std::to_string(s.dimension));
@@ -364,21 +365,19 @@ void write_statistics_table(std::ostream& out, const MeshStatistics& s, const st
   auto figures_text = [](const JacobianFigures& f) {
     return "min " + number(f.min) + "  avg " + number(f.average) + "  max " + number(f.max);
   };
-  row("normalized Jacobian", figures_text(jacobian.min_normalized) +
-                                 (jacobian.straight ? "  (straight P1 elements: 1, or -1 when inverted)"
-                                                    : "  (per element: certified min of J / |J straight|)"));
+  row("normalized Jacobian",
+      figures_text(jacobian.min_normalized) +
+          (jacobian.straight ? "  (straight P1 elements: 1, or -1 when inverted)" : "  (per element: certified min of J / |J straight|)"));
   row("scaled Jacobian", figures_text(jacobian.scaled) + "  (per element: min J / max J)");
   row("invalid elements", std::to_string(jacobian.invalid) +
-                              (jacobian.invalid > 0 ? " (first: element " + std::to_string(jacobian.first_invalid_element + 1) + ")"
-                                                    : ""));
+                              (jacobian.invalid > 0 ? " (first: element " + std::to_string(jacobian.first_invalid_element + 1) + ")" : ""));
   if (!jacobian.straight) {
     std::ostringstream header;
     header << std::right << std::setw(10) << "normalized" << std::setw(10) << "scaled";
     row("Jacobian histogram", header.str());
     for (std::size_t bin = 0; bin < jacobian.min_normalized.histogram.size(); ++bin) {
       std::ostringstream counts;
-      counts << std::right << std::setw(10) << jacobian.min_normalized.histogram[bin] << std::setw(10)
-             << jacobian.scaled.histogram[bin];
+      counts << std::right << std::setw(10) << jacobian.min_normalized.histogram[bin] << std::setw(10) << jacobian.scaled.histogram[bin];
       row(std::string(2, ' ').append(jacobian_bin_label(bin)), counts.str());
     }
   }
@@ -388,8 +387,8 @@ void write_statistics_table(std::ostream& out, const MeshStatistics& s, const st
   if (!s.metric) return;
   const MetricStatistics& metric = *s.metric;
   row("metric", metric_name);
-  row("edge length", "min " + number(metric.min) + "  mean " + number(metric.mean) + "  max " + number(metric.max) +
-                         "  (" + std::to_string(metric.edge_count) + " edges)");
+  row("edge length", "min " + number(metric.min) + "  mean " + number(metric.mean) + "  max " + number(metric.max) + "  (" +
+                         std::to_string(metric.edge_count) + " edges)");
   for (std::size_t bin = 0; bin < metric.histogram.size(); ++bin)
     row(std::string(2, ' ').append(bin_label(bin)), count_and_share(metric.histogram[bin], metric.edge_count));
   row("unit edges", percent(metric.unit_share) + " in " + bin_label(kUnitEdgeBin));
@@ -401,8 +400,7 @@ void write_statistics_table(std::ostream& out, const MeshStatistics& s, const st
   row("max anisotropy", number(metric.max_anisotropy) + " (largest / smallest size at a vertex)");
 }
 
-void write_statistics_json(std::ostream& out, const MeshStatistics& s, const std::string& mesh_name,
-                           const std::string& metric_name) {
+void write_statistics_json(std::ostream& out, const MeshStatistics& s, const std::string& mesh_name, const std::string& metric_name) {
   JsonWriter json(out);
   json.begin_object();
   json.member("mesh", mesh_name).member("dimension", s.dimension).member("order", s.order);
@@ -430,8 +428,10 @@ void write_statistics_json(std::ostream& out, const MeshStatistics& s, const std
   write_jacobian_figures_json(json, "min_normalized", jacobian.min_normalized);
   write_jacobian_figures_json(json, "scaled", jacobian.scaled);
   json.member("invalid", jacobian.invalid).key("first_invalid_element");
-  if (jacobian.invalid > 0) json.value(jacobian.first_invalid_element + 1);
-  else json.null();
+  if (jacobian.invalid > 0)
+    json.value(jacobian.first_invalid_element + 1);
+  else
+    json.null();
   json.key("histogram").begin_array();
   for (std::size_t bin = 0; bin < jacobian.min_normalized.histogram.size(); ++bin) {
     json.begin_object();

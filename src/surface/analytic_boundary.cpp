@@ -31,14 +31,12 @@ Vec<D> direction_or_any(const Vec<D>& v, const Vec<D>& axis) {
 template <int D>
 Vec<D> AnalyticSurface<D>::normal(const Vec<D>& x) const {
   switch (kind) {
-    case Kind::kSphere:
-      return direction_or_any<D>(x - origin, direction);
+    case Kind::kSphere: return direction_or_any<D>(x - origin, direction);
     case Kind::kCylinder: {
       const Vec<D> offset = x - origin;
       return direction_or_any<D>(offset - dot(offset, direction) * direction, direction);
     }
-    case Kind::kPlane:
-      break;
+    case Kind::kPlane: break;
   }
   return direction;
 }

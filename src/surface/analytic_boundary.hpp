@@ -22,9 +22,7 @@ struct AnalyticSurface {
   static AnalyticSurface cylinder(const Vec<D>& axis_point, const Vec<D>& axis, double radius) requires(D == 3) {
     return {Kind::kCylinder, axis_point, axis * (1 / norm(axis)), radius};
   }
-  static AnalyticSurface plane(const Vec<D>& point, const Vec<D>& normal) {
-    return {Kind::kPlane, point, normal * (1 / norm(normal)), 0};
-  }
+  static AnalyticSurface plane(const Vec<D>& point, const Vec<D>& normal) { return {Kind::kPlane, point, normal * (1 / norm(normal)), 0}; }
 
   Vec<D> project(const Vec<D>& x) const;
   // Unit normal at the projection of x: away from the centre or axis, along `direction` for a plane.

@@ -193,8 +193,7 @@ Vec<D> CadBoundary<D>::project_on_intersection(const Vec<D>& x, int ref_a, int r
     };
     const std::vector<int> curves_a = curves_of(ref_a), curves_b = curves_of(ref_b);
     std::vector<int> shared;
-    std::set_intersection(curves_a.begin(), curves_a.end(), curves_b.begin(), curves_b.end(),
-                          std::back_inserter(shared));
+    std::set_intersection(curves_a.begin(), curves_a.end(), curves_b.begin(), curves_b.end(), std::back_inserter(shared));
     if (!shared.empty()) {
       BoundaryPoint<3> best;
       best.distance = std::numeric_limits<double>::infinity();

@@ -93,9 +93,7 @@ Vec<D> evaluate(const CubicPatch<D>& patch, const PatchParameters<D>& parameters
 template <int D>
 Vec<D> edge_curve_midpoint(const CubicPatch<D>& patch, int edge) {
   const auto& ends = kPatchEdges<D>[edge];
-  return (patch.vertex(ends[0]) + patch.vertex(ends[1]) +
-          3.0 * (patch.edge_point(edge, 0) + patch.edge_point(edge, 1))) *
-         0.125;
+  return (patch.vertex(ends[0]) + patch.vertex(ends[1]) + 3.0 * (patch.edge_point(edge, 0) + patch.edge_point(edge, 1))) * 0.125;
 }
 
 // How far along its tangent an edge control point goes: b_ij = P_i + d t_i, t_i the unit tangent

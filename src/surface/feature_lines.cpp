@@ -51,17 +51,14 @@ std::vector<bool> listed_corners(const Mesh<D>& mesh) {
 const double kMaxTurn = 15 * std::numbers::pi / 180;
 
 // Whether a line passes through v: two feature edges, and not an input corner.
-bool passes_through(const FeatureLines<3>& lines, Index v) {
-  return lines.neighbours[v].size() == 2 && !lines.input_corners[v];
-}
+bool passes_through(const FeatureLines<3>& lines, Index v) { return lines.neighbours[v].size() == 2 && !lines.input_corners[v]; }
 
 // Whether the feature line turns at v: two branches whose tangents are more than kMaxTurn from
 // opposite (where more meet, each pair of sides has its own n_A × n_B).
 bool line_turns_at(const Mesh<3>& mesh, const FeatureLines<3>& lines, Index v) {
   const auto& neighbours = lines.neighbours[v];
   if (neighbours.size() != 2) return false;
-  return dot(branch_tangent(mesh, lines, v, neighbours[0]), branch_tangent(mesh, lines, v, neighbours[1])) >
-         -std::cos(kMaxTurn);
+  return dot(branch_tangent(mesh, lines, v, neighbours[0]), branch_tangent(mesh, lines, v, neighbours[1])) > -std::cos(kMaxTurn);
 }
 
 }  // namespace
@@ -90,7 +87,8 @@ FeatureLines<D> find_feature_lines(const Mesh<D>& mesh, [[maybe_unused]] const S
       }
     for (Index v = 0; v < mesh.vertex_count(); ++v)
       if (passes_through(lines, v)) {
-        const Vec3 across = side_pair[v][0] == kNoIndex ? Vec3{} : cross(normals.normals[side_pair[v][0]], normals.normals[side_pair[v][1]]);
+        const Vec3 across = side_pair[v][0] == kNoIndex ? Vec3{}
+                                                        : cross(normals.normals[side_pair[v][0]], normals.normals[side_pair[v][1]]);
         if (rule == LineTangents::kSharpFromNormals && norm(across) > kSharpRidgeSine) {
           lines.tangents[v] = unit_or_zero(across);
           continue;

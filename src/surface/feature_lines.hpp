@@ -48,7 +48,7 @@ struct FeatureLines {
 
 // Where the tangent of a line through a vertex comes from.
 enum class LineTangents {
-  kCircle,          // always the circle through the vertex and its two neighbours
+  kCircle,            // always the circle through the vertex and its two neighbours
   kSharpFromNormals,  // n_A × n_B at sharp ridges (kSharpRidgeSine), for the final, fitted normals
 };
 

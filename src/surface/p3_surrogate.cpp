@@ -23,8 +23,8 @@ Vec<D> unit(const Vec<D>& v) {
 }
 
 // The edge curves of the feature edges: their facets' refs differ, or their sides do at an end.
-RidgeCurves ridge_curves_of(const Mesh<3>& mesh, const std::vector<CubicPatch<3>>& patches,
-                            const SurfaceTopology<3>& topology, const VertexNormals<3>& normals) {
+RidgeCurves ridge_curves_of(const Mesh<3>& mesh, const std::vector<CubicPatch<3>>& patches, const SurfaceTopology<3>& topology,
+                            const VertexNormals<3>& normals) {
   std::vector<CubicCurve> curves;
   std::vector<std::array<int, 2>> refs;
   for (Index f = 0; f < mesh.facet_count(); ++f)
@@ -34,8 +34,7 @@ RidgeCurves ridge_curves_of(const Mesh<3>& mesh, const std::vector<CubicPatch<3>
       const int e = (s + 1) % 3;             // the patch edge opposite local vertex s
       const Index first = mesh.facet(f)[kPatchEdges<3>[e][0]], second = mesh.facet(f)[kPatchEdges<3>[e][1]];
       auto sides_differ = [&](Index v) {
-        return normals.corner_sides[f][facet_local_vertex(mesh, f, v)] !=
-               normals.corner_sides[g][facet_local_vertex(mesh, g, v)];
+        return normals.corner_sides[f][facet_local_vertex(mesh, f, v)] != normals.corner_sides[g][facet_local_vertex(mesh, g, v)];
       };
       if (mesh.facet_ref(f) == mesh.facet_ref(g) && !sides_differ(first) && !sides_differ(second)) continue;
       const CubicPatch<3>& patch = patches[f];
@@ -64,8 +63,7 @@ P3Surrogate<D>::P3Surrogate(const Mesh<D>& mesh, const SurrogateOptions<D>& opti
     for (const Vec<D>& point : patches_[f].control) boxes_[f].add(point);
     for (int e = 0; e < CubicPatch<D>::kEdges; ++e) {
       const auto& ends = kPatchEdges<D>[e];
-      edge_patches_.insert(Mesh<D>::edge_key(mesh.facet(f)[ends[0]], mesh.facet(f)[ends[1]]),
-                           CubicPatch<D>::kEdges * f + e);
+      edge_patches_.insert(Mesh<D>::edge_key(mesh.facet(f)[ends[0]], mesh.facet(f)[ends[1]]), CubicPatch<D>::kEdges * f + e);
     }
   }
   tree_ = PatchTree<D>(boxes_);
@@ -171,8 +169,7 @@ typename P3Surrogate<D>::Closest P3Surrogate<D>::closest(const Vec<D>& x, const 
   Closest best;
   best.on_patch.distance2 = std::numeric_limits<double>::infinity();
   tree_.nearest(x, [&](Index p, double best2) {
-    if ((query.ref && refs_[p] != *query.ref) || boxes_[p].distance2(x) >= best2)
-      return std::numeric_limits<double>::infinity();
+    if ((query.ref && refs_[p] != *query.ref) || boxes_[p].distance2(x) >= best2) return std::numeric_limits<double>::infinity();
     const PatchClosestPoint<D> on_patch = closest_point_on_patch(patches_[p], x);
     if (on_patch.distance2 < best.on_patch.distance2) best = {p, on_patch};
     return on_patch.distance2;

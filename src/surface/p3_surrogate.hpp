@@ -90,7 +90,7 @@ class P3Surrogate final : public BoundaryGeometry<D> {
   VertexNormals<D> normals_;
   FeatureLines<D> lines_;
   PatchTree<D> tree_;
-  RidgeCurves ridge_curves_;  // 3D
+  RidgeCurves ridge_curves_;   // 3D
   IndexHashMap edge_patches_;  // mesh edge key -> CubicPatch<D>::kEdges * patch + local edge
 };
 

@@ -62,8 +62,7 @@ bool solve_positive_definite(const Matrix<K>& a, const std::array<double, K>& b,
 }  // namespace
 
 template <int D>
-PatchClosestPoint<D> closest_point_on_patch(const CubicPatch<D>& patch, const Vec<D>& x,
-                                            const PatchParameters<D>& start) {
+PatchClosestPoint<D> closest_point_on_patch(const CubicPatch<D>& patch, const Vec<D>& x, const PatchParameters<D>& start) {
   constexpr int K = D - 1;
   using Parameters = PatchParameters<D>;
   Parameters p = clamp_to_domain<K>(start);
@@ -126,13 +125,11 @@ PatchClosestPoint<D> closest_point_on_patch(const CubicPatch<D>& patch, const Ve
     Parameters newton{};
     bool has_newton = false;
     if (active_count == 0) {
-      has_newton = solve_positive_definite<K>(hessian, descent, newton) ||
-                   solve_positive_definite<K>(gauss_newton, descent, newton);
+      has_newton = solve_positive_definite<K>(hessian, descent, newton) || solve_positive_definite<K>(gauss_newton, descent, newton);
     } else if constexpr (K == 2) {
       const Parameters along{-active_normal[1], active_normal[0]};
       auto curvature = [&along](const Matrix<K>& m) {
-        return along[0] * (m[0][0] * along[0] + m[0][1] * along[1]) +
-               along[1] * (m[1][0] * along[0] + m[1][1] * along[1]);
+        return along[0] * (m[0][0] * along[0] + m[0][1] * along[1]) + along[1] * (m[1][0] * along[0] + m[1][1] * along[1]);
       };
       const double slope = descent[0] * along[0] + descent[1] * along[1];
       const double bend = curvature(hessian) > 0 ? curvature(hessian) : curvature(gauss_newton);

@@ -35,8 +35,7 @@ struct PatchClosestPoint {
 // A local minimum of the distance from x over the patch, found from `start` (a stationary point on
 // the patch, its border included).
 template <int D>
-PatchClosestPoint<D> closest_point_on_patch(const CubicPatch<D>& patch, const Vec<D>& x,
-                                            const PatchParameters<D>& start);
+PatchClosestPoint<D> closest_point_on_patch(const CubicPatch<D>& patch, const Vec<D>& x, const PatchParameters<D>& start);
 
 // Same, started from the closest point of the straight facet through the patch's vertices (good
 // while the patch is a mild bend of its facet, which is what the surrogate builds).

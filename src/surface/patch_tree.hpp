@@ -69,8 +69,7 @@ class PatchTree {
       const Node& node = nodes_[stack[--size]];
       if (node.box.distance2(x) >= best2) continue;
       if (node.count > 0) {
-        for (Index i = node.first; i < node.first + node.count; ++i)
-          best2 = std::min(best2, distance2_to(order_[i], best2));
+        for (Index i = node.first; i < node.first + node.count; ++i) best2 = std::min(best2, distance2_to(order_[i], best2));
         continue;
       }
       // Children are node.first and node.first + 1: push the farther one first so the nearer pops first.

@@ -16,7 +16,7 @@ namespace {
 // Sets the residual of the fit; false when it fails.
 template <int D, bool kQuadratic>
 bool fit_once(const Vec<D>& point, std::span<const Vec<D>> neighbors, Vec<D>& normal, double& residual) {
-  constexpr int K = D - 1;                                        // tangent coordinates
+  constexpr int K = D - 1;                                           // tangent coordinates
   constexpr int kUnknowns = K + (kQuadratic ? K * (K + 1) / 2 : 0);  // slopes, then x², (xy, y²)
   if (static_cast<int>(neighbors.size()) < kUnknowns + 1) return false;
   const auto tangents = orthonormal_complement(normal);
@@ -66,8 +66,7 @@ bool fit_once(const Vec<D>& point, std::span<const Vec<D>> neighbors, Vec<D>& no
 
 // Two passes of fit_once, the second in the frame of the first.
 template <int D, bool kQuadratic>
-QuadricNormal<D> fitted_normal(const Vec<D>& point, std::span<const Vec<D>> neighbors, const Vec<D>& initial,
-                               double max_turn_radians) {
+QuadricNormal<D> fitted_normal(const Vec<D>& point, std::span<const Vec<D>> neighbors, const Vec<D>& initial, double max_turn_radians) {
   const QuadricNormal<D> failed{initial, std::numeric_limits<double>::infinity()};
   QuadricNormal<D> fit{initial, 0};
   for (int pass = 0; pass < 2; ++pass)

@@ -26,8 +26,7 @@ IndexHashMap tagged_ridges(const Mesh<D>& mesh) {
     for (Index v : mesh.corners()) tagged.insert(static_cast<std::uint64_t>(v), 0);
   } else {
     for (Index line : mesh.ridges())
-      if (line >= 0 && line < mesh.line_count())
-        tagged.insert(Mesh<3>::edge_key(mesh.line(line)[0], mesh.line(line)[1]), 0);
+      if (line >= 0 && line < mesh.line_count()) tagged.insert(Mesh<3>::edge_key(mesh.line(line)[0], mesh.line(line)[1]), 0);
   }
   return tagged;
 }

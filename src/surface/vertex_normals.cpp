@@ -104,8 +104,7 @@ struct RefVertex {
 
 template <int D>
 void gather_neighbourhood(const Mesh<D>& mesh, const SurfaceTopology<D>& topology, const VertexNormals<D>& normals,
-                          std::span<const Index> side_corners, int rings, std::vector<Index>& facets,
-                          std::vector<RefVertex>& gathered) {
+                          std::span<const Index> side_corners, int rings, std::vector<Index>& facets, std::vector<RefVertex>& gathered) {
   facets.clear();
   for (Index corner : side_corners) facets.push_back(corner / D);
   std::size_t layer_begin = 0;
@@ -117,8 +116,7 @@ void gather_neighbourhood(const Mesh<D>& mesh, const SurfaceTopology<D>& topolog
         const Index g = topology.neighbors[f][s];
         if (g == kNoIndex || std::find(facets.begin(), facets.end(), g) != facets.end()) continue;
         const int i = (s + 1) % D;  // a vertex of side s
-        if (normals.corner_sides[f][i] == normals.corner_sides[g][facet_local_vertex(mesh, g, mesh.facet(f)[i])])
-          facets.push_back(g);
+        if (normals.corner_sides[f][i] == normals.corner_sides[g][facet_local_vertex(mesh, g, mesh.facet(f)[i])]) facets.push_back(g);
       }
     }
     layer_begin = layer_end;
@@ -134,8 +132,8 @@ void gather_neighbourhood(const Mesh<D>& mesh, const SurfaceTopology<D>& topolog
 
 // The points of the neighbourhood from facets of one ref (all refs when ref is empty), each vertex once.
 template <int D>
-void neighbourhood_points(const Mesh<D>& mesh, const std::vector<RefVertex>& gathered, std::optional<int> ref,
-                          std::vector<Index>& vertices, std::vector<Vec<D>>& points) {
+void neighbourhood_points(const Mesh<D>& mesh, const std::vector<RefVertex>& gathered, std::optional<int> ref, std::vector<Index>& vertices,
+                          std::vector<Vec<D>>& points) {
   vertices.clear();
   for (const RefVertex& item : gathered)
     if (!ref || item.ref == *ref) vertices.push_back(item.vertex);
@@ -152,9 +150,7 @@ void neighbourhood_points(const Mesh<D>& mesh, const std::vector<RefVertex>& gat
 // The facet corners of each side, in compressed rows.
 struct SideCorners {
   std::vector<Index> offsets, corners;
-  std::span<const Index> of(std::size_t side) const {
-    return {corners.data() + offsets[side], corners.data() + offsets[side + 1]};
-  }
+  std::span<const Index> of(std::size_t side) const { return {corners.data() + offsets[side], corners.data() + offsets[side + 1]}; }
 };
 
 template <int D>
@@ -165,8 +161,7 @@ SideCorners side_corners_of(const Mesh<D>& mesh, const VertexNormals<D>& normals
     for (Index side : sides) ++rows.offsets[side + 1];
   for (std::size_t side = 0; side < side_count; ++side) rows.offsets[side + 1] += rows.offsets[side];
   std::vector<Index> fill(rows.offsets.begin(), rows.offsets.end() - 1);
-  for (Index c = 0; c < static_cast<Index>(rows.corners.size()); ++c)
-    rows.corners[fill[normals.corner_sides[c / D][c % D]]++] = c;
+  for (Index c = 0; c < static_cast<Index>(rows.corners.size()); ++c) rows.corners[fill[normals.corner_sides[c / D][c % D]]++] = c;
   return rows;
 }
 
@@ -230,8 +225,7 @@ class SectionFits {
 
  private:
   std::optional<Vec3> fit(Index side, Index v, const Vec3& tangent) {
-    gather_neighbourhood(mesh_, topology_, separate_, rows_.of(static_cast<std::size_t>(side)), kSectionRings, facets_,
-                         gathered_);
+    gather_neighbourhood(mesh_, topology_, separate_, rows_.of(static_cast<std::size_t>(side)), kSectionRings, facets_, gathered_);
     neighbourhood_points(mesh_, gathered_, std::nullopt, vertices_, points_);
     return section_circle_normal(mesh_.vertex(v), tangent, points_, separate_.normals[side]);
   }
@@ -249,8 +243,7 @@ class SectionFits {
 }  // namespace
 
 template <int D>
-VertexNormals<D> compute_vertex_normals(const Mesh<D>& mesh, const SurfaceTopology<D>& topology,
-                                        const VertexNormalOptions<D>& options) {
+VertexNormals<D> compute_vertex_normals(const Mesh<D>& mesh, const SurfaceTopology<D>& topology, const VertexNormalOptions<D>& options) {
   const Index facet_count = mesh.facet_count();
   const Index corner_count = checked_index(static_cast<std::size_t>(facet_count) * D, "facet corners");
   CornerSets sets(static_cast<std::size_t>(corner_count));
@@ -310,9 +303,7 @@ VertexNormals<D> compute_vertex_normals(const Mesh<D>& mesh, const SurfaceTopolo
   return result;
 }
 
-template VertexNormals<2> compute_vertex_normals(const Mesh<2>&, const SurfaceTopology<2>&,
-                                                 const VertexNormalOptions<2>&);
-template VertexNormals<3> compute_vertex_normals(const Mesh<3>&, const SurfaceTopology<3>&,
-                                                 const VertexNormalOptions<3>&);
+template VertexNormals<2> compute_vertex_normals(const Mesh<2>&, const SurfaceTopology<2>&, const VertexNormalOptions<2>&);
+template VertexNormals<3> compute_vertex_normals(const Mesh<3>&, const SurfaceTopology<3>&, const VertexNormalOptions<3>&);
 
 }  // namespace hocav

@@ -59,7 +59,6 @@ struct VertexNormals {
 };
 
 template <int D>
-VertexNormals<D> compute_vertex_normals(const Mesh<D>& mesh, const SurfaceTopology<D>& topology,
-                                        const VertexNormalOptions<D>& options);
+VertexNormals<D> compute_vertex_normals(const Mesh<D>& mesh, const SurfaceTopology<D>& topology, const VertexNormalOptions<D>& options);
 
 }  // namespace hocav

@@ -33,8 +33,10 @@ std::map<int, double> boundary_measure_by_ref(const Mesh<D>& mesh) {
   std::map<int, double> out;
   for (Index f = 0; f < mesh.facet_count(); ++f) {
     const auto& v = mesh.facet(f);
-    if constexpr (D == 2) out[mesh.facet_ref(f)] += norm(mesh.vertex(v[1]) - mesh.vertex(v[0]));
-    else out[mesh.facet_ref(f)] += 0.5 * norm(cross(mesh.vertex(v[1]) - mesh.vertex(v[0]), mesh.vertex(v[2]) - mesh.vertex(v[0])));
+    if constexpr (D == 2)
+      out[mesh.facet_ref(f)] += norm(mesh.vertex(v[1]) - mesh.vertex(v[0]));
+    else
+      out[mesh.facet_ref(f)] += 0.5 * norm(cross(mesh.vertex(v[1]) - mesh.vertex(v[0]), mesh.vertex(v[2]) - mesh.vertex(v[0])));
   }
   return out;
 }
@@ -74,7 +76,8 @@ void expect_adapted(Mesh<D>& mesh, const AdaptationMetric<D>& metric, double uni
   EXPECT_GE(m.quality_min, min_quality);
   // Each pass after the first few changes less than the one before it ends with: no oscillation.
   const AdaptationPass& last = run.passes.back();
-  EXPECT_LE(last.splits.done + last.collapses.done, run.passes[run.passes.size() / 2].splits.done + run.passes[run.passes.size() / 2].collapses.done);
+  EXPECT_LE(last.splits.done + last.collapses.done,
+            run.passes[run.passes.size() / 2].splits.done + run.passes[run.passes.size() / 2].collapses.done);
 }
 
 TEST(AdaptationLoop, SquareInTheLinearMetricBecomesUnit) {
@@ -138,7 +141,8 @@ void expect_required_kept(Mesh<D> mesh) {
   // the feature lines on it.
   std::vector<Index>& required_facets = D == 2 ? mesh.required_edges() : mesh.required_triangles();
   for (Index f = 0; f < mesh.facet_count(); ++f)
-    if (std::all_of(mesh.facet(f).begin(), mesh.facet(f).end(), [&](Index v) { return mesh.vertex(v)[0] == 0; })) required_facets.push_back(f);
+    if (std::all_of(mesh.facet(f).begin(), mesh.facet(f).end(), [&](Index v) { return mesh.vertex(v)[0] == 0; }))
+      required_facets.push_back(f);
   if constexpr (D == 3)
     for (Index l = 0; l < mesh.line_count(); ++l)
       if (mesh.vertex(mesh.line(l)[0])[0] == 0 && mesh.vertex(mesh.line(l)[1])[0] == 0) mesh.required_edges().push_back(l);

@@ -30,8 +30,10 @@ double boundary_measure(const Mesh<D>& mesh) {
   for (Index f = 0; f < mesh.facet_count(); ++f) {
     if (mesh.facet_removed(f)) continue;
     const auto& v = mesh.facet(f);
-    if constexpr (D == 2) sum += norm(mesh.vertex(v[1]) - mesh.vertex(v[0]));
-    else sum += 0.5 * norm(cross(mesh.vertex(v[1]) - mesh.vertex(v[0]), mesh.vertex(v[2]) - mesh.vertex(v[0])));
+    if constexpr (D == 2)
+      sum += norm(mesh.vertex(v[1]) - mesh.vertex(v[0]));
+    else
+      sum += 0.5 * norm(cross(mesh.vertex(v[1]) - mesh.vertex(v[0]), mesh.vertex(v[2]) - mesh.vertex(v[0])));
   }
   return sum;
 }
@@ -39,8 +41,10 @@ double boundary_measure(const Mesh<D>& mesh) {
 template <int D>
 Vec<D> unit_normal(const Mesh<D>& mesh, const typename Mesh<D>::Facet& v) {
   Vec<D> n;
-  if constexpr (D == 2) n = Vec2{mesh.vertex(v[1])[1] - mesh.vertex(v[0])[1], mesh.vertex(v[0])[0] - mesh.vertex(v[1])[0]};
-  else n = cross(mesh.vertex(v[1]) - mesh.vertex(v[0]), mesh.vertex(v[2]) - mesh.vertex(v[0]));
+  if constexpr (D == 2)
+    n = Vec2{mesh.vertex(v[1])[1] - mesh.vertex(v[0])[1], mesh.vertex(v[0])[0] - mesh.vertex(v[1])[0]};
+  else
+    n = cross(mesh.vertex(v[1]) - mesh.vertex(v[0]), mesh.vertex(v[2]) - mesh.vertex(v[0]));
   return (1 / norm(n)) * n;
 }
 
@@ -66,8 +70,10 @@ CavityStatus split_boundary_edge(Mesh<D>& mesh, CavityWorkspace<D>& work, Index 
   options.removed_facets = facets;
   options.removed_lines = lines;
   const CavityStatus status = work.cavity_operator.plan(mesh, work.cavity, v, options);
-  if (status == CavityStatus::kAccepted) work.cavity_operator.commit(mesh);
-  else mesh.pop_vertex();
+  if (status == CavityStatus::kAccepted)
+    work.cavity_operator.commit(mesh);
+  else
+    mesh.pop_vertex();
   return status;
 }
 
@@ -96,7 +102,7 @@ TEST(BoundaryCavity, SplitOfARidgeEdgeSplitsItsLineAndBothFacets3D) {
   mesh.compact();
   EXPECT_EQ(mesh.line_count(), lines + 1);
   EXPECT_EQ(static_cast<Index>(mesh.ridges().size()), ridges + 1);  // both halves are ridges
-  EXPECT_EQ(mesh.facet_count(), facets + 2);  // two facets, each split in two
+  EXPECT_EQ(mesh.facet_count(), facets + 2);                        // two facets, each split in two
   EXPECT_NEAR(boundary_measure(mesh), 6, 1e-12);
   EXPECT_NEAR(total_measure(mesh), 1, 1e-12);
 }

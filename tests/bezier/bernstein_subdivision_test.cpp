@@ -76,8 +76,7 @@ TYPED_TEST(BezierSubdivisionTest, CornerCoefficientsOfChildrenAreValuesOfThePoly
   SubdivisionChildren<D> children;
   subdivide_bernstein(parent, children);
   for (int child = 0; child < kSubdivisionChildCount<D>; ++child)
-    for (int v = 0; v <= D; ++v)
-      EXPECT_NEAR(children[child][v], evaluate_bernstein(parent, subdivision_child_vertex<D>(child, v)), 1e-14);
+    for (int v = 0; v <= D; ++v) EXPECT_NEAR(children[child][v], evaluate_bernstein(parent, subdivision_child_vertex<D>(child, v)), 1e-14);
 }
 
 }  // namespace

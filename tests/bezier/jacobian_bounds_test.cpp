@@ -50,8 +50,7 @@ double min_coefficient(const P2Element<D>& element) {
 // the two edge tangents are counter-clockwise although the three vertices are not.
 P2Element<2> fig9_triangle() {
   P2Element<2> element;
-  element.nodes = {Vec2{{0.0, 0.0}}, Vec2{{1.0, 0.0}},   Vec2{{0.5, -0.05}},
-                   Vec2{{0.5, -0.8}}, Vec2{{0.75, -0.225}}, Vec2{{0.25, -0.225}}};
+  element.nodes = {Vec2{{0.0, 0.0}}, Vec2{{1.0, 0.0}}, Vec2{{0.5, -0.05}}, Vec2{{0.5, -0.8}}, Vec2{{0.75, -0.225}}, Vec2{{0.25, -0.225}}};
   return element;
 }
 
@@ -61,9 +60,16 @@ P2Element<2> fig9_triangle() {
 P2Element<3> fig9_tetrahedron() {
   P2Element<3> element;
   const Vec3 v0{{0.0, 0.0, 0.0}}, v1{{1.0, 0.0, 0.0}}, v2{{0.5, -0.05, 0.0}}, v3{{0.5, -0.3, 1.0}};
-  element.nodes = {v0, v1, v2, v3,
-                   Vec3{{0.5, -0.8, 0.0}}, Vec3{{0.75, -0.225, 0.0}}, Vec3{{0.25, -0.225, 0.0}},
-                   0.5 * (v0 + v3), 0.5 * (v1 + v3), 0.5 * (v2 + v3) + Vec3{{0.0, 0.3, 0.0}}};
+  element.nodes = {v0,
+                   v1,
+                   v2,
+                   v3,
+                   Vec3{{0.5, -0.8, 0.0}},
+                   Vec3{{0.75, -0.225, 0.0}},
+                   Vec3{{0.25, -0.225, 0.0}},
+                   0.5 * (v0 + v3),
+                   0.5 * (v1 + v3),
+                   0.5 * (v2 + v3) + Vec3{{0.0, 0.3, 0.0}}};
   return element;
 }
 
@@ -72,17 +78,13 @@ P2Element<3> fig9_tetrahedron() {
 P2Element<2> false_negative_triangle() {
   return reference_element<2>({{0, Vec2{{0.0, -0.5}}}, {1, Vec2{{0.05, 0.05}}}, {2, Vec2{{0.3, 0.0}}}});
 }
-P2Element<3> false_negative_tetrahedron() {
-  return reference_element<3>({{1, Vec3{{0.45, 0.0, 0.0}}}, {0, Vec3{{0.0, 0.45, 0.0}}}});
-}
+P2Element<3> false_negative_tetrahedron() { return reference_element<3>({{1, Vec3{{0.45, 0.0, 0.0}}}, {0, Vec3{{0.0, 0.45, 0.0}}}}); }
 
 // Invalid in a small region only: corners positive, sampled min J ≈ −0.005 (2D), −0.016 (3D).
 P2Element<2> slightly_invalid_triangle() {
   return reference_element<2>({{0, Vec2{{0.0, -0.25}}}, {1, Vec2{{0.1, 0.1}}}, {2, Vec2{{0.45, 0.0}}}});
 }
-P2Element<3> slightly_invalid_tetrahedron() {
-  return reference_element<3>({{3, Vec3{{0.0, 0.45, 0.0}}}, {4, Vec3{{-0.35, 0.0, 0.0}}}});
-}
+P2Element<3> slightly_invalid_tetrahedron() { return reference_element<3>({{3, Vec3{{0.0, 0.45, 0.0}}}, {4, Vec3{{-0.35, 0.0, 0.0}}}}); }
 
 template <int D>
 P2Element<D> false_negative_element() {
@@ -243,8 +245,7 @@ TYPED_TEST(JacobianBoundsTest, SmallNegativeRegionIsRejected) {
 // J of this triangle vanishes on edge 20 at λ = (1/4, 0, 3/4) and is positive elsewhere. No rounding
 // of its coefficients may certify J > 0 there.
 TEST(JacobianBounds, JacobianTouchingZeroIsNotCertifiedAboveZero) {
-  const P2Element<2> element =
-      reference_element<2>({{0, Vec2{{0.0, -0.1}}}, {1, Vec2{{0.1, 0.1}}}, {2, Vec2{{0.5, 0.0}}}});
+  const P2Element<2> element = reference_element<2>({{0, Vec2{{0.0, -0.1}}}, {1, Vec2{{0.1, 0.1}}}, {2, Vec2{{0.5, 0.0}}}});
   EXPECT_NEAR(reference_jacobian(element, {0.25, 0.0, 0.75}), 0.0, 1e-15);
   EXPECT_GT(sample_jacobian(element, 200).min, -1e-15);
   EXPECT_FALSE(certify_min_normalized_jacobian_above(element, 0.0, {kMaxSubdivisionDepth, 100000}));

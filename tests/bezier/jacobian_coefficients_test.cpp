@@ -35,7 +35,7 @@ TEST(JacobianCoefficients, OrderIsCornersThenEdgesThenFaces) {
   EXPECT_EQ(kJacobianMultiIndices<2>[4], (BernsteinMultiIndex<2>{0, 1, 1}));  // edge 12
   EXPECT_EQ(kJacobianMultiIndices<2>[5], (BernsteinMultiIndex<2>{1, 0, 1}));  // edge 20
   EXPECT_EQ(kJacobianMultiIndices<3>[3], (BernsteinMultiIndex<3>{0, 0, 0, 3}));
-  EXPECT_EQ(kJacobianMultiIndices<3>[4], (BernsteinMultiIndex<3>{2, 1, 0, 0}));   // edge 01
+  EXPECT_EQ(kJacobianMultiIndices<3>[4], (BernsteinMultiIndex<3>{2, 1, 0, 0}));  // edge 01
   EXPECT_EQ(kJacobianMultiIndices<3>[5], (BernsteinMultiIndex<3>{1, 2, 0, 0}));
   EXPECT_EQ(kJacobianMultiIndices<3>[8], (BernsteinMultiIndex<3>{1, 0, 2, 0}));   // edge 20: 2e_2 + e_0
   EXPECT_EQ(kJacobianMultiIndices<3>[15], (BernsteinMultiIndex<3>{0, 0, 1, 2}));  // edge 23
@@ -66,8 +66,7 @@ TYPED_TEST(JacobianCoefficientsTest, ControlNodeOfAnEdgeIsTwiceItsNodeMinusTheMe
   for (int edge = 0; edge < Simplex<D>::kEdges; ++edge) {
     const auto& ends = edge_vertices<D>(edge);
     // The quadratic curve through the control node passes through the Lagrange node at t = 1/2.
-    const Vec<D> at_half =
-        0.25 * element.vertex(ends[0]) + 0.5 * net.of_pair(ends[0], ends[1]) + 0.25 * element.vertex(ends[1]);
+    const Vec<D> at_half = 0.25 * element.vertex(ends[0]) + 0.5 * net.of_pair(ends[0], ends[1]) + 0.25 * element.vertex(ends[1]);
     EXPECT_LT(norm(at_half - element.edge_node(edge)), 1e-14);
     EXPECT_EQ(net.of_pair(ends[1], ends[0]), net.of_pair(ends[0], ends[1]));
   }
@@ -108,8 +107,7 @@ TYPED_TEST(JacobianCoefficientsTest, BernsteinFormIsTheJacobianEverywhere) {
     const JacobianCoefficients<D> coefficients = jacobian_coefficients(element);
     for (int point = 0; point < 20; ++point) {
       const Barycentrics<D> lambda = random_barycentrics<D>(random);
-      EXPECT_NEAR(evaluate_bernstein(coefficients, lambda), reference_jacobian(element, lambda),
-                  1e-12 * max_magnitude(coefficients));
+      EXPECT_NEAR(evaluate_bernstein(coefficients, lambda), reference_jacobian(element, lambda), 1e-12 * max_magnitude(coefficients));
     }
   }
 }

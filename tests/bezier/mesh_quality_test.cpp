@@ -45,9 +45,8 @@ TEST(BezierMeshQuality, MovedNodeCurvesItsShellAndCanInvalidateIt) {
   MeshJacobianSummary summary = summarize_jacobian_quality(qualities);
   EXPECT_EQ(summary.min_normalized_jacobian.invalid_count, 0);
   EXPECT_LT(summary.min_normalized_jacobian.min, 1.0);
-  const auto curved = std::count_if(qualities.begin(), qualities.end(), [](const JacobianQuality& quality) {
-    return quality.scaled_jacobian < 1.0 - 1e-9;
-  });
+  const auto curved = std::count_if(qualities.begin(), qualities.end(),
+                                    [](const JacobianQuality& quality) { return quality.scaled_jacobian < 1.0 - 1e-9; });
   EXPECT_EQ(curved, 2);  // the two triangles of the edge, and only they
 
   mesh.edge_node(interior) = straight + Vec2{{0.3, 0.4}};

@@ -20,9 +20,9 @@ TEST(Cases, RegistryHoldsTheDocumentedCases) {
     EXPECT_FALSE(definition.options.empty());
     EXPECT_TRUE(definition.make);
   }
-  EXPECT_EQ(names, (std::set<std::string>{"square", "cube", "annulus", "sphere-shell", "polar-annulus",
-                                          "polar-annulus-bl-inner", "polar-annulus-bl-both", "shear-circle", "cubed-shell",
-                                          "cubed-shell-bl-inner", "cubed-shell-bl-both", "part"}));
+  EXPECT_EQ(names, (std::set<std::string>{"square", "cube", "annulus", "sphere-shell", "polar-annulus", "polar-annulus-bl-inner",
+                                          "polar-annulus-bl-both", "shear-circle", "cubed-shell", "cubed-shell-bl-inner",
+                                          "cubed-shell-bl-both", "part"}));
   EXPECT_EQ(find_case("annulus").dimension, 2);
   EXPECT_EQ(find_case("sphere-shell").dimension, 3);
   EXPECT_EQ(find_case("shear-circle").dimension, 2);

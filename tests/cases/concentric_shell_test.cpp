@@ -33,11 +33,9 @@ double measure_tolerance(const ShellParameters& p) {
   return D == 2 ? 2 * std::numbers::pi * h * h / 6 * 1.5 : std::numbers::pi * (p.inner_radius + p.outer_radius) * h * h / 2;
 }
 
-
 template <int D>
 void expect_valid_shell(const ShellParameters& p) {
-  SCOPED_TRACE("r_in " + std::to_string(p.inner_radius) + " r_out " + std::to_string(p.outer_radius) + " h " +
-               std::to_string(p.size));
+  SCOPED_TRACE("r_in " + std::to_string(p.inner_radius) + " r_out " + std::to_string(p.outer_radius) + " h " + std::to_string(p.size));
   Mesh<D> mesh = generate<D>(p);
   shell_test::expect_valid_shell(mesh, p.inner_radius, p.outer_radius);
   EXPECT_NEAR(total_measure(mesh), exact_measure<D>(p), measure_tolerance<D>(p));

@@ -114,9 +114,7 @@ TEST(CubedSphereShell, TargetSizeIsMetWithinAFactor) {
   for (LayerWalls walls : {LayerWalls::kNone, LayerWalls::kInner, LayerWalls::kBoth}) {
     SCOPED_TRACE("walls " + std::to_string(static_cast<int>(walls)));
     const ShellLayering layering{0.5, 1.0, walls};
-    auto tets = [&layering](int n) {
-      return cubed_sphere_shell_tet_count(n, layer_radii(layering, cubed_sphere_angular_step(n)).size());
-    };
+    auto tets = [&layering](int n) { return cubed_sphere_shell_tet_count(n, layer_radii(layering, cubed_sphere_angular_step(n)).size()); };
     // Counted at the benchmark sizes (neighbouring resolutions differ by less than 20% there).
     for (double target : {1e6, 5e6, 2e7}) {
       const double count = tets(resolution_for_target("target-tets", target, 1, tets));

@@ -14,6 +14,7 @@
 
 #include "adapt/curving_run.hpp"
 #include "bezier/mesh_quality.hpp"
+#include "gmsh_requirement.hpp"
 #include "mesh/boundary_vertices.hpp"
 #include "mesh/consistency.hpp"
 #include "mesh/measure.hpp"
@@ -21,7 +22,6 @@
 #include "surface/cad_boundary_gmsh.hpp"
 #include "surface/cubic_patch.hpp"
 #include "surface/surrogate_checks.hpp"
-#include "gmsh_requirement.hpp"
 
 namespace hocav {
 namespace {
@@ -166,8 +166,8 @@ TEST(MachinedPart, SurrogateMidNodesAreWellBelowTheStraightOnes) {
   const CadBoundary<3> cad(path, mesh);
   std::filesystem::remove(path);
   const EdgeErrors largest = largest_edge_errors(mesh, cad, P3Surrogate<3>(mesh));
-  std::printf("machined part h = 0.03: largest mid-node error P1 %.3e, surrogate %.3e (%.1fx)\n", largest.straight,
-              largest.surrogate, largest.straight / largest.surrogate);
+  std::printf("machined part h = 0.03: largest mid-node error P1 %.3e, surrogate %.3e (%.1fx)\n", largest.straight, largest.surrogate,
+              largest.straight / largest.surrogate);
   EXPECT_GT(largest.straight / largest.surrogate, kSurrogateGain);
 }
 

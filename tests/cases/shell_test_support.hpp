@@ -59,8 +59,7 @@ void expect_valid_shell(const Mesh<D>& mesh, double inner_radius, double outer_r
     else
       outward_flux += determinant(mesh.vertex(facet[0]), mesh.vertex(facet[1]), mesh.vertex(facet[2])) / 2.0;
   }
-  EXPECT_NEAR(outward_flux / D, total_measure(mesh), 1e-10 * exact_measure<D>(inner_radius, outer_radius))
-      << "facets are not all outward";
+  EXPECT_NEAR(outward_flux / D, total_measure(mesh), 1e-10 * exact_measure<D>(inner_radius, outer_radius)) << "facets are not all outward";
 }
 
 // The same vertices, elements and facets, bit for bit.

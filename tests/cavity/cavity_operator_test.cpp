@@ -104,8 +104,8 @@ void run_random_operations(Mesh<D> mesh, std::uint32_t seed) {
   EXPECT_EQ(mesh.facet_count(), facets);
   // Every kind of operation must have happened many times, not just been tried.
   for (int kind = 0; kind < 4; ++kind) EXPECT_GT(accepted[kind], tried[kind] / 50) << "operation kind " << kind;
-  std::printf("%dD: accepted reinsert %d/%d insert %d/%d collapse %d/%d swap %d/%d; %d elements\n", D, accepted[0],
-              tried[0], accepted[1], tried[1], accepted[2], tried[2], accepted[3], tried[3], mesh.element_count());
+  std::printf("%dD: accepted reinsert %d/%d insert %d/%d collapse %d/%d swap %d/%d; %d elements\n", D, accepted[0], tried[0], accepted[1],
+              tried[1], accepted[2], tried[2], accepted[3], tried[3], mesh.element_count());
 }
 
 TEST(CavityOperator, RandomOperationsKeepTheTriangleMeshConsistent) { run_random_operations(generate_square(10), 1); }

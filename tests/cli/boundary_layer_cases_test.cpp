@@ -23,16 +23,16 @@ TEST_F(Cli, BoundaryLayersMeetingNeedCorrectionsAndEndValid) {
   // floor 0.01 may read a little below it.
   EXPECT_GE(value("d[\"normalized_jacobian\"][\"min\"]"), 0.01 - 1e-6);
   EXPECT_GT(value("d[\"average_gain\"]"), 0);
-  EXPECT_EQ(stats_json("curved.meshb", "d[\"consistency\"][\"consistent\"], d[\"order\"], d[\"open_boundary_faces\"]"),
-            "(True, 2, 0)");
+  EXPECT_EQ(stats_json("curved.meshb", "d[\"consistency\"][\"consistent\"], d[\"order\"], d[\"open_boundary_faces\"]"), "(True, 2, 0)");
 }
 
 TEST_F(Cli, GeneratesTheStructuredCasesAtAGivenSize) {
   for (const char* name : {"cubed-shell", "cubed-shell-bl-inner", "cubed-shell-bl-both"}) {
     SCOPED_TRACE(name);
     run_ok(std::string("generate ") + name + " --target-tets 2e4 -o shell.meshb");
-    EXPECT_EQ(stats_json("shell.meshb", "d[\"consistency\"][\"consistent\"], sorted(r[\"ref\"] for r in d[\"facet_refs\"]), "
-                                        "abs(d[\"counts\"][\"elements\"] / 2e4 - 1) < 0.3"),
+    EXPECT_EQ(stats_json("shell.meshb",
+                         "d[\"consistency\"][\"consistent\"], sorted(r[\"ref\"] for r in d[\"facet_refs\"]), "
+                         "abs(d[\"counts\"][\"elements\"] / 2e4 - 1) < 0.3"),
               "(True, [1, 2], True)");
   }
   run_ok("generate shear-circle -o annulus.mesh");

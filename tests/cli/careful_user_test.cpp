@@ -15,8 +15,8 @@ const std::vector<std::string> kMeshAndMetric{"square.mesh", "square.sol"};
 
 struct WritingCommand {
   std::string name;
-  std::string command;         // everything but the outputs; the inputs are those of prepare_inputs()
-  std::string output_option;   // "-o " or "" for a positional output
+  std::string command;        // everything but the outputs; the inputs are those of prepare_inputs()
+  std::string output_option;  // "-o " or "" for a positional output
   std::string output_extension;
   std::vector<std::pair<std::string, std::string>> secondary;  // option, a good file name for it
   std::vector<std::string> inputs;
@@ -120,8 +120,8 @@ TEST_F(CarefulUser, AWriteThatFailsForLackOfSpaceReplacesNothing) {
     std::string arguments = row.command + " " + main_output(row, output);
     for (const auto& [option, name] : row.secondary) arguments += " " + option + " " + name;
     // ulimit -f 0: no byte can go to a file, as on a full disk; stderr goes through a pipe, which the limit spares.
-    const std::string command = "cd '" + directory_.string() + "' || exit 1; (ulimit -f 0; exec '" HOCAV_BINARY "' " +
-                                arguments + " 2>&1 > /dev/null) | cat > stderr.txt";
+    const std::string command = "cd '" + directory_.string() + "' || exit 1; (ulimit -f 0; exec '" HOCAV_BINARY "' " + arguments +
+                                " 2>&1 > /dev/null) | cat > stderr.txt";
     ASSERT_EQ(std::system(command.c_str()), 0);
     const std::string message = read("stderr.txt");
     fs::remove(path("stderr.txt"));
@@ -153,7 +153,8 @@ TEST_F(CarefulUser, AKilledCommandLeavesNoTemporaryAndNoPartialOutput) {
   // SIGTERM while generating or writing 750k tetrahedra (SIGINT, which a shell's background jobs
   // ignore, is tested in output_set_test). Either nothing is left, or the output was committed
   // whole before the signal landed (it may land between the rename and the exit): then it reads back.
-  const std::string command = "cd '" + directory_.string() + "' || exit 1; '" HOCAV_BINARY
+  const std::string command = "cd '" + directory_.string() +
+                              "' || exit 1; '" HOCAV_BINARY
                               "' generate cube --h 0.02 -o big.meshb > /dev/null 2>&1 & pid=$!; sleep 0.3; kill -TERM $pid; wait $pid";
   const int status = std::system(command.c_str());
   const bool finished_first = WIFEXITED(status) && WEXITSTATUS(status) == 0;

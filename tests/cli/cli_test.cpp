@@ -71,8 +71,10 @@ TEST_F(Cli, GenerateWritesTheCadModelThatCurveProjectsOn) {
     const auto facet = curved.facet(f);
     for (int i = 0; i < 3; ++i) {
       const double node_radius = hocav::norm(curved.edge_node(curved.find_edge(facet[i], facet[(i + 1) % 3])));
-      if (std::abs(node_radius - radius) < 1e-9) ++on_sphere[ref];
-      else EXPECT_EQ(node_radius < radius, ref == 2) << "facet " << f << " radius " << node_radius;
+      if (std::abs(node_radius - radius) < 1e-9)
+        ++on_sphere[ref];
+      else
+        EXPECT_EQ(node_radius < radius, ref == 2) << "facet " << f << " radius " << node_radius;
     }
   }
   EXPECT_GT(on_sphere[1], 0);
@@ -113,8 +115,7 @@ TEST_F(Cli, ConvertCarriesTheMetricToTheOutputNodeOrder) {
   auto metric = gamma_block(read("out.sol"), "SolAtVertices", 3, 2);
   ASSERT_EQ(nodes.size(), 6u);
   ASSERT_EQ(metric.size(), 6u);
-  for (std::size_t i = 0; i < nodes.size(); ++i)
-    EXPECT_DOUBLE_EQ(metric[i][0], encoded_m11(nodes[i][0], nodes[i][1])) << "node " << i + 1;
+  for (std::size_t i = 0; i < nodes.size(); ++i) EXPECT_DOUBLE_EQ(metric[i][0], encoded_m11(nodes[i][0], nodes[i][1])) << "node " << i + 1;
   // Corners first, then the P2 nodes, so the moved mid node is not among the first three.
   for (std::size_t i = 0; i < 3; ++i) EXPECT_NE(nodes[i][0], 0.6);
 
@@ -179,9 +180,9 @@ TEST_F(Cli, BadMetricsFailWithoutOutput) {
 
 TEST_F(Cli, BadCommandLinesExitWithTwo) {
   run_ok("generate square --h 0.5 -o square.mesh");
-  for (const char* arguments : {"", "frobnicate", "convert square.mesh", "convert square.mesh out.mesh --order 3",
-                                "generate annulus", "generate torus -o x.mesh", "stats square.mesh --bogus",
-                                "convert square.mesh out.mesh --meshb-version 7"}) {
+  for (const char* arguments :
+       {"", "frobnicate", "convert square.mesh", "convert square.mesh out.mesh --order 3", "generate annulus", "generate torus -o x.mesh",
+        "stats square.mesh --bogus", "convert square.mesh out.mesh --meshb-version 7"}) {
     Outcome result = run(arguments);
     EXPECT_EQ(result.exit_code, 2) << "hocav " << arguments;
     EXPECT_FALSE(result.err.empty()) << "hocav " << arguments;

@@ -64,7 +64,7 @@ inline std::string metric_for_shuffled_triangle(int rows, double first_m11_overr
 
 // The rows of the first block `keyword` of a Gamma ASCII file: `columns` numbers per row.
 inline std::vector<std::vector<double>> gamma_block(const std::string& text, const std::string& keyword, int columns,
-                                             int header_numbers = 0) {
+                                                    int header_numbers = 0) {
   std::istringstream in(text);
   std::string token;
   while (in >> token && token != keyword) {
@@ -140,8 +140,8 @@ class Cli : public ::testing::Test {
 
   // Evaluates a Python expression over the JSON document `d` in file `name` of the scratch folder.
   std::string json_value(const std::string& name, const std::string& expression) const {
-    std::string command = "/usr/bin/python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print((" + expression +
-                          "))' '" + path(name).string() + "'";
+    std::string command = "/usr/bin/python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print((" + expression + "))' '" +
+                          path(name).string() + "'";
     std::string value;
     if (FILE* pipe = popen(command.c_str(), "r")) {
       char buffer[4096];

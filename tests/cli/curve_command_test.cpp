@@ -24,15 +24,13 @@ class CurveCli : public Cli {
     EXPECT_GT(report_value("d[\"cavities\"][\"boundary_nodes_applied\"]"), 0);
     // A proposal stays only when the Jacobian floor held its node back, in the cavities and in the
     // last pass over the proposals they left (docs/curving.md): a few, never many.
-    EXPECT_LE(report_value("d[\"boundary_proposals_left\"]"),
-              0.01 * report_value("d[\"cavities\"][\"boundary_nodes_applied\"]"));
+    EXPECT_LE(report_value("d[\"boundary_proposals_left\"]"), 0.01 * report_value("d[\"cavities\"][\"boundary_nodes_applied\"]"));
     EXPECT_EQ(report_value("d[\"boundary_proposals_left\"]"),
               report_value("d[\"boundary_completion\"][\"pulled_back\"] + d[\"boundary_completion\"][\"blocked\"]"));
     // Work not redone: an edge recreated at its optimum keeps it, so there is about one optimization
     // per edge (points after − points before), and unchanged recreated elements keep their certificates.
     EXPECT_GT(report_value("d[\"cavities\"][\"edges_kept_optimal\"]"), 0);
-    EXPECT_LE(report_value("d[\"cavities\"][\"edges_optimized\"]"),
-              1.1 * report_value("d[\"points_after\"] - d[\"points_before\"]"));
+    EXPECT_LE(report_value("d[\"cavities\"][\"edges_optimized\"]"), 1.1 * report_value("d[\"points_after\"] - d[\"points_before\"]"));
     EXPECT_GT(report_value("d[\"cavities\"][\"certificates_kept\"]"), 0);
     // The output reads back as a consistent P2 mesh.
     EXPECT_EQ(stats_json("curved.meshb", "d[\"consistency\"][\"consistent\"], d[\"order\"]"), "(True, 2)");
@@ -62,8 +60,8 @@ TEST_F(CurveCli, ProgressLineOnlyOnATerminal) {
   run_ok("generate square --h 0.007 -o square.meshb");  // 144 x 144 vertices, 142 x 142 inside
   run_ok("metric square.meshb --analytic uniform --h 0.007 -o square.solb");
   auto on_terminal = [this](const std::string& options) {
-    const std::string command = "cd '" + directory_.string() + "' && script -qec \"'" HOCAV_BINARY
-                                "' curve square.meshb --metric square.solb -o curved.meshb " + options +
+    const std::string command = "cd '" + directory_.string() +
+                                "' && script -qec \"'" HOCAV_BINARY "' curve square.meshb --metric square.solb -o curved.meshb " + options +
                                 " > stdout.txt\" /dev/null > terminal.txt";
     EXPECT_EQ(std::system(command.c_str()), 0) << command;
     return read("terminal.txt");
@@ -72,7 +70,7 @@ TEST_F(CurveCli, ProgressLineOnlyOnATerminal) {
   EXPECT_NE(drawn.find("\rcurving: 20,164/20,164 vertices (100%), "), std::string::npos) << drawn;
   EXPECT_NE(drawn.find("/s, 0 s left"), std::string::npos) << drawn;
   EXPECT_GE(std::count(drawn.begin(), drawn.end(), '\r'), 10);  // redrawn, ...
-  EXPECT_EQ(count_lines(drawn), 1) << drawn;                      // ... on one line
+  EXPECT_EQ(count_lines(drawn), 1) << drawn;                    // ... on one line
   EXPECT_NE(read("stdout.txt").find("curved square.meshb"), std::string::npos);
   EXPECT_EQ(on_terminal("--quiet"), "");
   EXPECT_EQ(run_ok("curve square.meshb --metric square.solb -o curved.meshb").err, "");
@@ -88,8 +86,7 @@ TEST_F(CurveCli, BadInputGivesOneLineAndNoOutput) {
   expect_failure("curve square.mesh --metric square.sol --surface cad:missing.step -o out.meshb", "missing.step");
   EXPECT_EQ(files(), (std::set<std::string>{"coarse.mesh", "square.mesh", "square.sol"}));
   Outcome help = run_ok("curve --help");
-  for (const char* option : {"--metric", "--surface", "--jacobian-floor", "--passes", "--threads", "--quadrature",
-                             "--report", "--vtu"})
+  for (const char* option : {"--metric", "--surface", "--jacobian-floor", "--passes", "--threads", "--quadrature", "--report", "--vtu"})
     EXPECT_NE(help.out.find(option), std::string::npos) << option;
 }
 

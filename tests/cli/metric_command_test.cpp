@@ -36,10 +36,9 @@ double max_relative_difference(const std::vector<std::vector<double>>& a, const 
 TEST_F(MetricCli, HelpListsSourcesAndOptions) {
   EXPECT_NE(run_ok("--help").out.find("metric"), std::string::npos);
   Outcome help = run_ok("metric --help");
-  for (const char* option : {"--analytic", "--implied", "--surface", "--hessian", "--input", "--gradation", "--h-min",
-                             "--h-max", "--axis", "--center", "--radius", "--width", "--origin", "--complexity", "--norm", "--from",
-                             "--from-metric",
-                             "shear-circle", "tanh-shock"})
+  for (const char* option :
+       {"--analytic", "--implied", "--surface", "--hessian", "--input", "--gradation", "--h-min", "--h-max", "--axis", "--center",
+        "--radius", "--width", "--origin", "--complexity", "--norm", "--from", "--from-metric", "shear-circle", "tanh-shock"})
     EXPECT_NE(help.out.find(option), std::string::npos) << option;
 }
 
@@ -208,8 +207,7 @@ TEST_F(MetricCli, FromInterpolatesABackMeshMetricLogEuclidean) {
 TEST_F(MetricCli, FromOntoTheBackMeshItselfGivesBackItsMetric) {
   const std::string torus = HOCAV_SHARED_DATA_DIR "/mmg-torus/torus";
   run_ok("metric '" + torus + ".mesh' --from '" + torus + ".mesh' --from-metric '" + torus + "-met.sol' -o self.sol");
-  EXPECT_LT(max_relative_difference(metric_rows("self.sol", 3), gamma_block(read_text(torus + "-met.sol"), "SolAtVertices", 6, 2)),
-            1e-12);
+  EXPECT_LT(max_relative_difference(metric_rows("self.sol", 3), gamma_block(read_text(torus + "-met.sol"), "SolAtVertices", 6, 2)), 1e-12);
 }
 
 TEST_F(MetricCli, BadRequestsFailWithOneLineAndNoOutput) {
@@ -236,9 +234,9 @@ TEST_F(MetricCli, BadRequestsFailWithOneLineAndNoOutput) {
   expect_failure("metric square.mesh --from square.mesh -o m.sol", "--from-metric");
   expect_failure("metric square.mesh --implied --from-metric tri.sol -o m.sol", "--from-metric");
   expect_failure("metric square.mesh --from tri.mesh --from-metric tri.sol --implied -o m.sol", "exactly one metric source");
-  for (const char* arguments : {"metric square.mesh --implied", "metric --implied -o m.sol",
-                                "metric square.mesh --surface 0.1 --gradation 2 -o m.sol",
-                                "metric square.mesh --analytic linear --axis w -o m.sol"}) {
+  for (const char* arguments :
+       {"metric square.mesh --implied", "metric --implied -o m.sol", "metric square.mesh --surface 0.1 --gradation 2 -o m.sol",
+        "metric square.mesh --analytic linear --axis w -o m.sol"}) {
     Outcome result = run(arguments);
     EXPECT_EQ(result.exit_code, 2) << "hocav " << arguments;
     EXPECT_FALSE(result.err.empty()) << "hocav " << arguments;

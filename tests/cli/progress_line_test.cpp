@@ -12,10 +12,8 @@ namespace {
 
 TEST(ProgressText, CountsPercentRateAndTimeLeft) {
   // 41,200 in 2 s: 20,600 per second, 58,800 left: 2.85 s.
-  EXPECT_EQ(progress_text("curving", "vertices", 41200, 100000, 2.0),
-            "curving: 41,200/100,000 vertices (41%), 20,600/s, 3 s left");
-  EXPECT_EQ(progress_text("curving", "vertices", 100000, 100000, 4.0),
-            "curving: 100,000/100,000 vertices (100%), 25,000/s, 0 s left");
+  EXPECT_EQ(progress_text("curving", "vertices", 41200, 100000, 2.0), "curving: 41,200/100,000 vertices (41%), 20,600/s, 3 s left");
+  EXPECT_EQ(progress_text("curving", "vertices", 100000, 100000, 4.0), "curving: 100,000/100,000 vertices (100%), 25,000/s, 0 s left");
 }
 
 TEST(ProgressText, NoRateBeforeAnyWork) {

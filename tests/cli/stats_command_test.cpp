@@ -43,11 +43,11 @@ TEST_F(StatsCli, CurvedTrianglesGiveTheExactJacobianFigures) {
               (exact_min_normalized(0.1) + exact_min_normalized(-0.2)) / 2, 1e-12);
   EXPECT_NEAR(stats_value("curved.mesh", "d[\"jacobian\"][\"scaled\"][\"min\"]"), exact_scaled(-0.2), 1e-12);
   EXPECT_NEAR(stats_value("curved.mesh", "d[\"jacobian\"][\"scaled\"][\"max\"]"), exact_scaled(0.1), 1e-12);
-  EXPECT_EQ(stats_json("curved.mesh", "d[\"valid\"], d[\"jacobian\"][\"invalid\"], d[\"jacobian\"][\"straight\"]"),
-            "(True, 0, False)");
+  EXPECT_EQ(stats_json("curved.mesh", "d[\"valid\"], d[\"jacobian\"][\"invalid\"], d[\"jacobian\"][\"straight\"]"), "(True, 0, False)");
   // 0.6 and 1 (normalized), 0.6 and 1/1.8 (scaled): the bins (0.5, 0.7] and (0.9, 1].
-  EXPECT_EQ(stats_json("curved.mesh", "[(h[\"bin\"], h[\"min_normalized\"], h[\"scaled\"]) for h in d[\"jacobian\"][\"histogram\"] "
-                                      "if h[\"min_normalized\"] or h[\"scaled\"]]"),
+  EXPECT_EQ(stats_json("curved.mesh",
+                       "[(h[\"bin\"], h[\"min_normalized\"], h[\"scaled\"]) for h in d[\"jacobian\"][\"histogram\"] "
+                       "if h[\"min_normalized\"] or h[\"scaled\"]]"),
             "[('(0.5, 0.7]', 1, 2), ('(0.9, 1]', 1, 0)]");
   Outcome table = run_ok("stats curved.mesh");
   EXPECT_NE(table.out.find("normalized Jacobian   min 0.6  avg 0.8  max 1"), std::string::npos) << table.out;

@@ -24,8 +24,10 @@ P2Element<D> straight(const std::array<Vec<D>, D + 1>& vertices) {
 
 template <int D>
 std::array<Vec<D>, D + 1> skewed_vertices() {
-  if constexpr (D == 2) return {Vec2{{0.1, 0.2}}, Vec2{{1.3, 0.1}}, Vec2{{0.4, 0.9}}};
-  else return {Vec3{{0.1, 0.2, 0.0}}, Vec3{{1.3, 0.1, 0.2}}, Vec3{{0.4, 0.9, 0.1}}, Vec3{{0.5, 0.3, 1.1}}};
+  if constexpr (D == 2)
+    return {Vec2{{0.1, 0.2}}, Vec2{{1.3, 0.1}}, Vec2{{0.4, 0.9}}};
+  else
+    return {Vec3{{0.1, 0.2, 0.0}}, Vec3{{1.3, 0.1, 0.2}}, Vec3{{0.4, 0.9, 0.1}}, Vec3{{0.5, 0.3, 1.1}}};
 }
 
 template <int D>

@@ -77,8 +77,7 @@ TEST(EdgeOptimizer, UniformMetricGivesTheStraightEdgeAndNoGain) {
   EdgeOptimizerOptions options;
   options.measure_gain = true;
   // Start away from the midpoint: the optimizer must come back to it.
-  auto result = optimize_edge_length(field, a, b, log_metric, log_metric, 0.5 * (a + b) + Vec3{{0.05, -0.04, 0.03}},
-                                     kNoIndex, options);
+  auto result = optimize_edge_length(field, a, b, log_metric, log_metric, 0.5 * (a + b) + Vec3{{0.05, -0.04, 0.03}}, kNoIndex, options);
   EXPECT_LT(norm(result.node - 0.5 * (a + b)), 1e-8 * norm(b - a));
   EXPECT_NEAR(result.gain, 0, 1e-12);
   EXPECT_NEAR(result.optimized_length, norm(b - a) / 0.25, 1e-12);
@@ -93,8 +92,8 @@ TEST_P(EdgeOptimizerRule, EdgeTangentToTheShearLayerBendsAlongIt) {
   EdgeOptimizerOptions options;
   options.rule = rule;
   options.measure_gain = true;
-  auto result = optimize_edge_length(*shear.field, shear.a, shear.b, shear.log_a, shear.log_b,
-                                     0.5 * (shear.a + shear.b), kNoIndex, options);
+  auto result = optimize_edge_length(*shear.field, shear.a, shear.b, shear.log_a, shear.log_b, 0.5 * (shear.a + shear.b), kNoIndex,
+                                     options);
   // The chord lies inside the circle; the optimal node moves out towards the circle.
   EXPECT_GT(norm(result.node), norm(0.5 * (shear.a + shear.b)) + 1e-3);
   EXPECT_LT(std::abs(result.node[1]), 1e-6);  // symmetric edge, symmetric optimum
@@ -111,8 +110,8 @@ TEST(EdgeOptimizer, AnisotropyTenThousandDoesNotBreakIt) {
   ShearCase shear(1e-5);  // h_max / h_min = 1e4
   EdgeOptimizerOptions options;
   options.measure_gain = true;
-  auto result = optimize_edge_length(*shear.field, shear.a, shear.b, shear.log_a, shear.log_b,
-                                     0.5 * (shear.a + shear.b), kNoIndex, options);
+  auto result = optimize_edge_length(*shear.field, shear.a, shear.b, shear.log_a, shear.log_b, 0.5 * (shear.a + shear.b), kNoIndex,
+                                     options);
   ASSERT_TRUE(std::isfinite(result.length));
   EXPECT_GT(result.gain, 0.5);
   Vec2 brute = shear.brute_force_minimum();
@@ -135,13 +134,12 @@ TEST(EdgeOptimizer, AnOptimumBeyondTheDisplacementBoundEndsOnItAtALocalMinimum) 
     const auto [a, b] = mesh.edge_vertices(e);
     const Vec3 pa = mesh.vertex(a), pb = mesh.vertex(b), midpoint = 0.5 * (pa + pb);
     const double size = norm(pb - pa), bound = options.max_displacement * size;
-    const auto result = optimize_edge_length<3>(field, pa, pb, field.vertex_log_metric(a), field.vertex_log_metric(b),
-                                                midpoint, mesh.vertex_element(a), options);
+    const auto result = optimize_edge_length<3>(field, pa, pb, field.vertex_log_metric(a), field.vertex_log_metric(b), midpoint,
+                                                mesh.vertex_element(a), options);
     const Vec3 offset = result.node - midpoint;
     if (std::abs(norm(offset) - bound) > 1e-9 * size) continue;
     ++on_bound;
-    const EdgeLengthFunction<3> f(pa, pb, field.vertex_log_metric(a), field.vertex_log_metric(b),
-                                  default_optimizer_rule());
+    const EdgeLengthFunction<3> f(pa, pb, field.vertex_log_metric(a), field.vertex_log_metric(b), default_optimizer_rule());
     auto length_at = [&](const Vec3& x) { return f.length(x, field.log_metric_at(x, result.back_element)); };
     const Vec3 radial = (1 / norm(offset)) * offset, around = cross((1 / size) * (pb - pa), radial);
     for (int quarter = -12; quarter <= 12; ++quarter) {
@@ -167,8 +165,8 @@ TEST(EdgeOptimizer, BackMeshEdgesStartOnKinksAndStopQuickly) {
   for (Index e = 0; e < mesh.edge_count(); ++e) {
     const auto [a, b] = mesh.edge_vertices(e);
     const Vec3 midpoint = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
-    auto result = optimize_edge_length<3>(field, mesh.vertex(a), mesh.vertex(b), field.vertex_log_metric(a),
-                                          field.vertex_log_metric(b), midpoint);
+    auto result = optimize_edge_length<3>(field, mesh.vertex(a), mesh.vertex(b), field.vertex_log_metric(a), field.vertex_log_metric(b),
+                                          midpoint);
     evaluations += result.evaluations;
     if (norm(result.node - midpoint) > 0) {
       ++curved;
@@ -196,8 +194,8 @@ TEST(EdgeOptimizer, FutileStopLosesNoGain) {
     const auto [a, b] = mesh.edge_vertices(e);
     const Vec3 midpoint = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
     auto run = [&](const EdgeOptimizerOptions& options) {
-      return optimize_edge_length<3>(field, mesh.vertex(a), mesh.vertex(b), field.vertex_log_metric(a),
-                                     field.vertex_log_metric(b), midpoint, mesh.vertex_element(a), options);
+      return optimize_edge_length<3>(field, mesh.vertex(a), mesh.vertex(b), field.vertex_log_metric(a), field.vertex_log_metric(b),
+                                     midpoint, mesh.vertex_element(a), options);
     };
     const auto stopped = run(with_stop), full = run(without_stop);
     EXPECT_NEAR(stopped.gain, full.gain, 1e-12) << e;

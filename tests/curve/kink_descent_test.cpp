@@ -49,13 +49,11 @@ void check_kink(const MetricField<D>& field, const Vec<D>& pa, const Vec<D>& pb,
   const Vec<D> midpoint = 0.5 * (pa + pb);
   const double size = norm(pb - pa);
   const Vec<D> direction = (1 / size) * (pb - pa);
-  const EdgeLengthFunction<D> function(pa, pb, field.log_metric_at(pa, hint), field.log_metric_at(pb, hint),
-                                       default_optimizer_rule());
+  const EdgeLengthFunction<D> function(pa, pb, field.log_metric_at(pa, hint), field.log_metric_at(pb, hint), default_optimizer_rule());
   const auto sample = field.sample(midpoint, hint);
   ASSERT_TRUE(on_back_mesh_face(sample.where));
   const auto log_gradient = field.log_metric_gradient(sample.where.element);
-  const auto value =
-      function.evaluate(midpoint, sample.log_metric, log_gradient, EdgeLengthFunction<D>::Order::kGradient);
+  const auto value = function.evaluate(midpoint, sample.log_metric, log_gradient, EdgeLengthFunction<D>::Order::kGradient);
   // The gradient parts add up to the gradient of the element found.
   for (int i = 0; i < D; ++i)
     EXPECT_NEAR(value.node_gradient[i] + frobenius_dot(value.log_node_gradient, log_gradient[i]), value.gradient[i],
@@ -82,8 +80,7 @@ void check_kink(const MetricField<D>& field, const Vec<D>& pa, const Vec<D>& pb,
     }
   }
   const auto corners = field.locator().element_points(kink.element);
-  const auto lambda = barycentric_coordinates<D>(barycentric_gradients<D>(corners), corners[0],
-                                                 midpoint + 1e-6 * size * kink.direction);
+  const auto lambda = barycentric_coordinates<D>(barycentric_gradients<D>(corners), corners[0], midpoint + 1e-6 * size * kink.direction);
   for (double l : lambda) EXPECT_GT(l, -1e-9);
   ++counts.analysed;
   counts.domain_side_only += !kink.whole_plane;
@@ -156,8 +153,7 @@ TEST(KinkDescent, UniformMetricIsStationary) {
   for (Index e = 0; e < mesh.edge_count(); ++e) {
     const auto [a, b] = mesh.edge_vertices(e);
     const Vec3 pa = mesh.vertex(a), pb = mesh.vertex(b), midpoint = 0.5 * (pa + pb);
-    const EdgeLengthFunction<3> function(pa, pb, field.vertex_log_metric(a), field.vertex_log_metric(b),
-                                         default_optimizer_rule());
+    const EdgeLengthFunction<3> function(pa, pb, field.vertex_log_metric(a), field.vertex_log_metric(b), default_optimizer_rule());
     const auto sample = field.sample(midpoint, mesh.vertex_element(a));
     const auto value = function.evaluate(midpoint, sample.log_metric, field.log_metric_gradient(sample.where.element),
                                          EdgeLengthFunction<3>::Order::kGradient);

@@ -52,23 +52,14 @@ template <int D>
 Vec<D> log_eigenvalues_case(std::mt19937_64& rng, int k) {
   Vec<D> theta = random_vec<D>(rng, -kLogEigenvalueBound, kLogEigenvalueBound);
   switch (k % 8) {
-    case 1:
-      theta[1] = theta[0];
-      break;
+    case 1: theta[1] = theta[0]; break;
     case 2:
       for (int i = 1; i < D; ++i) theta[i] = theta[0];
       break;
-    case 3:
-      theta[1] = theta[0] + std::pow(10.0, -4.0 - (k / 8) % 11);
-      break;
-    case 4:
-      theta[0] = -kLogEigenvalueBound, theta[D - 1] = kLogEigenvalueBound;
-      break;
-    case 5:
-      theta[0] = -kLogEigenvalueBound, theta[1] = theta[D - 1] = kLogEigenvalueBound;
-      break;
-    default:
-      break;
+    case 3: theta[1] = theta[0] + std::pow(10.0, -4.0 - (k / 8) % 11); break;
+    case 4: theta[0] = -kLogEigenvalueBound, theta[D - 1] = kLogEigenvalueBound; break;
+    case 5: theta[0] = -kLogEigenvalueBound, theta[1] = theta[D - 1] = kLogEigenvalueBound; break;
+    default: break;
   }
   return theta;
 }

@@ -207,8 +207,7 @@ Vec<D> graded_symmetric_functions(const Vec<D>& delta, const SymMat<D>& a) {
   }
   if constexpr (D == 3)
     for (int i = 0; i < 3; ++i)
-      for (int j = i + 1; j < 3; ++j)
-        e[1] += delta[i] * delta[i] * delta[j] * delta[j] * (a(i, i) * a(j, j) - a(i, j) * a(i, j));
+      for (int j = i + 1; j < 3; ++j) e[1] += delta[i] * delta[i] * delta[j] * delta[j] * (a(i, i) * a(j, j) - a(i, j) * a(i, j));
   e[D - 1] = product * determinant(a);
   return e;
 }

@@ -48,8 +48,7 @@ auto central_difference(Function f) {
 TYPED_TEST(SymFunctionsTest, DiagonalMatricesWithHugeRatios) {
   constexpr int D = TypeParam::value;
   Vec<D> theta, lambda;
-  for (int i = 0; i < D; ++i)
-    theta[i] = kLogEigenvalueBound * (1.0 - 2.0 * i / (D - 1)), lambda[i] = std::exp(theta[i]);
+  for (int i = 0; i < D; ++i) theta[i] = kLogEigenvalueBound * (1.0 - 2.0 * i / (D - 1)), lambda[i] = std::exp(theta[i]);
   SymMat<D> m = SymMat<D>::from_diagonal(lambda), t = SymMat<D>::from_diagonal(theta);
   for (int i = 0; i < D; ++i) {
     EXPECT_NEAR(log_spd(m)(i, i), theta[i], 4 * kEpsilon * kLogEigenvalueBound);
@@ -227,16 +226,15 @@ TYPED_TEST(SymFunctionsTest, SquaredLengthAndItsGradient) {
     double difference = central_difference([&](double s) { return ExpFrechet<D>(t + s * h).squared_length(u); });
     EXPECT_NEAR(frobenius_dot(gradient, h), difference, 1e-9 * scale);
     SymMat<D> other = random_direction<D>(rng);
-    EXPECT_NEAR(frobenius_dot(at_t.second_derivative(h, outer(u)), other),
-                quadratic_form(at_t.second_derivative(h, other), u), 1e-13 * scale);
+    EXPECT_NEAR(frobenius_dot(at_t.second_derivative(h, outer(u)), other), quadratic_form(at_t.second_derivative(h, other), u),
+                1e-13 * scale);
     // The Hessian along D directions at once, in the eigenbasis: entry (i, j) is uᵀ D²exp[Hi, Hj] u.
     std::array<SymMat<D>, D> directions;
     for (auto& direction : directions) direction = random_direction<D>(rng);
     SymMat<D> hessian = at_t.squared_length_hessian(directions, u);
     for (int i = 0; i < D; ++i)
       for (int j = 0; j <= i; ++j)
-        EXPECT_NEAR(hessian(i, j), quadratic_form(at_t.second_derivative(directions[i], directions[j]), u),
-                    1e-13 * scale);
+        EXPECT_NEAR(hessian(i, j), quadratic_form(at_t.second_derivative(directions[i], directions[j]), u), 1e-13 * scale);
   }
 }
 

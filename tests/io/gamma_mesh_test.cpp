@@ -111,8 +111,8 @@ void expect_same_mesh(const Mesh<D>& expected, const MeshFileContent& content, b
       Index edge = actual.element_edge(k, e);
       expect_same_point(expected.edge_node(expected.element_edge(k, e)), actual.edge_node(edge), "element edge", k);
       Index expected_edge = expected.element_edge(k, e);
-      EXPECT_EQ(content.edge_node_file_ids[edge], expected_file ? expected_file->edge_node_file_ids[expected_edge]
-                                                                : expected.vertex_count() + expected_edge);
+      EXPECT_EQ(content.edge_node_file_ids[edge],
+                expected_file ? expected_file->edge_node_file_ids[expected_edge] : expected.vertex_count() + expected_edge);
     }
 }
 
@@ -122,8 +122,7 @@ struct Format {
   int version;
 };
 
-constexpr Format kFormats[] = {{".mesh", false, 0}, {".meshb", true, 1}, {".meshb", true, 2}, {".meshb", true, 3},
-                               {".meshb", true, 4}};
+constexpr Format kFormats[] = {{".mesh", false, 0}, {".meshb", true, 1}, {".meshb", true, 2}, {".meshb", true, 3}, {".meshb", true, 4}};
 
 template <int D>
 void expect_round_trips(const Mesh<D>& mesh, const std::string& name) {
@@ -227,8 +226,9 @@ TEST(GammaMesh, HonoursTriangleAndEdgeOrderings) {
 }
 
 TEST(GammaMesh, HonoursTetrahedronOrderingGivenAfterTheElements) {
-  std::string vertices = "MeshVersionFormatted 2\nDimension 3\nVertices\n10\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
-                         "0.5 -0.1 0 0\n0.5 0.6 0 0\n-0.1 0.5 0 0\n0 0.1 0.5 0\n0.6 0 0.5 0\n0 0.5 0.6 0\n";
+  std::string vertices =
+      "MeshVersionFormatted 2\nDimension 3\nVertices\n10\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
+      "0.5 -0.1 0 0\n0.5 0.6 0 0\n-0.1 0.5 0 0\n0 0.1 0.5 0\n0.6 0 0.5 0\n0 0.5 0.6 0\n";
   std::string in_local_order = vertices + "TetrahedraP2\n1\n1 2 3 4 5 6 7 8 9 10 3\nEnd\n";
   // Every node listed in reverse: m23 m13 m03 m20 m12 m01 v3 v2 v1 v0.
   std::string permuted = vertices +
@@ -272,10 +272,12 @@ TEST(GammaMesh, RefusesMalformedAsciiFiles) {
   expect_read_error("not_a_number.mesh", kHeader3 + "Vertices\n1\n0 x 0 0\n", {"Vertices: ", "expected a real", "line 5"});
   expect_read_error("nan.mesh", kHeader3 + "Vertices\n1\n0 nan 0 0\n", {"Vertices: ", "not finite"});
   expect_read_error("vertex_zero.mesh", kTetVertices + "Tetrahedra\n1\n1 2 0 4 1\n", {"Tetrahedra: ", "vertex 0 out of range", "entity 1"});
-  expect_read_error("vertex_99.mesh", kTetVertices + "Tetrahedra\n2\n1 2 3 4 1\n1 2 99 4 1\n", {"Tetrahedra: ", "99 out of range", "entity 2"});
+  expect_read_error("vertex_99.mesh", kTetVertices + "Tetrahedra\n2\n1 2 3 4 1\n1 2 99 4 1\n",
+                    {"Tetrahedra: ", "99 out of range", "entity 2"});
   expect_read_error("corner_50.mesh", kTetVertices + "Tetrahedra\n1\n1 2 3 4 1\nCorners\n1\n50\n", {"Corners: ", "50 out of range"});
   expect_read_error("ridge.mesh", kTetVertices + "Tetrahedra\n1\n1 2 3 4 1\nRidges\n1\n1\n", {"Ridges: ", "names no edge"});
-  expect_read_error("required_edge.mesh", kTetVertices + "Tetrahedra\n1\n1 2 3 4 1\nRequiredEdges\n1\n1\n", {"RequiredEdges: ", "names no edge"});
+  expect_read_error("required_edge.mesh", kTetVertices + "Tetrahedra\n1\n1 2 3 4 1\nRequiredEdges\n1\n1\n",
+                    {"RequiredEdges: ", "names no edge"});
   expect_read_error("required_triangle.mesh", kTetVertices + "Tetrahedra\n1\n1 2 3 4 1\nTriangles\n1\n1 2 3 1\nRequiredTriangles\n1\n2\n",
                     {"RequiredTriangles: ", "names no triangle in required triangle 1"});
   expect_read_error("required_2d.mesh", "Dimension 2\nVertices\n3\n0 0 0\n1 0 0\n0 1 0\nTriangles\n1\n1 2 3 1\nRequiredTriangles\n1\n1\n",
@@ -297,8 +299,9 @@ TEST(GammaMesh, RefusesMalformedAsciiFiles) {
   expect_read_error("ordering_count.mesh", kHeader3 + "TetrahedraP2Ordering\n4\n", {"TetrahedraP2Ordering: ", "lists 4 nodes"});
   expect_read_error("ordering_index.mesh", kHeader3 + "EdgesP2Ordering\n3\n2\n0\n3\n", {"EdgesP2Ordering: ", "Bézier index 3"});
   expect_read_error("ordering_repeat.mesh",
-                    kTriangleVertices + "TrianglesP2Ordering\n6\n2 0 0\n2 0 0\n0 0 2\n1 1 0\n0 1 1\n1 0 1\n"
-                                        "TrianglesP2\n1\n1 2 3 4 5 6 1\n",
+                    kTriangleVertices +
+                        "TrianglesP2Ordering\n6\n2 0 0\n2 0 0\n0 0 2\n1 1 0\n0 1 1\n1 0 1\n"
+                        "TrianglesP2\n1\n1 2 3 4 5 6 1\n",
                     {"TrianglesP2Ordering: ", "not a permutation"});
 }
 

@@ -125,7 +125,8 @@ TEST(GmshMsh, RoundTripsCurvedSquare) {
 TEST(GmshMsh, RoundTripsMixedRefsAndUglyReals) {
   Mesh<3> cube = generate_cube(2);
   Mesh<3> mesh;
-  for (Index v = 0; v < cube.vertex_count(); ++v) mesh.add_vertex(cube.vertex(v) * (1.0 / 3.0) + Vec3{{1e-3 / 7, std::numbers::pi, -2e5 / 3}});
+  for (Index v = 0; v < cube.vertex_count(); ++v)
+    mesh.add_vertex(cube.vertex(v) * (1.0 / 3.0) + Vec3{{1e-3 / 7, std::numbers::pi, -2e5 / 3}});
   for (Index k = 0; k < cube.element_count(); ++k) mesh.add_element(cube.element(k), static_cast<int>(k % 3) - 1);
   for (Index f = 0; f < cube.facet_count(); ++f) mesh.add_facet(cube.facet(f), cube.facet_ref(f) * (f % 2 == 0 ? 1 : -100));
   for (Index l = 0; l < cube.line_count(); ++l) mesh.add_line(cube.line(l), static_cast<int>(l % 4));
@@ -289,13 +290,17 @@ TEST(GmshMsh, RefusesBadInputWithClearMessages) {
       {"empty", "", {"$MeshFormat", "not a Gmsh .msh file"}},
       {"not_msh", "MeshVersionFormatted 2\nDimension 3\n", {"$MeshFormat", "not a Gmsh .msh file", "line 1"}},
       {"version22", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n", {"$MeshFormat", "version '2.2' is not supported", "msh41"}},
-      {"binary", "$MeshFormat\n4.1 1 8\n\x01\x00\x00\x00\n$EndMeshFormat\n", {"$MeshFormat", "binary .msh is not supported", "-format msh41"}},
+      {"binary",
+       "$MeshFormat\n4.1 1 8\n\x01\x00\x00\x00\n$EndMeshFormat\n",
+       {"$MeshFormat", "binary .msh is not supported", "-format msh41"}},
       {"truncated_nodes", tet_file(tet4).substr(0, 90), {"$Nodes", "unexpected end of file"}},
       {"truncated_elements", tet_file(tet4).substr(0, tet_file(tet4).size() - 25), {"$Elements", "unexpected end of file"}},
-      {"no_end_nodes", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 1 1 1\n0 1 0 1\n1\n0 0 0\n$Elements\n",
+      {"no_end_nodes",
+       "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 1 1 1\n0 1 0 1\n1\n0 0 0\n$Elements\n",
        {"$Nodes", "expected $EndNodes, found '$Elements'", "line 9"}},
       {"node_count", tet_file(tet4, "1 11 1 10\n3 1 0 10"), {"$Nodes", "announces 11 nodes, the blocks hold 10"}},
-      {"duplicate_tag", tet_file(tet4, "1 10 1 10\n3 1 0 10").replace(tet_file(tet4).find("\n2\n"), 3, "\n1\n"),
+      {"duplicate_tag",
+       tet_file(tet4, "1 10 1 10\n3 1 0 10").replace(tet_file(tet4).find("\n2\n"), 3, "\n1\n"),
        {"$Nodes", "node tag 1 is defined twice", "line 8"}},
       {"undefined_tag", tet_file("1 1 1 1\n3 1 4 1\n1 1 2 3 99"), {"$Elements", "node tag 99 is not defined", "line 31"}},
       {"zero_tag", tet_file("1 1 1 1\n3 1 4 1\n1 1 2 3 0"), {"$Elements", "node tag 0 is not defined"}},
@@ -304,26 +309,28 @@ TEST(GmshMsh, RefusesBadInputWithClearMessages) {
       {"quadrangle", tet_file("1 1 1 1\n2 1 3 1\n1 1 2 3 4"), {"$Elements", "element type 3 (quadrangle) is not supported", "11 tet10"}},
       {"unknown_type", tet_file("1 1 1 1\n2 1 777 1\n1 1 2 3 4"), {"$Elements", "element type 777 (unknown)"}},
       {"type_dimension", tet_file("1 1 1 1\n2 1 4 1\n1 1 2 3 4"), {"$Elements", "tet4 elements in a block of dimension 2"}},
-      {"mixed_orders", tet_file("2 2 1 2\n3 1 4 1\n1 1 2 3 4\n3 2 11 1\n2 1 2 3 4 5 6 7 8 10 9"),
-       {"$Elements", "mixes tet4 and tet10"}},
-      {"p2_facet_in_p1", tet_file("2 2 1 2\n3 1 4 1\n1 1 2 3 4\n2 1 9 1\n2 1 3 2 7 6 5"),
+      {"mixed_orders", tet_file("2 2 1 2\n3 1 4 1\n1 1 2 3 4\n3 2 11 1\n2 1 2 3 4 5 6 7 8 10 9"), {"$Elements", "mixes tet4 and tet10"}},
+      {"p2_facet_in_p1",
+       tet_file("2 2 1 2\n3 1 4 1\n1 1 2 3 4\n2 1 9 1\n2 1 3 2 7 6 5"),
        {"$Elements (tri6)", "P2 elements of lower dimension in a P1 mesh"}},
       {"facet_not_a_face", tet_file("2 2 1 2\n3 1 4 1\n1 1 2 3 4\n2 1 2 1\n2 1 2 5"), {"not a face"}},
-      {"mid_node_conflict", tet_file("2 2 1 2\n3 1 11 1\n1 1 2 3 4 5 6 7 8 10 9\n1 1 8 1\n2 1 2 9"),
+      {"mid_node_conflict",
+       tet_file("2 2 1 2\n3 1 11 1\n1 1 2 3 4 5 6 7 8 10 9\n1 1 8 1\n2 1 2 9"),
        {"$Elements (line3)", "another mid node"}},
       {"only_lines", tet_file("1 1 1 1\n1 1 1 1\n1 1 2"), {"$Elements", "no triangles or tetrahedra"}},
       {"surface_mesh", tet_file("1 1 1 1\n2 1 2 1\n1 1 2 4"), {"$Nodes", "surface mesh", "not support", "line 20"}},
-      {"elements_first", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Elements\n0 0 0 0\n$EndElements\n",
-       {"$Elements", "comes before $Nodes"}},
+      {"elements_first", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Elements\n0 0 0 0\n$EndElements\n", {"$Elements", "comes before $Nodes"}},
       {"no_elements", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n0 0 0 0\n$EndNodes\n", {"no $Elements section"}},
       {"unterminated_section", tet_file(tet4) + "$Periodic\n1 2 3\n", {"$Periodic", "no $EndPeriodic"}},
       {"stray_token", tet_file(tet4) + "garbage\n", {"expected a section such as $Nodes, found 'garbage'"}},
       {"not_a_real", tet_file(tet4).replace(tet_file(tet4).find(".5 .5 0"), 7, ".5 x 0"), {"$Nodes", "expected a real, found 'x'"}},
       {"nan", tet_file(tet4).replace(tet_file(tet4).find(".5 .5 0"), 7, ".5 nan 0"), {"$Nodes", "not finite"}},
       {"entities_counts", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n1 0 0 0\n1 0 0\n", {"$Entities", "unexpected end of file"}},
-      {"huge_node_count", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 4000000000000000000 1 1\n0 1 0 4000000000000000000\n1\n",
+      {"huge_node_count",
+       "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 4000000000000000000 1 1\n0 1 0 4000000000000000000\n1\n",
        {"$Nodes", "unexpected end of file"}},
-      {"huge_element_count", tet_file("1 1 1 1\n3 1 11 4000000000000000000\n1 1 2 3 4"),
+      {"huge_element_count",
+       tet_file("1 1 1 1\n3 1 11 4000000000000000000\n1 1 2 3 4"),
        {"$Elements", "expected an integer, found '$EndElements'"}},
       {"parametric_flag", tet_file(tet4, "1 10 1 10\n3 1 7 10"), {"$Nodes", "parametric flag"}},
   };

@@ -75,8 +75,7 @@ TEST(SolutionFile, WritesAsciiAsLibMeshbDoes) {
   content.fields.push_back({SolutionKind::kSymmetricMatrix, 2, {1, 0.5, 2, 3, 0, 0.1}});
   std::string path = temporary_path("layout.sol");
   write_solution_file(path, content);
-  EXPECT_EQ(read_file(path),
-            "MeshVersionFormatted 2\n\nDimension 2\n\nSolAtVertices\n2\n1 3\n1 0.5 2\n3 0 0.1\n\nEnd\n");
+  EXPECT_EQ(read_file(path), "MeshVersionFormatted 2\n\nDimension 2\n\nSolAtVertices\n2\n1 3\n1 0.5 2\n3 0 0.1\n\nEnd\n");
 }
 
 TEST(SolutionFile, ReadsByteSwappedBinary) {
@@ -110,7 +109,9 @@ void expect_metric_of_mesh(const std::string& mesh_path, const std::string& sol_
 
 TEST(SolutionFile, ReadsTheThirdPartyMetricsAsPositiveDefinite) {
   const std::string data = testing_support::shared_data_path("");
-  if (auto missing = testing_support::missing_shared_data({data + "/mmg-torus/torus.mesh", data + "/ugawg-linear/linear.mesh"}); !missing.empty()) GTEST_SKIP() << missing;
+  if (auto missing = testing_support::missing_shared_data({data + "/mmg-torus/torus.mesh", data + "/ugawg-linear/linear.mesh"});
+      !missing.empty())
+    GTEST_SKIP() << missing;
   expect_metric_of_mesh(data + "/mmg-torus/torus.mesh", data + "/mmg-torus/torus-met.sol", 4351, 32.5918);
   expect_metric_of_mesh(data + "/ugawg-linear/linear.mesh", data + "/ugawg-linear/linear.sol", 9476, 99.999999999999986);
 }

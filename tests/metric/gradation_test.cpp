@@ -84,8 +84,7 @@ void expect_graded(const Mesh<D>& mesh, const std::vector<SymMat<D>>& metrics, d
     for (Index q : graph.neighbors_of(p)) {
       const SymMat<D>& mp = metrics[static_cast<std::size_t>(p)];
       double length = std::sqrt(quadratic_form(mp, mesh.vertex(q) - mesh.vertex(p)));
-      EXPECT_LE(largest_relative_eigenvalue(gradation_factor(length, beta) * mp, metrics[static_cast<std::size_t>(q)]),
-                1 + slack)
+      EXPECT_LE(largest_relative_eigenvalue(gradation_factor(length, beta) * mp, metrics[static_cast<std::size_t>(q)]), 1 + slack)
           << p << " -> " << q;
     }
 }

@@ -25,8 +25,8 @@ void expect_quadratic_recovered_exactly(const Mesh<D>& mesh) {
   SymMat<D> exact = analytic_field_hessian<D>(quadratic, Vec<D>{});
   for (Index v = 0; v < mesh.vertex_count(); ++v)
     for (int e = 0; e < SymMat<D>::kEntryCount; ++e)
-      EXPECT_NEAR(hessians[static_cast<std::size_t>(v)].entries[static_cast<std::size_t>(e)],
-                  exact.entries[static_cast<std::size_t>(e)], 1e-8)
+      EXPECT_NEAR(hessians[static_cast<std::size_t>(v)].entries[static_cast<std::size_t>(e)], exact.entries[static_cast<std::size_t>(e)],
+                  1e-8)
           << "vertex " << v;
 }
 

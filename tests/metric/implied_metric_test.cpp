@@ -79,8 +79,8 @@ template <int D>
 void expect_implied_metric_of_map(const Mesh<D>& regular_pattern, const Mat<D>& a, const Vec<D>& b) {
   for (Index k = 0; k < regular_pattern.element_count(); ++k)
     for (const auto& [i, j] : Simplex<D>::kEdgeLocalVertices)
-      ASSERT_NEAR(norm(regular_pattern.vertex(regular_pattern.element(k)[i]) - regular_pattern.vertex(regular_pattern.element(k)[j])),
-                  1.0, 1e-14);
+      ASSERT_NEAR(norm(regular_pattern.vertex(regular_pattern.element(k)[i]) - regular_pattern.vertex(regular_pattern.element(k)[j])), 1.0,
+                  1e-14);
   Mesh<D> mesh = mapped(regular_pattern, a, b);
   SymMat<D> expected = map_metric(a);
   for (const SymMat<D>& metric : implied_metric_at_vertices(mesh)) expect_close(metric, expected, 1e-13);

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "geom/sym_functions.hpp"
 #include "../geom/random_matrices.hpp"
+#include "geom/sym_functions.hpp"
 
 namespace hocav {
 namespace {
@@ -98,8 +98,7 @@ TEST(MetricMeanRatio, ScaleInvariantInTheElementAndTheMetric) {
   EXPECT_GT(quality, 0);
   EXPECT_LT(quality, 1);
   EXPECT_NEAR(metric_mean_ratio<3>(tetrahedron, 1e6 * metric), quality, 1e-12);
-  EXPECT_NEAR(metric_mean_ratio<3>(mapped(tetrahedron, Mat<3>{{1e-3, 0, 0, 0, 1e-3, 0, 0, 0, 1e-3}}, Vec3{}), metric), quality,
-              1e-12);
+  EXPECT_NEAR(metric_mean_ratio<3>(mapped(tetrahedron, Mat<3>{{1e-3, 0, 0, 0, 1e-3, 0, 0, 0, 1e-3}}, Vec3{}), metric), quality, 1e-12);
 }
 
 TEST(MetricMeanRatio, FlatSimplexIsZeroAndInvertedIsNegative) {

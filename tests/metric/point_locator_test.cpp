@@ -89,8 +89,7 @@ TEST(PointLocator, FindsPointsAcrossTheNotchOfANonConvexDomain) {
 // The closest-element rule as first written, plainly: the balls of the exit face's vertices one after the
 // other (an element in two balls is met twice), every boundary face of each, the first strictly closest wins.
 template <int D>
-Localization<D> reference_closest_boundary_element(const PointLocator<D>& locator, const Vec<D>& x, Index near_element,
-                                                   int near_face) {
+Localization<D> reference_closest_boundary_element(const PointLocator<D>& locator, const Vec<D>& x, Index near_element, int near_face) {
   const Mesh<D>& mesh = locator.mesh();
   std::vector<Index> candidates, ball;
   for (int i = 0; i < D; ++i) {

@@ -91,8 +91,8 @@ TEST(SurfaceMetric, OpposedFacetsLeaveTheSmallSizeInEveryDirection) {
   for (Vec2 x : {Vec2{{0, 0}}, Vec2{{-1, -1}}, Vec2{{-1, 1}}, Vec2{{1, 1}}, Vec2{{1, -1}}}) mesh.add_vertex(x);
   mesh.add_element({0, 2, 1});
   mesh.add_element({0, 4, 3});
-  for (Mesh<2>::Facet facet : {Mesh<2>::Facet{0, 2}, Mesh<2>::Facet{2, 1}, Mesh<2>::Facet{1, 0}, Mesh<2>::Facet{0, 4},
-                               Mesh<2>::Facet{4, 3}, Mesh<2>::Facet{3, 0}})
+  for (Mesh<2>::Facet facet :
+       {Mesh<2>::Facet{0, 2}, Mesh<2>::Facet{2, 1}, Mesh<2>::Facet{1, 0}, Mesh<2>::Facet{0, 4}, Mesh<2>::Facet{4, 3}, Mesh<2>::Facet{3, 0}})
     mesh.add_facet(facet);
   mesh.build_topology();
   auto metrics = surface_metric_at_vertices(mesh, SurfaceSizes{0.5, 1, 1});

@@ -16,8 +16,7 @@ TEST(P2MeshPicture, EdgesAreQuadraticBeziersThroughTheirMidNodes) {
   const PageTransform transform({{{0, 0}}, {{4, 4}}}, {{{0, 0}}, {{4, 4}}});
   // Edge 01 with mid node (2, 1): control point 2 (2, 1) − ((0, 0) + (4, 0)) / 2 = (2, 2), page (2, 2).
   // Edge 12 is straight: control (2, 2), page (2, 2). Edge 20: control (0, 2), page (0, 2).
-  EXPECT_EQ(p2_triangle_path(element, transform).data(),
-            "M0.00,4.00 Q2.00,2.00 4.00,4.00 Q2.00,2.00 0.00,0.00 Q0.00,2.00 0.00,4.00 Z");
+  EXPECT_EQ(p2_triangle_path(element, transform).data(), "M0.00,4.00 Q2.00,2.00 4.00,4.00 Q2.00,2.00 0.00,0.00 Q0.00,2.00 0.00,4.00 Z");
 }
 
 TEST(P2MeshPicture, OnePathPerTriangleInEachPanelItShows) {

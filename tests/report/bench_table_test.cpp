@@ -41,7 +41,7 @@ TEST(BenchTable, MarkdownRowsHaveTheTableOneColumnsAndTheThreadCheck) {
   EXPECT_NE(text.find("| 1.23% / 50% |"), std::string::npos) << text;
   EXPECT_NE(text.find("| 3 MiB | yes |"), std::string::npos) << text;  // same hash as its 1-thread row
   EXPECT_NE(text.find("| 3 MiB | no |"), std::string::npos) << text;   // another hash at 1e5
-  EXPECT_NE(text.find("| 3 MiB |  |"), std::string::npos) << text;    // 1-thread rows check nothing
+  EXPECT_NE(text.find("| 3 MiB |  |"), std::string::npos) << text;     // 1-thread rows check nothing
 }
 
 TEST(BenchTable, JsonHoldsEveryRunAndTheMachine) {

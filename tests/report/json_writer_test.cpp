@@ -23,9 +23,9 @@ TEST(Json, EscapesQuotesBackslashesAndControlCharacters) {
 TEST(Json, KeepsValidUtf8AndReplacesInvalidBytes) {
   EXPECT_EQ(json_quoted("maillage \xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80"), "\"maillage \xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80\"");
   EXPECT_EQ(json_quoted("\xff"), "\"\\ufffd\"");
-  EXPECT_EQ(json_quoted("\xc0\xaf"), "\"\\ufffd\\ufffd\"");          // overlong '/'
-  EXPECT_EQ(json_quoted("\xed\xa0\x80"), "\"\\ufffd\\ufffd\\ufffd\"");  // a UTF-16 surrogate
-  EXPECT_EQ(json_quoted("\xe2\x82"), "\"\\ufffd\\ufffd\"");          // truncated sequence
+  EXPECT_EQ(json_quoted("\xc0\xaf"), "\"\\ufffd\\ufffd\"");                        // overlong '/'
+  EXPECT_EQ(json_quoted("\xed\xa0\x80"), "\"\\ufffd\\ufffd\\ufffd\"");             // a UTF-16 surrogate
+  EXPECT_EQ(json_quoted("\xe2\x82"), "\"\\ufffd\\ufffd\"");                        // truncated sequence
   EXPECT_EQ(json_quoted("\xf4\x90\x80\x80"), "\"\\ufffd\\ufffd\\ufffd\\ufffd\"");  // above U+10FFFF
 }
 

@@ -173,7 +173,7 @@ TEST(MeshStatistics, JacobianFiguresOfCurvedTetrahedraMatchTheExactJacobian) {
   const ExactJacobian inward = exact_jacobian_of_curved_edge(0.15), outward = exact_jacobian_of_curved_edge(-0.1);
   EXPECT_NEAR(s.jacobian.min_normalized.min, inward.min_normalized, 1e-12);
   EXPECT_NEAR(s.jacobian.min_normalized.max, outward.min_normalized, 1e-12);
-  EXPECT_NEAR(s.jacobian.scaled.min, inward.scaled, 1e-12);  // 0.4
+  EXPECT_NEAR(s.jacobian.scaled.min, inward.scaled, 1e-12);   // 0.4
   EXPECT_NEAR(s.jacobian.scaled.max, outward.scaled, 1e-12);  // 1 / 1.4
   EXPECT_NEAR(s.jacobian.scaled.average, (inward.scaled + outward.scaled) / 2, 1e-12);
   EXPECT_EQ(s.jacobian.invalid, 0);

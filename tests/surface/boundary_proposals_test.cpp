@@ -84,8 +84,7 @@ TEST(SurfaceProposals, CurvedInputProjectsItsNodes) {
 TEST(SurfaceProposals, CubeProposalsAreStraightMidpoints) {
   Mesh<3> mesh = generate_cube(2);
   BoundaryProposals<3> proposals(mesh, P3Surrogate<3>(mesh));
-  for (const auto& [a, b] : boundary_edges(mesh))
-    EXPECT_LT(norm(*proposals.find(a, b) - 0.5 * (mesh.vertex(a) + mesh.vertex(b))), 1e-15);
+  for (const auto& [a, b] : boundary_edges(mesh)) EXPECT_LT(norm(*proposals.find(a, b) - 0.5 * (mesh.vertex(a) + mesh.vertex(b))), 1e-15);
   EXPECT_EQ(apply_boundary_proposals(mesh, proposals), Index(boundary_edges(mesh).size()));
 }
 

@@ -8,9 +8,9 @@
 
 #include "base/error.hpp"
 #include "cases/concentric_shell.hpp"
+#include "gmsh_requirement.hpp"
 #include "surface/analytic_boundary.hpp"
 #include "surface/boundary_proposals.hpp"
-#include "gmsh_requirement.hpp"
 #if HOCAV_WITH_GMSH
 #include <gmsh.h>  // the cylinder of RidgeCurveBetweenTwoSurfaces
 #endif
@@ -18,9 +18,7 @@
 namespace hocav {
 namespace {
 
-std::string temporary_path(const std::string& name) {
-  return (std::filesystem::path(::testing::TempDir()) / name).string();
-}
+std::string temporary_path(const std::string& name) { return (std::filesystem::path(::testing::TempDir()) / name).string(); }
 
 // OpenCASCADE's projections onto its spheres are accurate to about this.
 constexpr double kCadTolerance = 1e-9;

@@ -124,11 +124,10 @@ TEST(SurfaceSurrogate, CylinderRimsAreCurvedRidges) {
       for (const Vec3& point : surrogate.patch(f).control) EXPECT_EQ(point[2], z) << "cap facet " << f;
     }
     EXPECT_LT(rim_midpoint_error(mesh, surrogate), 1e-9);  // exact up to the fitted side normals
-    third_error[refinement] =
-        rim_midpoint_error(mesh, P3Surrogate<3>(mesh, {.tangent_length = TangentLength::kProjectedThird}));
+    third_error[refinement] = rim_midpoint_error(mesh, P3Surrogate<3>(mesh, {.tangent_length = TangentLength::kProjectedThird}));
   }
-  std::printf("cylinder rim edge midpoints with thirds: distance to the circle %.3e (h) %.3e (h/2), order %.2f\n",
-              third_error[0], third_error[1], std::log2(third_error[0] / third_error[1]));
+  std::printf("cylinder rim edge midpoints with thirds: distance to the circle %.3e (h) %.3e (h/2), order %.2f\n", third_error[0],
+              third_error[1], std::log2(third_error[0] / third_error[1]));
   EXPECT_GT(std::log2(third_error[0] / third_error[1]), 3.5);
 }
 
@@ -150,8 +149,7 @@ double max_distance_to_facets(const Mesh<D>& mesh, const P3Surrogate<D>& surroga
         parameters[0] = double(i) / n;
         if constexpr (D == 3) parameters[1] = double(j) / n;
         Vec<D> linear = mesh.vertex(mesh.facet(f)[0]);
-        for (int k = 1; k < D; ++k)
-          linear += parameters[k - 1] * (mesh.vertex(mesh.facet(f)[k]) - mesh.vertex(mesh.facet(f)[0]));
+        for (int k = 1; k < D; ++k) linear += parameters[k - 1] * (mesh.vertex(mesh.facet(f)[k]) - mesh.vertex(mesh.facet(f)[0]));
         worst = std::max(worst, norm(evaluate(surrogate.patch(f), parameters) - linear));
       }
   return worst;
@@ -220,8 +218,7 @@ Convergence sphere_convergence(int coarse_levels, double jitter, const Surrogate
   Convergence result;
   for (int level : {coarse_levels, coarse_levels + 1}) {
     const Mesh<3> mesh = icosphere(level, 1.0, jitter);
-    (level == coarse_levels ? result.coarse : result.fine) =
-        max_distance_to_sphere<3>(P3Surrogate<3>(mesh, options), 1.0, 12);
+    (level == coarse_levels ? result.coarse : result.fine) = max_distance_to_sphere<3>(P3Surrogate<3>(mesh, options), 1.0, 12);
   }
   return result;
 }
@@ -248,12 +245,12 @@ TEST(SurfaceSurrogate, SphereConvergence) {
   for (const Variant& variant :
        {Variant{"angle", {.normals = {.quadric_fit = false}}, {2.3, 1.4}},
         Variant{"area", {.normals = {.weights = NormalWeights::kArea, .quadric_fit = false}}, {2.3, 1.3}},
-        Variant{"max", {.normals = {.weights = NormalWeights::kMax, .quadric_fit = false}}, {3.7, 3.2}},
-        Variant{"quadric", {}, {3.5, 3.2}}, Variant{"analytic", {.normals = {.normal_source = &sphere}}, {3.7, 3.2}}})
+        Variant{"max", {.normals = {.weights = NormalWeights::kMax, .quadric_fit = false}}, {3.7, 3.2}}, Variant{"quadric", {}, {3.5, 3.2}},
+        Variant{"analytic", {.normals = {.normal_source = &sphere}}, {3.7, 3.2}}})
     for (int jittered : {0, 1}) {
       const Convergence c = sphere_convergence(2, 0.2 * jittered, variant.options);
-      std::printf("sphere%s, %-8s normals: max distance %.3e (h) %.3e (h/2), order %.2f\n", jittered ? " jittered" : "",
-                  variant.name, c.coarse, c.fine, c.order());
+      std::printf("sphere%s, %-8s normals: max distance %.3e (h) %.3e (h/2), order %.2f\n", jittered ? " jittered" : "", variant.name,
+                  c.coarse, c.fine, c.order());
       EXPECT_GT(c.order(), variant.min_order[jittered]) << variant.name << (jittered ? " jittered" : "");
     }
 }
@@ -278,8 +275,7 @@ TEST(SurfaceSurrogate, EllipsoidConvergence) {
   };
   for (const Variant& variant :
        {Variant{"angle", {.normals = {.quadric_fit = false}}, 1.5},
-        Variant{"max", {.normals = {.weights = NormalWeights::kMax, .quadric_fit = false}}, 1.5},
-        Variant{"quadric", {}, 2.8}}) {
+        Variant{"max", {.normals = {.weights = NormalWeights::kMax, .quadric_fit = false}}, 1.5}, Variant{"quadric", {}, 2.8}}) {
     std::array<double, 2> error{};
     for (int level : {3, 4}) {
       Mesh<3> mesh = icosphere(level, 1.0, 0.2);
@@ -292,8 +288,8 @@ TEST(SurfaceSurrogate, EllipsoidConvergence) {
             error[level - 3] = std::max(error[level - 3], distance(evaluate(surrogate.patch(p), {i / 6.0, j / 6.0})));
     }
     const double order = std::log2(error[0] / error[1]);
-    std::printf("jittered ellipsoid, %-8s normals: max distance %.3e (h) %.3e (h/2), order %.2f\n", variant.name,
-                error[0], error[1], order);
+    std::printf("jittered ellipsoid, %-8s normals: max distance %.3e (h) %.3e (h/2), order %.2f\n", variant.name, error[0], error[1],
+                order);
     EXPECT_GT(order, variant.min_order) << variant.name;
   }
 }
@@ -305,15 +301,12 @@ TEST(SurfaceSurrogate, CircleConvergence) {
     SurrogateOptions<2> options;
     double min_order;
   };
-  for (const Variant& variant :
-       {Variant{"equal", {.normals = {.quadric_fit = false}}, 1.3}, Variant{"quadric", {}, 2.7},
-        Variant{"analytic", {.normals = {.normal_source = &circle}}, 5}}) {
-    const double coarse =
-        max_distance_to_sphere<2>(P3Surrogate<2>(circle_polygon(16, 1.0, 0.2), variant.options), 1.0, 50);
-    const double fine =
-        max_distance_to_sphere<2>(P3Surrogate<2>(circle_polygon(32, 1.0, 0.2), variant.options), 1.0, 50);
-    std::printf("jittered circle, %-8s normals: max distance %.3e (h) %.3e (h/2), order %.2f\n", variant.name, coarse,
-                fine, std::log2(coarse / fine));
+  for (const Variant& variant : {Variant{"equal", {.normals = {.quadric_fit = false}}, 1.3}, Variant{"quadric", {}, 2.7},
+                                 Variant{"analytic", {.normals = {.normal_source = &circle}}, 5}}) {
+    const double coarse = max_distance_to_sphere<2>(P3Surrogate<2>(circle_polygon(16, 1.0, 0.2), variant.options), 1.0, 50);
+    const double fine = max_distance_to_sphere<2>(P3Surrogate<2>(circle_polygon(32, 1.0, 0.2), variant.options), 1.0, 50);
+    std::printf("jittered circle, %-8s normals: max distance %.3e (h) %.3e (h/2), order %.2f\n", variant.name, coarse, fine,
+                std::log2(coarse / fine));
     EXPECT_GT(std::log2(coarse / fine), variant.min_order) << variant.name;
   }
 }

@@ -19,8 +19,7 @@ template <int D>
 void jitter_on_sphere(Mesh<D>& mesh, double radius, double jitter, unsigned seed) {
   if (jitter == 0) return;
   double mean_edge = 0;
-  for (Index f = 0; f < mesh.facet_count(); ++f)
-    mean_edge += norm(mesh.vertex(mesh.facet(f)[1]) - mesh.vertex(mesh.facet(f)[0]));
+  for (Index f = 0; f < mesh.facet_count(); ++f) mean_edge += norm(mesh.vertex(mesh.facet(f)[1]) - mesh.vertex(mesh.facet(f)[0]));
   mean_edge /= mesh.facet_count();
   std::mt19937 random(seed);
   std::uniform_real_distribution<double> offset(-jitter * mean_edge, jitter * mean_edge);
@@ -36,14 +35,12 @@ void jitter_on_sphere(Mesh<D>& mesh, double radius, double jitter, unsigned seed
 inline Mesh<3> icosphere(int levels, double radius = 1.0, double jitter = 0.0, unsigned seed = 1) {
   const double g = (1 + std::sqrt(5.0)) / 2;
   Mesh<3> mesh;
-  for (const Vec3& p :
-       {Vec3{{-1, g, 0}}, Vec3{{1, g, 0}}, Vec3{{-1, -g, 0}}, Vec3{{1, -g, 0}}, Vec3{{0, -1, g}}, Vec3{{0, 1, g}},
-        Vec3{{0, -1, -g}}, Vec3{{0, 1, -g}}, Vec3{{g, 0, -1}}, Vec3{{g, 0, 1}}, Vec3{{-g, 0, -1}}, Vec3{{-g, 0, 1}}})
+  for (const Vec3& p : {Vec3{{-1, g, 0}}, Vec3{{1, g, 0}}, Vec3{{-1, -g, 0}}, Vec3{{1, -g, 0}}, Vec3{{0, -1, g}}, Vec3{{0, 1, g}},
+                        Vec3{{0, -1, -g}}, Vec3{{0, 1, -g}}, Vec3{{g, 0, -1}}, Vec3{{g, 0, 1}}, Vec3{{-g, 0, -1}}, Vec3{{-g, 0, 1}}})
     mesh.add_vertex(p * (radius / norm(p)));
-  std::vector<std::array<Index, 3>> faces{{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                          {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                          {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                          {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  std::vector<std::array<Index, 3>> faces{{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                                          {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                                          {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
   for (int level = 0; level < levels; ++level) {
     std::map<std::pair<Index, Index>, Index> middles;
     auto middle = [&](Index a, Index b) {
@@ -97,8 +94,7 @@ inline Mesh<3> capped_cylinder(int segments) {
   for (int l = 0; l <= layers; ++l)
     for (int i = 0; i < segments; ++i) side[l].push_back(ring_vertex(i, 1.0, double(l) / layers));
   auto add_outward = [&mesh](std::array<Index, 3> facet, const Vec3& outward, int ref) {
-    const Vec3 normal =
-        cross(mesh.vertex(facet[1]) - mesh.vertex(facet[0]), mesh.vertex(facet[2]) - mesh.vertex(facet[0]));
+    const Vec3 normal = cross(mesh.vertex(facet[1]) - mesh.vertex(facet[0]), mesh.vertex(facet[2]) - mesh.vertex(facet[0]));
     if (dot(normal, outward) < 0) std::swap(facet[1], facet[2]);
     mesh.add_facet(facet, ref);
   };

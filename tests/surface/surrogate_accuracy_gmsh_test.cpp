@@ -5,11 +5,11 @@
 #include <cstdio>
 
 #include "cases/concentric_shell.hpp"
+#include "gmsh_requirement.hpp"
 #include "surface/analytic_boundary.hpp"
 #include "surface/boundary_distance.hpp"
 #include "surface/boundary_proposals.hpp"
 #include "surface/p3_surrogate.hpp"
-#include "gmsh_requirement.hpp"
 
 namespace hocav {
 namespace {
@@ -28,8 +28,8 @@ TEST(SurfaceAccuracy, SphereShellSurrogateIsWithinTwiceTheExactNodes) {
   const double straight = max_boundary_distance(mesh, spheres);
   const double surrogate = curved_distance(mesh, P3Surrogate<3>(mesh), spheres);
   const double exact = curved_distance(mesh, spheres, spheres);  // nodes on the spheres, like gmsh's
-  std::printf("sphere shell h = 0.125: P1 %.3e, P2 on the surrogate %.3e (%.0fx smaller), exact nodes %.3e (%.2fx)\n",
-              straight, surrogate, straight / surrogate, exact, surrogate / exact);
+  std::printf("sphere shell h = 0.125: P1 %.3e, P2 on the surrogate %.3e (%.0fx smaller), exact nodes %.3e (%.2fx)\n", straight, surrogate,
+              straight / surrogate, exact, surrogate / exact);
   EXPECT_GT(straight / surrogate, 100);
   EXPECT_LT(surrogate / exact, 2);
 }

@@ -17,10 +17,8 @@ std::array<Vec<D>, 4> edge_curve(const Mesh<D>& mesh, const P3Surrogate<D>& surr
   for (int e = 0; e < CubicPatch<D>::kEdges; ++e) {
     const auto& ends = kPatchEdges<D>[e];
     const Index first = mesh.facet(f)[ends[0]], second = mesh.facet(f)[ends[1]];
-    if (first == a && second == b)
-      return {patch.vertex(ends[0]), patch.edge_point(e, 0), patch.edge_point(e, 1), patch.vertex(ends[1])};
-    if (first == b && second == a)
-      return {patch.vertex(ends[1]), patch.edge_point(e, 1), patch.edge_point(e, 0), patch.vertex(ends[0])};
+    if (first == a && second == b) return {patch.vertex(ends[0]), patch.edge_point(e, 0), patch.edge_point(e, 1), patch.vertex(ends[1])};
+    if (first == b && second == a) return {patch.vertex(ends[1]), patch.edge_point(e, 1), patch.edge_point(e, 0), patch.vertex(ends[0])};
   }
   ADD_FAILURE() << "facet " << f << " has no edge " << a << "-" << b;
   return {};
@@ -40,8 +38,7 @@ inline void expect_no_cracks(const Mesh<3>& mesh, const P3Surrogate<3>& surrogat
       const int local_edge = (side + 1) % 3;  // kPatchEdges: edge e joins local vertices e and e + 1
       for (double s : {0.1, 0.5, 0.9}) {
         const double w = 1 - s;
-        const Vec3 bezier =
-            w * w * w * curve[0] + 3 * w * w * s * curve[1] + 3 * w * s * s * curve[2] + s * s * s * curve[3];
+        const Vec3 bezier = w * w * w * curve[0] + 3 * w * w * s * curve[1] + 3 * w * s * s * curve[2] + s * s * s * curve[3];
         EXPECT_LT(norm(evaluate(surrogate.patch(f), patch_edge_parameters<3>(local_edge, s)) - bezier), 1e-15);
       }
       ++shared;

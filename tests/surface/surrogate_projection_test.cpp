@@ -50,8 +50,7 @@ std::vector<Vec3> points_near_unit_sphere(int count, double spread, unsigned see
 
 // The projection lies on its patch and no sampled point of any patch is closer.
 template <int D>
-void expect_closest(const P3Surrogate<D>& surrogate, const Vec<D>& x, const BoundaryPoint<D>& found,
-                    std::optional<int> ref = {}) {
+void expect_closest(const P3Surrogate<D>& surrogate, const Vec<D>& x, const BoundaryPoint<D>& found, std::optional<int> ref = {}) {
   const int n = 24;
   const double sampled = sampled_distance(surrogate, x, n, ref);
   EXPECT_LE(found.distance, sampled + 1e-12);
@@ -68,8 +67,7 @@ TEST(SurfaceProjection, ClosestPointOnTheSphereSurrogate) {
   const P3Surrogate<3> surrogate(mesh);
   for (const Vec3& x : points_near_unit_sphere(40, 0.3, 5)) expect_closest(surrogate, x, surrogate.project(x));
   // Points far from the surface, and the centre, are still projected to the closest patch.
-  for (const Vec3& x : {Vec3{{0, 0, 0}}, Vec3{{3, -2, 1}}, Vec3{{0.1, 0.2, -0.1}}})
-    expect_closest(surrogate, x, surrogate.project(x));
+  for (const Vec3& x : {Vec3{{0, 0, 0}}, Vec3{{3, -2, 1}}, Vec3{{0.1, 0.2, -0.1}}}) expect_closest(surrogate, x, surrogate.project(x));
 }
 
 TEST(SurfaceProjection, ClosestPointOnACreasedSurrogate) {
