@@ -31,14 +31,12 @@ long long peak_memory_bytes() {
 // any thread count.
 template <int D>
 std::vector<SymMat<D>> metrics_at_vertices(const Mesh<D>& mesh, const AdaptationMetric<D>& metric, int threads) {
-  constexpr std::size_t kChunk = 1024;
   const auto count = static_cast<std::size_t>(mesh.vertex_count());
   std::vector<SymMat<D>> metrics(count);
   ThreadPool pool(std::max(1, threads));
-  pool.run((count + kChunk - 1) / kChunk, [&](std::size_t chunk) {
+  run_chunked(pool, count, 1024, [&](std::size_t begin, std::size_t end) {
     Index hint = kNoIndex;
-    for (std::size_t v = chunk * kChunk; v < std::min(count, (chunk + 1) * kChunk); ++v)
-      metrics[v] = metric.metric_at(mesh.vertex(static_cast<Index>(v)), hint);
+    for (std::size_t v = begin; v < end; ++v) metrics[v] = metric.metric_at(mesh.vertex(static_cast<Index>(v)), hint);
   });
   return metrics;
 }

@@ -23,18 +23,17 @@ std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<D>& am, double boun
   std::vector<Index> ends(static_cast<std::size_t>(first.back())), fill(first.begin(), first.end() - 1);
   for_each_changed_edge([&](Index a, Index b) { ends[static_cast<std::size_t>(fill[a]++)] = b; });
   // Each bucket's sort and lengths on the pool's threads, in chunks of vertices gathered in order.
-  constexpr Index kChunk = 2048;
-  const Index chunks = (mesh.vertex_count() + kChunk - 1) / kChunk;
-  std::vector<std::vector<EdgeCandidate>> found(static_cast<std::size_t>(chunks));
-  pool.run(static_cast<std::size_t>(chunks), [&](std::size_t chunk) {
-    const Index begin = static_cast<Index>(chunk) * kChunk, end = std::min(mesh.vertex_count(), begin + kChunk);
-    for (Index a = begin; a < end; ++a) {
+  constexpr std::size_t kChunk = 2048;
+  const auto vertex_count = static_cast<std::size_t>(mesh.vertex_count());
+  std::vector<std::vector<EdgeCandidate>> found((vertex_count + kChunk - 1) / kChunk);
+  run_chunked(pool, vertex_count, kChunk, [&](std::size_t begin, std::size_t end) {
+    std::vector<EdgeCandidate>& out = found[begin / kChunk];
+    for (auto a = static_cast<Index>(begin); a < static_cast<Index>(end); ++a) {
       const auto bucket_begin = ends.begin() + first[a], bucket_end = ends.begin() + first[a + 1];
       std::sort(bucket_begin, bucket_end);
       for (auto b = bucket_begin; b != bucket_end; ++b)
         if (b == bucket_begin || *b != *(b - 1))
-          if (const double length = am.edge_length(a, *b); longer ? length > bound : length < bound)
-            found[chunk].push_back({length, a, *b});
+          if (const double length = am.edge_length(a, *b); longer ? length > bound : length < bound) out.push_back({length, a, *b});
     }
   });
   std::vector<EdgeCandidate> candidates;

@@ -186,10 +186,8 @@ void sort_unique(std::vector<SwapCandidate<N>>& candidates, Index vertex_count, 
   std::vector<SwapCandidate<N>> sorted(candidates.size());
   std::vector<Index> fill(first.begin(), first.end() - 1);
   for (const auto& c : candidates) sorted[static_cast<std::size_t>(fill[static_cast<std::size_t>(c.vertices[0])]++)] = c;
-  constexpr std::size_t kChunk = 2048;
-  const std::size_t chunks = (static_cast<std::size_t>(vertex_count) + kChunk - 1) / kChunk;
-  pool.run(chunks, [&](std::size_t chunk) {
-    for (std::size_t v = chunk * kChunk; v < std::min(static_cast<std::size_t>(vertex_count), (chunk + 1) * kChunk); ++v)
+  run_chunked(pool, static_cast<std::size_t>(vertex_count), 2048, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v)
       std::sort(sorted.begin() + first[v], sorted.begin() + first[v + 1], [](const SwapCandidate<N>& x, const SwapCandidate<N>& y) {
         return std::tie(x.vertices, x.element) < std::tie(y.vertices, y.element);
       });

@@ -58,4 +58,12 @@ void run_strided(ThreadPool& pool, std::size_t count, std::size_t serial_below, 
     pool.run(workers, run_worker);
 }
 
+// Calls work(begin, end) for consecutive ranges of `chunk` indices covering [0, count) on the pool's
+// threads. The ranges do not depend on the thread count, so work that fills per-index or per-range
+// results gives the same results for any count.
+template <typename Work>
+void run_chunked(ThreadPool& pool, std::size_t count, std::size_t chunk, const Work& work) {
+  pool.run((count + chunk - 1) / chunk, [&](std::size_t c) { work(c * chunk, std::min(count, (c + 1) * chunk)); });
+}
+
 }  // namespace hocav

@@ -11,24 +11,21 @@ namespace {
 template <int D>
 double determinant(const Mat<D>& a) {
   if constexpr (D == 2)
-    return a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0);
+    return hocav::determinant(a.column(0), a.column(1));
   else
-    return a(0, 0) * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)) - a(0, 1) * (a(1, 0) * a(2, 2) - a(1, 2) * a(2, 0)) +
-           a(0, 2) * (a(1, 0) * a(2, 1) - a(1, 1) * a(2, 0));
+    return hocav::determinant(a.column(0), a.column(1), a.column(2));
 }
 
-// The cofactor matrix, det(a) a⁻ᵀ: the derivative of det(a) with respect to a.
+// The cofactor matrix, det(a) a⁻ᵀ: the derivative of det(a) with respect to a. Its columns are the
+// gradients of det(a) with respect to a's columns (in 3D the cross products of the other two).
 template <int D>
 Mat<D> cofactors(const Mat<D>& a) {
   Mat<D> c;
   if constexpr (D == 2) {
-    c(0, 0) = a(1, 1), c(0, 1) = -a(1, 0), c(1, 0) = -a(0, 1), c(1, 1) = a(0, 0);
+    c.set_column(0, Vec2{{a(1, 1), -a(0, 1)}});
+    c.set_column(1, Vec2{{-a(1, 0), a(0, 0)}});
   } else {
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-        c(i, j) = a(i1, j1) * a(i2, j2) - a(i1, j2) * a(i2, j1);
-      }
+    for (int j = 0; j < 3; ++j) c.set_column(j, cross(a.column((j + 1) % 3), a.column((j + 2) % 3)));
   }
   return c;
 }

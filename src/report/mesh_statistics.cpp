@@ -33,10 +33,9 @@ std::vector<RefCount> count_refs(Index count, RefOf ref_of) {
 // values in order: the figures are then summed serially, the same for any thread count.
 template <typename Value>
 std::vector<double> values_on_threads(ThreadPool& pool, std::size_t count, const Value& value) {
-  constexpr std::size_t kChunk = 1024;
   std::vector<double> values(count);
-  pool.run((count + kChunk - 1) / kChunk, [&](std::size_t chunk) {
-    for (std::size_t i = chunk * kChunk; i < std::min(count, (chunk + 1) * kChunk); ++i) values[i] = value(i);
+  run_chunked(pool, count, 1024, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) values[i] = value(i);
   });
   return values;
 }
