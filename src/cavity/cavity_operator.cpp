@@ -281,21 +281,41 @@ CavityStatus CavityOperator<D>::match_ridges() {
   }
   for (std::size_t f = 0; f < new_facets_.size(); ++f)
     ridge_faces_.push_back({ridge_key<D>(new_facets_[f].vertices.data(), vertex_), kNoIndex, static_cast<int>(boundary_faces_.size() + f)});
-  std::sort(ridge_faces_.begin(), ridge_faces_.end(), [](const RidgeFace& x, const RidgeFace& y) { return x.key < y.key; });
   links_.clear();
-  for (std::size_t i = 0; i < ridge_faces_.size(); i += 2) {
-    if (i + 1 >= ridge_faces_.size() || ridge_faces_[i + 1].key != ridge_faces_[i].key ||
-        (i + 2 < ridge_faces_.size() && ridge_faces_[i + 2].key == ridge_faces_[i].key))
-      return CavityStatus::kNotStarShaped;
-    RidgeFace first = ridge_faces_[i], second = ridge_faces_[i + 1];
-    if (first.new_element == kNoIndex) std::swap(first, second);
-    if (first.new_element == kNoIndex) return CavityStatus::kNotStarShaped;  // two kept faces: a hole
-    if (second.new_element == kNoIndex)
-      links_.push_back({first.new_element, first.face, kNoIndex, -1, second.face});
-    else
-      links_.push_back({first.new_element, first.face, second.new_element, second.face, -1});
-  }
+  if (!pair_ridge_faces()) return CavityStatus::kNotStarShaped;
+  // New facets are appended in the links' order: by key, so that it does not depend on the table.
+  if (!new_facets_.empty()) std::sort(links_.begin(), links_.end(), [](const Link& x, const Link& y) { return x.key < y.key; });
   return CavityStatus::kAccepted;
+}
+
+template <int D>
+bool CavityOperator<D>::pair_ridge_faces() {
+  // An open-addressing table of the faces by key (a sort cost more than the rest of the plan's
+  // bookkeeping): each key must come exactly twice.
+  std::size_t size = 16;
+  while (size < 2 * ridge_faces_.size()) size *= 2;
+  ridge_slots_.assign(size, -1);
+  ridge_partner_.assign(ridge_faces_.size(), -1);
+  for (std::size_t i = 0; i < ridge_faces_.size(); ++i) {
+    std::size_t slot = (ridge_faces_[i].key * 0x9E3779B97F4A7C15ull) >> 40 & (size - 1);
+    while (ridge_slots_[slot] >= 0 && ridge_faces_[static_cast<std::size_t>(ridge_slots_[slot])].key != ridge_faces_[i].key)
+      slot = (slot + 1) & (size - 1);
+    if (ridge_slots_[slot] < 0) {
+      ridge_slots_[slot] = static_cast<int>(i);
+      continue;
+    }
+    const auto j = static_cast<std::size_t>(ridge_slots_[slot]);
+    if (ridge_partner_[j] >= 0) return false;  // a third face through the same ridge: a fold
+    ridge_partner_[j] = static_cast<int>(i);
+    RidgeFace first = ridge_faces_[j], second = ridge_faces_[i];
+    if (first.new_element == kNoIndex) std::swap(first, second);
+    if (first.new_element == kNoIndex) return false;  // two kept faces: a hole
+    if (second.new_element == kNoIndex)
+      links_.push_back({first.key, first.new_element, first.face, kNoIndex, -1, second.face});
+    else
+      links_.push_back({first.key, first.new_element, first.face, second.new_element, second.face, -1});
+  }
+  return 2 * links_.size() == ridge_faces_.size();  // else a face is unpaired: a hole
 }
 
 template <int D>

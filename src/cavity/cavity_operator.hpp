@@ -106,6 +106,7 @@ class CavityOperator {
     int face;           // local face of the new element, or index in boundary_faces_
   };
   struct Link {
+    std::uint64_t key;
     Index new_element;
     int face;
     Index other_new_element;  // kNoIndex: linked to the kept boundary face `kept_face`, or to new
@@ -133,6 +134,7 @@ class CavityOperator {
   void star_lines(const Mesh<D>& mesh, std::span<const Index> removed_lines);
   bool is_removed_line(const Mesh<D>& mesh, Index a, Index b) const;
   CavityStatus match_ridges();
+  bool pair_ridge_faces();  // fills links_; false when a ridge has not exactly two faces
   CavityStatus plan_edges(const Mesh<D>& mesh);
   // Position of the edge with this key in boundary_edge_keys_, or its size when it is not there.
   std::size_t boundary_edge_slot(std::uint64_t key) const;
@@ -150,6 +152,7 @@ class CavityOperator {
   std::vector<Index> starred_faces_;              // boundary face of each new element
   std::vector<Element> new_elements_;
   std::vector<RidgeFace> ridge_faces_;
+  std::vector<int> ridge_slots_, ridge_partner_;  // pair_ridge_faces' table, and each face's partner
   std::vector<Link> links_;
   std::vector<Index> vanishing_vertices_;
   std::vector<Index> removed_facets_, removed_lines_;  // sorted
