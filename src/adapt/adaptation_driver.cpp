@@ -59,7 +59,7 @@ AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric,
 
   const std::vector<SymMat<D>> metrics = metrics_at_vertices(mesh, metric, settings.threads);
   Mesh<D> copy = mesh;  // the statistics build an edge table
-  report.measures = *compute_mesh_statistics(copy, rows_of_metrics(metrics).values, settings.threads).metric;
+  report.measures = compute_metric_statistics(copy, rows_of_metrics(metrics).values, settings.threads);
   out.field = std::make_unique<MetricField<D>>(mesh, metrics);
   report.peak_memory_bytes = peak_memory_bytes();
   return out;

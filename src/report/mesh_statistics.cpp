@@ -323,15 +323,22 @@ MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> no
   options.require_positive_orientation = !mesh.is_p2();  // a valid curved element may be an inverted P1 one
   s.consistency_problems = check_consistency(mesh, options);
   s.jacobian = jacobian_statistics(mesh);
-  if (!node_metrics.empty()) {
-    ThreadPool pool(std::max(1, threads));
-    s.metric = metric_statistics(mesh, node_metrics, pool);
-  }
+  if (!node_metrics.empty()) s.metric = compute_metric_statistics(mesh, node_metrics, threads);
   return s;
 }
 
 template MeshStatistics compute_mesh_statistics(Mesh<2>&, std::span<const double>, int);
 template MeshStatistics compute_mesh_statistics(Mesh<3>&, std::span<const double>, int);
+
+template <int D>
+MetricStatistics compute_metric_statistics(Mesh<D>& mesh, std::span<const double> node_metrics, int threads) {
+  if (!mesh.has_edges()) mesh.build_edges();
+  ThreadPool pool(std::max(1, threads));
+  return metric_statistics(mesh, node_metrics, pool);
+}
+
+template MetricStatistics compute_metric_statistics(Mesh<2>&, std::span<const double>, int);
+template MetricStatistics compute_metric_statistics(Mesh<3>&, std::span<const double>, int);
 
 void write_statistics_table(std::ostream& out, const MeshStatistics& s, const std::string& mesh_name, const std::string& metric_name) {
   auto row = [&out](const std::string& label, const std::string& value) { out << std::left << std::setw(22) << label << value << '\n'; };
