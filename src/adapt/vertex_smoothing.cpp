@@ -21,13 +21,11 @@ constexpr double kSmoothingGain = 1.01;
 constexpr std::size_t kSmallestThreadedBatch = 256;
 
 // The mean over the ball's elements of w + (v − w)/l(v, w) for each other vertex w (a neighbour
-// counts once per element it shares with v); each length is evaluated once.
+// counts once per element it shares with v), with `lengths` those of v's edges to `neighbors`.
 template <int D>
 Vec<D> unit_edge_target(const AdaptationMesh<D>& am, Index v, std::span<const Index> ball, std::span<const Index> neighbors,
-                        std::vector<double>& lengths) {
+                        std::span<const double> lengths) {
   const Mesh<D>& mesh = am.mesh();
-  lengths.clear();
-  for (Index w : neighbors) lengths.push_back(am.edge_length(v, w));
   Vec<D> sum{};
   int count = 0;
   for (Index k : ball)
@@ -87,7 +85,13 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, std::span<const Index> ball, 
   scratch.elements.clear();
   for (Index k : ball) scratch.elements.push_back(am.mesh().element(k));
   neighbors_in<D>(scratch.elements, v, scratch.neighbors);
-  const auto old_lengths = length_range<D>(am, v, scratch.neighbors);
+  // Most trials are refused by the element that was the worst: judged first.
+  const auto worst = std::min_element(ball.begin(), ball.end(), [&](Index x, Index y) { return am.quality(x) < am.quality(y); });
+  std::swap(scratch.elements.front(), scratch.elements[static_cast<std::size_t>(worst - ball.begin())]);
+  scratch.lengths.clear();
+  for (Index w : scratch.neighbors) scratch.lengths.push_back(am.edge_length(v, w));
+  const auto [shortest, longest] = std::minmax_element(scratch.lengths.begin(), scratch.lengths.end());
+  const std::pair<double, double> old_lengths{*shortest, *longest};
   const Vec<D> start = am.mesh().vertex(v);
   const bool on_boundary = am.vertex_class(v) == VertexClass::kSurface;
   if (on_boundary) {
@@ -97,7 +101,7 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, std::span<const Index> ball, 
     scratch.facet_normals.clear();
     for (Index f : scratch.facets) scratch.facet_normals.push_back(area_normal<D>(am.mesh(), am.mesh().facet(f)));
   }
-  const double old_worst = worst_quality<D>(am, ball);
+  const double old_worst = am.quality(*worst);
   const Vec<D> step = unit_edge_target(am, v, ball, scratch.neighbors, scratch.lengths) - start;
   for (double fraction : {1.0, 0.5, 0.25}) {
     const Vec<D> x = on_boundary ? on_surface(am, start + fraction * step, start, scratch) : start + fraction * step;
