@@ -1,5 +1,6 @@
 // The candidate edges of splits and collapses (adaptation_operations.hpp, edges_beyond).
 #include <algorithm>
+#include <array>
 
 #include "adapt/adaptation_operations.hpp"
 
@@ -11,11 +12,13 @@ std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<D>& am, double boun
   // sort: the whole mesh's edges in the first passes), then each bucket sorted and made unique.
   const Mesh<D>& mesh = am.mesh();
   const auto for_each_changed_edge = [&](auto visit) {
-    for (const auto& element : mesh.elements())
+    for (const auto& element : mesh.elements()) {
+      std::array<bool, D + 1> changed;
+      for (int i = 0; i <= D; ++i) changed[i] = am.changed_recently(element[i]);
       for (int i = 0; i <= D; ++i)
         for (int j = 0; j < i; ++j)
-          if (am.changed_recently(element[i]) || am.changed_recently(element[j]))
-            visit(std::min(element[i], element[j]), std::max(element[i], element[j]));
+          if (changed[i] || changed[j]) visit(std::min(element[i], element[j]), std::max(element[i], element[j]));
+    }
   };
   std::vector<Index> first(static_cast<std::size_t>(mesh.vertex_count()) + 1, 0);
   for_each_changed_edge([&](Index a, Index) { ++first[static_cast<std::size_t>(a) + 1]; });

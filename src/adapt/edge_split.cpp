@@ -80,7 +80,7 @@ bool plan_split(AdaptationMesh<D>& am, Index v, bool inside, const CavityOptions
   auto& work = am.workspace();
   if (inside) {
     s.shell.assign(work.cavity.begin(), work.cavity.end());
-    grow_delaunay_cavity(am.mesh(), work.cavity, am.mesh().vertex(v), am.metric(v));
+    grow_delaunay_cavity(am.mesh(), work, am.mesh().vertex(v), am.metric(v));
     if (work.cavity.size() > s.shell.size()) {
       if (work.cavity_operator.plan(am.mesh(), work.cavity, v, options) == CavityStatus::kAccepted) return true;
       work.cavity.assign(s.shell.begin(), s.shell.end());

@@ -50,13 +50,20 @@ bool in_circumsphere(const Mesh<D>& mesh, Index k, const Vec<D>& x, const SymMat
 }  // namespace
 
 template <int D>
-void grow_delaunay_cavity(const Mesh<D>& mesh, std::vector<Index>& cavity, const Vec<D>& x, const SymMat<D>& metric) {
+void grow_delaunay_cavity(const Mesh<D>& mesh, CavityWorkspace<D>& work, const Vec<D>& x, const SymMat<D>& metric) {
+  // An element refused once is not tested again from its other faces on the cavity.
+  std::vector<Index>& cavity = work.cavity;
+  std::vector<Index>& refused = work.refused;
+  refused.clear();
   for (std::size_t next = 0; next < cavity.size(); ++next)
     for (int face = 0; face <= D; ++face) {
       Index n = mesh.neighbor(cavity[next], face);
-      if (n == kNoIndex || small_set_holds(cavity, n)) continue;
+      if (n == kNoIndex || small_set_holds(cavity, n) || small_set_holds(refused, n)) continue;
       if (mesh.element_face_facet(cavity[next], face) != kNoIndex) continue;  // stay on one side of surfaces
-      if (in_circumsphere(mesh, n, x, metric)) cavity.push_back(n);
+      if (in_circumsphere(mesh, n, x, metric))
+        cavity.push_back(n);
+      else
+        refused.push_back(n);
     }
 }
 
@@ -95,7 +102,7 @@ CavityStatus insert_vertex(Mesh<D>& mesh, CavityWorkspace<D>& work, const Vec<D>
     k = next;
   }
   work.cavity.assign(1, k);
-  grow_delaunay_cavity(mesh, work.cavity, x, metric);
+  grow_delaunay_cavity(mesh, work, x, metric);
   Index vertex = mesh.add_vertex(x);
   CavityStatus status = plan_and_commit(mesh, work, vertex, options);
   if (status != CavityStatus::kAccepted)
@@ -106,7 +113,7 @@ CavityStatus insert_vertex(Mesh<D>& mesh, CavityWorkspace<D>& work, const Vec<D>
 }
 
 #define HOCAV_INSTANTIATE(D)                                                                                 \
-  template void grow_delaunay_cavity(const Mesh<D>&, std::vector<Index>&, const Vec<D>&, const SymMat<D>&);  \
+  template void grow_delaunay_cavity(const Mesh<D>&, CavityWorkspace<D>&, const Vec<D>&, const SymMat<D>&);  \
   template CavityStatus reinsert_vertex(Mesh<D>&, CavityWorkspace<D>&, Index, const CavityOptions&);         \
   template CavityStatus collapse_edge(Mesh<D>&, CavityWorkspace<D>&, Index, Index, CavityOptions);           \
   template CavityStatus swap_edge(Mesh<D>&, CavityWorkspace<D>&, Index, Index, Index, const CavityOptions&); \

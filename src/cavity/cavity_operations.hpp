@@ -20,6 +20,7 @@ template <int D>
 struct CavityWorkspace {
   CavityOperator<D> cavity_operator;
   std::vector<Index> cavity;
+  std::vector<Index> refused;  // grow_delaunay_cavity's elements outside the circumsphere test
 };
 
 template <int D>
@@ -34,7 +35,7 @@ CavityStatus swap_edge(Mesh<D>& mesh, CavityWorkspace<D>& work, Index a, Index b
 // Grows `cavity` (elements around x) by Bowyer–Watson in the constant metric `metric`: the
 // neighbours, through faces that carry no boundary facet, whose circumsphere in the metric contains x.
 template <int D>
-void grow_delaunay_cavity(const Mesh<D>& mesh, std::vector<Index>& cavity, const Vec<D>& x, const SymMat<D>& metric);
+void grow_delaunay_cavity(const Mesh<D>& mesh, CavityWorkspace<D>& work, const Vec<D>& x, const SymMat<D>& metric);
 
 // Inserts a new vertex at x (found from `hint`, an element near x). The cavity holds the elements,
 // connected to the one containing x, whose circumsphere in the constant metric `metric` contains x
