@@ -22,8 +22,12 @@ const double kMaxFitTurn = 30 * std::numbers::pi / 180;
 // may have a single facet; the section fit has four unknowns).
 constexpr int kQuadricRings = 1, kSectionRings = 2;
 // A fit over one ref's points replaces the fit over the whole neighbourhood when its residual is
-// below this share of the whole one's (a smooth surface split by refs stays well below the gain).
-constexpr double kRefFitGain = 0.1;
+// below this share of the whole one's. A side whose own facets span refs (merged at a junction)
+// would give up some of them: it needs a large gain, which a smooth surface split by refs stays well
+// above (0.47 at least on the split sphere). A side within one ref only borrows its neighbours'
+// points: on one smooth surface they keep the residual (0.68 at least on the split sphere), across
+// a jump in curvature (a fillet meeting its floor) they double it or more (docs/surface.md).
+constexpr double kMergedRefFitGain = 0.1, kSingleRefFitGain = 0.5;
 // Sides along a feature line whose section-fitted normals differ by less than this are merged: the
 // fits are exact on cylinders and planes, so a tangent junction lands well below it and the
 // part's shallowest crease (20°, docs/cases.md) well above.
@@ -143,10 +147,6 @@ void neighbourhood_points(const Mesh<D>& mesh, const std::vector<RefVertex>& gat
   for (Index v : vertices) points.push_back(mesh.vertex(v));
 }
 
-// Replaces each side's normal by a quadric fitted to its neighbourhood. Where that spans several
-// refs (a fillet meeting a plane, tangent to it: the sides merge there), one quadric cannot follow
-// the jump in curvature; the fit over the points of one ref of the side's own facets is kept
-// instead when it explains them far better (kRefFitGain): on a plane, exactly.
 // The facet corners of each side, in compressed rows.
 struct SideCorners {
   std::vector<Index> offsets, corners;
@@ -165,6 +165,10 @@ SideCorners side_corners_of(const Mesh<D>& mesh, const VertexNormals<D>& normals
   return rows;
 }
 
+// Replaces each side's normal by a quadric fitted to its neighbourhood. Where that spans several
+// refs (a fillet meeting a plane, tangent to it: the sides merge there), one quadric cannot follow
+// the jump in curvature; the fit over the points of one ref of the side's own facets is kept
+// instead when it explains them better (kMergedRefFitGain, kSingleRefFitGain): on a plane, exactly.
 template <int D>
 void fit_quadric_normals(const Mesh<D>& mesh, const SurfaceTopology<D>& topology, VertexNormals<D>& normals) {
   const SideCorners rows = side_corners_of(mesh, normals);
@@ -185,12 +189,13 @@ void fit_quadric_normals(const Mesh<D>& mesh, const SurfaceTopology<D>& topology
       for (Index corner : side_corners) own_refs.push_back(mesh.facet_ref(corner / D));
       std::sort(own_refs.begin(), own_refs.end());
       own_refs.erase(std::unique(own_refs.begin(), own_refs.end()), own_refs.end());
+      const double gain = own_refs.size() == 1 ? kSingleRefFitGain : kMergedRefFitGain;
       const double union_residual = best.residual;
       for (int ref : own_refs) {
         neighbourhood_points(mesh, gathered, ref, vertices, points);
         QuadricNormal<D> fit = quadric_fitted_normal<D>(point, points, initial, kMaxFitTurn);
         if (std::isinf(fit.residual)) fit = plane_fitted_normal<D>(point, points, initial, kMaxFitTurn);
-        if (fit.residual < kRefFitGain * union_residual && fit.residual < best.residual) best = fit;
+        if (fit.residual < gain * union_residual && fit.residual < best.residual) best = fit;
       }
     }
     normals.normals[side] = best.normal;
