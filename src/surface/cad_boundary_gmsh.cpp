@@ -21,6 +21,10 @@ namespace {
 // they may lie from it.
 constexpr Index kRefSamples = 16;
 constexpr double kRefTolerance = 1e-3;
+// Newton steps from a point of a CAD curve onto the intersection of its two surfaces, and the
+// sine between their normals below which (nearly tangent surfaces) the curve's point stays.
+constexpr int kIntersectionSteps = 3;
+constexpr double kMinCrossingSine = 1e-3;
 
 template <int D>
 std::vector<double> gmsh_coordinates(const Vec<D>& x) {
@@ -39,6 +43,46 @@ BoundaryPoint<D> closest_on_entity(int dimension, int tag, const Vec<D>& x) {
 }
 
 std::string entity_name(int dimension) { return dimension == 2 ? "surface" : "curve"; }
+
+// The unit normal of the entity of dimension D − 1 at a point on it.
+template <int D>
+Vec<D> entity_normal(const BoundaryPoint<D>& on_entity) {
+  std::vector<double> parameters, values;
+  gmsh::model::getParametrization(D - 1, on_entity.patch, gmsh_coordinates(on_entity.point), parameters);
+  Vec<D> normal;
+  if constexpr (D == 3) {
+    gmsh::model::getNormal(on_entity.patch, parameters, values);
+    normal = Vec3{{values[0], values[1], values[2]}};
+  } else {
+    gmsh::model::getDerivative(1, on_entity.patch, parameters, values);
+    normal = Vec2{{values[1], -values[0]}};
+  }
+  return normal * (1 / norm(normal));
+}
+
+// From a point of the CAD curve that surfaces a and b share onto both surfaces. OpenCASCADE stores
+// the curve where two fillets meet as a B-spline within its tolerance of them (1.9e-8 on the
+// machined part with a thin wall, docs/surface.md): Newton on the two surfaces' equations (each
+// step to the point nearest x on both tangent planes) lands on their intersection to rounding.
+// Keeps the point closest to both surfaces.
+Vec3 onto_both_surfaces(const Vec3& on_curve, int surface_a, int surface_b) {
+  Vec3 x = on_curve, best = on_curve;
+  double best_gap = std::numeric_limits<double>::infinity();
+  for (int step = 0;; ++step) {
+    const BoundaryPoint<3> on_a = closest_on_entity<3>(2, surface_a, x), on_b = closest_on_entity<3>(2, surface_b, x);
+    const double gap = std::max(on_a.distance, on_b.distance);
+    if (gap < best_gap) {
+      best_gap = gap;
+      best = x;
+    }
+    if (step == kIntersectionSteps || gap == 0) return best;
+    const Vec3 normal_a = entity_normal(on_a), normal_b = entity_normal(on_b);
+    const double cosine = dot(normal_a, normal_b), sine2 = 1 - cosine * cosine;
+    if (!(sine2 > kMinCrossingSine * kMinCrossingSine)) return best;
+    const double offset_a = dot(normal_a, on_a.point - x), offset_b = dot(normal_b, on_b.point - x);
+    x += ((offset_a - cosine * offset_b) / sine2) * normal_a + ((offset_b - cosine * offset_a) / sine2) * normal_b;
+  }
+}
 
 }  // namespace
 
@@ -167,31 +211,21 @@ template <int D>
 Vec<D> CadBoundary<D>::normal(const Vec<D>& x, const ProjectionQuery& query) const {
   std::lock_guard lock(mutex_);
   const BoundaryPoint<D> on_entity = closest_unlocked(x, query);
-  Vec<D> normal;
-  call_gmsh([&] {
-    std::vector<double> parameters, values;
-    gmsh::model::getParametrization(D - 1, on_entity.patch, gmsh_coordinates(on_entity.point), parameters);
-    if constexpr (D == 3) {
-      gmsh::model::getNormal(on_entity.patch, parameters, values);
-      normal = Vec3{{values[0], values[1], values[2]}};
-    } else {
-      gmsh::model::getDerivative(1, on_entity.patch, parameters, values);
-      normal = Vec2{{values[1], -values[0]}};
-    }
-  });
-  return normal * (1 / norm(normal));
+  return call_gmsh([&] { return entity_normal<D>(on_entity); });
 }
 
 template <int D>
 Vec<D> CadBoundary<D>::project_on_intersection(const Vec<D>& x, int ref_a, int ref_b) const {
   if constexpr (D == 3) {
     std::unique_lock lock(mutex_);
-    auto curves_of = [this](int ref) {
+    auto piece_of = [this](int ref) {
       for (std::size_t p = 0; p < pieces_.size(); ++p)
-        if (pieces_[p].ref == ref) return curves_of_piece_[p];
+        if (pieces_[p].ref == ref) return p;
       throw Error("the CAD model has no surface for ref " + std::to_string(ref));
     };
-    const std::vector<int> curves_a = curves_of(ref_a), curves_b = curves_of(ref_b);
+    const std::size_t piece_a = piece_of(ref_a), piece_b = piece_of(ref_b);
+    const std::vector<int>& curves_a = curves_of_piece_[piece_a];
+    const std::vector<int>& curves_b = curves_of_piece_[piece_b];
     std::vector<int> shared;
     std::set_intersection(curves_a.begin(), curves_a.end(), curves_b.begin(), curves_b.end(), std::back_inserter(shared));
     if (!shared.empty()) {
@@ -201,7 +235,7 @@ Vec<D> CadBoundary<D>::project_on_intersection(const Vec<D>& x, int ref_a, int r
         const BoundaryPoint<3> found = call_gmsh([&] { return closest_on_entity<3>(1, curve, x); });
         if (found.distance < best.distance) best = found;
       }
-      return best.point;
+      return call_gmsh([&] { return onto_both_surfaces(best.point, pieces_[piece_a].tag, pieces_[piece_b].tag); });
     }
   }
   return BoundaryGeometry<D>::project_on_intersection(x, ref_a, ref_b);

@@ -4,6 +4,7 @@
 // Jacobian floor stopping a node where the thin wall leaves no room (docs/curving.md).
 #include "cases/machined_part.hpp"
 
+#include <gmsh.h>
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -129,6 +130,48 @@ TEST(MachinedPart, CurvedWithTheCadEveryBoundaryNodeOnItOrHeldByTheFloor) {
       curved_boundary_only += norm(mesh.edge_node(mesh.find_edge(a, b)) - 0.5 * (mesh.vertex(a) + mesh.vertex(b))) > 1e-6;
     }
   EXPECT_GT(curved_boundary_only, 100);
+}
+
+// With a 0.01 wall OpenCASCADE stores the curves where two floor fillets meet as B-splines 1.9e-8
+// from the fillets (more than 1e-9 of the model's size): the CAD's intersection goes on from the
+// curve onto both surfaces (docs/surface.md, CAD backend).
+TEST(MachinedPart, CadIntersectionOfTwoFilletsIsOnBothSurfaces) {
+  HOCAV_SKIP_WITHOUT_GMSH();
+  const std::string path = (std::filesystem::path(::testing::TempDir()) / "hocav_part_thin.step").string();
+  write_machined_part_cad({.size = 0.06, .wall = 0.01}, path);
+  const CadBoundary<3> cad(path);  // refs are the surface tags
+  std::filesystem::remove(path);
+  const double tolerance = 1e-9 * std::hypot(1.0, 0.6, 0.4);  // the block's diagonal
+  Index samples = 0, curve_points_off = 0;
+  gmsh::vectorpair curves;
+  gmsh::model::getEntities(curves, 1);
+  for (const auto& curve : curves) {
+    std::vector<int> surfaces, points;
+    gmsh::model::getAdjacencies(1, curve.second, surfaces, points);
+    std::string curve_type, type_a, type_b;
+    gmsh::model::getType(1, curve.second, curve_type);
+    if (surfaces.size() != 2 || curve_type != "BSpline") continue;
+    gmsh::model::getType(2, surfaces[0], type_a);
+    gmsh::model::getType(2, surfaces[1], type_b);
+    if (type_a != "Cylinder" || type_b != "Cylinder") continue;
+    std::vector<double> low, high, xyz;
+    gmsh::model::getParametrizationBounds(1, curve.second, low, high);
+    for (int k = 1; k < 8; ++k) {
+      gmsh::model::getValue(1, curve.second, {low[0] + (high[0] - low[0]) * k / 8}, xyz);
+      const Vec3 on_curve{{xyz[0], xyz[1], xyz[2]}};
+      const double curve_gap = std::max(cad.project(on_curve, {.ref = surfaces[0]}).distance,
+                                        cad.project(on_curve, {.ref = surfaces[1]}).distance);
+      curve_points_off += curve_gap > tolerance;
+      const Vec3 query = on_curve + Vec3{{1e-3, -2e-3, 1e-3}};
+      const Vec3 node = cad.project_on_intersection(query, surfaces[0], surfaces[1]);
+      EXPECT_LE(norm(node - query), norm(on_curve - query) + tolerance);  // the closest point of the curve
+      EXPECT_LT(cad.project(node, {.ref = surfaces[0]}).distance, tolerance);
+      EXPECT_LT(cad.project(node, {.ref = surfaces[1]}).distance, tolerance);
+      ++samples;
+    }
+  }
+  EXPECT_EQ(samples, 28);  // four fillet-fillet curves
+  EXPECT_GT(curve_points_off, 0);
 }
 
 // The largest distance from the CAD surfaces of the refs around each boundary edge (both, for a
