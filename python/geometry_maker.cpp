@@ -1,14 +1,13 @@
-// The boundary geometry that a `surface` option names, for adapt and curve: none and the P3
-// surrogate made here; a CAD model by hocav._gmsh, imported then (python/cad_geometry.hpp).
-#include "base/error.hpp"
+// The boundary geometry that a `surface` option names, for adapt and curve: the library's
+// make_boundary_geometry, given the CAD reader of hocav._gmsh when the surface is a CAD model
+// (imported then: python/cad_geometry.hpp).
 #include "binding.hpp"
 #include "cad_geometry.hpp"
-#include "surface/p3_surrogate.hpp"
 
 namespace hocav::python {
 namespace {
 
-// The makers of hocav._gmsh; imports it (loading gmsh) the first time.
+// The readers of hocav._gmsh; imports it (loading gmsh) the first time.
 const CadGeometryMakers& cad_geometry_makers() {
   const py::object capsule = py::module_::import("hocav._gmsh").attr("cad_geometry_makers");
   void* makers = PyCapsule_GetPointer(capsule.ptr(), kCadGeometryMakersName);  // checks the name
@@ -21,15 +20,8 @@ const CadGeometryMakers& cad_geometry_makers() {
 template <int D>
 GeometryMaker<D> geometry_maker(const std::string& surface) {
   const BoundaryChoice choice = boundary_choice_named(surface);
-  if (choice.kind == BoundaryKind::kCad) {
-    const MakeBoundaryGeometry<D> make = cad_geometry_makers().of<D>();
-    return [make, choice](const Mesh<D>& mesh) { return make(choice, mesh); };
-  }
-  const bool surrogate = choice.kind == BoundaryKind::kP3Surrogate;
-  return [surrogate](const Mesh<D>& mesh) -> std::unique_ptr<BoundaryGeometry<D>> {
-    if (!surrogate) return nullptr;
-    return std::make_unique<P3Surrogate<D>>(mesh);
-  };
+  const CadBoundaryMaker<D> make_cad = choice.kind == BoundaryKind::kCad ? cad_geometry_makers().of<D>() : nullptr;
+  return [choice, make_cad](const Mesh<D>& mesh) { return make_boundary_geometry<D>(choice, mesh, make_cad); };
 }
 
 template GeometryMaker<2> geometry_maker(const std::string&);

@@ -6,8 +6,8 @@
 
 PYBIND11_MODULE(_gmsh, module) {
   namespace py = pybind11;
-  using hocav::make_boundary_geometry;
-  static const hocav::python::CadGeometryMakers makers{&make_boundary_geometry<2>, &make_boundary_geometry<3>};
+  using hocav::make_cad_boundary;
+  static const hocav::python::CadGeometryMakers makers{&make_cad_boundary<2>, &make_cad_boundary<3>};
   module.doc() = "hocav's CAD boundaries, read through gmsh (imported when a surface names a CAD model)";
   module.attr("cad_geometry_makers") = py::capsule(&makers, hocav::python::kCadGeometryMakersName);
 }

@@ -21,9 +21,22 @@ struct BoundaryChoice {
 // "none", "p3" or "cad:FILE"; throws Error for anything else.
 BoundaryChoice boundary_choice_named(const std::string& name);
 
+// Reads a CAD model (a STEP or BREP file) as the geometry of `mesh`'s boundary, the mesh's facet
+// refs matched to its entities.
+template <int D>
+using CadBoundaryMaker = std::unique_ptr<BoundaryGeometry<D>> (*)(const std::string& cad_path, const Mesh<D>& mesh);
+
 // The geometry of `choice` for `mesh`: nullptr for none, the P3 surrogate of its boundary, or the
-// CAD model with the mesh's facet refs matched to its entities. Defined with the code that calls
-// gmsh (boundary_choice_gmsh.cpp): the CAD backend reads the model through it.
+// CAD model that `make_cad` reads (Error when it is null). The reader is a parameter because it
+// calls gmsh, which the library does not link: the Python module imports it only for a CAD model.
+template <int D>
+std::unique_ptr<BoundaryGeometry<D>> make_boundary_geometry(const BoundaryChoice& choice, const Mesh<D>& mesh,
+                                                            CadBoundaryMaker<D> make_cad);
+
+// The CAD reader of hocav_gmsh (CadBoundary, through gmsh), and make_boundary_geometry with it;
+// both defined with the code that calls gmsh (boundary_choice_gmsh.cpp).
+template <int D>
+std::unique_ptr<BoundaryGeometry<D>> make_cad_boundary(const std::string& cad_path, const Mesh<D>& mesh);
 template <int D>
 std::unique_ptr<BoundaryGeometry<D>> make_boundary_geometry(const BoundaryChoice& choice, const Mesh<D>& mesh);
 
