@@ -9,14 +9,15 @@ fuzz_seconds=${HOCAV_FUZZ_SECONDS:-60}
 
 bash scripts/setup.sh
 
-# ctest, then how many tests were skipped (a bare clone, without ../shared/data beside the
-# repository, skips the tests of third-party files): the count ctest lists at its end.
+# ctest, then how many tests were skipped and why (scripts/skipped_tests.py: ctest's skipped tests,
+# pytest's, and parts of tests; a bare clone, without ../shared/data beside the repository, skips
+# the tests of third-party files). Every test's output goes into the results, uncut.
 run_ctest() {
-  local log status=0
-  log=$(mktemp)
-  ctest "$@" | tee "$log" || status=$?
-  echo "skipped tests: $(grep -c '(Skipped)$' "$log" || true)"
-  rm -f "$log"
+  local results status=0
+  results=$(mktemp --suffix=.xml)
+  ctest "$@" --test-output-size-passed 1048576 --output-junit "$results" || status=$?
+  /usr/bin/python3 scripts/skipped_tests.py "$results"
+  rm -f "$results"
   return "$status"
 }
 
