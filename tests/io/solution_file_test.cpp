@@ -108,12 +108,11 @@ void expect_metric_of_mesh(const std::string& mesh_path, const std::string& sol_
 }
 
 TEST(SolutionFile, ReadsTheThirdPartyMetricsAsPositiveDefinite) {
-  const std::string data = testing_support::shared_data_path("");
-  if (auto missing = testing_support::missing_shared_data({data + "/mmg-torus/torus.mesh", data + "/ugawg-linear/linear.mesh"});
-      !missing.empty())
-    GTEST_SKIP() << missing;
-  expect_metric_of_mesh(data + "/mmg-torus/torus.mesh", data + "/mmg-torus/torus-met.sol", 4351, 32.5918);
-  expect_metric_of_mesh(data + "/ugawg-linear/linear.mesh", data + "/ugawg-linear/linear.sol", 9476, 99.999999999999986);
+  using testing_support::shared_data_path;
+  const std::string torus = shared_data_path("mmg-torus/torus.mesh"), linear = shared_data_path("ugawg-linear/linear.mesh");
+  if (auto missing = testing_support::missing_shared_data({torus, linear}); !missing.empty()) GTEST_SKIP() << missing;
+  expect_metric_of_mesh(torus, shared_data_path("mmg-torus/torus-met.sol"), 4351, 32.5918);
+  expect_metric_of_mesh(linear, shared_data_path("ugawg-linear/linear.sol"), 9476, 99.999999999999986);
 }
 
 // ---- checks of a metric against its mesh ----
