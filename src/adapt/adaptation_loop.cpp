@@ -41,19 +41,16 @@ auto timed(double& seconds, Step step) {
   return result;
 }
 
-// A swap sweep tries only what changed since the previous sweep began (everything in the first
-// pass): a swap refused once is retried only when its cavity has changed. `last_sweep` holds the
-// clock at the start of the latest sweep.
+// A swap sweep tries only what changed since the previous sweep began (AdaptationMesh::start_sweep;
+// everything in the first pass): a swap refused once is retried only when its cavity has changed.
 template <int D>
-AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits, int& last_sweep, ThreadPool& pool) {
+AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits, ThreadPool& pool) {
   AdaptationPass pass;
   am.start_pass();
   pass.collapses = timed(pass.seconds_collapse, [&] { return collapse_short_edges(am, limits, pool); });
-  const int first_swaps = am.tick();
-  pass.swaps = timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, last_sweep, pool); });
+  pass.swaps = timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, am.start_sweep(), pool); });
   pass.splits = timed(pass.seconds_split, [&] { return split_long_edges(am, limits, pool); });
-  last_sweep = am.tick();
-  pass.swaps += timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, first_swaps, pool); });
+  pass.swaps += timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, am.start_sweep(), pool); });
   pass.moves = timed(pass.seconds_smooth, [&] { return smooth_vertices(am, limits, pool); });
   timed(pass.seconds_compact, [&] { return am.mesh().compact(); });
   pass.vertices = am.mesh().vertex_count();
@@ -74,9 +71,8 @@ AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, 
   limits.hausd = settings.hausd;
   ThreadPool pool(std::max(1, settings.threads));
   AdaptationRun run;
-  int last_sweep = 0;
   for (int pass = 1; pass <= settings.max_passes && !run.converged; ++pass) {
-    run.passes.push_back(run_pass(am, limits, last_sweep, pool));
+    run.passes.push_back(run_pass(am, limits, pool));
     const AdaptationPass& last = run.passes.back();
     run.converged = changes(last) <= kConvergedChange * last.vertices;
     if (stalled(run.passes)) limits.collapse_new_length = limits.split_length;

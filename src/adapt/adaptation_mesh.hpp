@@ -70,6 +70,14 @@ class AdaptationMesh {
   }
   // Advances the clock (a sweep that later ones compare against); returns its new value.
   int tick() { return ++clock_; }
+  // Starts a swap sweep (docs/adaptation.md §The loop, the swap rule): returns the clock at the start
+  // of the previous sweep (0 before the first: everything changed then), so that the sweep counts
+  // every change since, whatever passes and operators came between; remembers this sweep's start.
+  int start_sweep() {
+    const int since = sweep_start_;
+    sweep_start_ = tick();
+    return since;
+  }
   // Commits a plan of the cavity operator and marks the vertices of its new elements changed.
   void commit(CavityOperator<D>& plan);
   // Marks a vertex changed (a move marks its ball's vertices).
@@ -98,7 +106,7 @@ class AdaptationMesh {
   const AdaptationMetric<D>& metric_;
   const BoundaryGeometry<D>* geometry_;
   int metric_attribute_, class_attribute_, hint_attribute_, stamp_attribute_, quality_attribute_, element_stamp_attribute_;
-  int clock_ = 0, pass_start_ = 0, previous_pass_start_ = 0;
+  int clock_ = 0, pass_start_ = 0, previous_pass_start_ = 0, sweep_start_ = 0;
   CavityWorkspace<D> work_;
 };
 
