@@ -21,6 +21,8 @@ constexpr double kConvergedChange = 2.5e-3;
 constexpr double kOpenCollapseLength = 2.0;
 constexpr double kStalledChange = 0.9;
 
+bool window_open(const AdaptationLimits& limits) { return limits.collapse_new_length > limits.split_length; }
+
 Index changes(const AdaptationPass& pass) { return pass.splits.done + pass.collapses.done; }
 
 bool stalled(const std::vector<AdaptationPass>& passes) {
@@ -73,11 +75,14 @@ AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, 
   AdaptationRun run;
   for (int pass = 1; pass <= settings.max_passes && !run.converged; ++pass) {
     run.passes.push_back(run_pass(am, limits, pool));
-    const AdaptationPass& last = run.passes.back();
+    AdaptationPass& last = run.passes.back();
+    last.window_open = window_open(limits);
+    last.collapse_length_bound = limits.collapse_new_length;
     run.converged = changes(last) <= kConvergedChange * last.vertices;
     if (stalled(run.passes)) limits.collapse_new_length = limits.split_length;
     if (settings.progress) settings.progress(pass, settings.max_passes);
   }
+  run.stopped_with_window_open = window_open(limits);
   mesh.compact();
   return run;
 }

@@ -30,11 +30,18 @@ struct AdaptationPass {
   double seconds = 0;
   // Per operator (collapse, swap, split, smoothing) and for the compaction.
   double seconds_collapse = 0, seconds_swap = 0, seconds_split = 0, seconds_smooth = 0, seconds_compact = 0;
+  // The loop's window (docs/adaptation.md §The loop) during the pass: open, a collapse may make
+  // edges up to collapse_length_bound (2); closed, up to √2.
+  bool window_open = false;
+  double collapse_length_bound = 0;
 };
 
 struct AdaptationRun {
   std::vector<AdaptationPass> passes;
   bool converged = false;  // stopped because a pass changed almost nothing, not at the cap
+  // The window never closed: the loop stopped before a pass stalled (a window closed after the last
+  // pass counts as closed).
+  bool stopped_with_window_open = false;
 };
 
 // Adapts `mesh` (P1, with its topology) to `metric`; new boundary vertices go on `geometry` (none:

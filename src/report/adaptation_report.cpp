@@ -41,6 +41,7 @@ void write_adaptation_report_json(std::ostream& out, const AdaptationReport& rep
   json.member("input_vertices", report.input_vertices).member("input_elements", report.input_elements);
   json.member("output_vertices", report.output_vertices).member("output_elements", report.output_elements);
   json.member("converged", report.run.converged);
+  json.member("stopped_with_window_open", report.run.stopped_with_window_open);
   json.key("passes").begin_array();
   for (const AdaptationPass& pass : report.run.passes) {
     json.begin_object();
@@ -52,6 +53,7 @@ void write_adaptation_report_json(std::ostream& out, const AdaptationReport& rep
     json.key("seconds_per_operator").begin_object();
     json.member("collapse", pass.seconds_collapse).member("swap", pass.seconds_swap).member("split", pass.seconds_split);
     json.member("smooth", pass.seconds_smooth).member("compact", pass.seconds_compact).end_object();
+    json.member("window_open", pass.window_open).member("collapse_length_bound", pass.collapse_length_bound);
     json.end_object();
   }
   json.end_array();
@@ -73,12 +75,12 @@ void write_adaptation_report_json(std::ostream& out, const AdaptationReport& rep
 }
 
 void write_adaptation_report_table(std::ostream& out, const AdaptationReport& report) {
-  out << "pass  collapses  splits   swaps   moves  vertices  elements  seconds\n";
+  out << "pass  collapses  splits   swaps   moves  vertices  elements  seconds  window\n";
   for (std::size_t i = 0; i < report.run.passes.size(); ++i) {
     const AdaptationPass& p = report.run.passes[i];
     char line[160];
-    std::snprintf(line, sizeof line, "%4zu %10d %7d %7d %7d %9d %9d %8.2f\n", i + 1, p.collapses.done, p.splits.done, p.swaps.done,
-                  p.moves.done, p.vertices, p.elements, p.seconds);
+    std::snprintf(line, sizeof line, "%4zu %10d %7d %7d %7d %9d %9d %8.2f  %s\n", i + 1, p.collapses.done, p.splits.done, p.swaps.done,
+                  p.moves.done, p.vertices, p.elements, p.seconds, p.window_open ? "open" : "closed");
     out << line;
   }
   char summary[320];

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "adapt/adaptation_mesh.hpp"
@@ -99,6 +100,33 @@ TEST(AdaptationLoop, CubeInTheLinearMetricBecomesUnit) {
       for (int i = 0; i < 3; ++i) on_sides += std::abs(mesh.vertex(v)[i]) < 1e-12 || std::abs(mesh.vertex(v)[i] - 1) < 1e-12;
       EXPECT_GE(on_sides, 2);
     }
+}
+
+// The loop's window (docs/adaptation.md §The loop) as the run reports it: open from the first pass,
+// collapses making edges up to 2; closed for good after a pass that stalled (past the busiest, more
+// than 0.9 × the changes of the one before), up to √2 then. A run capped before that stops with it open.
+TEST(AdaptationLoop, TheRunReportsItsWindowPassByPass) {
+  const Mesh<2> input = adapt_test::unit_mesh<2>(10);
+  const AdaptationMetric<2> metric = linear_metric<2>(0.01);
+  Mesh<2> mesh = input;
+  const AdaptationRun run = adapt_to_metric<2>(mesh, metric, nullptr, {});
+  const auto changes = [](const AdaptationPass& pass) { return static_cast<double>(pass.splits.done + pass.collapses.done); };
+  const auto closed = std::find_if(run.passes.begin(), run.passes.end(), [](const AdaptationPass& pass) { return !pass.window_open; });
+  ASSERT_NE(closed, run.passes.end()) << "the window never closed";
+  ASSERT_GE(closed - run.passes.begin(), 2);
+  EXPECT_GT(changes(closed[-1]), 0.9 * changes(closed[-2]));
+  for (auto pass = run.passes.begin(); pass != run.passes.end(); ++pass) {
+    EXPECT_EQ(pass->window_open, pass < closed) << "pass " << pass - run.passes.begin() + 1;
+    EXPECT_EQ(pass->collapse_length_bound, pass < closed ? 2 : std::sqrt(2.0)) << "pass " << pass - run.passes.begin() + 1;
+  }
+  EXPECT_FALSE(run.stopped_with_window_open);
+  Mesh<2> capped = input;
+  AdaptationSettings two_passes;
+  two_passes.max_passes = 2;
+  const AdaptationRun capped_run = adapt_to_metric<2>(capped, metric, nullptr, two_passes);
+  ASSERT_FALSE(capped_run.converged);
+  EXPECT_TRUE(capped_run.passes.back().window_open);
+  EXPECT_TRUE(capped_run.stopped_with_window_open);
 }
 
 // Threads change when work is done, never what is done: the same vertices, elements and facets.

@@ -3,6 +3,8 @@
 // the passes and the figures, any thread count gives the same file, and bad requests fail cleanly.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "cli_test_support.hpp"
 #include "gmsh_requirement.hpp"
 
@@ -23,6 +25,10 @@ TEST_F(AdaptCli, SquareInTheLinearMetricIsAdaptedThenCurved) {
   EXPECT_GT(report_value("len(d[\"passes\"])"), 1);
   EXPECT_GT(report_value("d[\"passes\"][0][\"splits\"][\"done\"]"), 0);
   EXPECT_EQ(json_value("report.json", "d[\"converged\"]"), "True");
+  // The loop's window: open in the first pass (collapses up to 2), closed by the last (up to √2).
+  EXPECT_EQ(json_value("report.json", "d[\"passes\"][0][\"window_open\"], d[\"passes\"][0][\"collapse_length_bound\"]"), "(True, 2)");
+  EXPECT_EQ(json_value("report.json", "d[\"passes\"][-1][\"window_open\"], d[\"stopped_with_window_open\"]"), "(False, False)");
+  EXPECT_NEAR(report_value("d[\"passes\"][-1][\"collapse_length_bound\"]"), std::sqrt(2.0), 1e-12);
   // The curving's Table-1 figures: every element certified above the default floor.
   EXPECT_GE(report_value("d[\"curving\"][\"normalized_jacobian\"][\"min\"]"), 0.01);
   EXPECT_EQ(stats_json("adapted.meshb", "d[\"consistency\"][\"consistent\"], d[\"order\"], d[\"counts\"][\"corners\"]"), "(True, 2, 4)");
