@@ -1,6 +1,7 @@
 // Feature lines (docs/surface.md, "Feature lines").
 #include "surface/feature_lines.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -47,18 +48,36 @@ std::vector<bool> listed_corners(const Mesh<D>& mesh) {
   return listed;
 }
 
+// n_A × n_B of a vertex's two sides at a ridge (zero where no ridge passes).
+Vec3 sides_tangent(const VertexNormals<3>& normals, const std::array<Index, 2>& sides) {
+  return sides[0] == kNoIndex ? Vec3{} : cross(normals.normals[sides[0]], normals.normals[sides[1]]);
+}
+
 // A listed corner's branches meeting at more than this from a straight continuation make a turn.
 const double kMaxTurn = 15 * std::numbers::pi / 180;
 
 // Whether a line passes through v: two feature edges, and not an input corner.
 bool passes_through(const FeatureLines<3>& lines, Index v) { return lines.neighbours[v].size() == 2 && !lines.input_corners[v]; }
 
+// A branch leaving within this of the sides' n_A × n_B follows it: the angle under which the
+// section fits merge sides, their accuracy.
+const double kOnNormalsTangent = 5 * std::numbers::pi / 180;
+
 // Whether the feature line turns at v: two branches whose tangents are more than kMaxTurn from
-// opposite (where more meet, each pair of sides has its own n_A × n_B).
-bool line_turns_at(const Mesh<3>& mesh, const FeatureLines<3>& lines, Index v) {
+// opposite (where more meet, each pair of sides has its own n_A × n_B), neither of them along the
+// tangent `across` of the sides' normals at a sharp ridge. Between two smooth sides the line is
+// smooth with that tangent, and a branch that leaves along it shows the sides are smooth there:
+// the other branch's one-sided circle then errs where the curvature varies (the ellipse a slanted
+// plane cuts from a rounded corner starts at its sharpest), not because the line kinks.
+bool line_turns_at(const Mesh<3>& mesh, const FeatureLines<3>& lines, Index v, const Vec3& across) {
   const auto& neighbours = lines.neighbours[v];
   if (neighbours.size() != 2) return false;
-  return dot(branch_tangent(mesh, lines, v, neighbours[0]), branch_tangent(mesh, lines, v, neighbours[1])) > -std::cos(kMaxTurn);
+  const Vec3 first = branch_tangent(mesh, lines, v, neighbours[0]), second = branch_tangent(mesh, lines, v, neighbours[1]);
+  if (dot(first, second) <= -std::cos(kMaxTurn)) return false;
+  if (!(norm(across) > kSharpRidgeSine)) return true;
+  const Vec3 line = unit_or_zero(across);
+  const double along = std::max(std::abs(dot(first, line)), std::abs(dot(second, line)));
+  return along < std::cos(kOnNormalsTangent);
 }
 
 }  // namespace
@@ -87,8 +106,7 @@ FeatureLines<D> find_feature_lines(const Mesh<D>& mesh, [[maybe_unused]] const S
       }
     for (Index v = 0; v < mesh.vertex_count(); ++v)
       if (passes_through(lines, v)) {
-        const Vec3 across = side_pair[v][0] == kNoIndex ? Vec3{}
-                                                        : cross(normals.normals[side_pair[v][0]], normals.normals[side_pair[v][1]]);
+        const Vec3 across = sides_tangent(normals, side_pair[v]);
         if (rule == LineTangents::kSharpFromNormals && norm(across) > kSharpRidgeSine) {
           lines.tangents[v] = unit_or_zero(across);
           continue;
@@ -97,7 +115,7 @@ FeatureLines<D> find_feature_lines(const Mesh<D>& mesh, [[maybe_unused]] const S
             circle_tangent(mesh.vertex(lines.neighbours[v][0]), mesh.vertex(v), mesh.vertex(lines.neighbours[v][1])));
       }
     for (Index v = 0; v < mesh.vertex_count(); ++v)
-      if (lines.input_corners[v]) lines.turns[v] = line_turns_at(mesh, lines, v);
+      if (lines.input_corners[v]) lines.turns[v] = line_turns_at(mesh, lines, v, sides_tangent(normals, side_pair[v]));
     for (Index f = 0; f < mesh.facet_count(); ++f)
       for (int i = 0; i < 3; ++i) {
         const Vec3& tangent = lines.tangents[mesh.facet(f)[i]];

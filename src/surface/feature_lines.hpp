@@ -15,7 +15,9 @@
 // The input's corners (Gamma `Corners` and `RequiredVertices`) end the lines through them: no
 // circle is drawn across such a vertex. Where the line turns there, or at a shallow ridge, each
 // ridge edge leaves it along its own branch (branch_tangent); where it goes on with one tangent
-// (a CAD point between a straight edge and a fillet's arc) a sharp ridge uses n_A × n_B.
+// (a CAD point between a straight edge and a fillet's arc), or where one branch leaves along the
+// sides' n_A × n_B (the other's one-sided circle misled by a varying curvature), a sharp ridge
+// uses n_A × n_B.
 #pragma once
 
 #include <vector>
@@ -41,8 +43,9 @@ struct FeatureLines {
   // Per vertex: listed in the input's Corners or RequiredVertices.
   std::vector<bool> input_corners;
   // Per vertex: an input corner on a single line that turns there (its two branches' tangents more
-  // than 15° from opposite). Where the line goes on with one tangent (a straight edge into an arc),
-  // n_A × n_B serves both branches; where more lines meet, each pair of sides has its own.
+  // than 15° from opposite, and at a sharp ridge neither within 5° of n_A × n_B). Where the line
+  // goes on with one tangent (a straight edge into an arc), n_A × n_B serves both branches; where
+  // more lines meet, each pair of sides has its own.
   std::vector<bool> turns;
 };
 
