@@ -10,7 +10,7 @@ namespace hocav {
 namespace {
 
 // A pass that splits and collapses fewer than this share of the vertices ends the loop (0.1% ran
-// one or two more passes for 0.03–0.3 points of unit share: docs/adaptation.md §The loop).
+// one or two more passes for 0.02–0.34 points of unit share: docs/adaptation.md §The loop).
 constexpr double kConvergedChange = 2.5e-3;
 
 // The loop's window (docs/adaptation.md §The loop): while it is open, a collapse may make edges up
