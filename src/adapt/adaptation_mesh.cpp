@@ -19,7 +19,7 @@ AdaptationMesh<D>::AdaptationMesh(Mesh<D>& mesh, const AdaptationMetric<D>& metr
   for (Index v = 0; v < mesh_.vertex_count(); ++v) {
     mesh_.vertex_attribute(class_attribute_, v)[0] = static_cast<double>(classes[v]);
     mesh_.vertex_attribute(hint_attribute_, v)[0] = kNoIndex;
-    evaluate_metric(v, v);
+    set_point_metric(v, metric_at_point(mesh_.vertex(v), v));
   }
   quality_attribute_ = mesh_.add_element_attribute(0);
   element_stamp_attribute_ = mesh_.add_element_attribute(0);  // every element changed at clock 0
@@ -48,30 +48,31 @@ void AdaptationMesh<D>::set_metric(Index v, const SymMat<D>& metric) {
 }
 
 template <int D>
-SymMat<D> AdaptationMesh<D>::metric_near(const Vec<D>& x, Index near) const {
-  auto hint = static_cast<Index>(mesh_.vertex_attribute(hint_attribute_, near)[0]);
-  return metric_.metric_at(x, hint);
+typename AdaptationMesh<D>::PointMetric AdaptationMesh<D>::metric_at_point(const Vec<D>& x, Index near) const {
+  PointMetric found;
+  found.hint = static_cast<Index>(mesh_.vertex_attribute(hint_attribute_, near)[0]);
+  found.metric = metric_.metric_at(x, found.hint);
+  return found;
 }
 
 template <int D>
-void AdaptationMesh<D>::evaluate_metric(Index v, Index near) {
-  auto hint = static_cast<Index>(mesh_.vertex_attribute(hint_attribute_, near)[0]);
-  set_metric(v, metric_.metric_at(mesh_.vertex(v), hint));
-  mesh_.vertex_attribute(hint_attribute_, v)[0] = hint;
+void AdaptationMesh<D>::set_point_metric(Index v, const PointMetric& metric) {
+  set_metric(v, metric.metric);
+  mesh_.vertex_attribute(hint_attribute_, v)[0] = metric.hint;
 }
 
 template <int D>
-Index AdaptationMesh<D>::add_vertex(const Vec<D>& x, VertexClass vertex_class, Index near) {
+Index AdaptationMesh<D>::add_vertex(const Vec<D>& x, VertexClass vertex_class, const PointMetric& metric) {
   const Index v = mesh_.add_vertex(x);
   mesh_.vertex_attribute(class_attribute_, v)[0] = static_cast<double>(vertex_class);
-  evaluate_metric(v, near);
+  set_point_metric(v, metric);
   return v;
 }
 
 template <int D>
 void AdaptationMesh<D>::move_vertex(Index v, const Vec<D>& x, std::span<const Index> ball) {
   mesh_.vertex(v) = x;
-  evaluate_metric(v, v);
+  set_point_metric(v, metric_at_point(x, v));
   update_qualities(ball);
 }
 

@@ -46,11 +46,19 @@ class AdaptationMesh {
     return m;
   }
   VertexClass vertex_class(Index v) const { return static_cast<VertexClass>(mesh_.vertex_attribute(class_attribute_, v)[0]); }
-  // A new vertex at x with the metric there (evaluated from near vertex `near`).
-  Index add_vertex(const Vec<D>& x, VertexClass vertex_class, Index near);
-  // The metric at x, found from vertex `near`'s back-mesh hint; changes nothing (move_vertex to x
-  // from near = v evaluates the same).
-  SymMat<D> metric_near(const Vec<D>& x, Index near) const;
+  // The metric at a point, with the back-mesh element that held it (a vertex there keeps it as its
+  // hint).
+  struct PointMetric {
+    SymMat<D> metric;
+    Index hint;
+  };
+  // The metric at x, found from vertex `near`'s back-mesh hint; changes nothing, so it may run on
+  // threads (move_vertex to x from near = v, or add_vertex at x near `near`, evaluates the same).
+  PointMetric metric_at_point(const Vec<D>& x, Index near) const;
+  SymMat<D> metric_near(const Vec<D>& x, Index near) const { return metric_at_point(x, near).metric; }
+  // A new vertex at x with the metric there (evaluated from near vertex `near`, or given).
+  Index add_vertex(const Vec<D>& x, VertexClass vertex_class, Index near) { return add_vertex(x, vertex_class, metric_at_point(x, near)); }
+  Index add_vertex(const Vec<D>& x, VertexClass vertex_class, const PointMetric& metric);
   // Moves v to x and evaluates its metric there; `ball` is v's ball, whose qualities follow.
   void move_vertex(Index v, const Vec<D>& x, std::span<const Index> ball);
   // Puts v back where it was, with the metric it had there (a refused move).
@@ -98,7 +106,7 @@ class AdaptationMesh {
 
  private:
   void set_metric(Index v, const SymMat<D>& metric);
-  void evaluate_metric(Index v, Index near);
+  void set_point_metric(Index v, const PointMetric& metric);
   // Renews the qualities of these elements and stamps them changed.
   void update_qualities(std::span<const Index> elements);
 

@@ -12,11 +12,45 @@ namespace {
 
 // The share of the long edges longer than 2 above which a pass splits only those.
 constexpr double kCoarsePhaseShare = 0.1;
+// With more than one thread, the candidates previewed at once (docs/adaptation.md §Threads): small
+// enough that few previews go stale before their turn, large enough to feed the threads.
+constexpr std::size_t kPreviewChunk = 64;
 
 template <int D>
-struct SplitScratch {
-  std::vector<Index> facets, lines, candidate_lines, shell;
+struct alignas(64) SplitScratch {  // a cache line of its own: each thread writes its own
+  std::vector<Index> candidate_lines;
   CollapseScratch<D> collapse;
+};
+
+// The surfaces a boundary edge's new point goes on: the refs of its first and last facets, and
+// whether a feature line runs along it (nothing inside the domain).
+struct EdgeSurfaces {
+  bool boundary = false, line = false;
+  int ref_a = 0, ref_b = 0;
+};
+
+// What splitting an edge needs, found by reading the mesh (docs/adaptation.md §Threads): its shell
+// (sorted, so that nothing depends on where the shell's walk began) and boundary pieces, where the
+// new vertex goes and the metric there and, inside the domain, its Delaunay cavity. Previews of a
+// chunk of candidates are made on the pool's threads at once; a split uses its preview while every
+// element the preview read still holds the same vertices (a new preview would then find the same),
+// and makes it again otherwise.
+template <int D>
+struct SplitPreview {
+  bool made = false;  // false when (a, b) was no edge
+  std::vector<Index> shell, facets, lines, cavity;
+  EdgeSurfaces surfaces;
+  Vec<D> point;
+  typename AdaptationMesh<D>::PointMetric metric;
+  std::vector<Index> read;  // the shell and every element the Delaunay growth tested
+  std::vector<typename Mesh<D>::Element> read_vertices;
+
+  bool current(const Mesh<D>& mesh) const {
+    if (!made) return false;
+    for (std::size_t i = 0; i < read.size(); ++i)
+      if (read[i] >= mesh.element_count() || mesh.element(read[i]) != read_vertices[i]) return false;
+    return true;
+  }
 };
 
 // After a split: the new vertex v onto its nearest neighbour, when their edge is short.
@@ -36,82 +70,102 @@ void snap_to_nearest(AdaptationMesh<D>& am, Index v, const AdaptationLimits& lim
   if (nearest != kNoIndex) collapse_edge(am, v, nearest, limits, s.collapse);
 }
 
-// The boundary pieces through edge (a, b): its facets and, in 3D, the feature line on it.
+// The boundary pieces through edge (a, b) (from its shell): its facets and, in 3D, the feature line
+// on it; and the surfaces they name.
 template <int D>
-void boundary_through_edge(AdaptationMesh<D>& am, Index a, Index b, SplitScratch<D>& s) {
+EdgeSurfaces boundary_through_edge(const AdaptationMesh<D>& am, Index a, Index b, SplitPreview<D>& p, SplitScratch<D>& s) {
   const Index ends[2] = {a, b};
-  facets_through(am.mesh(), am.workspace().cavity, ends, s.facets);
-  s.lines.clear();
+  facets_through(am.mesh(), p.shell, ends, p.facets);
+  p.lines.clear();
   if constexpr (D == 3)
-    if (!s.facets.empty() && am.vertex_class(a) >= VertexClass::kRidge && am.vertex_class(b) >= VertexClass::kRidge) {
+    if (!p.facets.empty() && am.vertex_class(a) >= VertexClass::kRidge && am.vertex_class(b) >= VertexClass::kRidge) {
       lines_through(am.mesh(), a, s.candidate_lines);
       for (Index l : s.candidate_lines)
-        if (am.mesh().line(l)[0] == b || am.mesh().line(l)[1] == b) s.lines.push_back(l);
+        if (am.mesh().line(l)[0] == b || am.mesh().line(l)[1] == b) p.lines.push_back(l);
     }
+  if (p.facets.empty()) return {};
+  return {true, !p.lines.empty(), am.mesh().facet_ref(p.facets.front()), am.mesh().facet_ref(p.facets.back())};
 }
 
 // Whether the boundary pieces through the edge hold a required edge or triangle (then the edge is
 // kept; both its ends are corners).
 template <int D>
-bool holds_required(const Mesh<D>& mesh, const SplitScratch<D>& s) {
+bool holds_required(const Mesh<D>& mesh, const SplitPreview<D>& p) {
   const auto listed = [](const std::vector<Index>& ids, Index id) { return std::find(ids.begin(), ids.end(), id) != ids.end(); };
   const std::vector<Index>& required_facets = D == 2 ? mesh.required_edges() : mesh.required_triangles();
-  return std::any_of(s.facets.begin(), s.facets.end(), [&](Index f) { return listed(required_facets, f); }) ||
-         std::any_of(s.lines.begin(), s.lines.end(), [&](Index l) { return listed(mesh.required_edges(), l); });
+  return std::any_of(p.facets.begin(), p.facets.end(), [&](Index f) { return listed(required_facets, f); }) ||
+         std::any_of(p.lines.begin(), p.lines.end(), [&](Index l) { return listed(mesh.required_edges(), l); });
 }
 
-// Where the new vertex of a boundary edge goes: on the feature curve its two surfaces share, or
-// on its surface (a ridge inside one surface: on its curve where the geometry has one); the
-// straight middle without a geometry.
+// Where the new vertex of an edge goes: inside the domain its middle; on the boundary, on the
+// feature curve its two surfaces share, or on its surface (a ridge inside one surface: on its curve
+// where the geometry has one); the straight middle without a geometry.
 template <int D>
-Vec<D> point_on_boundary(const AdaptationMesh<D>& am, const Vec<D>& middle, const SplitScratch<D>& s) {
+Vec<D> split_point(const AdaptationMesh<D>& am, const Vec<D>& middle, const EdgeSurfaces& surfaces) {
   const BoundaryGeometry<D>* geometry = am.geometry();
-  if (!geometry) return middle;
-  const int ref_a = am.mesh().facet_ref(s.facets.front()), ref_b = am.mesh().facet_ref(s.facets.back());
-  if (!s.lines.empty()) return geometry->project_on_ridge(middle, ref_a, ref_b);
-  return geometry->project(middle, {ref_a}).point;
+  if (!surfaces.boundary || !geometry) return middle;
+  if (surfaces.line) return geometry->project_on_ridge(middle, surfaces.ref_a, surfaces.ref_b);
+  return geometry->project(middle, {surfaces.ref_a}).point;
 }
 
-// Plans the star of the new vertex v: inside the domain on the Delaunay cavity of v in its metric
-// grown from the edge's shell (mmg's insertion: the new vertex joins vertices farther than the
-// shell's, so fewer short edges for the collapses to undo), else on the shell alone.
+// The preview of splitting edge (a, b) on the mesh as it is; reads the mesh only.
 template <int D>
-bool plan_split(AdaptationMesh<D>& am, Index v, bool inside, const CavityOptions& options, SplitScratch<D>& s) {
-  auto& work = am.workspace();
-  if (inside) {
-    s.shell.assign(work.cavity.begin(), work.cavity.end());
-    grow_delaunay_cavity(am.mesh(), work, am.mesh().vertex(v), am.metric(v));
-    if (work.cavity.size() > s.shell.size()) {
-      if (work.cavity_operator.plan(am.mesh(), work.cavity, v, options) == CavityStatus::kAccepted) return true;
-      work.cavity.assign(s.shell.begin(), s.shell.end());
-    }
-  }
-  return work.cavity_operator.plan(am.mesh(), work.cavity, v, options) == CavityStatus::kAccepted;
+void preview_split(const AdaptationMesh<D>& am, Index a, Index b, SplitPreview<D>& p, SplitScratch<D>& s) {
+  const Mesh<D>& mesh = am.mesh();
+  p.made = false;
+  if (mesh.vertex_removed(a) || mesh.vertex_removed(b)) return;
+  collect_shell(mesh, a, b, p.shell);
+  if (p.shell.empty()) return;
+  p.made = true;
+  std::sort(p.shell.begin(), p.shell.end());
+  p.surfaces = boundary_through_edge(am, a, b, p, s);
+  p.point = split_point(am, 0.5 * (mesh.vertex(a) + mesh.vertex(b)), p.surfaces);
+  p.metric = am.metric_at_point(p.point, a);
+  p.cavity.assign(p.shell.begin(), p.shell.end());
+  p.read.clear();
+  if (!p.surfaces.boundary) grow_delaunay_cavity(mesh, p.cavity, p.read, p.point, p.metric.metric);
+  p.read.insert(p.read.end(), p.cavity.begin(), p.cavity.end());
+  p.read_vertices.clear();
+  for (Index k : p.read) p.read_vertices.push_back(mesh.element(k));
 }
 
+// Plans the star of the new vertex v at the preview's point: inside the domain on its Delaunay
+// cavity of v in v's metric grown from the edge's shell (mmg's insertion: the new vertex joins
+// vertices farther than the shell's, so fewer short edges for the collapses to undo), else (or
+// when the operator refuses that star) on the shell alone.
 template <int D>
-Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const AdaptationLimits& limits, SplitScratch<D>& s) {
+bool plan_split(AdaptationMesh<D>& am, Index v, bool at_preview_point, const SplitPreview<D>& p, const CavityOptions& options) {
+  CavityOperator<D>& plan = am.workspace().cavity_operator;
+  if (at_preview_point && p.cavity.size() > p.shell.size() && plan.plan(am.mesh(), p.cavity, v, options) == CavityStatus::kAccepted)
+    return true;
+  return plan.plan(am.mesh(), p.shell, v, options) == CavityStatus::kAccepted;
+}
+
+// Splits edge (a, b) as its current preview `p` says.
+template <int D>
+Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const SplitPreview<D>& p, const AdaptationLimits& limits, SplitScratch<D>& s) {
   Mesh<D>& mesh = am.mesh();
   auto& work = am.workspace();
-  boundary_through_edge(am, a, b, s);
-  if (am.vertex_class(a) == VertexClass::kCorner && am.vertex_class(b) == VertexClass::kCorner && holds_required(mesh, s))
+  if (am.vertex_class(a) == VertexClass::kCorner && am.vertex_class(b) == VertexClass::kCorner && holds_required(mesh, p))
     return Refusal::kClasses;
   const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
-  const VertexClass new_class = s.facets.empty() ? VertexClass::kInterior : s.lines.empty() ? VertexClass::kSurface : VertexClass::kRidge;
-  const double old_worst = worst_quality<D>(am, work.cavity);
+  const VertexClass new_class = !p.surfaces.boundary ? VertexClass::kInterior
+                                : p.lines.empty()    ? VertexClass::kSurface
+                                                     : VertexClass::kRidge;
+  const double old_worst = worst_quality<D>(am, p.shell);
   CavityOptions options;
-  options.removed_facets = s.facets;
-  options.removed_lines = s.lines;
+  options.removed_facets = p.facets;
+  options.removed_lines = p.lines;
   // The point on the geometry first, then the straight middle (mmg bisects between the two).
-  const std::array<Vec<D>, 2> points{s.facets.empty() ? middle : point_on_boundary(am, middle, s), middle};
+  const std::array<Vec<D>, 2> points{p.point, middle};
   Refusal refusal = Refusal::kTopology;
   for (int attempt = 0; attempt < (points[0] == points[1] ? 1 : 2); ++attempt) {
-    const Index v = am.add_vertex(points[attempt], new_class, a);
-    if (!plan_split(am, v, s.facets.empty(), options, s))
+    const Index v = am.add_vertex(points[attempt], new_class, attempt == 0 ? p.metric : am.metric_at_point(middle, a));
+    if (!plan_split(am, v, attempt == 0, p, options))
       refusal = Refusal::kTopology;
     else if (!(worst_planned_quality(am, work.cavity_operator) >= std::min(1e-3, 0.1 * old_worst)))
       refusal = Refusal::kQuality;
-    else if (!s.facets.empty() && !boundary_change_acceptable(am, work.cavity_operator, limits.cos_feature_angle, 0))
+    else if (p.surfaces.boundary && !boundary_change_acceptable(am, work.cavity_operator, limits.cos_feature_angle, 0))
       refusal = Refusal::kGeometry;
     else {
       am.commit(work.cavity_operator);
@@ -136,11 +190,21 @@ OperationCount split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& l
   if (D == 3 && static_cast<double>(beyond_two - candidates.begin()) > kCoarsePhaseShare * static_cast<double>(candidates.size()))
     candidates.erase(beyond_two, candidates.end());
   OperationCount count;
-  SplitScratch<D> scratch;
-  for (const EdgeCandidate& c : candidates) {
-    collect_shell(am.mesh(), c.a, c.b, am.workspace().cavity);
-    if (am.workspace().cavity.empty() || am.edge_length(c.a, c.b) <= limits.split_length) continue;  // gone, or no longer long
-    count.add(split_edge(am, c.a, c.b, limits, scratch));
+  std::vector<SplitScratch<D>> scratch(static_cast<std::size_t>(pool.thread_count()));
+  std::vector<SplitPreview<D>> previews;
+  // One thread previews each candidate at its turn (never stale); more preview a chunk at once.
+  const std::size_t chunk_size = pool.thread_count() > 1 ? kPreviewChunk : 1;
+  for (std::size_t start = 0; start < candidates.size(); start += chunk_size) {
+    const std::span<const EdgeCandidate> chunk = std::span(candidates).subspan(start, std::min(chunk_size, candidates.size() - start));
+    previews.resize(chunk.size());
+    run_strided(pool, chunk.size(), 2,
+                [&](std::size_t worker, std::size_t i) { preview_split(am, chunk[i].a, chunk[i].b, previews[i], scratch[worker]); });
+    for (std::size_t i = 0; i < chunk.size(); ++i) {
+      const EdgeCandidate& c = chunk[i];
+      if (!previews[i].current(am.mesh())) preview_split(am, c.a, c.b, previews[i], scratch.front());
+      if (!previews[i].made || am.edge_length(c.a, c.b) <= limits.split_length) continue;  // gone, or no longer long
+      count.add(split_edge(am, c.a, c.b, previews[i], limits, scratch.front()));
+    }
   }
   return count;
 }

@@ -50,10 +50,9 @@ bool in_circumsphere(const Mesh<D>& mesh, Index k, const Vec<D>& x, const SymMat
 }  // namespace
 
 template <int D>
-void grow_delaunay_cavity(const Mesh<D>& mesh, CavityWorkspace<D>& work, const Vec<D>& x, const SymMat<D>& metric) {
+void grow_delaunay_cavity(const Mesh<D>& mesh, std::vector<Index>& cavity, std::vector<Index>& refused, const Vec<D>& x,
+                          const SymMat<D>& metric) {
   // An element refused once is not tested again from its other faces on the cavity.
-  std::vector<Index>& cavity = work.cavity;
-  std::vector<Index>& refused = work.refused;
   refused.clear();
   for (std::size_t next = 0; next < cavity.size(); ++next)
     for (int face = 0; face <= D; ++face) {
@@ -102,7 +101,7 @@ CavityStatus insert_vertex(Mesh<D>& mesh, CavityWorkspace<D>& work, const Vec<D>
     k = next;
   }
   work.cavity.assign(1, k);
-  grow_delaunay_cavity(mesh, work, x, metric);
+  grow_delaunay_cavity(mesh, work.cavity, work.refused, x, metric);
   Index vertex = mesh.add_vertex(x);
   CavityStatus status = plan_and_commit(mesh, work, vertex, options);
   if (status != CavityStatus::kAccepted)
@@ -112,11 +111,11 @@ CavityStatus insert_vertex(Mesh<D>& mesh, CavityWorkspace<D>& work, const Vec<D>
   return status;
 }
 
-#define HOCAV_INSTANTIATE(D)                                                                                 \
-  template void grow_delaunay_cavity(const Mesh<D>&, CavityWorkspace<D>&, const Vec<D>&, const SymMat<D>&);  \
-  template CavityStatus reinsert_vertex(Mesh<D>&, CavityWorkspace<D>&, Index, const CavityOptions&);         \
-  template CavityStatus collapse_edge(Mesh<D>&, CavityWorkspace<D>&, Index, Index, CavityOptions);           \
-  template CavityStatus swap_edge(Mesh<D>&, CavityWorkspace<D>&, Index, Index, Index, const CavityOptions&); \
+#define HOCAV_INSTANTIATE(D)                                                                                                     \
+  template void grow_delaunay_cavity(const Mesh<D>&, std::vector<Index>&, std::vector<Index>&, const Vec<D>&, const SymMat<D>&); \
+  template CavityStatus reinsert_vertex(Mesh<D>&, CavityWorkspace<D>&, Index, const CavityOptions&);                             \
+  template CavityStatus collapse_edge(Mesh<D>&, CavityWorkspace<D>&, Index, Index, CavityOptions);                               \
+  template CavityStatus swap_edge(Mesh<D>&, CavityWorkspace<D>&, Index, Index, Index, const CavityOptions&);                     \
   template CavityStatus insert_vertex(Mesh<D>&, CavityWorkspace<D>&, const Vec<D>&, Index, const SymMat<D>&, const CavityOptions&, Index*);
 HOCAV_INSTANTIATE(2)
 HOCAV_INSTANTIATE(3)

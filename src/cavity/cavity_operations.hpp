@@ -33,9 +33,11 @@ template <int D>
 CavityStatus swap_edge(Mesh<D>& mesh, CavityWorkspace<D>& work, Index a, Index b, Index apex, const CavityOptions& options);
 
 // Grows `cavity` (elements around x) by Bowyer–Watson in the constant metric `metric`: the
-// neighbours, through faces that carry no boundary facet, whose circumsphere in the metric contains x.
+// neighbours, through faces that carry no boundary facet, whose circumsphere in the metric contains
+// x. `refused` receives the neighbours tested and left out. Reads the mesh only.
 template <int D>
-void grow_delaunay_cavity(const Mesh<D>& mesh, CavityWorkspace<D>& work, const Vec<D>& x, const SymMat<D>& metric);
+void grow_delaunay_cavity(const Mesh<D>& mesh, std::vector<Index>& cavity, std::vector<Index>& refused, const Vec<D>& x,
+                          const SymMat<D>& metric);
 
 // Inserts a new vertex at x (found from `hint`, an element near x). The cavity holds the elements,
 // connected to the one containing x, whose circumsphere in the constant metric `metric` contains x
