@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "adapt/adaptation_mesh.hpp"
+#include "mesh/spatial_order.hpp"
 
 namespace hocav {
 namespace {
@@ -54,7 +55,13 @@ AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits, T
   pass.splits = timed(pass.seconds_split, [&] { return split_long_edges(am, limits, pool); });
   pass.swaps += timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, am.start_sweep(), pool); });
   pass.moves = timed(pass.seconds_smooth, [&] { return smooth_vertices(am, limits, pool); });
-  timed(pass.seconds_compact, [&] { return am.mesh().compact(); });
+  // Compacted, then in spatial order: the pass appended its new vertices and elements in its
+  // candidates' order, all over the domain (docs/mesh-model.md §Spatial order).
+  timed(pass.seconds_compact, [&] {
+    am.mesh().compact();
+    sort_spatially(am.mesh());
+    return 0;
+  });
   pass.vertices = am.mesh().vertex_count();
   pass.elements = am.mesh().element_count();
   pass.seconds = pass.seconds_collapse + pass.seconds_swap + pass.seconds_split + pass.seconds_smooth + pass.seconds_compact;

@@ -504,6 +504,67 @@ std::vector<Index> Mesh<D>::compact() {
   return vertex_id;
 }
 
+namespace {
+
+// Moves rows[i] to rows[new_id[i]] (a permutation).
+template <typename Row>
+void permute_rows(std::vector<Row>& rows, std::span<const Index> new_id) {
+  std::vector<Row> moved(rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) moved[static_cast<std::size_t>(new_id[i])] = rows[i];
+  rows = std::move(moved);
+}
+
+// The same for rows of `width` values each.
+void permute_wide_rows(std::vector<double>& rows, std::size_t width, std::span<const Index> new_id) {
+  std::vector<double> moved(rows.size());
+  for (std::size_t i = 0; i < new_id.size(); ++i)
+    std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>(i * width), width,
+                moved.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(new_id[i]) * width));
+  rows = std::move(moved);
+}
+
+// Renames every id of these records (kNoIndex stays).
+template <typename Records>
+void rename_ids(Records& records, std::span<const Index> new_id) {
+  for (auto& record : records)
+    for (Index& id : record)
+      if (id != kNoIndex) id = new_id[static_cast<std::size_t>(id)];
+}
+
+}  // namespace
+
+template <int D>
+void Mesh<D>::renumber(std::span<const Index> new_vertex_id, std::span<const Index> new_element_id) {
+  permute_rows(vertices_, new_vertex_id);
+  permute_rows(vertex_refs_, new_vertex_id);
+  for (std::size_t a = 0; a < attributes_.size(); ++a)
+    permute_wide_rows(attributes_[a], static_cast<std::size_t>(attribute_widths_[a]), new_vertex_id);
+  rename_ids(elements_, new_vertex_id);
+  rename_ids(facets_, new_vertex_id);
+  rename_ids(lines_, new_vertex_id);
+  rename_ids(edge_vertices_, new_vertex_id);
+  for (Line& ends : edge_vertices_)  // an edge record lists its smaller vertex first
+    if (ends[0] > ends[1]) std::swap(ends[0], ends[1]);
+  for (std::vector<Index>* tags : {&corners_, &required_vertices_})
+    for (Index& v : *tags) v = new_vertex_id[static_cast<std::size_t>(v)];
+
+  permute_rows(elements_, new_element_id);
+  permute_rows(element_refs_, new_element_id);
+  for (ElementAttribute& attribute : element_attributes_) permute_rows(attribute.values, new_element_id);
+  if (!element_edges_.empty()) permute_rows(element_edges_, new_element_id);
+  if (has_topology()) {
+    permute_rows(adjacency_, new_element_id);
+    rename_ids(adjacency_, new_element_id);
+    permute_rows(faces_with_facet_, new_element_id);
+    permute_rows(vertex_element_, new_vertex_id);
+    for (Index& k : vertex_element_)
+      if (k != kNoIndex) k = new_element_id[static_cast<std::size_t>(k)];
+    for (Index& face : facet_element_face_)
+      if (face != kNoIndex) face = new_element_id[static_cast<std::size_t>(face / (D + 1))] * (D + 1) + face % (D + 1);
+  }
+  rekey_after_renumbering();
+}
+
 template <int D>
 void Mesh<D>::rekey_after_renumbering() {
   if (!edge_vertices_.empty()) {

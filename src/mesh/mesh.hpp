@@ -180,6 +180,10 @@ class Mesh {
   // always compact); attributes, tags, topology and the edge table follow. Returns each old vertex's
   // new id (kNoIndex for a removed one).
   std::vector<Index> compact();
+  // Renumbers the vertices and elements of a compact mesh: vertex v becomes new_vertex_id[v] and
+  // element k new_element_id[k] (both permutations); attributes, tags, facets, lines, the edge table
+  // and the topology follow (docs/mesh-model.md §Spatial order).
+  void renumber(std::span<const Index> new_vertex_id, std::span<const Index> new_element_id);
   // Renumbers the edges alone so their ids are 0..edge_count()-1 again (a curving run, which
   // removes no vertex, needs no more).
   void compact_edges();
