@@ -53,6 +53,7 @@ AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits, T
   pass.collapses = timed(pass.seconds_collapse, [&] { return collapse_short_edges(am, limits, pool); });
   pass.swaps = timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, am.start_sweep(), pool); });
   pass.splits = timed(pass.seconds_split, [&] { return split_long_edges(am, limits, pool); });
+  pass.splits += timed(pass.seconds_split, [&] { return cut_boundary_only_elements(am, limits); });
   pass.swaps += timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, am.start_sweep(), pool); });
   pass.moves = timed(pass.seconds_smooth, [&] { return smooth_vertices(am, limits, pool); });
   // Compacted, then in spatial order: the pass appended its new vertices and elements in its

@@ -64,6 +64,13 @@ struct OperationCount {
 template <int D>
 OperationCount split_long_edges(AdaptationMesh<D>& mesh, const AdaptationLimits& limits, ThreadPool& pool);
 
+// Cuts the poor elements whose vertices all lie on the boundary, worst first, by splitting their
+// longest inner edge (no boundary facet through it) at its middle, without snapping. Swaps keep
+// boundary edges and faces and smoothing keeps surface vertices on their surface, so nothing else
+// mends such an element (mmg splits them too).
+template <int D>
+OperationCount cut_boundary_only_elements(AdaptationMesh<D>& mesh, const AdaptationLimits& limits);
+
 // Collapses edges shorter than collapse_length, shortest first, one end onto the other when the
 // classes allow it and no new edge is longer than collapse_new_length. The tests before each plan
 // run on the pool's threads (the result does not depend on the thread count).

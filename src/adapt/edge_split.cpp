@@ -2,6 +2,7 @@
 // middle; on a boundary edge the facets (and the 3D feature line) through it are re-starred too and
 // the new vertex goes on the geometry, or on the straight middle if the geometry's point is refused.
 #include <algorithm>
+#include <tuple>
 
 #include "adapt/adaptation_operations.hpp"
 #include "adapt/boundary_pieces.hpp"
@@ -15,6 +16,10 @@ constexpr double kCoarsePhaseShare = 0.1;
 // With more than one thread, the candidates previewed at once (docs/adaptation.md §Threads): small
 // enough that few previews go stale before their turn, large enough to feed the threads.
 constexpr std::size_t kPreviewChunk = 64;
+// Boundary-only elements below this quality are cut (cut_boundary_only_elements), when the cut
+// raises the worst quality of its cavity by this factor.
+constexpr double kBoundaryOnlyQuality = 0.2;
+constexpr double kCutGain = 1.05;
 
 template <int D>
 struct alignas(64) SplitScratch {  // a cache line of its own: each thread writes its own
@@ -141,9 +146,22 @@ bool plan_split(AdaptationMesh<D>& am, Index v, bool at_preview_point, const Spl
   return plan.plan(am.mesh(), p.shell, v, options) == CavityStatus::kAccepted;
 }
 
+// Why an edge is split: it is long (then a new element may be as poor as refine's floor, and the
+// new vertex is snapped), or it cuts a poor boundary-only element (then the split must raise the
+// worst quality of its cavity, and the new vertex stays).
+enum class SplitPurpose { kLength, kCut };
+
+// The quality every element a split makes must reach.
+template <int D>
+double split_quality_floor(const AdaptationMesh<D>& am, const SplitPreview<D>& p, const CavityOperator<D>& plan, SplitPurpose purpose) {
+  if (purpose == SplitPurpose::kLength) return std::min(1e-3, 0.1 * worst_quality<D>(am, p.shell));
+  return kCutGain * worst_quality<D>(am, plan.cavity());
+}
+
 // Splits edge (a, b) as its current preview `p` says.
 template <int D>
-Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const SplitPreview<D>& p, const AdaptationLimits& limits, SplitScratch<D>& s) {
+Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const SplitPreview<D>& p, const AdaptationLimits& limits, SplitPurpose purpose,
+                   SplitScratch<D>& s) {
   Mesh<D>& mesh = am.mesh();
   auto& work = am.workspace();
   if (am.vertex_class(a) == VertexClass::kCorner && am.vertex_class(b) == VertexClass::kCorner && holds_required(mesh, p))
@@ -152,7 +170,6 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const SplitPreview<D
   const VertexClass new_class = !p.surfaces.boundary ? VertexClass::kInterior
                                 : p.lines.empty()    ? VertexClass::kSurface
                                                      : VertexClass::kRidge;
-  const double old_worst = worst_quality<D>(am, p.shell);
   CavityOptions options;
   options.removed_facets = p.facets;
   options.removed_lines = p.lines;
@@ -163,13 +180,13 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const SplitPreview<D
     const Index v = am.add_vertex(points[attempt], new_class, attempt == 0 ? p.metric : am.metric_at_point(middle, a));
     if (!plan_split(am, v, attempt == 0, p, options))
       refusal = Refusal::kTopology;
-    else if (!(worst_planned_quality(am, work.cavity_operator) >= std::min(1e-3, 0.1 * old_worst)))
+    else if (!(worst_planned_quality(am, work.cavity_operator) >= split_quality_floor(am, p, work.cavity_operator, purpose)))
       refusal = Refusal::kQuality;
     else if (p.surfaces.boundary && !boundary_change_acceptable(am, work.cavity_operator, limits.cos_feature_angle, 0))
       refusal = Refusal::kGeometry;
     else {
       am.commit(work.cavity_operator);
-      snap_to_nearest(am, v, limits, s);
+      if (purpose == SplitPurpose::kLength) snap_to_nearest(am, v, limits, s);
       return Refusal::kNone;
     }
     mesh.pop_vertex();
@@ -203,12 +220,77 @@ OperationCount split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& l
       const EdgeCandidate& c = chunk[i];
       if (!previews[i].current(am.mesh())) preview_split(am, c.a, c.b, previews[i], scratch.front());
       if (!previews[i].made || am.edge_length(c.a, c.b) <= limits.split_length) continue;  // gone, or no longer long
-      count.add(split_edge(am, c.a, c.b, previews[i], limits, scratch.front()));
+      count.add(split_edge(am, c.a, c.b, previews[i], limits, SplitPurpose::kLength, scratch.front()));
     }
   }
   return count;
 }
 
+namespace {
+
+// An element by its vertices, with its quality when listed.
+template <int D>
+struct ListedElement {
+  double quality;
+  typename Mesh<D>::Element vertices;
+  bool operator<(const ListedElement& other) const { return std::tie(quality, vertices) < std::tie(other.quality, other.vertices); }
+};
+
+// The elements below kBoundaryOnlyQuality whose vertices all lie on the boundary, worst first.
+template <int D>
+std::vector<ListedElement<D>> poor_boundary_only_elements(const AdaptationMesh<D>& am) {
+  std::vector<ListedElement<D>> listed;
+  for (Index k = 0; k < am.mesh().element_count(); ++k) {
+    const auto& e = am.mesh().element(k);
+    if (am.quality(k) < kBoundaryOnlyQuality &&
+        std::none_of(e.begin(), e.end(), [&](Index v) { return am.vertex_class(v) == VertexClass::kInterior; }))
+      listed.push_back({am.quality(k), e});
+  }
+  std::sort(listed.begin(), listed.end());
+  return listed;
+}
+
+// Whether the shell of the preview still holds an element with these vertices.
+template <int D>
+bool shell_holds(const Mesh<D>& mesh, const SplitPreview<D>& p, const typename Mesh<D>::Element& vertices) {
+  auto sorted = vertices;
+  std::sort(sorted.begin(), sorted.end());
+  return std::any_of(p.shell.begin(), p.shell.end(), [&](Index k) {
+    auto element = mesh.element(k);
+    std::sort(element.begin(), element.end());
+    return element == sorted;
+  });
+}
+
+}  // namespace
+
+template <int D>
+OperationCount cut_boundary_only_elements(AdaptationMesh<D>& am, const AdaptationLimits& limits) {
+  OperationCount count;
+  SplitScratch<D> scratch;
+  SplitPreview<D> preview;
+  std::vector<std::pair<double, std::array<Index, 2>>> edges;
+  for (const ListedElement<D>& element : poor_boundary_only_elements(am)) {
+    edges.clear();
+    for (int i = 0; i <= D; ++i)
+      for (int j = 0; j < i; ++j) {
+        const Index a = element.vertices[i], b = element.vertices[j];
+        edges.push_back({-am.edge_length(a, b), {std::min(a, b), std::max(a, b)}});
+      }
+    std::sort(edges.begin(), edges.end());  // longest first
+    for (const auto& [minus_length, edge] : edges) {
+      preview_split(am, edge[0], edge[1], preview, scratch);
+      if (!preview.made || preview.surfaces.boundary || !shell_holds(am.mesh(), preview, element.vertices)) continue;
+      const Refusal outcome = split_edge(am, edge[0], edge[1], preview, limits, SplitPurpose::kCut, scratch);
+      count.add(outcome);
+      if (outcome == Refusal::kNone) break;
+    }
+  }
+  return count;
+}
+
+template OperationCount cut_boundary_only_elements(AdaptationMesh<2>&, const AdaptationLimits&);
+template OperationCount cut_boundary_only_elements(AdaptationMesh<3>&, const AdaptationLimits&);
 template OperationCount split_long_edges(AdaptationMesh<2>&, const AdaptationLimits&, ThreadPool&);
 template OperationCount split_long_edges(AdaptationMesh<3>&, const AdaptationLimits&, ThreadPool&);
 
