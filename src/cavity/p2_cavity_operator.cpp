@@ -61,11 +61,13 @@ P2CavityOperator<D>::P2CavityOperator(const MetricField<D>& field, std::vector<S
       options_(options) {}
 
 template <int D>
-CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const Index> cavity, Index vertex) {
+CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const Index> cavity, Index vertex,
+                                          const P2CavityRequest<D>& request) {
   ++counters_.cavities;
   auto start = Clock::now();
   CavityOptions topology_only;
   topology_only.check_straight_measure = false;
+  topology_only.removable_vertex = request.removable_vertex;
   CavityStatus status = p1_.plan(mesh, cavity, vertex, topology_only);
   counters_.seconds_plan += seconds_since(start);
   if (status != CavityStatus::kAccepted) {
@@ -75,7 +77,7 @@ CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const I
 
   start = Clock::now();
   curved_.clear();
-  curve_inner_edges(mesh);
+  curve_inner_edges(mesh, request.start_nodes);
   take_boundary_proposals(mesh);
   counters_.seconds_optimize += seconds_since(start);
 
@@ -87,7 +89,8 @@ CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const I
   // identical to a cavity element, which was above the floor.
   bool valid = true;
   certified_already_.assign(candidates_.size(), false);
-  if (options_.every_element_above_floor) {
+  // Given start nodes differ from the cavity's old nodes (or its vertex moved): nothing is recreated.
+  if (options_.every_element_above_floor && request.start_nodes.empty()) {
     collect_cavity_vertex_sets(mesh);
     for (std::size_t i = 0; i < candidates_.size(); ++i)
       if (candidates_[i].mesh_element == kNoIndex && recreates_cavity_element(candidates_[i])) {
@@ -135,24 +138,28 @@ void P2CavityOperator<D>::commit(Mesh<D>& mesh) {
 }
 
 template <int D>
-void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh) {
+void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh, std::span<const EdgeStart<D>> start_nodes) {
   const auto edges = p1_.new_inner_edges();
-  const auto starts = p1_.new_inner_edge_start_nodes();
+  const auto default_starts = p1_.new_inner_edge_start_nodes();
   const auto recreated_ids = p1_.new_inner_edge_recreated_ids();
   EdgeEndpoint<D> end_a;  // the new edges share their first vertex (the cavity's): its metric once
   Index end_a_vertex = kNoIndex;
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const auto [a, b] = edges[i];
-    if (optimized_edges_ && recreated_ids[i] != kNoIndex && optimized_edges_->marked(recreated_ids[i])) {
+    const auto given = std::find_if(start_nodes.begin(), start_nodes.end(),
+                                    [&](const EdgeStart<D>& s) { return Mesh<D>::edge_key(s.a, s.b) == Mesh<D>::edge_key(a, b); });
+    const Vec<D> start = given != start_nodes.end() ? given->node : default_starts[i];
+    if (given == start_nodes.end() && optimized_edges_ && recreated_ids[i] != kNoIndex && optimized_edges_->marked(recreated_ids[i])) {
       ++counters_.edges_kept_optimal;
-      curved_.push_back({a, b, starts[i], starts[i], 1, true, static_cast<Index>(i), true});
+      curved_.push_back({a, b, start, start, 1, true, static_cast<Index>(i), true});
       continue;
     }
     if (a != end_a_vertex) {
       end_a = edge_endpoint(mesh.vertex(a), vertex_log_metrics_[a]);
       end_a_vertex = a;
     }
-    auto result = optimize_edge_length(field_, end_a, edge_endpoint(mesh.vertex(b), vertex_log_metrics_[b]), starts[i], vertex_hints_[a],
+    const Index start_hint = vertex_hints_[a];
+    auto result = optimize_edge_length(field_, end_a, edge_endpoint(mesh.vertex(b), vertex_log_metrics_[b]), start, start_hint,
                                        options_.optimizer, locator_scratch_);
     ++counters_.edges_optimized;
     counters_.optimizer_iterations += result.iterations;
@@ -160,7 +167,7 @@ void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh) {
     // The optimizer's unconverged exits leave no optimum to keep: the iteration limit, and a
     // non-finite Newton model (it returns before measuring a length).
     const bool converged = result.iterations < options_.optimizer.max_iterations && result.length > 0;
-    curved_.push_back({a, b, starts[i], result.node, 1, true, static_cast<Index>(i), converged});
+    curved_.push_back({a, b, start, result.node, 1, true, static_cast<Index>(i), converged, start_hint});
   }
 }
 

@@ -9,8 +9,9 @@
 //     changed edges (fallback → target) by the largest factor, found by bisection, that certifies
 //     it — inner edges first, boundary edges only if that is not enough; reject the cavity (mesh
 //     untouched) only when no factor works. The fallback is the node the edge had before (a
-//     reinsertion recreates its edges) or the straight midpoint for a new edge, so a reinsertion
-//     can always fall back to the configuration that was already certified;
+//     reinsertion recreates its edges), the straight midpoint for a new edge, or the start node the
+//     operation gives (P2CavityRequest: a split's subdivision, a moved vertex's shifted nodes), so
+//     a reinsertion can always fall back to the configuration that was already certified;
 //  4. commit.
 // Work whose result is known is not redone (a reinsertion recreates the cavity it removes): a
 // recreated inner edge marked as being at its optimum keeps its node, and, when the caller vouches
@@ -44,6 +45,22 @@ struct P2CavityOptions {
   bool every_element_above_floor = false;
 };
 
+// A new inner edge whose curving starts, and falls back, at a given node instead of the node it had
+// (a recreated edge) or the straight midpoint: a split's pieces of the split edge, the edges of a
+// moved vertex. Such an edge is always optimized (its old optimum mark no longer holds).
+template <int D>
+struct EdgeStart {
+  Index a, b;  // either order
+  Vec<D> node;
+};
+
+// What one cavity operation asks of the P2 operator besides its cavity and vertex.
+template <int D>
+struct P2CavityRequest {
+  Index removable_vertex = kNoIndex;  // the one vertex that may disappear (a collapse), or kNoIndex
+  std::span<const EdgeStart<D>> start_nodes{};
+};
+
 struct P2CavityCounters {
   long long cavities = 0, accepted = 0;
   long long rejected_topology = 0, rejected_curving = 0;
@@ -70,29 +87,33 @@ class P2CavityOperator {
 
   // Replaces `cavity` by the star of its boundary from `vertex`, curved and certified. The mesh
   // must be P2 with its topology; it is unchanged unless the result is kAccepted.
-  CavityStatus apply(Mesh<D>& mesh, std::span<const Index> cavity, Index vertex) {
-    CavityStatus status = prepare(mesh, cavity, vertex);
+  CavityStatus apply(Mesh<D>& mesh, std::span<const Index> cavity, Index vertex, const P2CavityRequest<D>& request = {}) {
+    CavityStatus status = prepare(mesh, cavity, vertex, request);
     if (status == CavityStatus::kAccepted) commit(mesh);
     return status;
   }
   // The two halves of apply: prepare reads the mesh only (plan, curve, certify, correct), so
   // cavities that share no vertex can be prepared at once on threads; commit writes the prepared
   // cavity (only after an accepted prepare, on the mesh it was prepared on).
-  CavityStatus prepare(const Mesh<D>& mesh, std::span<const Index> cavity, Index vertex);
+  CavityStatus prepare(const Mesh<D>& mesh, std::span<const Index> cavity, Index vertex, const P2CavityRequest<D>& request = {});
   void commit(Mesh<D>& mesh);
 
   const P2CavityCounters& counters() const { return counters_; }
 
- private:
+  // The edges the last prepare curved (valid until the next prepare), for checks of the result.
   struct CurvedEdge {
     Index a, b;
     Vec<D> fallback, target;
-    double scale = 1;  // node = fallback + scale · (target − fallback)
-    bool inner;        // a new inner edge (else a boundary edge taking a proposal)
-    Index id;          // index in the plan's inner edges, or the mesh edge id
-    bool optimal;      // target is the edge's converged optimum
+    double scale = 1;             // node = fallback + scale · (target − fallback)
+    bool inner;                   // a new inner edge (else a boundary edge taking a proposal)
+    Index id;                     // index in the plan's inner edges, or the mesh edge id
+    bool optimal;                 // target is the edge's converged optimum
+    Index start_hint = kNoIndex;  // the back element its optimization started from (it depends on it)
     Vec<D> node() const { return fallback + scale * (target - fallback); }
   };
+  std::span<const CurvedEdge> curved_edges() const { return curved_; }
+
+ private:
   // An element to certify: a new one (its vertices) or one outside the cavity (its mesh id), with
   // the nodes of its unchanged edges looked up once and, per edge, its entry in curved_ (or −1).
   struct Candidate {
@@ -102,7 +123,7 @@ class P2CavityOperator {
     std::array<int, Simplex<D>::kEdges> curved;
   };
 
-  void curve_inner_edges(const Mesh<D>& mesh);
+  void curve_inner_edges(const Mesh<D>& mesh, std::span<const EdgeStart<D>> start_nodes);
   void take_boundary_proposals(const Mesh<D>& mesh);
   void collect_candidates(const Mesh<D>& mesh);
   // The cavity's elements as (sorted vertices, parity of the sort), sorted: to find the one a new

@@ -1,0 +1,67 @@
+// The adaptation's four operations as P2 cavity operations (docs/curving.md §Curved operations): on a
+// P2 mesh with its metric, each one is a cavity of the P2 operator (p2_cavity_operator.hpp), so
+// its new inner edges are curved by the length optimizer, every element it creates is certified
+// above the Jacobian floor (corrected toward the fallback nodes if needed), and a refusal leaves
+// the mesh as it was, byte for byte.
+//   split     edge (a, b): a new vertex at the edge's P2 node, the shell re-starred from it
+//   collapse  edge (removed, kept): the ball of `removed` re-starred from `kept`
+//   swap      edge (a, b): its shell re-starred from an apex (a 2D flip when the shell is two triangles)
+//   move      vertex v to x: its ball re-starred from it
+// Interior operations only: an edge or vertex on a boundary face is refused (kCrossesBoundary);
+// boundary splits and collapses on a P2 mesh are not built yet. The decision figures are curved
+// too: `edge_length` is the Riemannian length of the curved edge, `quality` the curved mean ratio.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "cavity/p2_cavity_operator.hpp"
+
+namespace hocav {
+
+template <int D>
+class P2Operations {
+ public:
+  // `mesh`: P2 with its topology; `field`: the metric on its back mesh (both outlive this object).
+  // Each vertex's log-metric is evaluated in the field; new vertices get theirs on creation.
+  // `boundary` (may be null) proposes boundary nodes for the cavities' boundary edges.
+  P2Operations(Mesh<D>& mesh, const MetricField<D>& field, BoundaryNodeSource<D>* boundary, P2CavityOptions options);
+
+  // Each returns the P2 operator's verdict; on anything but kAccepted the mesh is unchanged.
+  CavityStatus split_edge(Index a, Index b, Index* inserted = nullptr);
+  CavityStatus collapse_edge(Index removed, Index kept);
+  CavityStatus swap_edge(Index a, Index b, Index apex);
+  CavityStatus move_vertex(Index v, const Vec<D>& x);
+
+  // The Riemannian length of the curved edge (a, b) (high-precision quadrature of the length the
+  // optimizer minimizes), and the curved mean ratio of element k (src/curve/curved_quality.hpp).
+  double edge_length(Index a, Index b) const;
+  double quality(Index k) const;
+
+  const SymMat<D>& log_metric(Index v) const { return log_metrics_[static_cast<std::size_t>(v)]; }
+  const P2CavityOperator<D>& cavity_operator() const { return operator_; }
+
+ private:
+  // Whether a face of `elements` holding every vertex of `vertices` is on the boundary (a facet,
+  // or no neighbour).
+  bool on_boundary(std::span<const Index> elements, std::span<const Index> vertices) const;
+  // Adds vertex x with its log-metric and back hint (found from vertex `near`'s).
+  Index add_vertex(const Vec<D>& x, Index near);
+  void remove_last_vertex();
+  // Start nodes of the edges (center, w) of a vertex moved from `from` to its place now: each old
+  // node of (from_vertex, w) shifted by half the move, so the edge keeps its bend.
+  void shifted_starts(Index from_vertex, const Vec<D>& from, Index center);
+
+  Mesh<D>& mesh_;
+  const MetricField<D>& field_;
+  std::vector<SymMat<D>> log_metrics_;
+  std::vector<Index> hints_;
+  P2CavityOperator<D> operator_;
+  std::vector<Index> cavity_, neighbors_;
+  std::vector<EdgeStart<D>> starts_;
+};
+
+extern template class P2Operations<2>;
+extern template class P2Operations<3>;
+
+}  // namespace hocav
