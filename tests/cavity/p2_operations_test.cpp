@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <map>
+#include <optional>
 #include <random>
 
 #include "adapt/reinsertion_curving.hpp"
@@ -283,6 +285,61 @@ void expect_split_fallback_is_the_old_geometry(int cells) {
 
 TEST(P2Operations, TriangleSplitsFallBackOnTheExactSubdivision) { expect_split_fallback_is_the_old_geometry<2>(8); }
 TEST(P2Operations, TetrahedralSplitsFallBackOnTheExactSubdivision) { expect_split_fallback_is_the_old_geometry<3>(4); }
+
+// Boundary nodes proposed by a "geometry" that bulges each boundary edge outward by 2% of its
+// length; a proposal applied in full is consumed and remembered.
+template <int D>
+class BulgingBoundary : public BoundaryNodeSource<D> {
+ public:
+  explicit BulgingBoundary(const Mesh<D>& mesh) {
+    Vec<D> center;
+    for (int i = 0; i < D; ++i) center[i] = 0.5;
+    for (const auto& facet : mesh.facets())
+      for (int i = 0; i < D; ++i) {
+        const Index a = facet[i], b = facet[(i + 1) % D];
+        const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
+        const Vec<D> outward = middle - center;
+        waiting_[Mesh<D>::edge_key(a, b)] = middle + 0.02 * norm(mesh.vertex(b) - mesh.vertex(a)) / norm(outward) * outward;
+      }
+  }
+  std::optional<Vec<D>> proposal(Index a, Index b) const override {
+    const auto found = waiting_.find(Mesh<D>::edge_key(a, b));
+    return found == waiting_.end() ? std::nullopt : std::optional<Vec<D>>(found->second);
+  }
+  void consume(Index a, Index b) override {
+    const auto key = Mesh<D>::edge_key(a, b);
+    placed_[key] = waiting_.at(key);
+    waiting_.erase(key);
+  }
+  const std::map<std::uint64_t, Vec<D>>& placed() const { return placed_; }
+
+ private:
+  std::map<std::uint64_t, Vec<D>> waiting_, placed_;
+};
+
+// Interior operations next to the boundary give its edges their proposed nodes (on the geometry)
+// as the reinsertion does, certified with the rest.
+template <int D>
+void expect_boundary_nodes_on_the_geometry(int cells) {
+  Mesh<D> mesh = CurvedCase<D>::unit_mesh(cells);
+  MetricField<D> field(mesh, std::vector<SymMat<D>>(static_cast<std::size_t>(mesh.vertex_count()), SymMat<D>::identity() * 100.0));
+  mesh.make_p2();
+  BulgingBoundary<D> boundary(mesh);
+  const P2CavityOptions options;
+  P2Operations<D> operations(mesh, field, &boundary, options);
+  std::mt19937 random(11);
+  for (int i = 0; i < 100; ++i)
+    for (Kind kind : {Kind::kSplit, Kind::kMove}) try_operation(operations, mesh, kind, random);
+  EXPECT_GT(boundary.placed().size(), 10u);
+  for (const auto& [key, node] : boundary.placed()) {
+    const Index a = static_cast<Index>(key >> 32), b = static_cast<Index>(key & 0xffffffffu);
+    EXPECT_EQ(mesh.edge_node(mesh.find_edge(a, b)), node);
+  }
+  EXPECT_TRUE(every_element_certified(mesh, options.jacobian_floor));
+}
+
+TEST(P2Operations, TriangleOperationsPutBoundaryNodesOnTheGeometry) { expect_boundary_nodes_on_the_geometry<2>(6); }
+TEST(P2Operations, TetrahedralOperationsPutBoundaryNodesOnTheGeometry) { expect_boundary_nodes_on_the_geometry<3>(3); }
 
 // The decision figures: in a constant metric, a straight edge's curved length is its metric length
 // and a straight element's curved quality its metric mean ratio; bending the edge lengthens it.
