@@ -146,8 +146,9 @@ void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh, std::span<const
   Index end_a_vertex = kNoIndex;
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const auto [a, b] = edges[i];
+    const std::uint64_t key = Mesh<D>::edge_key(a, b);  // a plain variable: clang's lambdas take no structured binding
     const auto given = std::find_if(start_nodes.begin(), start_nodes.end(),
-                                    [&](const EdgeStart<D>& s) { return Mesh<D>::edge_key(s.a, s.b) == Mesh<D>::edge_key(a, b); });
+                                    [key](const EdgeStart<D>& s) { return Mesh<D>::edge_key(s.a, s.b) == key; });
     const Vec<D> start = given != start_nodes.end() ? given->node : default_starts[i];
     if (given == start_nodes.end() && optimized_edges_ && recreated_ids[i] != kNoIndex && optimized_edges_->marked(recreated_ids[i])) {
       ++counters_.edges_kept_optimal;
