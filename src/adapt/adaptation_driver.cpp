@@ -45,14 +45,14 @@ std::vector<SymMat<D>> metrics_at_vertices(const Mesh<D>& mesh, const Adaptation
 
 template <int D>
 AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
-                               const AdaptationSettings& settings) {
+                               const AdaptationSettings& settings, const AdaptationLoop<D>& loop) {
   AdaptedMesh<D> out;
   AdaptationReport& report = out.report;
   report.dimension = D;
   report.input_vertices = mesh.vertex_count();
   report.input_elements = mesh.element_count();
   auto start = std::chrono::steady_clock::now();
-  report.run = adapt_to_metric(mesh, metric, geometry, settings);
+  report.run = loop ? loop(mesh, metric, geometry, settings) : adapt_to_metric(mesh, metric, geometry, settings);
   report.seconds_adapt = seconds_since(start);
   report.output_vertices = mesh.vertex_count();
   report.output_elements = mesh.element_count();
@@ -75,13 +75,6 @@ void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGe
 
 namespace {
 
-// The job's metric: the input mesh as back mesh with its (graded) metric, or the analytic field.
-template <int D>
-struct JobMetric {
-  std::optional<MetricField<D>> field;
-  std::optional<AdaptationMetric<D>> metric;
-};
-
 // Sizes below this share of the input's bounding-box diagonal are never asked for: elements that
 // small lose the digits their orientation and volume tests need, and the loop could not converge.
 constexpr double kSmallestRelativeSize = 1e-6;
@@ -99,13 +92,13 @@ double smallest_size_at_vertices(const Mesh<D>& input, const AdaptationMetric<D>
 }
 
 template <int D>
-AdaptationMetric<D> metric_within(const JobMetric<D>& out, const AdaptationJob<D>& job, const SizeBounds& bounds) {
+AdaptationMetric<D> metric_within(const AdaptationSetup<D>& out, const AdaptationJob<D>& job, const SizeBounds& bounds) {
   if (out.field) return AdaptationMetric<D>(*out.field, bounds);
   return AdaptationMetric<D>(*job.analytic, bounds);
 }
 
 template <int D>
-void make_job_metric(JobMetric<D>& out, const Mesh<D>& input, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job) {
+void make_job_metric(AdaptationSetup<D>& out, const Mesh<D>& input, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job) {
   if (!job.analytic) {
     if (job.gradation) grade_metrics(input, metrics, {*job.gradation});
     out.field.emplace(input, metrics);
@@ -129,27 +122,34 @@ void make_job_metric(JobMetric<D>& out, const Mesh<D>& input, std::vector<SymMat
 }  // namespace
 
 template <int D>
-AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job, const std::string& name) {
-  mesh.forget_edges();
-  const Mesh<D> input = mesh;
-  JobMetric<D> metric;
-  make_job_metric(metric, input, std::move(metrics), job);
-  const double expected = expected_element_count(input, *metric.metric);
+std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job,
+                                                      const std::string& name) {
+  auto setup = std::make_unique<AdaptationSetup<D>>();
+  setup->input = std::move(input);
+  const Mesh<D>& back = setup->input;
+  make_job_metric(*setup, back, std::move(metrics), job);
+  const double expected = expected_element_count(back, *setup->metric);
   check_memory_fits("adapting " + name + " (the metric asks for about " + std::to_string(static_cast<long long>(expected)) + " elements)",
                     expected, kAdaptationBytesPerElement);
-  auto geometry = job.geometry(input);
-
-  AdaptationSettings settings;
+  setup->geometry = job.geometry(back);
+  AdaptationSettings& settings = setup->settings;
   settings.max_passes = job.iterations;
   settings.feature_angle_degrees = job.angle;
-  settings.hausd = job.hausd.value_or(kRelativeHausd * bounding_box_diagonal(input));
+  settings.hausd = job.hausd.value_or(kRelativeHausd * bounding_box_diagonal(back));
   settings.threads = job.threads;
   settings.progress = job.pass_progress;
-  AdaptedMesh<D> adapted = adapt_in_metric(mesh, *metric.metric, geometry.get(), settings);
+  return setup;
+}
+
+template <int D>
+AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job, const std::string& name) {
+  mesh.forget_edges();
+  const auto setup = set_up_adaptation(mesh, std::move(metrics), job, name);
+  AdaptedMesh<D> adapted = adapt_in_metric(mesh, *setup->metric, setup->geometry.get(), setup->settings, job.loop);
   if (job.curving) {
     CurvingOptions curving = *job.curving;
     if (job.before_curving) job.before_curving(mesh, curving);
-    geometry.reset();                                  // a CAD model is open once at a time (gmsh's one model per thread)
+    setup->geometry.reset();                           // a CAD model is open once at a time (gmsh's one model per thread)
     const auto curving_geometry = job.geometry(mesh);  // of the adapted boundary
     curve_adapted_mesh(adapted, mesh, curving_geometry.get(), curving);
   }
@@ -158,8 +158,14 @@ AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics,
 
 template AdaptedMesh<2> run_adaptation_job(Mesh<2>&, std::vector<SymMat<2>>, const AdaptationJob<2>&, const std::string&);
 template AdaptedMesh<3> run_adaptation_job(Mesh<3>&, std::vector<SymMat<3>>, const AdaptationJob<3>&, const std::string&);
-template AdaptedMesh<2> adapt_in_metric(Mesh<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*, const AdaptationSettings&);
-template AdaptedMesh<3> adapt_in_metric(Mesh<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*, const AdaptationSettings&);
+template std::unique_ptr<AdaptationSetup<2>> set_up_adaptation(Mesh<2>, std::vector<SymMat<2>>, const AdaptationJob<2>&,
+                                                               const std::string&);
+template std::unique_ptr<AdaptationSetup<3>> set_up_adaptation(Mesh<3>, std::vector<SymMat<3>>, const AdaptationJob<3>&,
+                                                               const std::string&);
+template AdaptedMesh<2> adapt_in_metric(Mesh<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*, const AdaptationSettings&,
+                                        const AdaptationLoop<2>&);
+template AdaptedMesh<3> adapt_in_metric(Mesh<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*, const AdaptationSettings&,
+                                        const AdaptationLoop<3>&);
 template void curve_adapted_mesh(AdaptedMesh<2>&, Mesh<2>&, const BoundaryGeometry<2>*, const CurvingOptions&);
 template void curve_adapted_mesh(AdaptedMesh<3>&, Mesh<3>&, const BoundaryGeometry<3>*, const CurvingOptions&);
 

@@ -22,11 +22,17 @@ struct AdaptedMesh {
   std::unique_ptr<MetricField<D>> field;
 };
 
-// Adapts `mesh` (P1, compact) to `metric`, new boundary points on `geometry` (may be null). Fills
-// the report's figures from the input's and output's counts, and its peak memory.
+// The P1 loop a job runs: adapt_to_metric, or the distributed loop of src/parallel/ (docs/distributed.md).
+template <int D>
+using AdaptationLoop =
+    std::function<AdaptationRun(Mesh<D>&, const AdaptationMetric<D>&, const BoundaryGeometry<D>*, const AdaptationSettings&)>;
+
+// Adapts `mesh` (P1, compact) to `metric` with `loop` (empty: adapt_to_metric), new boundary points on
+// `geometry` (may be null). Fills the report's figures from the input's and output's counts, and its
+// peak memory.
 template <int D>
 AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
-                               const AdaptationSettings& settings);
+                               const AdaptationSettings& settings, const AdaptationLoop<D>& loop = {});
 
 // Then curves the adapted `mesh` in `adapted.field` (curve_in_metric; `geometry` is usually made
 // from the adapted mesh) and adds the curving's figures, time and the peak memory to the report.
@@ -54,7 +60,27 @@ struct AdaptationJob {
   std::function<void(const std::string&)> warn;
   // Called with the adapted mesh just before its curving, e.g. to set the curving's progress.
   std::function<void(const Mesh<D>&, CurvingOptions&)> before_curving;
+  AdaptationLoop<D> loop;  // empty: adapt_to_metric
 };
+
+// What a job adapts with, made alike by every process of a distributed run: the input as back mesh
+// with its (graded) metric, or the analytic metric; the size bounds; the boundary geometry of the
+// input; the loop's settings.
+template <int D>
+struct AdaptationSetup {
+  Mesh<D> input;  // the field's back mesh
+  std::optional<MetricField<D>> field;
+  std::optional<AdaptationMetric<D>> metric;
+  std::unique_ptr<BoundaryGeometry<D>> geometry;
+  AdaptationSettings settings;
+};
+
+// Sets up `job` on `input` (P1), `metrics` the metric at its vertices (empty with an analytic metric),
+// after checking that the memory fits (`name` names the mesh in that error). Held by pointer: the
+// metric refers to the field, the field to the input.
+template <int D>
+std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job,
+                                                      const std::string& name);
 
 // Runs `job` on `mesh` (P1 or P2, whose nodes are dropped), `metrics` the metric at its vertices
 // (empty with an analytic metric). `name` names the mesh in errors (a job too large for the memory).

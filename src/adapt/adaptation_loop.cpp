@@ -79,14 +79,17 @@ AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, 
   limits.collapse_new_length = kOpenCollapseLength;
   limits.cos_feature_angle = std::cos(settings.feature_angle_degrees * std::numbers::pi / 180);
   limits.hausd = settings.hausd;
+  limits.split_at_required_vertices = settings.split_at_required_vertices;
   ThreadPool pool(std::max(1, settings.threads));
   AdaptationRun run;
-  for (int pass = 1; pass <= settings.max_passes && !run.converged; ++pass) {
+  int closed_passes = 0;
+  for (int pass = 1; pass <= settings.max_passes && !run.converged && closed_passes != settings.passes_after_window_closes; ++pass) {
     run.passes.push_back(run_pass(am, limits, pool));
     AdaptationPass& last = run.passes.back();
     last.window_open = window_open(limits);
     last.collapse_length_bound = limits.collapse_new_length;
     run.converged = changes(last) <= kConvergedChange * last.vertices;
+    if (!window_open(limits)) ++closed_passes;
     if (stalled(run.passes)) limits.collapse_new_length = limits.split_length;
     if (settings.progress) settings.progress(pass, settings.max_passes);
   }

@@ -20,6 +20,12 @@ struct AdaptationSettings {
   double feature_angle_degrees = 45;  // boundary sides meeting at more are ridges (2D: corners)
   double hausd = 0;                   // > 0: new boundary facets stay within this of the geometry
   int threads = 1;                    // the output does not depend on it
+  // Stops this many passes after the loop's window closes (the distributed loop's early iterations,
+  // whose frozen interfaces leave only ping-pong next to them: docs/distributed.md); negative: never.
+  int passes_after_window_closes = -1;
+  // False: no edge with a required vertex is split. A distributed part's interface is required, and
+  // splits toward an interface coarser than the metric would never end (docs/distributed.md).
+  bool split_at_required_vertices = true;
   // Called after each pass with its number (1-based) and the passes' cap, for progress.
   std::function<void(int, int)> progress;
 };

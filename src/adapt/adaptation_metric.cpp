@@ -28,17 +28,27 @@ SymMat<D> AdaptationMetric<D>::clamped(const SymMat<D>& metric) const {
 }
 
 template <int D>
-double expected_element_count(const Mesh<D>& input, const AdaptationMetric<D>& metric) {
-  double complexity = 0;
+std::vector<double> expected_element_counts(const Mesh<D>& input, const AdaptationMetric<D>& metric) {
+  const double unit_volume = D == 3 ? std::sqrt(2.0) / 12 : std::sqrt(3.0) / 4;
+  std::vector<double> counts(static_cast<std::size_t>(input.element_count()));
   Index hint = kNoIndex;
   for (Index k = 0; k < input.element_count(); ++k) {
     Vec<D> centroid{};
     for (Index v : input.element(k)) centroid = centroid + (1.0 / (D + 1)) * input.vertex(v);
-    complexity += std::sqrt(determinant(metric.metric_at(centroid, hint))) * std::abs(element_measure(input, k));
+    counts[k] = std::sqrt(determinant(metric.metric_at(centroid, hint))) * std::abs(element_measure(input, k)) / unit_volume;
   }
-  return complexity / (D == 3 ? std::sqrt(2.0) / 12 : std::sqrt(3.0) / 4);
+  return counts;
 }
 
+template <int D>
+double expected_element_count(const Mesh<D>& input, const AdaptationMetric<D>& metric) {
+  double total = 0;
+  for (double count : expected_element_counts(input, metric)) total += count;
+  return total;
+}
+
+template std::vector<double> expected_element_counts(const Mesh<2>&, const AdaptationMetric<2>&);
+template std::vector<double> expected_element_counts(const Mesh<3>&, const AdaptationMetric<3>&);
 template double expected_element_count(const Mesh<2>&, const AdaptationMetric<2>&);
 template double expected_element_count(const Mesh<3>&, const AdaptationMetric<3>&);
 template class AdaptationMetric<2>;

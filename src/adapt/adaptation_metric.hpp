@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "geom/sym_mat.hpp"
 #include "metric/analytic_metric.hpp"
@@ -36,9 +37,14 @@ class AdaptationMetric {
   SizeBounds bounds_;
 };
 
-// The output's element count `metric` asks for on the domain of `input`: its complexity ∫ √det M (the
-// metric at each element's centroid) divided by the metric volume of a regular unit simplex (√2/12 in
-// 3D, √3/4 in 2D). For the memory check before a run.
+// The output's element count `metric` asks for inside each element of `input`: ∫ √det M over the
+// element (the metric at its centroid) divided by the metric volume of a regular unit simplex (√2/12
+// in 3D, √3/4 in 2D). The load of a part in a distributed run (docs/distributed.md).
+template <int D>
+std::vector<double> expected_element_counts(const Mesh<D>& input, const AdaptationMetric<D>& metric);
+
+// Their sum: the output's element count on the domain of `input` (its complexity over the unit
+// simplex's metric volume). For the memory check before a run.
 template <int D>
 double expected_element_count(const Mesh<D>& input, const AdaptationMetric<D>& metric);
 

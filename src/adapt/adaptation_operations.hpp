@@ -21,6 +21,7 @@ struct AdaptationLimits {
   double collapse_new_length = std::sqrt(2.0);
   double cos_feature_angle = 0.7071067811865476;  // cos 45°: boundary changes may turn a facet by less
   double hausd = 0;                               // > 0 with a geometry: new boundary facets stay within it
+  bool split_at_required_vertices = true;         // AdaptationSettings::split_at_required_vertices
 };
 
 // Why a candidate operation was refused.

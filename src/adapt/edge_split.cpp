@@ -207,6 +207,15 @@ OperationCount split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& l
   if (D == 3 && static_cast<double>(beyond_two - candidates.begin()) > kCoarsePhaseShare * static_cast<double>(candidates.size()))
     candidates.erase(beyond_two, candidates.end());
   OperationCount count;
+  if (!limits.split_at_required_vertices) {
+    std::vector<char> required(static_cast<std::size_t>(am.mesh().vertex_count()), 0);
+    for (Index v : am.mesh().required_vertices()) required[v] = 1;
+    std::erase_if(candidates, [&](const EdgeCandidate& c) {
+      const bool at_required = required[c.a] || required[c.b];
+      if (at_required) count.add(Refusal::kClasses);
+      return at_required;
+    });
+  }
   std::vector<SplitScratch<D>> scratch(static_cast<std::size_t>(pool.thread_count()));
   std::vector<SplitPreview<D>> previews;
   // One thread previews each candidate at its turn (never stale); more preview a chunk at once.

@@ -94,6 +94,8 @@ class Mesh {
   Index line_count() const { return static_cast<Index>(lines_.size()); }
   const Line& line(Index l) const { return lines_[l]; }
   int line_ref(Index l) const { return line_refs_[l]; }
+  std::span<const Line> lines() const { return lines_; }
+  std::span<const int> line_refs() const { return line_refs_; }
   Index add_line(const Line& vertices, int ref = 0);
   bool line_removed(Index l) const { return lines_[l][0] == kNoIndex; }
   // Whether line l is listed in ridges() (in 2D, facet l).
