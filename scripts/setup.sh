@@ -8,6 +8,8 @@ packages=(
   libgmsh-dev python3-gmsh python3-meshio python3-numpy
   pybind11-dev python3-dev python3-pytest python3-matplotlib  # the Python module, its tests and docs/python.md's example
   clang libclang-rt-14-dev
+  # the distributed adaptation (docs/distributed.md) and its mpirun tests: OpenMPI, Scotch (int64)
+  libopenmpi-dev openmpi-bin libptscotch-dev
   clang-format  # scripts/check_format.sh (the test command) and scripts/format.sh: version 14, as clang
   # tests/io/paraview_vtu_test.py: ParaView reads and draws the curved .vtu; Debian's ParaView
   # renders through X only, so headless under Xvfb (about 2.5 minutes of apt-get on CI).

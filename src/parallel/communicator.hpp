@@ -1,0 +1,48 @@
+// The processes of a distributed run (docs/distributed.md): MPI's world when hocav runs under
+// mpirun, one process otherwise or when built without MPI (the CMake option HOCAV_WITH_MPI).
+#pragma once
+
+#include <cstddef>
+#include <cstring>
+#include <type_traits>
+#include <vector>
+
+namespace hocav {
+
+// Starts MPI when the process was launched by mpirun (its environment says so) and ends it when
+// destroyed; else does nothing, so that a plain `hocav` never starts MPI.
+class MpiSession {
+ public:
+  MpiSession(int& argc, char**& argv);
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+
+ private:
+  bool started_ = false;
+};
+
+bool built_with_mpi();
+int process_rank();   // 0 for one process
+int process_count();  // 1 for one process
+
+// Point to point and from rank 0 to all, any size (sent in pieces MPI's int counts can hold).
+void send_bytes(int to, const std::vector<std::byte>& bytes);
+std::vector<std::byte> receive_bytes(int from);
+void broadcast_bytes(std::vector<std::byte>& bytes);
+
+// Ends every process with `exit_code` (an error on one process would leave the others waiting).
+[[noreturn]] void abort_processes(int exit_code);
+
+// Rank 0's `values` to every process.
+template <typename T>
+void broadcast_values(std::vector<T>& values) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  std::vector<std::byte> bytes(values.size() * sizeof(T));
+  if (!bytes.empty()) std::memcpy(bytes.data(), values.data(), bytes.size());
+  broadcast_bytes(bytes);
+  values.resize(bytes.size() / sizeof(T));
+  if (!bytes.empty()) std::memcpy(values.data(), bytes.data(), bytes.size());
+}
+
+}  // namespace hocav

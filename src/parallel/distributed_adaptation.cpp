@@ -1,0 +1,208 @@
+#include "parallel/distributed_adaptation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+
+#include "adapt/vertex_classes.hpp"
+#include "base/error.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/element_partition.hpp"
+#include "parallel/part_message.hpp"
+
+namespace hocav {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Adapts one part with its interfaces frozen (required facets and vertices); its global ids follow
+// the vertices through the loop as a vertex attribute (0 for a new vertex, else the id + 1).
+template <int D>
+AdaptationRun adapt_part(MeshPart<D>& part, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
+                         const AdaptationSettings& settings) {
+  if (part.mesh.element_count() == 0) return {};
+  const int id_attribute = part.mesh.add_vertex_attribute(1);
+  for (Index v = 0; v < part.mesh.vertex_count(); ++v) part.mesh.vertex_attribute(id_attribute, v)[0] = part.global_ids[v] + 1.0;
+  part.mesh.build_topology();
+  const AdaptationRun run = adapt_to_metric(part.mesh, metric, geometry, settings);
+  part.global_ids.resize(static_cast<std::size_t>(part.mesh.vertex_count()));
+  for (Index v = 0; v < part.mesh.vertex_count(); ++v)
+    part.global_ids[v] = static_cast<Index>(part.mesh.vertex_attribute(id_attribute, v)[0]) - 1;
+  return run;
+}
+
+// In iterations whose interfaces move next, a part's loop splits no edge at an interface vertex and
+// stops this many passes after its window closes: next to a frozen interface much coarser than the
+// metric, splits toward it never end, and what the loop would do there the next iteration, with that
+// interface inside a part, does better (docs/distributed.md).
+constexpr int kEarlyPassesAfterWindowCloses = 2;
+
+// What changes between iterations: the early iterations' limits.
+std::vector<std::byte> pack_iteration_settings(const AdaptationSettings& settings) {
+  const int values[2] = {settings.passes_after_window_closes, settings.split_at_required_vertices ? 1 : 0};
+  std::vector<std::byte> bytes(sizeof values);
+  std::memcpy(bytes.data(), values, sizeof values);
+  return bytes;
+}
+
+void unpack_iteration_settings(const std::vector<std::byte>& bytes, AdaptationSettings& settings) {
+  int values[2] = {};
+  if (bytes.size() != sizeof values) throw Error("a distributed adaptation message has the wrong size");
+  std::memcpy(values, bytes.data(), sizeof values);
+  settings.passes_after_window_closes = values[0];
+  settings.split_at_required_vertices = values[1] != 0;
+}
+
+static_assert(std::is_trivially_copyable_v<AdaptationPass>);
+
+std::vector<std::byte> pack_run(const AdaptationRun& run) {
+  std::vector<std::byte> bytes(run.passes.size() * sizeof(AdaptationPass) + 2);
+  if (!run.passes.empty()) std::memcpy(bytes.data(), run.passes.data(), run.passes.size() * sizeof(AdaptationPass));
+  bytes[bytes.size() - 2] = std::byte{run.converged};
+  bytes[bytes.size() - 1] = std::byte{run.stopped_with_window_open};
+  return bytes;
+}
+
+AdaptationRun unpack_run(const std::vector<std::byte>& bytes) {
+  AdaptationRun run;
+  run.passes.resize((bytes.size() - 2) / sizeof(AdaptationPass));
+  if (!run.passes.empty()) std::memcpy(run.passes.data(), bytes.data(), run.passes.size() * sizeof(AdaptationPass));
+  run.converged = bytes[bytes.size() - 2] != std::byte{0};
+  run.stopped_with_window_open = bytes[bytes.size() - 1] != std::byte{0};
+  return run;
+}
+
+// The parts' runs as one: pass i sums the parts' passes i (their times: the slowest part's).
+AdaptationRun combined(const std::vector<AdaptationRun>& runs) {
+  AdaptationRun out;
+  out.converged = true;
+  for (const AdaptationRun& run : runs) {
+    if (run.passes.size() > out.passes.size()) out.passes.resize(run.passes.size());
+    out.converged = out.converged && run.converged;
+    out.stopped_with_window_open = out.stopped_with_window_open || run.stopped_with_window_open;
+    for (std::size_t i = 0; i < run.passes.size(); ++i) {
+      AdaptationPass& sum = out.passes[i];
+      const AdaptationPass& pass = run.passes[i];
+      sum.collapses += pass.collapses;
+      sum.splits += pass.splits;
+      sum.swaps += pass.swaps;
+      sum.moves += pass.moves;
+      sum.vertices += pass.vertices;
+      sum.elements += pass.elements;
+      sum.window_open = sum.window_open || pass.window_open;
+      sum.collapse_length_bound = std::max(sum.collapse_length_bound, pass.collapse_length_bound);
+      for (auto seconds : {&AdaptationPass::seconds, &AdaptationPass::seconds_collapse, &AdaptationPass::seconds_swap,
+                           &AdaptationPass::seconds_split, &AdaptationPass::seconds_smooth, &AdaptationPass::seconds_compact})
+        sum.*seconds = std::max(sum.*seconds, pass.*seconds);
+    }
+  }
+  return out;
+}
+
+template <int D>
+Index interface_face_count(const std::vector<MeshPart<D>>& parts) {
+  Index count = 0;
+  for (const MeshPart<D>& part : parts)
+    count += static_cast<Index>(std::count(part.mesh.facet_refs().begin(), part.mesh.facet_refs().end(), kInterfaceRef));
+  return count / 2;
+}
+
+// One iteration on rank 0: partition, send, adapt part 0, receive, merge.
+template <int D>
+struct RootIteration {
+  Mesh<D>& mesh;
+  const AdaptationMetric<D>& metric;
+  const BoundaryGeometry<D>* geometry;
+  std::vector<char> old_interface;  // per vertex of `mesh`
+  DistributedIteration figures;
+
+  AdaptationRun run(const AdaptationSettings& settings) {
+    const auto start = std::chrono::steady_clock::now();
+    const int count = process_count();
+    const std::vector<double> loads = expected_element_counts(mesh, metric);
+    const std::vector<int> part_of = partition_graph(element_graph(mesh, loads, old_interface), count);
+    std::vector<MeshPart<D>> parts = split_mesh(mesh, part_of, count);
+    figures.seconds_partition = seconds_since(start);
+    figures.interface_faces = interface_face_count(parts);
+    for (int p = 1; p < count; ++p) {
+      send(p, pack_part(parts[p].mesh, std::span<const Index>(parts[p].global_ids)));
+      send(p, pack_iteration_settings(settings));
+    }
+    std::vector<AdaptationRun> runs{adapt_part(parts[0], metric, geometry, settings)};
+    for (int p = 1; p < count; ++p) {
+      parts[p] = unpack_part<D>(receive(p));
+      runs.push_back(unpack_run(receive(p)));
+    }
+    MergedMesh<D> merged = merge_parts(mesh, parts);
+    mesh = std::move(merged.mesh);
+    mesh.build_topology();
+    old_interface = std::move(merged.interface_vertex);
+    figures.interface_vertices = static_cast<Index>(std::count(old_interface.begin(), old_interface.end(), 1));
+    figures.vertices = mesh.vertex_count();
+    figures.elements = mesh.element_count();
+    figures.seconds = seconds_since(start);
+    return combined(runs);
+  }
+
+  void send(int to, const std::vector<std::byte>& bytes) {
+    figures.bytes_sent += static_cast<long long>(bytes.size());
+    send_bytes(to, bytes);
+  }
+  std::vector<std::byte> receive(int from) {
+    std::vector<std::byte> bytes = receive_bytes(from);
+    figures.bytes_sent += static_cast<long long>(bytes.size());
+    return bytes;
+  }
+};
+
+}  // namespace
+
+template <int D>
+AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
+                                const AdaptationSettings& settings, const std::function<void(const DistributedIteration&)>& on_iteration) {
+  // The whole mesh's corners and feature lines first, as the serial loop finds them: a part sees
+  // only its share of the boundary (docs/distributed.md §Parts).
+  classify_vertices(mesh, settings.feature_angle_degrees);
+  RootIteration<D> root{mesh, metric, geometry, {}, {}};
+  AdaptationRun run;
+  AdaptationSettings early = settings;
+  early.passes_after_window_closes = kEarlyPassesAfterWindowCloses;
+  early.split_at_required_vertices = false;
+  for (int iteration = 1; iteration <= kDistributedIterations; ++iteration) {
+    root.figures = {};
+    root.figures.iteration = iteration;
+    const AdaptationRun step = root.run(iteration < kDistributedIterations ? early : settings);
+    run.passes.insert(run.passes.end(), step.passes.begin(), step.passes.end());
+    run.converged = step.converged;
+    run.stopped_with_window_open = step.stopped_with_window_open;
+    if (on_iteration) on_iteration(root.figures);
+  }
+  for (int p = 1; p < process_count(); ++p) send_bytes(p, {});  // stop
+  return run;
+}
+
+template <int D>
+void serve_distributed_adaptation(const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
+                                  const AdaptationSettings& settings) {
+  for (;;) {
+    const std::vector<std::byte> bytes = receive_bytes(0);
+    if (bytes.empty()) return;
+    MeshPart<D> part = unpack_part<D>(bytes);
+    AdaptationSettings iteration = settings;
+    unpack_iteration_settings(receive_bytes(0), iteration);
+    const AdaptationRun run = adapt_part(part, metric, geometry, iteration);
+    send_bytes(0, pack_part(part.mesh, std::span<const Index>(part.global_ids)));
+    send_bytes(0, pack_run(run));
+  }
+}
+
+template AdaptationRun adapt_distributed(Mesh<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*, const AdaptationSettings&,
+                                         const std::function<void(const DistributedIteration&)>&);
+template AdaptationRun adapt_distributed(Mesh<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*, const AdaptationSettings&,
+                                         const std::function<void(const DistributedIteration&)>&);
+template void serve_distributed_adaptation(const AdaptationMetric<2>&, const BoundaryGeometry<2>*, const AdaptationSettings&);
+template void serve_distributed_adaptation(const AdaptationMetric<3>&, const BoundaryGeometry<3>*, const AdaptationSettings&);
+
+}  // namespace hocav

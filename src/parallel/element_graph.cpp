@@ -1,0 +1,48 @@
+#include <algorithm>
+#include <cmath>
+
+#include "parallel/element_partition.hpp"
+
+namespace hocav {
+namespace {
+
+// Scales the loads to integers: their sum stays below 1e9, so Scotch's sums never overflow.
+std::vector<std::int64_t> integer_loads(std::span<const double> loads) {
+  double total = 0;
+  for (double load : loads) total += load;
+  const double scale = total > 0 ? std::min(1000.0, 1e9 / total) : 0;
+  std::vector<std::int64_t> weights(loads.size());
+  for (std::size_t k = 0; k < loads.size(); ++k) weights[k] = 1 + std::llround(loads[k] * scale);
+  return weights;
+}
+
+template <int D>
+bool touches(const typename Mesh<D>::Element& element, std::span<const char> marked) {
+  return !marked.empty() && std::any_of(element.begin(), element.end(), [&](Index v) { return marked[v] != 0; });
+}
+
+}  // namespace
+
+template <int D>
+WeightedGraph element_graph(const Mesh<D>& mesh, std::span<const double> loads, std::span<const char> old_interface) {
+  WeightedGraph graph;
+  graph.vertex_weights = integer_loads(loads);
+  graph.offsets.push_back(0);
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    const bool near_old_interface = touches<D>(mesh.element(k), old_interface);
+    for (int face = 0; face <= D; ++face) {
+      const Index other = mesh.neighbor(k, face);
+      if (other == kNoIndex) continue;
+      graph.neighbours.push_back(other);
+      const bool heavy = near_old_interface && touches<D>(mesh.element(other), old_interface);
+      graph.edge_weights.push_back(heavy ? kOldInterfaceFaceWeight : 1);
+    }
+    graph.offsets.push_back(static_cast<std::int64_t>(graph.neighbours.size()));
+  }
+  return graph;
+}
+
+template WeightedGraph element_graph(const Mesh<2>&, std::span<const double>, std::span<const char>);
+template WeightedGraph element_graph(const Mesh<3>&, std::span<const double>, std::span<const char>);
+
+}  // namespace hocav

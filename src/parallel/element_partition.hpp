@@ -1,0 +1,33 @@
+// The partition of a mesh's elements among processes (docs/distributed.md §Partitioning): the dual
+// graph (elements, joined across their shared faces) with each element's load as its weight and
+// heavier faces near the last interfaces, cut by Scotch into parts of balanced load.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+
+namespace hocav {
+
+// A graph in compressed rows, with integer weights on its vertices and edges.
+struct WeightedGraph {
+  std::vector<std::int64_t> offsets;  // vertex i's neighbours are neighbours[offsets[i] .. offsets[i + 1])
+  std::vector<std::int64_t> neighbours, vertex_weights, edge_weights;
+};
+
+// A face joining two elements that both touch a vertex of the last interfaces weighs this many
+// ordinary faces: the partitioner then cuts elsewhere, and the old interfaces fall inside parts.
+constexpr std::int64_t kOldInterfaceFaceWeight = 100;
+
+// The dual graph of `mesh` (with topology): element k weighs in proportion to `loads[k]` (at least
+// 1); `old_interface` (per vertex, may be empty) marks the vertices of the last interfaces.
+template <int D>
+WeightedGraph element_graph(const Mesh<D>& mesh, std::span<const double> loads, std::span<const char> old_interface);
+
+// Scotch's partition of `graph` into `part_count` parts of balanced vertex weight and small cut
+// weight; the part of each vertex. The same graph gives the same parts.
+std::vector<int> partition_graph(const WeightedGraph& graph, int part_count);
+
+}  // namespace hocav

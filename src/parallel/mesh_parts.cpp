@@ -1,0 +1,260 @@
+#include "parallel/mesh_parts.hpp"
+
+#include <algorithm>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace hocav {
+namespace {
+
+std::vector<char> flags_of(const std::vector<Index>& ids, Index count) {
+  std::vector<char> flags(static_cast<std::size_t>(count), 0);
+  for (Index id : ids)
+    if (id != kNoIndex) flags[id] = 1;
+  return flags;
+}
+
+// The list of required facets: the Edges keyword's in 2D, the triangles' in 3D.
+template <int D>
+std::vector<Index>& required_facets(Mesh<D>& mesh) {
+  if constexpr (D == 2) return mesh.required_edges();
+  return mesh.required_triangles();
+}
+template <int D>
+const std::vector<Index>& required_facets(const Mesh<D>& mesh) {
+  if constexpr (D == 2) return mesh.required_edges();
+  return mesh.required_triangles();
+}
+
+// The tags of a mesh as flags per entity, for copying them entity by entity.
+template <int D>
+struct EntityTags {
+  std::vector<char> corner, required_vertex, required_facet, ridge_facet, ridge_line, required_line;
+
+  explicit EntityTags(const Mesh<D>& mesh)
+      : corner(flags_of(mesh.corners(), mesh.vertex_count())),
+        required_vertex(flags_of(mesh.required_vertices(), mesh.vertex_count())),
+        required_facet(flags_of(required_facets(mesh), mesh.facet_count())),
+        ridge_facet(D == 2 ? flags_of(mesh.ridges(), mesh.facet_count())
+                           : std::vector<char>(static_cast<std::size_t>(mesh.facet_count()), 0)),
+        ridge_line(D == 3 ? flags_of(mesh.ridges(), mesh.line_count()) : std::vector<char>()),
+        required_line(D == 3 ? flags_of(mesh.required_edges(), mesh.line_count()) : std::vector<char>()) {}
+};
+
+// Adds facet `vertices` to `out` with the tags facet f has in `tags`.
+template <int D>
+void add_tagged_facet(Mesh<D>& out, const typename Mesh<D>::Facet& vertices, int ref, const EntityTags<D>& tags, Index f) {
+  const Index id = out.add_facet(vertices, ref);
+  if (tags.required_facet[f]) required_facets(out).push_back(id);
+  if (tags.ridge_facet[f]) out.ridges().push_back(id);
+}
+
+template <int D>
+void add_tagged_line(Mesh<D>& out, const typename Mesh<D>::Line& vertices, int ref, const EntityTags<D>& tags, Index l) {
+  const Index id = out.add_line(vertices, ref);
+  if (tags.ridge_line[l]) out.ridges().push_back(id);
+  if (tags.required_line[l]) out.required_edges().push_back(id);
+}
+
+std::unordered_map<std::uint64_t, Index> lines_by_edge(std::span<const std::array<Index, 2>> lines) {
+  std::unordered_map<std::uint64_t, Index> by_edge;
+  for (std::size_t l = 0; l < lines.size(); ++l)
+    if (lines[l][0] != kNoIndex) by_edge.emplace(Mesh<3>::edge_key(lines[l][0], lines[l][1]), static_cast<Index>(l));
+  return by_edge;
+}
+
+// Builds one part: `elements` (ascending) of `mesh`, `facets` the mesh's facets on them.
+template <int D>
+struct PartBuilder {
+  const Mesh<D>& mesh;
+  std::span<const int> part_of;
+  const EntityTags<D>& tags;
+  const std::unordered_map<std::uint64_t, Index>& line_of_edge;
+  std::vector<Index>& local;       // per mesh vertex: its id in the part (kNoIndex outside), reset on return
+  std::vector<Index>& line_stamp;  // per mesh line: the last part that took it
+
+  MeshPart<D> build(int p, const std::vector<Index>& elements, const std::vector<Index>& facets) {
+    MeshPart<D> part;
+    add_vertices(part, elements);
+    for (Index k : elements) part.mesh.add_element(mapped(mesh.element(k)), mesh.element_ref(k));
+    for (Index f : facets) add_tagged_facet(part.mesh, mapped(mesh.facet(f)), mesh.facet_ref(f), tags, f);
+    add_interface_facets(part, p, elements);
+    if constexpr (D == 3) add_lines(part, p, elements);
+    for (Index v : part.global_ids) local[v] = kNoIndex;
+    return part;
+  }
+
+  template <std::size_t N>
+  std::array<Index, N> mapped(const std::array<Index, N>& ids) const {
+    std::array<Index, N> out{};
+    for (std::size_t i = 0; i < N; ++i) out[i] = local[ids[i]];
+    return out;
+  }
+
+  void add_vertices(MeshPart<D>& part, const std::vector<Index>& elements) {
+    for (Index k : elements) part.global_ids.insert(part.global_ids.end(), mesh.element(k).begin(), mesh.element(k).end());
+    std::sort(part.global_ids.begin(), part.global_ids.end());
+    part.global_ids.erase(std::unique(part.global_ids.begin(), part.global_ids.end()), part.global_ids.end());
+    for (Index v : part.global_ids) {
+      local[v] = part.mesh.add_vertex(mesh.vertex(v), mesh.vertex_ref(v));
+      if (tags.corner[v]) part.mesh.corners().push_back(local[v]);
+      if (tags.required_vertex[v]) part.mesh.required_vertices().push_back(local[v]);
+    }
+  }
+
+  // The faces towards other parts, as required facets with required vertices.
+  void add_interface_facets(MeshPart<D>& part, int p, const std::vector<Index>& elements) {
+    std::vector<char> on_interface(part.global_ids.size(), 0);
+    for (Index k : elements)
+      for (int face = 0; face <= D; ++face) {
+        const Index other = mesh.neighbor(k, face);
+        if (other == kNoIndex || part_of[other] == p) continue;
+        typename Mesh<D>::Facet facet{};
+        for (int i = 0; i < D; ++i) facet[i] = local[mesh.element(k)[face_vertices<D>(face)[i]]];
+        required_facets(part.mesh).push_back(part.mesh.add_facet(facet, kInterfaceRef));
+        for (Index v : facet) on_interface[v] = 1;
+      }
+    const std::vector<char> required = flags_of(part.mesh.required_vertices(), part.mesh.vertex_count());
+    for (Index v = 0; v < part.mesh.vertex_count(); ++v)
+      if (on_interface[v] && !required[v]) part.mesh.required_vertices().push_back(v);
+  }
+
+  // The feature lines along the part's element edges, each once.
+  void add_lines(MeshPart<D>& part, int p, const std::vector<Index>& elements) {
+    if (line_of_edge.empty()) return;
+    for (Index k : elements)
+      for (int e = 0; e < Simplex<D>::kEdges; ++e) {
+        const auto& ends = edge_vertices<D>(e);
+        const auto found = line_of_edge.find(Mesh<D>::edge_key(mesh.element(k)[ends[0]], mesh.element(k)[ends[1]]));
+        if (found == line_of_edge.end() || line_stamp[found->second] == p) continue;
+        const Index l = found->second;
+        line_stamp[l] = p;
+        add_tagged_line(part.mesh, mapped(mesh.line(l)), mesh.line_ref(l), tags, l);
+      }
+  }
+};
+
+}  // namespace
+
+template <int D>
+std::vector<MeshPart<D>> split_mesh(const Mesh<D>& mesh, std::span<const int> part_of, int part_count) {
+  std::vector<std::vector<Index>> elements(static_cast<std::size_t>(part_count)), facets(elements.size());
+  for (Index k = 0; k < mesh.element_count(); ++k) elements[part_of[k]].push_back(k);
+  for (Index f = 0; f < mesh.facet_count(); ++f) facets[part_of[mesh.facet_element_face(f) / (D + 1)]].push_back(f);
+  const EntityTags<D> tags(mesh);
+  const auto line_of_edge = lines_by_edge(mesh.lines());
+  std::vector<Index> local(static_cast<std::size_t>(mesh.vertex_count()), kNoIndex);
+  std::vector<Index> line_stamp(static_cast<std::size_t>(mesh.line_count()), -1);
+  PartBuilder<D> builder{mesh, part_of, tags, line_of_edge, local, line_stamp};
+  std::vector<MeshPart<D>> parts;
+  for (int p = 0; p < part_count; ++p) parts.push_back(builder.build(p, elements[p], facets[p]));
+  return parts;
+}
+
+namespace {
+
+// Where each vertex of the merged mesh comes from, and each part vertex's id in it.
+template <int D>
+struct VertexMerge {
+  std::vector<std::pair<int, Index>> source;   // per merged vertex: (part, local id)
+  std::vector<std::vector<Index>> merged_ids;  // per part, per local vertex
+  std::vector<Index> old_ids;                  // per old vertex: its merged id, kNoIndex if gone
+
+  VertexMerge(Index old_count, const std::vector<MeshPart<D>>& parts) : merged_ids(parts.size()) {
+    std::vector<std::pair<int, Index>> old_source(static_cast<std::size_t>(old_count), {-1, kNoIndex});
+    for (std::size_t p = 0; p < parts.size(); ++p)
+      for (Index v = 0; v < parts[p].mesh.vertex_count(); ++v)
+        if (const Index g = parts[p].global_ids[v]; g != kNoIndex && old_source[g].first < 0) old_source[g] = {static_cast<int>(p), v};
+    old_ids.assign(old_source.size(), kNoIndex);
+    for (std::size_t g = 0; g < old_source.size(); ++g)
+      if (old_source[g].first >= 0) {
+        old_ids[g] = static_cast<Index>(source.size());
+        source.push_back(old_source[g]);
+      }
+    for (std::size_t p = 0; p < parts.size(); ++p)
+      for (Index v = 0; v < parts[p].mesh.vertex_count(); ++v) {
+        const Index g = parts[p].global_ids[v];
+        if (g == kNoIndex) source.emplace_back(static_cast<int>(p), v);
+        merged_ids[p].push_back(g == kNoIndex ? static_cast<Index>(source.size() - 1) : old_ids[g]);
+      }
+  }
+};
+
+template <int D>
+struct PartMerger {
+  const Mesh<D>& old_mesh;
+  const std::vector<MeshPart<D>>& parts;
+  const VertexMerge<D>& vertices;
+  MergedMesh<D>& out;
+  std::unordered_set<std::uint64_t> old_lines, merged_lines;
+
+  template <std::size_t N>
+  std::array<Index, N> mapped(std::size_t p, const std::array<Index, N>& ids) const {
+    std::array<Index, N> result{};
+    for (std::size_t i = 0; i < N; ++i) result[i] = vertices.merged_ids[p][ids[i]];
+    return result;
+  }
+
+  void add_vertices() {
+    for (const auto& [p, v] : vertices.source) out.mesh.add_vertex(parts[p].mesh.vertex(v), parts[p].mesh.vertex_ref(v));
+    out.interface_vertex.assign(vertices.source.size(), 0);
+    const EntityTags<D> old_tags(old_mesh);
+    for (Index g = 0; g < old_mesh.vertex_count(); ++g) {
+      if (vertices.old_ids[g] == kNoIndex) continue;
+      if (old_tags.corner[g]) out.mesh.corners().push_back(vertices.old_ids[g]);
+      if (old_tags.required_vertex[g]) out.mesh.required_vertices().push_back(vertices.old_ids[g]);
+    }
+  }
+
+  void add_part(std::size_t p) {
+    const Mesh<D>& part = parts[p].mesh;
+    const EntityTags<D> tags(part);
+    for (Index v : part.corners())
+      if (parts[p].global_ids[v] == kNoIndex) out.mesh.corners().push_back(vertices.merged_ids[p][v]);
+    for (Index k = 0; k < part.element_count(); ++k) out.mesh.add_element(mapped(p, part.element(k)), part.element_ref(k));
+    std::unordered_set<std::uint64_t> interface_edges;
+    for (Index f = 0; f < part.facet_count(); ++f) {
+      if (part.facet_ref(f) != kInterfaceRef) {
+        add_tagged_facet(out.mesh, mapped(p, part.facet(f)), part.facet_ref(f), tags, f);
+        continue;
+      }
+      for (int i = 0; i < D; ++i) {
+        out.interface_vertex[vertices.merged_ids[p][part.facet(f)[i]]] = 1;
+        interface_edges.insert(Mesh<D>::edge_key(part.facet(f)[i], part.facet(f)[(i + 1) % D]));
+      }
+    }
+    if constexpr (D == 3) add_lines(p, tags, interface_edges);
+  }
+
+  // A line on an interface edge that the whole mesh had not was made by the part's classification.
+  void add_lines(std::size_t p, const EntityTags<D>& tags, const std::unordered_set<std::uint64_t>& interface_edges) {
+    const Mesh<D>& part = parts[p].mesh;
+    const std::vector<Index>& global = parts[p].global_ids;
+    for (Index l = 0; l < part.line_count(); ++l) {
+      const auto& [a, b] = part.line(l);
+      if (interface_edges.contains(Mesh<D>::edge_key(a, b)) && !old_lines.contains(Mesh<D>::edge_key(global[a], global[b]))) continue;
+      const auto merged = mapped(p, part.line(l));
+      if (merged_lines.insert(Mesh<D>::edge_key(merged[0], merged[1])).second) add_tagged_line(out.mesh, merged, part.line_ref(l), tags, l);
+    }
+  }
+};
+
+}  // namespace
+
+template <int D>
+MergedMesh<D> merge_parts(const Mesh<D>& old_mesh, const std::vector<MeshPart<D>>& parts) {
+  const VertexMerge<D> vertices(old_mesh.vertex_count(), parts);
+  MergedMesh<D> out;
+  PartMerger<D> merger{old_mesh, parts, vertices, out, {}, {}};
+  for (const auto& [a, b] : old_mesh.lines()) merger.old_lines.insert(Mesh<D>::edge_key(a, b));
+  merger.add_vertices();
+  for (std::size_t p = 0; p < parts.size(); ++p) merger.add_part(p);
+  return out;
+}
+
+template std::vector<MeshPart<2>> split_mesh(const Mesh<2>&, std::span<const int>, int);
+template std::vector<MeshPart<3>> split_mesh(const Mesh<3>&, std::span<const int>, int);
+template MergedMesh<2> merge_parts(const Mesh<2>&, const std::vector<MeshPart<2>>&);
+template MergedMesh<3> merge_parts(const Mesh<3>&, const std::vector<MeshPart<3>>&);
+
+}  // namespace hocav

@@ -1,0 +1,47 @@
+// Parts of a mesh for the processes of a distributed adaptation (docs/distributed.md §Parts): the
+// split of a mesh along an element partition, with the faces between parts kept as required
+// facets, and the merge of the adapted parts by global vertex ids.
+#pragma once
+
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+
+namespace hocav {
+
+// The ref of the interface facets in a part: no input facet may carry it (docs/distributed.md).
+constexpr int kInterfaceRef = std::numeric_limits<int>::min();
+
+template <int D>
+struct MeshPart {
+  // P1, without topology. Its boundary facets are the mesh's on the part's elements plus the
+  // interface facets (ref kInterfaceRef), which are required, their vertices required too: no
+  // operator of the adaptation loop changes them.
+  Mesh<D> mesh;
+  // Per vertex, its id in the mesh the part came from; kNoIndex for a vertex the part made.
+  std::vector<Index> global_ids;
+};
+
+// Splits `mesh` (with topology, compact) into `part_count` parts, element k going to part
+// `part_of[k]`. A part's vertices keep the mesh's order, its elements and facets too.
+template <int D>
+std::vector<MeshPart<D>> split_mesh(const Mesh<D>& mesh, std::span<const int> part_of, int part_count);
+
+template <int D>
+struct MergedMesh {
+  Mesh<D> mesh;                        // P1, without topology
+  std::vector<char> interface_vertex;  // per vertex: it lay on an interface of the parts
+};
+
+// Merges adapted `parts` (compact) of `old_mesh`: the vertices they share by their global ids,
+// numbered first in `old_mesh`'s order, then the parts' new vertices part by part; the elements and
+// the facets part by part, without the interface facets; each feature line once. The tags of old
+// vertices (corners, required) are `old_mesh`'s: a part's classification tags its interface
+// vertices, which are no corners of the whole; feature lines on interface edges are kept only if
+// `old_mesh` had them, for the same reason.
+template <int D>
+MergedMesh<D> merge_parts(const Mesh<D>& old_mesh, const std::vector<MeshPart<D>>& parts);
+
+}  // namespace hocav

@@ -1,0 +1,121 @@
+#include "parallel/part_message.hpp"
+
+#include <cstring>
+#include <span>
+#include <type_traits>
+
+#include "base/error.hpp"
+
+namespace hocav {
+namespace {
+
+class ByteWriter {
+ public:
+  template <typename T>
+  void put(std::span<const T> values) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const std::uint64_t count = values.size();
+    append(&count, sizeof count);
+    append(values.data(), values.size_bytes());
+  }
+  std::vector<std::byte> bytes;
+
+ private:
+  void append(const void* data, std::size_t size) {
+    const auto* first = static_cast<const std::byte*>(data);
+    bytes.insert(bytes.end(), first, first + size);
+  }
+};
+
+class ByteReader {
+ public:
+  explicit ByteReader(const std::vector<std::byte>& bytes) : bytes_(bytes) {}
+  template <typename T>
+  std::vector<T> take() {
+    std::uint64_t count = 0;
+    copy(&count, sizeof count);
+    if (count > (bytes_.size() - offset_) / sizeof(T)) throw Error("a mesh part message is cut short");
+    std::vector<T> values(count);
+    copy(values.data(), count * sizeof(T));
+    return values;
+  }
+  bool at_end() const { return offset_ == bytes_.size(); }
+
+ private:
+  void copy(void* out, std::size_t size) {
+    if (size > bytes_.size() - offset_) throw Error("a mesh part message is cut short");
+    if (size > 0) std::memcpy(out, bytes_.data() + offset_, size);
+    offset_ += size;
+  }
+  const std::vector<std::byte>& bytes_;
+  std::size_t offset_ = 0;
+};
+
+template <typename T>
+std::span<const T> view(const std::vector<T>& values) {
+  return values;
+}
+
+}  // namespace
+
+template <int D>
+std::vector<std::byte> pack_part(const Mesh<D>& mesh, std::span<const Index> global_ids) {
+  ByteWriter out;
+  const int dimension = D;
+  out.put(std::span<const int>(&dimension, 1));
+  out.put(mesh.vertices());
+  out.put(mesh.vertex_refs());
+  out.put(global_ids);
+  out.put(mesh.elements());
+  out.put(mesh.element_refs());
+  out.put(mesh.facets());
+  out.put(mesh.facet_refs());
+  out.put(mesh.lines());
+  out.put(mesh.line_refs());
+  for (const auto* tags : {&mesh.corners(), &mesh.ridges(), &mesh.required_vertices(), &mesh.required_edges(), &mesh.required_triangles()})
+    out.put(view(*tags));
+  return std::move(out.bytes);
+}
+
+int packed_dimension(const std::vector<std::byte>& bytes) {
+  ByteReader in(bytes);
+  const std::vector<int> dimension = in.take<int>();
+  if (dimension.size() != 1) throw Error("a mesh part message has no dimension");
+  return dimension[0];
+}
+
+template <int D>
+MeshPart<D> unpack_part(const std::vector<std::byte>& bytes) {
+  ByteReader in(bytes);
+  if (in.take<int>() != std::vector<int>{D}) throw Error("a mesh part message is not of dimension " + std::to_string(D));
+  MeshPart<D> part;
+  Mesh<D>& mesh = part.mesh;
+  const auto vertices = in.take<Vec<D>>();
+  const auto vertex_refs = in.take<int>();
+  part.global_ids = in.take<Index>();
+  const auto elements = in.take<typename Mesh<D>::Element>();
+  const auto element_refs = in.take<int>();
+  const auto facets = in.take<typename Mesh<D>::Facet>();
+  const auto facet_refs = in.take<int>();
+  const auto lines = in.take<typename Mesh<D>::Line>();
+  const auto line_refs = in.take<int>();
+  const bool ids_fit = part.global_ids.empty() || part.global_ids.size() == vertices.size();
+  if (vertex_refs.size() != vertices.size() || !ids_fit || element_refs.size() != elements.size() || facet_refs.size() != facets.size() ||
+      line_refs.size() != lines.size())
+    throw Error("a mesh part message has arrays of different lengths");
+  for (std::size_t v = 0; v < vertices.size(); ++v) mesh.add_vertex(vertices[v], vertex_refs[v]);
+  for (std::size_t k = 0; k < elements.size(); ++k) mesh.add_element(elements[k], element_refs[k]);
+  for (std::size_t f = 0; f < facets.size(); ++f) mesh.add_facet(facets[f], facet_refs[f]);
+  for (std::size_t l = 0; l < lines.size(); ++l) mesh.add_line(lines[l], line_refs[l]);
+  for (auto* tags : {&mesh.corners(), &mesh.ridges(), &mesh.required_vertices(), &mesh.required_edges(), &mesh.required_triangles()})
+    *tags = in.take<Index>();
+  if (!in.at_end()) throw Error("a mesh part message has bytes past its end");
+  return part;
+}
+
+template std::vector<std::byte> pack_part(const Mesh<2>&, std::span<const Index>);
+template std::vector<std::byte> pack_part(const Mesh<3>&, std::span<const Index>);
+template MeshPart<2> unpack_part(const std::vector<std::byte>&);
+template MeshPart<3> unpack_part(const std::vector<std::byte>&);
+
+}  // namespace hocav
