@@ -2,7 +2,8 @@
 //                [--hgrad BETA] [--hausd D] [--angle DEG] [--surface p3|cad:FILE|none]
 //                [--jacobian-floor J] [--iterations N] [--threads N] [--report R.json] [--vtu V.vtu]
 // Metric-based adaptation to a unit mesh (split, collapse, swap, smooth; boundary points on the
-// geometry), then, with --order 2, the curving of `hocav curve` in the same metric.
+// geometry), then, with --order 2, the curving of `hocav curve` in the same metric. Under
+// `mpirun -np N` (N > 1) the P1 loop is distributed (docs/distributed.md); rank 0 reads, curves and writes.
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -16,6 +17,9 @@
 #include "io/atomic_output.hpp"
 #include "io/node_metrics.hpp"
 #include "io/output_set.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/distributed_adaptation.hpp"
+#include "parallel/part_message.hpp"
 #include "report/curved_vtu.hpp"
 #include "surface/boundary_choice.hpp"
 
@@ -73,12 +77,59 @@ AdaptationJob<D> adaptation_job(const AdaptOptions& o) {
   return job;
 }
 
+void print_iteration(const DistributedIteration& figures) {
+  std::cerr << "distributed: iteration " << figures.iteration << " of " << kDistributedIterations << ": " << process_count() << " parts, "
+            << figures.interface_faces << " interface faces, " << figures.interface_vertices << " of " << figures.vertices
+            << " vertices on the interfaces, " << figures.bytes_sent << " bytes sent, " << figures.seconds << " s (partition "
+            << figures.seconds_partition << " s)\n";
+}
+
+// With several processes (docs/distributed.md): the input and its metric to every process, and the
+// distributed loop in place of the serial one.
+template <int D>
+void distribute(Mesh<D>& mesh, std::vector<SymMat<D>>& metrics, AdaptationJob<D>& job, const AdaptOptions& o) {
+  mesh.forget_edges();
+  std::vector<std::byte> input = pack_part(mesh, {});
+  broadcast_bytes(input);
+  broadcast_values(metrics);
+  std::function<void(const DistributedIteration&)> on_iteration;
+  if (!o.quiet) on_iteration = print_iteration;
+  job.loop = [on_iteration](Mesh<D>& adapted, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
+                            const AdaptationSettings& settings) {
+    return adapt_distributed(adapted, metric, geometry, settings, on_iteration);
+  };
+}
+
+// The other processes: the same job on rank 0's input, serving its distributed loop.
+template <int D>
+void serve_adaptation(const AdaptOptions& o, const std::vector<std::byte>& input) {
+  MeshPart<D> part = unpack_part<D>(input);
+  part.mesh.build_topology();
+  std::vector<SymMat<D>> metrics;
+  broadcast_values(metrics);
+  AdaptationJob<D> job = adaptation_job<D>(o);
+  job.warn = {};  // rank 0 warns
+  job.pass_progress = {};
+  const auto setup = set_up_adaptation(std::move(part.mesh), std::move(metrics), job, o.input);
+  serve_distributed_adaptation(*setup->metric, setup->geometry.get(), setup->settings);
+}
+
+void serve_adaptation(const AdaptOptions& o) {
+  std::vector<std::byte> input;
+  broadcast_bytes(input);
+  if (packed_dimension(input) == 2)
+    serve_adaptation<2>(o, input);
+  else
+    serve_adaptation<3>(o, input);
+}
+
 template <int D>
 void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, OutputSet& outputs) {
   check_mesh_or_warn(mesh, o.input);
   std::vector<SymMat<D>> metrics;
   if (o.analytic.empty()) metrics = metrics_of_rows<D>(read_metric_for_mesh(o.metric, file, false));
   AdaptationJob<D> job = adaptation_job<D>(o);
+  if (process_count() > 1) distribute(mesh, metrics, job, o);
   std::optional<CurvingProgress> progress;  // drawn on a terminal, unless quiet
   job.before_curving = [&progress, &o](const Mesh<D>& adapted, CurvingOptions& curving) {
     progress.emplace(adapted, curving.passes, !o.quiet);
@@ -162,6 +213,7 @@ void add_adapt_command(CLI::App& app) {
   command->add_flag("-q,--quiet", o->quiet, "print nothing on success");
   command->callback([o] {
     check_options(*o);
+    if (process_rank() != 0) return serve_adaptation(*o);
     OutputSet outputs;
     declare_adapt_files(outputs, *o);
     MeshFileContent file = read_mesh_file(o->input);

@@ -5,12 +5,41 @@
 #include <csignal>
 #include <iostream>
 #include <new>
+#include <string>
+#include <string_view>
 
 #include "base/error.hpp"
 #include "cli/commands.hpp"
+#include "parallel/communicator.hpp"
+
+namespace {
+
+// Under mpirun with several processes only `adapt` is distributed (docs/distributed.md).
+bool runs_on_several_processes(int argc, char** argv) { return argc > 1 && std::string_view(argv[1]) == "adapt"; }
+
+// The message of an error on one of several processes, before they all stop.
+int fail(const std::string& message) {
+  constexpr int kFailure = 2;
+  if (hocav::process_count() == 1) {
+    std::cerr << message << '\n';
+    return kFailure;
+  }
+  if (hocav::process_rank() == 0)
+    std::cerr << message << '\n';
+  else
+    std::cerr << "(rank " << hocav::process_rank() << ") " << message << '\n';
+  hocav::abort_processes(kFailure);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   constexpr int kFailure = 2;
+  hocav::MpiSession mpi(argc, argv);
+  if (hocav::process_count() > 1 && !runs_on_several_processes(argc, argv)) {
+    if (hocav::process_rank() == 0) std::cerr << "hocav: only `hocav adapt` runs on several processes (docs/distributed.md)\n";
+    return kFailure;
+  }
   std::signal(SIGXFSZ, SIG_IGN);  // a file-size limit (ulimit -f) is a write error, reported and cleaned up, not a kill
   CLI::App app{"hocav: curved (P2) metric-based mesh adaptation", "hocav"};
   app.set_version_flag("--version", std::string("hocav ") + HOCAV_VERSION + " (commit " + HOCAV_GIT_COMMIT + ")");
@@ -28,14 +57,11 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     return app.exit(error) == 0 ? 0 : kFailure;  // --help and --version are "errors" that succeed
   } catch (const std::bad_alloc&) {
-    std::cerr << "hocav: out of memory: the job needs more memory than this machine could give\n";
-    return kFailure;
+    return fail("hocav: out of memory: the job needs more memory than this machine could give");
   } catch (const hocav::Error& error) {
-    std::cerr << "hocav: " << error.what() << '\n';
-    return kFailure;
+    return fail(std::string("hocav: ") + error.what());
   } catch (const std::exception& error) {
-    std::cerr << "hocav: unexpected error: " << error.what() << '\n';
-    return kFailure;
+    return fail(std::string("hocav: unexpected error: ") + error.what());
   }
   return 0;
 }

@@ -1,0 +1,119 @@
+#!/usr/bin/python3
+"""`mpirun -np N hocav adapt` (docs/distributed.md) against the serial `hocav adapt` on a small cube.
+
+With one process the output must be the serial one byte for byte. With 2, 3 and 4 processes
+(oversubscribed): the output is consistent and valid (`hocav stats`), keeps the input's element and
+facet refs, its corners and feature lines, and its unit share of edges and mean quality lie within
+1% of the serial run's. With --order 2 (curved on rank 0) the output is valid too.
+
+Usage: /usr/bin/python3 distributed_adapt_test.py <path-to-hocav>
+Exits 77 (skipped) when hocav was built without MPI.
+"""
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+SKIP = 77
+TOLERANCE = 0.01
+
+
+def run(args, cwd):
+    result = subprocess.run(args, cwd=cwd, capture_output=True, text=True, check=False)
+    if result.returncode != 0:
+        raise AssertionError(f"{' '.join(args)} failed ({result.returncode}):\n{result.stderr}")
+    return result.stdout
+
+
+def stats(hocav, mesh, cwd):
+    """`hocav stats` as a dict of its lines (name -> rest of the line)."""
+    lines = run([hocav, "stats", mesh], cwd).splitlines()
+    return {line[:22].strip(): line[22:].strip() for line in lines}
+
+
+def check_valid(figures, name):
+    assert figures["consistency"] == "ok", f"{name}: consistency {figures['consistency']}"
+    assert figures["non-positive P1"] == "0" or figures["order"] == "P2", f"{name}: {figures['non-positive P1']} non-positive elements"
+    minimum = float(re.match(r"min (\S+)", figures["normalized Jacobian"]).group(1))
+    assert minimum > 0, f"{name}: normalized Jacobian down to {minimum}"
+
+
+def ridge_length(path):
+    """The total length of the ridge lines of a 3D .mesh file (its Edges listed in Ridges)."""
+    with open(path) as file:
+        tokens = file.read().split()
+    sections, i = {}, 0
+    widths = {"Vertices": 4, "Edges": 3, "Ridges": 1}
+    while i < len(tokens):
+        if tokens[i] in widths:
+            count, width = int(tokens[i + 1]), widths[tokens[i]]
+            sections[tokens[i]] = [tokens[i + 2 + k * width:i + 2 + (k + 1) * width] for k in range(count)]
+            i += 2 + count * width
+        else:
+            i += 1
+    points = [[float(x) for x in row[:3]] for row in sections["Vertices"]]
+    total = 0.0
+    for (ridge,) in sections.get("Ridges", []):
+        a, b = (points[int(v) - 1] for v in sections["Edges"][int(ridge) - 1][:2])
+        total += sum((p - q) ** 2 for p, q in zip(a, b)) ** 0.5
+    return total
+
+
+def report(path):
+    with open(path) as file:
+        data = json.load(file)
+    return data["edge_length"]["unit_share"], data["quality"]["mean"]
+
+
+def main():
+    hocav = os.path.abspath(sys.argv[1])
+    if os.environ.get("HOCAV_WITH_MPI", "0") not in ("1", "ON", "TRUE"):
+        print("skipped: hocav was built without MPI (HOCAV_WITH_MPI off)")
+        return SKIP
+    mpirun = [os.environ.get("HOCAV_MPIEXEC") or "mpirun", "--oversubscribe"]
+    os.environ.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    with tempfile.TemporaryDirectory() as work:
+        run([hocav, "generate", "cube", "--h", "0.1", "-o", "cube.meshb"], work)
+        run([hocav, "metric", "cube.meshb", "--analytic", "linear", "--h-min", "0.03", "-o", "cube.solb"], work)
+        adapt = ["adapt", "cube.meshb", "--metric", "cube.solb", "--order", "1", "--threads", "1", "-q"]
+        run([hocav] + adapt + ["-o", "serial.meshb", "--report", "serial.json"], work)
+        serial = stats(hocav, "serial.meshb", work)
+        serial_unit, serial_quality = report(os.path.join(work, "serial.json"))
+
+        run(mpirun + ["-np", "1", hocav] + adapt + ["-o", "one.meshb"], work)
+        with open(os.path.join(work, "one.meshb"), "rb") as one, open(os.path.join(work, "serial.meshb"), "rb") as alone:
+            assert one.read() == alone.read(), "mpirun -np 1: not the serial output byte for byte"
+
+        run([hocav, "convert", "serial.meshb", "serial.mesh"], work)
+        serial_ridges = ridge_length(os.path.join(work, "serial.mesh"))
+        for processes in (2, 3, 4):
+            name = f"{processes}.mesh"
+            run(mpirun + ["-np", str(processes), hocav] + adapt + ["-o", name, "--report", f"{processes}.json"], work)
+            figures = stats(hocav, name, work)
+            check_valid(figures, name)
+            assert figures["corners"] == serial["corners"], f"{name}: {figures['corners']} corners, serial {serial['corners']}"
+            assert figures["required vertices"] == "0", f"{name}: {figures['required vertices']} required vertices (the interfaces' tags left)"
+            ridges = ridge_length(os.path.join(work, name))
+            assert abs(ridges - serial_ridges) <= 1e-9 * serial_ridges, f"{name}: ridge lines {ridges} long, serial {serial_ridges}"
+            assert re.findall(r"(\d+) \(", figures["element refs"]) == re.findall(r"(\d+) \(", serial["element refs"]), \
+                f"{name}: element refs {figures['element refs']} vs {serial['element refs']}"
+            assert re.findall(r"(\d+) \(", figures["facet refs"]) == re.findall(r"(\d+) \(", serial["facet refs"]), \
+                f"{name}: facet refs {figures['facet refs']} vs {serial['facet refs']}"
+            unit, quality = report(os.path.join(work, f"{processes}.json"))
+            print(f"{processes} processes: unit {unit:.4f} (serial {serial_unit:.4f}), mean quality {quality:.4f} (serial {serial_quality:.4f})")
+            assert abs(unit - serial_unit) <= TOLERANCE * serial_unit, f"{name}: unit share {unit} vs {serial_unit}"
+            assert abs(quality - serial_quality) <= TOLERANCE * serial_quality, f"{name}: mean quality {quality} vs {serial_quality}"
+
+        curved = ["adapt", "cube.meshb", "--metric", "cube.solb", "--order", "2", "-q", "-o", "curved.meshb"]
+        run(mpirun + ["-np", "2", hocav] + curved, work)
+        figures = stats(hocav, "curved.meshb", work)
+        assert figures["order"] == "P2", figures["order"]
+        check_valid(figures, "curved.meshb")
+    print("ok")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

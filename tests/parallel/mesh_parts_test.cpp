@@ -1,0 +1,118 @@
+// Split and merge of mesh parts (src/parallel/mesh_parts.hpp) and their messages
+// (src/parallel/part_message.hpp), without MPI: a mesh split along a partition and merged back
+// unchanged is the same mesh; every part is a consistent mesh whose interface faces are required
+// facets; a part survives its message unchanged.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+#include "adapt/vertex_classes.hpp"
+#include "cases/structured.hpp"
+#include "mesh/consistency.hpp"
+#include "parallel/mesh_parts.hpp"
+#include "parallel/part_message.hpp"
+
+namespace hocav {
+namespace {
+
+// A cube with its corners and feature lines (as the adaptation classifies them), and a partition of
+// its elements into `parts` slabs along x.
+struct SlicedCube {
+  Mesh<3> mesh = generate_cube(4);
+  std::vector<int> part_of;
+
+  explicit SlicedCube(int parts) {
+    mesh.build_topology();
+    classify_vertices(mesh, 45);
+    for (Index k = 0; k < mesh.element_count(); ++k) {
+      double x = 0;
+      for (Index v : mesh.element(k)) x += mesh.vertex(v)[0] / 4;
+      part_of.push_back(std::min(parts - 1, static_cast<int>(x * parts)));
+    }
+  }
+};
+
+template <typename Entities>
+std::multiset<std::vector<double>> placed(const Mesh<3>& mesh, const Entities& entities, std::span<const int> refs) {
+  std::multiset<std::vector<double>> out;
+  for (std::size_t i = 0; i < entities.size(); ++i) {
+    std::vector<double> row{static_cast<double>(refs[i])};
+    for (Index v : entities[i])
+      for (int d = 0; d < 3; ++d) row.push_back(mesh.vertex(v)[d]);
+    out.insert(row);
+  }
+  return out;
+}
+
+std::set<std::vector<double>> tagged_points(const Mesh<3>& mesh, const std::vector<Index>& vertices) {
+  std::set<std::vector<double>> out;
+  for (Index v : vertices) out.insert({mesh.vertex(v)[0], mesh.vertex(v)[1], mesh.vertex(v)[2]});
+  return out;
+}
+
+TEST(MeshParts, SplitAndMergeGiveTheSameMesh) {
+  for (int parts : {1, 2, 4}) {  // slabs along the grid planes of the 4 x 4 x 4 cells
+    SlicedCube cube(parts);
+    const auto split = split_mesh(cube.mesh, cube.part_of, parts);
+    ASSERT_EQ(split.size(), static_cast<std::size_t>(parts));
+    const MergedMesh<3> merged = merge_parts(cube.mesh, split);
+    const Mesh<3>& out = merged.mesh;
+    ASSERT_EQ(out.vertex_count(), cube.mesh.vertex_count());
+    for (Index v = 0; v < out.vertex_count(); ++v) EXPECT_EQ(out.vertex(v), cube.mesh.vertex(v)) << v;
+    EXPECT_EQ(placed(out, out.elements(), out.element_refs()), placed(cube.mesh, cube.mesh.elements(), cube.mesh.element_refs()));
+    EXPECT_EQ(placed(out, out.facets(), out.facet_refs()), placed(cube.mesh, cube.mesh.facets(), cube.mesh.facet_refs()));
+    EXPECT_EQ(placed(out, out.lines(), out.line_refs()), placed(cube.mesh, cube.mesh.lines(), cube.mesh.line_refs()));
+    EXPECT_EQ(tagged_points(out, out.corners()), tagged_points(cube.mesh, cube.mesh.corners()));
+    EXPECT_EQ(out.ridges().size(), cube.mesh.ridges().size());
+    EXPECT_TRUE(out.required_vertices().empty());
+    EXPECT_TRUE(out.required_triangles().empty());
+    const auto interface_count = std::count(merged.interface_vertex.begin(), merged.interface_vertex.end(), 1);
+    EXPECT_EQ(interface_count, parts == 1 ? 0 : (parts - 1) * 25) << "a 5 x 5 vertex plane between slabs";
+  }
+}
+
+TEST(MeshParts, PartsAreConsistentWithRequiredInterfaces) {
+  SlicedCube cube(3);
+  for (MeshPart<3> part : split_mesh(cube.mesh, cube.part_of, 3)) {
+    part.mesh.build_topology();
+    ConsistencyOptions options;
+    options.require_boundary_facets = true;
+    EXPECT_EQ(check_consistency(part.mesh, options), std::vector<std::string>{});
+    Index interface_facets = 0;
+    for (Index f = 0; f < part.mesh.facet_count(); ++f)
+      if (part.mesh.facet_ref(f) == kInterfaceRef) {
+        ++interface_facets;
+        EXPECT_NE(std::find(part.mesh.required_triangles().begin(), part.mesh.required_triangles().end(), f),
+                  part.mesh.required_triangles().end());
+        for (Index v : part.mesh.facet(f))
+          EXPECT_NE(std::find(part.mesh.required_vertices().begin(), part.mesh.required_vertices().end(), v),
+                    part.mesh.required_vertices().end());
+      }
+    EXPECT_GT(interface_facets, 0);
+    for (Index v = 0; v < part.mesh.vertex_count(); ++v) EXPECT_EQ(part.mesh.vertex(v), cube.mesh.vertex(part.global_ids[v]));
+  }
+}
+
+TEST(PartMessage, APartComesBackUnchanged) {
+  SlicedCube cube(2);
+  for (const MeshPart<3>& part : split_mesh(cube.mesh, cube.part_of, 2)) {
+    const std::vector<std::byte> bytes = pack_part(part.mesh, std::span<const Index>(part.global_ids));
+    EXPECT_EQ(packed_dimension(bytes), 3);
+    const MeshPart<3> back = unpack_part<3>(bytes);
+    EXPECT_EQ(pack_part(back.mesh, std::span<const Index>(back.global_ids)), bytes);
+    EXPECT_EQ(back.global_ids, part.global_ids);
+  }
+}
+
+TEST(PartMessage, RefusesBrokenMessages) {
+  SlicedCube cube(2);
+  const MeshPart<3> part = split_mesh(cube.mesh, cube.part_of, 2).front();
+  std::vector<std::byte> bytes = pack_part(part.mesh, std::span<const Index>(part.global_ids));
+  EXPECT_THROW(unpack_part<2>(bytes), Error);
+  bytes.pop_back();
+  EXPECT_THROW(unpack_part<3>(bytes), Error);
+}
+
+}  // namespace
+}  // namespace hocav
