@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Everything from a fresh Debian machine to a full test run: packages, the layout of the C++ files
 # (.clang-format), the optimized build and its tests (unit, end-to-end, third-party readers,
-# ParaView, Python), the same without gmsh, the sanitizer build and its tests, and a bounded fuzzing
+# ParaView, Python), the same without gmsh and MPI, the sanitizer build and its tests, and a bounded fuzzing
 # run of the file readers.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -28,7 +28,7 @@ echo "== release build and tests"
 bash scripts/build.sh release
 run_ctest --test-dir build/release --output-on-failure -j "$(nproc)"
 
-echo "== without gmsh (HOCAV_WITH_GMSH=OFF): build and tests (those that need gmsh skip)"
+echo "== without gmsh and MPI (HOCAV_WITH_GMSH=OFF, HOCAV_WITH_MPI=OFF): build and tests (those that need them skip)"
 bash scripts/build.sh nogmsh
 run_ctest --test-dir build/nogmsh --output-on-failure -j "$(nproc)"
 
