@@ -124,7 +124,11 @@ void preview_split(const AdaptationMesh<D>& am, Index a, Index b, SplitPreview<D
   p.made = true;
   std::sort(p.shell.begin(), p.shell.end());
   p.surfaces = boundary_through_edge(am, a, b, p, s);
-  p.point = split_point(am, 0.5 * (mesh.vertex(a) + mesh.vertex(b)), p.surfaces);
+  // A kept edge is never split (split_edge refuses it): its straight middle, not a projection onto
+  // a surface the geometry may not have (a distributed part's interface: docs/distributed.md).
+  const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
+  const bool kept = am.vertex_class(a) == VertexClass::kCorner && am.vertex_class(b) == VertexClass::kCorner && holds_required(mesh, p);
+  p.point = kept ? middle : split_point(am, middle, p.surfaces);
   p.metric = am.metric_at_point(p.point, a);
   p.cavity.assign(p.shell.begin(), p.shell.end());
   p.read.clear();
