@@ -43,6 +43,7 @@ struct EdgeSurfaces {
 template <int D>
 struct SplitPreview {
   bool made = false;  // false when (a, b) was no edge
+  bool kept = false;  // both ends are corners and a required facet or line holds the edge: never split
   std::vector<Index> shell, facets, lines, cavity;
   EdgeSurfaces surfaces;
   Vec<D> point;
@@ -127,8 +128,8 @@ void preview_split(const AdaptationMesh<D>& am, Index a, Index b, SplitPreview<D
   // A kept edge is never split (split_edge refuses it): its straight middle, not a projection onto
   // a surface the geometry may not have (a distributed part's interface: docs/distributed.md).
   const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
-  const bool kept = am.vertex_class(a) == VertexClass::kCorner && am.vertex_class(b) == VertexClass::kCorner && holds_required(mesh, p);
-  p.point = kept ? middle : split_point(am, middle, p.surfaces);
+  p.kept = am.vertex_class(a) == VertexClass::kCorner && am.vertex_class(b) == VertexClass::kCorner && holds_required(mesh, p);
+  p.point = p.kept ? middle : split_point(am, middle, p.surfaces);
   p.metric = am.metric_at_point(p.point, a);
   p.cavity.assign(p.shell.begin(), p.shell.end());
   p.read.clear();
@@ -168,8 +169,7 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const SplitPreview<D
                    SplitScratch<D>& s) {
   Mesh<D>& mesh = am.mesh();
   auto& work = am.workspace();
-  if (am.vertex_class(a) == VertexClass::kCorner && am.vertex_class(b) == VertexClass::kCorner && holds_required(mesh, p))
-    return Refusal::kClasses;
+  if (p.kept) return Refusal::kClasses;
   const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
   const VertexClass new_class = !p.surfaces.boundary ? VertexClass::kInterior
                                 : p.lines.empty()    ? VertexClass::kSurface
