@@ -17,8 +17,9 @@ constexpr double kConvergedChange = 2.5e-3;
 // The loop's window (docs/adaptation.md §The loop): while it is open, a collapse may make edges up
 // to kOpenCollapseLength, which the next split cuts; short edges that no collapse within √2 can
 // remove then go. It closes for good when a pass after the busiest one changes more than
-// kStalledChange of the pass before it: what is left is split/collapse ping-pong, and the loop then
-// converges with the closed window's rule (no collapse makes work for the next split).
+// kStalledChange of the pass before it, and not more than 1 / kStalledChange of it (a jump is new
+// work, such as the end of the split's coarse phase): what is left is split/collapse ping-pong, and
+// the loop then converges with the closed window's rule (no collapse makes work for the next split).
 constexpr double kOpenCollapseLength = 2.0;
 constexpr double kStalledChange = 0.9;
 
@@ -32,7 +33,8 @@ bool stalled(const std::vector<AdaptationPass>& passes) {
   for (std::size_t i = 0; i + 1 < passes.size(); ++i) busiest = std::max(busiest, changes(passes[i]));
   const Index before = changes(passes[passes.size() - 2]);
   const bool past_the_busiest = before < busiest;
-  return past_the_busiest && static_cast<double>(changes(passes.back())) > kStalledChange * static_cast<double>(before);
+  const auto last = static_cast<double>(changes(passes.back()));
+  return past_the_busiest && last > kStalledChange * static_cast<double>(before) && kStalledChange * last <= static_cast<double>(before);
 }
 
 // Runs `step` and adds its wall time to `seconds`.

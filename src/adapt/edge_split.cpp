@@ -133,7 +133,10 @@ void preview_split(const AdaptationMesh<D>& am, Index a, Index b, SplitPreview<D
   p.metric = am.metric_at_point(p.point, a);
   p.cavity.assign(p.shell.begin(), p.shell.end());
   p.read.clear();
-  if (!p.surfaces.boundary) grow_delaunay_cavity(mesh, p.cavity, p.read, p.point, p.metric.metric);
+  if (!p.surfaces.boundary) {
+    grow_delaunay_cavity(mesh, p.cavity, p.read, p.point, p.metric.metric);
+    make_star_shaped(mesh, p.cavity, p.shell.size(), p.read, p.point);
+  }
   p.read.insert(p.read.end(), p.cavity.begin(), p.cavity.end());
   p.read_vertices.clear();
   for (Index k : p.read) p.read_vertices.push_back(mesh.element(k));

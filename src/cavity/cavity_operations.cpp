@@ -1,13 +1,19 @@
 #include "cavity/cavity_operations.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "base/small_set.hpp"
 #include "geom/barycentric.hpp"
 #include "mesh/ball_and_shell.hpp"
+#include "mesh/measure.hpp"
 
 namespace hocav {
 namespace {
+
+// A new element thinner than this times its longest edge to the power D is flat: the cavity
+// operator's bound (CavityOptions::min_relative_measure).
+constexpr double kVisibleMeasure = 1e-12;
 
 template <int D>
 CavityStatus plan_and_commit(Mesh<D>& mesh, CavityWorkspace<D>& work, Index vertex, const CavityOptions& options) {
@@ -47,7 +53,55 @@ bool in_circumsphere(const Mesh<D>& mesh, Index k, const Vec<D>& x, const SymMat
   return quadratic_form(metric, x - mesh.vertex(e[0]) - offset) < radius2 * (1 - 1e-12);
 }
 
+// Whether element k with its vertex opposite `face` moved to x keeps a positive measure (beyond
+// the cavity operator's flatness bound): then x sees that face of k from inside.
+template <int D>
+bool sees_face(const Mesh<D>& mesh, Index k, int face, const Vec<D>& x) {
+  SimplexPoints<D> points;
+  for (int i = 0; i <= D; ++i) points[i] = i == face ? x : mesh.vertex(mesh.element(k)[i]);
+  double longest = 0;
+  for (int i = 0; i <= D; ++i)
+    for (int j = 0; j < i; ++j) longest = std::max(longest, norm(points[i] - points[j]));
+  return signed_measure<D>(points) > kVisibleMeasure * std::pow(longest, D);
+}
+
+// The first element of the cavity past its first `kept` that has a boundary face x does not see
+// (cavity.size(): none).
+template <int D>
+std::size_t first_hidden(const Mesh<D>& mesh, const std::vector<Index>& cavity, std::size_t kept, const Vec<D>& x) {
+  for (std::size_t i = kept; i < cavity.size(); ++i)
+    for (int face = 0; face <= D; ++face) {
+      const Index n = mesh.neighbor(cavity[i], face);
+      if ((n == kNoIndex || !small_set_holds(cavity, n)) && !sees_face(mesh, cavity[i], face, x)) return i;
+    }
+  return cavity.size();
+}
+
+// Keeps the elements of the cavity that its first `kept` reach through faces inside it; moves the
+// others to `dropped`.
+template <int D>
+void keep_connected(const Mesh<D>& mesh, std::vector<Index>& cavity, std::size_t kept, std::vector<Index>& dropped) {
+  std::vector<Index> reached(cavity.begin(), cavity.begin() + static_cast<std::ptrdiff_t>(kept));
+  for (std::size_t next = 0; next < reached.size(); ++next)
+    for (int face = 0; face <= D; ++face) {
+      const Index n = mesh.neighbor(reached[next], face);
+      if (n != kNoIndex && small_set_holds(cavity, n) && !small_set_holds(reached, n)) reached.push_back(n);
+    }
+  for (Index k : cavity)
+    if (!small_set_holds(reached, k)) dropped.push_back(k);
+  cavity.swap(reached);
+}
+
 }  // namespace
+
+template <int D>
+void make_star_shaped(const Mesh<D>& mesh, std::vector<Index>& cavity, std::size_t kept, std::vector<Index>& dropped, const Vec<D>& x) {
+  for (std::size_t hidden = first_hidden(mesh, cavity, kept, x); hidden < cavity.size(); hidden = first_hidden(mesh, cavity, kept, x)) {
+    dropped.push_back(cavity[hidden]);
+    cavity.erase(cavity.begin() + static_cast<std::ptrdiff_t>(hidden));
+    keep_connected(mesh, cavity, kept, dropped);
+  }
+}
 
 template <int D>
 void grow_delaunay_cavity(const Mesh<D>& mesh, std::vector<Index>& cavity, std::vector<Index>& refused, const Vec<D>& x,
@@ -113,6 +167,7 @@ CavityStatus insert_vertex(Mesh<D>& mesh, CavityWorkspace<D>& work, const Vec<D>
 
 #define HOCAV_INSTANTIATE(D)                                                                                                     \
   template void grow_delaunay_cavity(const Mesh<D>&, std::vector<Index>&, std::vector<Index>&, const Vec<D>&, const SymMat<D>&); \
+  template void make_star_shaped(const Mesh<D>&, std::vector<Index>&, std::size_t, std::vector<Index>&, const Vec<D>&);          \
   template CavityStatus reinsert_vertex(Mesh<D>&, CavityWorkspace<D>&, Index, const CavityOptions&);                             \
   template CavityStatus collapse_edge(Mesh<D>&, CavityWorkspace<D>&, Index, Index, CavityOptions);                               \
   template CavityStatus swap_edge(Mesh<D>&, CavityWorkspace<D>&, Index, Index, Index, const CavityOptions&);                     \

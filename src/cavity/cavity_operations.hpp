@@ -39,6 +39,14 @@ template <int D>
 void grow_delaunay_cavity(const Mesh<D>& mesh, std::vector<Index>& cavity, std::vector<Index>& refused, const Vec<D>& x,
                           const SymMat<D>& metric);
 
+// Drops from `cavity` the elements past its first `kept` that keep it from being star-shaped from x:
+// one with a boundary face that x sees from outside (its star element would be flat or inverted),
+// then whatever only that element joined to the first `kept`; until x sees every boundary face of
+// the elements past the first `kept` (mmg's correction of a Delaunay cavity in a mesh that is not
+// Delaunay). The dropped elements go to `dropped`. Reads the mesh only.
+template <int D>
+void make_star_shaped(const Mesh<D>& mesh, std::vector<Index>& cavity, std::size_t kept, std::vector<Index>& dropped, const Vec<D>& x);
+
 // Inserts a new vertex at x (found from `hint`, an element near x). The cavity holds the elements,
 // connected to the one containing x, whose circumsphere in the constant metric `metric` contains x
 // (Bowyer–Watson in the metric space). Returns the new vertex's id through `inserted`.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 
 #include "mesh/mesh.hpp"
 
@@ -12,6 +13,15 @@ inline double signed_measure(const Vec2& p0, const Vec2& p1, const Vec2& p2) { r
 
 inline double signed_measure(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
   return determinant(p1 - p0, p2 - p0, p3 - p0) / 6.0;
+}
+
+// The same for D + 1 points.
+template <int D>
+double signed_measure(const std::array<Vec<D>, D + 1>& p) {
+  if constexpr (D == 2)
+    return signed_measure(p[0], p[1], p[2]);
+  else
+    return signed_measure(p[0], p[1], p[2], p[3]);
 }
 
 template <int D>

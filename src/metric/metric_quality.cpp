@@ -6,17 +6,6 @@
 #include "mesh/simplex.hpp"
 
 namespace hocav {
-namespace {
-
-template <int D>
-double signed_simplex_measure(const SimplexPoints<D>& p) {
-  if constexpr (D == 2)
-    return signed_measure(p[0], p[1], p[2]);
-  else
-    return signed_measure(p[0], p[1], p[2], p[3]);
-}
-
-}  // namespace
 
 template <int D>
 double metric_mean_ratio(const SimplexPoints<D>& points, const SymMat<D>& metric) {
@@ -25,7 +14,7 @@ double metric_mean_ratio(const SimplexPoints<D>& points, const SymMat<D>& metric
     auto [a, b] = edge_vertices<D>(e);
     squared_lengths += quadratic_form(metric, points[static_cast<std::size_t>(b)] - points[static_cast<std::size_t>(a)]);
   }
-  const double measure = std::sqrt(determinant(metric)) * signed_simplex_measure<D>(points);
+  const double measure = std::sqrt(determinant(metric)) * signed_measure<D>(points);
   if constexpr (D == 2) {
     return 4 * std::sqrt(3.0) * measure / squared_lengths;
   } else {
