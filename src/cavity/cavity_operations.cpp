@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "base/small_set.hpp"
 #include "geom/barycentric.hpp"
@@ -59,48 +60,55 @@ template <int D>
 bool sees_face(const Mesh<D>& mesh, Index k, int face, const Vec<D>& x) {
   SimplexPoints<D> points;
   for (int i = 0; i <= D; ++i) points[i] = i == face ? x : mesh.vertex(mesh.element(k)[i]);
-  double longest = 0;
+  const double measure = signed_measure<D>(points);
+  if (!(measure > 0)) return false;
+  double longest2 = 0;
   for (int i = 0; i <= D; ++i)
-    for (int j = 0; j < i; ++j) longest = std::max(longest, norm(points[i] - points[j]));
-  return signed_measure<D>(points) > kVisibleMeasure * std::pow(longest, D);
+    for (int j = 0; j < i; ++j) longest2 = std::max(longest2, dot(points[i] - points[j], points[i] - points[j]));
+  return measure > kVisibleMeasure * std::pow(longest2, 0.5 * D);
 }
 
-// The first element of the cavity past its first `kept` that has a boundary face x does not see
-// (cavity.size(): none).
+// Whether x sees every face of element k on the cavity's boundary.
 template <int D>
-std::size_t first_hidden(const Mesh<D>& mesh, const std::vector<Index>& cavity, std::size_t kept, const Vec<D>& x) {
-  for (std::size_t i = kept; i < cavity.size(); ++i)
-    for (int face = 0; face <= D; ++face) {
-      const Index n = mesh.neighbor(cavity[i], face);
-      if ((n == kNoIndex || !small_set_holds(cavity, n)) && !sees_face(mesh, cavity[i], face, x)) return i;
-    }
-  return cavity.size();
+bool sees_boundary_faces(const Mesh<D>& mesh, std::span<const Index> cavity, Index k, const Vec<D>& x) {
+  for (int face = 0; face <= D; ++face) {
+    const Index n = mesh.neighbor(k, face);
+    if ((n == kNoIndex || !small_set_holds(cavity, n)) && !sees_face(mesh, k, face, x)) return false;
+  }
+  return true;
 }
 
-// Keeps the elements of the cavity that its first `kept` reach through faces inside it; moves the
-// others to `dropped`.
+// Moves the elements past the cavity's first `kept` that have a boundary face x does not see to
+// `dropped`; false when there was none.
+template <int D>
+bool drop_hidden(const Mesh<D>& mesh, std::vector<Index>& cavity, std::size_t kept, std::vector<Index>& dropped, const Vec<D>& x) {
+  const std::size_t dropped_before = dropped.size();
+  for (std::size_t i = kept; i < cavity.size(); ++i)
+    if (!sees_boundary_faces<D>(mesh, cavity, cavity[i], x)) dropped.push_back(cavity[i]);
+  if (dropped.size() == dropped_before) return false;
+  std::erase_if(cavity, [&](Index k) { return small_set_holds(std::span<const Index>(dropped).subspan(dropped_before), k); });
+  return true;
+}
+
+// Moves the elements past the cavity's first `kept` that the first `kept` do not reach through
+// faces inside the cavity to `dropped`; the cavity keeps the reached ones, in the order reached.
 template <int D>
 void keep_connected(const Mesh<D>& mesh, std::vector<Index>& cavity, std::size_t kept, std::vector<Index>& dropped) {
-  std::vector<Index> reached(cavity.begin(), cavity.begin() + static_cast<std::ptrdiff_t>(kept));
-  for (std::size_t next = 0; next < reached.size(); ++next)
+  std::size_t reached = kept;  // cavity[0 .. reached) are reached; the rest are to be sorted
+  for (std::size_t next = 0; next < reached; ++next)
     for (int face = 0; face <= D; ++face) {
-      const Index n = mesh.neighbor(reached[next], face);
-      if (n != kNoIndex && small_set_holds(cavity, n) && !small_set_holds(reached, n)) reached.push_back(n);
+      const auto found = std::find(cavity.begin() + static_cast<std::ptrdiff_t>(reached), cavity.end(), mesh.neighbor(cavity[next], face));
+      if (found != cavity.end()) std::iter_swap(found, cavity.begin() + static_cast<std::ptrdiff_t>(reached++));
     }
-  for (Index k : cavity)
-    if (!small_set_holds(reached, k)) dropped.push_back(k);
-  cavity.swap(reached);
+  dropped.insert(dropped.end(), cavity.begin() + static_cast<std::ptrdiff_t>(reached), cavity.end());
+  cavity.resize(reached);
 }
 
 }  // namespace
 
 template <int D>
 void make_star_shaped(const Mesh<D>& mesh, std::vector<Index>& cavity, std::size_t kept, std::vector<Index>& dropped, const Vec<D>& x) {
-  for (std::size_t hidden = first_hidden(mesh, cavity, kept, x); hidden < cavity.size(); hidden = first_hidden(mesh, cavity, kept, x)) {
-    dropped.push_back(cavity[hidden]);
-    cavity.erase(cavity.begin() + static_cast<std::ptrdiff_t>(hidden));
-    keep_connected(mesh, cavity, kept, dropped);
-  }
+  while (drop_hidden(mesh, cavity, kept, dropped, x)) keep_connected(mesh, cavity, kept, dropped);
 }
 
 template <int D>
