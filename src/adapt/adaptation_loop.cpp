@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <numbers>
 
 #include "adapt/adaptation_mesh.hpp"
@@ -22,13 +23,24 @@ constexpr double kConvergedChange = 2.5e-3;
 // the loop then converges with the closed window's rule (no collapse makes work for the next split).
 constexpr double kOpenCollapseLength = 2.0;
 constexpr double kStalledChange = 0.9;
+// A pass whose vertex count moves by less than this share of its splits plus collapses only moves
+// vertices about: ping-pong too, which the window's rule would take passes more to see (on the
+// sphere shell the three passes before the window closed each split and collapsed 6–7k edges for
+// a net change of −36 to +515 vertices).
+constexpr double kPingPongShare = 0.05;
 
 bool window_open(const AdaptationLimits& limits) { return limits.collapse_new_length > limits.split_length; }
 
 Index changes(const AdaptationPass& pass) { return pass.splits.done + pass.collapses.done; }
 
+bool ping_pong(const AdaptationPass& before, const AdaptationPass& last) {
+  const double net = std::abs(static_cast<double>(last.vertices - before.vertices));
+  return net < kPingPongShare * static_cast<double>(changes(last));
+}
+
 bool stalled(const std::vector<AdaptationPass>& passes) {
   if (passes.size() < 2) return false;
+  if (ping_pong(passes[passes.size() - 2], passes.back())) return true;
   Index busiest = 0;
   for (std::size_t i = 0; i + 1 < passes.size(); ++i) busiest = std::max(busiest, changes(passes[i]));
   const Index before = changes(passes[passes.size() - 2]);
