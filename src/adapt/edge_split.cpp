@@ -32,14 +32,16 @@ struct alignas(64) SplitScratch {  // a cache line of its own: each thread write
 struct EdgeSurfaces {
   bool boundary = false, line = false;
   int ref_a = 0, ref_b = 0;
+
+  bool operator==(const EdgeSurfaces&) const = default;
 };
 
 // What splitting an edge needs, found by reading the mesh (docs/adaptation.md §Threads): its shell
 // (sorted, so that nothing depends on where the shell's walk began) and boundary pieces, where the
 // new vertex goes and the metric there and, inside the domain, its Delaunay cavity. Previews of a
 // chunk of candidates are made on the pool's threads at once; a split uses its preview while every
-// element the preview read still holds the same vertices (a new preview would then find the same),
-// and makes it again otherwise.
+// element the preview read still holds the same vertices and its boundary pieces are the same (a
+// new preview would then find the same), and makes it again otherwise.
 template <int D>
 struct SplitPreview {
   bool made = false;  // false when (a, b) was no edge
@@ -112,6 +114,15 @@ Vec<D> split_point(const AdaptationMesh<D>& am, const Vec<D>& middle, const Edge
   if (!surfaces.boundary || !geometry) return middle;
   if (surfaces.line) return geometry->project_on_ridge(middle, surfaces.ref_a, surfaces.ref_b);
   return geometry->project(middle, {surfaces.ref_a}).point;
+}
+
+// Whether the preview's boundary pieces are still the edge's: facet and line ids can change while
+// every element the preview read keeps its vertices (a split nearby re-stars them). `fresh` is
+// scratch.
+template <int D>
+bool same_boundary(const AdaptationMesh<D>& am, Index a, Index b, const SplitPreview<D>& p, SplitPreview<D>& fresh, SplitScratch<D>& s) {
+  fresh.shell.assign(p.shell.begin(), p.shell.end());
+  return boundary_through_edge(am, a, b, fresh, s) == p.surfaces && fresh.facets == p.facets && fresh.lines == p.lines;
 }
 
 // The preview of splitting edge (a, b) on the mesh as it is; reads the mesh only.
@@ -225,6 +236,7 @@ OperationCount split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& l
   }
   std::vector<SplitScratch<D>> scratch(static_cast<std::size_t>(pool.thread_count()));
   std::vector<SplitPreview<D>> previews;
+  SplitPreview<D> fresh;
   // One thread previews each candidate at its turn (never stale); more preview a chunk at once.
   const std::size_t chunk_size = pool.thread_count() > 1 ? kPreviewChunk : 1;
   for (std::size_t start = 0; start < candidates.size(); start += chunk_size) {
@@ -234,7 +246,8 @@ OperationCount split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& l
                 [&](std::size_t worker, std::size_t i) { preview_split(am, chunk[i].a, chunk[i].b, previews[i], scratch[worker]); });
     for (std::size_t i = 0; i < chunk.size(); ++i) {
       const EdgeCandidate& c = chunk[i];
-      if (!previews[i].current(am.mesh())) preview_split(am, c.a, c.b, previews[i], scratch.front());
+      if (!previews[i].current(am.mesh()) || !same_boundary(am, c.a, c.b, previews[i], fresh, scratch.front()))
+        preview_split(am, c.a, c.b, previews[i], scratch.front());
       if (!previews[i].made || am.edge_length(c.a, c.b) <= limits.split_length) continue;  // gone, or no longer long
       count.add(split_edge(am, c.a, c.b, previews[i], limits, SplitPurpose::kLength, scratch.front()));
     }
