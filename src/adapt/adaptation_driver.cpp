@@ -73,6 +73,17 @@ void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGe
   adapted.report.peak_memory_bytes = peak_memory_bytes();
 }
 
+template <int D>
+void adapt_curved_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const CurvingOptions& options, int max_passes) {
+  AdaptationReport& report = adapted.report;
+  report.curved_passes = adapt_curved(mesh, *adapted.field, cavity_options(options), max_passes);
+  check_curved_consistency(mesh);
+  report.output_vertices = mesh.vertex_count();
+  report.output_elements = mesh.element_count();
+  measure_curved_output(*report.curving, mesh, *adapted.field);
+  report.peak_memory_bytes = peak_memory_bytes();
+}
+
 namespace {
 
 // Sizes below this share of the input's bounding-box diagonal are never asked for: elements that
@@ -152,6 +163,8 @@ AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics,
     setup->geometry.reset();                           // a CAD model is open once at a time (gmsh's one model per thread)
     const auto curving_geometry = job.geometry(mesh);  // of the adapted boundary
     curve_adapted_mesh(adapted, mesh, curving_geometry.get(), curving);
+    if (job.curved) adapt_curved_mesh(adapted, mesh, curving, job.iterations);
+    adapted.report.curved_measures = measure_curved(mesh, *adapted.field);
   }
   return adapted;
 }
@@ -166,6 +179,8 @@ template AdaptedMesh<2> adapt_in_metric(Mesh<2>&, const AdaptationMetric<2>&, co
                                         const AdaptationLoop<2>&);
 template AdaptedMesh<3> adapt_in_metric(Mesh<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*, const AdaptationSettings&,
                                         const AdaptationLoop<3>&);
+template void adapt_curved_mesh(AdaptedMesh<2>&, Mesh<2>&, const CurvingOptions&, int);
+template void adapt_curved_mesh(AdaptedMesh<3>&, Mesh<3>&, const CurvingOptions&, int);
 template void curve_adapted_mesh(AdaptedMesh<2>&, Mesh<2>&, const BoundaryGeometry<2>*, const CurvingOptions&);
 template void curve_adapted_mesh(AdaptedMesh<3>&, Mesh<3>&, const BoundaryGeometry<3>*, const CurvingOptions&);
 

@@ -39,6 +39,11 @@ AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric,
 template <int D>
 void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGeometry<D>* geometry, const CurvingOptions& options);
 
+// Then runs at most `max_passes` curved passes on the curved `mesh` (adapt_curved, in `adapted.field`),
+// and measures the output again into the report.
+template <int D>
+void adapt_curved_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const CurvingOptions& options, int max_passes);
+
 // `hocav adapt`'s job with its options as values (docs/usage.md): the metric set up, the memory
 // checked, the adaptation, then (with `curving`) the curving.
 template <int D>
@@ -51,6 +56,7 @@ struct AdaptationJob {
   int iterations = 20;                    // AdaptationSettings::max_passes
   int threads = 1;                        // AdaptationSettings::threads
   std::optional<CurvingOptions> curving;  // order 2
+  bool curved = false;                    // then curved passes (needs curving; at most `iterations`)
   // The boundary geometry of a mesh (the input's for the adaptation, the adapted one's for the
   // curving); may return null (no geometry).
   std::function<std::unique_ptr<BoundaryGeometry<D>>(const Mesh<D>&)> geometry;

@@ -50,26 +50,38 @@ CurvingRun curve_with_boundary(Mesh<D>& mesh, const MetricField<D>& field, const
   return run;
 }
 
+P2CavityOptions cavity_options(const CurvingOptions& options) {
+  P2CavityOptions cavity;
+  cavity.jacobian_floor = options.jacobian_floor;
+  cavity.optimizer.rule = options.quadrature;
+  return cavity;
+}
+
+template <int D>
+void check_curved_consistency(const Mesh<D>& mesh) {
+  ConsistencyOptions consistency;
+  consistency.require_positive_orientation = false;
+  if (auto problems = check_consistency(mesh, consistency); !problems.empty())
+    throw Error("internal error: the curved mesh is inconsistent: " + problems.front());
+}
+
 template <int D>
 CurvingReport curve_in_metric(Mesh<D>& mesh, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
                               const CurvingOptions& options) {
   ReinsertionOptions reinsertion;
-  reinsertion.cavity.jacobian_floor = options.jacobian_floor;
-  reinsertion.cavity.optimizer.rule = options.quadrature;
+  reinsertion.cavity = cavity_options(options);
   reinsertion.passes = options.passes;
   reinsertion.threads = options.threads;
   reinsertion.progress = options.progress;
   CurvingReport report = curve_with_boundary<D>(mesh, field, geometry, reinsertion).report;
-
-  ConsistencyOptions consistency;
-  consistency.require_positive_orientation = false;  // a valid curved element may be an inverted P1 one
-  if (auto problems = check_consistency(mesh, consistency); !problems.empty())
-    throw Error("internal error: the curved mesh is inconsistent: " + problems.front());
+  check_curved_consistency(mesh);
   return report;
 }
 
 template CurvingRun curve_with_boundary(Mesh<2>&, const MetricField<2>&, const BoundaryGeometry<2>*, const ReinsertionOptions&);
 template CurvingRun curve_with_boundary(Mesh<3>&, const MetricField<3>&, const BoundaryGeometry<3>*, const ReinsertionOptions&);
+template void check_curved_consistency(const Mesh<2>&);
+template void check_curved_consistency(const Mesh<3>&);
 template CurvingReport curve_in_metric(Mesh<2>&, const MetricField<2>&, const BoundaryGeometry<2>*, const CurvingOptions&);
 template CurvingReport curve_in_metric(Mesh<3>&, const MetricField<3>&, const BoundaryGeometry<3>*, const CurvingOptions&);
 

@@ -33,6 +33,14 @@ struct CurvingOptions {
   std::function<void(double)> progress;
 };
 
+// The P2 cavity operator's options of a curving (its floor and quadrature).
+P2CavityOptions cavity_options(const CurvingOptions& options);
+
+// Error ("internal error: ...") unless the curved `mesh` is consistent (a valid curved element may be
+// an inverted P1 one).
+template <int D>
+void check_curved_consistency(const Mesh<D>& mesh);
+
 // The paper's algorithm on `mesh` (P1 or P2; the field's back mesh is its P1 copy, or any mesh
 // covering it): boundary nodes proposed from `geometry` (may be null), every volume vertex
 // reinserted, the result checked consistent (Error otherwise) and measured.

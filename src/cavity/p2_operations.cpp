@@ -173,6 +173,13 @@ double P2Operations<D>::edge_length(Index a, Index b) const {
 }
 
 template <int D>
+double P2Operations<D>::straight_length(Index a, Index b) const {
+  const auto sa = static_cast<std::size_t>(a), sb = static_cast<std::size_t>(b);
+  const Vec<D> A = mesh_.vertex(a), B = mesh_.vertex(b);
+  return high_precision_edge_length(field_, A, B, log_metrics_[sa], log_metrics_[sb], 0.5 * (A + B), hints_[sa]);
+}
+
+template <int D>
 double P2Operations<D>::quality(Index k) const {
   std::array<SymMat<D>, D + 1> vertex_log_metrics;
   for (int i = 0; i <= D; ++i)

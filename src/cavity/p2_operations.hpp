@@ -36,6 +36,9 @@ class P2Operations {
   // The Riemannian length of the curved edge (a, b) (high-precision quadrature of the length the
   // optimizer minimizes), and the curved mean ratio of element k (src/curve/curved_quality.hpp).
   double edge_length(Index a, Index b) const;
+  // The Riemannian length of the straight segment between vertices a and b (an edge or not): the
+  // curved edge the optimizer would make is no longer (docs/curving.md §Curved operations).
+  double straight_length(Index a, Index b) const;
   double quality(Index k) const;
 
   const SymMat<D>& log_metric(Index v) const { return log_metrics_[static_cast<std::size_t>(v)]; }

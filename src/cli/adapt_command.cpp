@@ -1,6 +1,6 @@
 // hocav adapt IN --metric SOL | --analytic NAME -o OUT [--order 2|1] [--hmin H] [--hmax H]
 //                [--hgrad BETA] [--hausd D] [--angle DEG] [--surface p3|cad:FILE|none]
-//                [--jacobian-floor J] [--iterations N] [--threads N] [--report R.json] [--vtu V.vtu]
+//                [--curved] [--jacobian-floor J] [--iterations N] [--threads N] [--report R.json] [--vtu V.vtu]
 // Metric-based adaptation to a unit mesh (split, collapse, swap, smooth; boundary points on the
 // geometry), then, with --order 2, the curving of `hocav curve` in the same metric. Under
 // `mpirun -np N` (N > 1) the P1 loop is distributed (docs/distributed.md); rank 0 reads, curves and writes.
@@ -35,11 +35,13 @@ struct AdaptOptions {
   double jacobian_floor = 0.01;
   int iterations = 20;
   int threads = every_core();
+  bool curved = false;
   bool quiet = false;
 };
 
 void check_options(const AdaptOptions& o) {
   if (o.metric.empty() == o.analytic.empty()) throw Error("give exactly one metric source: --metric SOL or --analytic NAME");
+  if (o.curved && o.order == 1) throw Error("--curved adapts the curved mesh: it needs --order 2");
   if (o.h_min && o.h_max && *o.h_min > *o.h_max) throw Error("--hmin must not exceed --hmax");
   if (o.gradation && !o.analytic.empty())
     throw Error("--hgrad grades a metric given on a mesh: make one with `hocav metric --analytic NAME --gradation BETA`");
@@ -71,6 +73,7 @@ AdaptationJob<D> adaptation_job(const AdaptOptions& o) {
     job.curving.emplace();
     job.curving->jacobian_floor = o.jacobian_floor;
     job.curving->threads = o.threads;
+    job.curved = o.curved;
   }
   job.geometry = [surface = boundary_choice_named(o.surface)](const Mesh<D>& mesh) { return make_boundary_geometry<D>(surface, mesh); };
   if (!o.quiet) job.pass_progress = [](int pass, int cap) { std::cerr << "adapting: pass " << pass << " (at most " << cap << ")\n"; };
@@ -197,6 +200,8 @@ void add_adapt_command(CLI::App& app) {
       ->add_option("--surface", o->surface,
                    "geometry of new boundary points and P2 nodes: p3 (a cubic surrogate of the input boundary), cad:FILE, none")
       ->capture_default_str();
+  command->add_flag("--curved", o->curved,
+                    "then curved passes: split and collapse by curved length, every P2 operation certified (docs/adaptation.md)");
   command->add_option("--jacobian-floor", o->jacobian_floor, "curving: every element keeps its min normalized Jacobian above this")
       ->check(finite_range(0.0, 1.0, "0 to 1"))
       ->capture_default_str();

@@ -21,6 +21,33 @@ void write_operation(JsonWriter& json, const char* name, const OperationCount& c
 
 }  // namespace
 
+void write_curved_operation(JsonWriter& json, const char* name, const CurvedOperationCount& count) {
+  json.key(name).begin_object().member("done", count.done).member("on_boundary", count.on_boundary);
+  json.member("too_long", count.too_long).member("refused", count.refused).end_object();
+}
+
+void write_curved_passes(JsonWriter& json, const CurvedAdaptationRun& run) {
+  json.key("curved_passes").begin_object();
+  json.member("converged", run.converged).member("seconds", run.seconds);
+  json.member("corrections", run.counters.corrections).member("rejected_by_curving", run.counters.rejected_curving);
+  json.key("passes").begin_array();
+  for (const CurvedPass& pass : run.passes) {
+    json.begin_object();
+    write_curved_operation(json, "collapses", pass.collapses);
+    write_curved_operation(json, "splits", pass.splits);
+    json.member("vertices", pass.vertices).member("elements", pass.elements).member("seconds", pass.seconds);
+    json.end_object();
+  }
+  json.end_array().end_object();
+}
+
+void write_curved_measures(JsonWriter& json, const CurvedMeasures& m) {
+  json.key("curved_measures").begin_object();
+  json.member("edges", m.edge_count).member("length_min", m.length_min).member("length_mean", m.length_mean);
+  json.member("length_max", m.length_max).member("unit_share", m.unit_share);
+  json.member("quality_min", m.quality_min).member("quality_mean", m.quality_mean).end_object();
+}
+
 // The loop stops at its cap of passes at the latest; when it stops there the metric may ask for what the
 // mesh cannot give (sizes below what corners, required entities or the geometry allow, or a field too
 // rough for its back mesh), and the user hears it.
@@ -70,6 +97,8 @@ void write_adaptation_report_json(std::ostream& out, const AdaptationReport& rep
     json.key("curving");
     write_curving_report_object(json, *report.curving);
   }
+  if (report.curved_passes) write_curved_passes(json, *report.curved_passes);
+  if (report.curved_measures) write_curved_measures(json, *report.curved_measures);
   json.end_object();
   out << '\n';
 }
@@ -83,7 +112,7 @@ void write_adaptation_report_table(std::ostream& out, const AdaptationReport& re
                   p.moves.done, p.vertices, p.elements, p.seconds, p.window_open ? "open" : "closed");
     out << line;
   }
-  char summary[320];
+  char summary[400];
   std::snprintf(summary, sizeof summary,
                 "%s after %zu passes: %d -> %d elements; edges unit %.1f%% (length %.3f/%.3f/%.3f min/mean/max); "
                 "quality min %.3f mean %.3f (%.2f%% below 0.1); adapt %.2f s, curve %.2f s, peak %.0f MiB\n",
@@ -92,6 +121,25 @@ void write_adaptation_report_table(std::ostream& out, const AdaptationReport& re
                 report.measures.quality_min, report.measures.quality_mean, 100 * report.measures.low_quality_share, report.seconds_adapt,
                 report.seconds_curve, static_cast<double>(report.peak_memory_bytes) / (1 << 20));
   out << summary;
+  if (report.curved_passes) {
+    const CurvedAdaptationRun& run = *report.curved_passes;
+    for (std::size_t i = 0; i < run.passes.size(); ++i) {
+      const CurvedPass& p = run.passes[i];
+      std::snprintf(summary, sizeof summary,
+                    "curved pass %zu: %d collapses (refused: %d on the boundary, %d too long, %d other), %d splits (refused: %d on "
+                    "the boundary, %d other), %d elements, %.2f s\n",
+                    i + 1, p.collapses.done, p.collapses.on_boundary, p.collapses.too_long, p.collapses.refused, p.splits.done,
+                    p.splits.on_boundary, p.splits.refused, p.elements, p.seconds);
+      out << summary;
+    }
+  }
+  if (report.curved_measures) {
+    const CurvedMeasures& m = *report.curved_measures;
+    std::snprintf(summary, sizeof summary,
+                  "curved: edges unit %.1f%% (length %.3f/%.3f/%.3f min/mean/max); curved quality min %.3f mean %.3f\n", 100 * m.unit_share,
+                  m.length_min, m.length_mean, m.length_max, m.quality_min, m.quality_mean);
+    out << summary;
+  }
 }
 
 }  // namespace hocav

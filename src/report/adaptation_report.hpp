@@ -8,6 +8,7 @@
 #include <string>
 
 #include "adapt/adaptation_loop.hpp"
+#include "adapt/curved_adaptation.hpp"
 #include "report/curving_report.hpp"
 #include "report/mesh_statistics.hpp"
 
@@ -23,7 +24,10 @@ struct AdaptationReport {
   MetricStatistics measures;
   double seconds_adapt = 0, seconds_curve = 0;
   long long peak_memory_bytes = 0;
-  std::optional<CurvingReport> curving;
+  std::optional<CurvingReport> curving;              // with --curved, measured after the curved passes
+  std::optional<CurvedAdaptationRun> curved_passes;  // `adapt --curved` (docs/adaptation.md §Curved passes)
+  // With curving: the output's curved edge lengths and curved quality in the metric.
+  std::optional<CurvedMeasures> curved_measures;
 };
 
 void write_adaptation_report_json(std::ostream& out, const AdaptationReport& report);

@@ -42,9 +42,7 @@ CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& fie
                                   Index boundary_proposals_left) {
   CurvingReport report;
   report.dimension = D;
-  report.elements = mesh.element_count();
   report.points_before = points_before;
-  report.points_after = mesh.vertex_count() + mesh.edge_count();
   report.seconds = result.seconds;
   report.counters = result.counters;
   report.edges_optimized_per_second = result.seconds > 0 ? static_cast<double>(result.counters.edges_optimized) / result.seconds : 0;
@@ -55,17 +53,24 @@ CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& fie
     // Sizes are e^(−θ/2): their ratio is e^((θmax − θmin)/2).
     report.max_anisotropy = std::max(report.max_anisotropy, std::exp(0.5 * (eigen.values[D - 1] - eigen.values[0])));
   }
+  measure_curved_output(report, mesh, field);
+  return report;
+}
 
+template <int D>
+void measure_curved_output(CurvingReport& report, const Mesh<D>& mesh, const MetricField<D>& field) {
+  report.elements = mesh.element_count();
+  report.points_after = mesh.vertex_count() + mesh.edge_count();
   auto summary = summarize_jacobian_quality(mesh_jacobian_quality(mesh, kReportedRefinement));
   report.normalized_jacobian = summary.min_normalized_jacobian;
   report.scaled_jacobian = summary.scaled_jacobian;
 
   const std::vector<double> gains = volume_edge_gains(mesh, field);
+  report.average_gain = report.max_gain = 0;
   if (!gains.empty()) {
     report.average_gain = std::accumulate(gains.begin(), gains.end(), 0.0) / static_cast<double>(gains.size());
     report.max_gain = std::max(0.0, *std::max_element(gains.begin(), gains.end()));
   }
-  return report;
 }
 
 namespace {
@@ -151,6 +156,8 @@ void write_curving_report_table(std::ostream& out, const CurvingReport& report) 
 
 template std::vector<double> volume_edge_gains(const Mesh<2>&, const MetricField<2>&);
 template std::vector<double> volume_edge_gains(const Mesh<3>&, const MetricField<3>&);
+template void measure_curved_output(CurvingReport&, const Mesh<2>&, const MetricField<2>&);
+template void measure_curved_output(CurvingReport&, const Mesh<3>&, const MetricField<3>&);
 template CurvingReport make_curving_report(const Mesh<2>&, const MetricField<2>&, Index, const ReinsertionResult&, Index);
 template CurvingReport make_curving_report(const Mesh<3>&, const MetricField<3>&, Index, const ReinsertionResult&, Index);
 

@@ -35,6 +35,10 @@ struct CurvingReport {
 template <int D>
 std::vector<double> volume_edge_gains(const Mesh<D>& mesh, const MetricField<D>& field);
 
+// Measures `mesh` into the report's output figures: element and point counts, Jacobians, gains.
+template <int D>
+void measure_curved_output(CurvingReport& report, const Mesh<D>& mesh, const MetricField<D>& field);
+
 // Measures the output (Jacobians, gains) and gathers the run's figures.
 template <int D>
 CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& field, Index points_before, const ReinsertionResult& result,

@@ -12,7 +12,8 @@ be valid for gmsh (minJ/maxJ > 0) and for hocav (`hocav stats` exits 0 and count
 The curved meshes are outputs of `hocav curve --surface p3`: the mmg torus in its own metric
 (third-party input), the 2D annulus in a circular shear layer, and the 3D sphere shell in a
 boundary-layer metric from `hocav metric --surface` (graded); and outputs of `hocav adapt` (adapted,
-then curved): the annulus in the shear-circle metric and the sphere shell in its surface metric.
+then curved): the annulus in the shear-circle metric and the sphere shell in its surface metric; the
+same with `--curved` (curved passes after the curving, every P2 operation certified).
 Usage: gmsh_jacobian_check_test.py PATH_TO_HOCAV
 """
 import itertools
@@ -60,20 +61,21 @@ def curved_shell(work):
     return 3
 
 
-def adapted_annulus(work):
+def adapted_annulus(work, *options):
     """`hocav adapt` end to end: the annulus adapted to the shear-circle metric, then curved."""
     mesh = os.path.join(work, "annulus.meshb")
     run("generate", "annulus", "--h", "0.1", "-o", mesh)
-    run("adapt", mesh, "--analytic", "shear-circle", "--hmin", "0.01", "-o", os.path.join(work, "curved.meshb"), "-q")
+    run("adapt", mesh, "--analytic", "shear-circle", "--hmin", "0.01", "-o", os.path.join(work, "curved.meshb"), "-q",
+        *options)
     return 2
 
 
-def adapted_shell(work):
+def adapted_shell(work, *options):
     """`hocav adapt` end to end: the sphere shell adapted to its surface metric, then curved."""
     mesh, metric = os.path.join(work, "shell.meshb"), os.path.join(work, "shell.solb")
     run("generate", "sphere-shell", "--h", "0.3", "-o", mesh)
     run("metric", mesh, "--surface", "0.04", "0.3", "--gradation", "1.5", "-o", metric)
-    run("adapt", mesh, "--metric", metric, "-o", os.path.join(work, "curved.meshb"), "-q")
+    run("adapt", mesh, "--metric", metric, "-o", os.path.join(work, "curved.meshb"), "-q", *options)
     return 3
 
 
@@ -168,7 +170,9 @@ def check(name, make_curved):
 
 def main():
     cases = [("torus", curved_torus), ("annulus", curved_annulus), ("sphere shell", curved_shell),
-             ("adapted annulus", adapted_annulus), ("adapted sphere shell", adapted_shell)]
+             ("adapted annulus", adapted_annulus), ("adapted sphere shell", adapted_shell),
+             ("curved-adapted annulus", lambda work: adapted_annulus(work, "--curved")),
+             ("curved-adapted sphere shell", lambda work: adapted_shell(work, "--curved"))]
     torus = os.path.join(DATA, "torus.mesh")
     if not os.path.exists(torus):
         print(f"SKIPPED the torus case: missing {torus} (../shared/data is not beside the repository)")

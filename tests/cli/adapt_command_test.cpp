@@ -87,6 +87,20 @@ TEST_F(AdaptCli, OutputDoesNotDependOnTheThreadCount) {
   EXPECT_EQ(read("one.meshb"), read("two.meshb"));
 }
 
+// --curved: curved passes after the curving, reported, the output certified and consistent.
+TEST_F(AdaptCli, CurvedPassesAreReportedAndTheOutputCertified) {
+  run_ok("generate square --h 0.1 -o square.meshb");
+  run_ok("adapt square.meshb --analytic shear-circle --hmin 0.01 --curved -o adapted.meshb --report report.json -q");
+  EXPECT_GT(report_value("len(d[\"curved_passes\"][\"passes\"])"), 0);
+  EXPECT_GT(report_value("d[\"curved_passes\"][\"passes\"][0][\"splits\"][\"done\"] + "
+                         "d[\"curved_passes\"][\"passes\"][0][\"collapses\"][\"done\"]"),
+            0);
+  EXPECT_GE(report_value("d[\"curving\"][\"normalized_jacobian\"][\"min\"]"), 0.01);
+  EXPECT_EQ(report_value("d[\"curving\"][\"elements\"]"), report_value("d[\"output_elements\"]"));
+  EXPECT_GT(report_value("d[\"curved_measures\"][\"unit_share\"]"), 0.5);
+  EXPECT_EQ(stats_json("adapted.meshb", "d[\"consistency\"][\"consistent\"], d[\"order\"], d[\"jacobian\"][\"invalid\"]"), "(True, 2, 0)");
+}
+
 TEST_F(AdaptCli, BadRequestsFailWithOneLineAndNoOutput) {
   run_ok("generate square --h 0.25 -o square.meshb");
   run_ok("metric square.meshb --analytic uniform -o square.solb");
@@ -94,6 +108,8 @@ TEST_F(AdaptCli, BadRequestsFailWithOneLineAndNoOutput) {
   expect_failure("adapt square.meshb -o out.meshb", "exactly one metric source");
   expect_failure("adapt square.meshb --analytic uniform --hmin 0.5 --hmax 0.1 -o out.meshb", "--hmin");
   expect_failure("adapt square.meshb --analytic uniform --hgrad 1.5 -o out.meshb", "--hgrad");
+  expect_failure("adapt square.meshb --analytic uniform --curved --order 1 -o out.meshb",
+                 "--curved adapts the curved mesh: it needs --order 2");
   expect_failure("adapt square.meshb --analytic no-such-metric -o out.meshb", "no-such-metric");
   expect_failure("adapt missing.meshb --analytic uniform -o out.meshb", "missing.meshb");
   // A metric whose complexity asks for more elements than can be built is refused before work.

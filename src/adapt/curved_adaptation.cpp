@@ -1,0 +1,168 @@
+#include "adapt/curved_adaptation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+
+#include "cavity/p2_operations.hpp"
+#include "mesh/ball_and_shell.hpp"
+
+namespace hocav {
+
+void CurvedOperationCount::add(CavityStatus status) {
+  if (status == CavityStatus::kAccepted)
+    ++done;
+  else if (status == CavityStatus::kCrossesBoundary)
+    ++on_boundary;
+  else
+    ++refused;
+}
+
+namespace {
+
+const double kSplitLength = std::sqrt(2.0);
+const double kCollapseLength = 1 / std::sqrt(2.0);
+// As the P1 loop (docs/adaptation.md §The loop): a pass that splits and collapses fewer than this
+// share of the vertices ends the loop.
+constexpr double kConvergedChange = 2.5e-3;
+
+struct EdgeToFix {
+  double length;
+  Index a, b;
+};
+
+// The edges whose curved length is outside (lower, upper), the ones furthest outside first; ties
+// by vertex ids, so the order depends on the mesh only.
+template <int D>
+std::vector<EdgeToFix> edges_outside(const Mesh<D>& mesh, const P2Operations<D>& operations, double lower, double upper) {
+  std::vector<EdgeToFix> edges;
+  for (Index e = 0; e < mesh.edge_count(); ++e) {
+    const auto& ends = mesh.edge_vertices(e);
+    if (ends[0] == kNoIndex) continue;  // a removed edge (Mesh::remove_edge)
+    const double length = operations.edge_length(ends[0], ends[1]);
+    if (length < lower || length > upper) edges.push_back({length, std::min(ends[0], ends[1]), std::max(ends[0], ends[1])});
+  }
+  const bool shortest_first = upper == INFINITY;
+  std::sort(edges.begin(), edges.end(), [shortest_first](const EdgeToFix& x, const EdgeToFix& y) {
+    if (x.length != y.length) return shortest_first ? x.length < y.length : x.length > y.length;
+    return x.a != y.a ? x.a < y.a : x.b < y.b;
+  });
+  return edges;
+}
+
+bool still_edge_of_length(const auto& mesh, const auto& operations, const EdgeToFix& edge, double lower, double upper) {
+  if (mesh.vertex_removed(edge.a) || mesh.vertex_removed(edge.b) || mesh.find_edge(edge.a, edge.b) == kNoIndex) return false;
+  const double length = operations.edge_length(edge.a, edge.b);
+  return length < lower || length > upper;
+}
+
+// Whether collapsing `removed` onto `kept` leaves every straight segment from `kept` to the ball's
+// vertices within √2: the curved edges the optimizer makes are no longer, so no collapse makes work
+// for the next split (the P1 loop's closed window, docs/adaptation.md).
+template <int D>
+bool collapse_keeps_lengths(const Mesh<D>& mesh, const P2Operations<D>& operations, Index removed, Index kept, std::vector<Index>& ball) {
+  collect_ball(mesh, removed, ball);
+  for (Index k : ball)
+    for (Index w : mesh.element(k))
+      if (w != removed && w != kept && operations.straight_length(kept, w) > kSplitLength) return false;
+  return true;
+}
+
+// The P2 operator's verdict, or none when the collapse would make a long edge (not tried).
+template <int D>
+std::optional<CavityStatus> collapse(Mesh<D>& mesh, P2Operations<D>& operations, Index removed, Index kept, std::vector<Index>& ball) {
+  if (!collapse_keeps_lengths(mesh, operations, removed, kept, ball)) return std::nullopt;
+  return operations.collapse_edge(removed, kept);
+}
+
+// Each short edge collapses one way or the other; a refusal counts the reason of the second try.
+template <int D>
+CurvedOperationCount collapse_short_curved_edges(Mesh<D>& mesh, P2Operations<D>& operations) {
+  CurvedOperationCount count;
+  std::vector<Index> ball;
+  for (const EdgeToFix& edge : edges_outside(mesh, operations, kCollapseLength, INFINITY)) {
+    if (!still_edge_of_length(mesh, operations, edge, kCollapseLength, INFINITY)) continue;
+    std::optional<CavityStatus> status = collapse(mesh, operations, edge.a, edge.b, ball);
+    if (status != CavityStatus::kAccepted) status = collapse(mesh, operations, edge.b, edge.a, ball);
+    if (status)
+      count.add(*status);
+    else
+      ++count.too_long;
+  }
+  return count;
+}
+
+template <int D>
+CurvedOperationCount split_long_curved_edges(Mesh<D>& mesh, P2Operations<D>& operations) {
+  CurvedOperationCount count;
+  for (const EdgeToFix& edge : edges_outside(mesh, operations, -INFINITY, kSplitLength)) {
+    if (!still_edge_of_length(mesh, operations, edge, -INFINITY, kSplitLength)) continue;
+    count.add(operations.split_edge(edge.a, edge.b));
+  }
+  return count;
+}
+
+// One pass with operations made afresh: their per-vertex metrics follow the ids of a compact mesh.
+template <int D>
+CurvedPass run_curved_pass(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, P2CavityCounters& counters) {
+  const auto start = std::chrono::steady_clock::now();
+  CurvedPass pass;
+  P2Operations<D> operations(mesh, field, nullptr, options);
+  pass.collapses = collapse_short_curved_edges(mesh, operations);
+  pass.splits = split_long_curved_edges(mesh, operations);
+  counters += operations.cavity_operator().counters();
+  mesh.compact();
+  pass.vertices = mesh.vertex_count();
+  pass.elements = mesh.element_count();
+  pass.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return pass;
+}
+
+}  // namespace
+
+template <int D>
+CurvedAdaptationRun adapt_curved(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, int max_passes) {
+  CurvedAdaptationRun run;
+  for (int pass = 1; pass <= max_passes && !run.converged; ++pass) {
+    const CurvedPass& last = run.passes.emplace_back(run_curved_pass(mesh, field, options, run.counters));
+    run.seconds += last.seconds;
+    run.converged = static_cast<double>(last.splits.done + last.collapses.done) <= kConvergedChange * static_cast<double>(last.vertices);
+  }
+  return run;
+}
+
+template <int D>
+CurvedMeasures measure_curved(Mesh<D>& mesh, const MetricField<D>& field) {
+  const P2Operations<D> operations(mesh, field, nullptr, {});
+  CurvedMeasures measures;
+  measures.length_min = INFINITY;
+  Index unit = 0;
+  for (Index e = 0; e < mesh.edge_count(); ++e) {
+    const auto& ends = mesh.edge_vertices(e);
+    if (ends[0] == kNoIndex) continue;
+    const double length = operations.edge_length(ends[0], ends[1]);
+    ++measures.edge_count;
+    measures.length_min = std::min(measures.length_min, length);
+    measures.length_max = std::max(measures.length_max, length);
+    measures.length_mean += length;
+    unit += length >= kCollapseLength && length <= kSplitLength;
+  }
+  measures.length_mean /= static_cast<double>(std::max<Index>(1, measures.edge_count));
+  measures.unit_share = static_cast<double>(unit) / static_cast<double>(std::max<Index>(1, measures.edge_count));
+  measures.quality_min = INFINITY;
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    const double quality = operations.quality(k);
+    measures.quality_min = std::min(measures.quality_min, quality);
+    measures.quality_mean += quality;
+  }
+  measures.quality_mean /= static_cast<double>(std::max<Index>(1, mesh.element_count()));
+  return measures;
+}
+
+template CurvedAdaptationRun adapt_curved(Mesh<2>&, const MetricField<2>&, const P2CavityOptions&, int);
+template CurvedAdaptationRun adapt_curved(Mesh<3>&, const MetricField<3>&, const P2CavityOptions&, int);
+template CurvedMeasures measure_curved(Mesh<2>&, const MetricField<2>&);
+template CurvedMeasures measure_curved(Mesh<3>&, const MetricField<3>&);
+
+}  // namespace hocav

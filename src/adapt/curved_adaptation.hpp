@@ -1,0 +1,54 @@
+// The curved passes of `hocav adapt --curved` (docs/adaptation.md §Curved passes): on the curved
+// output of the P1 loop and the reinsertion, P2 collapses of the edges shorter than 1/√2 and P2
+// splits of those longer than √2, both judged by the curved edge's Riemannian length, until a pass
+// changes almost nothing. Every operation is a P2 cavity operation (cavity/p2_operations.hpp), so
+// the mesh stays P2 and certified above the Jacobian floor after each one. Serial: the output does
+// not depend on the thread count. Interior only: boundary edges keep what the P1 loop made.
+#pragma once
+
+#include <vector>
+
+#include "cavity/p2_cavity_operator.hpp"
+
+namespace hocav {
+
+struct CurvedOperationCount {
+  Index done = 0;
+  Index on_boundary = 0;  // refused: an edge or removed vertex on the boundary (left to the P1 loop)
+  Index too_long = 0;     // collapses refused: a straight segment to the kept vertex longer than √2
+  Index refused = 0;      // refused by the P2 operator otherwise (topology, or no certified curving)
+
+  void add(CavityStatus status);
+};
+
+struct CurvedPass {
+  CurvedOperationCount collapses, splits;
+  Index vertices = 0, elements = 0;  // after the pass
+  double seconds = 0;
+};
+
+struct CurvedAdaptationRun {
+  std::vector<CurvedPass> passes;
+  bool converged = false;  // a pass changed almost nothing, not stopped at the cap
+  P2CavityCounters counters;
+  double seconds = 0;
+};
+
+// The curved mesh in its metric: edge lengths of the curved edges and the curved mean ratio
+// (docs/curving.md §Curved quality) of the elements.
+struct CurvedMeasures {
+  Index edge_count = 0;
+  double length_min = 0, length_mean = 0, length_max = 0;
+  double unit_share = 0;  // share of edges with curved length in [1/√2, √2]
+  double quality_min = 0, quality_mean = 0;
+};
+
+// Runs at most `max_passes` curved passes on `mesh` (P2, certified above options.jacobian_floor,
+// with its topology), whose metric is `field`; the mesh is compact on return.
+template <int D>
+CurvedAdaptationRun adapt_curved(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, int max_passes);
+
+template <int D>
+CurvedMeasures measure_curved(Mesh<D>& mesh, const MetricField<D>& field);
+
+}  // namespace hocav

@@ -1,0 +1,83 @@
+// `hocav adapt --curved` end to end (the job of the command): the curved passes keep the mesh
+// consistent and certified above the Jacobian floor, fix edges by their curved length, and leave
+// no more edges outside the unit range than adapt-then-curve; the output does not depend on the
+// thread count.
+#include "adapt/curved_adaptation.hpp"
+
+#include <gtest/gtest.h>
+
+#include "adapt/adaptation_driver.hpp"
+#include "adapt_test_support.hpp"
+#include "bezier/mesh_quality.hpp"
+
+namespace hocav {
+namespace {
+
+// The unit square or cube adapted to a shear layer around the origin (a curved feature the
+// P1 loop's straight edges cross), then curved; with `curved`, curved passes after.
+template <int D>
+struct AdaptedCase {
+  Mesh<D> mesh;
+  AdaptedMesh<D> adapted;
+  AdaptedCase(bool curved, int threads) : mesh(adapt_test::unit_mesh<D>(D == 2 ? 8 : 4)) {
+    AdaptationJob<D> job;
+    job.analytic.emplace();
+    job.analytic->name = D == 2 ? "shear-circle" : "shear-sphere";
+    job.analytic->radius = 0.6;
+    job.analytic->width = 0.05;
+    job.analytic->h_min = D == 2 ? 0.01 : 0.03;
+    job.analytic->h_max = D == 2 ? 0.1 : 0.2;
+    job.threads = threads;
+    job.curving.emplace();
+    job.curving->threads = threads;
+    job.curved = curved;
+    job.geometry = [](const Mesh<D>&) { return std::unique_ptr<BoundaryGeometry<D>>(); };
+    adapted = run_adaptation_job(mesh, {}, job, "the unit mesh");
+  }
+};
+
+template <int D>
+void expect_certified(const Mesh<D>& mesh, double floor) {
+  const auto summary = summarize_jacobian_quality(mesh_jacobian_quality(mesh, kReportedRefinement));
+  EXPECT_EQ(summary.min_normalized_jacobian.invalid_count, 0);
+  EXPECT_GE(summary.min_normalized_jacobian.min, floor);
+}
+
+template <int D>
+void check_curved_loop() {
+  AdaptedCase<D> plain(false, 1), curved(true, 1);
+  const AdaptationReport& report = curved.adapted.report;
+  ASSERT_TRUE(report.curved_passes);
+  ASSERT_FALSE(report.curved_passes->passes.empty());
+  const CurvedPass& first = report.curved_passes->passes.front();
+  EXPECT_GT(first.splits.done + first.collapses.done, 0) << "adapt-then-curve left curved lengths outside the unit range";
+  adapt_test::expect_closed_and_consistent(curved.mesh);
+  EXPECT_EQ(curved.mesh.order(), 2);
+  expect_certified(curved.mesh, CurvingOptions{}.jacobian_floor);
+  // The report is measured after the curved passes.
+  EXPECT_EQ(report.curving->elements, curved.mesh.element_count());
+  EXPECT_EQ(report.output_elements, curved.mesh.element_count());
+  const CurvedMeasures measured = measure_curved(curved.mesh, *curved.adapted.field);
+  EXPECT_EQ(report.curved_measures->unit_share, measured.unit_share);
+  EXPECT_GE(measured.unit_share, plain.adapted.report.curved_measures->unit_share);
+  EXPECT_FALSE(plain.adapted.report.curved_passes);
+}
+
+TEST(CurvedAdaptation, LoopKeepsTheMeshCertifiedAndUnitInCurvedLength2D) { check_curved_loop<2>(); }
+TEST(CurvedAdaptation, LoopKeepsTheMeshCertifiedAndUnitInCurvedLength3D) { check_curved_loop<3>(); }
+
+template <int D>
+void check_thread_independence() {
+  AdaptedCase<D> one(true, 1), two(true, 2);
+  EXPECT_EQ(one.mesh.vertices().size(), two.mesh.vertices().size());
+  EXPECT_TRUE(std::equal(one.mesh.vertices().begin(), one.mesh.vertices().end(), two.mesh.vertices().begin(), two.mesh.vertices().end()));
+  EXPECT_TRUE(std::equal(one.mesh.elements().begin(), one.mesh.elements().end(), two.mesh.elements().begin(), two.mesh.elements().end()));
+  EXPECT_TRUE(
+      std::equal(one.mesh.edge_nodes().begin(), one.mesh.edge_nodes().end(), two.mesh.edge_nodes().begin(), two.mesh.edge_nodes().end()));
+}
+
+TEST(CurvedAdaptation, OutputDoesNotDependOnThreads2D) { check_thread_independence<2>(); }
+TEST(CurvedAdaptation, OutputDoesNotDependOnThreads3D) { check_thread_independence<3>(); }
+
+}  // namespace
+}  // namespace hocav
