@@ -108,7 +108,9 @@ template <int D>
 CurvedPass run_curved_pass(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, P2CavityCounters& counters) {
   const auto start = std::chrono::steady_clock::now();
   CurvedPass pass;
-  P2Operations<D> operations(mesh, field, nullptr, options);
+  P2CavityOptions positive = options;
+  positive.positive_straight_elements = true;
+  P2Operations<D> operations(mesh, field, nullptr, positive);
   pass.collapses = collapse_short_curved_edges(mesh, operations);
   pass.splits = split_long_curved_edges(mesh, operations);
   counters += operations.cavity_operator().counters();

@@ -65,10 +65,10 @@ CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const I
                                           const P2CavityRequest<D>& request) {
   ++counters_.cavities;
   auto start = Clock::now();
-  CavityOptions topology_only;
-  topology_only.check_straight_measure = false;
-  topology_only.removable_vertex = request.removable_vertex;
-  CavityStatus status = p1_.plan(mesh, cavity, vertex, topology_only);
+  CavityOptions plan_options;
+  plan_options.check_straight_measure = options_.positive_straight_elements;
+  plan_options.removable_vertex = request.removable_vertex;
+  CavityStatus status = p1_.plan(mesh, cavity, vertex, plan_options);
   counters_.seconds_plan += seconds_since(start);
   if (status != CavityStatus::kAccepted) {
     ++counters_.rejected_topology;

@@ -1,5 +1,5 @@
 // The P2 cavity operator (the paper's §III.B), on top of the P1 operator:
-//  1. plan the star with the straight-element checks off (a valid P2 element may be an inverted
+//  1. plan the star with the straight-element checks off unless asked (a valid P2 element may be an inverted
 //     P1 element); curve every new inner edge (vertex, boundary vertex) by minimizing its
 //     Riemannian length; give the cavity's boundary edges that have a waiting boundary proposal
 //     their proposed node;
@@ -43,6 +43,11 @@ struct P2CavityOptions {
   // reinsertion driver checks its input once): every accepted cavity keeps it so, and a new element
   // identical to a cavity element is then not certified again.
   bool every_element_above_floor = false;
+  // The new elements must also be positive as straight simplices (the P1 operator's measure check).
+  // Off, a valid curved element may be a flat or inverted straight one; a flat one has no normalized
+  // Jacobian (J / |J_straight| is infinite), so the curved passes keep them positive
+  // (docs/adaptation.md §Curved passes).
+  bool positive_straight_elements = false;
 };
 
 // A new inner edge whose curving starts, and falls back, at a given node instead of the node it had
