@@ -2,7 +2,7 @@
 passes) on the same inputs, one run each (docs/benchmarks.md §Curved adaptation). Figures from each
 run's --report: the share of edges unit in their curved length and the curved mean ratio (min,
 mean; docs/curving.md §Curved quality), the min/avg normalized Jacobian, corrections and cavities
-rejected by the curving (the reinsertion's and the curved passes'), the curved passes' operations,
+rejected by the curving (the reinsertion's and the curved passes'), the curved passes' operations (collapses, splits, swaps, moves, and the passes),
 the command's wall time; and, for the cases bounded by circles or spheres centred at the origin,
 the distance of the output's boundary P2 nodes from the true circle or sphere (max and mean).
 
@@ -83,7 +83,7 @@ def measure(hocav, case, curved, threads, folder):
     if passes:
         row["corrections"] += passes["corrections"]
         row["rejected"] += passes["rejected_by_curving"]
-        row["curved_ops"] = (sum(p["collapses"]["done"] for p in passes["passes"]), sum(p["splits"]["done"] for p in passes["passes"]),
+        row["curved_ops"] = (*(sum(p[op]["done"] for p in passes["passes"]) for op in ("collapses", "splits", "swaps", "moves")),
                              len(passes["passes"]))
     if radii:
         run(hocav, ["convert", output, output.replace(".meshb", ".vtu")], folder)
@@ -93,11 +93,11 @@ def measure(hocav, case, curved, threads, folder):
 
 def markdown(rows):
     lines = ["| case | run | elements | unit (curved length) | curved q mean / min | norm. Jacobian min / avg | boundary error max / mean "
-             "| corrections | rejected | curved collapses / splits (passes) | time s |",
+             "| corrections | rejected | curved collapses / splits / swaps / moves (passes) | time s |",
              "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         boundary = f"{r['boundary'][0]:.2e} / {r['boundary'][1]:.2e}" if r["boundary"] else "n/a"
-        ops = f"{r['curved_ops'][0]} / {r['curved_ops'][1]} ({r['curved_ops'][2]})" if r["curved_ops"] else ""
+        ops = " / ".join(f"{n:,}" for n in r["curved_ops"][:4]) + f" ({r['curved_ops'][4]})" if r["curved_ops"] else ""
         lines.append(f"| {r['case']} | {r['run']} | {r['elements']:,} | {100 * r['unit']:.1f}% | {r['q_mean']:.3f} / {r['q_min']:.3f} "
                      f"| {r['j_min']:.4f} / {r['j_avg']:.3f} | {boundary} | {r['corrections']:,} | {r['rejected']:,} | {ops} "
                      f"| {r['seconds']:.1f} |")

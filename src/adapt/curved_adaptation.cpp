@@ -5,6 +5,8 @@
 #include <cmath>
 #include <optional>
 
+#include "adapt/reinsertion_curving.hpp"
+#include "base/small_set.hpp"
 #include "cavity/p2_operations.hpp"
 #include "mesh/ball_and_shell.hpp"
 
@@ -15,6 +17,8 @@ void CurvedOperationCount::add(CavityStatus status) {
     ++done;
   else if (status == CavityStatus::kCrossesBoundary)
     ++on_boundary;
+  else if (status == CavityStatus::kNoImprovement)
+    ++no_gain;
   else
     ++refused;
 }
@@ -23,6 +27,12 @@ namespace {
 
 const double kSplitLength = std::sqrt(2.0);
 const double kCollapseLength = 1 / std::sqrt(2.0);
+// A swap or move must raise the worst curved quality of its cavity by this factor, as the P1
+// loop's smoothing (docs/adaptation.md): no move undoes another.
+constexpr double kQualityGain = 1.01;
+// Swaps are tried on the edges of the elements below this curved quality: each try optimizes and
+// certifies a whole shell, and better elements gain little (docs/adaptation.md §Curved passes).
+constexpr double kSwapQuality = 0.5;
 // As the P1 loop (docs/adaptation.md §The loop): a pass that splits and collapses fewer than this
 // share of the vertices ends the loop.
 constexpr double kConvergedChange = 2.5e-3;
@@ -103,6 +113,79 @@ CurvedOperationCount split_long_curved_edges(Mesh<D>& mesh, P2Operations<D>& ope
   return count;
 }
 
+template <int D>
+double worst_quality(const P2Operations<D>& operations, std::span<const Index> elements) {
+  double worst = INFINITY;
+  for (Index k : elements) worst = std::min(worst, operations.quality(k));
+  return worst;
+}
+
+// The edges of the elements below kSwapQuality, each once, in vertex order.
+template <int D>
+std::vector<std::pair<Index, Index>> edges_of_poor_elements(const Mesh<D>& mesh, const P2Operations<D>& operations) {
+  std::vector<std::pair<Index, Index>> edges;
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    if (operations.quality(k) >= kSwapQuality) continue;
+    const auto& v = mesh.element(k);
+    for (int i = 0; i <= D; ++i)
+      for (int j = i + 1; j <= D; ++j) edges.emplace_back(std::min(v[i], v[j]), std::max(v[i], v[j]));
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+// Each edge's shell re-starred from the first vertex of its ring that raises the shell's worst
+// curved quality.
+template <int D>
+CurvedOperationCount swap_poor_shells(Mesh<D>& mesh, P2Operations<D>& operations) {
+  CurvedOperationCount count;
+  std::vector<Index> shell, ring;
+  for (const auto& [first, second] : edges_of_poor_elements(mesh, operations)) {
+    const Index a = first, b = second;
+    if (mesh.find_edge(a, b) == kNoIndex) continue;
+    collect_shell(mesh, a, b, shell);
+    const double bar = kQualityGain * worst_quality(operations, shell);
+    ring.clear();
+    for (Index k : shell)
+      for (Index c : mesh.element(k))
+        if (c != a && c != b && !small_set_holds(ring, c)) ring.push_back(c);
+    CavityStatus status = CavityStatus::kNotStarShaped;
+    for (std::size_t i = 0; i < ring.size() && status != CavityStatus::kAccepted && status != CavityStatus::kCrossesBoundary; ++i)
+      status = operations.swap_edge(a, b, ring[i], bar);
+    count.add(status);
+  }
+  return count;
+}
+
+// Each inner vertex moved toward the mean of the points that would make its curved edges unit
+// (w + (v − w)/l(v, w) over its ball's other vertices, as the P1 smoothing), the whole step or
+// half of it, when that raises its ball's worst curved quality.
+template <int D>
+CurvedOperationCount smooth_curved(Mesh<D>& mesh, P2Operations<D>& operations) {
+  CurvedOperationCount count;
+  std::vector<Index> ball;
+  for (Index v : volume_vertices(mesh)) {
+    if (mesh.vertex_removed(v)) continue;
+    collect_ball(mesh, v, ball);
+    Vec<D> target{};
+    int terms = 0;
+    for (Index k : ball)
+      for (Index w : mesh.element(k))
+        if (w != v) {
+          target = target + (mesh.vertex(w) + (1 / operations.edge_length(v, w)) * (mesh.vertex(v) - mesh.vertex(w)));
+          ++terms;
+        }
+    const Vec<D> from = mesh.vertex(v), step = (1.0 / terms) * target - from;
+    const double bar = kQualityGain * worst_quality(operations, ball);
+    CavityStatus status = operations.move_vertex(v, from + step, bar);
+    if (status == CavityStatus::kNoImprovement || status == CavityStatus::kRejectedByCurving)
+      status = operations.move_vertex(v, from + 0.5 * step, bar);
+    count.add(status);
+  }
+  return count;
+}
+
 // One pass with operations made afresh: their per-vertex metrics follow the ids of a compact mesh.
 template <int D>
 CurvedPass run_curved_pass(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, P2CavityCounters& counters) {
@@ -113,6 +196,8 @@ CurvedPass run_curved_pass(Mesh<D>& mesh, const MetricField<D>& field, const P2C
   P2Operations<D> operations(mesh, field, nullptr, positive);
   pass.collapses = collapse_short_curved_edges(mesh, operations);
   pass.splits = split_long_curved_edges(mesh, operations);
+  pass.swaps = swap_poor_shells(mesh, operations);
+  pass.moves = smooth_curved(mesh, operations);
   counters += operations.cavity_operator().counters();
   mesh.compact();
   pass.vertices = mesh.vertex_count();

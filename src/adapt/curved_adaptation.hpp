@@ -1,7 +1,8 @@
 // The curved passes of `hocav adapt --curved` (docs/adaptation.md §Curved passes): on the curved
 // output of the P1 loop and the reinsertion, P2 collapses of the edges shorter than 1/√2 and P2
-// splits of those longer than √2, both judged by the curved edge's Riemannian length, until a pass
-// changes almost nothing. Every operation is a P2 cavity operation (cavity/p2_operations.hpp), so
+// splits of those longer than √2, both judged by the curved edge's Riemannian length, then P2 swaps
+// and vertex moves that raise the worst curved mean ratio of their cavity, until a pass changes
+// almost nothing. Every operation is a P2 cavity operation (cavity/p2_operations.hpp), so
 // the mesh stays P2 and certified above the Jacobian floor after each one. Serial: the output does
 // not depend on the thread count. Interior only: boundary edges keep what the P1 loop made.
 #pragma once
@@ -16,13 +17,14 @@ struct CurvedOperationCount {
   Index done = 0;
   Index on_boundary = 0;  // refused: an edge or removed vertex on the boundary (left to the P1 loop)
   Index too_long = 0;     // collapses refused: a straight segment to the kept vertex longer than √2
+  Index no_gain = 0;      // swaps and moves refused: the worst curved quality would not rise
   Index refused = 0;      // refused by the P2 operator otherwise (topology, or no certified curving)
 
   void add(CavityStatus status);
 };
 
 struct CurvedPass {
-  CurvedOperationCount collapses, splits;
+  CurvedOperationCount collapses, splits, swaps, moves;
   Index vertices = 0, elements = 0;  // after the pass
   double seconds = 0;
 };

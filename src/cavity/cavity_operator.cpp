@@ -17,6 +17,7 @@ const char* to_string(CavityStatus status) {
     case CavityStatus::kRemovesVertex: return "would remove a vertex";
     case CavityStatus::kNonPositiveMeasure: return "non-positive straight measure";
     case CavityStatus::kRejectedByCurving: return "no valid curving";
+    case CavityStatus::kNoImprovement: return "no quality improvement";
   }
   return "?";
 }

@@ -39,6 +39,7 @@ enum class CavityStatus {
   kRemovesVertex,       // a vertex other than the removable one would disappear
   kNonPositiveMeasure,  // P1 mode: a new element is flat or inverted
   kRejectedByCurving,   // the P2 operator found no valid curved configuration
+  kNoImprovement,       // the P2 operator's new elements are not better than the request asks
 };
 const char* to_string(CavityStatus status);
 

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "bezier/jacobian_bounds.hpp"
+#include "curve/curved_quality.hpp"
 #include "mesh/ball_and_shell.hpp"
 
 namespace hocav {
@@ -35,6 +36,7 @@ P2CavityCounters& P2CavityCounters::operator+=(const P2CavityCounters& other) {
   accepted += other.accepted;
   rejected_topology += other.rejected_topology;
   rejected_curving += other.rejected_curving;
+  rejected_quality += other.rejected_quality;
   edges_optimized += other.edges_optimized;
   optimizer_iterations += other.optimizer_iterations;
   edges_kept_optimal += other.edges_kept_optimal;
@@ -112,7 +114,23 @@ CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const I
     ++counters_.rejected_curving;
     return CavityStatus::kRejectedByCurving;
   }
+  if (request.quality_to_beat >= 0 && !new_elements_above(request.quality_to_beat)) {
+    ++counters_.rejected_quality;
+    return CavityStatus::kNoImprovement;
+  }
   return CavityStatus::kAccepted;
+}
+
+template <int D>
+bool P2CavityOperator<D>::new_elements_above(double bar) const {
+  std::array<SymMat<D>, D + 1> log_metrics;
+  for (const Candidate& candidate : candidates_) {
+    if (candidate.mesh_element != kNoIndex) continue;
+    for (int i = 0; i <= D; ++i)
+      log_metrics[static_cast<std::size_t>(i)] = vertex_log_metrics_[static_cast<std::size_t>(candidate.vertices[i])];
+    if (!(curved_mean_ratio(element_of(candidate), log_metrics).value > bar)) return false;
+  }
+  return true;
 }
 
 template <int D>

@@ -64,11 +64,14 @@ template <int D>
 struct P2CavityRequest {
   Index removable_vertex = kNoIndex;  // the one vertex that may disappear (a collapse), or kNoIndex
   std::span<const EdgeStart<D>> start_nodes{};
+  // The smallest curved mean ratio of the new elements (docs/curving.md §Curved quality) must be
+  // above this, else kNoImprovement: swaps and smoothing only improve.
+  double quality_to_beat = -1;
 };
 
 struct P2CavityCounters {
   long long cavities = 0, accepted = 0;
-  long long rejected_topology = 0, rejected_curving = 0;
+  long long rejected_topology = 0, rejected_curving = 0, rejected_quality = 0;
   long long edges_optimized = 0, optimizer_iterations = 0;
   long long edges_kept_optimal = 0;  // recreated at their optimum: not optimized again
   long long boundary_nodes_applied = 0;
@@ -141,6 +144,8 @@ class P2CavityOperator {
   void add_candidate(const Mesh<D>& mesh, const typename Mesh<D>::Element& vertices, Index mesh_element);
   P2Element<D> element_of(const Candidate& candidate) const;
   bool certified(const Candidate& candidate);
+  // Whether every new element's curved mean ratio is above `bar`.
+  bool new_elements_above(double bar) const;
   // Pulls back the changed edges of a failing candidate; false when nothing certifies it.
   bool correct(const Candidate& candidate);
   // After a correction: the candidates holding an edge it moved need certifying again.

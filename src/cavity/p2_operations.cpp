@@ -129,7 +129,7 @@ CavityStatus P2Operations<D>::collapse_edge(Index removed, Index kept) {
 }
 
 template <int D>
-CavityStatus P2Operations<D>::swap_edge(Index a, Index b, Index apex) {
+CavityStatus P2Operations<D>::swap_edge(Index a, Index b, Index apex, double quality_to_beat) {
   if (mesh_.find_edge(a, b) == kNoIndex) return CavityStatus::kNotStarShaped;
   collect_shell(mesh_, a, b, cavity_);
   const Index ends[2] = {a, b};
@@ -137,11 +137,13 @@ CavityStatus P2Operations<D>::swap_edge(Index a, Index b, Index apex) {
   const bool apex_in_shell = std::any_of(cavity_.begin(), cavity_.end(), [&](Index k) { return small_set_holds(mesh_.element(k), apex); });
   if (apex == a || apex == b || !apex_in_shell) return CavityStatus::kNotStarShaped;
   // The new edges from the apex start straight (their fallback).
-  return operator_.apply(mesh_, cavity_, apex);
+  P2CavityRequest<D> request;
+  request.quality_to_beat = quality_to_beat;
+  return operator_.apply(mesh_, cavity_, apex, request);
 }
 
 template <int D>
-CavityStatus P2Operations<D>::move_vertex(Index v, const Vec<D>& x) {
+CavityStatus P2Operations<D>::move_vertex(Index v, const Vec<D>& x, double quality_to_beat) {
   collect_ball(mesh_, v, cavity_);
   const Index vertex[1] = {v};
   if (on_boundary(cavity_, vertex)) return CavityStatus::kCrossesBoundary;
@@ -156,6 +158,7 @@ CavityStatus P2Operations<D>::move_vertex(Index v, const Vec<D>& x) {
   shifted_starts(v, from, v);
   P2CavityRequest<D> request;
   request.start_nodes = starts_;
+  request.quality_to_beat = quality_to_beat;
   const CavityStatus status = operator_.apply(mesh_, cavity_, v, request);
   if (status != CavityStatus::kAccepted) {
     mesh_.vertex(v) = from;

@@ -30,8 +30,10 @@ class P2Operations {
   // Each returns the P2 operator's verdict; on anything but kAccepted the mesh is unchanged.
   CavityStatus split_edge(Index a, Index b, Index* inserted = nullptr);
   CavityStatus collapse_edge(Index removed, Index kept);
-  CavityStatus swap_edge(Index a, Index b, Index apex);
-  CavityStatus move_vertex(Index v, const Vec<D>& x);
+  // A swap or move with `quality_to_beat` ≥ 0 is refused (kNoImprovement) unless every new element's
+  // curved mean ratio is above it.
+  CavityStatus swap_edge(Index a, Index b, Index apex, double quality_to_beat = -1);
+  CavityStatus move_vertex(Index v, const Vec<D>& x, double quality_to_beat = -1);
 
   // The Riemannian length of the curved edge (a, b) (high-precision quadrature of the length the
   // optimizer minimizes), and the curved mean ratio of element k (src/curve/curved_quality.hpp).

@@ -23,18 +23,21 @@ void write_operation(JsonWriter& json, const char* name, const OperationCount& c
 
 void write_curved_operation(JsonWriter& json, const char* name, const CurvedOperationCount& count) {
   json.key(name).begin_object().member("done", count.done).member("on_boundary", count.on_boundary);
-  json.member("too_long", count.too_long).member("refused", count.refused).end_object();
+  json.member("too_long", count.too_long).member("no_gain", count.no_gain).member("refused", count.refused).end_object();
 }
 
 void write_curved_passes(JsonWriter& json, const CurvedAdaptationRun& run) {
   json.key("curved_passes").begin_object();
   json.member("converged", run.converged).member("seconds", run.seconds);
   json.member("corrections", run.counters.corrections).member("rejected_by_curving", run.counters.rejected_curving);
+  json.member("rejected_by_quality", run.counters.rejected_quality);
   json.key("passes").begin_array();
   for (const CurvedPass& pass : run.passes) {
     json.begin_object();
     write_curved_operation(json, "collapses", pass.collapses);
     write_curved_operation(json, "splits", pass.splits);
+    write_curved_operation(json, "swaps", pass.swaps);
+    write_curved_operation(json, "moves", pass.moves);
     json.member("vertices", pass.vertices).member("elements", pass.elements).member("seconds", pass.seconds);
     json.end_object();
   }
@@ -112,7 +115,7 @@ void write_adaptation_report_table(std::ostream& out, const AdaptationReport& re
                   p.moves.done, p.vertices, p.elements, p.seconds, p.window_open ? "open" : "closed");
     out << line;
   }
-  char summary[400];
+  char summary[512];
   std::snprintf(summary, sizeof summary,
                 "%s after %zu passes: %d -> %d elements; edges unit %.1f%% (length %.3f/%.3f/%.3f min/mean/max); "
                 "quality min %.3f mean %.3f (%.2f%% below 0.1); adapt %.2f s, curve %.2f s, peak %.0f MiB\n",
@@ -127,9 +130,10 @@ void write_adaptation_report_table(std::ostream& out, const AdaptationReport& re
       const CurvedPass& p = run.passes[i];
       std::snprintf(summary, sizeof summary,
                     "curved pass %zu: %d collapses (refused: %d on the boundary, %d too long, %d other), %d splits (refused: %d on "
-                    "the boundary, %d other), %d elements, %.2f s\n",
+                    "the boundary, %d other), %d swaps and %d moves (refused: %d and %d no gain, %d and %d other), %d elements, %.2f s\n",
                     i + 1, p.collapses.done, p.collapses.on_boundary, p.collapses.too_long, p.collapses.refused, p.splits.done,
-                    p.splits.on_boundary, p.splits.refused, p.elements, p.seconds);
+                    p.splits.on_boundary, p.splits.refused, p.swaps.done, p.moves.done, p.swaps.no_gain, p.moves.no_gain,
+                    p.swaps.refused + p.swaps.on_boundary, p.moves.refused + p.moves.on_boundary, p.elements, p.seconds);
       out << summary;
     }
   }
