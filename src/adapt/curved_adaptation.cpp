@@ -30,9 +30,10 @@ const double kCollapseLength = 1 / std::sqrt(2.0);
 // A swap or move must raise the worst curved quality of its cavity by this factor, as the P1
 // loop's smoothing (docs/adaptation.md): no move undoes another.
 constexpr double kQualityGain = 1.01;
-// Swaps are tried on the edges of the elements below this curved quality: each try optimizes and
-// certifies a whole shell, and better elements gain little (docs/adaptation.md §Curved passes).
-constexpr double kSwapQuality = 0.5;
+// Swaps and moves are tried on the elements below this curved quality: each try optimizes and
+// certifies a whole shell or ball, and better elements gain little (docs/adaptation.md §Curved
+// passes: moving every inner vertex took the sphere shell's curved run to 2.3x adapt-then-curve).
+constexpr double kPoorQuality = 0.5;
 // As the P1 loop (docs/adaptation.md §The loop): a pass that splits and collapses fewer than this
 // share of the vertices ends the loop.
 constexpr double kConvergedChange = 2.5e-3;
@@ -120,12 +121,20 @@ double worst_quality(const P2Operations<D>& operations, std::span<const Index> e
   return worst;
 }
 
-// The edges of the elements below kSwapQuality, each once, in vertex order.
+// The poor elements: below kPoorQuality.
+template <int D>
+std::vector<Index> poor_elements(const Mesh<D>& mesh, const P2Operations<D>& operations) {
+  std::vector<Index> poor;
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    if (operations.quality(k) < kPoorQuality) poor.push_back(k);
+  return poor;
+}
+
+// The edges of the poor elements, each once, in vertex order.
 template <int D>
 std::vector<std::pair<Index, Index>> edges_of_poor_elements(const Mesh<D>& mesh, const P2Operations<D>& operations) {
   std::vector<std::pair<Index, Index>> edges;
-  for (Index k = 0; k < mesh.element_count(); ++k) {
-    if (operations.quality(k) >= kSwapQuality) continue;
+  for (Index k : poor_elements(mesh, operations)) {
     const auto& v = mesh.element(k);
     for (int i = 0; i <= D; ++i)
       for (int j = i + 1; j <= D; ++j) edges.emplace_back(std::min(v[i], v[j]), std::max(v[i], v[j]));
@@ -145,7 +154,7 @@ CurvedOperationCount swap_poor_shells(Mesh<D>& mesh, P2Operations<D>& operations
     const Index a = first, b = second;
     if (mesh.find_edge(a, b) == kNoIndex) continue;
     collect_shell(mesh, a, b, shell);
-    const double bar = kQualityGain * worst_quality(operations, shell);
+    const typename P2Operations<D>::Bar bar{kQualityGain * worst_quality(operations, shell), unit_length(operations.edge_length(a, b))};
     ring.clear();
     for (Index k : shell)
       for (Index c : mesh.element(k))
@@ -158,26 +167,42 @@ CurvedOperationCount swap_poor_shells(Mesh<D>& mesh, P2Operations<D>& operations
   return count;
 }
 
-// Each inner vertex moved toward the mean of the points that would make its curved edges unit
-// (w + (v − w)/l(v, w) over its ball's other vertices, as the P1 smoothing), the whole step or
-// half of it, when that raises its ball's worst curved quality.
+// The inner vertices of the poor elements, each once, in order.
+template <int D>
+std::vector<Index> inner_vertices_of_poor_elements(const Mesh<D>& mesh, const P2Operations<D>& operations) {
+  std::vector<bool> inner(static_cast<std::size_t>(mesh.vertex_count()), false);
+  for (Index v : volume_vertices(mesh)) inner[static_cast<std::size_t>(v)] = !mesh.vertex_removed(v);
+  std::vector<Index> vertices;
+  for (Index k : poor_elements(mesh, operations))
+    for (Index v : mesh.element(k))
+      if (inner[static_cast<std::size_t>(v)]) vertices.push_back(v);
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  return vertices;
+}
+
+// Each inner vertex of a poor element moved toward the mean of the points that would make its
+// curved edges unit (w + (v − w)/l(v, w) over its neighbours w, as the P1 smoothing), the whole
+// step or half of it, when that raises its ball's worst curved quality and keeps its unit edges.
 template <int D>
 CurvedOperationCount smooth_curved(Mesh<D>& mesh, P2Operations<D>& operations) {
   CurvedOperationCount count;
-  std::vector<Index> ball;
-  for (Index v : volume_vertices(mesh)) {
-    if (mesh.vertex_removed(v)) continue;
+  std::vector<Index> ball, neighbors;
+  for (Index v : inner_vertices_of_poor_elements(mesh, operations)) {
     collect_ball(mesh, v, ball);
-    Vec<D> target{};
-    int terms = 0;
+    neighbors.clear();
     for (Index k : ball)
       for (Index w : mesh.element(k))
-        if (w != v) {
-          target = target + (mesh.vertex(w) + (1 / operations.edge_length(v, w)) * (mesh.vertex(v) - mesh.vertex(w)));
-          ++terms;
-        }
-    const Vec<D> from = mesh.vertex(v), step = (1.0 / terms) * target - from;
-    const double bar = kQualityGain * worst_quality(operations, ball);
+        if (w != v && !small_set_holds(neighbors, w)) neighbors.push_back(w);
+    Vec<D> target{};
+    int unit = 0;
+    for (Index w : neighbors) {
+      const double length = operations.edge_length(v, w);
+      target = target + (mesh.vertex(w) + (1 / length) * (mesh.vertex(v) - mesh.vertex(w)));
+      unit += unit_length(length);
+    }
+    const Vec<D> from = mesh.vertex(v), step = (1.0 / static_cast<double>(neighbors.size())) * target - from;
+    const typename P2Operations<D>::Bar bar{kQualityGain * worst_quality(operations, ball), unit};
     CavityStatus status = operations.move_vertex(v, from + step, bar);
     if (status == CavityStatus::kNoImprovement || status == CavityStatus::kRejectedByCurving)
       status = operations.move_vertex(v, from + 0.5 * step, bar);
@@ -233,7 +258,7 @@ CurvedMeasures measure_curved(Mesh<D>& mesh, const MetricField<D>& field) {
     measures.length_min = std::min(measures.length_min, length);
     measures.length_max = std::max(measures.length_max, length);
     measures.length_mean += length;
-    unit += length >= kCollapseLength && length <= kSplitLength;
+    unit += unit_length(length);
   }
   measures.length_mean /= static_cast<double>(std::max<Index>(1, measures.edge_count));
   measures.unit_share = static_cast<double>(unit) / static_cast<double>(std::max<Index>(1, measures.edge_count));

@@ -114,11 +114,24 @@ CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const I
     ++counters_.rejected_curving;
     return CavityStatus::kRejectedByCurving;
   }
-  if (request.quality_to_beat >= 0 && !new_elements_above(request.quality_to_beat)) {
+  if ((request.quality_to_beat >= 0 && !new_elements_above(request.quality_to_beat)) ||
+      (request.unit_edges_to_keep >= 0 && unit_new_inner_edges(mesh) < request.unit_edges_to_keep)) {
     ++counters_.rejected_quality;
     return CavityStatus::kNoImprovement;
   }
   return CavityStatus::kAccepted;
+}
+
+template <int D>
+int P2CavityOperator<D>::unit_new_inner_edges(const Mesh<D>& mesh) const {
+  int unit = 0;
+  for (const CurvedEdge& edge : curved_) {
+    if (!edge.inner) continue;
+    const auto a = static_cast<std::size_t>(edge.a), b = static_cast<std::size_t>(edge.b);
+    unit += unit_length(high_precision_edge_length(field_, mesh.vertex(edge.a), mesh.vertex(edge.b), vertex_log_metrics_[a],
+                                                   vertex_log_metrics_[b], edge.node(), vertex_hints_[a]));
+  }
+  return unit;
 }
 
 template <int D>

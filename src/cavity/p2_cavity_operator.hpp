@@ -19,6 +19,7 @@
 // it recreates (same vertices, same nodes) keeps that element's certificate.
 #pragma once
 
+#include <cmath>
 #include <span>
 #include <vector>
 
@@ -67,7 +68,13 @@ struct P2CavityRequest {
   // The smallest curved mean ratio of the new elements (docs/curving.md §Curved quality) must be
   // above this, else kNoImprovement: swaps and smoothing only improve.
   double quality_to_beat = -1;
+  // At least this many of the new inner edges must be unit in their curved length (in [1/√2, √2]),
+  // else kNoImprovement: a swap or move keeps the unit edges it replaces. Negative: not asked.
+  int unit_edges_to_keep = -1;
 };
+
+// Whether a Riemannian edge length is unit (the loop's range [1/√2, √2]).
+inline bool unit_length(double length) { return length >= 1 / std::sqrt(2.0) && length <= std::sqrt(2.0); }
 
 struct P2CavityCounters {
   long long cavities = 0, accepted = 0;
@@ -146,6 +153,8 @@ class P2CavityOperator {
   bool certified(const Candidate& candidate);
   // Whether every new element's curved mean ratio is above `bar`.
   bool new_elements_above(double bar) const;
+  // How many new inner edges are unit in their curved length.
+  int unit_new_inner_edges(const Mesh<D>& mesh) const;
   // Pulls back the changed edges of a failing candidate; false when nothing certifies it.
   bool correct(const Candidate& candidate);
   // After a correction: the candidates holding an edge it moved need certifying again.

@@ -129,7 +129,7 @@ CavityStatus P2Operations<D>::collapse_edge(Index removed, Index kept) {
 }
 
 template <int D>
-CavityStatus P2Operations<D>::swap_edge(Index a, Index b, Index apex, double quality_to_beat) {
+CavityStatus P2Operations<D>::swap_edge(Index a, Index b, Index apex, Bar bar) {
   if (mesh_.find_edge(a, b) == kNoIndex) return CavityStatus::kNotStarShaped;
   collect_shell(mesh_, a, b, cavity_);
   const Index ends[2] = {a, b};
@@ -138,12 +138,13 @@ CavityStatus P2Operations<D>::swap_edge(Index a, Index b, Index apex, double qua
   if (apex == a || apex == b || !apex_in_shell) return CavityStatus::kNotStarShaped;
   // The new edges from the apex start straight (their fallback).
   P2CavityRequest<D> request;
-  request.quality_to_beat = quality_to_beat;
+  request.quality_to_beat = bar.quality_to_beat;
+  request.unit_edges_to_keep = bar.unit_edges_to_keep;
   return operator_.apply(mesh_, cavity_, apex, request);
 }
 
 template <int D>
-CavityStatus P2Operations<D>::move_vertex(Index v, const Vec<D>& x, double quality_to_beat) {
+CavityStatus P2Operations<D>::move_vertex(Index v, const Vec<D>& x, Bar bar) {
   collect_ball(mesh_, v, cavity_);
   const Index vertex[1] = {v};
   if (on_boundary(cavity_, vertex)) return CavityStatus::kCrossesBoundary;
@@ -158,7 +159,8 @@ CavityStatus P2Operations<D>::move_vertex(Index v, const Vec<D>& x, double quali
   shifted_starts(v, from, v);
   P2CavityRequest<D> request;
   request.start_nodes = starts_;
-  request.quality_to_beat = quality_to_beat;
+  request.quality_to_beat = bar.quality_to_beat;
+  request.unit_edges_to_keep = bar.unit_edges_to_keep;
   const CavityStatus status = operator_.apply(mesh_, cavity_, v, request);
   if (status != CavityStatus::kAccepted) {
     mesh_.vertex(v) = from;

@@ -30,10 +30,15 @@ class P2Operations {
   // Each returns the P2 operator's verdict; on anything but kAccepted the mesh is unchanged.
   CavityStatus split_edge(Index a, Index b, Index* inserted = nullptr);
   CavityStatus collapse_edge(Index removed, Index kept);
-  // A swap or move with `quality_to_beat` ≥ 0 is refused (kNoImprovement) unless every new element's
-  // curved mean ratio is above it.
-  CavityStatus swap_edge(Index a, Index b, Index apex, double quality_to_beat = -1);
-  CavityStatus move_vertex(Index v, const Vec<D>& x, double quality_to_beat = -1);
+  // A swap or move with `bar.quality_to_beat` ≥ 0 is refused (kNoImprovement) unless every new
+  // element's curved mean ratio is above it, and with `bar.unit_edges_to_keep` ≥ 0 unless as many
+  // of its new inner edges are unit (P2CavityRequest).
+  struct Bar {
+    double quality_to_beat = -1;
+    int unit_edges_to_keep = -1;
+  };
+  CavityStatus swap_edge(Index a, Index b, Index apex, Bar bar = {});
+  CavityStatus move_vertex(Index v, const Vec<D>& x, Bar bar = {});
 
   // The Riemannian length of the curved edge (a, b) (high-precision quadrature of the length the
   // optimizer minimizes), and the curved mean ratio of element k (src/curve/curved_quality.hpp).

@@ -235,6 +235,48 @@ void expect_refusals_leave_no_trace(int cells) {
 TEST(P2Operations, RefusedTriangleOperationsLeaveTheMeshByteIdentical) { expect_refusals_leave_no_trace<2>(8); }
 TEST(P2Operations, RefusedTetrahedralOperationsLeaveTheMeshByteIdentical) { expect_refusals_leave_no_trace<3>(4); }
 
+template <int D>
+double worst_quality_of(const P2Operations<D>& operations, const std::vector<Index>& elements) {
+  double worst = 1e300;
+  for (Index k : elements) worst = std::min(worst, operations.quality(k));
+  return worst;
+}
+
+// Swaps and moves asked to beat a quality: with a bar no element reaches (the mean ratio is at
+// most 1) each is refused as no improvement, byte for byte; with the ball's own worst quality as
+// the bar, each accepted move leaves a ball whose worst is above it.
+template <int D>
+void expect_quality_bar_kept(int cells) {
+  CurvedCase<D> curved(cells);
+  Mesh<D>& mesh = curved.mesh;
+  P2Operations<D> operations(mesh, *curved.field, nullptr, {});
+  std::mt19937 random(5);
+  const auto before = mesh_bytes(mesh);
+  for (int i = 0; i < 20; ++i) {
+    const auto [a, b, c] = random_edge(mesh, random);
+    for (CavityStatus status : {operations.swap_edge(a, b, c, {1.0}), operations.move_vertex(a, nearby_point(mesh, a, random), {1.0})}) {
+      ASSERT_NE(status, CavityStatus::kAccepted);
+      ASSERT_EQ(mesh_bytes(mesh), before) << to_string(status);
+    }
+  }
+  EXPECT_GT(operations.cavity_operator().counters().rejected_quality, 10);
+  int accepted = 0;
+  std::vector<Index> ball;
+  for (int i = 0; i < 40; ++i) {
+    const Index v = random_edge(mesh, random)[0];
+    collect_ball(mesh, v, ball);
+    const double bar = worst_quality_of(operations, ball);
+    if (operations.move_vertex(v, nearby_point(mesh, v, random), {bar}) != CavityStatus::kAccepted) continue;
+    ++accepted;
+    collect_ball(mesh, v, ball);
+    EXPECT_GT(worst_quality_of(operations, ball), bar);
+  }
+  EXPECT_GT(accepted, 0);
+}
+
+TEST(P2Operations, TriangleSwapsAndMovesKeepTheirQualityBar) { expect_quality_bar_kept<2>(8); }
+TEST(P2Operations, TetrahedralSwapsAndMovesKeepTheirQualityBar) { expect_quality_bar_kept<3>(4); }
+
 // The P2 map of element k at barycentrics λ: Σ λ_i(2λ_i − 1) x_i + Σ_edges 4 λ_i λ_j x_ij.
 template <int D>
 Vec<D> p2_map(const Mesh<D>& mesh, Index k, const std::array<double, D + 1>& lambda) {
