@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "adapt/adaptation_mesh.hpp"
+#include "base/error.hpp"
 #include "mesh/spatial_order.hpp"
 
 namespace hocav {
@@ -92,6 +93,11 @@ template <int D>
 AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                               const AdaptationSettings& settings) {
   AdaptationMesh<D> am(mesh, metric, geometry, settings.feature_angle_degrees);
+  if (!settings.first_pass_vertices.empty()) {
+    if (settings.first_pass_vertices.size() != static_cast<std::size_t>(mesh.vertex_count()))
+      throw Error("adaptation: the first pass's vertices do not match the mesh");
+    am.settle_outside(settings.first_pass_vertices);
+  }
   AdaptationLimits limits;
   limits.collapse_new_length = kOpenCollapseLength;
   limits.cos_feature_angle = std::cos(settings.feature_angle_degrees * std::numbers::pi / 180);

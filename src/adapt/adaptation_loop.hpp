@@ -26,6 +26,10 @@ struct AdaptationSettings {
   // False: no edge with a required vertex is split. A distributed part's interface is required, and
   // splits toward an interface coarser than the metric would never end (docs/distributed.md).
   bool split_at_required_vertices = true;
+  // Not empty: per vertex of the input, whether the first pass tries it; the rest is adapted
+  // already, and later passes try what changed, as always. The distributed loop's last pass near
+  // the interfaces its parts kept frozen (docs/distributed.md).
+  std::vector<char> first_pass_vertices;
   // Called after each pass with its number (1-based) and the passes' cap, for progress.
   std::function<void(int, int)> progress;
 };

@@ -90,6 +90,12 @@ class AdaptationMesh {
   void commit(CavityOperator<D>& plan);
   // Marks a vertex changed (a move marks its ball's vertices).
   void mark_changed(Index v) { mesh_.vertex_attribute(stamp_attribute_, v)[0] = clock_; }
+  // Marks the vertices outside `region` (per vertex) unchanged since before clock 0: the first pass
+  // tries only the region (AdaptationSettings::first_pass_vertices).
+  void settle_outside(std::span<const char> region) {
+    for (Index v = 0; v < mesh_.vertex_count(); ++v)
+      if (!region[static_cast<std::size_t>(v)]) mesh_.vertex_attribute(stamp_attribute_, v)[0] = -1;
+  }
   bool changed_recently(Index v) const { return changed_since(v, previous_pass_start_); }
   // Whether v's ball changed at or after `clock` (everything did since clock 0).
   bool changed_since(Index v, int clock) const { return mesh_.vertex_attribute(stamp_attribute_, v)[0] >= clock; }

@@ -109,6 +109,19 @@ Index interface_face_count(const std::vector<MeshPart<D>>& parts) {
   return count / 2;
 }
 
+// The last interfaces' vertices and their neighbours (per vertex of `mesh`): the region of the last
+// pass, which mends what the parts could not mend next to their frozen interfaces.
+template <int D>
+std::vector<char> around_interfaces(const Mesh<D>& mesh, const std::vector<char>& interface_vertex) {
+  std::vector<char> region(interface_vertex.size(), 0);
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    const auto& element = mesh.element(k);
+    if (std::none_of(element.begin(), element.end(), [&](Index v) { return interface_vertex[static_cast<std::size_t>(v)] != 0; })) continue;
+    for (Index v : element) region[static_cast<std::size_t>(v)] = 1;
+  }
+  return region;
+}
+
 // One iteration on rank 0: partition, send, adapt part 0, receive, merge.
 template <int D>
 struct RootIteration {
@@ -180,6 +193,15 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
     if (on_iteration) on_iteration(root.figures);
   }
   for (int p = 1; p < process_count(); ++p) send_bytes(p, {});  // stop
+  // The last iteration's parts kept their interfaces frozen: an element a split made poor next to
+  // one stays poor, since mending it needs a swap through the interface or a move of its vertices.
+  // The serial loop, from the merged mesh, tries first only the region around them.
+  AdaptationSettings last = settings;
+  last.first_pass_vertices = around_interfaces(mesh, root.old_interface);
+  const AdaptationRun mending = adapt_to_metric(mesh, metric, geometry, last);
+  run.passes.insert(run.passes.end(), mending.passes.begin(), mending.passes.end());
+  run.converged = mending.converged;
+  run.stopped_with_window_open = mending.stopped_with_window_open;
   return run;
 }
 

@@ -133,6 +133,26 @@ TEST(AdaptationLoop, TheRunReportsItsWindowPassByPass) {
   EXPECT_TRUE(capped_run.stopped_with_window_open);
 }
 
+// A first pass limited to no vertex tries nothing, and the loop, seeing no change, stops there: the
+// mesh, twice too coarse for the metric, comes out as it went in. A region of the wrong size is refused.
+TEST(AdaptationLoop, TheFirstPassTriesOnlyTheGivenVertices) {
+  const Mesh<2> input = adapt_test::unit_mesh<2>(10);
+  Mesh<2> mesh = input;
+  AdaptationSettings settings;
+  settings.first_pass_vertices.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
+  const AdaptationRun run = adapt_to_metric<2>(mesh, uniform_metric<2>(0.05), nullptr, settings);
+  ASSERT_EQ(run.passes.size(), 1u);
+  EXPECT_TRUE(run.converged);
+  EXPECT_EQ(run.passes[0].splits.done + run.passes[0].collapses.done + run.passes[0].swaps.done + run.passes[0].moves.done, 0);
+  EXPECT_EQ(mesh.element_count(), input.element_count());
+  ASSERT_EQ(mesh.vertex_count(), input.vertex_count());
+  Mesh<2> free = input;
+  adapt_to_metric<2>(free, uniform_metric<2>(0.05), nullptr, {});
+  EXPECT_GT(free.element_count(), 2 * input.element_count());  // what the limit kept from happening
+  settings.first_pass_vertices.pop_back();
+  EXPECT_THROW(adapt_to_metric<2>(mesh, uniform_metric<2>(0.05), nullptr, settings), Error);
+}
+
 // Threads change when work is done, never what is done: the same vertices, elements and facets.
 // The shear layer crosses the cube's sides: boundary splits there re-star facets next to edges
 // whose previews were made at the chunk's start (their facet ids change while their shells' elements
