@@ -87,17 +87,25 @@ AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits, T
   return pass;
 }
 
+// AdaptationSettings::first_pass_vertices with the vertices of the poor elements.
+template <int D>
+std::vector<char> first_pass_region(const AdaptationMesh<D>& am, std::vector<char> region) {
+  const Mesh<D>& mesh = am.mesh();
+  if (region.size() != static_cast<std::size_t>(mesh.vertex_count()))
+    throw Error("adaptation: the first pass's vertices do not match the mesh");
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    if (am.quality(k) < kPoorQuality)
+      for (Index v : mesh.element(k)) region[static_cast<std::size_t>(v)] = 1;
+  return region;
+}
+
 }  // namespace
 
 template <int D>
 AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                               const AdaptationSettings& settings) {
   AdaptationMesh<D> am(mesh, metric, geometry, settings.feature_angle_degrees);
-  if (!settings.first_pass_vertices.empty()) {
-    if (settings.first_pass_vertices.size() != static_cast<std::size_t>(mesh.vertex_count()))
-      throw Error("adaptation: the first pass's vertices do not match the mesh");
-    am.settle_outside(settings.first_pass_vertices);
-  }
+  if (!settings.first_pass_vertices.empty()) am.settle_outside(first_pass_region(am, settings.first_pass_vertices));
   AdaptationLimits limits;
   limits.collapse_new_length = kOpenCollapseLength;
   limits.cos_feature_angle = std::cos(settings.feature_angle_degrees * std::numbers::pi / 180);

@@ -15,6 +15,9 @@ namespace hocav {
 // diagonal (`hocav adapt --hausd`).
 constexpr double kRelativeHausd = 0.01;
 
+// Elements below this quality are poor (the report's "below 0.1" share).
+constexpr double kPoorQuality = 0.1;
+
 struct AdaptationSettings {
   int max_passes = 20;
   double feature_angle_degrees = 45;  // boundary sides meeting at more are ridges (2D: corners)
@@ -26,9 +29,10 @@ struct AdaptationSettings {
   // False: no edge with a required vertex is split. A distributed part's interface is required, and
   // splits toward an interface coarser than the metric would never end (docs/distributed.md).
   bool split_at_required_vertices = true;
-  // Not empty: per vertex of the input, whether the first pass tries it; the rest is adapted
-  // already, and later passes try what changed, as always. The distributed loop's last pass near
-  // the interfaces its parts kept frozen (docs/distributed.md).
+  // Not empty: per vertex of the input (compact), whether the first pass tries it; it also tries
+  // the vertices of every element of quality below kPoorQuality, and later passes what changed, as
+  // always. The distributed loop's last run near the interfaces its parts kept frozen, and around
+  // the poor elements a part left (docs/distributed.md).
   std::vector<char> first_pass_vertices;
   // Called after each pass with its number (1-based) and the passes' cap, for progress.
   std::function<void(int, int)> progress;

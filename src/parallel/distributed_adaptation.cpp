@@ -195,7 +195,8 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   for (int p = 1; p < process_count(); ++p) send_bytes(p, {});  // stop
   // The last iteration's parts kept their interfaces frozen: an element a split made poor next to
   // one stays poor, since mending it needs a swap through the interface or a move of its vertices.
-  // The serial loop, from the merged mesh, tries first only the region around them.
+  // The serial loop, from the merged mesh, tries first only the region around them (and the poor
+  // elements a part's loop left elsewhere).
   AdaptationSettings last = settings;
   last.first_pass_vertices = around_interfaces(mesh, root.old_interface);
   const AdaptationRun mending = adapt_to_metric(mesh, metric, geometry, last);

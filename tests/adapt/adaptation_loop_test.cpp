@@ -153,6 +153,24 @@ TEST(AdaptationLoop, TheFirstPassTriesOnlyTheGivenVertices) {
   EXPECT_THROW(adapt_to_metric<2>(mesh, uniform_metric<2>(0.05), nullptr, settings), Error);
 }
 
+// The first pass also tries the poor elements outside the region: the square, unit in its metric
+// but for the vertex at its centre moved 0.09 toward its right neighbour, is mended with no vertex given.
+TEST(AdaptationLoop, TheFirstPassAlsoTriesThePoorElements) {
+  Mesh<2> mesh = adapt_test::unit_mesh<2>(10);
+  const AdaptationMetric<2> metric = uniform_metric<2>(0.1);
+  Index centre = kNoIndex;
+  for (Index v = 0; v < mesh.vertex_count(); ++v)
+    if (norm(mesh.vertex(v) - Vec<2>{0.5, 0.5}) < 1e-12) centre = v;
+  ASSERT_NE(centre, kNoIndex);
+  mesh.vertex(centre)[0] += 0.09;
+  ASSERT_LT(measured(mesh, metric).quality_min, kPoorQuality);
+  AdaptationSettings settings;
+  settings.first_pass_vertices.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
+  adapt_to_metric<2>(mesh, metric, nullptr, settings);
+  adapt_test::expect_closed_and_consistent(mesh);
+  EXPECT_GE(measured(mesh, metric).quality_min, 0.5);
+}
+
 // Threads change when work is done, never what is done: the same vertices, elements and facets.
 // The shear layer crosses the cube's sides: boundary splits there re-star facets next to edges
 // whose previews were made at the chunk's start (their facet ids change while their shells' elements
