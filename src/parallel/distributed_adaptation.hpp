@@ -26,7 +26,8 @@ struct DistributedIteration {
 
 // On rank 0: adapts `mesh` (P1, with topology) with every process (the others in
 // serve_distributed_adaptation), the same interface as adapt_to_metric. The mesh is compact and has
-// its topology on return; the run's passes are each iteration's, summed over the parts.
+// its topology on return; the run's passes are each iteration's, summed over the parts, then those
+// of the last serial run from the last interfaces (docs/distributed.md).
 template <int D>
 AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                                 const AdaptationSettings& settings, const std::function<void(const DistributedIteration&)>& on_iteration);
