@@ -6,7 +6,6 @@
 #include <optional>
 
 #include "adapt/reinsertion_curving.hpp"
-#include "base/small_set.hpp"
 #include "cavity/p2_operations.hpp"
 #include "mesh/ball_and_shell.hpp"
 
@@ -155,10 +154,7 @@ CurvedOperationCount swap_poor_shells(Mesh<D>& mesh, P2Operations<D>& operations
     if (mesh.find_edge(a, b) == kNoIndex) continue;
     collect_shell(mesh, a, b, shell);
     const typename P2Operations<D>::Bar bar{kQualityGain * worst_quality(operations, shell), unit_length(operations.edge_length(a, b))};
-    ring.clear();
-    for (Index k : shell)
-      for (Index c : mesh.element(k))
-        if (c != a && c != b && !small_set_holds(ring, c)) ring.push_back(c);
+    other_vertices<D>(mesh, shell, a, b, ring);
     CavityStatus status = CavityStatus::kNotStarShaped;
     for (std::size_t i = 0; i < ring.size() && status != CavityStatus::kAccepted && status != CavityStatus::kCrossesBoundary; ++i)
       status = operations.swap_edge(a, b, ring[i], bar);
@@ -190,10 +186,7 @@ CurvedOperationCount smooth_curved(Mesh<D>& mesh, P2Operations<D>& operations) {
   std::vector<Index> ball, neighbors;
   for (Index v : inner_vertices_of_poor_elements(mesh, operations)) {
     collect_ball(mesh, v, ball);
-    neighbors.clear();
-    for (Index k : ball)
-      for (Index w : mesh.element(k))
-        if (w != v && !small_set_holds(neighbors, w)) neighbors.push_back(w);
+    other_vertices<D>(mesh, ball, v, v, neighbors);
     Vec<D> target{};
     int unit = 0;
     for (Index w : neighbors) {

@@ -246,7 +246,8 @@ OperationCount split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& l
                 [&](std::size_t worker, std::size_t i) { preview_split(am, chunk[i].a, chunk[i].b, previews[i], scratch[worker]); });
     for (std::size_t i = 0; i < chunk.size(); ++i) {
       const EdgeCandidate& c = chunk[i];
-      if (!previews[i].current(am.mesh()) || !same_boundary(am, c.a, c.b, previews[i], fresh, scratch.front()))
+      // (On one thread each preview was made just now.)
+      if (chunk_size > 1 && (!previews[i].current(am.mesh()) || !same_boundary(am, c.a, c.b, previews[i], fresh, scratch.front())))
         preview_split(am, c.a, c.b, previews[i], scratch.front());
       if (!previews[i].made || am.edge_length(c.a, c.b) <= limits.split_length) continue;  // gone, or no longer long
       count.add(split_edge(am, c.a, c.b, previews[i], limits, SplitPurpose::kLength, scratch.front()));

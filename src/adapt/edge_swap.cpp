@@ -141,15 +141,6 @@ Index best_apex(const AdaptationMesh<D>& am, const SwapCavity<D>& cavity, SwapSc
   return chosen;
 }
 
-// The vertices of the cavity's elements other than a and b.
-template <int D>
-void other_vertices(const Mesh<D>& mesh, std::span<const Index> cavity, Index a, Index b, std::vector<Index>& out) {
-  out.clear();
-  for (Index k : cavity)
-    for (Index v : mesh.element(k))
-      if (v != a && v != b && !small_set_holds(out, v)) out.push_back(v);
-}
-
 // Whether the edge's shell touches the boundary (then the edge is kept: boundary edges change only
 // with their facets, in split and collapse).
 template <int D>

@@ -13,8 +13,8 @@ namespace hocav {
 namespace {
 
 // A new element thinner than this times its longest edge to the power D is flat: the cavity
-// operator's bound (CavityOptions::min_relative_measure).
-constexpr double kVisibleMeasure = 1e-12;
+// operator's default bound.
+constexpr double kVisibleMeasure = CavityOptions{}.min_relative_measure;
 
 template <int D>
 CavityStatus plan_and_commit(Mesh<D>& mesh, CavityWorkspace<D>& work, Index vertex, const CavityOptions& options) {

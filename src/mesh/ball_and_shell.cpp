@@ -106,6 +106,16 @@ void collect_shell_from(const Mesh<D>& mesh, Index start, Index a, Index b, std:
   walk_shell(mesh, start, a, b, shell);
 }
 
+template <int D>
+void other_vertices(const Mesh<D>& mesh, std::span<const Index> elements, Index a, Index b, std::vector<Index>& out) {
+  out.clear();
+  for (Index k : elements)
+    for (Index v : mesh.element(k))
+      if (v != a && v != b && !small_set_holds(out, v)) out.push_back(v);
+}
+
+template void other_vertices(const Mesh<2>&, std::span<const Index>, Index, Index, std::vector<Index>&);
+template void other_vertices(const Mesh<3>&, std::span<const Index>, Index, Index, std::vector<Index>&);
 template void collect_ball(const Mesh<2>&, Index, std::vector<Index>&);
 template void collect_ball(const Mesh<3>&, Index, std::vector<Index>&);
 template void collect_shell(const Mesh<2>&, Index, Index, std::vector<Index>&);

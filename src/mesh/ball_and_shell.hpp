@@ -2,6 +2,7 @@
 // by walking face adjacency from Mesh::vertex_element. Needs Mesh::build_topology().
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "mesh/mesh.hpp"
@@ -19,6 +20,11 @@ void collect_shell(const Mesh<D>& mesh, Index a, Index b, std::vector<Index>& sh
 // The same, from element `start`, which contains both a and b (no walk to find one).
 template <int D>
 void collect_shell_from(const Mesh<D>& mesh, Index start, Index a, Index b, std::vector<Index>& shell);
+
+// Fills `out` with the vertices of these elements other than a and b, once each, in the order met
+// (a shell's ring with the edge's ends; a ball's neighbours with a = b = the centre).
+template <int D>
+void other_vertices(const Mesh<D>& mesh, std::span<const Index> elements, Index a, Index b, std::vector<Index>& out);
 
 // The local index of vertex v in element k, or -1.
 template <int D>
