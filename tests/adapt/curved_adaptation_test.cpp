@@ -50,7 +50,10 @@ void check_curved_loop() {
   ASSERT_TRUE(report.curved_passes);
   ASSERT_FALSE(report.curved_passes->passes.empty());
   const CurvedPass& first = report.curved_passes->passes.front();
-  EXPECT_GT(first.splits.done + first.collapses.done, 0) << "adapt-then-curve left curved lengths outside the unit range";
+  // Work to do after adapt-then-curve: in 3D, since the twelfth session's swap bars, only swaps and
+  // moves (its short curved edges are on the boundary or too long to collapse).
+  EXPECT_GT(first.splits.done + first.collapses.done + first.swaps.done + first.moves.done, 0)
+      << "the curved passes changed nothing after adapt-then-curve";
   adapt_test::expect_closed_and_consistent(curved.mesh);
   EXPECT_EQ(curved.mesh.order(), 2);
   expect_certified(curved.mesh, CurvingOptions{}.jacobian_floor);
