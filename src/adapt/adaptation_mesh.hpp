@@ -1,6 +1,7 @@
 // The mesh an adaptation run changes, with what its operators read at every vertex: the metric
 // (clamped, from the run's AdaptationMetric), the vertex's geometric class, a back-mesh hint for the
-// next metric evaluation near it, and when its ball last changed. All four are vertex attributes of
+// next metric evaluation near it, a geometry hint for the next projection near it, and when its
+// ball last changed. All five are vertex attributes of
 // the mesh, so they follow every insertion, removal and compaction (docs/mesh-model.md); each
 // element's quality is an element attribute.
 #pragma once
@@ -46,6 +47,10 @@ class AdaptationMesh {
     return m;
   }
   VertexClass vertex_class(Index v) const { return static_cast<VertexClass>(mesh_.vertex_attribute(class_attribute_, v)[0]); }
+  // The geometry's patch of the last projection at or near a boundary vertex (kNoIndex: none yet):
+  // the next projection near it starts there (ProjectionQuery::hint).
+  Index surface_hint(Index v) const { return static_cast<Index>(mesh_.vertex_attribute(surface_hint_attribute_, v)[0]); }
+  void set_surface_hint(Index v, Index patch) { mesh_.vertex_attribute(surface_hint_attribute_, v)[0] = patch; }
   // The metric at a point, with the back-mesh element that held it (a vertex there keeps it as its
   // hint).
   struct PointMetric {
@@ -119,7 +124,8 @@ class AdaptationMesh {
   Mesh<D>& mesh_;
   const AdaptationMetric<D>& metric_;
   const BoundaryGeometry<D>* geometry_;
-  int metric_attribute_, class_attribute_, hint_attribute_, stamp_attribute_, quality_attribute_, element_stamp_attribute_;
+  int metric_attribute_, class_attribute_, hint_attribute_, surface_hint_attribute_, stamp_attribute_, quality_attribute_,
+      element_stamp_attribute_;
   int clock_ = 0, pass_start_ = 0, previous_pass_start_ = 0, sweep_start_ = 0;
   CavityWorkspace<D> work_;
 };

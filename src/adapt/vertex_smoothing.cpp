@@ -47,11 +47,15 @@ struct alignas(64) SmoothingScratch {  // a cache line of its own: each thread w
   std::vector<Vec<D>> facet_normals;  // before the move
 };
 
-// Where a surface vertex may go near x: on the geometry of its facets' ref, or (without one) in the
-// plane through its start with the mean normal of its facets.
+// Where surface vertex v may go near x: on the geometry of its facets' ref (searched from v's last
+// projection), or (without one) in the plane through its start with the mean normal of its facets.
 template <int D>
-Vec<D> on_surface(const AdaptationMesh<D>& am, const Vec<D>& x, const Vec<D>& start, const SmoothingScratch<D>& scratch) {
-  if (am.geometry()) return am.geometry()->project(x, {am.mesh().facet_ref(scratch.facets.front())}).point;
+Vec<D> on_surface(AdaptationMesh<D>& am, Index v, const Vec<D>& x, const Vec<D>& start, const SmoothingScratch<D>& scratch) {
+  if (am.geometry()) {
+    const BoundaryPoint<D> projected = am.geometry()->project(x, {am.mesh().facet_ref(scratch.facets.front()), am.surface_hint(v)});
+    am.set_surface_hint(v, projected.patch);
+    return projected.point;
+  }
   Vec<D> normal{};
   for (const Vec<D>& n : scratch.facet_normals) normal = normal + n;
   normal = (1 / norm(normal)) * normal;
@@ -76,7 +80,7 @@ bool move_passes(const AdaptationMesh<D>& am, Index v, const Vec<D>& x, const Sy
   return lengths_stay_in_window(old_lengths, length_range_from<D>(am, x, metric_x, scratch.neighbors), limits);
 }
 
-// Tries to move v (its ball: `ball`); changes only v, its metric and its ball's kept qualities, so
+// Tries to move v (its ball: `ball`); changes only v, its metric, geometry hint and its ball's kept qualities, so
 // vertices whose balls share no element may be tried at the same time.
 template <int D>
 bool smooth_vertex(AdaptationMesh<D>& am, Index v, std::span<const Index> ball, SmoothingScratch<D>& scratch,
@@ -103,8 +107,8 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, std::span<const Index> ball, 
   }
   const double old_worst = am.quality(*worst);
   const Vec<D> step = unit_edge_target(am, v, ball, scratch.neighbors, scratch.lengths) - start;
-  for (double fraction : {1.0, 0.5, 0.25}) {
-    const Vec<D> x = on_boundary ? on_surface(am, start + fraction * step, start, scratch) : start + fraction * step;
+  for (double fraction : {1.0, 0.5}) {
+    const Vec<D> x = on_boundary ? on_surface(am, v, start + fraction * step, start, scratch) : start + fraction * step;
     if (!move_passes(am, v, x, am.metric_near(x, v), scratch, kSmoothingGain * old_worst, old_lengths, limits)) continue;
     const SymMat<D> start_metric = am.metric(v);
     am.move_vertex(v, x, ball);
