@@ -117,6 +117,7 @@ PointLocator<D>::PointLocator(const Mesh<D>& mesh) : mesh_(mesh), id_(++last_loc
       stride *= n;
     }
   }
+  index_boundary_balls();
 }
 
 template <int D>
@@ -189,6 +190,31 @@ Localization<D> PointLocator<D>::localize(const Vec<D>& x, Index hint, LocatorSc
 }
 
 template <int D>
+void PointLocator<D>::index_boundary_balls() {
+  std::vector<char> on_boundary(static_cast<std::size_t>(mesh_.vertex_count()), 0);
+  for (Index k = 0; k < mesh_.element_count(); ++k)
+    for (int face = 0; face <= D; ++face)
+      if (mesh_.neighbor(k, face) == kNoIndex)
+        for (int i = 0; i < D; ++i) on_boundary[mesh_.element(k)[face_vertices<D>(face)[i]]] = 1;
+  std::vector<Index> ball;
+  boundary_ball_start_.assign(1, 0);
+  for (Index v = 0; v < mesh_.vertex_count(); ++v) {
+    if (on_boundary[v]) {
+      collect_ball(mesh_, v, ball);
+      for (Index k : ball)
+        if (is_boundary_element(k)) boundary_ball_elements_.push_back(k);
+    }
+    boundary_ball_start_.push_back(static_cast<Index>(boundary_ball_elements_.size()));
+  }
+}
+
+template <int D>
+std::span<const Index> PointLocator<D>::boundary_ball(Index v) const {
+  const auto begin = static_cast<std::size_t>(boundary_ball_start_[v]);
+  return std::span<const Index>(boundary_ball_elements_).subspan(begin, static_cast<std::size_t>(boundary_ball_start_[v + 1]) - begin);
+}
+
+template <int D>
 bool PointLocator<D>::is_boundary_element(Index k) const {
   for (int face = 0; face <= D; ++face)
     if (mesh_.neighbor(k, face) == kNoIndex) return true;
@@ -204,14 +230,11 @@ Localization<D> PointLocator<D>::closest_boundary_element(const Vec<D>& x, Index
     scratch.element = near_element;
     scratch.face = near_face;
     scratch.candidates.clear();
-    for (int i = 0; i < D; ++i) {
-      collect_ball(mesh_, mesh_.element(near_element)[face_vertices<D>(near_face)[i]], scratch.ball);
-      // Only boundary elements can win, and an element met again in a later ball cannot (closest_among
-      // keeps the first of equals): each boundary element once, at its first place in the balls' order.
-      for (Index k : scratch.ball)
-        if (is_boundary_element(k) && std::find(scratch.candidates.begin(), scratch.candidates.end(), k) == scratch.candidates.end())
-          scratch.candidates.push_back(k);
-    }
+    // An element met again in a later ball cannot win (closest_among keeps the first of equals):
+    // each boundary element once, at its first place in the balls' order.
+    for (int i = 0; i < D; ++i)
+      for (Index k : boundary_ball(mesh_.element(near_element)[face_vertices<D>(near_face)[i]]))
+        if (std::find(scratch.candidates.begin(), scratch.candidates.end(), k) == scratch.candidates.end()) scratch.candidates.push_back(k);
   }
   // The exit face bounds the winner's distance from the start, so farther faces are skipped early; unless
   // its element is not a candidate (a vertex pinching two parts of the mesh: its ball lists one part).

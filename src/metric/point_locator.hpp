@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include "geom/barycentric.hpp"
@@ -36,7 +37,6 @@ struct LocatorScratch {
   Index element = kNoIndex;      // and the boundary face they are around
   int face = -1;
   std::vector<Index> candidates;
-  std::vector<Index> ball;
 };
 
 template <int D>
@@ -70,6 +70,10 @@ class PointLocator {
   // boundary face it left through (else -1).
   Index walk(const Vec<D>& x, Index start, Barycentrics<D>& lambda, int& exit_face) const;
   bool is_boundary_element(Index k) const;
+  // The boundary elements of each boundary vertex's ball, in collect_ball's order (the closest-element
+  // rule's candidates, listed once: the rule runs for every point just outside the mesh).
+  void index_boundary_balls();
+  std::span<const Index> boundary_ball(Index v) const;
   // The element whose boundary face is closest to x, among `candidates` (the first of equals), given a bound
   // of the winner's squared distance (e.g. that of one of their faces).
   Localization<D> closest_among(const Vec<D>& x, const std::vector<Index>& candidates,
@@ -85,6 +89,7 @@ class PointLocator {
   double coordinate_scale_ = 0;  // the largest coordinate magnitude of the mesh
   std::array<int, D> grid_cells_{};
   std::vector<Index> grid_elements_;
+  std::vector<Index> boundary_ball_start_, boundary_ball_elements_;  // ball v: [start[v], start[v + 1])
 };
 
 extern template class PointLocator<2>;
