@@ -42,7 +42,12 @@ bool facet_close(const AdaptationMesh<D>& adaptation, const typename Mesh<D>::Fa
   const Mesh<D>& mesh = adaptation.mesh();
   const Vec<D> normal = area_normal<D>(mesh, vertices);
   if (!(dot(normal, old_normal) > cos_feature_angle * norm(normal) * norm(old_normal))) return false;
-  return !adaptation.geometry() || hausd <= 0 || adaptation.geometry()->project(facet_centroid<D>(mesh, vertices), {ref}).distance <= hausd;
+  if (!adaptation.geometry() || hausd <= 0) return true;
+  // The search starts from a vertex's last projection, when one has been made.
+  Index hint = kNoIndex;
+  for (Index v : vertices)
+    if (hint == kNoIndex) hint = adaptation.surface_hint(v);
+  return adaptation.geometry()->project(facet_centroid<D>(mesh, vertices), {ref, hint}).distance <= hausd;
 }
 
 }  // namespace

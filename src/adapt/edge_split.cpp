@@ -49,6 +49,7 @@ struct SplitPreview {
   std::vector<Index> shell, facets, lines, cavity;
   EdgeSurfaces surfaces;
   Vec<D> point;
+  Index patch = kNoIndex;  // the geometry's patch of the point, if projected onto a surface
   typename AdaptationMesh<D>::PointMetric metric;
   std::vector<Index> read;  // the shell and every element the Delaunay growth tested
   std::vector<typename Mesh<D>::Element> read_vertices;
@@ -109,11 +110,11 @@ bool holds_required(const Mesh<D>& mesh, const SplitPreview<D>& p) {
 // feature curve its two surfaces share, or on its surface (a ridge inside one surface: on its curve
 // where the geometry has one); the straight middle without a geometry.
 template <int D>
-Vec<D> split_point(const AdaptationMesh<D>& am, const Vec<D>& middle, const EdgeSurfaces& surfaces) {
+BoundaryPoint<D> split_point(const AdaptationMesh<D>& am, const Vec<D>& middle, const EdgeSurfaces& surfaces) {
   const BoundaryGeometry<D>* geometry = am.geometry();
-  if (!surfaces.boundary || !geometry) return middle;
-  if (surfaces.line) return geometry->project_on_ridge(middle, surfaces.ref_a, surfaces.ref_b);
-  return geometry->project(middle, {surfaces.ref_a}).point;
+  if (!surfaces.boundary || !geometry) return {middle};
+  if (surfaces.line) return {geometry->project_on_ridge(middle, surfaces.ref_a, surfaces.ref_b)};
+  return geometry->project(middle, {surfaces.ref_a});
 }
 
 // Whether the preview's boundary pieces are still the edge's: facet and line ids can change while
@@ -140,7 +141,9 @@ void preview_split(const AdaptationMesh<D>& am, Index a, Index b, SplitPreview<D
   // a surface the geometry may not have (a distributed part's interface: docs/distributed.md).
   const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
   p.kept = am.vertex_class(a) == VertexClass::kCorner && am.vertex_class(b) == VertexClass::kCorner && holds_required(mesh, p);
-  p.point = p.kept ? middle : split_point(am, middle, p.surfaces);
+  const BoundaryPoint<D> on_geometry = p.kept ? BoundaryPoint<D>{middle} : split_point(am, middle, p.surfaces);
+  p.point = on_geometry.point;
+  p.patch = on_geometry.patch;
   p.metric = am.metric_at_point(p.point, a);
   p.cavity.assign(p.shell.begin(), p.shell.end());
   p.read.clear();
@@ -196,6 +199,7 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const SplitPreview<D
   Refusal refusal = Refusal::kTopology;
   for (int attempt = 0; attempt < (points[0] == points[1] ? 1 : 2); ++attempt) {
     const Index v = am.add_vertex(points[attempt], new_class, attempt == 0 ? p.metric : am.metric_at_point(middle, a));
+    if (attempt == 0) am.set_surface_hint(v, p.patch);
     if (!plan_split(am, v, attempt == 0, p, options))
       refusal = Refusal::kTopology;
     else if (!(worst_planned_quality(am, work.cavity_operator) >= split_quality_floor(am, p, work.cavity_operator, purpose)))
