@@ -135,6 +135,7 @@ struct AdaptArguments {
   double jacobian_floor;
   int iterations;
   std::optional<int> threads;
+  bool curved;
 };
 
 // The keyword arguments as the library's job.
@@ -156,6 +157,7 @@ AdaptationJob<D> adaptation_job(const AdaptArguments& a) {
     job.curving.emplace();
     job.curving->jacobian_floor = a.jacobian_floor;
     job.curving->threads = a.threads.value_or(every_core());
+    job.curved = a.curved;
   }
   job.geometry = geometry_maker<D>(a.surface);
   return job;
@@ -164,6 +166,7 @@ AdaptationJob<D> adaptation_job(const AdaptArguments& a) {
 py::tuple adapt(const PyMesh& mesh, const AdaptArguments& a) {
   if (a.metric.has_value() == a.analytic.has_value()) throw Error("give exactly one metric source: metric or analytic");
   if (a.order != 1 && a.order != 2) throw Error("order: 1 or 2, not " + std::to_string(a.order));
+  if (a.curved && a.order == 1) throw Error("curved adapts the curved mesh: it needs order 2");
   if (a.h_min && a.h_max && *a.h_min > *a.h_max) throw Error("hmin must not exceed hmax");
   if (a.gradation && a.analytic)
     throw Error("hgrad grades a metric given on a mesh: make one with grade_metric(mesh, analytic_metric(...), BETA)");
@@ -233,14 +236,14 @@ passes. threads: default every core (the output does not depend on it).)");
       "adapt",
       [](const PyMesh& mesh, std::optional<DoubleArray> metric, std::optional<std::string> analytic, int order, std::optional<double> hmin,
          std::optional<double> hmax, std::optional<double> hgrad, std::optional<double> hausd, double angle, std::string surface,
-         double jacobian_floor, int iterations, std::optional<int> threads) {
+         double jacobian_floor, int iterations, std::optional<int> threads, bool curved) {
         return adapt(mesh, {std::move(metric), std::move(analytic), order, hmin, hmax, hgrad, hausd, angle, std::move(surface),
-                            jacobian_floor, iterations, threads});
+                            jacobian_floor, iterations, threads, curved});
       },
       py::arg("mesh"), py::arg("metric") = py::none(), py::kw_only(), py::arg("analytic") = py::none(), py::arg("order") = 2,
       py::arg("hmin") = py::none(), py::arg("hmax") = py::none(), py::arg("hgrad") = py::none(), py::arg("hausd") = py::none(),
       py::arg("angle") = 45.0, py::arg("surface") = "p3", py::arg("jacobian_floor") = 0.01, py::arg("iterations") = 20,
-      py::arg("threads") = py::none(),
+      py::arg("threads") = py::none(), py::arg("curved") = false,
       R"(Adapts a mesh to a metric, then curves it (`hocav adapt`): the new mesh and the report (a dict).
 
 metric: one matrix per vertex of mesh (its back mesh), or analytic: a name of analytic_metric_names()
@@ -248,8 +251,10 @@ evaluated exactly. order: 2 curves the adapted mesh, 1 stops after the P1 adapta
 clamp the sizes; hgrad: grade the metric first; hausd: largest distance of a new boundary facet from
 the geometry (default 0.01 of the bounding box's diagonal); angle: ridges above this dihedral angle;
 surface: 'p3', 'cad:FILE' or 'none'; iterations: at most this many passes (a warning when the loop
-stops there); threads: of the swaps, smoothing, collapse tests and curving, default every core. Sizes
-below 1e-6 of the input's diagonal are clamped there, with a warning.)");
+stops there); threads: of the swaps, smoothing, collapse tests and curving, default every core;
+curved: then curved passes on the curved mesh (`adapt --curved`: split and collapse by curved
+length, swaps and moves by curved quality, every P2 operation certified; needs order 2; the report
+gains curved_passes). Sizes below 1e-6 of the input's diagonal are clamped there, with a warning.)");
   module.def("stats", &stats, py::arg("mesh"), py::arg("metric") = py::none(),
              R"(The figures of `hocav stats --json` as a dict: counts, refs, measures, consistency, Jacobian
 figures, memory; with a metric (one row per vertex, or per node), edge lengths and qualities in it.)");

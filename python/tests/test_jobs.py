@@ -38,6 +38,31 @@ def test_adapt_gives_the_commands_mesh(tmp_path, ring, order):
     assert ("curving" in report) == (order == 2)
 
 
+def without_seconds(passes):
+    """The passes of a report without their times, which differ from run to run."""
+    return [{key: value for key, value in done.items() if key != "seconds"} for done in passes]
+
+
+def test_adapt_curved_gives_the_commands_curved_mesh(tmp_path, ring):
+    shear = ["--analytic", "shear-circle", "--hmin", "0.01"]
+    run_cli("adapt", ring, *shear, "--curved", "-o", tmp_path / "cli.meshb", "--report", tmp_path / "cli.json")
+    mesh = hocav.read(ring)
+    adapted, report = hocav.adapt(mesh, analytic="shear-circle", hmin=0.01, curved=True)
+    hocav.write(tmp_path / "module.meshb", adapted)
+    assert (tmp_path / "cli.meshb").read_bytes() == (tmp_path / "module.meshb").read_bytes()
+    passes = report["curved_passes"]["passes"]
+    expected = json.loads((tmp_path / "cli.json").read_text())["curved_passes"]["passes"]
+    assert without_seconds(passes) == without_seconds(expected)
+    assert sum(p[op]["done"] for p in passes for op in ("collapses", "splits", "swaps", "moves")) > 0
+    jacobian = report["curving"]["normalized_jacobian"]
+    assert jacobian["invalid"] == 0 and jacobian["min"] >= 0.01
+    stats = hocav.stats(adapted)  # the output checked again, apart from the report
+    assert stats["consistency"]["problems"] == [] and stats["valid"] and stats["jacobian"]["invalid"] == 0
+    assert stats["counts"]["elements"] == report["output_elements"]
+    assert adapted.order == 2
+    assert "curved_passes" not in hocav.adapt(mesh, analytic="shear-circle", hmin=0.01)[1]
+
+
 def test_adapt_refuses_what_the_command_refuses(ring):
     mesh = hocav.read(ring)
     with pytest.raises(hocav.Error, match="exactly one metric source"):
@@ -46,6 +71,8 @@ def test_adapt_refuses_what_the_command_refuses(ring):
         hocav.adapt(mesh, analytic="uniform", hmin=0.2, hmax=0.1)
     with pytest.raises(hocav.Error, match="--surface: 'p3', 'cad:FILE' or 'none'"):
         hocav.adapt(mesh, analytic="uniform", surface="sphere")
+    with pytest.raises(hocav.Error, match="curved adapts the curved mesh: it needs order 2"):
+        hocav.adapt(mesh, analytic="uniform", order=1, curved=True)
 
 
 def test_the_commands_warnings_are_python_warnings(ring):

@@ -18,6 +18,8 @@ void CurvedOperationCount::add(CavityStatus status) {
     ++on_boundary;
   else if (status == CavityStatus::kNoImprovement)
     ++no_gain;
+  else if (status == CavityStatus::kFlatStraightElement)
+    ++flat;
   else
     ++refused;
 }
@@ -33,6 +35,11 @@ constexpr double kQualityGain = 1.01;
 // certifies a whole shell or ball, and better elements gain little (docs/adaptation.md §Curved
 // passes: moving every inner vertex took the sphere shell's curved run to 2.3x adapt-then-curve).
 constexpr double kPoorQuality = 0.5;
+// No operation makes a straight simplex of metric mean ratio below min(this, the worst it replaces):
+// the P1 loop's collapse floor, which its output respects (min 0.093 on the boundary-layer shell).
+// Without it the curved passes left straight simplices down to 0.001 there, valid curved elements
+// with normalized Jacobians up to 4,046; 0.2 and 0.3 cost unit share (docs/benchmarks.md).
+constexpr double kStraightQualityFloor = 0.1;
 // As the P1 loop (docs/adaptation.md §The loop): a pass that splits and collapses fewer than this
 // share of the vertices ends the loop.
 constexpr double kConvergedChange = 2.5e-3;
@@ -211,6 +218,7 @@ CurvedPass run_curved_pass(Mesh<D>& mesh, const MetricField<D>& field, const P2C
   CurvedPass pass;
   P2CavityOptions positive = options;
   positive.positive_straight_elements = true;
+  positive.straight_quality_floor = kStraightQualityFloor;
   P2Operations<D> operations(mesh, field, nullptr, positive);
   pass.collapses = collapse_short_curved_edges(mesh, operations);
   pass.splits = split_long_curved_edges(mesh, operations);

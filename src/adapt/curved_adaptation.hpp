@@ -18,6 +18,7 @@ struct CurvedOperationCount {
   Index on_boundary = 0;  // refused: an edge or removed vertex on the boundary (left to the P1 loop)
   Index too_long = 0;     // collapses refused: a straight segment to the kept vertex longer than √2
   Index no_gain = 0;      // swaps and moves refused: the worst curved quality would not rise
+  Index flat = 0;         // refused: a new straight simplex below the straight quality floor
   Index refused = 0;      // refused by the P2 operator otherwise (topology, or no certified curving)
 
   void add(CavityStatus status);

@@ -18,6 +18,7 @@ const char* to_string(CavityStatus status) {
     case CavityStatus::kNonPositiveMeasure: return "non-positive straight measure";
     case CavityStatus::kRejectedByCurving: return "no valid curving";
     case CavityStatus::kNoImprovement: return "no quality improvement";
+    case CavityStatus::kFlatStraightElement: return "near-flat straight element";
   }
   return "?";
 }

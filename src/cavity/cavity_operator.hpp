@@ -33,13 +33,14 @@ struct CavityOptions {
 
 enum class CavityStatus {
   kAccepted,
-  kNotStarShaped,       // the star of the boundary from the vertex is not a closed, manifold set
-  kCrossesBoundary,     // a boundary facet lies inside the cavity, or a removed facet is not on its boundary
-  kMixedRefs,           // the cavity's elements carry different refs
-  kRemovesVertex,       // a vertex other than the removable one would disappear
-  kNonPositiveMeasure,  // P1 mode: a new element is flat or inverted
-  kRejectedByCurving,   // the P2 operator found no valid curved configuration
-  kNoImprovement,       // the P2 operator's new elements are not better than the request asks
+  kNotStarShaped,        // the star of the boundary from the vertex is not a closed, manifold set
+  kCrossesBoundary,      // a boundary facet lies inside the cavity, or a removed facet is not on its boundary
+  kMixedRefs,            // the cavity's elements carry different refs
+  kRemovesVertex,        // a vertex other than the removable one would disappear
+  kNonPositiveMeasure,   // P1 mode: a new element is flat or inverted
+  kRejectedByCurving,    // the P2 operator found no valid curved configuration
+  kNoImprovement,        // the P2 operator's new elements are not better than the request asks
+  kFlatStraightElement,  // the P2 operator: a new straight simplex below the request's quality floor
 };
 const char* to_string(CavityStatus status);
 

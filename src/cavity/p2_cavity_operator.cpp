@@ -8,6 +8,7 @@
 #include "bezier/jacobian_bounds.hpp"
 #include "curve/curved_quality.hpp"
 #include "mesh/ball_and_shell.hpp"
+#include "metric/metric_quality.hpp"
 
 namespace hocav {
 namespace {
@@ -37,6 +38,7 @@ P2CavityCounters& P2CavityCounters::operator+=(const P2CavityCounters& other) {
   rejected_topology += other.rejected_topology;
   rejected_curving += other.rejected_curving;
   rejected_quality += other.rejected_quality;
+  rejected_straight_quality += other.rejected_straight_quality;
   edges_optimized += other.edges_optimized;
   optimizer_iterations += other.optimizer_iterations;
   edges_kept_optimal += other.edges_kept_optimal;
@@ -75,6 +77,10 @@ CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const I
   if (status != CavityStatus::kAccepted) {
     ++counters_.rejected_topology;
     return status;
+  }
+  if (request.straight_quality_to_keep >= 0 && !new_straight_elements_above(mesh, request.straight_quality_to_keep)) {
+    ++counters_.rejected_straight_quality;
+    return CavityStatus::kFlatStraightElement;
   }
 
   start = Clock::now();
@@ -135,13 +141,27 @@ int P2CavityOperator<D>::unit_new_inner_edges(const Mesh<D>& mesh) const {
 }
 
 template <int D>
-bool P2CavityOperator<D>::new_elements_above(double bar) const {
+bool P2CavityOperator<D>::new_straight_elements_above(const Mesh<D>& mesh, double floor) const {
+  SimplexPoints<D> points;
+  for (const auto& element : p1_.new_elements()) {
+    for (int i = 0; i <= D; ++i) points[static_cast<std::size_t>(i)] = mesh.vertex(element[i]);
+    if (!(centroid_metric_mean_ratio<D>(points, log_metrics_of(element)) >= floor)) return false;
+  }
+  return true;
+}
+
+template <int D>
+std::array<SymMat<D>, D + 1> P2CavityOperator<D>::log_metrics_of(const typename Mesh<D>::Element& vertices) const {
   std::array<SymMat<D>, D + 1> log_metrics;
+  for (int i = 0; i <= D; ++i) log_metrics[static_cast<std::size_t>(i)] = vertex_log_metrics_[static_cast<std::size_t>(vertices[i])];
+  return log_metrics;
+}
+
+template <int D>
+bool P2CavityOperator<D>::new_elements_above(double bar) const {
   for (const Candidate& candidate : candidates_) {
     if (candidate.mesh_element != kNoIndex) continue;
-    for (int i = 0; i <= D; ++i)
-      log_metrics[static_cast<std::size_t>(i)] = vertex_log_metrics_[static_cast<std::size_t>(candidate.vertices[i])];
-    if (!(curved_mean_ratio(element_of(candidate), log_metrics).value > bar)) return false;
+    if (!(curved_mean_ratio(element_of(candidate), log_metrics_of(candidate.vertices)).value > bar)) return false;
   }
   return true;
 }

@@ -49,6 +49,11 @@ struct P2CavityOptions {
   // Jacobian (J / |J_straight| is infinite), so the curved passes keep them positive
   // (docs/adaptation.md §Curved passes).
   bool positive_straight_elements = false;
+  // The curved operations (p2_operations.hpp) also refuse a new element whose straight simplex has
+  // a metric mean ratio below min(this, the worst of the elements it replaces): a valid curved
+  // element on a nearly flat straight one has a huge normalized Jacobian (docs/adaptation.md
+  // §Curved passes). 0: not asked.
+  double straight_quality_floor = 0;
 };
 
 // A new inner edge whose curving starts, and falls back, at a given node instead of the node it had
@@ -71,6 +76,9 @@ struct P2CavityRequest {
   // At least this many of the new inner edges must be unit in their curved length (in [1/√2, √2]),
   // else kNoImprovement: a swap or move keeps the unit edges it replaces. Negative: not asked.
   int unit_edges_to_keep = -1;
+  // Every new element's straight simplex must have a metric mean ratio (centroid_metric_mean_ratio)
+  // of at least this, else kFlatStraightElement, refused before any curving. Negative: not asked.
+  double straight_quality_to_keep = -1;
 };
 
 // Whether a Riemannian edge length is unit (the loop's range [1/√2, √2]).
@@ -79,6 +87,7 @@ inline bool unit_length(double length) { return length >= 1 / std::sqrt(2.0) && 
 struct P2CavityCounters {
   long long cavities = 0, accepted = 0;
   long long rejected_topology = 0, rejected_curving = 0, rejected_quality = 0;
+  long long rejected_straight_quality = 0;  // a new straight simplex below the request's floor
   long long edges_optimized = 0, optimizer_iterations = 0;
   long long edges_kept_optimal = 0;  // recreated at their optimum: not optimized again
   long long boundary_nodes_applied = 0;
@@ -151,6 +160,9 @@ class P2CavityOperator {
   void add_candidate(const Mesh<D>& mesh, const typename Mesh<D>::Element& vertices, Index mesh_element);
   P2Element<D> element_of(const Candidate& candidate) const;
   bool certified(const Candidate& candidate);
+  std::array<SymMat<D>, D + 1> log_metrics_of(const typename Mesh<D>::Element& vertices) const;
+  // Whether every new element's straight simplex has a metric mean ratio of at least `floor`.
+  bool new_straight_elements_above(const Mesh<D>& mesh, double floor) const;
   // Whether every new element's curved mean ratio is above `bar`.
   bool new_elements_above(double bar) const;
   // How many new inner edges are unit in their curved length.

@@ -6,6 +6,7 @@
 #include "bezier/p2_element.hpp"
 #include "curve/curved_quality.hpp"
 #include "mesh/ball_and_shell.hpp"
+#include "metric/metric_quality.hpp"
 
 namespace hocav {
 namespace {
@@ -29,6 +30,7 @@ template <int D>
 P2Operations<D>::P2Operations(Mesh<D>& mesh, const MetricField<D>& field, BoundaryNodeSource<D>* boundary, P2CavityOptions options)
     : mesh_(mesh),
       field_(field),
+      straight_quality_floor_(options.straight_quality_floor),
       log_metrics_(static_cast<std::size_t>(mesh.vertex_count())),
       hints_(static_cast<std::size_t>(mesh.vertex_count()), kNoIndex),
       operator_(field, log_metrics_, hints_, nullptr, boundary, certifying_everything(options)) {
@@ -69,6 +71,14 @@ void P2Operations<D>::remove_last_vertex() {
 }
 
 template <int D>
+double P2Operations<D>::straight_quality_to_keep(std::span<const Index> elements) const {
+  if (straight_quality_floor_ <= 0) return -1;
+  double floor = straight_quality_floor_;
+  for (Index k : elements) floor = std::min(floor, straight_quality(k));
+  return floor;
+}
+
+template <int D>
 CavityStatus P2Operations<D>::split_edge(Index a, Index b, Index* inserted) {
   const Index edge = mesh_.find_edge(a, b);
   if (edge == kNoIndex) return CavityStatus::kNotStarShaped;
@@ -92,6 +102,7 @@ CavityStatus P2Operations<D>::split_edge(Index a, Index b, Index* inserted) {
       }
   P2CavityRequest<D> request;
   request.start_nodes = starts_;
+  request.straight_quality_to_keep = straight_quality_to_keep(cavity_);
   const CavityStatus status = operator_.apply(mesh_, cavity_, m, request);
   if (status != CavityStatus::kAccepted)
     remove_last_vertex();
@@ -125,6 +136,7 @@ CavityStatus P2Operations<D>::collapse_edge(Index removed, Index kept) {
   P2CavityRequest<D> request;
   request.removable_vertex = removed;
   request.start_nodes = starts_;
+  request.straight_quality_to_keep = straight_quality_to_keep(cavity_);
   return operator_.apply(mesh_, cavity_, kept, request);
 }
 
@@ -140,6 +152,7 @@ CavityStatus P2Operations<D>::swap_edge(Index a, Index b, Index apex, Bar bar) {
   P2CavityRequest<D> request;
   request.quality_to_beat = bar.quality_to_beat;
   request.unit_edges_to_keep = bar.unit_edges_to_keep;
+  request.straight_quality_to_keep = straight_quality_to_keep(cavity_);
   return operator_.apply(mesh_, cavity_, apex, request);
 }
 
@@ -148,6 +161,8 @@ CavityStatus P2Operations<D>::move_vertex(Index v, const Vec<D>& x, Bar bar) {
   collect_ball(mesh_, v, cavity_);
   const Index vertex[1] = {v};
   if (on_boundary(cavity_, vertex)) return CavityStatus::kCrossesBoundary;
+  P2CavityRequest<D> request;
+  request.straight_quality_to_keep = straight_quality_to_keep(cavity_);  // before the move
   const auto slot = static_cast<std::size_t>(v);
   const Vec<D> from = mesh_.vertex(v);
   const SymMat<D> from_log_metric = log_metrics_[slot];
@@ -157,7 +172,6 @@ CavityStatus P2Operations<D>::move_vertex(Index v, const Vec<D>& x, Bar bar) {
   log_metrics_[slot] = sample.log_metric;
   hints_[slot] = sample.where.element;
   shifted_starts(v, from, v);
-  P2CavityRequest<D> request;
   request.start_nodes = starts_;
   request.quality_to_beat = bar.quality_to_beat;
   request.unit_edges_to_keep = bar.unit_edges_to_keep;
@@ -185,11 +199,23 @@ double P2Operations<D>::straight_length(Index a, Index b) const {
 }
 
 template <int D>
-double P2Operations<D>::quality(Index k) const {
+std::array<SymMat<D>, D + 1> P2Operations<D>::element_log_metrics(Index k) const {
   std::array<SymMat<D>, D + 1> vertex_log_metrics;
   for (int i = 0; i <= D; ++i)
     vertex_log_metrics[static_cast<std::size_t>(i)] = log_metrics_[static_cast<std::size_t>(mesh_.element(k)[i])];
-  return curved_mean_ratio(gather_p2_element(mesh_, k), vertex_log_metrics).value;
+  return vertex_log_metrics;
+}
+
+template <int D>
+double P2Operations<D>::quality(Index k) const {
+  return curved_mean_ratio(gather_p2_element(mesh_, k), element_log_metrics(k)).value;
+}
+
+template <int D>
+double P2Operations<D>::straight_quality(Index k) const {
+  SimplexPoints<D> points;
+  for (int i = 0; i <= D; ++i) points[static_cast<std::size_t>(i)] = mesh_.vertex(mesh_.element(k)[i]);
+  return centroid_metric_mean_ratio<D>(points, element_log_metrics(k));
 }
 
 template class P2Operations<2>;

@@ -7,6 +7,8 @@
 //   collapse  edge (removed, kept): the ball of `removed` re-starred from `kept`
 //   swap      edge (a, b): its shell re-starred from an apex (a 2D flip when the shell is two triangles)
 //   move      vertex v to x: its ball re-starred from it
+// With P2CavityOptions::straight_quality_floor, none makes a straight simplex poorer than
+// min(floor, the worst it replaces) (kFlatStraightElement).
 // Interior operations only: an edge or vertex on a boundary face is refused (kCrossesBoundary);
 // boundary splits and collapses on a P2 mesh are not built yet. The decision figures are curved
 // too: `edge_length` is the Riemannian length of the curved edge, `quality` the curved mean ratio.
@@ -47,6 +49,8 @@ class P2Operations {
   // curved edge the optimizer would make is no longer (docs/curving.md §Curved operations).
   double straight_length(Index a, Index b) const;
   double quality(Index k) const;
+  // The metric mean ratio of element k's straight simplex (centroid_metric_mean_ratio).
+  double straight_quality(Index k) const;
 
   const SymMat<D>& log_metric(Index v) const { return log_metrics_[static_cast<std::size_t>(v)]; }
   const P2CavityOperator<D>& cavity_operator() const { return operator_; }
@@ -58,12 +62,17 @@ class P2Operations {
   // Adds vertex x with its log-metric and back hint (found from vertex `near`'s).
   Index add_vertex(const Vec<D>& x, Index near);
   void remove_last_vertex();
+  std::array<SymMat<D>, D + 1> element_log_metrics(Index k) const;
+  // The floor of the new straight simplices' quality for an operation replacing `elements`:
+  // min(options' straight_quality_floor, their worst), or −1 when the options ask none.
+  double straight_quality_to_keep(std::span<const Index> elements) const;
   // Start nodes of the edges (center, w) of a vertex moved from `from` to its place now: each old
   // node of (from_vertex, w) shifted by half the move, so the edge keeps its bend.
   void shifted_starts(Index from_vertex, const Vec<D>& from, Index center);
 
   Mesh<D>& mesh_;
   const MetricField<D>& field_;
+  double straight_quality_floor_;
   std::vector<SymMat<D>> log_metrics_;
   std::vector<Index> hints_;
   P2CavityOperator<D> operator_;

@@ -14,5 +14,6 @@ void add_adapt_command(CLI::App& app);
 void add_metric_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_demo_command(CLI::App& app);
+void add_picture_command(CLI::App& app);
 
 }  // namespace hocav

@@ -26,8 +26,7 @@
 #include "metric/gradation.hpp"
 #include "metric/surface_metric.hpp"
 #include "picture/histogram_chart.hpp"
-#include "picture/p2_mesh_picture.hpp"
-#include "picture/section_picture.hpp"
+#include "picture/jacobian_picture.hpp"
 #include "report/curved_vtu.hpp"
 #include "report/mesh_summary.hpp"
 #include "surface/boundary_choice.hpp"
@@ -38,11 +37,6 @@ namespace {
 // The 3D case's metric, as `hocav metric --surface H/10,H --gradation 1.5` makes it: size H/10
 // along the normals of both spheres, H (the --h option) along them, graded into the volume.
 constexpr double kShellNormalRatio = 0.1, kShellGradation = 1.5;
-// Lattice subdivisions of each face for the cut: curved edges drawn with 8 pieces each.
-constexpr int kCutSubdivisions = 8;
-// Min normalized Jacobian colours: 0 (dark, a degenerate element) to 1 (yellow, as the straight
-// element); elements above 1 stay yellow.
-const ColorScale kJacobianColors{0, 1};
 
 struct DemoOptions {
   std::string directory = "out";
@@ -56,12 +50,6 @@ template <int D>
 Mesh<D> generated(const std::string& name, const CaseValues& values) {
   progress("generating " + name);
   return std::get<Mesh<D>>(generate_case(find_case(name), values));
-}
-
-std::vector<double> min_normalized_jacobians(const auto& mesh) {
-  std::vector<double> values;
-  for (const JacobianQuality& quality : mesh_jacobian_quality(mesh, kReportedRefinement)) values.push_back(quality.min_normalized_jacobian);
-  return values;
 }
 
 // The files of the run and what each holds, in the order they are written.
@@ -157,10 +145,10 @@ AdaptationReport run_sphere_shell(const DemoOptions& options, Written& written) 
                 "adapted to a surface metric (normal size %.3g, tangential %.3g) and curved; each section filled by its "
                 "element's min normalized Jacobian",
                 kShellNormalRatio * options.h, options.h);
-  MeshFigureOptions figure{"Adapted and curved sphere shell, cut by the plane z = 0", subtitle, kJacobianColors, "min normalized Jacobian",
-                           Box{{{0.28, 0.28}}, {{0.58, 0.58}}}};  // the detail: where the inner sphere meets x = y
-  write_svg(written.path(options, "sphere-shell-cut.svg"),
-            section_picture(cut_p2_mesh(mesh, CutPlane{}, kCutSubdivisions), jacobians, figure));
+  const JacobianPictureOptions figure{"Adapted and curved sphere shell, cut by the plane z = 0", subtitle,
+                                      Box{{{0.28, 0.28}}, {{0.58, 0.58}}},  // the detail: where the inner sphere meets x = y
+                                      CutPlane{}};
+  write_svg(written.path(options, "sphere-shell-cut.svg"), jacobian_picture(mesh, jacobians, figure));
   write_histograms(volume_edge_gains(mesh, field), jacobians, options, written);
   return report;
 }
@@ -177,12 +165,12 @@ CurvingReport run_shear_circle(const DemoOptions& options, Written& written) {
   curving.threads = options.threads;
   const auto surface = make_boundary_geometry<2>({BoundaryKind::kP3Surrogate, ""}, mesh);
   const CurvingReport report = curve_in_metric(mesh, field, surface.get(), curving);
-  MeshFigureOptions figure{"Shear-circle case (the paper's Fig. 1), curved",
-                           "P2 triangles drawn exactly (quadratic Bézier edges), filled by their min normalized Jacobian; "
-                           "sizes 0.001 across the circle r = 0.75, 0.1 along it",
-                           kJacobianColors, "min normalized Jacobian",
-                           Box{{{-0.06, 0.69}}, {{0.06, 0.81}}}};  // the detail: the layer at its top
-  write_svg(written.path(options, "shear-circle-p2.svg"), p2_mesh_picture(mesh, min_normalized_jacobians(mesh), figure));
+  const JacobianPictureOptions figure{"Shear-circle case (the paper's Fig. 1), curved",
+                                      "P2 triangles drawn exactly (quadratic Bézier edges), filled by their min normalized Jacobian; "
+                                      "sizes 0.001 across the circle r = 0.75, 0.1 along it",
+                                      Box{{{-0.06, 0.69}}, {{0.06, 0.81}}},  // the detail: the layer at its top
+                                      CutPlane{}};
+  write_svg(written.path(options, "shear-circle-p2.svg"), jacobian_picture(mesh, min_normalized_jacobians(mesh), figure));
   return report;
 }
 

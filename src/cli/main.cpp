@@ -52,6 +52,7 @@ int main(int argc, char** argv) {
   hocav::add_adapt_command(app);
   hocav::add_bench_command(app);
   hocav::add_demo_command(app);
+  hocav::add_picture_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "geom/sym_functions.hpp"
 #include "mesh/measure.hpp"
 #include "mesh/simplex.hpp"
 
@@ -23,7 +24,16 @@ double metric_mean_ratio(const SimplexPoints<D>& points, const SymMat<D>& metric
   }
 }
 
+template <int D>
+double centroid_metric_mean_ratio(const SimplexPoints<D>& points, const std::array<SymMat<D>, D + 1>& vertex_log_metrics) {
+  SymMat<D> log_sum;
+  for (const SymMat<D>& log_metric : vertex_log_metrics) log_sum += log_metric;
+  return metric_mean_ratio<D>(points, exp_sym((1.0 / (D + 1)) * log_sum));
+}
+
 template double metric_mean_ratio(const SimplexPoints<2>&, const SymMat<2>&);
 template double metric_mean_ratio(const SimplexPoints<3>&, const SymMat<3>&);
+template double centroid_metric_mean_ratio(const SimplexPoints<2>&, const std::array<SymMat<2>, 3>&);
+template double centroid_metric_mean_ratio(const SimplexPoints<3>&, const std::array<SymMat<3>, 4>&);
 
 }  // namespace hocav

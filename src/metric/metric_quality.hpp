@@ -7,6 +7,8 @@
 // map x ↦ A x + b that carries M to A⁻ᵀ M A⁻¹.
 #pragma once
 
+#include <array>
+
 #include "geom/barycentric.hpp"
 #include "geom/sym_mat.hpp"
 
@@ -14,5 +16,10 @@ namespace hocav {
 
 template <int D>
 double metric_mean_ratio(const SimplexPoints<D>& points, const SymMat<D>& metric);
+
+// The same in the metric at the simplex's centroid, log-Euclidean from its vertices' log-metrics
+// (exp of their mean): the straight element's quality `hocav stats` reports.
+template <int D>
+double centroid_metric_mean_ratio(const SimplexPoints<D>& points, const std::array<SymMat<D>, D + 1>& vertex_log_metrics);
 
 }  // namespace hocav

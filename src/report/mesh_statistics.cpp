@@ -46,13 +46,13 @@ void add_quality_figures(const Mesh<D>& mesh, const std::vector<SymMat<D>>& vert
   if (mesh.element_count() == 0) return;
   const std::vector<double> qualities = values_on_threads(pool, static_cast<std::size_t>(mesh.element_count()), [&](std::size_t k) {
     SimplexPoints<D> corners;
-    SymMat<D> log_sum;
+    std::array<SymMat<D>, D + 1> logs;
     for (int i = 0; i <= D; ++i) {
       const Index v = mesh.element(static_cast<Index>(k))[i];
       corners[static_cast<std::size_t>(i)] = mesh.vertex(v);
-      log_sum += vertex_logs[static_cast<std::size_t>(v)];
+      logs[static_cast<std::size_t>(i)] = vertex_logs[static_cast<std::size_t>(v)];
     }
-    return metric_mean_ratio<D>(corners, exp_sym((1.0 / (D + 1)) * log_sum));
+    return centroid_metric_mean_ratio<D>(corners, logs);
   });
   s.quality_min = std::numeric_limits<double>::infinity();
   double sum = 0;

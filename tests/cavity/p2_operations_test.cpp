@@ -383,6 +383,67 @@ void expect_boundary_nodes_on_the_geometry(int cells) {
 TEST(P2Operations, TriangleOperationsPutBoundaryNodesOnTheGeometry) { expect_boundary_nodes_on_the_geometry<2>(6); }
 TEST(P2Operations, TetrahedralOperationsPutBoundaryNodesOnTheGeometry) { expect_boundary_nodes_on_the_geometry<3>(3); }
 
+// A point at `height` times v's distance from the centroid of `face` (vertices), on v's side.
+template <int D>
+Vec<D> toward_face(const Mesh<D>& mesh, Index v, const std::vector<Index>& face, double height) {
+  Vec<D> centroid{};
+  for (Index w : face) centroid += (1.0 / D) * mesh.vertex(w);
+  return centroid + height * (mesh.vertex(v) - centroid);
+}
+
+template <int D>
+double worst_straight_quality_of_ball(const Mesh<D>& mesh, const P2Operations<D>& operations, Index v) {
+  std::vector<Index> ball;
+  collect_ball(mesh, v, ball);
+  double worst = 1e300;
+  for (Index k : ball) worst = std::min(worst, operations.straight_quality(k));
+  return worst;
+}
+
+// A move of v near the plane of a face of its ball, which makes nearly flat straight simplices
+// (valid curved elements: the mesh is straight), is refused under the straight quality floor and
+// accepted without it; from there, the floor is the cavity's own worst: a move that flattens them
+// further is refused, one that raises them accepted.
+template <int D>
+void expect_near_flat_straight_elements_refused(int cells) {
+  Mesh<D> mesh = CurvedCase<D>::unit_mesh(cells);
+  SymMat<D> metric;
+  for (int i = 0; i < D; ++i) metric(i, i) = cells * cells;
+  const MetricField<D> field(mesh, std::vector<SymMat<D>>(static_cast<std::size_t>(mesh.vertex_count()), metric));
+  mesh.make_p2();
+  P2CavityOptions floored;
+  floored.positive_straight_elements = true;
+  floored.straight_quality_floor = 0.1;
+  P2CavityOptions unfloored = floored;
+  unfloored.straight_quality_floor = 0;
+  const Index v = volume_vertices(mesh).front();
+  std::vector<Index> ball, face;
+  collect_ball(mesh, v, ball);
+  for (Index w : mesh.element(ball.front()))
+    if (w != v) face.push_back(w);
+  const Vec<D> near_flat = toward_face(mesh, v, face, 0.005);
+  {
+    P2Operations<D> operations(mesh, field, nullptr, floored);
+    const auto before = mesh_bytes(mesh);
+    EXPECT_EQ(operations.move_vertex(v, near_flat), CavityStatus::kFlatStraightElement);
+    EXPECT_EQ(mesh_bytes(mesh), before);
+    EXPECT_EQ(operations.cavity_operator().counters().rejected_straight_quality, 1);
+  }
+  P2Operations<D> operations(mesh, field, nullptr, unfloored);
+  ASSERT_EQ(operations.move_vertex(v, near_flat), CavityStatus::kAccepted);
+  const double made = worst_straight_quality_of_ball(mesh, operations, v);
+  EXPECT_GT(made, 0);
+  EXPECT_LT(made, 0.05);
+  EXPECT_TRUE(every_element_certified(mesh, floored.jacobian_floor));
+  P2Operations<D> from_flat(mesh, field, nullptr, floored);
+  EXPECT_EQ(from_flat.move_vertex(v, toward_face(mesh, v, face, 0.5)), CavityStatus::kFlatStraightElement);
+  ASSERT_EQ(from_flat.move_vertex(v, toward_face(mesh, v, face, 2.0)), CavityStatus::kAccepted);
+  EXPECT_GT(worst_straight_quality_of_ball(mesh, from_flat, v), made);
+}
+
+TEST(P2Operations, TriangleOperationsRefuseNearFlatStraightElements) { expect_near_flat_straight_elements_refused<2>(4); }
+TEST(P2Operations, TetrahedralOperationsRefuseNearFlatStraightElements) { expect_near_flat_straight_elements_refused<3>(3); }
+
 // The decision figures: in a constant metric, a straight edge's curved length is its metric length
 // and a straight element's curved quality its metric mean ratio; bending the edge lengthens it.
 TEST(P2Operations, CurvedLengthAndQualityAreTheP1FiguresOnStraightElements) {

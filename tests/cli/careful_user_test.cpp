@@ -1,7 +1,7 @@
 // The careful user: every command that writes files run with failing, colliding, long and odd
 // outputs, every reader given bad files, every floating option given values that mean nothing,
 // meshes with defects, and a kill in the middle. The checks run over tables: a new command that
-// reads a mesh and a metric and writes files is one more row of kWritingCommands.
+// reads a mesh (and a metric) and writes files is one more row of kWritingCommands.
 #include <csignal>
 #include <string>
 #include <vector>
@@ -27,6 +27,7 @@ const std::vector<WritingCommand> kWritingCommands{
     {"adapt", "adapt square.mesh --metric square.sol -q", "-o ", ".meshb", {{"--report", "r.json"}, {"--vtu", "v.vtu"}}, kMeshAndMetric},
     {"convert", "convert square.mesh --metric square.sol", "", ".meshb", {{"--metric-out", "m.solb"}}, kMeshAndMetric},
     {"metric", "metric square.mesh --input square.sol", "-o ", ".solb", {}, kMeshAndMetric},
+    {"picture", "picture square.mesh", "-o ", ".svg", {}, {"square.mesh"}},
     // With gmsh, the gmsh-meshed annulus and its CAD model (a second output); without, a structured case.
     HOCAV_WITH_GMSH ? WritingCommand{"generate", "generate annulus --h 0.4", "-o ", ".meshb", {{"--cad-out", "a.step"}}, {}}
                     : WritingCommand{"generate", "generate polar-annulus --target-triangles 200", "-o ", ".meshb", {}, {}},
@@ -234,7 +235,7 @@ TEST_F(CarefulUser, BadMetricFilesFailAtOnceWithAShortEscapedLine) {
   prepare_inputs();
   for (const BadFile& file : kBadMetrics)
     for (const WritingCommand& row : kWritingCommands)
-      if (!row.inputs.empty()) {
+      if (row.command.find("square.sol") != std::string::npos) {
         SCOPED_TRACE(row.name + " " + file.name);
         write(file.name, file.bytes);
         const std::string output = "out" + row.output_extension;
@@ -262,6 +263,7 @@ const std::vector<std::pair<std::string, std::string>> kMeaninglessOptions{
     {"generate annulus --r-out inf -o o.mesh", "inf"},
     {"generate cube --h 0.0005 -o o.mesh", "elements"},
     {"demo --h nan -o demo", "nan"},
+    {"picture square.mesh -o o.svg --detail 0 0 nan 1", "nan"},
     {"bench --sizes inf", "inf"},
 };
 

@@ -9,12 +9,7 @@ namespace hocav::cli_test {
 namespace {
 
 using DemoCli = Cli;
-
-// The count of `element` in a parsed outline "svg defs=1 path=12 ..." (0 when absent).
-int element_count(const std::string& outline, const std::string& element) {
-  const std::size_t at = outline.find(" " + element + "=");
-  return at == std::string::npos ? 0 : std::stoi(outline.substr(at + element.size() + 2));
-}
+using picture_test::element_count;
 
 TEST_F(DemoCli, WritesTheCurvedMeshTheReportAndThePictures) {
   HOCAV_SKIP_WITHOUT_GMSH();

@@ -71,6 +71,7 @@ const std::map<std::string, std::set<std::string>> kWithoutDefault = {
     {"adapt", {"--metric", "--analytic", "--hmin", "--hmax", "--hgrad", "--report", "--vtu"}},
     {"bench", {"--markdown", "--json"}},
     {"demo", {}},
+    {"picture", {"--detail"}},
 };
 
 class HelpCli : public Cli {

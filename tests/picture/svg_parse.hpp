@@ -33,4 +33,10 @@ inline std::string parsed_svg_outline(const std::string& document) {
   return outline;
 }
 
+// The count of `element` in an outline "svg defs=1 path=12 ..." (0 when absent).
+inline int element_count(const std::string& outline, const std::string& element) {
+  const std::size_t at = outline.find(" " + element + "=");
+  return at == std::string::npos ? 0 : std::stoi(outline.substr(at + element.size() + 2));
+}
+
 }  // namespace hocav::picture_test
