@@ -82,7 +82,7 @@ OperationCount collapse_short_edges(AdaptationMesh<D>& mesh, const AdaptationLim
 // of collapse_short_edges allow it.
 template <int D>
 struct alignas(64) CollapseScratch {  // a cache line of its own: each thread writes its own
-  std::vector<Index> ball, facets, lines;
+  std::vector<Index> ball, facets, lines, kept_facets;
   std::vector<typename Mesh<D>::Element> star;
 };
 template <int D>

@@ -96,6 +96,25 @@ std::array<Refusal, 2> pretest_both_ways(const AdaptationMesh<D>& am, const Edge
   return {forward, collapse_pretest(am, s.ball, c.b, c.a, limits, s)};
 }
 
+// Whether a facet the plan creates is already a facet around `kept`: the surface link condition.
+// When the ends of a surface edge share a neighbour on the surface besides the far vertices of the
+// edge's two facets, the collapse folds the surface onto itself and leaves two facets on one face,
+// each the boundary of elements on both sides of it (a boundary-layer shell's inner wall did).
+template <int D>
+bool facet_exists_already(const Mesh<D>& mesh, const CavityOperator<D>& plan, Index kept, CollapseScratch<D>& s) {
+  collect_ball(mesh, kept, s.ball);
+  const Index center[1] = {kept};
+  facets_through(mesh, std::span<const Index>(s.ball), center, s.kept_facets);
+  const auto sorted = [](auto vertices) {
+    std::sort(vertices.begin(), vertices.end());
+    return vertices;
+  };
+  return std::any_of(plan.new_facets().begin(), plan.new_facets().end(), [&](const auto& created) {
+    return std::any_of(s.kept_facets.begin(), s.kept_facets.end(),
+                       [&](Index f) { return sorted(mesh.facet(f)) == sorted(created.vertices); });
+  });
+}
+
 }  // namespace
 
 template <int D>
@@ -109,6 +128,7 @@ Refusal collapse_edge(AdaptationMesh<D>& am, Index removed, Index kept, const Ad
   options.removed_facets = s.facets;
   options.removed_lines = s.lines;
   if (work.cavity_operator.plan(mesh, work.cavity, kept, options) != CavityStatus::kAccepted) return Refusal::kTopology;
+  if (!s.facets.empty() && facet_exists_already(mesh, work.cavity_operator, kept, s)) return Refusal::kTopology;
   if (!s.facets.empty() && !boundary_change_acceptable(am, work.cavity_operator, limits.cos_feature_angle, limits.hausd))
     return Refusal::kGeometry;
   am.commit(work.cavity_operator);
