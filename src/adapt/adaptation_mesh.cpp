@@ -16,11 +16,13 @@ AdaptationMesh<D>::AdaptationMesh(Mesh<D>& mesh, const AdaptationMetric<D>& metr
   hint_attribute_ = mesh_.add_vertex_attribute(1);
   surface_hint_attribute_ = mesh_.add_vertex_attribute(1);
   stamp_attribute_ = mesh_.add_vertex_attribute(1);  // the clock when the vertex's ball last changed
+  smoothing_refused_attribute_ = mesh_.add_vertex_attribute(1);
   const std::vector<VertexClass> classes = classify_vertices(mesh_, feature_angle_degrees);
   for (Index v = 0; v < mesh_.vertex_count(); ++v) {
     mesh_.vertex_attribute(class_attribute_, v)[0] = static_cast<double>(classes[v]);
     mesh_.vertex_attribute(hint_attribute_, v)[0] = kNoIndex;
     set_surface_hint(v, kNoIndex);
+    mesh_.vertex_attribute(smoothing_refused_attribute_, v)[0] = -1;
     set_point_metric(v, metric_at_point(mesh_.vertex(v), v));
   }
   quality_attribute_ = mesh_.add_element_attribute(0);
@@ -68,6 +70,7 @@ Index AdaptationMesh<D>::add_vertex(const Vec<D>& x, VertexClass vertex_class, c
   const Index v = mesh_.add_vertex(x);
   mesh_.vertex_attribute(class_attribute_, v)[0] = static_cast<double>(vertex_class);
   set_surface_hint(v, kNoIndex);
+  mesh_.vertex_attribute(smoothing_refused_attribute_, v)[0] = -1;
   set_point_metric(v, metric);
   return v;
 }

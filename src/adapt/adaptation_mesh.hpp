@@ -1,7 +1,7 @@
 // The mesh an adaptation run changes, with what its operators read at every vertex: the metric
 // (clamped, from the run's AdaptationMetric), the vertex's geometric class, a back-mesh hint for the
-// next metric evaluation near it, a geometry hint for the next projection near it, and when its
-// ball last changed. All five are vertex attributes of
+// next metric evaluation near it, a geometry hint for the next projection near it, when its ball
+// last changed and when a smoothing move of it was last refused. All six are vertex attributes of
 // the mesh, so they follow every insertion, removal and compaction (docs/mesh-model.md); each
 // element's quality is an element attribute.
 #pragma once
@@ -104,6 +104,12 @@ class AdaptationMesh {
   bool changed_recently(Index v) const { return changed_since(v, previous_pass_start_); }
   // Whether v's ball changed at or after `clock` (everything did since clock 0).
   bool changed_since(Index v, int clock) const { return mesh_.vertex_attribute(stamp_attribute_, v)[0] >= clock; }
+  // Smoothing's memory: a vertex whose move was refused, and whose ball has not changed since, would
+  // be refused again (a refusal depends on the ball alone).
+  void note_smoothing_refused(Index v) { mesh_.vertex_attribute(smoothing_refused_attribute_, v)[0] = clock_; }
+  bool smoothing_refused_as_is(Index v) const {
+    return mesh_.vertex_attribute(stamp_attribute_, v)[0] < mesh_.vertex_attribute(smoothing_refused_attribute_, v)[0];
+  }
   // Whether element k was made, or one of its vertices moved, at or after `clock`.
   bool element_changed_since(Index k, int clock) const { return mesh_.element_attribute(element_stamp_attribute_, k) >= clock; }
 
@@ -124,8 +130,8 @@ class AdaptationMesh {
   Mesh<D>& mesh_;
   const AdaptationMetric<D>& metric_;
   const BoundaryGeometry<D>* geometry_;
-  int metric_attribute_, class_attribute_, hint_attribute_, surface_hint_attribute_, stamp_attribute_, quality_attribute_,
-      element_stamp_attribute_;
+  int metric_attribute_, class_attribute_, hint_attribute_, surface_hint_attribute_, stamp_attribute_, smoothing_refused_attribute_,
+      quality_attribute_, element_stamp_attribute_;
   int clock_ = 0, pass_start_ = 0, previous_pass_start_ = 0, sweep_start_ = 0;
   CavityWorkspace<D> work_;
 };

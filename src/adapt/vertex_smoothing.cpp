@@ -132,14 +132,17 @@ struct SmoothingCandidates {
   }
 };
 
-// The recently changed interior and surface vertices, with their balls.
+// The recently changed interior and surface vertices, with their balls, but those refused last
+// time whose balls have not changed since.
 template <int D>
 SmoothingCandidates smoothing_candidates(const AdaptationMesh<D>& am) {
   SmoothingCandidates candidates;
   std::vector<Index> ball;
   candidates.ball_start.push_back(0);
   for (Index v = 0; v < am.mesh().vertex_count(); ++v) {
-    if (am.mesh().vertex_removed(v) || am.vertex_class(v) > VertexClass::kSurface || !am.changed_recently(v)) continue;
+    if (am.mesh().vertex_removed(v) || am.vertex_class(v) > VertexClass::kSurface || !am.changed_recently(v) ||
+        am.smoothing_refused_as_is(v))
+      continue;
     collect_ball(am.mesh(), v, ball);
     candidates.vertices.push_back(v);
     candidates.balls.insert(candidates.balls.end(), ball.begin(), ball.end());
@@ -158,6 +161,7 @@ std::vector<Index> smooth_round(AdaptationMesh<D>& am, const SmoothingCandidates
   for (Index i : positions) batches.place(i, candidates.ball(static_cast<std::size_t>(i)));
   std::vector<char> moved;
   for (const std::vector<Index>& batch : batches.batches()) {
+    am.tick();  // a refusal in this batch comes after the moves of the earlier ones
     moved.assign(batch.size(), 0);
     run_strided(pool, batch.size(), kSmallestThreadedBatch, [&](std::size_t worker, std::size_t n) {
       const auto i = static_cast<std::size_t>(batch[n]);
@@ -165,6 +169,7 @@ std::vector<Index> smooth_round(AdaptationMesh<D>& am, const SmoothingCandidates
     });
     for (std::size_t n = 0; n < batch.size(); ++n) {
       count.add(moved[n] ? Refusal::kNone : Refusal::kQuality);
+      if (!moved[n]) am.note_smoothing_refused(candidates.vertices[static_cast<std::size_t>(batch[n])]);
       if (moved[n])
         for (Index k : candidates.ball(static_cast<std::size_t>(batch[n])))
           for (Index w : am.mesh().element(k)) am.mark_changed(w);
