@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 """`mpirun -np N hocav curve` and `mpirun -np N hocav adapt --order 2` (docs/distributed.md §Curving)
-against the serial commands on a small shell with a boundary layer (curved boundary, P3 surrogate).
+against the serial commands on two small shells (curved boundary, P3 surrogate, implied metric): one
+with a boundary layer, which the partitions cut between layers, and one without, which they cut
+across the spheres (interfaces meet the boundary).
 
 With one process the output must be the serial one byte for byte. With 2 and 3 processes
 (oversubscribed): the output is consistent, P2, certified (every element's min normalized Jacobian
@@ -8,7 +10,8 @@ above the floor, as `hocav stats` measures it), has the serial run's vertices, e
 its gain and mean normalized Jacobian lie near the serial run's; the second round curved the first
 round's interfaces, and the two rounds together reinserted each volume vertex once (the serial
 run's count of cavities, less the old interface vertices that the second round's interfaces froze
-again). The merge refuses parts that give an interface edge two different nodes, so a finished run
+again); no more boundary edges are left straight than in the serial run (an interface edge on the
+boundary gets its proposal in the second round). The merge refuses parts that give an interface edge two different nodes, so a finished run
 has every interface edge's node from the one rank that curved it.
 
 Usage: /usr/bin/python3 distributed_curve_test.py <path-to-hocav>
@@ -30,6 +33,22 @@ JACOBIAN_TOLERANCE = 0.05  # relative, of the mean normalized Jacobian
 def report(work, name):
     with open(os.path.join(work, name)) as file:
         return json.load(file)
+
+
+def straight_boundary_edges(hocav, work, name):
+    """The boundary edges of a P2 .meshb whose node is the straight midpoint."""
+    run([hocav, "convert", name + ".meshb", name + ".mesh"], work)
+    with open(os.path.join(work, name + ".mesh")) as file:
+        tokens = file.read().split()
+    at = tokens.index("Vertices")
+    points = [[float(x) for x in tokens[at + 2 + 4 * k:at + 5 + 4 * k]] for k in range(int(tokens[at + 1]))]
+    at = tokens.index("TrianglesP2")
+    edges = {}
+    for k in range(int(tokens[at + 1])):
+        a, b, c, ab, bc, ca = (int(v) - 1 for v in tokens[at + 2 + 7 * k:at + 8 + 7 * k])
+        for p, q, node in ((a, b, ab), (b, c, bc), (c, a, ca)):
+            edges[(min(p, q), max(p, q))] = max(abs(points[node][d] - (points[p][d] + points[q][d]) / 2) for d in range(3))
+    return sum(1 for gap in edges.values() if gap < 1e-12)
 
 
 def rounds(stderr):
@@ -64,28 +83,35 @@ def main():
         return SKIP
     with tempfile.TemporaryDirectory() as work:
         run([hocav, "generate", "cubed-shell-bl-inner", "--target-tets", "6000", "-o", "shell.meshb"], work)
-        run([hocav, "metric", "shell.meshb", "--implied", "-o", "shell.solb"], work)
-        curve = ["curve", "shell.meshb", "--metric", "shell.solb", "--threads", "1", "-q"]
-        run([hocav] + curve + ["-o", "serial.meshb", "--report", "serial.json"], work)
-        serial = stats(hocav, "serial.meshb", work)
-        serial_report = report(work, "serial.json")
-        serial_cavities = serial_report["cavities"]["tried"]
+        run([hocav, "generate", "cubed-shell", "--target-tets", "6000", "-o", "cubed.meshb"], work)
+        for case in ("shell", "cubed"):
+            run([hocav, "metric", case + ".meshb", "--implied", "-o", case + ".solb"], work)
+            curve = ["curve", case + ".meshb", "--metric", case + ".solb", "--threads", "1", "-q"]
+            serial_name = case + "1"
+            run([hocav] + curve + ["-o", serial_name + ".meshb", "--report", serial_name + ".json"], work)
+            serial = stats(hocav, serial_name + ".meshb", work)
+            serial_report = report(work, serial_name + ".json")
+            serial_cavities = serial_report["cavities"]["tried"]
+            serial_straight = straight_boundary_edges(hocav, work, serial_name)
 
-        run(mpirun + ["-np", "1", hocav] + curve + ["-o", "one.meshb"], work)
-        assert same_bytes(work, "one.meshb", "serial.meshb"), "curve, mpirun -np 1: not the serial output byte for byte"
+            run(mpirun + ["-np", "1", hocav] + curve + ["-o", "one.meshb"], work)
+            assert same_bytes(work, "one.meshb", serial_name + ".meshb"), f"{case}: curve, mpirun -np 1: not the serial output byte for byte"
 
-        for processes in (2, 3):
-            name = f"curve{processes}"
-            args = mpirun + ["-np", str(processes), hocav] + curve[:-1] + ["-o", name + ".meshb", "--report", name + ".json"]
-            found = rounds(completed(args, work).stderr)
-            assert len(found) == 2, f"{name}: rounds {found}"
-            data = check_against_serial(hocav, work, name, serial, serial_report)
-            (first, _), (second, frozen_again) = found
-            print(f"{name}: cavities {first} + {second} (serial {serial_cavities}), {frozen_again} old interface vertices frozen again")
-            assert second > 0, f"{name}: the second round curved nothing"
-            assert first + second == data["cavities"]["tried"]
-            assert serial_cavities - frozen_again <= first + second <= serial_cavities, \
-                f"{name}: {first} + {second} cavities, serial {serial_cavities}, {frozen_again} frozen again"
+            for processes in (2, 3):
+                name = f"{case}{processes}"
+                args = mpirun + ["-np", str(processes), hocav] + curve[:-1] + ["-o", name + ".meshb", "--report", name + ".json"]
+                found = rounds(completed(args, work).stderr)
+                assert len(found) == 2, f"{name}: rounds {found}"
+                data = check_against_serial(hocav, work, name, serial, serial_report)
+                (first, _), (second, frozen_again) = found
+                straight = straight_boundary_edges(hocav, work, name)
+                print(f"{name}: cavities {first} + {second} (serial {serial_cavities}), {frozen_again} old interface vertices frozen "
+                      f"again, {straight} straight boundary edges (serial {serial_straight})")
+                assert second > 0, f"{name}: the second round curved nothing"
+                assert first + second == data["cavities"]["tried"]
+                assert serial_cavities - frozen_again <= first + second <= serial_cavities, \
+                    f"{name}: {first} + {second} cavities, serial {serial_cavities}, {frozen_again} frozen again"
+                assert straight <= serial_straight, f"{name}: {straight} straight boundary edges, serial {serial_straight}"
 
         adapt = ["adapt", "shell.meshb", "--metric", "shell.solb", "--order", "2", "--threads", "1", "-q"]
         run([hocav] + adapt + ["-o", "adapted.meshb"], work)
