@@ -126,9 +126,10 @@ void serve_adaptation(const AdaptOptions& o, const std::vector<std::byte>& input
   serve_distributed_adaptation(*setup->metric, setup->geometry.get(), setup->settings);
   if (!job.curving) return;
   setup->geometry.reset();  // one CAD model open at a time, as on rank 0
-  std::vector<std::byte> adapted;
-  broadcast_bytes(adapted);
-  const auto geometry = job.geometry(unpack_part<D>(adapted).mesh);
+  std::vector<std::byte> bytes;
+  broadcast_bytes(bytes);
+  const MeshPart<D> adapted = unpack_part<D>(bytes);
+  const auto geometry = job.geometry(adapted.mesh);
   serve_distributed_curving(geometry.get(), *job.curving);
 }
 
