@@ -2,7 +2,7 @@
 """`mpirun -np N hocav curve` and `mpirun -np N hocav adapt --order 2` (docs/distributed.md §Curving)
 against the serial commands on two small shells (curved boundary, P3 surrogate, implied metric): one
 with a boundary layer, which the partitions cut between layers, and one without, which they cut
-across the spheres (interfaces meet the boundary).
+across the spheres (interfaces meet the boundary); and on a 2D annulus with a boundary layer.
 
 With one process the output must be the serial one byte for byte. With 2 and 3 processes
 (oversubscribed): the output is consistent, P2, certified (every element's min normalized Jacobian
@@ -40,14 +40,19 @@ def straight_boundary_edges(hocav, work, name):
     run([hocav, "convert", name + ".meshb", name + ".mesh"], work)
     with open(os.path.join(work, name + ".mesh")) as file:
         tokens = file.read().split()
+    dimension = int(tokens[tokens.index("Dimension") + 1])
     at = tokens.index("Vertices")
-    points = [[float(x) for x in tokens[at + 2 + 4 * k:at + 5 + 4 * k]] for k in range(int(tokens[at + 1]))]
-    at = tokens.index("TrianglesP2")
+    width = dimension + 1
+    points = [[float(x) for x in tokens[at + 2 + width * k:at + 2 + width * k + dimension]] for k in range(int(tokens[at + 1]))]
+    # Boundary facets: P2 edges (a, b, node, ref) in 2D, P2 triangles (a, b, c, ab, bc, ca, ref) in 3D.
+    keyword, width = ("EdgesP2", 4) if dimension == 2 else ("TrianglesP2", 7)
+    at = tokens.index(keyword)
     edges = {}
     for k in range(int(tokens[at + 1])):
-        a, b, c, ab, bc, ca = (int(v) - 1 for v in tokens[at + 2 + 7 * k:at + 8 + 7 * k])
-        for p, q, node in ((a, b, ab), (b, c, bc), (c, a, ca)):
-            edges[(min(p, q), max(p, q))] = max(abs(points[node][d] - (points[p][d] + points[q][d]) / 2) for d in range(3))
+        ids = [int(v) - 1 for v in tokens[at + 2 + width * k:at + 1 + width * (k + 1)]]
+        sides = [(ids[0], ids[1], ids[2])] if dimension == 2 else [(ids[0], ids[1], ids[3]), (ids[1], ids[2], ids[4]), (ids[2], ids[0], ids[5])]
+        for p, q, node in sides:
+            edges[(min(p, q), max(p, q))] = max(abs(points[node][d] - (points[p][d] + points[q][d]) / 2) for d in range(dimension))
     return sum(1 for gap in edges.values() if gap < 1e-12)
 
 
@@ -84,7 +89,8 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         run([hocav, "generate", "cubed-shell-bl-inner", "--target-tets", "6000", "-o", "shell.meshb"], work)
         run([hocav, "generate", "cubed-shell", "--target-tets", "6000", "-o", "cubed.meshb"], work)
-        for case in ("shell", "cubed"):
+        run([hocav, "generate", "polar-annulus-bl-inner", "--target-triangles", "3000", "-o", "annulus.meshb"], work)
+        for case in ("shell", "cubed", "annulus"):
             run([hocav, "metric", case + ".meshb", "--implied", "-o", case + ".solb"], work)
             curve = ["curve", case + ".meshb", "--metric", case + ".solb", "--threads", "1", "-q"]
             serial_name = case + "1"
