@@ -66,9 +66,11 @@ AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric,
 }
 
 template <int D>
-void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGeometry<D>* geometry, const CurvingOptions& options) {
+void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGeometry<D>* geometry, const CurvingOptions& options,
+                        const CurvingStep<D>& curve) {
   const auto start = std::chrono::steady_clock::now();
-  adapted.report.curving = curve_in_metric(mesh, *adapted.field, geometry, options);
+  adapted.report.curving = curve ? curve(mesh, *adapted.field, geometry, options)
+                                 : curve_in_metric(mesh, *adapted.field, geometry, options);
   adapted.report.seconds_curve = seconds_since(start);
   adapted.report.peak_memory_bytes = peak_memory_bytes();
 }
@@ -162,7 +164,7 @@ AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics,
     if (job.before_curving) job.before_curving(mesh, curving);
     setup->geometry.reset();                           // a CAD model is open once at a time (gmsh's one model per thread)
     const auto curving_geometry = job.geometry(mesh);  // of the adapted boundary
-    curve_adapted_mesh(adapted, mesh, curving_geometry.get(), curving);
+    curve_adapted_mesh(adapted, mesh, curving_geometry.get(), curving, job.curve);
     if (job.curved) adapt_curved_mesh(adapted, mesh, curving, job.iterations);
     adapted.report.curved_measures = measure_curved(mesh, *adapted.field);
   }
@@ -181,7 +183,7 @@ template AdaptedMesh<3> adapt_in_metric(Mesh<3>&, const AdaptationMetric<3>&, co
                                         const AdaptationLoop<3>&);
 template void adapt_curved_mesh(AdaptedMesh<2>&, Mesh<2>&, const CurvingOptions&, int);
 template void adapt_curved_mesh(AdaptedMesh<3>&, Mesh<3>&, const CurvingOptions&, int);
-template void curve_adapted_mesh(AdaptedMesh<2>&, Mesh<2>&, const BoundaryGeometry<2>*, const CurvingOptions&);
-template void curve_adapted_mesh(AdaptedMesh<3>&, Mesh<3>&, const BoundaryGeometry<3>*, const CurvingOptions&);
+template void curve_adapted_mesh(AdaptedMesh<2>&, Mesh<2>&, const BoundaryGeometry<2>*, const CurvingOptions&, const CurvingStep<2>&);
+template void curve_adapted_mesh(AdaptedMesh<3>&, Mesh<3>&, const BoundaryGeometry<3>*, const CurvingOptions&, const CurvingStep<3>&);
 
 }  // namespace hocav

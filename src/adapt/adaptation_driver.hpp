@@ -34,10 +34,16 @@ template <int D>
 AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                                const AdaptationSettings& settings, const AdaptationLoop<D>& loop = {});
 
-// Then curves the adapted `mesh` in `adapted.field` (curve_in_metric; `geometry` is usually made
-// from the adapted mesh) and adds the curving's figures, time and the peak memory to the report.
+// The curving a job runs: curve_in_metric, or the distributed curving of src/parallel/.
 template <int D>
-void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGeometry<D>* geometry, const CurvingOptions& options);
+using CurvingStep = std::function<CurvingReport(Mesh<D>&, const MetricField<D>&, const BoundaryGeometry<D>*, const CurvingOptions&)>;
+
+// Then curves the adapted `mesh` in `adapted.field` with `curve` (empty: curve_in_metric; `geometry`
+// is usually made from the adapted mesh) and adds the curving's figures, time and the peak memory to
+// the report.
+template <int D>
+void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGeometry<D>* geometry, const CurvingOptions& options,
+                        const CurvingStep<D>& curve = {});
 
 // Then runs at most `max_passes` curved passes on the curved `mesh` (adapt_curved, in `adapted.field`),
 // and measures the output again into the report.
@@ -67,6 +73,7 @@ struct AdaptationJob {
   // Called with the adapted mesh just before its curving, e.g. to set the curving's progress.
   std::function<void(const Mesh<D>&, CurvingOptions&)> before_curving;
   AdaptationLoop<D> loop;  // empty: adapt_to_metric
+  CurvingStep<D> curve;    // empty: curve_in_metric
 };
 
 // What a job adapts with, made alike by every process of a distributed run: the input as back mesh

@@ -24,13 +24,13 @@ double processor_seconds() {
 
 template <int D>
 CurvingRun curve_with_boundary(Mesh<D>& mesh, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
-                               const ReinsertionOptions& options) {
+                               const ReinsertionOptions& options, const ProposalScope& scope) {
   CurvingRun run;
   const auto proposal_start = std::chrono::steady_clock::now();
   std::optional<BoundaryProposals<D>> proposals;
   std::optional<ProposalNodeSource<D>> boundary_nodes;
   if (geometry) {
-    proposals.emplace(mesh, *geometry);
+    proposals.emplace(mesh, *geometry, scope);
     boundary_nodes.emplace(*proposals);
   }
   run.proposal_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - proposal_start).count();
@@ -57,6 +57,15 @@ P2CavityOptions cavity_options(const CurvingOptions& options) {
   return cavity;
 }
 
+ReinsertionOptions reinsertion_options(const CurvingOptions& options) {
+  ReinsertionOptions reinsertion;
+  reinsertion.cavity = cavity_options(options);
+  reinsertion.passes = options.passes;
+  reinsertion.threads = options.threads;
+  reinsertion.progress = options.progress;
+  return reinsertion;
+}
+
 template <int D>
 void check_curved_consistency(const Mesh<D>& mesh) {
   ConsistencyOptions consistency;
@@ -68,18 +77,15 @@ void check_curved_consistency(const Mesh<D>& mesh) {
 template <int D>
 CurvingReport curve_in_metric(Mesh<D>& mesh, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
                               const CurvingOptions& options) {
-  ReinsertionOptions reinsertion;
-  reinsertion.cavity = cavity_options(options);
-  reinsertion.passes = options.passes;
-  reinsertion.threads = options.threads;
-  reinsertion.progress = options.progress;
-  CurvingReport report = curve_with_boundary<D>(mesh, field, geometry, reinsertion).report;
+  CurvingReport report = curve_with_boundary<D>(mesh, field, geometry, reinsertion_options(options)).report;
   check_curved_consistency(mesh);
   return report;
 }
 
-template CurvingRun curve_with_boundary(Mesh<2>&, const MetricField<2>&, const BoundaryGeometry<2>*, const ReinsertionOptions&);
-template CurvingRun curve_with_boundary(Mesh<3>&, const MetricField<3>&, const BoundaryGeometry<3>*, const ReinsertionOptions&);
+template CurvingRun curve_with_boundary(Mesh<2>&, const MetricField<2>&, const BoundaryGeometry<2>*, const ReinsertionOptions&,
+                                        const ProposalScope&);
+template CurvingRun curve_with_boundary(Mesh<3>&, const MetricField<3>&, const BoundaryGeometry<3>*, const ReinsertionOptions&,
+                                        const ProposalScope&);
 template void check_curved_consistency(const Mesh<2>&);
 template void check_curved_consistency(const Mesh<3>&);
 template CurvingReport curve_in_metric(Mesh<2>&, const MetricField<2>&, const BoundaryGeometry<2>*, const CurvingOptions&);

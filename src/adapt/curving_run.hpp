@@ -10,6 +10,7 @@
 #include "curve/quadrature.hpp"
 #include "report/curving_report.hpp"
 #include "surface/boundary_geometry.hpp"
+#include "surface/boundary_proposals.hpp"
 
 namespace hocav {
 
@@ -19,9 +20,10 @@ struct CurvingRun {
   double cpu_seconds = 0;       // processor time of the reinsertion, all threads
 };
 
+// `scope`: which boundary edges get a proposal (boundary_proposals.hpp; by default every one).
 template <int D>
 CurvingRun curve_with_boundary(Mesh<D>& mesh, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
-                               const ReinsertionOptions& options);
+                               const ReinsertionOptions& options, const ProposalScope& scope = {});
 
 // The options of `hocav curve` (docs/usage.md).
 struct CurvingOptions {
@@ -35,6 +37,8 @@ struct CurvingOptions {
 
 // The P2 cavity operator's options of a curving (its floor and quadrature).
 P2CavityOptions cavity_options(const CurvingOptions& options);
+// The reinsertion's options of a curving (its cavity options, passes, threads, progress).
+ReinsertionOptions reinsertion_options(const CurvingOptions& options);
 
 // Error ("internal error: ...") unless the curved `mesh` is consistent (a valid curved element may be
 // an inverted P1 one).

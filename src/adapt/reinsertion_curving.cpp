@@ -81,7 +81,8 @@ ReinsertionResult curve_by_reinsertion(Mesh<D>& mesh, const MetricField<D>& fiel
   std::vector<std::vector<Index>> balls(kCavitiesPerRound);
   std::vector<CavityStatus> statuses(kCavitiesPerRound);
 
-  const std::vector<Index> vertices = volume_vertices(mesh);
+  std::vector<Index> vertices = volume_vertices(mesh);
+  if (!options.region.empty()) std::erase_if(vertices, [&](Index v) { return !options.region[v]; });
   const auto batches = independent_batches(vertex_graph(mesh), vertices, boundary ? 4 : 3);
   const double total = static_cast<double>(vertices.size()) * options.passes;
   double done = 0, reported = 0;

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "cavity/p2_cavity_operator.hpp"
@@ -24,6 +25,9 @@ struct ReinsertionOptions {
   // cavity recreates with the same nodes is not certified again. Off: every cavity optimizes all
   // its inner edges and certifies all its new elements, as the paper describes.
   bool reuse_results = true;
+  // Per vertex, when not empty: only the volume vertices flagged here are reinserted (a distributed
+  // curving's second round, near the first round's interfaces: docs/distributed.md §Curving).
+  std::span<const char> region;
   // Called now and then with the fraction of the work done (for progress on long runs).
   std::function<void(double)> progress;
 };
@@ -41,7 +45,7 @@ template <int D>
 ReinsertionResult curve_by_reinsertion(Mesh<D>& mesh, const MetricField<D>& field, BoundaryNodeSource<D>* boundary,
                                        const ReinsertionOptions& options = {});
 
-// The vertices on no boundary facet: the ones the algorithm reinserts.
+// The vertices on no boundary facet: the ones the algorithm reinserts (in the region, when given).
 template <int D>
 std::vector<Index> volume_vertices(const Mesh<D>& mesh);
 

@@ -3,7 +3,8 @@
 //                [--curved] [--jacobian-floor J] [--iterations N] [--threads N] [--report R.json] [--vtu V.vtu]
 // Metric-based adaptation to a unit mesh (split, collapse, swap, smooth; boundary points on the
 // geometry), then, with --order 2, the curving of `hocav curve` in the same metric. Under
-// `mpirun -np N` (N > 1) the P1 loop is distributed (docs/distributed.md); rank 0 reads, curves and writes.
+// `mpirun -np N` (N > 1) the P1 loop and the curving are distributed (docs/distributed.md); rank 0
+// reads and writes, and runs the curved passes of --curved.
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -19,6 +20,7 @@
 #include "io/output_set.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_adaptation.hpp"
+#include "parallel/distributed_curving.hpp"
 #include "parallel/part_message.hpp"
 #include "report/curved_vtu.hpp"
 #include "surface/boundary_choice.hpp"
@@ -101,6 +103,13 @@ void distribute(Mesh<D>& mesh, std::vector<SymMat<D>>& metrics, AdaptationJob<D>
                             const AdaptationSettings& settings) {
     return adapt_distributed(adapted, metric, geometry, settings, on_iteration);
   };
+  // The adapted mesh to every process, whose curving geometry is made from it.
+  job.curve = [quiet = o.quiet](Mesh<D>& adapted, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
+                                const CurvingOptions& curving) {
+    std::vector<std::byte> bytes = pack_part(adapted, {});
+    broadcast_bytes(bytes);
+    return curve_distributed(adapted, field, geometry, curving, quiet ? nullptr : print_curving_round);
+  };
 }
 
 // The other processes: the same job on rank 0's input, serving its distributed loop.
@@ -115,6 +124,13 @@ void serve_adaptation(const AdaptOptions& o, const std::vector<std::byte>& input
   job.pass_progress = {};
   const auto setup = set_up_adaptation(std::move(part.mesh), std::move(metrics), job, o.input);
   serve_distributed_adaptation(*setup->metric, setup->geometry.get(), setup->settings);
+  if (!job.curving) return;
+  setup->geometry.reset();  // one CAD model open at a time, as on rank 0
+  std::vector<std::byte> bytes;
+  broadcast_bytes(bytes);
+  const MeshPart<D> adapted = unpack_part<D>(bytes);
+  const auto geometry = job.geometry(adapted.mesh);
+  serve_distributed_curving(geometry.get(), *job.curving);
 }
 
 void serve_adaptation(const AdaptOptions& o) {

@@ -1,5 +1,7 @@
 #include "cli/command_support.hpp"
 
+#include "parallel/communicator.hpp"
+
 namespace hocav {
 namespace {
 
@@ -21,6 +23,14 @@ void CurvingProgress::attach(CurvingOptions& options) {
 
 void CurvingProgress::complete() {
   if (line_) line_->complete();
+}
+
+void print_curving_round(const DistributedCurvingRound& figures) {
+  std::cerr << "distributed: round " << figures.round << " of " << kDistributedCurvingRounds << ": " << process_count() << " parts, "
+            << figures.interface_faces << " interface faces, " << figures.interface_vertices << " vertices on the interfaces, "
+            << figures.cavities << " cavities";
+  if (figures.round > 1) std::cerr << ", " << figures.old_interface_vertices_frozen_again << " old interface vertices frozen again";
+  std::cerr << ", " << figures.bytes_sent << " bytes sent, " << figures.seconds << " s\n";
 }
 
 template CurvingProgress::CurvingProgress(const Mesh<2>&, int, bool);

@@ -1,5 +1,5 @@
-// What the commands share: the input mesh's check with its warning and the progress line of a
-// curving run. The rest they share is the library's, which each command includes itself
+// What the commands share: the input mesh's check with its warning, the progress line of a
+// curving run and the line of a distributed curving's round. The rest they share is the library's, which each command includes itself
 // (io/node_metrics.hpp, report/curved_vtu.hpp, report/mesh_summary.hpp, surface/boundary_choice.hpp).
 #pragma once
 
@@ -10,6 +10,7 @@
 #include "adapt/curving_run.hpp"
 #include "cli/progress_line.hpp"
 #include "mesh/input_check.hpp"
+#include "parallel/distributed_curving.hpp"
 
 namespace hocav {
 
@@ -34,5 +35,8 @@ class CurvingProgress {
   double total_ = 0;
   std::unique_ptr<ProgressLine> line_;
 };
+
+// A round of a distributed curving (docs/distributed.md §Curving) on stderr.
+void print_curving_round(const DistributedCurvingRound& figures);
 
 }  // namespace hocav

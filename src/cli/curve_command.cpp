@@ -1,7 +1,8 @@
 // hocav curve IN --metric SOL -o OUT [--surface p3|cad:FILE|none] [--jacobian-floor X] [--passes N]
 //                [--threads N] [--quadrature RULE] [--report R.json] [--vtu V.vtu]
 // The paper's algorithm: propose boundary curvature, then reinsert every volume vertex with the P2
-// cavity operator, and write the curved P2 mesh with the Table-1 figures.
+// cavity operator, and write the curved P2 mesh with the Table-1 figures. Under `mpirun -np N`
+// (N > 1) the curving is distributed (docs/distributed.md §Curving); rank 0 reads and writes.
 #include <iostream>
 #include <memory>
 
@@ -13,6 +14,9 @@
 #include "io/atomic_output.hpp"
 #include "io/node_metrics.hpp"
 #include "io/output_set.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/distributed_curving.hpp"
+#include "parallel/part_message.hpp"
 #include "report/curved_vtu.hpp"
 #include "report/curving_report.hpp"
 #include "surface/boundary_choice.hpp"
@@ -27,18 +31,60 @@ struct CurveOptions {
   bool quiet = false;
 };
 
+CurvingOptions curving_options(const CurveOptions& options) {
+  CurvingOptions curving = options.curving;
+  curving.quadrature = quadrature_rule_named(options.quadrature);
+  return curving;
+}
+
+template <int D>
+CurvingReport curve_with_progress(Mesh<D>& mesh, const MetricField<D>& field, const BoundaryGeometry<D>* geometry, CurvingOptions curving,
+                                  bool quiet) {
+  CurvingProgress progress(mesh, curving.passes, !quiet);
+  progress.attach(curving);
+  CurvingReport report = curve_in_metric(mesh, field, geometry, curving);
+  progress.complete();
+  return report;
+}
+
+// With several processes: the input to every process (their geometry is made from it), and the
+// distributed curving in place of the serial one.
+template <int D>
+CurvingReport curve_on_every_process(Mesh<D>& mesh, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
+                                     const CurvingOptions& curving, bool quiet) {
+  std::vector<std::byte> input = pack_part(mesh, {});
+  broadcast_bytes(input);
+  std::function<void(const DistributedCurvingRound&)> on_round;
+  if (!quiet) on_round = print_curving_round;
+  return curve_distributed(mesh, field, geometry, curving, on_round);
+}
+
+// The other processes: rank 0's input, its geometry, and the parts rank 0 sends.
+template <int D>
+void serve_curving(const CurveOptions& options, const std::vector<std::byte>& input) {
+  const MeshPart<D> whole = unpack_part<D>(input);
+  const auto geometry = make_boundary_geometry<D>(boundary_choice_named(options.surface), whole.mesh);
+  serve_distributed_curving(geometry.get(), curving_options(options));
+}
+
+void serve_curving(const CurveOptions& options) {
+  std::vector<std::byte> input;
+  broadcast_bytes(input);
+  if (packed_dimension(input) == 2)
+    serve_curving<2>(options, input);
+  else
+    serve_curving<3>(options, input);
+}
+
 template <int D>
 void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& options, OutputSet& outputs) {
   check_mesh_or_warn(mesh, options.input);
   check_memory_fits("curving " + options.input, mesh.element_count(), kCurvingBytesPerElement);
   const MetricField<D> field(mesh, metrics_of_rows<D>(read_metric_for_mesh(options.metric, file, false)));
   const auto geometry = make_boundary_geometry<D>(boundary_choice_named(options.surface), mesh);
-  CurvingOptions curving = options.curving;
-  curving.quadrature = quadrature_rule_named(options.quadrature);
-  CurvingProgress progress(mesh, curving.passes, !options.quiet);
-  progress.attach(curving);
-  const CurvingReport report = curve_in_metric(mesh, field, geometry.get(), curving);
-  progress.complete();
+  const CurvingOptions curving = curving_options(options);
+  const CurvingReport report = process_count() > 1 ? curve_on_every_process(mesh, field, geometry.get(), curving, options.quiet)
+                                                   : curve_with_progress(mesh, field, geometry.get(), curving, options.quiet);
 
   write_mesh_file(options.output, mesh);
   if (!options.vtu.empty()) write_curved_vtu(options.vtu, mesh, field);
@@ -100,6 +146,7 @@ void add_curve_command(CLI::App& app) {
   command->add_option("--vtu", options->vtu, "also write a .vtu for ParaView (metric and min normalized Jacobian)");
   command->add_flag("-q,--quiet", options->quiet, "print nothing on success");
   command->callback([options] {
+    if (process_rank() != 0) return serve_curving(*options);
     OutputSet outputs;
     declare_curve_files(outputs, *options);
     MeshFileContent file = read_mesh_file(options->input);

@@ -14,8 +14,10 @@
 
 namespace {
 
-// Under mpirun with several processes only `adapt` is distributed (docs/distributed.md).
-bool runs_on_several_processes(int argc, char** argv) { return argc > 1 && std::string_view(argv[1]) == "adapt"; }
+// Under mpirun with several processes only `adapt` and `curve` are distributed (docs/distributed.md).
+bool runs_on_several_processes(int argc, char** argv) {
+  return argc > 1 && (std::string_view(argv[1]) == "adapt" || std::string_view(argv[1]) == "curve");
+}
 
 // The message of an error on one of several processes, before they all stop.
 int fail(const std::string& message) {
@@ -37,7 +39,8 @@ int main(int argc, char** argv) {
   constexpr int kFailure = 2;
   hocav::MpiSession mpi(argc, argv);
   if (hocav::process_count() > 1 && !runs_on_several_processes(argc, argv)) {
-    if (hocav::process_rank() == 0) std::cerr << "hocav: only `hocav adapt` runs on several processes (docs/distributed.md)\n";
+    if (hocav::process_rank() == 0)
+      std::cerr << "hocav: only `hocav adapt` and `hocav curve` run on several processes (docs/distributed.md)\n";
     return kFailure;
   }
   std::signal(SIGXFSZ, SIG_IGN);  // a file-size limit (ulimit -f) is a write error, reported and cleaned up, not a kill

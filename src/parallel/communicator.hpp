@@ -34,15 +34,38 @@ void broadcast_bytes(std::vector<std::byte>& bytes);
 // Ends every process with `exit_code` (an error on one process would leave the others waiting).
 [[noreturn]] void abort_processes(int exit_code);
 
-// Rank 0's `values` to every process.
 template <typename T>
-void broadcast_values(std::vector<T>& values) {
+std::vector<std::byte> bytes_of_values(const std::vector<T>& values) {
   static_assert(std::is_trivially_copyable_v<T>);
   std::vector<std::byte> bytes(values.size() * sizeof(T));
   if (!bytes.empty()) std::memcpy(bytes.data(), values.data(), bytes.size());
+  return bytes;
+}
+
+template <typename T>
+std::vector<T> values_of_bytes(const std::vector<std::byte>& bytes) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  std::vector<T> values(bytes.size() / sizeof(T));
+  if (!values.empty()) std::memcpy(values.data(), bytes.data(), values.size() * sizeof(T));
+  return values;
+}
+
+// Rank 0's `values` to every process.
+template <typename T>
+void broadcast_values(std::vector<T>& values) {
+  std::vector<std::byte> bytes = bytes_of_values(values);
   broadcast_bytes(bytes);
-  values.resize(bytes.size() / sizeof(T));
-  if (!bytes.empty()) std::memcpy(values.data(), bytes.data(), bytes.size());
+  values = values_of_bytes<T>(bytes);
+}
+
+template <typename T>
+void send_values(int to, const std::vector<T>& values) {
+  send_bytes(to, bytes_of_values(values));
+}
+
+template <typename T>
+std::vector<T> receive_values(int from) {
+  return values_of_bytes<T>(receive_bytes(from));
 }
 
 }  // namespace hocav

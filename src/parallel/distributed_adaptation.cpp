@@ -101,14 +101,6 @@ AdaptationRun combined(const std::vector<AdaptationRun>& runs) {
   return out;
 }
 
-template <int D>
-Index interface_face_count(const std::vector<MeshPart<D>>& parts) {
-  Index count = 0;
-  for (const MeshPart<D>& part : parts)
-    count += static_cast<Index>(std::count(part.mesh.facet_refs().begin(), part.mesh.facet_refs().end(), kInterfaceRef));
-  return count / 2;
-}
-
 // The last interfaces' vertices and their neighbours (per vertex of `mesh`): the region of the last
 // pass, which mends what the parts could not mend next to their frozen interfaces.
 template <int D>

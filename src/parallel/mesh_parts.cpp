@@ -4,6 +4,8 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "base/error.hpp"
+
 namespace hocav {
 namespace {
 
@@ -80,8 +82,17 @@ struct PartBuilder {
     for (Index f : facets) add_tagged_facet(part.mesh, mapped(mesh.facet(f)), mesh.facet_ref(f), tags, f);
     add_interface_facets(part, p, elements);
     if constexpr (D == 3) add_lines(part, p, elements);
+    if (mesh.is_p2()) copy_nodes(part.mesh, elements);
     for (Index v : part.global_ids) local[v] = kNoIndex;
     return part;
+  }
+
+  // Part element i is mesh element elements[i], with its vertices in the same order.
+  void copy_nodes(Mesh<D>& out, const std::vector<Index>& elements) const {
+    out.make_p2();
+    for (std::size_t i = 0; i < elements.size(); ++i)
+      for (int e = 0; e < Simplex<D>::kEdges; ++e)
+        out.edge_node(out.element_edge(static_cast<Index>(i), e)) = mesh.edge_node(mesh.element_edge(elements[i], e));
   }
 
   template <std::size_t N>
@@ -187,6 +198,7 @@ struct PartMerger {
   const VertexMerge<D>& vertices;
   MergedMesh<D>& out;
   std::unordered_set<std::uint64_t> old_lines, merged_lines;
+  std::vector<Index> first_element;  // per part: the merged id of its first element
 
   template <std::size_t N>
   std::array<Index, N> mapped(std::size_t p, const std::array<Index, N>& ids) const {
@@ -209,6 +221,7 @@ struct PartMerger {
   void add_part(std::size_t p) {
     const Mesh<D>& part = parts[p].mesh;
     const EntityTags<D> tags(part);
+    first_element.push_back(out.mesh.element_count());
     for (Index v : part.corners())
       if (parts[p].global_ids[v] == kNoIndex) out.mesh.corners().push_back(vertices.merged_ids[p][v]);
     for (Index k = 0; k < part.element_count(); ++k) out.mesh.add_element(mapped(p, part.element(k)), part.element_ref(k));
@@ -237,7 +250,29 @@ struct PartMerger {
       if (merged_lines.insert(Mesh<D>::edge_key(merged[0], merged[1])).second) add_tagged_line(out.mesh, merged, part.line_ref(l), tags, l);
     }
   }
+
+  // The parts' P2 nodes. An edge on an interface has a node on both sides, frozen there: they must
+  // be the same point, or the merged mesh would not conform.
+  void add_nodes() {
+    out.mesh.make_p2();
+    std::vector<char> placed(static_cast<std::size_t>(out.mesh.edge_count()), 0);
+    for (std::size_t p = 0; p < parts.size(); ++p)
+      for (Index k = 0; k < parts[p].mesh.element_count(); ++k)
+        for (int e = 0; e < Simplex<D>::kEdges; ++e) {
+          const Index edge = out.mesh.element_edge(first_element[p] + k, e);
+          const Vec<D>& node = parts[p].mesh.edge_node(parts[p].mesh.element_edge(k, e));
+          if (placed[edge] && !(out.mesh.edge_node(edge) == node))
+            throw Error("merging mesh parts: two parts disagree on an interface edge's node");
+          out.mesh.edge_node(edge) = node;
+          placed[edge] = 1;
+        }
+  }
 };
+
+template <int D>
+bool any_p2(const std::vector<MeshPart<D>>& parts) {
+  return std::any_of(parts.begin(), parts.end(), [](const MeshPart<D>& part) { return part.mesh.is_p2(); });
+}
 
 }  // namespace
 
@@ -245,16 +280,27 @@ template <int D>
 MergedMesh<D> merge_parts(const Mesh<D>& old_mesh, const std::vector<MeshPart<D>>& parts) {
   const VertexMerge<D> vertices(old_mesh.vertex_count(), parts);
   MergedMesh<D> out;
-  PartMerger<D> merger{old_mesh, parts, vertices, out, {}, {}};
+  PartMerger<D> merger{old_mesh, parts, vertices, out, {}, {}, {}};
   for (const auto& [a, b] : old_mesh.lines()) merger.old_lines.insert(Mesh<D>::edge_key(a, b));
   merger.add_vertices();
   for (std::size_t p = 0; p < parts.size(); ++p) merger.add_part(p);
+  if (any_p2(parts)) merger.add_nodes();
   return out;
+}
+
+template <int D>
+Index interface_face_count(const std::vector<MeshPart<D>>& parts) {
+  Index count = 0;
+  for (const MeshPart<D>& part : parts)
+    count += static_cast<Index>(std::count(part.mesh.facet_refs().begin(), part.mesh.facet_refs().end(), kInterfaceRef));
+  return count / 2;
 }
 
 template std::vector<MeshPart<2>> split_mesh(const Mesh<2>&, std::span<const int>, int);
 template std::vector<MeshPart<3>> split_mesh(const Mesh<3>&, std::span<const int>, int);
 template MergedMesh<2> merge_parts(const Mesh<2>&, const std::vector<MeshPart<2>>&);
 template MergedMesh<3> merge_parts(const Mesh<3>&, const std::vector<MeshPart<3>>&);
+template Index interface_face_count(const std::vector<MeshPart<2>>&);
+template Index interface_face_count(const std::vector<MeshPart<3>>&);
 
 }  // namespace hocav

@@ -16,7 +16,7 @@ constexpr int kInterfaceRef = std::numeric_limits<int>::min();
 
 template <int D>
 struct MeshPart {
-  // P1, without topology. Its boundary facets are the mesh's on the part's elements plus the
+  // P1 or P2 (as the mesh it came from), without topology. Its boundary facets are the mesh's on the part's elements plus the
   // interface facets (ref kInterfaceRef), which are required, their vertices required too: no
   // operator of the adaptation loop changes them.
   Mesh<D> mesh;
@@ -25,13 +25,14 @@ struct MeshPart {
 };
 
 // Splits `mesh` (with topology, compact) into `part_count` parts, element k going to part
-// `part_of[k]`. A part's vertices keep the mesh's order, its elements and facets too.
+// `part_of[k]`. A part's vertices keep the mesh's order, its elements and facets too; a P2 mesh gives
+// P2 parts with the same nodes.
 template <int D>
 std::vector<MeshPart<D>> split_mesh(const Mesh<D>& mesh, std::span<const int> part_of, int part_count);
 
 template <int D>
 struct MergedMesh {
-  Mesh<D> mesh;                        // P1, without topology
+  Mesh<D> mesh;                        // P1, or P2 when a part is, without topology
   std::vector<char> interface_vertex;  // per vertex: it lay on an interface of the parts
 };
 
@@ -40,8 +41,13 @@ struct MergedMesh {
 // the facets part by part, without the interface facets; each feature line once. The tags of old
 // vertices (corners, required) are `old_mesh`'s: a part's classification tags its interface
 // vertices, which are no corners of the whole; feature lines on interface edges are kept only if
-// `old_mesh` had them, for the same reason.
+// `old_mesh` had them, for the same reason. P2 parts give a P2 mesh with their nodes; throws Error
+// when two parts give an edge different nodes (an interface edge that was not frozen on both sides).
 template <int D>
 MergedMesh<D> merge_parts(const Mesh<D>& old_mesh, const std::vector<MeshPart<D>>& parts);
+
+// The faces between parts, each counted once.
+template <int D>
+Index interface_face_count(const std::vector<MeshPart<D>>& parts);
 
 }  // namespace hocav

@@ -56,6 +56,39 @@ std::span<const T> view(const std::vector<T>& values) {
   return values;
 }
 
+// Calls visit(edge) for each edge of a P2 mesh once, in the order of the elements and their local
+// edges: an order both ends of a message know, whatever the ids of the edge table.
+template <int D, typename Visit>
+void for_each_element_edge_once(const Mesh<D>& mesh, Visit&& visit) {
+  std::vector<char> seen(static_cast<std::size_t>(mesh.edge_count()), 0);
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (Index edge : mesh.element_edges(k))
+      if (!seen[edge]) {
+        seen[edge] = 1;
+        visit(edge);
+      }
+}
+
+// The P2 nodes, one per element edge (none for a P1 mesh).
+template <int D>
+std::vector<Vec<D>> edge_nodes_of(const Mesh<D>& mesh) {
+  std::vector<Vec<D>> nodes;
+  if (mesh.is_p2()) for_each_element_edge_once(mesh, [&](Index edge) { nodes.push_back(mesh.edge_node(edge)); });
+  return nodes;
+}
+
+template <int D>
+void set_edge_nodes(Mesh<D>& mesh, const std::vector<Vec<D>>& nodes) {
+  if (nodes.empty()) return;
+  mesh.make_p2();
+  std::size_t next = 0;
+  for_each_element_edge_once(mesh, [&](Index edge) {
+    if (next == nodes.size()) throw Error("a mesh part message has fewer P2 nodes than edges");
+    mesh.edge_node(edge) = nodes[next++];
+  });
+  if (next != nodes.size()) throw Error("a mesh part message has more P2 nodes than edges");
+}
+
 }  // namespace
 
 template <int D>
@@ -74,6 +107,7 @@ std::vector<std::byte> pack_part(const Mesh<D>& mesh, std::span<const Index> glo
   out.put(mesh.line_refs());
   for (const auto* tags : {&mesh.corners(), &mesh.ridges(), &mesh.required_vertices(), &mesh.required_edges(), &mesh.required_triangles()})
     out.put(view(*tags));
+  out.put(view(edge_nodes_of(mesh)));
   return std::move(out.bytes);
 }
 
@@ -109,6 +143,7 @@ MeshPart<D> unpack_part(const std::vector<std::byte>& bytes) {
   for (std::size_t l = 0; l < lines.size(); ++l) mesh.add_line(lines[l], line_refs[l]);
   for (auto* tags : {&mesh.corners(), &mesh.ridges(), &mesh.required_vertices(), &mesh.required_edges(), &mesh.required_triangles()})
     *tags = in.take<Index>();
+  set_edge_nodes(mesh, in.take<Vec<D>>());
   if (!in.at_end()) throw Error("a mesh part message has bytes past its end");
   return part;
 }

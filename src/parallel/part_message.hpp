@@ -1,5 +1,5 @@
 // A mesh part as bytes, for sending it to another process (docs/distributed.md §Migration): every
-// array of the part, its tags and its global vertex ids, read back into the same part.
+// array of the part, its tags, its P2 nodes and its global vertex ids, read back into the same part.
 #pragma once
 
 #include <cstddef>

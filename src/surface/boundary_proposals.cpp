@@ -1,12 +1,34 @@
 // Boundary-node proposals (docs/method.md §9).
 #include "surface/boundary_proposals.hpp"
 
+#include <unordered_set>
+
 #include "surface/cubic_patch.hpp"
 
 namespace hocav {
 
+namespace {
+
+// The edges of the facets with the scope's frozen ref.
 template <int D>
-BoundaryProposals<D>::BoundaryProposals(const Mesh<D>& mesh, const BoundaryGeometry<D>& geometry) {
+std::unordered_set<std::uint64_t> frozen_edges(const Mesh<D>& mesh, const ProposalScope& scope) {
+  std::unordered_set<std::uint64_t> frozen;
+  if (!scope.frozen_facet_ref) return frozen;
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    if (mesh.facet_ref(f) == *scope.frozen_facet_ref)
+      for (const auto& ends : kPatchEdges<D>) frozen.insert(Mesh<D>::edge_key(mesh.facet(f)[ends[0]], mesh.facet(f)[ends[1]]));
+  return frozen;
+}
+
+}  // namespace
+
+template <int D>
+BoundaryProposals<D>::BoundaryProposals(const Mesh<D>& mesh, const BoundaryGeometry<D>& geometry, const ProposalScope& scope) {
+  const std::unordered_set<std::uint64_t> frozen = frozen_edges(mesh, scope);
+  auto proposed = [&](Index a, Index b) {
+    if (!scope.region.empty() && !(scope.region[a] && scope.region[b])) return false;
+    return frozen.empty() || !frozen.contains(Mesh<D>::edge_key(a, b));
+  };
   // Each boundary edge once, with the refs of (up to two different) facets around it.
   std::vector<BoundaryEdge<D>> edges;
   slot_of_edge_.reserve(static_cast<std::size_t>(mesh.facet_count()) * CubicPatch<D>::kEdges);
@@ -14,6 +36,7 @@ BoundaryProposals<D>::BoundaryProposals(const Mesh<D>& mesh, const BoundaryGeome
     const int ref = mesh.facet_ref(f);
     for (const auto& ends : kPatchEdges<D>) {  // the facet's edges
       const Index a = mesh.facet(f)[ends[0]], b = mesh.facet(f)[ends[1]];
+      if (!proposed(a, b)) continue;
       const Index slot = slot_of_edge_.insert(Mesh<D>::edge_key(a, b), static_cast<Index>(edges.size()));
       if (slot < static_cast<Index>(edges.size())) {
         edges[slot].refs[1] = ref;
@@ -27,8 +50,9 @@ BoundaryProposals<D>::BoundaryProposals(const Mesh<D>& mesh, const BoundaryGeome
   nodes_.resize(edges.size());
   ends_.resize(edges.size());
   for (std::size_t i = 0; i < edges.size(); ++i) {
-    nodes_[i] = geometry.propose_edge_node(edges[i]);
     ends_[i] = {edges[i].a, edges[i].b};
+    if (!scope.geometry_ids.empty()) edges[i].a = scope.geometry_ids[edges[i].a], edges[i].b = scope.geometry_ids[edges[i].b];
+    nodes_[i] = geometry.propose_edge_node(edges[i]);
   }
 }
 

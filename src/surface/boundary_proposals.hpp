@@ -10,6 +10,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "base/index_hash_map.hpp"
@@ -18,10 +19,20 @@
 
 namespace hocav {
 
+// Which boundary edges get a proposal, and how the geometry knows their vertices (by default: every
+// edge, by the mesh's ids). A part of a distributed curving (docs/distributed.md §Curving) proposes
+// none on its frozen interfaces, its second round only near the first round's interfaces, and its
+// vertices have the ids of the whole mesh the geometry was made from.
+struct ProposalScope {
+  std::optional<int> frozen_facet_ref;  // the edges of the facets with this ref get none
+  std::span<const char> region;         // per vertex, when not empty: only edges with both ends in it get one
+  std::span<const Index> geometry_ids;  // per vertex, when not empty: its id in the geometry's mesh
+};
+
 template <int D>
 class BoundaryProposals {
  public:
-  BoundaryProposals(const Mesh<D>& mesh, const BoundaryGeometry<D>& geometry);
+  BoundaryProposals(const Mesh<D>& mesh, const BoundaryGeometry<D>& geometry, const ProposalScope& scope = {});
 
   // Proposals not consumed yet.
   std::size_t size() const { return slot_of_edge_.size(); }

@@ -170,5 +170,26 @@ TEST(ReinsertionCurving, CertificatesAreKeptOnlyWhenEveryInputElementIsAboveTheF
   EXPECT_GT(from_invalid.edges_kept_optimal, 0);
 }
 
+TEST(ReinsertionCurving, ARegionLimitsTheReinsertionToItsVertices) {
+  ShearSquare square;
+  Mesh<2>& mesh = square.mesh;
+  const MetricField<2> field(mesh, analytic_metric_at_vertices(square.spec, mesh));
+  mesh.build_topology();
+  const std::vector<Index> volume = volume_vertices(mesh);
+  std::vector<char> region(static_cast<std::size_t>(mesh.vertex_count()), 0);
+  for (std::size_t i = 0; i < volume.size(); i += 3) region[volume[i]] = 1;
+  region[0] = 1;  // a corner of the square: flagged, but on the boundary, so not reinserted
+  ReinsertionOptions options;
+  options.region = region;
+  const ReinsertionResult result = curve_by_reinsertion<2>(mesh, field, nullptr, options);
+  EXPECT_EQ(result.counters.cavities, static_cast<long long>((volume.size() + 2) / 3));
+  // An edge no reinserted vertex touches keeps its straight node.
+  for (Index e = 0; e < mesh.edge_count(); ++e) {
+    const auto [a, b] = mesh.edge_vertices(e);
+    if (region[a] || region[b]) continue;
+    EXPECT_EQ(mesh.edge_node(e), 0.5 * (mesh.vertex(a) + mesh.vertex(b))) << a << ' ' << b;
+  }
+}
+
 }  // namespace
 }  // namespace hocav

@@ -5,41 +5,20 @@ With one process the output must be the serial one byte for byte. With 2, 3 and 
 (oversubscribed): the output is consistent and valid (`hocav stats`), keeps the input's element and
 facet refs, its corners and feature lines, and its unit share of edges and mean quality lie within
 1% of the serial run's, and its minimum quality is at least half the serial one (the parts' frozen
-interfaces left elements of quality 0.001 before the last pass near them). With --order 2 (curved on rank 0) the output is valid too.
+interfaces left elements of quality 0.001 before the last pass near them). With --order 2 (curved on the parts, docs/distributed.md §Curving) the output is valid too.
 
 Usage: /usr/bin/python3 distributed_adapt_test.py <path-to-hocav>
 Exits 77 (skipped) when hocav was built without MPI.
 """
 import json
 import os
-import re
-import subprocess
 import sys
 import tempfile
 
-SKIP = 77
+from mpi_test_support import SKIP, check_same_refs, check_valid, mpirun_or_none, run, same_bytes, stats
+
 TOLERANCE = 0.01
 MIN_QUALITY_SHARE = 0.5
-
-
-def run(args, cwd):
-    result = subprocess.run(args, cwd=cwd, capture_output=True, text=True, check=False)
-    if result.returncode != 0:
-        raise AssertionError(f"{' '.join(args)} failed ({result.returncode}):\n{result.stderr}")
-    return result.stdout
-
-
-def stats(hocav, mesh, cwd):
-    """`hocav stats` as a dict of its lines (name -> rest of the line)."""
-    lines = run([hocav, "stats", mesh], cwd).splitlines()
-    return {line[:22].strip(): line[22:].strip() for line in lines}
-
-
-def check_valid(figures, name):
-    assert figures["consistency"] == "ok", f"{name}: consistency {figures['consistency']}"
-    assert figures["non-positive P1"] == "0" or figures["order"] == "P2", f"{name}: {figures['non-positive P1']} non-positive elements"
-    minimum = float(re.match(r"min (\S+)", figures["normalized Jacobian"]).group(1))
-    assert minimum > 0, f"{name}: normalized Jacobian down to {minimum}"
 
 
 def ridge_length(path):
@@ -71,11 +50,9 @@ def report(path):
 
 def main():
     hocav = os.path.abspath(sys.argv[1])
-    if os.environ.get("HOCAV_WITH_MPI", "0") not in ("1", "ON", "TRUE"):
-        print("skipped: hocav was built without MPI (HOCAV_WITH_MPI off)")
+    mpirun = mpirun_or_none()
+    if mpirun is None:
         return SKIP
-    mpirun = [os.environ.get("HOCAV_MPIEXEC") or "mpirun", "--oversubscribe"]
-    os.environ.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     with tempfile.TemporaryDirectory() as work:
         run([hocav, "generate", "cube", "--h", "0.1", "-o", "cube.meshb"], work)
         run([hocav, "metric", "cube.meshb", "--analytic", "linear", "--h-min", "0.03", "-o", "cube.solb"], work)
@@ -85,8 +62,7 @@ def main():
         serial_unit, serial_quality, serial_min = report(os.path.join(work, "serial.json"))
 
         run(mpirun + ["-np", "1", hocav] + adapt + ["-o", "one.meshb"], work)
-        with open(os.path.join(work, "one.meshb"), "rb") as one, open(os.path.join(work, "serial.meshb"), "rb") as alone:
-            assert one.read() == alone.read(), "mpirun -np 1: not the serial output byte for byte"
+        assert same_bytes(work, "one.meshb", "serial.meshb"), "mpirun -np 1: not the serial output byte for byte"
 
         run([hocav, "convert", "serial.meshb", "serial.mesh"], work)
         serial_ridges = ridge_length(os.path.join(work, "serial.mesh"))
@@ -99,10 +75,7 @@ def main():
             assert figures["required vertices"] == "0", f"{name}: {figures['required vertices']} required vertices (the interfaces' tags left)"
             ridges = ridge_length(os.path.join(work, name))
             assert abs(ridges - serial_ridges) <= 1e-9 * serial_ridges, f"{name}: ridge lines {ridges} long, serial {serial_ridges}"
-            assert re.findall(r"(\d+) \(", figures["element refs"]) == re.findall(r"(\d+) \(", serial["element refs"]), \
-                f"{name}: element refs {figures['element refs']} vs {serial['element refs']}"
-            assert re.findall(r"(\d+) \(", figures["facet refs"]) == re.findall(r"(\d+) \(", serial["facet refs"]), \
-                f"{name}: facet refs {figures['facet refs']} vs {serial['facet refs']}"
+            check_same_refs(figures, serial, name)
             unit, quality, minimum = report(os.path.join(work, f"{processes}.json"))
             print(f"{processes} processes: unit {unit:.4f} (serial {serial_unit:.4f}), mean quality {quality:.4f} "
                   f"(serial {serial_quality:.4f}), min quality {minimum:.4f} (serial {serial_min:.4f})")

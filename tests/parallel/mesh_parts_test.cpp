@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <set>
 
 #include "adapt/vertex_classes.hpp"
@@ -111,6 +113,67 @@ TEST(PartMessage, RefusesBrokenMessages) {
   std::vector<std::byte> bytes = pack_part(part.mesh, std::span<const Index>(part.global_ids));
   EXPECT_THROW(unpack_part<2>(bytes), Error);
   bytes.pop_back();
+  EXPECT_THROW(unpack_part<3>(bytes), Error);
+}
+
+// The cube made P2, every node moved off its edge's midpoint by its own amount.
+Mesh<3> curved_cube(const SlicedCube& cube) {
+  Mesh<3> mesh = cube.mesh;
+  mesh.make_p2();
+  for (Index e = 0; e < mesh.edge_count(); ++e) {
+    const Vec<3> mid = mesh.edge_node(e);
+    mesh.edge_node(e) = mid + Vec<3>{0.01 * std::sin(7 * mid[1]), 0.01 * std::cos(5 * mid[2]), 0.003 * (e % 7)};
+  }
+  return mesh;
+}
+
+TEST(MeshParts, P2NodesGoThroughSplitMessagesAndMerge) {
+  SlicedCube cube(3);
+  const Mesh<3> mesh = curved_cube(cube);
+  std::vector<MeshPart<3>> parts = split_mesh(mesh, cube.part_of, 3);
+  for (MeshPart<3>& part : parts) {
+    ASSERT_TRUE(part.mesh.is_p2());
+    for (Index e = 0; e < part.mesh.edge_count(); ++e) {
+      const auto [a, b] = part.mesh.edge_vertices(e);
+      EXPECT_EQ(part.mesh.edge_node(e), mesh.edge_node(mesh.find_edge(part.global_ids[a], part.global_ids[b])));
+    }
+    const std::vector<std::byte> bytes = pack_part(part.mesh, std::span<const Index>(part.global_ids));
+    part = unpack_part<3>(bytes);
+    ASSERT_TRUE(part.mesh.is_p2());
+    EXPECT_EQ(pack_part(part.mesh, std::span<const Index>(part.global_ids)), bytes) << "byte for byte";
+  }
+  const Mesh<3> merged = merge_parts(mesh, parts).mesh;
+  ASSERT_TRUE(merged.is_p2());
+  ASSERT_EQ(merged.edge_count(), mesh.edge_count());
+  for (Index e = 0; e < merged.edge_count(); ++e) {  // no new vertices: the merge keeps the mesh's vertex ids
+    const auto [a, b] = merged.edge_vertices(e);
+    EXPECT_EQ(merged.edge_node(e), mesh.edge_node(mesh.find_edge(a, b))) << a << ' ' << b;
+  }
+}
+
+TEST(MeshParts, PartsThatDisagreeOnAnInterfaceNodeAreRefused) {
+  SlicedCube cube(2);
+  const Mesh<3> mesh = curved_cube(cube);
+  std::vector<MeshPart<3>> parts = split_mesh(mesh, cube.part_of, 2);
+  EXPECT_NO_THROW(merge_parts(mesh, parts));
+  Mesh<3>& part = parts[1].mesh;
+  const auto interface = std::find(part.facet_refs().begin(), part.facet_refs().end(), kInterfaceRef);
+  ASSERT_NE(interface, part.facet_refs().end());
+  const auto& facet = part.facet(static_cast<Index>(interface - part.facet_refs().begin()));
+  part.edge_node(part.find_edge(facet[0], facet[1]))[2] += 1e-9;
+  EXPECT_THROW(merge_parts(mesh, parts), Error);
+}
+
+TEST(PartMessage, RefusesP2NodesThatDoNotFit) {
+  SlicedCube cube(2);
+  const Mesh<3> mesh = curved_cube(cube);
+  const MeshPart<3> part = split_mesh(mesh, cube.part_of, 2).front();
+  std::vector<std::byte> bytes = pack_part(part.mesh, std::span<const Index>(part.global_ids));
+  // The nodes are the message's last array: one node fewer, with the count to match.
+  bytes.resize(bytes.size() - sizeof(Vec<3>));
+  const std::size_t node_bytes = part.mesh.edge_count() * sizeof(Vec<3>);
+  std::uint64_t count = part.mesh.edge_count() - 1;
+  std::memcpy(bytes.data() + bytes.size() - (node_bytes - sizeof(Vec<3>)) - sizeof count, &count, sizeof count);
   EXPECT_THROW(unpack_part<3>(bytes), Error);
 }
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -86,6 +87,49 @@ TEST(SurfaceProposals, CubeProposalsAreStraightMidpoints) {
   BoundaryProposals<3> proposals(mesh, P3Surrogate<3>(mesh));
   for (const auto& [a, b] : boundary_edges(mesh)) EXPECT_LT(norm(*proposals.find(a, b) - 0.5 * (mesh.vertex(a) + mesh.vertex(b))), 1e-15);
   EXPECT_EQ(apply_boundary_proposals(mesh, proposals), Index(boundary_edges(mesh).size()));
+}
+
+// `mesh` with its vertices in reverse order (as a part numbers them), facet 0's ref changed to `ref`.
+Mesh<3> reversed_with_facet_ref(const Mesh<3>& mesh, int ref, std::vector<Index>& original_ids) {
+  Mesh<3> out;
+  const Index n = mesh.vertex_count();
+  for (Index v = n - 1; v >= 0; --v) {
+    out.add_vertex(mesh.vertex(v));
+    original_ids.push_back(v);
+  }
+  for (const auto& element : mesh.elements())
+    out.add_element({n - 1 - element[0], n - 1 - element[1], n - 1 - element[2], n - 1 - element[3]});
+  for (Index f = 0; f < mesh.facet_count(); ++f) {
+    const auto& facet = mesh.facet(f);
+    out.add_facet({n - 1 - facet[0], n - 1 - facet[1], n - 1 - facet[2]}, f == 0 ? ref : mesh.facet_ref(f));
+  }
+  return out;
+}
+
+TEST(SurfaceProposals, AScopeLeavesOutFrozenEdgesKeepsToItsRegionAndMapsIds) {
+  const Mesh<3> mesh = icosphere(2, 1.0, 0.2);
+  const P3Surrogate<3> surrogate(mesh);
+  std::vector<Index> original_ids;
+  const Mesh<3> part = reversed_with_facet_ref(mesh, -7, original_ids);
+  const auto& frozen = part.facet(0);
+  std::vector<char> region(static_cast<std::size_t>(part.vertex_count()), 1);
+  region[frozen[0]] = 0;  // with it, every edge at the frozen facet's first vertex leaves the region
+  const ProposalScope scope{-7, region, original_ids};
+  const BoundaryProposals<3> proposals(part, surrogate, scope);
+  std::size_t expected = 0;
+  for (const auto& [a, b] : boundary_edges(part)) {
+    const bool on_frozen = std::count(frozen.begin(), frozen.end(), a) + std::count(frozen.begin(), frozen.end(), b) == 2;
+    if (on_frozen || !region[a] || !region[b]) {
+      EXPECT_FALSE(proposals.find(a, b)) << a << ' ' << b;
+      continue;
+    }
+    ++expected;
+    ASSERT_TRUE(proposals.find(a, b));
+    // The surrogate knows the edge by the whole mesh's ids.
+    EXPECT_EQ(*proposals.find(a, b), *surrogate.edge_midpoint(original_ids[a], original_ids[b]));
+  }
+  EXPECT_EQ(proposals.size(), expected);
+  EXPECT_LT(expected, boundary_edges(part).size() - 2);
 }
 
 }  // namespace

@@ -1,0 +1,195 @@
+#include "parallel/distributed_curving.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+
+#include "base/error.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/element_partition.hpp"
+#include "parallel/part_message.hpp"
+
+namespace hocav {
+namespace {
+
+// What a part's curving sends back besides the part.
+struct PartCurving {
+  P2CavityCounters counters;
+  ProposalCompletion completion;
+  double seconds = 0;
+  long long proposals_left = 0;
+};
+static_assert(std::is_trivially_copyable_v<PartCurving>);
+
+// Curves one part in its own metric field (the part's vertices carry the whole field's
+// log-metrics): its interface vertices lie on boundary facets, so they are not reinserted, and the
+// interface edges get no proposal; with a `region` (round 2) only the region is curved.
+template <int D>
+PartCurving curve_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics, const std::vector<char>& region,
+                       const BoundaryGeometry<D>* geometry, const CurvingOptions& options) {
+  if (part.mesh.element_count() == 0) return {};
+  part.mesh.build_topology();
+  const MetricField<D> field = MetricField<D>::from_log_metrics(part.mesh, std::move(log_metrics));
+  ReinsertionOptions reinsertion = reinsertion_options(options);
+  reinsertion.region = region;
+  const ProposalScope scope{kInterfaceRef, region, part.global_ids};
+  const CurvingReport report = curve_with_boundary(part.mesh, field, geometry, reinsertion, scope).report;
+  return {report.counters, report.boundary_completion, report.seconds, report.boundary_proposals_left};
+}
+
+void add_completion(ProposalCompletion& sum, const ProposalCompletion& part) {
+  sum.placed += part.placed;
+  sum.already_placed += part.already_placed;
+  sum.pulled_back += part.pulled_back;
+  sum.blocked += part.blocked;
+  sum.absent += part.absent;
+  sum.largest_gap = std::max(sum.largest_gap, part.largest_gap);
+  sum.elements_certified += part.elements_certified;
+  sum.sweeps = std::max(sum.sweeps, part.sweeps);
+  sum.seconds = std::max(sum.seconds, part.seconds);
+}
+
+// The parts of a round as one: counts summed, times the slowest part's.
+void add_part(PartCurving& round, const PartCurving& part) {
+  round.counters += part.counters;
+  add_completion(round.completion, part.completion);
+  round.seconds = std::max(round.seconds, part.seconds);
+  round.proposals_left += part.proposals_left;
+}
+
+// The rounds as one: counts and times summed.
+void add_round(PartCurving& total, const PartCurving& round) {
+  const double seconds = total.seconds + round.seconds, completion_seconds = total.completion.seconds + round.completion.seconds;
+  add_part(total, round);
+  total.seconds = seconds;
+  total.completion.seconds = completion_seconds;
+}
+
+// One round on rank 0: partition, send, curve part 0, receive, merge.
+template <int D>
+struct RootRound {
+  Mesh<D>& mesh;
+  const MetricField<D>& field;
+  const BoundaryGeometry<D>* geometry;
+  const CurvingOptions& options;
+  std::vector<char> old_interface;  // per vertex of `mesh`: on the last round's interfaces
+  DistributedCurvingRound figures;
+
+  PartCurving run() {
+    const auto start = std::chrono::steady_clock::now();
+    const int count = process_count();
+    // Curving costs about the same per element: equal loads.
+    const std::vector<double> loads(static_cast<std::size_t>(mesh.element_count()), 1.0);
+    std::vector<MeshPart<D>> parts = split_mesh(mesh, partition_graph(element_graph(mesh, loads, old_interface), count), count);
+    figures.interface_faces = interface_face_count(parts);
+    for (int p = 1; p < count; ++p) {
+      send(p, pack_part(parts[p].mesh, std::span<const Index>(parts[p].global_ids)));
+      send(p, bytes_of_values(log_metrics_of(parts[p])));
+      send(p, bytes_of_values(region_of(parts[p])));
+    }
+    PartCurving round = curve_part(parts[0], log_metrics_of(parts[0]), region_of(parts[0]), geometry, options);
+    for (int p = 1; p < count; ++p) {
+      parts[p] = unpack_part<D>(receive(p));
+      add_part(round, values_of_bytes<PartCurving>(receive(p)).at(0));
+    }
+    merge(parts);
+    figures.cavities = round.counters.cavities;
+    figures.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return round;
+  }
+
+  std::vector<SymMat<D>> log_metrics_of(const MeshPart<D>& part) const {
+    std::vector<SymMat<D>> out;
+    for (Index g : part.global_ids) out.push_back(field.vertex_log_metric(g));
+    return out;
+  }
+
+  // Round 2: the old interfaces' vertices; round 1: empty (all).
+  std::vector<char> region_of(const MeshPart<D>& part) const {
+    std::vector<char> out;
+    if (!old_interface.empty())
+      for (Index g : part.global_ids) out.push_back(old_interface[g]);
+    return out;
+  }
+
+  // The merge keeps the vertex ids (no part adds a vertex), which the field and the geometry know.
+  void merge(const std::vector<MeshPart<D>>& parts) {
+    MergedMesh<D> merged = merge_parts(mesh, parts);
+    if (merged.mesh.vertex_count() != mesh.vertex_count())
+      throw Error("distributed curving: " + std::to_string(mesh.vertex_count() - merged.mesh.vertex_count()) +
+                  " vertices are in no element; curve the mesh on one process");
+    mesh = std::move(merged.mesh);
+    mesh.build_topology();
+    figures.interface_vertices = static_cast<Index>(std::count(merged.interface_vertex.begin(), merged.interface_vertex.end(), 1));
+    if (!old_interface.empty())
+      for (std::size_t v = 0; v < old_interface.size(); ++v)
+        if (old_interface[v] && merged.interface_vertex[v]) ++figures.old_interface_vertices_frozen_again;
+    old_interface = std::move(merged.interface_vertex);
+  }
+
+  void send(int to, const std::vector<std::byte>& bytes) {
+    figures.bytes_sent += static_cast<long long>(bytes.size());
+    send_bytes(to, bytes);
+  }
+  std::vector<std::byte> receive(int from) {
+    std::vector<std::byte> bytes = receive_bytes(from);
+    figures.bytes_sent += static_cast<long long>(bytes.size());
+    return bytes;
+  }
+};
+
+}  // namespace
+
+template <int D>
+CurvingReport curve_distributed(Mesh<D>& mesh, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
+                                const CurvingOptions& options, const std::function<void(const DistributedCurvingRound&)>& on_round) {
+  if (field.back_mesh().vertex_count() != mesh.vertex_count())
+    throw Error("curving: the metric's back mesh has " + std::to_string(field.back_mesh().vertex_count()) + " vertices, the mesh " +
+                std::to_string(mesh.vertex_count()));
+  if (!mesh.has_topology()) mesh.build_topology();
+  if (!mesh.is_p2()) mesh.make_p2();  // the parts are P2: their interface edges keep their nodes
+  const Index points_before = mesh.vertex_count();
+  CurvingOptions part_options = options;
+  part_options.progress = {};  // rank 0's part is not the whole
+  RootRound<D> root{mesh, field, geometry, part_options, {}, {}};
+  PartCurving total;
+  for (int round = 1; round <= kDistributedCurvingRounds; ++round) {
+    root.figures = {};
+    root.figures.round = round;
+    add_round(total, root.run());
+    if (on_round) on_round(root.figures);
+  }
+  for (int p = 1; p < process_count(); ++p) send_bytes(p, {});  // stop
+  check_curved_consistency(mesh);
+  ReinsertionResult result;
+  result.counters = total.counters;
+  result.seconds = total.seconds;
+  result.vertices_reinserted = static_cast<Index>(total.counters.cavities);
+  CurvingReport report = make_curving_report(mesh, field, points_before, result, static_cast<Index>(total.proposals_left));
+  report.boundary_completion = total.completion;
+  report.threads = options.threads;
+  return report;
+}
+
+template <int D>
+void serve_distributed_curving(const BoundaryGeometry<D>* geometry, const CurvingOptions& options) {
+  for (;;) {
+    const std::vector<std::byte> bytes = receive_bytes(0);
+    if (bytes.empty()) return;
+    MeshPart<D> part = unpack_part<D>(bytes);
+    std::vector<SymMat<D>> log_metrics = receive_values<SymMat<D>>(0);
+    const std::vector<char> region = receive_values<char>(0);
+    const PartCurving result = curve_part(part, std::move(log_metrics), region, geometry, options);
+    send_bytes(0, pack_part(part.mesh, std::span<const Index>(part.global_ids)));
+    send_values(0, std::vector<PartCurving>{result});
+  }
+}
+
+template CurvingReport curve_distributed(Mesh<2>&, const MetricField<2>&, const BoundaryGeometry<2>*, const CurvingOptions&,
+                                         const std::function<void(const DistributedCurvingRound&)>&);
+template CurvingReport curve_distributed(Mesh<3>&, const MetricField<3>&, const BoundaryGeometry<3>*, const CurvingOptions&,
+                                         const std::function<void(const DistributedCurvingRound&)>&);
+template void serve_distributed_curving(const BoundaryGeometry<2>*, const CurvingOptions&);
+template void serve_distributed_curving(const BoundaryGeometry<3>*, const CurvingOptions&);
+
+}  // namespace hocav

@@ -1,0 +1,137 @@
+#!/usr/bin/python3
+"""`mpirun -np N hocav curve` and `mpirun -np N hocav adapt --order 2` (docs/distributed.md §Curving)
+against the serial commands on two small shells (curved boundary, P3 surrogate, implied metric): one
+with a boundary layer, which the partitions cut between layers, and one without, which they cut
+across the spheres (interfaces meet the boundary); and on a 2D annulus with a boundary layer.
+
+With one process the output must be the serial one byte for byte. With 2 and 3 processes
+(oversubscribed): the output is consistent, P2, certified (every element's min normalized Jacobian
+above the floor, as `hocav stats` measures it), has the serial run's vertices, elements and refs;
+its gain and mean normalized Jacobian lie near the serial run's; the second round curved the first
+round's interfaces, and the two rounds together reinserted each volume vertex once (the serial
+run's count of cavities, less the old interface vertices that the second round's interfaces froze
+again); no more boundary edges are left straight than in the serial run (an interface edge on the
+boundary gets its proposal in the second round). The merge refuses parts that give an interface edge two different nodes, so a finished run
+has every interface edge's node from the one rank that curved it.
+
+Usage: /usr/bin/python3 distributed_curve_test.py <path-to-hocav>
+Exits 77 (skipped) when hocav was built without MPI.
+"""
+import json
+import os
+import re
+import sys
+import tempfile
+
+from mpi_test_support import SKIP, check_same_refs, check_valid, completed, min_normalized_jacobian, mpirun_or_none, run, same_bytes, stats
+
+FLOOR = 0.01
+GAIN_TOLERANCE = 0.1  # relative, of the average gain
+JACOBIAN_TOLERANCE = 0.05  # relative, of the mean normalized Jacobian
+
+
+def report(work, name):
+    with open(os.path.join(work, name)) as file:
+        return json.load(file)
+
+
+def straight_boundary_edges(hocav, work, name):
+    """The boundary edges of a P2 .meshb whose node is the straight midpoint."""
+    run([hocav, "convert", name + ".meshb", name + ".mesh"], work)
+    with open(os.path.join(work, name + ".mesh")) as file:
+        tokens = file.read().split()
+    dimension = int(tokens[tokens.index("Dimension") + 1])
+    at = tokens.index("Vertices")
+    width = dimension + 1
+    points = [[float(x) for x in tokens[at + 2 + width * k:at + 2 + width * k + dimension]] for k in range(int(tokens[at + 1]))]
+    # Boundary facets: P2 edges (a, b, node, ref) in 2D, P2 triangles (a, b, c, ab, bc, ca, ref) in 3D.
+    keyword, width = ("EdgesP2", 4) if dimension == 2 else ("TrianglesP2", 7)
+    at = tokens.index(keyword)
+    edges = {}
+    for k in range(int(tokens[at + 1])):
+        ids = [int(v) - 1 for v in tokens[at + 2 + width * k:at + 1 + width * (k + 1)]]
+        sides = [(ids[0], ids[1], ids[2])] if dimension == 2 else [(ids[0], ids[1], ids[3]), (ids[1], ids[2], ids[4]), (ids[2], ids[0], ids[5])]
+        for p, q, node in sides:
+            edges[(min(p, q), max(p, q))] = max(abs(points[node][d] - (points[p][d] + points[q][d]) / 2) for d in range(dimension))
+    return sum(1 for gap in edges.values() if gap < 1e-12)
+
+
+def rounds(stderr):
+    """(cavities, old interface vertices frozen again) per round, from the `distributed: round` lines."""
+    found = re.findall(r"distributed: round (\d) of 2: .*? (\d+) cavities(?:, (\d+) old interface vertices frozen again)?", stderr)
+    return [(int(cavities), int(frozen or 0)) for _, cavities, frozen in found]
+
+
+def check_against_serial(hocav, work, name, serial, serial_report):
+    figures = stats(hocav, name + ".meshb", work)
+    check_valid(figures, name)
+    assert figures["order"] == "P2", f"{name}: {figures['order']}"
+    minimum = min_normalized_jacobian(figures)
+    assert minimum >= FLOOR, f"{name}: min normalized Jacobian {minimum} below the floor {FLOOR}"
+    for key in ("vertices", "elements", "boundary facets"):
+        assert figures[key] == serial[key], f"{name}: {key} {figures[key]}, serial {serial[key]}"
+    check_same_refs(figures, serial, name)
+    data = report(work, name + ".json")
+    gain, serial_gain = data["average_gain"], serial_report["average_gain"]
+    mean, serial_mean = data["normalized_jacobian"]["avg"], serial_report["normalized_jacobian"]["avg"]
+    print(f"{name}: gain {gain:.4f} (serial {serial_gain:.4f}), mean normalized Jacobian {mean:.4f} (serial {serial_mean:.4f}), "
+          f"min {minimum:.4f}")
+    assert abs(gain - serial_gain) <= GAIN_TOLERANCE * serial_gain, f"{name}: average gain {gain} vs {serial_gain}"
+    assert abs(mean - serial_mean) <= JACOBIAN_TOLERANCE * serial_mean, f"{name}: mean normalized Jacobian {mean} vs {serial_mean}"
+    return data
+
+
+def main():
+    hocav = os.path.abspath(sys.argv[1])
+    mpirun = mpirun_or_none()
+    if mpirun is None:
+        return SKIP
+    with tempfile.TemporaryDirectory() as work:
+        run([hocav, "generate", "cubed-shell-bl-inner", "--target-tets", "6000", "-o", "shell.meshb"], work)
+        run([hocav, "generate", "cubed-shell", "--target-tets", "6000", "-o", "cubed.meshb"], work)
+        run([hocav, "generate", "polar-annulus-bl-inner", "--target-triangles", "3000", "-o", "annulus.meshb"], work)
+        for case in ("shell", "cubed", "annulus"):
+            run([hocav, "metric", case + ".meshb", "--implied", "-o", case + ".solb"], work)
+            curve = ["curve", case + ".meshb", "--metric", case + ".solb", "--threads", "1", "-q"]
+            serial_name = case + "1"
+            run([hocav] + curve + ["-o", serial_name + ".meshb", "--report", serial_name + ".json"], work)
+            serial = stats(hocav, serial_name + ".meshb", work)
+            serial_report = report(work, serial_name + ".json")
+            serial_cavities = serial_report["cavities"]["tried"]
+            serial_straight = straight_boundary_edges(hocav, work, serial_name)
+
+            run(mpirun + ["-np", "1", hocav] + curve + ["-o", "one.meshb"], work)
+            assert same_bytes(work, "one.meshb", serial_name + ".meshb"), f"{case}: curve, mpirun -np 1: not the serial output byte for byte"
+
+            for processes in (2, 3):
+                name = f"{case}{processes}"
+                args = mpirun + ["-np", str(processes), hocav] + curve[:-1] + ["-o", name + ".meshb", "--report", name + ".json"]
+                found = rounds(completed(args, work).stderr)
+                assert len(found) == 2, f"{name}: rounds {found}"
+                data = check_against_serial(hocav, work, name, serial, serial_report)
+                (first, _), (second, frozen_again) = found
+                straight = straight_boundary_edges(hocav, work, name)
+                print(f"{name}: cavities {first} + {second} (serial {serial_cavities}), {frozen_again} old interface vertices frozen "
+                      f"again, {straight} straight boundary edges (serial {serial_straight})")
+                assert second > 0, f"{name}: the second round curved nothing"
+                assert first + second == data["cavities"]["tried"]
+                assert serial_cavities - frozen_again <= first + second <= serial_cavities, \
+                    f"{name}: {first} + {second} cavities, serial {serial_cavities}, {frozen_again} frozen again"
+                assert straight <= serial_straight, f"{name}: {straight} straight boundary edges, serial {serial_straight}"
+
+        adapt = ["adapt", "shell.meshb", "--metric", "shell.solb", "--order", "2", "--threads", "1", "-q"]
+        run([hocav] + adapt + ["-o", "adapted.meshb"], work)
+        run(mpirun + ["-np", "1", hocav] + adapt + ["-o", "adapted1.meshb"], work)
+        assert same_bytes(work, "adapted1.meshb", "adapted.meshb"), "adapt --order 2, mpirun -np 1: not the serial output byte for byte"
+        run(mpirun + ["-np", "2", hocav] + adapt + ["-o", "adapted2.meshb"], work)
+        figures = stats(hocav, "adapted2.meshb", work)
+        check_valid(figures, "adapted2.meshb")
+        assert figures["order"] == "P2", figures["order"]
+        assert min_normalized_jacobian(figures) >= FLOOR, f"adapted2: min normalized Jacobian {figures['normalized Jacobian']}"
+        check_same_refs(figures, stats(hocav, "shell.meshb", work), "adapted2")
+    print("ok")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,56 @@
+"""What the distributed tests share (docs/distributed.md): running hocav and mpirun, `hocav stats`
+as a dict, the validity checks, the refs of a mesh."""
+import os
+import re
+import subprocess
+
+SKIP = 77
+
+
+def completed(args, cwd):
+    """A command that must succeed."""
+    result = subprocess.run(args, cwd=cwd, capture_output=True, text=True, check=False)
+    if result.returncode != 0:
+        raise AssertionError(f"{' '.join(args)} failed ({result.returncode}):\n{result.stderr}")
+    return result
+
+
+def run(args, cwd):
+    return completed(args, cwd).stdout
+
+
+def mpirun_or_none():
+    """The mpirun command line (oversubscribed, root allowed), or None when hocav has no MPI."""
+    if os.environ.get("HOCAV_WITH_MPI", "0") not in ("1", "ON", "TRUE"):
+        print("skipped: hocav was built without MPI (HOCAV_WITH_MPI off)")
+        return None
+    os.environ.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    return [os.environ.get("HOCAV_MPIEXEC") or "mpirun", "--oversubscribe"]
+
+
+def stats(hocav, mesh, cwd):
+    """`hocav stats` as a dict of its lines (name -> rest of the line)."""
+    lines = run([hocav, "stats", mesh], cwd).splitlines()
+    return {line[:22].strip(): line[22:].strip() for line in lines}
+
+
+def min_normalized_jacobian(figures):
+    return float(re.match(r"min (\S+)", figures["normalized Jacobian"]).group(1))
+
+
+def check_valid(figures, name):
+    assert figures["consistency"] == "ok", f"{name}: consistency {figures['consistency']}"
+    assert figures["non-positive P1"] == "0" or figures["order"] == "P2", f"{name}: {figures['non-positive P1']} non-positive elements"
+    minimum = min_normalized_jacobian(figures)
+    assert minimum > 0, f"{name}: normalized Jacobian down to {minimum}"
+
+
+def check_same_refs(figures, serial, name):
+    for key in ("element refs", "facet refs"):
+        assert re.findall(r"(\d+) \(", figures[key]) == re.findall(r"(\d+) \(", serial[key]), \
+            f"{name}: {key} {figures[key]} vs {serial[key]}"
+
+
+def same_bytes(work, a, b):
+    with open(os.path.join(work, a), "rb") as one, open(os.path.join(work, b), "rb") as other:
+        return one.read() == other.read()
