@@ -29,6 +29,17 @@ int process_count();  // 1 for one process
 // Point to point and from rank 0 to all, any size (sent in pieces MPI's int counts can hold).
 void send_bytes(int to, const std::vector<std::byte>& bytes);
 std::vector<std::byte> receive_bytes(int from);
+
+// The same, adding the message's size to `volume` (a distributed run's communication figures).
+inline void send_bytes(int to, const std::vector<std::byte>& bytes, long long& volume) {
+  volume += static_cast<long long>(bytes.size());
+  send_bytes(to, bytes);
+}
+inline std::vector<std::byte> receive_bytes(int from, long long& volume) {
+  std::vector<std::byte> bytes = receive_bytes(from);
+  volume += static_cast<long long>(bytes.size());
+  return bytes;
+}
 void broadcast_bytes(std::vector<std::byte>& bytes);
 
 // Ends every process with `exit_code` (an error on one process would leave the others waiting).

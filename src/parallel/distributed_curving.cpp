@@ -127,15 +127,8 @@ struct RootRound {
     old_interface = std::move(merged.interface_vertex);
   }
 
-  void send(int to, const std::vector<std::byte>& bytes) {
-    figures.bytes_sent += static_cast<long long>(bytes.size());
-    send_bytes(to, bytes);
-  }
-  std::vector<std::byte> receive(int from) {
-    std::vector<std::byte> bytes = receive_bytes(from);
-    figures.bytes_sent += static_cast<long long>(bytes.size());
-    return bytes;
-  }
+  void send(int to, const std::vector<std::byte>& bytes) { send_bytes(to, bytes, figures.bytes_sent); }
+  std::vector<std::byte> receive(int from) { return receive_bytes(from, figures.bytes_sent); }
 };
 
 }  // namespace
