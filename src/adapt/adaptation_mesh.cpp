@@ -21,8 +21,7 @@ AdaptationMesh<D>::AdaptationMesh(Mesh<D>& mesh, const AdaptationMetric<D>& metr
   for (Index v = 0; v < mesh_.vertex_count(); ++v) {
     mesh_.vertex_attribute(class_attribute_, v)[0] = static_cast<double>(classes[v]);
     mesh_.vertex_attribute(hint_attribute_, v)[0] = kNoIndex;
-    set_surface_hint(v, kNoIndex);
-    mesh_.vertex_attribute(smoothing_refused_attribute_, v)[0] = -1;
+    forget_history(v);
     set_point_metric(v, metric_at_point(mesh_.vertex(v), v));
   }
   quality_attribute_ = mesh_.add_element_attribute(0);
@@ -44,6 +43,12 @@ void AdaptationMesh<D>::update_qualities(std::span<const Index> elements) {
     mesh_.set_element_attribute(quality_attribute_, k, quality(mesh_.element(k)));
     mesh_.set_element_attribute(element_stamp_attribute_, k, clock_);
   }
+}
+
+template <int D>
+void AdaptationMesh<D>::forget_history(Index v) {
+  set_surface_hint(v, kNoIndex);
+  mesh_.vertex_attribute(smoothing_refused_attribute_, v)[0] = -1;  // never refused
 }
 
 template <int D>
@@ -69,8 +74,7 @@ template <int D>
 Index AdaptationMesh<D>::add_vertex(const Vec<D>& x, VertexClass vertex_class, const PointMetric& metric) {
   const Index v = mesh_.add_vertex(x);
   mesh_.vertex_attribute(class_attribute_, v)[0] = static_cast<double>(vertex_class);
-  set_surface_hint(v, kNoIndex);
-  mesh_.vertex_attribute(smoothing_refused_attribute_, v)[0] = -1;
+  forget_history(v);
   set_point_metric(v, metric);
   return v;
 }

@@ -122,6 +122,8 @@ class AdaptationMesh {
   double quality(Index k) const { return mesh_.element_attribute(quality_attribute_, k); }
 
  private:
+  // A vertex new to the run: no projection made near it, no move refused.
+  void forget_history(Index v);
   void set_metric(Index v, const SymMat<D>& metric);
   void set_point_metric(Index v, const PointMetric& metric);
   // Renews the qualities of these elements and stamps them changed.

@@ -110,8 +110,8 @@ bool facet_exists_already(const Mesh<D>& mesh, const CavityOperator<D>& plan, In
     return vertices;
   };
   return std::any_of(plan.new_facets().begin(), plan.new_facets().end(), [&](const auto& created) {
-    return std::any_of(s.kept_facets.begin(), s.kept_facets.end(),
-                       [&](Index f) { return sorted(mesh.facet(f)) == sorted(created.vertices); });
+    const auto created_vertices = sorted(created.vertices);
+    return std::any_of(s.kept_facets.begin(), s.kept_facets.end(), [&](Index f) { return sorted(mesh.facet(f)) == created_vertices; });
   });
 }
 
