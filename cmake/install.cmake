@@ -20,6 +20,9 @@ target_include_directories(hocav_lib PUBLIC $<INSTALL_INTERFACE:${CMAKE_INSTALL_
                                             $<INSTALL_INTERFACE:${HOCAV_INCLUDE_DIR}>)
 install(TARGETS hocav_lib EXPORT hocavTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS hocav RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+if(HOCAV_WITH_GMSH)
+  install(TARGETS hocav_gmsh_module LIBRARY DESTINATION ${HOCAV_GMSH_MODULE_DIR})
+endif()
 
 set(HOCAV_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/hocav)
 install(EXPORT hocavTargets NAMESPACE hocav:: DESTINATION ${HOCAV_CMAKE_DIR})

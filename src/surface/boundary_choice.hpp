@@ -33,8 +33,8 @@ template <int D>
 std::unique_ptr<BoundaryGeometry<D>> make_boundary_geometry(const BoundaryChoice& choice, const Mesh<D>& mesh,
                                                             CadBoundaryMaker<D> make_cad);
 
-// The CAD reader of hocav_gmsh (CadBoundary, through gmsh), and make_boundary_geometry with it;
-// both defined with the code that calls gmsh (boundary_choice_gmsh.cpp).
+// The CAD reader of hocav_gmsh (CadBoundary, through gmsh; cad_boundary_maker_gmsh.cpp, or the
+// command's gmsh module, src/plugin/gmsh_services.hpp), and make_boundary_geometry with it.
 template <int D>
 std::unique_ptr<BoundaryGeometry<D>> make_cad_boundary(const std::string& cad_path, const Mesh<D>& mesh);
 template <int D>

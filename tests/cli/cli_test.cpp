@@ -46,6 +46,23 @@ TEST_F(Cli, GeneratesEveryCaseAsAConsistentMesh) {
   EXPECT_NEAR(volume, 4.0 / 3.0 * std::numbers::pi * (1 - 0.4 * 0.4 * 0.4), 0.25);
 }
 
+// The command links no gmsh (it would cost every process 0.12 s at start): it opens its gmsh module
+// on demand, and a command without the module beside it fails on a gmsh case only, in one line.
+TEST_F(Cli, OpensGmshOnlyForTheCasesThatNeedIt) {
+  HOCAV_SKIP_WITHOUT_GMSH();
+  ASSERT_EQ(std::system(("ldd '" HOCAV_BINARY "' > '" + path("ldd.txt").string() + "'").c_str()), 0);
+  EXPECT_EQ(read("ldd.txt").find("libgmsh"), std::string::npos) << read("ldd.txt");
+  fs::copy_file(HOCAV_BINARY, path("lone-hocav"));
+  const std::string lone = "cd '" + path("").string() + "' && ./lone-hocav ";
+  EXPECT_EQ(std::system((lone + "generate cube --h 0.5 -o cube.meshb > /dev/null").c_str()), 0);
+  EXPECT_NE(std::system((lone + "generate annulus --h 0.2 -o annulus.meshb 2> err.txt").c_str()), 0);
+  const std::string err = read("err.txt");
+  EXPECT_EQ(count_lines(err), 1) << err;
+  EXPECT_NE(err.find("hocav-gmsh.so"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(path("annulus.meshb")));
+  run_ok("generate annulus --h 0.2 -o annulus.meshb");
+}
+
 TEST_F(Cli, GenerateTakesOptionsBeforeOrAfterTheCaseAndIsDeterministic) {
   HOCAV_SKIP_WITHOUT_GMSH();
   run_ok("generate -o a.mesh annulus --r-in 0.3 --h 0.15");

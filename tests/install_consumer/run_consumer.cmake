@@ -3,6 +3,7 @@
 # the installed `hocav` generates, its output checked by the installed `hocav stats`; then the
 # same program compiled with the flags of the installed hocav.pc, and run; and the installed Python
 # module imported.
+# WITH_GMSH (true or false): whether the build has gmsh, whose module the installed command then opens.
 #   cmake -DBUILD_DIR=... -DCONSUMER_DIR=... -DWORK_DIR=... -DCXX=... -P run_consumer.cmake
 foreach(variable BUILD_DIR CONSUMER_DIR WORK_DIR CXX)
   if(NOT DEFINED ${variable})
@@ -30,6 +31,10 @@ set(hocav ${prefix}/bin/hocav)
 step("generate" ${hocav} generate polar-annulus --target-triangles 1000 -o ${WORK_DIR}/annulus.meshb)
 step("run the consumer" ${WORK_DIR}/build/hocav_consumer ${WORK_DIR}/annulus.meshb ${WORK_DIR}/adapted.meshb)
 step("check its output" ${hocav} stats ${WORK_DIR}/adapted.meshb)
+# Given WITH_GMSH true: the installed command finds its gmsh module (lib/hocav) for a gmsh-meshed case.
+if(WITH_GMSH)
+  step("generate with gmsh" ${hocav} generate annulus --h 0.2 -o ${WORK_DIR}/gmsh-annulus.meshb)
+endif()
 
 file(GLOB_RECURSE pc_files ${prefix}/*/hocav.pc)
 get_filename_component(pc_dir "${pc_files}" DIRECTORY)
