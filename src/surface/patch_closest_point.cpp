@@ -13,6 +13,8 @@ namespace {
 constexpr int kMaxIterations = 40;
 constexpr int kNewtonHalvings = 8, kGradientHalvings = 30;
 constexpr double kParameterTolerance = 1e-14;
+// Newton converges quadratically: after a step this small the parameters are exact to rounding.
+constexpr double kConvergedNewtonStep = 1e-8;
 
 template <int K>
 using Matrix = std::array<std::array<double, K>, K>;
@@ -42,6 +44,13 @@ std::array<double, K> clamp_to_domain(const std::array<double, K>& p) {
     const double u = std::clamp(0.5 * (p[0] - p[1] + 1), 0.0, 1.0);
     return {u, 1 - u};
   }
+}
+
+template <int K>
+double largest_magnitude(const std::array<double, K>& values) {
+  double largest = 0;
+  for (double value : values) largest = std::max(largest, std::abs(value));
+  return largest;
 }
 
 // Solves the symmetric positive-definite K×K system A s = b; false when A is not positive definite.
@@ -92,6 +101,16 @@ PatchClosestPoint<D> closest_point_on_patch(const CubicPatch<D>& patch, const Ve
     return false;
   };
 
+  // A Newton step this small is taken without the descent test: the distance's decrease, of the
+  // order of the step squared, is below its rounding, so the test would spend its halvings in vain.
+  auto take_final_step = [&](const Parameters& step) {
+    Parameters trial = p;
+    for (int i = 0; i < K; ++i) trial[i] += step[i];
+    p = clamp_to_domain<K>(trial);
+    jet = evaluate_jet(patch, p);
+    f = dot(jet.point - x, jet.point - x);
+  };
+
   for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
     // f/2 = |S − x|²/2: gradient g_a = r·S_a, Hessian H_ab = S_a·S_b + r·S_ab (Gauss–Newton part G).
     const Vec<D> r = jet.point - x;
@@ -135,6 +154,10 @@ PatchClosestPoint<D> closest_point_on_patch(const CubicPatch<D>& patch, const Ve
       const double bend = curvature(hessian) > 0 ? curvature(hessian) : curvature(gauss_newton);
       has_newton = bend > 0;
       if (has_newton) newton = {slope / bend * along[0], slope / bend * along[1]};
+    }
+    if (has_newton && largest_magnitude<K>(newton) < kConvergedNewtonStep) {
+      take_final_step(newton);
+      break;
     }
     // The gradient step is the fallback that always descends unless p is stationary on the domain.
     Parameters steepest = descent;

@@ -149,6 +149,32 @@ void expect_closest_point_matches_sampling() {
 TEST(SurfaceCubicPatch, CurveClosestPointMatchesSampling) { expect_closest_point_matches_sampling<2>(); }
 TEST(SurfaceCubicPatch, TriangleClosestPointMatchesSampling) { expect_closest_point_matches_sampling<3>(); }
 
+// Inside the patch the closest point is stationary to rounding: the residual is orthogonal to the
+// tangents (Newton's last step, taken without a descent test, is small enough to be exact).
+template <int D>
+void expect_inner_closest_points_stationary() {
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> coordinate(-0.2, 1.2);
+  int inner = 0;
+  for (unsigned seed = 1; seed <= 200; ++seed) {
+    const CubicPatch<D> patch = bent_patch<D>(0.15, seed);
+    Vec<D> x;
+    for (int i = 0; i < D; ++i) x[i] = coordinate(random);
+    const PatchClosestPoint<D> found = closest_point_on_patch(patch, x);
+    const auto lambda = found.barycentrics();
+    if (*std::min_element(lambda.begin(), lambda.end()) < 1e-6) continue;
+    ++inner;
+    const PatchJet<D> jet = evaluate_jet(patch, found.parameters);
+    const Vec<D> residual = jet.point - x;
+    for (const Vec<D>& tangent : jet.first)
+      EXPECT_LE(std::abs(dot(residual, tangent)), 1e-13 * norm(tangent) * std::max(norm(residual), 1.0)) << "seed " << seed;
+  }
+  EXPECT_GT(inner, 20);
+}
+
+TEST(SurfaceCubicPatch, CurveClosestPointIsStationary) { expect_inner_closest_points_stationary<2>(); }
+TEST(SurfaceCubicPatch, TriangleClosestPointIsStationary) { expect_inner_closest_points_stationary<3>(); }
+
 TEST(SurfaceCubicPatch, ClosestPointIsClampedToTheTriangle) {
   const CubicPatch<3> patch = bent_patch<3>(0.0, 1);  // the flat triangle (0,0,0) (1,0.1,0) (0,1,0)
   const PatchClosestPoint<3> beyond_edge = closest_point_on_patch(patch, Vec3{{0.8, 0.8, 0.3}});
