@@ -78,8 +78,9 @@ int main(int argc, char** argv) {
     const hocav::WallError e = hocav::measure(*mesh, *input_mesh, ref, radius);
     const double edges = static_cast<double>(std::max<hocav::Index>(1, e.edges));
     const double vertices = static_cast<double>(std::max<hocav::Index>(1, e.vertices));
-    std::printf("| edges | node error max / mean | surrogate error max / mean | ratio max / mean | nodes over 2x surrogate "
-                "| vertex error max / mean |\n");
+    std::printf(
+        "| edges | node error max / mean | surrogate error max / mean | ratio max / mean | nodes over 2x surrogate "
+        "| vertex error max / mean |\n");
     std::printf("|---|---|---|---|---|---|\n");
     std::printf("| %d | %.3e / %.3e | %.3e / %.3e | %.2f / %.2f | %d | %.3e / %.3e |\n", e.edges, e.node_max, e.node_sum / edges,
                 e.surrogate_max, e.surrogate_sum / edges, e.node_max / e.surrogate_max, e.node_sum / e.surrogate_sum, e.over_twice,
