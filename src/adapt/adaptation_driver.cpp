@@ -1,7 +1,5 @@
 #include "adapt/adaptation_driver.hpp"
 
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -19,12 +17,6 @@ namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-long long peak_memory_bytes() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<long long>(usage.ru_maxrss) * 1024;
 }
 
 // On the pool's threads, in chunks that each start their back-mesh walk afresh: the same metrics for
@@ -61,7 +53,7 @@ AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric,
   Mesh<D> copy = mesh;  // the statistics build an edge table
   report.measures = compute_metric_statistics(copy, rows_of_metrics(metrics).values, settings.threads);
   out.field = std::make_unique<MetricField<D>>(mesh, metrics);
-  report.peak_memory_bytes = peak_memory_bytes();
+  report.peak_memory_bytes = peak_resident_bytes();
   return out;
 }
 
@@ -72,7 +64,7 @@ void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGe
   adapted.report.curving = curve ? curve(mesh, *adapted.field, geometry, options)
                                  : curve_in_metric(mesh, *adapted.field, geometry, options);
   adapted.report.seconds_curve = seconds_since(start);
-  adapted.report.peak_memory_bytes = peak_memory_bytes();
+  adapted.report.peak_memory_bytes = peak_resident_bytes();
 }
 
 template <int D>
@@ -83,7 +75,7 @@ void adapt_curved_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const CurvingOpti
   report.output_vertices = mesh.vertex_count();
   report.output_elements = mesh.element_count();
   measure_curved_output(*report.curving, mesh, *adapted.field);
-  report.peak_memory_bytes = peak_memory_bytes();
+  report.peak_memory_bytes = peak_resident_bytes();
 }
 
 namespace {

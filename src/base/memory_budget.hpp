@@ -16,6 +16,9 @@ inline constexpr double kCurvingBytesPerElement = 600;  // P1 back mesh, P2 mesh
 // sphere shell, its passes overshooting to 490k) then the curving of the output.
 inline constexpr double kAdaptationBytesPerElement = 620 + kCurvingBytesPerElement;
 
+// The process's peak resident memory so far (getrusage), in bytes.
+long long peak_resident_bytes();
+
 // The machine's physical memory (sysconf), in bytes.
 double physical_memory_bytes();
 

@@ -82,23 +82,37 @@ AdaptationJob<D> adaptation_job(const AdaptOptions& o) {
   return job;
 }
 
+// "lo-hi" of a rank's figures, each scaled by `unit`.
+template <typename T>
+std::string rank_range(const std::vector<T>& values, double unit) {
+  if (values.empty()) return "-";
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  std::ostringstream text;
+  text << std::setprecision(3) << static_cast<double>(*lo) / unit << "-" << static_cast<double>(*hi) / unit;
+  return text.str();
+}
+
 void print_iteration(const DistributedIteration& figures) {
   std::cerr << "distributed: iteration " << figures.iteration << " of " << kDistributedIterations << ": " << process_count() << " parts, "
             << figures.interface_faces << " interface faces, " << figures.interface_vertices << " of " << figures.vertices
             << " vertices on the interfaces, " << figures.bytes_sent << " bytes sent, " << figures.seconds << " s (partition "
-            << figures.seconds_partition << " s)\n";
+            << figures.seconds_partition << " s; parts " << rank_range(figures.part_seconds, 1) << " s, peak memory "
+            << rank_range(figures.peak_memory_bytes, 1 << 20) << " MiB per rank)\n";
 }
 
 // With several processes (docs/distributed.md): the input and its metric to every process, and the
-// distributed loop in place of the serial one.
+// distributed loop in place of the serial one; its iterations' figures go to `iterations`.
 template <int D>
-void distribute(Mesh<D>& mesh, std::vector<SymMat<D>>& metrics, AdaptationJob<D>& job, const AdaptOptions& o) {
+void distribute(Mesh<D>& mesh, std::vector<SymMat<D>>& metrics, AdaptationJob<D>& job, const AdaptOptions& o,
+                std::vector<DistributedIteration>& iterations) {
   mesh.forget_edges();
   std::vector<std::byte> input = pack_part(mesh, {});
   broadcast_bytes(input);
   broadcast_values(metrics);
-  std::function<void(const DistributedIteration&)> on_iteration;
-  if (!o.quiet) on_iteration = print_iteration;
+  std::function<void(const DistributedIteration&)> on_iteration = [&iterations, quiet = o.quiet](const DistributedIteration& figures) {
+    if (!quiet) print_iteration(figures);
+    iterations.push_back(figures);
+  };
   job.loop = [on_iteration](Mesh<D>& adapted, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                             const AdaptationSettings& settings) {
     return adapt_distributed(adapted, metric, geometry, settings, on_iteration);
@@ -148,14 +162,16 @@ void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, Ou
   std::vector<SymMat<D>> metrics;
   if (o.analytic.empty()) metrics = metrics_of_rows<D>(read_metric_for_mesh(o.metric, file, false));
   AdaptationJob<D> job = adaptation_job<D>(o);
-  if (process_count() > 1) distribute(mesh, metrics, job, o);
+  std::vector<DistributedIteration> iterations;
+  if (process_count() > 1) distribute(mesh, metrics, job, o, iterations);
   std::optional<CurvingProgress> progress;  // drawn on a terminal, unless quiet
   job.before_curving = [&progress, &o](const Mesh<D>& adapted, CurvingOptions& curving) {
     progress.emplace(adapted, curving.passes, !o.quiet);
     progress->attach(curving);
   };
-  const AdaptedMesh<D> adapted = run_adaptation_job(mesh, std::move(metrics), job, o.input);
+  AdaptedMesh<D> adapted = run_adaptation_job(mesh, std::move(metrics), job, o.input);
   if (progress) progress->complete();
+  adapted.report.distributed_iterations = std::move(iterations);
   const AdaptationReport& report = adapted.report;
   warn_if_not_converged(o, report);
 

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <utility>
 
 #include "adapt/vertex_classes.hpp"
 #include "base/error.hpp"
+#include "base/memory_budget.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/element_partition.hpp"
 #include "parallel/part_message.hpp"
@@ -74,6 +76,34 @@ AdaptationRun unpack_run(const std::vector<std::byte>& bytes) {
   return run;
 }
 
+// A part's wall time and its process's peak memory, for the iteration's figures.
+struct PartFigures {
+  double seconds = 0;
+  long long peak_memory_bytes = 0;
+};
+
+std::vector<std::byte> pack_part_figures(const PartFigures& figures) {
+  std::vector<std::byte> bytes(sizeof figures);
+  std::memcpy(bytes.data(), &figures, sizeof figures);
+  return bytes;
+}
+
+PartFigures unpack_part_figures(const std::vector<std::byte>& bytes) {
+  PartFigures figures;
+  if (bytes.size() != sizeof figures) throw Error("a distributed adaptation message has the wrong size");
+  std::memcpy(&figures, bytes.data(), sizeof figures);
+  return figures;
+}
+
+// Adapts `part` (adapt_part) and says how long it took and the process's peak memory after it.
+template <int D>
+std::pair<AdaptationRun, PartFigures> adapt_part_measured(MeshPart<D>& part, const AdaptationMetric<D>& metric,
+                                                          const BoundaryGeometry<D>* geometry, const AdaptationSettings& settings) {
+  const auto start = std::chrono::steady_clock::now();
+  AdaptationRun run = adapt_part(part, metric, geometry, settings);
+  return {std::move(run), PartFigures{seconds_since(start), peak_resident_bytes()}};
+}
+
 // The parts' runs as one: pass i sums the parts' passes i (their times: the slowest part's).
 AdaptationRun combined(const std::vector<AdaptationRun>& runs) {
   AdaptationRun out;
@@ -135,10 +165,13 @@ struct RootIteration {
       send(p, pack_part(parts[p].mesh, std::span<const Index>(parts[p].global_ids)));
       send(p, pack_iteration_settings(settings));
     }
-    std::vector<AdaptationRun> runs{adapt_part(parts[0], metric, geometry, settings)};
+    auto [run0, figures0] = adapt_part_measured(parts[0], metric, geometry, settings);
+    std::vector<AdaptationRun> runs{std::move(run0)};
+    note(figures0);
     for (int p = 1; p < count; ++p) {
       parts[p] = unpack_part<D>(receive(p));
       runs.push_back(unpack_run(receive(p)));
+      note(unpack_part_figures(receive(p)));
     }
     MergedMesh<D> merged = merge_parts(mesh, parts);
     mesh = std::move(merged.mesh);
@@ -151,6 +184,10 @@ struct RootIteration {
     return combined(runs);
   }
 
+  void note(const PartFigures& part) {
+    figures.part_seconds.push_back(part.seconds);
+    figures.peak_memory_bytes.push_back(part.peak_memory_bytes);
+  }
   void send(int to, const std::vector<std::byte>& bytes) { send_bytes(to, bytes, figures.bytes_sent); }
   std::vector<std::byte> receive(int from) { return receive_bytes(from, figures.bytes_sent); }
 };
@@ -200,9 +237,10 @@ void serve_distributed_adaptation(const AdaptationMetric<D>& metric, const Bound
     MeshPart<D> part = unpack_part<D>(bytes);
     AdaptationSettings iteration = settings;
     unpack_iteration_settings(receive_bytes(0), iteration);
-    const AdaptationRun run = adapt_part(part, metric, geometry, iteration);
+    const auto [run, figures] = adapt_part_measured(part, metric, geometry, iteration);
     send_bytes(0, pack_part(part.mesh, std::span<const Index>(part.global_ids)));
     send_bytes(0, pack_run(run));
+    send_bytes(0, pack_part_figures(figures));
   }
 }
 

@@ -7,6 +7,7 @@
 #include <functional>
 
 #include "adapt/adaptation_loop.hpp"
+#include "parallel/distributed_iteration.hpp"
 
 namespace hocav {
 
@@ -14,15 +15,6 @@ namespace hocav {
 // coarse as the input, and a fourth brought the 4-process test case within 1% of the serial run
 // (docs/distributed.md).
 constexpr int kDistributedIterations = 4;
-
-struct DistributedIteration {
-  int iteration = 0;                          // 1-based
-  Index vertices = 0, elements = 0;           // of the merged mesh
-  Index interface_vertices = 0;               // shared by parts in the iteration
-  Index interface_faces = 0;                  // between parts, each counted once
-  long long bytes_sent = 0;                   // parts out and back, without the input's broadcast
-  double seconds = 0, seconds_partition = 0;  // the iteration, and its partitioning and split on rank 0
-};
 
 // On rank 0: adapts `mesh` (P1, with topology) with every process (the others in
 // serve_distributed_adaptation), the same interface as adapt_to_metric. The mesh is compact and has

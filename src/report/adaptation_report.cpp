@@ -66,6 +66,30 @@ std::string non_convergence_summary(const AdaptationReport& report) {
   return text.str();
 }
 
+namespace {
+
+template <typename T>
+void write_per_rank(JsonWriter& json, std::string_view name, const std::vector<T>& values) {
+  json.key(name).begin_array();
+  for (const T& value : values) json.value(value);
+  json.end_array();
+}
+
+void write_distributed_iterations(JsonWriter& json, const std::vector<DistributedIteration>& iterations) {
+  json.key("distributed_iterations").begin_array();
+  for (const DistributedIteration& it : iterations) {
+    json.begin_object().member("iteration", it.iteration).member("vertices", it.vertices).member("elements", it.elements);
+    json.member("interface_vertices", it.interface_vertices).member("interface_faces", it.interface_faces);
+    json.member("bytes_sent", it.bytes_sent).member("seconds", it.seconds).member("seconds_partition", it.seconds_partition);
+    write_per_rank(json, "part_seconds", it.part_seconds);
+    write_per_rank(json, "peak_memory_bytes", it.peak_memory_bytes);
+    json.end_object();
+  }
+  json.end_array();
+}
+
+}  // namespace
+
 void write_adaptation_report_json(std::ostream& out, const AdaptationReport& report) {
   JsonWriter json(out);
   json.begin_object();
@@ -104,6 +128,7 @@ void write_adaptation_report_json(std::ostream& out, const AdaptationReport& rep
   }
   if (report.curved_passes) write_curved_passes(json, *report.curved_passes);
   if (report.curved_measures) write_curved_measures(json, *report.curved_measures);
+  if (!report.distributed_iterations.empty()) write_distributed_iterations(json, report.distributed_iterations);
   json.end_object();
   out << '\n';
 }

@@ -9,6 +9,7 @@
 
 #include "adapt/adaptation_loop.hpp"
 #include "adapt/curved_adaptation.hpp"
+#include "parallel/distributed_iteration.hpp"
 #include "report/curving_report.hpp"
 #include "report/mesh_statistics.hpp"
 
@@ -28,6 +29,8 @@ struct AdaptationReport {
   std::optional<CurvedAdaptationRun> curved_passes;  // `adapt --curved` (docs/adaptation.md §Curved passes)
   // With curving: the output's curved edge lengths and curved quality in the metric.
   std::optional<CurvedMeasures> curved_measures;
+  // Under mpirun (docs/distributed.md): each iteration of the distributed loop.
+  std::vector<DistributedIteration> distributed_iterations;
 };
 
 void write_adaptation_report_json(std::ostream& out, const AdaptationReport& report);

@@ -5,7 +5,8 @@ With one process the output must be the serial one byte for byte. With 2, 3 and 
 (oversubscribed): the output is consistent and valid (`hocav stats`), keeps the input's element and
 facet refs, its corners and feature lines, and its unit share of edges and mean quality lie within
 1% of the serial run's, and its minimum quality is at least half the serial one (the parts' frozen
-interfaces left elements of quality 0.001 before the last pass near them). With --order 2 (curved on the parts, docs/distributed.md §Curving) the output is valid too.
+interfaces left elements of quality 0.001 before the last pass near them); its report has every
+iteration with each rank's time and peak memory. With --order 2 (curved on the parts, docs/distributed.md §Curving) the output is valid too.
 
 Usage: /usr/bin/python3 distributed_adapt_test.py <path-to-hocav>
 Exits 77 (skipped) when hocav was built without MPI.
@@ -48,6 +49,23 @@ def report(path):
     return data["edge_length"]["unit_share"], data["quality"]["mean"], data["quality"]["min"]
 
 
+def check_iterations(path, processes):
+    """The report's distributed iterations: one per iteration, each with every rank's time and peak memory."""
+    with open(path) as file:
+        data = json.load(file)
+    iterations, output_elements = data["distributed_iterations"], data["output_elements"]
+    assert [it["iteration"] for it in iterations] == list(range(1, len(iterations) + 1)), iterations
+    for it in iterations:
+        assert len(it["part_seconds"]) == processes, it
+        assert len(it["peak_memory_bytes"]) == processes, it
+        assert all(seconds > 0 for seconds in it["part_seconds"]), it
+        assert all(memory > 1 << 20 for memory in it["peak_memory_bytes"]), it
+        assert 0 < it["interface_vertices"] < it["vertices"], it
+        assert it["bytes_sent"] > 0, it
+    last = iterations[-1]["elements"]
+    assert abs(last - output_elements) <= 0.2 * output_elements, f"last iteration {last} elements, output {output_elements}"
+
+
 def main():
     hocav = os.path.abspath(sys.argv[1])
     mpirun = mpirun_or_none()
@@ -77,6 +95,7 @@ def main():
             assert abs(ridges - serial_ridges) <= 1e-9 * serial_ridges, f"{name}: ridge lines {ridges} long, serial {serial_ridges}"
             check_same_refs(figures, serial, name)
             unit, quality, minimum = report(os.path.join(work, f"{processes}.json"))
+            check_iterations(os.path.join(work, f"{processes}.json"), processes)
             print(f"{processes} processes: unit {unit:.4f} (serial {serial_unit:.4f}), mean quality {quality:.4f} "
                   f"(serial {serial_quality:.4f}), min quality {minimum:.4f} (serial {serial_min:.4f})")
             assert abs(unit - serial_unit) <= TOLERANCE * serial_unit, f"{name}: unit share {unit} vs {serial_unit}"

@@ -1,0 +1,23 @@
+// The figures of one iteration of the distributed adaptation loop (docs/distributed.md): printed as
+// it ends and kept in the report (`hocav adapt --report`).
+#pragma once
+
+#include <vector>
+
+#include "base/index.hpp"
+
+namespace hocav {
+
+struct DistributedIteration {
+  int iteration = 0;                          // 1-based
+  Index vertices = 0, elements = 0;           // of the merged mesh
+  Index interface_vertices = 0;               // shared by parts in the iteration
+  Index interface_faces = 0;                  // between parts, each counted once
+  long long bytes_sent = 0;                   // parts out and back, without the input's broadcast
+  double seconds = 0, seconds_partition = 0;  // the iteration, and its partitioning and split on rank 0
+  // Per rank: the wall time of its part's adaptation, and its peak resident memory so far.
+  std::vector<double> part_seconds;
+  std::vector<long long> peak_memory_bytes;
+};
+
+}  // namespace hocav
