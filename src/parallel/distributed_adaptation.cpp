@@ -82,19 +82,6 @@ struct PartFigures {
   long long peak_memory_bytes = 0;
 };
 
-std::vector<std::byte> pack_part_figures(const PartFigures& figures) {
-  std::vector<std::byte> bytes(sizeof figures);
-  std::memcpy(bytes.data(), &figures, sizeof figures);
-  return bytes;
-}
-
-PartFigures unpack_part_figures(const std::vector<std::byte>& bytes) {
-  PartFigures figures;
-  if (bytes.size() != sizeof figures) throw Error("a distributed adaptation message has the wrong size");
-  std::memcpy(&figures, bytes.data(), sizeof figures);
-  return figures;
-}
-
 // Adapts `part` (adapt_part) and says how long it took and the process's peak memory after it.
 template <int D>
 std::pair<AdaptationRun, PartFigures> adapt_part_measured(MeshPart<D>& part, const AdaptationMetric<D>& metric,
@@ -171,7 +158,9 @@ struct RootIteration {
     for (int p = 1; p < count; ++p) {
       parts[p] = unpack_part<D>(receive(p));
       runs.push_back(unpack_run(receive(p)));
-      note(unpack_part_figures(receive(p)));
+      const std::vector<PartFigures> figures_of_part = values_of_bytes<PartFigures>(receive(p));
+      if (figures_of_part.size() != 1) throw Error("a distributed adaptation message has the wrong size");
+      note(figures_of_part[0]);
     }
     MergedMesh<D> merged = merge_parts(mesh, parts);
     mesh = std::move(merged.mesh);
@@ -240,7 +229,7 @@ void serve_distributed_adaptation(const AdaptationMetric<D>& metric, const Bound
     const auto [run, figures] = adapt_part_measured(part, metric, geometry, iteration);
     send_bytes(0, pack_part(part.mesh, std::span<const Index>(part.global_ids)));
     send_bytes(0, pack_run(run));
-    send_bytes(0, pack_part_figures(figures));
+    send_values(0, std::vector<PartFigures>{figures});
   }
 }
 
