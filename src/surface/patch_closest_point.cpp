@@ -78,14 +78,19 @@ PatchClosestPoint<D> closest_point_on_patch(const CubicPatch<D>& patch, const Ve
   PatchJet<D> jet = evaluate_jet(patch, p);
   double f = dot(jet.point - x, jet.point - x);
 
+  // p + scale × direction, clamped to the domain.
+  auto stepped = [&](const Parameters& direction, double scale) {
+    Parameters trial = p;
+    for (int i = 0; i < K; ++i) trial[i] += scale * direction[i];
+    return clamp_to_domain<K>(trial);
+  };
+
   // Moves p along `direction` (clamped to the domain), halving until the distance decreases.
   double moved = 0;
   auto descend = [&](const Parameters& direction, int halvings) {
     double scale = 1;
     for (int halving = 0; halving < halvings; ++halving, scale *= 0.5) {
-      Parameters trial = p;
-      for (int i = 0; i < K; ++i) trial[i] += scale * direction[i];
-      trial = clamp_to_domain<K>(trial);
+      const Parameters trial = stepped(direction, scale);
       moved = 0;
       for (int i = 0; i < K; ++i) moved = std::max(moved, std::abs(trial[i] - p[i]));
       if (moved == 0) return false;
@@ -104,9 +109,7 @@ PatchClosestPoint<D> closest_point_on_patch(const CubicPatch<D>& patch, const Ve
   // A Newton step this small is taken without the descent test: the distance's decrease, of the
   // order of the step squared, is below its rounding, so the test would spend its halvings in vain.
   auto take_final_step = [&](const Parameters& step) {
-    Parameters trial = p;
-    for (int i = 0; i < K; ++i) trial[i] += step[i];
-    p = clamp_to_domain<K>(trial);
+    p = stepped(step, 1);
     jet = evaluate_jet(patch, p);
     f = dot(jet.point - x, jet.point - x);
   };
