@@ -6,6 +6,7 @@
 
 #include "adapt/adaptation_operations.hpp"
 #include "adapt/boundary_pieces.hpp"
+#include "base/small_set.hpp"
 #include "mesh/ball_and_shell.hpp"
 
 namespace hocav {
@@ -23,7 +24,7 @@ constexpr double kCutGain = 1.05;
 
 template <int D>
 struct alignas(64) SplitScratch {  // a cache line of its own: each thread writes its own
-  std::vector<Index> candidate_lines;
+  std::vector<Index> candidate_lines, line_shell;
   CollapseScratch<D> collapse;
 };
 
@@ -45,7 +46,9 @@ struct EdgeSurfaces {
 template <int D>
 struct SplitPreview {
   bool made = false;  // false when (a, b) was no edge
-  bool kept = false;  // both ends are corners and a required facet or line holds the edge: never split
+  // Never split: both ends are corners and a required facet or line holds the edge, or a line lies
+  // on it with no facet (its new vertex would have no surface to go on).
+  bool kept = false;
   std::vector<Index> shell, facets, lines, cavity;
   EdgeSurfaces surfaces;
   Vec<D> point;
@@ -80,14 +83,15 @@ void snap_to_nearest(AdaptationMesh<D>& am, Index v, const AdaptationLimits& lim
 }
 
 // The boundary pieces through edge (a, b) (from its shell): its facets and, in 3D, the feature line
-// on it; and the surfaces they name.
+// on it (looked for off the facets too: an input's Edges may lie inside the volume); and the
+// surfaces they name.
 template <int D>
 EdgeSurfaces boundary_through_edge(const AdaptationMesh<D>& am, Index a, Index b, SplitPreview<D>& p, SplitScratch<D>& s) {
   const Index ends[2] = {a, b};
   facets_through(am.mesh(), p.shell, ends, p.facets);
   p.lines.clear();
   if constexpr (D == 3)
-    if (!p.facets.empty() && am.vertex_class(a) >= VertexClass::kRidge && am.vertex_class(b) >= VertexClass::kRidge) {
+    if (am.vertex_class(a) >= VertexClass::kRidge && am.vertex_class(b) >= VertexClass::kRidge) {
       lines_through(am.mesh(), a, s.candidate_lines);
       for (Index l : s.candidate_lines)
         if (am.mesh().line(l)[0] == b || am.mesh().line(l)[1] == b) p.lines.push_back(l);
@@ -126,6 +130,29 @@ bool same_boundary(const AdaptationMesh<D>& am, Index a, Index b, const SplitPre
   return boundary_through_edge(am, a, b, fresh, s) == p.surfaces && fresh.facets == p.facets && fresh.lines == p.lines;
 }
 
+// Whether the Delaunay cavity's elements past the shell go all around a feature line's edge, which
+// the star would then remove. A line on facets never is (the growth stops at facets); one with no
+// facet along it (an input's Edges inside the volume) may be.
+template <int D>
+bool buries_a_line(const AdaptationMesh<D>& am, const SplitPreview<D>& p, SplitScratch<D>& s) {
+  if constexpr (D == 3) {
+    const Mesh<D>& mesh = am.mesh();
+    for (std::size_t i = p.shell.size(); i < p.cavity.size(); ++i)
+      for (int e = 0; e < Simplex<D>::kEdges; ++e) {
+        const Index x = mesh.element(p.cavity[i])[edge_vertices<D>(e)[0]], y = mesh.element(p.cavity[i])[edge_vertices<D>(e)[1]];
+        if (am.vertex_class(x) < VertexClass::kRidge || am.vertex_class(y) < VertexClass::kRidge) continue;  // no line's ends
+        collect_shell(mesh, x, y, s.line_shell);
+        if (!shell_is_closed(mesh, s.line_shell, x, y) ||
+            !std::all_of(s.line_shell.begin(), s.line_shell.end(), [&](Index k) { return small_set_holds(p.cavity, k); }))
+          continue;
+        lines_through(mesh, x, s.candidate_lines);
+        for (Index l : s.candidate_lines)
+          if (mesh.line(l)[0] == y || mesh.line(l)[1] == y) return true;
+      }
+  }
+  return false;
+}
+
 // The preview of splitting edge (a, b) on the mesh as it is; reads the mesh only.
 template <int D>
 void preview_split(const AdaptationMesh<D>& am, Index a, Index b, SplitPreview<D>& p, SplitScratch<D>& s) {
@@ -140,7 +167,8 @@ void preview_split(const AdaptationMesh<D>& am, Index a, Index b, SplitPreview<D
   // A kept edge is never split (split_edge refuses it): its straight middle, not a projection onto
   // a surface the geometry may not have (a distributed part's interface: docs/distributed.md).
   const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
-  p.kept = am.vertex_class(a) == VertexClass::kCorner && am.vertex_class(b) == VertexClass::kCorner && holds_required(mesh, p);
+  p.kept = (am.vertex_class(a) == VertexClass::kCorner && am.vertex_class(b) == VertexClass::kCorner && holds_required(mesh, p)) ||
+           (p.facets.empty() && !p.lines.empty());
   const BoundaryPoint<D> on_geometry = p.kept ? BoundaryPoint<D>{middle} : split_point(am, middle, p.surfaces);
   p.point = on_geometry.point;
   p.patch = on_geometry.patch;
@@ -150,6 +178,10 @@ void preview_split(const AdaptationMesh<D>& am, Index a, Index b, SplitPreview<D
   if (!p.surfaces.boundary) {
     grow_delaunay_cavity(mesh, p.cavity, p.read, p.point, p.metric.metric);
     make_star_shaped(mesh, p.cavity, p.shell.size(), p.read, p.point);
+    if (buries_a_line(am, p, s)) {  // then the shell alone; what the growth took stays read
+      p.read.insert(p.read.end(), p.cavity.begin() + static_cast<std::ptrdiff_t>(p.shell.size()), p.cavity.end());
+      p.cavity.resize(p.shell.size());
+    }
   }
   p.read.insert(p.read.end(), p.cavity.begin(), p.cavity.end());
   p.read_vertices.clear();

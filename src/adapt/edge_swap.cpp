@@ -3,7 +3,9 @@
 // shell of an interior edge re-starred from the shell vertex that gives the best worst quality
 // (n → 2n − 4 elements), and two elements through a face re-starred from one's apex (2 → 3).
 #include <algorithm>
+#include <cstdint>
 #include <limits>
+#include <span>
 #include <tuple>
 
 #include "adapt/adaptation_operations.hpp"
@@ -85,11 +87,17 @@ struct SwapRound {
   int stamp = 0;
   std::vector<Index> waiting;  // candidates (by position) left for the next round
   std::vector<Index> keys;
-  std::vector<Refusal> gathered;  // per pending candidate: why its cavity could not be gathered
-  std::vector<char> unchanged;    // per pending candidate: no element of its cavity changed since the sweep's clock
-  ConflictBatches coloring;       // keys: vertices
+  std::vector<Refusal> gathered;          // per pending candidate: why its cavity could not be gathered
+  std::vector<char> unchanged;            // per pending candidate: no element of its cavity changed since the sweep's clock
+  ConflictBatches coloring;               // keys: vertices
+  std::vector<std::uint64_t> line_edges;  // 3D: the feature lines' edge keys, sorted (never swapped away)
 
-  explicit SwapRound(Index vertex_count) : taken(static_cast<std::size_t>(vertex_count), 0), coloring(vertex_count) {}
+  explicit SwapRound(const Mesh<D>& mesh) : taken(static_cast<std::size_t>(mesh.vertex_count()), 0), coloring(mesh.vertex_count()) {
+    if constexpr (D == 3)
+      for (Index l = 0; l < mesh.line_count(); ++l)
+        if (!mesh.line_removed(l)) line_edges.push_back(Mesh<D>::edge_key(mesh.line(l)[0], mesh.line(l)[1]));
+    std::sort(line_edges.begin(), line_edges.end());
+  }
 };
 
 // Whether the apex's edges in the star keep within the length window of its edges in the cavity.
@@ -156,19 +164,6 @@ Index best_apex(const AdaptationMesh<D>& am, const SwapCavity<D>& cavity, SwapSc
   return chosen;
 }
 
-// Whether the edge's shell touches the boundary (then the edge is kept: boundary edges change only
-// with their facets, in split and collapse).
-template <int D>
-bool shell_is_closed(const Mesh<D>& mesh, std::span<const Index> shell, Index a, Index b) {
-  for (Index k : shell)
-    for (int face = 0; face <= D; ++face) {
-      const auto& e = mesh.element(k);
-      if (e[face] == a || e[face] == b) continue;  // the face misses a or b
-      if (mesh.neighbor(k, face) == kNoIndex || mesh.element_face_facet(k, face) != kNoIndex) return false;
-    }
-  return true;
-}
-
 // Whether element k (an element id from the sweep's start, perhaps moved or rewritten since)
 // still holds these vertices.
 template <int D, std::size_t N>
@@ -206,10 +201,13 @@ void sort_unique(std::vector<SwapCandidate<N>>& candidates, Index vertex_count, 
   candidates.swap(sorted);
 }
 
-// The shell of edge (a, b); refused on the boundary and when too small or too large.
+// The shell of edge (a, b); refused on the boundary (boundary edges change only with their facets,
+// in split and collapse), on a feature line (`line_edges`, sorted keys: a line with no facet along
+// it, an input's Edges inside the volume, has a closed shell), and when too small or too large.
 template <int D>
-Refusal gather_cavity(const Mesh<D>& mesh, const SwapCandidate<2>& edge, SwapCavity<D>& cavity) {
+Refusal gather_cavity(const Mesh<D>& mesh, const SwapCandidate<2>& edge, std::span<const std::uint64_t> line_edges, SwapCavity<D>& cavity) {
   const auto [a, b] = edge.vertices;
+  if (std::binary_search(line_edges.begin(), line_edges.end(), Mesh<D>::edge_key(a, b))) return Refusal::kTopology;
   if (still_holds(mesh, edge.element, edge.vertices))
     collect_shell_from(mesh, edge.element, a, b, cavity.elements);
   else
@@ -222,7 +220,7 @@ Refusal gather_cavity(const Mesh<D>& mesh, const SwapCandidate<2>& edge, SwapCav
 }
 
 // 3D, 2 → 3: the elements on both sides of interior face (a, b, c), to re-star from either apex.
-Refusal gather_cavity(const Mesh<3>& mesh, const SwapCandidate<3>& candidate, SwapCavity<3>& cavity) {
+Refusal gather_cavity(const Mesh<3>& mesh, const SwapCandidate<3>& candidate, std::span<const std::uint64_t>, SwapCavity<3>& cavity) {
   // Named one by one: clang refuses a structured binding captured by a lambda.
   const Index a = candidate.vertices[0], b = candidate.vertices[1], c = candidate.vertices[2];
   Index k = candidate.element;
@@ -246,8 +244,8 @@ Refusal gather_cavity(const Mesh<3>& mesh, const SwapCandidate<3>& candidate, Sw
 
 // The cavity of a candidate on the current mesh, with its elements' vertices.
 template <int D, std::size_t N>
-Refusal gather(const Mesh<D>& mesh, const SwapCandidate<N>& candidate, SwapCavity<D>& cavity) {
-  const Refusal refusal = gather_cavity(mesh, candidate, cavity);
+Refusal gather(const Mesh<D>& mesh, const SwapCandidate<N>& candidate, std::span<const std::uint64_t> line_edges, SwapCavity<D>& cavity) {
+  const Refusal refusal = gather_cavity(mesh, candidate, line_edges, cavity);
   cavity.vertices.clear();
   if (refusal == Refusal::kNone)
     for (Index k : cavity.elements) cavity.vertices.push_back(mesh.element(k));
@@ -270,7 +268,7 @@ void swap_batch(AdaptationMesh<D>& am, std::span<const SwapCandidate<N>> candida
     const SwapCandidate<N>& candidate = candidates[static_cast<std::size_t>(item)];
     SwapCavity<D>& cavity = round.cavities[static_cast<std::size_t>(item)];
     if (!cavity.current(am.mesh()))
-      if (const Refusal refusal = gather(am.mesh(), candidate, cavity); refusal != Refusal::kNone) {
+      if (const Refusal refusal = gather(am.mesh(), candidate, round.line_edges, cavity); refusal != Refusal::kNone) {
         count.add(refusal);
         continue;
       }
@@ -320,7 +318,7 @@ void swap_all(AdaptationMesh<D>& am, std::span<const SwapCandidate<N>> candidate
     run_strided(pool, pending.size(), kSmallestThreadedBatch, [&](std::size_t, std::size_t i) {
       const auto item = static_cast<std::size_t>(pending[i]);
       SwapCavity<D>& cavity = round.cavities[item];
-      if (!cavity.current(mesh)) round.gathered[i] = gather(mesh, candidates[item], cavity);
+      if (!cavity.current(mesh)) round.gathered[i] = gather(mesh, candidates[item], round.line_edges, cavity);
       round.unchanged[i] = std::none_of(cavity.elements.begin(), cavity.elements.end(),
                                         [&](Index k) { return am.element_changed_since(k, since); });
     });
@@ -372,7 +370,7 @@ OperationCount swap_for_quality(AdaptationMesh<D>& am, const AdaptationLimits& l
   sort_unique(edges, mesh.vertex_count(), pool);
   sort_unique(faces, mesh.vertex_count(), pool);
   OperationCount count;
-  SwapRound<D> round(mesh.vertex_count());
+  SwapRound<D> round(mesh);
   round.scratch.resize(static_cast<std::size_t>(pool.thread_count()));
   for (std::size_t start = 0; start < edges.size(); start += kSweepChunk)
     swap_all<D, 2>(am, std::span(edges).subspan(start, std::min(kSweepChunk, edges.size() - start)), since, round, limits, pool, count);

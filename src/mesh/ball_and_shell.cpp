@@ -107,6 +107,17 @@ void collect_shell_from(const Mesh<D>& mesh, Index start, Index a, Index b, std:
 }
 
 template <int D>
+bool shell_is_closed(const Mesh<D>& mesh, std::span<const Index> shell, Index a, Index b) {
+  for (Index k : shell)
+    for (int face = 0; face <= D; ++face) {
+      const auto& e = mesh.element(k);
+      if (e[face] == a || e[face] == b) continue;  // the face opposite a or b misses the edge
+      if (mesh.neighbor(k, face) == kNoIndex || mesh.element_face_facet(k, face) != kNoIndex) return false;
+    }
+  return true;
+}
+
+template <int D>
 void other_vertices(const Mesh<D>& mesh, std::span<const Index> elements, Index a, Index b, std::vector<Index>& out) {
   out.clear();
   for (Index k : elements)
@@ -114,6 +125,8 @@ void other_vertices(const Mesh<D>& mesh, std::span<const Index> elements, Index 
       if (v != a && v != b && !small_set_holds(out, v)) out.push_back(v);
 }
 
+template bool shell_is_closed(const Mesh<2>&, std::span<const Index>, Index, Index);
+template bool shell_is_closed(const Mesh<3>&, std::span<const Index>, Index, Index);
 template void other_vertices(const Mesh<2>&, std::span<const Index>, Index, Index, std::vector<Index>&);
 template void other_vertices(const Mesh<3>&, std::span<const Index>, Index, Index, std::vector<Index>&);
 template void collect_ball(const Mesh<2>&, Index, std::vector<Index>&);

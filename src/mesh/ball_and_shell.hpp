@@ -21,6 +21,11 @@ void collect_shell(const Mesh<D>& mesh, Index a, Index b, std::vector<Index>& sh
 template <int D>
 void collect_shell_from(const Mesh<D>& mesh, Index start, Index a, Index b, std::vector<Index>& shell);
 
+// Whether the shell of edge (a, b) (its elements, as collect_shell gives them) goes all around the
+// edge inside the domain: no face through the edge is on the domain's boundary or carries a facet.
+template <int D>
+bool shell_is_closed(const Mesh<D>& mesh, std::span<const Index> shell, Index a, Index b);
+
 // Fills `out` with the vertices of these elements other than a and b, once each, in the order met
 // (a shell's ring with the edge's ends; a ball's neighbours with a = b = the centre).
 template <int D>
