@@ -4,7 +4,7 @@
 #include <cmath>
 #include <span>
 
-#include "base/small_set.hpp"
+#include "base/element_list.hpp"
 #include "geom/barycentric.hpp"
 #include "mesh/ball_and_shell.hpp"
 #include "mesh/measure.hpp"
@@ -70,10 +70,10 @@ bool sees_face(const Mesh<D>& mesh, Index k, int face, const Vec<D>& x) {
 
 // Whether x sees every face of element k on the cavity's boundary.
 template <int D>
-bool sees_boundary_faces(const Mesh<D>& mesh, std::span<const Index> cavity, Index k, const Vec<D>& x) {
+bool sees_boundary_faces(const Mesh<D>& mesh, const ElementList& cavity, Index k, const Vec<D>& x) {
   for (int face = 0; face <= D; ++face) {
     const Index n = mesh.neighbor(k, face);
-    if ((n == kNoIndex || !small_set_holds(cavity, n)) && !sees_face(mesh, k, face, x)) return false;
+    if ((n == kNoIndex || !cavity.holds(n)) && !sees_face(mesh, k, face, x)) return false;
   }
   return true;
 }
@@ -82,11 +82,19 @@ bool sees_boundary_faces(const Mesh<D>& mesh, std::span<const Index> cavity, Ind
 // `dropped`; false when there was none.
 template <int D>
 bool drop_hidden(const Mesh<D>& mesh, std::vector<Index>& cavity, std::size_t kept, std::vector<Index>& dropped, const Vec<D>& x) {
-  const std::size_t dropped_before = dropped.size();
-  for (std::size_t i = kept; i < cavity.size(); ++i)
-    if (!sees_boundary_faces<D>(mesh, cavity, cavity[i], x)) dropped.push_back(cavity[i]);
-  if (dropped.size() == dropped_before) return false;
-  std::erase_if(cavity, [&](Index k) { return small_set_holds(std::span<const Index>(dropped).subspan(dropped_before), k); });
+  std::vector<char> hidden(cavity.size(), 0);
+  {
+    const ElementList members(cavity);
+    for (std::size_t i = kept; i < cavity.size(); ++i) hidden[i] = !sees_boundary_faces<D>(mesh, members, cavity[i], x);
+  }
+  if (std::find(hidden.begin(), hidden.end(), 1) == hidden.end()) return false;
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < cavity.size(); ++i)
+    if (hidden[i])
+      dropped.push_back(cavity[i]);
+    else
+      cavity[out++] = cavity[i];
+  cavity.resize(out);
   return true;
 }
 
@@ -94,14 +102,19 @@ bool drop_hidden(const Mesh<D>& mesh, std::vector<Index>& cavity, std::size_t ke
 // faces inside the cavity to `dropped`; the cavity keeps the reached ones, in the order reached.
 template <int D>
 void keep_connected(const Mesh<D>& mesh, std::vector<Index>& cavity, std::size_t kept, std::vector<Index>& dropped) {
-  std::size_t reached = kept;  // cavity[0 .. reached) are reached; the rest are to be sorted
-  for (std::size_t next = 0; next < reached; ++next)
-    for (int face = 0; face <= D; ++face) {
-      const auto found = std::find(cavity.begin() + static_cast<std::ptrdiff_t>(reached), cavity.end(), mesh.neighbor(cavity[next], face));
-      if (found != cavity.end()) std::iter_swap(found, cavity.begin() + static_cast<std::ptrdiff_t>(reached++));
-    }
-  dropped.insert(dropped.end(), cavity.begin() + static_cast<std::ptrdiff_t>(reached), cavity.end());
-  cavity.resize(reached);
+  std::vector<Index> reached(cavity.begin(), cavity.begin() + static_cast<std::ptrdiff_t>(kept));
+  ElementList is_reached(reached);
+  {
+    const ElementList in_cavity(cavity);
+    for (std::size_t next = 0; next < reached.size(); ++next)
+      for (int face = 0; face <= D; ++face) {
+        const Index n = mesh.neighbor(reached[next], face);
+        if (n != kNoIndex && in_cavity.holds(n) && !is_reached.holds(n)) is_reached.push_back(n);
+      }
+  }
+  for (Index k : cavity)
+    if (!is_reached.holds(k)) dropped.push_back(k);
+  cavity.swap(reached);
 }
 
 }  // namespace
@@ -116,15 +129,16 @@ void grow_delaunay_cavity(const Mesh<D>& mesh, std::vector<Index>& cavity, std::
                           const SymMat<D>& metric) {
   // An element refused once is not tested again from its other faces on the cavity.
   refused.clear();
+  ElementList in_cavity(cavity), tested(refused);
   for (std::size_t next = 0; next < cavity.size(); ++next)
     for (int face = 0; face <= D; ++face) {
       Index n = mesh.neighbor(cavity[next], face);
-      if (n == kNoIndex || small_set_holds(cavity, n) || small_set_holds(refused, n)) continue;
+      if (n == kNoIndex || in_cavity.holds(n) || tested.holds(n)) continue;
       if (mesh.element_face_facet(cavity[next], face) != kNoIndex) continue;  // stay on one side of surfaces
       if (in_circumsphere(mesh, n, x, metric))
-        cavity.push_back(n);
+        in_cavity.push_back(n);
       else
-        refused.push_back(n);
+        tested.push_back(n);
     }
 }
 

@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "base/element_list.hpp"
 #include "base/small_set.hpp"
 
 namespace hocav {
@@ -19,17 +20,17 @@ void collect_ball(const Mesh<D>& mesh, Index v, std::vector<Index>& ball) {
   ball.clear();
   Index start = mesh.vertex_element(v);
   if (start == kNoIndex) return;
-  ball.push_back(start);
-  // Balls hold a few dozen elements: a linear membership test beats any set.
+  ElementList members(ball);  // a scan for the usual few dozen elements, hashed past that
+  members.push_back(start);
   for (std::size_t next = 0; next < ball.size(); ++next) {
     Index k = ball[next];
     int own = local_vertex(mesh, k, v);
     for (int face = 0; face <= D; ++face) {
       if (face == own) continue;  // the face opposite v does not contain v
       Index neighbor = mesh.neighbor(k, face);
-      if (neighbor != kNoIndex && !small_set_holds(ball, neighbor)) {
+      if (neighbor != kNoIndex && !members.holds(neighbor)) {
         mesh.prefetch_element(neighbor);  // read when its turn comes, and by the ball's users
-        ball.push_back(neighbor);
+        members.push_back(neighbor);
       }
     }
   }
@@ -43,14 +44,15 @@ Index element_of_edge(const Mesh<D>& mesh, Index a, Index b, std::vector<Index>&
   visited.clear();
   Index start = mesh.vertex_element(a);
   if (start == kNoIndex) return kNoIndex;
-  visited.push_back(start);
+  ElementList members(visited);
+  members.push_back(start);
   for (std::size_t next = 0; next < visited.size(); ++next) {
     const Index k = visited[next];
     if (local_vertex(mesh, k, b) >= 0) return k;
     const int own = local_vertex(mesh, k, a);
     for (int face = 0; face <= D; ++face) {
       const Index neighbor = face == own ? kNoIndex : mesh.neighbor(k, face);
-      if (neighbor != kNoIndex && !small_set_holds(visited, neighbor)) visited.push_back(neighbor);
+      if (neighbor != kNoIndex && !members.holds(neighbor)) members.push_back(neighbor);
     }
   }
   return kNoIndex;
