@@ -49,6 +49,27 @@ TEST(Mesh, EulerCharacteristicOfTheEdgeTable) {
   EXPECT_EQ(check_consistency(mesh), std::vector<std::string>{});
 }
 
+// Two tetrahedra that share only vertex 0: the walk from vertex 0's element sees one of them, yet
+// a feature line on the other's edge is an element edge; a line on no element's edge is named.
+TEST(Mesh, ConsistencyFindsALineAtAVertexWhereTwoPartsMeet) {
+  Mesh<3> mesh;
+  for (const Vec3& p : {Vec3{{0, 0, 0}}, Vec3{{1, 0, 0}}, Vec3{{0, 1, 0}}, Vec3{{0, 0, 1}}, Vec3{{-1, 0, 0}}, Vec3{{0, -1, 0}},
+                        Vec3{{0, 0, -1}}})
+    mesh.add_vertex(p);
+  mesh.add_element({0, 1, 2, 3});
+  mesh.add_element({0, 5, 4, 6});
+  ASSERT_GT(signed_measure(mesh.vertex(0), mesh.vertex(5), mesh.vertex(4), mesh.vertex(6)), 0);
+  mesh.add_line({0, 1});
+  mesh.add_line({0, 4});
+  mesh.build_topology();
+  std::vector<Index> ball;
+  collect_ball(mesh, 0, ball);
+  ASSERT_EQ(ball.size(), 1u);  // the walk sees one part
+  EXPECT_EQ(check_consistency(mesh), std::vector<std::string>{});
+  mesh.add_line({1, 4});
+  EXPECT_EQ(check_consistency(mesh), std::vector<std::string>{"edge (line) 3 (2, 5) is no element edge"});
+}
+
 TEST(Mesh, P2NodesAreFoundFromVerticesAndFromLocalEdges) {
   Mesh<3> mesh = generate_cube(2);
   mesh.make_p2();
