@@ -53,8 +53,8 @@ TEST(Mesh, EulerCharacteristicOfTheEdgeTable) {
 // a feature line on the other's edge is an element edge; a line on no element's edge is named.
 TEST(Mesh, ConsistencyFindsALineAtAVertexWhereTwoPartsMeet) {
   Mesh<3> mesh;
-  for (const Vec3& p : {Vec3{{0, 0, 0}}, Vec3{{1, 0, 0}}, Vec3{{0, 1, 0}}, Vec3{{0, 0, 1}}, Vec3{{-1, 0, 0}}, Vec3{{0, -1, 0}},
-                        Vec3{{0, 0, -1}}})
+  for (const Vec3& p :
+       {Vec3{{0, 0, 0}}, Vec3{{1, 0, 0}}, Vec3{{0, 1, 0}}, Vec3{{0, 0, 1}}, Vec3{{-1, 0, 0}}, Vec3{{0, -1, 0}}, Vec3{{0, 0, -1}}})
     mesh.add_vertex(p);
   mesh.add_element({0, 1, 2, 3});
   mesh.add_element({0, 5, 4, 6});
