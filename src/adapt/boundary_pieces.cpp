@@ -1,6 +1,7 @@
 #include "adapt/boundary_pieces.hpp"
 
 #include <algorithm>
+#include <cstdint>
 
 namespace hocav {
 
@@ -23,6 +24,13 @@ void lines_through(const Mesh<3>& mesh, Index v, std::vector<Index>& out) {
   out.clear();
   for (Index l = 0; l < mesh.line_count(); ++l)
     if (!mesh.line_removed(l) && (mesh.line(l)[0] == v || mesh.line(l)[1] == v)) out.push_back(l);
+}
+
+void lines_along(const Mesh<3>& mesh, Index a, Index b, std::vector<Index>& out) {
+  out.clear();
+  const std::uint64_t key = Mesh<3>::edge_key(a, b);
+  for (Index l = 0; l < mesh.line_count(); ++l)
+    if (!mesh.line_removed(l) && Mesh<3>::edge_key(mesh.line(l)[0], mesh.line(l)[1]) == key) out.push_back(l);
 }
 
 namespace {

@@ -17,6 +17,9 @@ void facets_through(const Mesh<D>& mesh, std::span<const Index> elements, std::s
 // vertices ask).
 void lines_through(const Mesh<3>& mesh, Index v, std::vector<Index>& out);
 
+// 3D: the feature lines along edge (a, b) (a scan of the lines, as lines_through).
+void lines_along(const Mesh<3>& mesh, Index a, Index b, std::vector<Index>& out);
+
 // Whether the facets a planned boundary operation creates stay close to the boundary they replace:
 // no new facet turns by more than the feature angle from the facet it replaces, and (with a
 // geometry and hausd > 0) each new facet's centroid lies within hausd of the geometry.

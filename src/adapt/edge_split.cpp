@@ -24,7 +24,7 @@ constexpr double kCutGain = 1.05;
 
 template <int D>
 struct alignas(64) SplitScratch {  // a cache line of its own: each thread writes its own
-  std::vector<Index> candidate_lines, line_shell;
+  std::vector<Index> lines, line_shell;
   CollapseScratch<D> collapse;
 };
 
@@ -86,16 +86,12 @@ void snap_to_nearest(AdaptationMesh<D>& am, Index v, const AdaptationLimits& lim
 // on it (looked for off the facets too: an input's Edges may lie inside the volume); and the
 // surfaces they name.
 template <int D>
-EdgeSurfaces boundary_through_edge(const AdaptationMesh<D>& am, Index a, Index b, SplitPreview<D>& p, SplitScratch<D>& s) {
+EdgeSurfaces boundary_through_edge(const AdaptationMesh<D>& am, Index a, Index b, SplitPreview<D>& p) {
   const Index ends[2] = {a, b};
   facets_through(am.mesh(), p.shell, ends, p.facets);
   p.lines.clear();
   if constexpr (D == 3)
-    if (am.vertex_class(a) >= VertexClass::kRidge && am.vertex_class(b) >= VertexClass::kRidge) {
-      lines_through(am.mesh(), a, s.candidate_lines);
-      for (Index l : s.candidate_lines)
-        if (am.mesh().line(l)[0] == b || am.mesh().line(l)[1] == b) p.lines.push_back(l);
-    }
+    if (am.vertex_class(a) >= VertexClass::kRidge && am.vertex_class(b) >= VertexClass::kRidge) lines_along(am.mesh(), a, b, p.lines);
   if (p.facets.empty()) return {};
   return {true, !p.lines.empty(), am.mesh().facet_ref(p.facets.front()), am.mesh().facet_ref(p.facets.back())};
 }
@@ -125,9 +121,9 @@ BoundaryPoint<D> split_point(const AdaptationMesh<D>& am, const Vec<D>& middle, 
 // every element the preview read keeps its vertices (a split nearby re-stars them). `fresh` is
 // scratch.
 template <int D>
-bool same_boundary(const AdaptationMesh<D>& am, Index a, Index b, const SplitPreview<D>& p, SplitPreview<D>& fresh, SplitScratch<D>& s) {
+bool same_boundary(const AdaptationMesh<D>& am, Index a, Index b, const SplitPreview<D>& p, SplitPreview<D>& fresh) {
   fresh.shell.assign(p.shell.begin(), p.shell.end());
-  return boundary_through_edge(am, a, b, fresh, s) == p.surfaces && fresh.facets == p.facets && fresh.lines == p.lines;
+  return boundary_through_edge(am, a, b, fresh) == p.surfaces && fresh.facets == p.facets && fresh.lines == p.lines;
 }
 
 // Whether the Delaunay cavity's elements past the shell go all around a feature line's edge, which
@@ -145,9 +141,8 @@ bool buries_a_line(const AdaptationMesh<D>& am, const SplitPreview<D>& p, SplitS
         if (!shell_is_closed(mesh, s.line_shell, x, y) ||
             !std::all_of(s.line_shell.begin(), s.line_shell.end(), [&](Index k) { return small_set_holds(p.cavity, k); }))
           continue;
-        lines_through(mesh, x, s.candidate_lines);
-        for (Index l : s.candidate_lines)
-          if (mesh.line(l)[0] == y || mesh.line(l)[1] == y) return true;
+        lines_along(mesh, x, y, s.lines);
+        if (!s.lines.empty()) return true;
       }
   }
   return false;
@@ -163,7 +158,7 @@ void preview_split(const AdaptationMesh<D>& am, Index a, Index b, SplitPreview<D
   if (p.shell.empty()) return;
   p.made = true;
   std::sort(p.shell.begin(), p.shell.end());
-  p.surfaces = boundary_through_edge(am, a, b, p, s);
+  p.surfaces = boundary_through_edge(am, a, b, p);
   // A kept edge is never split (split_edge refuses it): its straight middle, not a projection onto
   // a surface the geometry may not have (a distributed part's interface: docs/distributed.md).
   const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
@@ -283,7 +278,7 @@ OperationCount split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& l
     for (std::size_t i = 0; i < chunk.size(); ++i) {
       const EdgeCandidate& c = chunk[i];
       // (On one thread each preview was made just now.)
-      if (chunk_size > 1 && (!previews[i].current(am.mesh()) || !same_boundary(am, c.a, c.b, previews[i], fresh, scratch.front())))
+      if (chunk_size > 1 && (!previews[i].current(am.mesh()) || !same_boundary(am, c.a, c.b, previews[i], fresh)))
         preview_split(am, c.a, c.b, previews[i], scratch.front());
       if (!previews[i].made || am.edge_length(c.a, c.b) <= limits.split_length) continue;  // gone, or no longer long
       count.add(split_edge(am, c.a, c.b, previews[i], limits, SplitPurpose::kLength, scratch.front()));
