@@ -45,11 +45,13 @@ AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric,
   report.input_elements = mesh.element_count();
   auto start = std::chrono::steady_clock::now();
   report.run = loop ? loop(mesh, metric, geometry, settings) : adapt_to_metric(mesh, metric, geometry, settings);
+  // The metric at the adapted vertices, which keep it when the boundary settles (it moves with the mesh).
+  const std::vector<SymMat<D>> metrics = metrics_at_vertices(mesh, metric, settings.threads);
+  if (geometry) report.settling = settle_boundary<D>(mesh, metrics, *geometry, settings.feature_angle_degrees);
   report.seconds_adapt = seconds_since(start);
   report.output_vertices = mesh.vertex_count();
   report.output_elements = mesh.element_count();
 
-  const std::vector<SymMat<D>> metrics = metrics_at_vertices(mesh, metric, settings.threads);
   Mesh<D> copy = mesh;  // the statistics build an edge table
   report.measures = compute_metric_statistics(copy, rows_of_metrics(metrics).values, settings.threads);
   out.field = std::make_unique<MetricField<D>>(mesh, metrics);

@@ -88,6 +88,28 @@ void write_distributed_iterations(JsonWriter& json, const std::vector<Distribute
   json.end_array();
 }
 
+void write_settling(JsonWriter& json, const BoundarySettling& s) {
+  json.key("boundary_settling").begin_object();
+  json.member("off_geometry", s.off_geometry).member("largest_distance", s.largest_distance);
+  json.member("settled", s.settled).member("partly", s.partly).member("blocked", s.blocked);
+  json.member("largest_distance_left", s.largest_distance_left).member("inner_vertices_moved", s.inner_vertices_moved);
+  json.member("solver_iterations", s.solver_iterations).member("rounds", s.rounds).member("seconds", s.seconds);
+  json.end_object();
+}
+
+// "boundary onto the geometry: N vertices off it ..." when some were.
+void write_settling_line(std::ostream& out, const std::optional<BoundarySettling>& settling) {
+  if (!settling || settling->off_geometry == 0) return;
+  const BoundarySettling& b = *settling;
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "boundary onto the geometry: %d vertices off it (up to %.3g): %d moved onto it, %d part of the way, %d kept (up to %.3g "
+                "left); %d inner vertices moved along, %.2f s\n",
+                b.off_geometry, b.largest_distance, b.settled, b.partly, b.blocked, b.largest_distance_left, b.inner_vertices_moved,
+                b.seconds);
+  out << line;
+}
+
 }  // namespace
 
 void write_adaptation_report_json(std::ostream& out, const AdaptationReport& report) {
@@ -113,6 +135,7 @@ void write_adaptation_report_json(std::ostream& out, const AdaptationReport& rep
     json.end_object();
   }
   json.end_array();
+  if (report.settling) write_settling(json, *report.settling);
   const MetricStatistics& m = report.measures;
   json.key("edge_length").begin_object();
   json.member("edges", m.edge_count).member("min", m.min).member("mean", m.mean);
@@ -151,6 +174,7 @@ void write_adaptation_report_table(std::ostream& out, const AdaptationReport& re
                 report.measures.quality_min, report.measures.quality_mean, 100 * report.measures.low_quality_share, report.seconds_adapt,
                 report.seconds_curve, static_cast<double>(report.peak_memory_bytes) / (1 << 20));
   out << summary;
+  write_settling_line(out, report.settling);
   if (report.curved_passes) {
     const CurvedAdaptationRun& run = *report.curved_passes;
     for (std::size_t i = 0; i < run.passes.size(); ++i) {

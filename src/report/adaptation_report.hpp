@@ -8,6 +8,7 @@
 #include <string>
 
 #include "adapt/adaptation_loop.hpp"
+#include "adapt/boundary_settling.hpp"
 #include "adapt/curved_adaptation.hpp"
 #include "parallel/distributed_iteration.hpp"
 #include "report/curving_report.hpp"
@@ -20,6 +21,8 @@ struct AdaptationReport {
   Index input_vertices = 0, input_elements = 0;
   Index output_vertices = 0, output_elements = 0;
   AdaptationRun run;
+  // With a geometry: the boundary vertices the loop left off it, moved onto it after the loop.
+  std::optional<BoundarySettling> settling;
   // The adapted P1 mesh in its metric (`hocav stats --metric`'s figures): edge lengths by 16-point
   // Gauss, element qualities with the metric at the centroid.
   MetricStatistics measures;

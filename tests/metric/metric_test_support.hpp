@@ -19,6 +19,14 @@ Mesh<D> unit_mesh(int cells_per_side) {
     return generate_cube(cells_per_side);
 }
 
+// The vertex at x (kNoIndex: none).
+template <int D>
+Index vertex_at(const Mesh<D>& mesh, const Vec<D>& x) {
+  for (Index v = 0; v < mesh.vertex_count(); ++v)
+    if (norm(mesh.vertex(v) - x) < 1e-12) return v;
+  return kNoIndex;
+}
+
 // The structured unit square or cube with its interior vertices moved at random by up to
 // `amplitude` cells along each axis (amplitude < 0.25 keeps every element positive).
 template <int D>

@@ -10,12 +10,7 @@
 namespace hocav {
 namespace {
 
-template <int D>
-Index vertex_at(const Mesh<D>& mesh, const Vec<D>& x) {
-  for (Index v = 0; v < mesh.vertex_count(); ++v)
-    if (norm(mesh.vertex(v) - x) < 1e-12) return v;
-  return kNoIndex;
-}
+using metric_test::vertex_at;
 
 template <int D>
 void expect_near(const Vec<D>& actual, const Vec<D>& expected) {
