@@ -20,7 +20,7 @@ constexpr double kOnGeometry = 1e-9;
 // The volume moves within this many times a boundary vertex's move (harmonic_extension).
 constexpr double kReachFactor = 20;
 // An element keeps at least this share of its quality (and stays above kPoorQuality if it was).
-constexpr double kKeptQualityShare = 0.5;
+constexpr double kKeptQualityShare = 0.7;
 // A vertex whose move is halved this many times and still fails stops moving.
 constexpr int kSettlingHalvings = 6;
 

@@ -2,7 +2,7 @@
 // the loop left off the geometry (a boundary split whose point on the geometry was refused puts its
 // vertex at the straight middle of the edge) moved onto it, the volume moved along by the harmonic
 // extension of their moves. The metric moves with the mesh: each vertex keeps the metric it had.
-// No element keeps less than half its quality, nor falls below kPoorQuality unless it was; a vertex
+// No element keeps less than 70% of its quality, nor falls below kPoorQuality unless it was; a vertex
 // of an element that would has its move halved, and after a few halvings dropped.
 #pragma once
 
