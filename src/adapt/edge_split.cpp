@@ -183,6 +183,9 @@ void preview_split(const AdaptationMesh<D>& am, Index a, Index b, SplitPreview<D
   for (Index k : p.read) p.read_vertices.push_back(mesh.element(k));
 }
 
+// The points a split tries, from the geometry's to the straight middle (split_edge).
+constexpr std::size_t kSplitPoints = 4;
+
 // Plans the star of the new vertex v at the preview's point: inside the domain on its Delaunay
 // cavity of v in v's metric grown from the edge's shell (mmg's insertion: the new vertex joins
 // vertices farther than the shell's, so fewer short edges for the collapses to undo), else (or
@@ -221,12 +224,15 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const SplitPreview<D
   CavityOptions options;
   options.removed_facets = p.facets;
   options.removed_lines = p.lines;
-  // The point on the geometry first, then the straight middle (mmg bisects between the two).
-  const std::array<Vec<D>, 2> points{p.point, middle};
+  // The point on the geometry first, then halfway and a quarter of the way to it from the straight
+  // middle (mmg bisects between the two), then the middle: a boundary vertex as close to the
+  // geometry as its cavity allows (the boundary settling moves it the rest of the way if it can).
+  const Vec<D> toward = p.point - middle;
+  const std::array<Vec<D>, kSplitPoints> points{p.point, middle + 0.5 * toward, middle + 0.25 * toward, middle};
   Refusal refusal = Refusal::kTopology;
-  for (int attempt = 0; attempt < (points[0] == points[1] ? 1 : 2); ++attempt) {
-    const Index v = am.add_vertex(points[attempt], new_class, attempt == 0 ? p.metric : am.metric_at_point(middle, a));
-    if (attempt == 0) am.set_surface_hint(v, p.patch);
+  for (std::size_t attempt = 0; attempt < (p.point == middle ? 1 : kSplitPoints); ++attempt) {
+    const Index v = am.add_vertex(points[attempt], new_class, attempt == 0 ? p.metric : am.metric_at_point(points[attempt], a));
+    if (attempt + 1 < kSplitPoints) am.set_surface_hint(v, p.patch);
     if (!plan_split(am, v, attempt == 0, p, options))
       refusal = Refusal::kTopology;
     else if (!(worst_planned_quality(am, work.cavity_operator) >= split_quality_floor(am, p, work.cavity_operator, purpose)))

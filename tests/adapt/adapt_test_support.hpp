@@ -9,6 +9,7 @@
 
 #include "../metric/metric_test_support.hpp"
 #include "mesh/consistency.hpp"
+#include "surface/analytic_boundary.hpp"
 
 namespace hocav::adapt_test {
 
@@ -19,6 +20,22 @@ void expect_closed_and_consistent(const Mesh<D>& mesh) {
   ConsistencyOptions options;
   options.require_boundary_facets = true;
   ASSERT_EQ(check_consistency(mesh, options), std::vector<std::string>{});
+}
+
+// The unit square's or cube's sides as planes (generate_square's and generate_cube's refs).
+template <int D>
+AnalyticBoundary<D> unit_box_sides() {
+  AnalyticBoundary<D> sides;
+  for (int axis = 0; axis < D; ++axis)
+    for (int side = 0; side < 2; ++side) {
+      Vec<D> point{}, normal{};
+      point[axis] = side;
+      normal[axis] = 1;
+      // 2D refs: 1 bottom (y = 0), 2 right (x = 1), 3 top, 4 left; 3D: 1 + 2 axis + side.
+      const int ref = D == 3 ? 1 + 2 * axis + side : (axis == 1 ? (side == 0 ? 1 : 3) : (side == 1 ? 2 : 4));
+      sides.add(ref, AnalyticSurface<D>::plane(point, normal));
+    }
+  return sides;
 }
 
 }  // namespace hocav::adapt_test

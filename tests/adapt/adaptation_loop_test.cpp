@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 
 #include "adapt/adaptation_mesh.hpp"
 #include "adapt_test_support.hpp"
@@ -295,6 +296,30 @@ TEST(AdaptationPasses, SplitAndCollapseEachDoWhatTheySay) {
   mesh.compact();
   adapt_test::expect_closed_and_consistent(mesh);
   EXPECT_NEAR(total_measure(mesh), 1, 1e-12);
+}
+
+// A boundary split whose point on the geometry would turn its facets past the feature angle goes
+// halfway there (mmg bisects the same way), not back to the straight middle: the bottom side's
+// geometry 0.15 below the square, its edges 0.25 long (the point turns the new facets by 50°,
+// halfway by 31°).
+TEST(AdaptationPasses, ABoundarySplitGoesAsCloseToTheGeometryAsItsFacetsAllow) {
+  Mesh<2> mesh = adapt_test::unit_mesh<2>(4);
+  AnalyticBoundary<2> sides = adapt_test::unit_box_sides<2>();
+  sides.add(1, AnalyticSurface<2>::plane(Vec2{{0, -0.15}}, Vec2{{0, 1}}));
+  const AdaptationMetric<2> metric = uniform_metric<2>(0.15);
+  AdaptationMesh<2> am(mesh, metric, &sides, 45);
+  AdaptationLimits limits;
+  limits.cos_feature_angle = std::cos(std::numbers::pi / 4);
+  ThreadPool pool(1);
+  EXPECT_GT(split_long_edges(am, limits, pool).done, 0);
+  for (const double x : {0.125, 0.375, 0.625, 0.875}) {
+    Index v = kNoIndex;
+    for (Index w = 0; w < mesh.vertex_count(); ++w)
+      if (!mesh.vertex_removed(w) && std::abs(mesh.vertex(w)[0] - x) < 1e-12 && mesh.vertex(w)[1] < 0.01) v = w;
+    ASSERT_NE(v, kNoIndex) << x;
+    EXPECT_NEAR(mesh.vertex(v)[1], -0.075, 1e-12) << x;
+  }
+  adapt_test::expect_closed_and_consistent(mesh);
 }
 
 // The quality AdaptationMesh keeps per element is the one evaluated afresh, after every operator.

@@ -8,26 +8,9 @@
 #include "adapt/metric_measures.hpp"
 #include "adapt_test_support.hpp"
 #include "cases/structured.hpp"
-#include "surface/analytic_boundary.hpp"
 
 namespace hocav {
 namespace {
-
-// The unit square's or cube's sides as planes (generate_square's and generate_cube's refs).
-template <int D>
-AnalyticBoundary<D> unit_box_sides() {
-  AnalyticBoundary<D> sides;
-  for (int axis = 0; axis < D; ++axis)
-    for (int side = 0; side < 2; ++side) {
-      Vec<D> point{}, normal{};
-      point[axis] = side;
-      normal[axis] = 1;
-      // 2D refs: 1 bottom (y = 0), 2 right (x = 1), 3 top, 4 left; 3D: 1 + 2 axis + side.
-      const int ref = D == 3 ? 1 + 2 * axis + side : (axis == 1 ? (side == 0 ? 1 : 3) : (side == 1 ? 2 : 4));
-      sides.add(ref, AnalyticSurface<D>::plane(point, normal));
-    }
-  return sides;
-}
 
 using metric_test::vertex_at;
 
@@ -78,7 +61,7 @@ TEST(BoundarySettling, PutsSurfaceAndRidgeVerticesBackOntoTheirSides) {
   mesh.vertex(on_edge) = Vec3{{0.01, 0.02, 0.5}};
   const std::vector<SymMat<3>> metrics = unit_metrics(mesh);
   const std::vector<double> before = qualities(mesh, metrics);
-  const BoundarySettling settling = settle_boundary<3>(mesh, metrics, unit_box_sides<3>(), 45);
+  const BoundarySettling settling = settle_boundary<3>(mesh, metrics, adapt_test::unit_box_sides<3>(), 45);
   EXPECT_EQ(settling.off_geometry, off + 1);
   EXPECT_EQ(settling.settled, off + 1);
   EXPECT_EQ(settling.partly + settling.blocked, 0);
@@ -99,7 +82,7 @@ TEST(BoundarySettling, MovesAVertexOnlyAsFarAsItsElementsAllow) {
   // next to the corners, which stay, the elements would lose more than 30% of their quality.
   Mesh<2> mesh = generate_square(10);
   mesh.build_topology();
-  AnalyticBoundary<2> sides = unit_box_sides<2>();
+  AnalyticBoundary<2> sides = adapt_test::unit_box_sides<2>();
   sides.add(1, AnalyticSurface<2>::plane(Vec2{{0, -0.1}}, Vec2{{0, 1}}));
   const std::vector<SymMat<2>> metrics = unit_metrics(mesh);
   const std::vector<double> before = qualities(mesh, metrics);
@@ -123,7 +106,7 @@ TEST(BoundarySettling, LeavesAMeshOnItsGeometryUnchanged) {
   Mesh<3> mesh = generate_cube(4);
   mesh.build_topology();
   const Mesh<3> start = mesh;
-  const BoundarySettling settling = settle_boundary<3>(mesh, unit_metrics(mesh), unit_box_sides<3>(), 45);
+  const BoundarySettling settling = settle_boundary<3>(mesh, unit_metrics(mesh), adapt_test::unit_box_sides<3>(), 45);
   EXPECT_EQ(settling.off_geometry, 0);
   for (Index v = 0; v < mesh.vertex_count(); ++v) EXPECT_EQ(mesh.vertex(v), start.vertex(v)) << v;
 }
