@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <optional>
+#include <unordered_map>
 
 #include "adapt/reinsertion_curving.hpp"
 #include "cavity/p2_operations.hpp"
@@ -74,22 +76,41 @@ bool still_edge_of_length(const auto& mesh, const auto& operations, const EdgeTo
   return length < lower || length > upper;
 }
 
+// A collapse sweep's straight lengths from a kept vertex to another, each measured once: a collapse
+// moves no vertex, so they hold for the whole sweep (the segment's length is a high-precision
+// quadrature of the metric along it, and the same pairs come back with every short edge at a vertex).
+class StraightLengths {
+ public:
+  template <int D>
+  double operator()(const P2Operations<D>& operations, Index from, Index to) {
+    const auto key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(from)) << 32) | static_cast<std::uint32_t>(to);
+    const auto [at, added] = lengths_.try_emplace(key, 0.0);
+    if (added) at->second = operations.straight_length(from, to);
+    return at->second;
+  }
+
+ private:
+  std::unordered_map<std::uint64_t, double> lengths_;
+};
+
 // Whether collapsing `removed` onto `kept` leaves every straight segment from `kept` to the ball's
 // vertices within √2: the curved edges the optimizer makes are no longer, so no collapse makes work
 // for the next split (the P1 loop's closed window, docs/adaptation.md).
 template <int D>
-bool collapse_keeps_lengths(const Mesh<D>& mesh, const P2Operations<D>& operations, Index removed, Index kept, std::vector<Index>& ball) {
+bool collapse_keeps_lengths(const Mesh<D>& mesh, const P2Operations<D>& operations, Index removed, Index kept, std::vector<Index>& ball,
+                            StraightLengths& lengths) {
   collect_ball(mesh, removed, ball);
   for (Index k : ball)
     for (Index w : mesh.element(k))
-      if (w != removed && w != kept && operations.straight_length(kept, w) > kSplitLength) return false;
+      if (w != removed && w != kept && lengths(operations, kept, w) > kSplitLength) return false;
   return true;
 }
 
 // The P2 operator's verdict, or none when the collapse would make a long edge (not tried).
 template <int D>
-std::optional<CavityStatus> collapse(Mesh<D>& mesh, P2Operations<D>& operations, Index removed, Index kept, std::vector<Index>& ball) {
-  if (!collapse_keeps_lengths(mesh, operations, removed, kept, ball)) return std::nullopt;
+std::optional<CavityStatus> collapse(Mesh<D>& mesh, P2Operations<D>& operations, Index removed, Index kept, std::vector<Index>& ball,
+                                     StraightLengths& lengths) {
+  if (!collapse_keeps_lengths(mesh, operations, removed, kept, ball, lengths)) return std::nullopt;
   return operations.collapse_edge(removed, kept);
 }
 
@@ -98,10 +119,11 @@ template <int D>
 CurvedOperationCount collapse_short_curved_edges(Mesh<D>& mesh, P2Operations<D>& operations) {
   CurvedOperationCount count;
   std::vector<Index> ball;
+  StraightLengths lengths;
   for (const EdgeToFix& edge : edges_outside(mesh, operations, kCollapseLength, INFINITY)) {
     if (!still_edge_of_length(mesh, operations, edge, kCollapseLength, INFINITY)) continue;
-    std::optional<CavityStatus> status = collapse(mesh, operations, edge.a, edge.b, ball);
-    if (status != CavityStatus::kAccepted) status = collapse(mesh, operations, edge.b, edge.a, ball);
+    std::optional<CavityStatus> status = collapse(mesh, operations, edge.a, edge.b, ball, lengths);
+    if (status != CavityStatus::kAccepted) status = collapse(mesh, operations, edge.b, edge.a, ball, lengths);
     if (status)
       count.add(*status);
     else
