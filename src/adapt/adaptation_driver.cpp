@@ -72,7 +72,7 @@ void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGe
 template <int D>
 void adapt_curved_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const CurvingOptions& options, int max_passes) {
   AdaptationReport& report = adapted.report;
-  report.curved_passes = adapt_curved(mesh, *adapted.field, cavity_options(options), max_passes);
+  report.curved_passes = adapt_curved(mesh, *adapted.field, cavity_options(options), max_passes, options.threads);
   check_curved_consistency(mesh);
   report.output_vertices = mesh.vertex_count();
   report.output_elements = mesh.element_count();

@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "adapt/reinsertion_curving.hpp"
+#include "base/thread_pool.hpp"
 #include "cavity/p2_operations.hpp"
 #include "mesh/ball_and_shell.hpp"
 
@@ -51,17 +52,30 @@ struct EdgeToFix {
   Index a, b;
 };
 
+// Per chunk of kScanChunk ids, what `list` keeps of them, on the pool's threads, then the chunks in
+// order: the same list for any thread count.
+constexpr std::size_t kScanChunk = 2048;
+template <typename T, typename List>
+std::vector<T> scan_in_chunks(ThreadPool& pool, Index count, const List& list) {
+  std::vector<std::vector<T>> chunks((static_cast<std::size_t>(count) + kScanChunk - 1) / kScanChunk);
+  run_chunked(pool, static_cast<std::size_t>(count), kScanChunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) list(static_cast<Index>(i), chunks[begin / kScanChunk]);
+  });
+  std::vector<T> all;
+  for (const std::vector<T>& chunk : chunks) all.insert(all.end(), chunk.begin(), chunk.end());
+  return all;
+}
+
 // The edges whose curved length is outside (lower, upper), the ones furthest outside first; ties
-// by vertex ids, so the order depends on the mesh only.
+// by vertex ids, so the order depends on the mesh only. The lengths are measured on the pool's threads.
 template <int D>
-std::vector<EdgeToFix> edges_outside(const Mesh<D>& mesh, const P2Operations<D>& operations, double lower, double upper) {
-  std::vector<EdgeToFix> edges;
-  for (Index e = 0; e < mesh.edge_count(); ++e) {
+std::vector<EdgeToFix> edges_outside(const Mesh<D>& mesh, const P2Operations<D>& operations, double lower, double upper, ThreadPool& pool) {
+  std::vector<EdgeToFix> edges = scan_in_chunks<EdgeToFix>(pool, mesh.edge_count(), [&](Index e, std::vector<EdgeToFix>& out) {
     const auto& ends = mesh.edge_vertices(e);
-    if (ends[0] == kNoIndex) continue;  // a removed edge (Mesh::remove_edge)
+    if (ends[0] == kNoIndex) return;  // a removed edge (Mesh::remove_edge)
     const double length = operations.edge_length(ends[0], ends[1]);
-    if (length < lower || length > upper) edges.push_back({length, std::min(ends[0], ends[1]), std::max(ends[0], ends[1])});
-  }
+    if (length < lower || length > upper) out.push_back({length, std::min(ends[0], ends[1]), std::max(ends[0], ends[1])});
+  });
   const bool shortest_first = upper == INFINITY;
   std::sort(edges.begin(), edges.end(), [shortest_first](const EdgeToFix& x, const EdgeToFix& y) {
     if (x.length != y.length) return shortest_first ? x.length < y.length : x.length > y.length;
@@ -116,11 +130,11 @@ std::optional<CavityStatus> collapse(Mesh<D>& mesh, P2Operations<D>& operations,
 
 // Each short edge collapses one way or the other; a refusal counts the reason of the second try.
 template <int D>
-CurvedOperationCount collapse_short_curved_edges(Mesh<D>& mesh, P2Operations<D>& operations) {
+CurvedOperationCount collapse_short_curved_edges(Mesh<D>& mesh, P2Operations<D>& operations, ThreadPool& pool) {
   CurvedOperationCount count;
   std::vector<Index> ball;
   StraightLengths lengths;
-  for (const EdgeToFix& edge : edges_outside(mesh, operations, kCollapseLength, INFINITY)) {
+  for (const EdgeToFix& edge : edges_outside(mesh, operations, kCollapseLength, INFINITY, pool)) {
     if (!still_edge_of_length(mesh, operations, edge, kCollapseLength, INFINITY)) continue;
     std::optional<CavityStatus> status = collapse(mesh, operations, edge.a, edge.b, ball, lengths);
     if (status != CavityStatus::kAccepted) status = collapse(mesh, operations, edge.b, edge.a, ball, lengths);
@@ -133,9 +147,9 @@ CurvedOperationCount collapse_short_curved_edges(Mesh<D>& mesh, P2Operations<D>&
 }
 
 template <int D>
-CurvedOperationCount split_long_curved_edges(Mesh<D>& mesh, P2Operations<D>& operations) {
+CurvedOperationCount split_long_curved_edges(Mesh<D>& mesh, P2Operations<D>& operations, ThreadPool& pool) {
   CurvedOperationCount count;
-  for (const EdgeToFix& edge : edges_outside(mesh, operations, -INFINITY, kSplitLength)) {
+  for (const EdgeToFix& edge : edges_outside(mesh, operations, -INFINITY, kSplitLength, pool)) {
     if (!still_edge_of_length(mesh, operations, edge, -INFINITY, kSplitLength)) continue;
     count.add(operations.split_edge(edge.a, edge.b));
   }
@@ -149,20 +163,19 @@ double worst_quality(const P2Operations<D>& operations, std::span<const Index> e
   return worst;
 }
 
-// The poor elements: below kPoorQuality.
+// The poor elements: below kPoorQuality, in order (their qualities measured on the pool's threads).
 template <int D>
-std::vector<Index> poor_elements(const Mesh<D>& mesh, const P2Operations<D>& operations) {
-  std::vector<Index> poor;
-  for (Index k = 0; k < mesh.element_count(); ++k)
-    if (operations.quality(k) < kPoorQuality) poor.push_back(k);
-  return poor;
+std::vector<Index> poor_elements(const Mesh<D>& mesh, const P2Operations<D>& operations, ThreadPool& pool) {
+  return scan_in_chunks<Index>(pool, mesh.element_count(), [&](Index k, std::vector<Index>& out) {
+    if (operations.quality(k) < kPoorQuality) out.push_back(k);
+  });
 }
 
 // The edges of the poor elements, each once, in vertex order.
 template <int D>
-std::vector<std::pair<Index, Index>> edges_of_poor_elements(const Mesh<D>& mesh, const P2Operations<D>& operations) {
+std::vector<std::pair<Index, Index>> edges_of_poor_elements(const Mesh<D>& mesh, const P2Operations<D>& operations, ThreadPool& pool) {
   std::vector<std::pair<Index, Index>> edges;
-  for (Index k : poor_elements(mesh, operations)) {
+  for (Index k : poor_elements(mesh, operations, pool)) {
     const auto& v = mesh.element(k);
     for (int i = 0; i <= D; ++i)
       for (int j = i + 1; j <= D; ++j) edges.emplace_back(std::min(v[i], v[j]), std::max(v[i], v[j]));
@@ -175,10 +188,10 @@ std::vector<std::pair<Index, Index>> edges_of_poor_elements(const Mesh<D>& mesh,
 // Each edge's shell re-starred from the first vertex of its ring that raises the shell's worst
 // curved quality.
 template <int D>
-CurvedOperationCount swap_poor_shells(Mesh<D>& mesh, P2Operations<D>& operations) {
+CurvedOperationCount swap_poor_shells(Mesh<D>& mesh, P2Operations<D>& operations, ThreadPool& pool) {
   CurvedOperationCount count;
   std::vector<Index> shell, ring;
-  for (const auto& [first, second] : edges_of_poor_elements(mesh, operations)) {
+  for (const auto& [first, second] : edges_of_poor_elements(mesh, operations, pool)) {
     const Index a = first, b = second;
     if (mesh.find_edge(a, b) == kNoIndex) continue;
     collect_shell(mesh, a, b, shell);
@@ -194,11 +207,11 @@ CurvedOperationCount swap_poor_shells(Mesh<D>& mesh, P2Operations<D>& operations
 
 // The inner vertices of the poor elements, each once, in order.
 template <int D>
-std::vector<Index> inner_vertices_of_poor_elements(const Mesh<D>& mesh, const P2Operations<D>& operations) {
+std::vector<Index> inner_vertices_of_poor_elements(const Mesh<D>& mesh, const P2Operations<D>& operations, ThreadPool& pool) {
   std::vector<bool> inner(static_cast<std::size_t>(mesh.vertex_count()), false);
   for (Index v : volume_vertices(mesh)) inner[static_cast<std::size_t>(v)] = !mesh.vertex_removed(v);
   std::vector<Index> vertices;
-  for (Index k : poor_elements(mesh, operations))
+  for (Index k : poor_elements(mesh, operations, pool))
     for (Index v : mesh.element(k))
       if (inner[static_cast<std::size_t>(v)]) vertices.push_back(v);
   std::sort(vertices.begin(), vertices.end());
@@ -210,10 +223,10 @@ std::vector<Index> inner_vertices_of_poor_elements(const Mesh<D>& mesh, const P2
 // curved edges unit (w + (v − w)/l(v, w) over its neighbours w, as the P1 smoothing), the whole
 // step or half of it, when that raises its ball's worst curved quality and keeps its unit edges.
 template <int D>
-CurvedOperationCount smooth_curved(Mesh<D>& mesh, P2Operations<D>& operations) {
+CurvedOperationCount smooth_curved(Mesh<D>& mesh, P2Operations<D>& operations, ThreadPool& pool) {
   CurvedOperationCount count;
   std::vector<Index> ball, neighbors;
-  for (Index v : inner_vertices_of_poor_elements(mesh, operations)) {
+  for (Index v : inner_vertices_of_poor_elements(mesh, operations, pool)) {
     collect_ball(mesh, v, ball);
     other_vertices<D>(mesh, ball, v, v, neighbors);
     Vec<D> target{};
@@ -235,17 +248,18 @@ CurvedOperationCount smooth_curved(Mesh<D>& mesh, P2Operations<D>& operations) {
 
 // One pass with operations made afresh: their per-vertex metrics follow the ids of a compact mesh.
 template <int D>
-CurvedPass run_curved_pass(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, P2CavityCounters& counters) {
+CurvedPass run_curved_pass(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, P2CavityCounters& counters,
+                           ThreadPool& pool) {
   const auto start = std::chrono::steady_clock::now();
   CurvedPass pass;
   P2CavityOptions positive = options;
   positive.positive_straight_elements = true;
   positive.straight_quality_floor = kStraightQualityFloor;
   P2Operations<D> operations(mesh, field, nullptr, positive);
-  pass.collapses = collapse_short_curved_edges(mesh, operations);
-  pass.splits = split_long_curved_edges(mesh, operations);
-  pass.swaps = swap_poor_shells(mesh, operations);
-  pass.moves = smooth_curved(mesh, operations);
+  pass.collapses = collapse_short_curved_edges(mesh, operations, pool);
+  pass.splits = split_long_curved_edges(mesh, operations, pool);
+  pass.swaps = swap_poor_shells(mesh, operations, pool);
+  pass.moves = smooth_curved(mesh, operations, pool);
   counters += operations.cavity_operator().counters();
   mesh.compact();
   pass.vertices = mesh.vertex_count();
@@ -257,10 +271,11 @@ CurvedPass run_curved_pass(Mesh<D>& mesh, const MetricField<D>& field, const P2C
 }  // namespace
 
 template <int D>
-CurvedAdaptationRun adapt_curved(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, int max_passes) {
+CurvedAdaptationRun adapt_curved(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, int max_passes, int threads) {
   CurvedAdaptationRun run;
+  ThreadPool pool(std::max(1, threads));
   for (int pass = 1; pass <= max_passes && !run.converged; ++pass) {
-    const CurvedPass& last = run.passes.emplace_back(run_curved_pass(mesh, field, options, run.counters));
+    const CurvedPass& last = run.passes.emplace_back(run_curved_pass(mesh, field, options, run.counters, pool));
     run.seconds += last.seconds;
     run.converged = static_cast<double>(last.splits.done + last.collapses.done) <= kConvergedChange * static_cast<double>(last.vertices);
   }
@@ -295,8 +310,8 @@ CurvedMeasures measure_curved(Mesh<D>& mesh, const MetricField<D>& field) {
   return measures;
 }
 
-template CurvedAdaptationRun adapt_curved(Mesh<2>&, const MetricField<2>&, const P2CavityOptions&, int);
-template CurvedAdaptationRun adapt_curved(Mesh<3>&, const MetricField<3>&, const P2CavityOptions&, int);
+template CurvedAdaptationRun adapt_curved(Mesh<2>&, const MetricField<2>&, const P2CavityOptions&, int, int);
+template CurvedAdaptationRun adapt_curved(Mesh<3>&, const MetricField<3>&, const P2CavityOptions&, int, int);
 template CurvedMeasures measure_curved(Mesh<2>&, const MetricField<2>&);
 template CurvedMeasures measure_curved(Mesh<3>&, const MetricField<3>&);
 

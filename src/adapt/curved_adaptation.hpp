@@ -3,8 +3,9 @@
 // splits of those longer than √2, both judged by the curved edge's Riemannian length, then P2 swaps
 // and vertex moves that raise the worst curved mean ratio of their cavity, until a pass changes
 // almost nothing. Every operation is a P2 cavity operation (cavity/p2_operations.hpp), so
-// the mesh stays P2 and certified above the Jacobian floor after each one. Serial: the output does
-// not depend on the thread count. Interior only: boundary edges keep what the P1 loop made.
+// the mesh stays P2 and certified above the Jacobian floor after each one. The operations are
+// serial (the scans that list candidates run on threads): the output does not depend on the thread
+// count. Interior only: boundary edges keep what the P1 loop made.
 #pragma once
 
 #include <vector>
@@ -47,9 +48,12 @@ struct CurvedMeasures {
 };
 
 // Runs at most `max_passes` curved passes on `mesh` (P2, certified above options.jacobian_floor,
-// with its topology), whose metric is `field`; the mesh is compact on return.
+// with its topology), whose metric is `field`; the mesh is compact on return. The passes' scans of
+// the whole mesh (curved lengths, curved qualities) run on `threads`; the operations are serial, and
+// the output does not depend on the thread count.
 template <int D>
-CurvedAdaptationRun adapt_curved(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, int max_passes);
+CurvedAdaptationRun adapt_curved(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, int max_passes,
+                                 int threads = 1);
 
 template <int D>
 CurvedMeasures measure_curved(Mesh<D>& mesh, const MetricField<D>& field);
