@@ -79,7 +79,7 @@ double P2Operations<D>::straight_quality_to_keep(std::span<const Index> elements
 }
 
 template <int D>
-CavityStatus P2Operations<D>::split_edge(Index a, Index b, Index* inserted) {
+CavityStatus P2Operations<D>::split_edge(Index a, Index b, Index* inserted, Bar bar) {
   const Index edge = mesh_.find_edge(a, b);
   if (edge == kNoIndex) return CavityStatus::kNotStarShaped;
   collect_shell(mesh_, a, b, cavity_);
@@ -102,6 +102,8 @@ CavityStatus P2Operations<D>::split_edge(Index a, Index b, Index* inserted) {
       }
   P2CavityRequest<D> request;
   request.start_nodes = starts_;
+  request.quality_to_beat = bar.quality_to_beat;
+  request.unit_edges_to_keep = bar.unit_edges_to_keep;
   request.straight_quality_to_keep = straight_quality_to_keep(cavity_);
   const CavityStatus status = operator_.apply(mesh_, cavity_, m, request);
   if (status != CavityStatus::kAccepted)
@@ -125,7 +127,7 @@ void P2Operations<D>::shifted_starts(Index from_vertex, const Vec<D>& from, Inde
 }
 
 template <int D>
-CavityStatus P2Operations<D>::collapse_edge(Index removed, Index kept) {
+CavityStatus P2Operations<D>::collapse_edge(Index removed, Index kept, Bar bar) {
   if (mesh_.find_edge(removed, kept) == kNoIndex) return CavityStatus::kNotStarShaped;
   collect_ball(mesh_, removed, cavity_);
   const Index vertex[1] = {removed};
@@ -136,6 +138,8 @@ CavityStatus P2Operations<D>::collapse_edge(Index removed, Index kept) {
   P2CavityRequest<D> request;
   request.removable_vertex = removed;
   request.start_nodes = starts_;
+  request.quality_to_beat = bar.quality_to_beat;
+  request.unit_edges_to_keep = bar.unit_edges_to_keep;
   request.straight_quality_to_keep = straight_quality_to_keep(cavity_);
   return operator_.apply(mesh_, cavity_, kept, request);
 }

@@ -29,16 +29,16 @@ class P2Operations {
   // `boundary` (may be null) proposes boundary nodes for the cavities' boundary edges.
   P2Operations(Mesh<D>& mesh, const MetricField<D>& field, BoundaryNodeSource<D>* boundary, P2CavityOptions options);
 
-  // Each returns the P2 operator's verdict; on anything but kAccepted the mesh is unchanged.
-  CavityStatus split_edge(Index a, Index b, Index* inserted = nullptr);
-  CavityStatus collapse_edge(Index removed, Index kept);
-  // A swap or move with `bar.quality_to_beat` ≥ 0 is refused (kNoImprovement) unless every new
+  // An operation with `bar.quality_to_beat` ≥ 0 is refused (kNoImprovement) unless every new
   // element's curved mean ratio is above it, and with `bar.unit_edges_to_keep` ≥ 0 unless as many
   // of its new inner edges are unit (P2CavityRequest).
   struct Bar {
     double quality_to_beat = -1;
     int unit_edges_to_keep = -1;
   };
+  // Each returns the P2 operator's verdict; on anything but kAccepted the mesh is unchanged.
+  CavityStatus split_edge(Index a, Index b, Index* inserted = nullptr, Bar bar = {});
+  CavityStatus collapse_edge(Index removed, Index kept, Bar bar = {});
   CavityStatus swap_edge(Index a, Index b, Index apex, Bar bar = {});
   CavityStatus move_vertex(Index v, const Vec<D>& x, Bar bar = {});
 
