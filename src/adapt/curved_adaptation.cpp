@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <optional>
 #include <unordered_map>
 
@@ -177,11 +178,13 @@ CurvedOperationCount split_long_curved_edges(Mesh<D>& mesh, P2Operations<D>& ope
 // The worst curved quality of the mesh's elements (measured on the pool's threads).
 template <int D>
 double worst_element_quality(const Mesh<D>& mesh, const P2Operations<D>& operations, ThreadPool& pool) {
-  const std::vector<double> worst_per_chunk = scan_in_chunks<double>(pool, mesh.element_count(), [&](Index k, std::vector<double>& out) {
-    if (out.empty()) out.push_back(INFINITY);
-    out.front() = std::min(out.front(), operations.quality(k));
+  const auto count = static_cast<std::size_t>(mesh.element_count());
+  std::vector<double> worst((count + kScanChunk - 1) / kScanChunk, INFINITY);  // per chunk
+  run_chunked(pool, count, kScanChunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+      worst[begin / kScanChunk] = std::min(worst[begin / kScanChunk], operations.quality(static_cast<Index>(k)));
   });
-  return worst_per_chunk.empty() ? INFINITY : *std::min_element(worst_per_chunk.begin(), worst_per_chunk.end());
+  return std::accumulate(worst.begin(), worst.end(), INFINITY, [](double x, double y) { return std::min(x, y); });
 }
 
 // The poor elements: below kPoorQuality, in order (their qualities measured on the pool's threads).
