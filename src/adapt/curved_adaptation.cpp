@@ -4,12 +4,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <numeric>
 #include <optional>
-#include <unordered_map>
 
 #include "adapt/reinsertion_curving.hpp"
 #include "base/thread_pool.hpp"
+#include "bezier/p2_element.hpp"
 #include "cavity/p2_operations.hpp"
 #include "mesh/ball_and_shell.hpp"
 
@@ -98,6 +99,36 @@ double worst_quality(const P2Operations<D>& operations, std::span<const Index> e
   return worst;
 }
 
+// The refusals' kinds in their memo's digests.
+enum RefusalKind : std::uint64_t { kSwapRefusal = 1, kMoveRefusal };
+
+// What an operation on a cavity reads there: each element's P2 nodes and its vertices' log-metrics,
+// in order, with the points that say which operation (its edge's ends, its vertex).
+template <int D>
+Digest cavity_digest(RefusalKind kind, const Mesh<D>& mesh, const P2Operations<D>& operations, std::span<const Index> elements,
+                     std::initializer_list<Index> vertices) {
+  Digest digest(kind);
+  for (Index v : vertices) digest.add_all(mesh.vertex(v).c);
+  for (Index k : elements) {
+    for (const Vec<D>& node : gather_p2_element(mesh, k).nodes) digest.add_all(node.c);
+    for (Index v : mesh.element(k)) digest.add_all(operations.log_metric(v).entries);
+  }
+  return digest;
+}
+
+// attempt()'s verdict, or the refusal remembered for the same cavity unchanged (not tried again).
+// The digest leaves out the ring around the cavity, whose edges a correction may bend: a change
+// there alone does not bring an operation back (most of a pass's candidates are the last pass's
+// refusals, each a whole shell or ball optimized and certified).
+template <typename Try>
+CavityStatus unless_refused_before(DigestMemo& refusals, const Digest& cavity, const Try& attempt) {
+  const Digest::Value key = cavity.value();
+  if (const std::optional<double> refused = refusals.find(key)) return static_cast<CavityStatus>(static_cast<int>(*refused));
+  const CavityStatus status = attempt();
+  if (status != CavityStatus::kAccepted) refusals.remember(key, static_cast<double>(static_cast<int>(status)));
+  return status;
+}
+
 // What the elements a collapse or split makes must beat: the worst curved quality of those it
 // replaces, or the mesh's worst when they are all better. So the mesh's worst element never gets
 // worse (the P1 loop's collapses allow a fall to 0.3 of the worst; on the sphere shell the passes
@@ -107,41 +138,22 @@ double quality_to_keep(const P2Operations<D>& operations, std::span<const Index>
   return std::min(worst_quality(operations, cavity), mesh_worst);
 }
 
-// A collapse sweep's straight lengths from a kept vertex to another, each measured once: a collapse
-// moves no vertex, so they hold for the whole sweep (the segment's length is a high-precision
-// quadrature of the metric along it, and the same pairs come back with every short edge at a vertex).
-class StraightLengths {
- public:
-  template <int D>
-  double operator()(const P2Operations<D>& operations, Index from, Index to) {
-    const auto key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(from)) << 32) | static_cast<std::uint32_t>(to);
-    const auto [at, added] = lengths_.try_emplace(key, 0.0);
-    if (added) at->second = operations.straight_length(from, to);
-    return at->second;
-  }
-
- private:
-  std::unordered_map<std::uint64_t, double> lengths_;
-};
-
 // Whether collapsing `removed` onto `kept` leaves every straight segment from `kept` to the ball's
 // vertices within √2: the curved edges the optimizer makes are no longer, so no collapse makes work
 // for the next split (the P1 loop's closed window, docs/adaptation.md).
 template <int D>
-bool collapse_keeps_lengths(const Mesh<D>& mesh, const P2Operations<D>& operations, Index removed, Index kept, std::vector<Index>& ball,
-                            StraightLengths& lengths) {
-  collect_ball(mesh, removed, ball);
-  for (Index k : ball)
-    for (Index w : mesh.element(k))
-      if (w != removed && w != kept && lengths(operations, kept, w) > kSplitLength) return false;
-  return true;
+bool collapse_keeps_lengths(const Mesh<D>& mesh, const P2Operations<D>& operations, Index removed, Index kept, std::span<const Index> ball,
+                            std::vector<Index>& ring) {
+  other_vertices<D>(mesh, ball, removed, kept, ring);
+  return std::all_of(ring.begin(), ring.end(), [&](Index w) { return operations.straight_length(kept, w) <= kSplitLength; });
 }
 
 // The P2 operator's verdict, or none when the collapse would make a long edge (not tried).
 template <int D>
 std::optional<CavityStatus> collapse(Mesh<D>& mesh, P2Operations<D>& operations, Index removed, Index kept, std::vector<Index>& ball,
-                                     StraightLengths& lengths, double mesh_worst) {
-  if (!collapse_keeps_lengths(mesh, operations, removed, kept, ball, lengths)) return std::nullopt;
+                                     std::vector<Index>& ring, double mesh_worst) {
+  collect_ball(mesh, removed, ball);
+  if (!collapse_keeps_lengths(mesh, operations, removed, kept, ball, ring)) return std::nullopt;
   return operations.collapse_edge(removed, kept, {quality_to_keep(operations, ball, mesh_worst), -1});
 }
 
@@ -149,12 +161,11 @@ std::optional<CavityStatus> collapse(Mesh<D>& mesh, P2Operations<D>& operations,
 template <int D>
 CurvedOperationCount collapse_short_curved_edges(Mesh<D>& mesh, P2Operations<D>& operations, double mesh_worst, ThreadPool& pool) {
   CurvedOperationCount count;
-  std::vector<Index> ball;
-  StraightLengths lengths;
+  std::vector<Index> ball, ring;
   for (const EdgeToFix& edge : edges_outside(mesh, operations, kCollapseLength, INFINITY, pool)) {
     if (!still_edge_of_length(mesh, operations, edge, kCollapseLength, INFINITY)) continue;
-    std::optional<CavityStatus> status = collapse(mesh, operations, edge.a, edge.b, ball, lengths, mesh_worst);
-    if (status != CavityStatus::kAccepted) status = collapse(mesh, operations, edge.b, edge.a, ball, lengths, mesh_worst);
+    std::optional<CavityStatus> status = collapse(mesh, operations, edge.a, edge.b, ball, ring, mesh_worst);
+    if (status != CavityStatus::kAccepted) status = collapse(mesh, operations, edge.b, edge.a, ball, ring, mesh_worst);
     if (status)
       count.add(*status);
     else
@@ -212,19 +223,21 @@ std::vector<std::pair<Index, Index>> edges_of_poor_elements(const Mesh<D>& mesh,
 // Each edge's shell re-starred from the first vertex of its ring that raises the shell's worst
 // curved quality.
 template <int D>
-CurvedOperationCount swap_poor_shells(Mesh<D>& mesh, P2Operations<D>& operations, ThreadPool& pool) {
+CurvedOperationCount swap_poor_shells(Mesh<D>& mesh, P2Operations<D>& operations, DigestMemo& refusals, ThreadPool& pool) {
   CurvedOperationCount count;
   std::vector<Index> shell, ring;
   for (const auto& [first, second] : edges_of_poor_elements(mesh, operations, pool)) {
     const Index a = first, b = second;
     if (mesh.find_edge(a, b) == kNoIndex) continue;
     collect_shell(mesh, a, b, shell);
-    const typename P2Operations<D>::Bar bar{kQualityGain * worst_quality(operations, shell), unit_length(operations.edge_length(a, b))};
-    other_vertices<D>(mesh, shell, a, b, ring);
-    CavityStatus status = CavityStatus::kNotStarShaped;
-    for (std::size_t i = 0; i < ring.size() && status != CavityStatus::kAccepted && status != CavityStatus::kCrossesBoundary; ++i)
-      status = operations.swap_edge(a, b, ring[i], bar);
-    count.add(status);
+    count.add(unless_refused_before(refusals, cavity_digest(kSwapRefusal, mesh, operations, shell, {a, b}), [&] {
+      const typename P2Operations<D>::Bar bar{kQualityGain * worst_quality(operations, shell), unit_length(operations.edge_length(a, b))};
+      other_vertices<D>(mesh, shell, a, b, ring);
+      CavityStatus status = CavityStatus::kNotStarShaped;
+      for (std::size_t i = 0; i < ring.size() && status != CavityStatus::kAccepted && status != CavityStatus::kCrossesBoundary; ++i)
+        status = operations.swap_edge(a, b, ring[i], bar);
+      return status;
+    }));
   }
   return count;
 }
@@ -247,45 +260,49 @@ std::vector<Index> inner_vertices_of_poor_elements(const Mesh<D>& mesh, const P2
 // curved edges unit (w + (v − w)/l(v, w) over its neighbours w, as the P1 smoothing), the whole
 // step or half of it, when that raises its ball's worst curved quality and keeps its unit edges.
 template <int D>
-CurvedOperationCount smooth_curved(Mesh<D>& mesh, P2Operations<D>& operations, ThreadPool& pool) {
+CurvedOperationCount smooth_curved(Mesh<D>& mesh, P2Operations<D>& operations, DigestMemo& refusals, ThreadPool& pool) {
   CurvedOperationCount count;
   std::vector<Index> ball, neighbors;
   for (Index v : inner_vertices_of_poor_elements(mesh, operations, pool)) {
     collect_ball(mesh, v, ball);
-    other_vertices<D>(mesh, ball, v, v, neighbors);
-    Vec<D> target{};
-    int unit = 0;
-    for (Index w : neighbors) {
-      const double length = operations.edge_length(v, w);
-      target = target + (mesh.vertex(w) + (1 / length) * (mesh.vertex(v) - mesh.vertex(w)));
-      unit += unit_length(length);
-    }
-    const Vec<D> from = mesh.vertex(v), step = (1.0 / static_cast<double>(neighbors.size())) * target - from;
-    const typename P2Operations<D>::Bar bar{kQualityGain * worst_quality(operations, ball), unit};
-    CavityStatus status = operations.move_vertex(v, from + step, bar);
-    if (status == CavityStatus::kNoImprovement || status == CavityStatus::kRejectedByCurving)
-      status = operations.move_vertex(v, from + 0.5 * step, bar);
-    count.add(status);
+    count.add(unless_refused_before(refusals, cavity_digest(kMoveRefusal, mesh, operations, ball, {v}), [&] {
+      other_vertices<D>(mesh, ball, v, v, neighbors);
+      Vec<D> target{};
+      int unit = 0;
+      for (Index w : neighbors) {
+        const double length = operations.edge_length(v, w);
+        target = target + (mesh.vertex(w) + (1 / length) * (mesh.vertex(v) - mesh.vertex(w)));
+        unit += unit_length(length);
+      }
+      const Vec<D> from = mesh.vertex(v), step = (1.0 / static_cast<double>(neighbors.size())) * target - from;
+      const typename P2Operations<D>::Bar bar{kQualityGain * worst_quality(operations, ball), unit};
+      CavityStatus status = operations.move_vertex(v, from + step, bar);
+      if (status == CavityStatus::kNoImprovement || status == CavityStatus::kRejectedByCurving)
+        status = operations.move_vertex(v, from + 0.5 * step, bar);
+      return status;
+    }));
   }
   return count;
 }
 
 // One pass with operations made afresh: their per-vertex metrics follow the ids of a compact mesh.
+// The memo keeps the lengths and qualities measured in earlier passes: most edges and elements come
+// back unchanged, and each measure is a quadrature with a matrix exponential per point.
 template <int D>
 CurvedPass run_curved_pass(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, P2CavityCounters& counters,
-                           ThreadPool& pool) {
+                           DigestMemo& measures, DigestMemo& refusals, ThreadPool& pool) {
   const auto start = std::chrono::steady_clock::now();
   CurvedPass pass;
   P2CavityOptions positive = options;
   positive.positive_straight_elements = true;
   positive.straight_quality_floor = kStraightQualityFloor;
-  P2Operations<D> operations(mesh, field, nullptr, positive);
+  P2Operations<D> operations(mesh, field, nullptr, positive, &measures);
   // (Collapses and splits keep it: it holds for the whole pass.)
   const double mesh_worst = worst_element_quality(mesh, operations, pool);
   pass.collapses = collapse_short_curved_edges(mesh, operations, mesh_worst, pool);
   pass.splits = split_long_curved_edges(mesh, operations, mesh_worst, pool);
-  pass.swaps = swap_poor_shells(mesh, operations, pool);
-  pass.moves = smooth_curved(mesh, operations, pool);
+  pass.swaps = swap_poor_shells(mesh, operations, refusals, pool);
+  pass.moves = smooth_curved(mesh, operations, refusals, pool);
   counters += operations.cavity_operator().counters();
   mesh.compact();
   pass.vertices = mesh.vertex_count();
@@ -300,12 +317,13 @@ template <int D>
 CurvedAdaptationRun adapt_curved(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, int max_passes, int threads) {
   CurvedAdaptationRun run;
   ThreadPool pool(std::max(1, threads));
+  DigestMemo measures, refusals;
   for (int pass = 1; pass <= max_passes && !run.converged; ++pass) {
-    const CurvedPass& last = run.passes.emplace_back(run_curved_pass(mesh, field, options, run.counters, pool));
+    const CurvedPass& last = run.passes.emplace_back(run_curved_pass(mesh, field, options, run.counters, measures, refusals, pool));
     run.seconds += last.seconds;
     run.converged = static_cast<double>(last.splits.done + last.collapses.done) <= kConvergedChange * static_cast<double>(last.vertices);
   }
-  return run;
+    return run;
 }
 
 template <int D>

@@ -24,12 +24,30 @@ Vec<D> point_on_edge(const Vec<D>& a, const Vec<D>& node, const Vec<D>& b, doubl
   return (1 - t) * (1 - 2 * t) * a + 4 * t * (1 - t) * node + t * (2 * t - 1) * b;
 }
 
+// The measures' kinds in a memo's digests.
+enum MeasureKind : std::uint64_t { kCurvedLength = 1, kStraightLength, kCurvedQuality };
+
+// A segment's or curved edge's inputs: its ends, their log-metrics, the back element the field's
+// search starts from, and the point where the field is sampled.
+template <int D>
+Digest edge_digest(MeasureKind kind, const Vec<D>& a, const Vec<D>& b, const SymMat<D>& log_a, const SymMat<D>& log_b, Index hint,
+                   const Vec<D>& node) {
+  Digest digest(kind);
+  for (const Vec<D>* point : {&a, &b, &node}) digest.add_all(point->c);
+  digest.add_all(log_a.entries);
+  digest.add_all(log_b.entries);
+  digest.add_word(static_cast<std::uint64_t>(hint));
+  return digest;
+}
+
 }  // namespace
 
 template <int D>
-P2Operations<D>::P2Operations(Mesh<D>& mesh, const MetricField<D>& field, BoundaryNodeSource<D>* boundary, P2CavityOptions options)
+P2Operations<D>::P2Operations(Mesh<D>& mesh, const MetricField<D>& field, BoundaryNodeSource<D>* boundary, P2CavityOptions options,
+                              DigestMemo* memo)
     : mesh_(mesh),
       field_(field),
+      memo_(memo),
       straight_quality_floor_(options.straight_quality_floor),
       log_metrics_(static_cast<std::size_t>(mesh.vertex_count())),
       hints_(static_cast<std::size_t>(mesh.vertex_count()), kNoIndex),
@@ -191,15 +209,19 @@ CavityStatus P2Operations<D>::move_vertex(Index v, const Vec<D>& x, Bar bar) {
 template <int D>
 double P2Operations<D>::edge_length(Index a, Index b) const {
   const auto sa = static_cast<std::size_t>(a), sb = static_cast<std::size_t>(b);
-  return high_precision_edge_length(field_, mesh_.vertex(a), mesh_.vertex(b), log_metrics_[sa], log_metrics_[sb],
-                                    mesh_.edge_node(mesh_.find_edge(a, b)), hints_[sa]);
+  const Vec<D>& node = mesh_.edge_node(mesh_.find_edge(a, b));
+  return remembered(edge_digest(kCurvedLength, mesh_.vertex(a), mesh_.vertex(b), log_metrics_[sa], log_metrics_[sb], hints_[sa], node), [&] {
+    return high_precision_edge_length(field_, mesh_.vertex(a), mesh_.vertex(b), log_metrics_[sa], log_metrics_[sb], node, hints_[sa]);
+  });
 }
 
 template <int D>
 double P2Operations<D>::straight_length(Index a, Index b) const {
   const auto sa = static_cast<std::size_t>(a), sb = static_cast<std::size_t>(b);
-  const Vec<D> A = mesh_.vertex(a), B = mesh_.vertex(b);
-  return high_precision_edge_length(field_, A, B, log_metrics_[sa], log_metrics_[sb], 0.5 * (A + B), hints_[sa]);
+  const Vec<D> A = mesh_.vertex(a), B = mesh_.vertex(b), middle = 0.5 * (A + B);
+  return remembered(edge_digest(kStraightLength, A, B, log_metrics_[sa], log_metrics_[sb], hints_[sa], middle), [&] {
+    return high_precision_edge_length(field_, A, B, log_metrics_[sa], log_metrics_[sb], middle, hints_[sa]);
+  });
 }
 
 template <int D>
@@ -212,7 +234,12 @@ std::array<SymMat<D>, D + 1> P2Operations<D>::element_log_metrics(Index k) const
 
 template <int D>
 double P2Operations<D>::quality(Index k) const {
-  return curved_mean_ratio(gather_p2_element(mesh_, k), element_log_metrics(k)).value;
+  const P2Element<D> element = gather_p2_element(mesh_, k);
+  const std::array<SymMat<D>, D + 1> log_metrics = element_log_metrics(k);
+  Digest digest(kCurvedQuality);
+  for (const Vec<D>& node : element.nodes) digest.add_all(node.c);
+  for (const SymMat<D>& log_metric : log_metrics) digest.add_all(log_metric.entries);
+  return remembered(digest, [&] { return curved_mean_ratio(element, log_metrics).value; });
 }
 
 template <int D>

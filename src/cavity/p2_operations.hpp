@@ -17,6 +17,7 @@
 #include <span>
 #include <vector>
 
+#include "base/digest_memo.hpp"
 #include "cavity/p2_cavity_operator.hpp"
 
 namespace hocav {
@@ -26,8 +27,10 @@ class P2Operations {
  public:
   // `mesh`: P2 with its topology; `field`: the metric on its back mesh (both outlive this object).
   // Each vertex's log-metric is evaluated in the field; new vertices get theirs on creation.
-  // `boundary` (may be null) proposes boundary nodes for the cavities' boundary edges.
-  P2Operations(Mesh<D>& mesh, const MetricField<D>& field, BoundaryNodeSource<D>* boundary, P2CavityOptions options);
+  // `boundary` (may be null) proposes boundary nodes for the cavities' boundary edges. `memo` (may be
+  // null; used with this field only) remembers edge lengths and qualities by their exact inputs.
+  P2Operations(Mesh<D>& mesh, const MetricField<D>& field, BoundaryNodeSource<D>* boundary, P2CavityOptions options,
+               DigestMemo* memo = nullptr);
 
   // An operation with `bar.quality_to_beat` ≥ 0 is refused (kNoImprovement) unless every new
   // element's curved mean ratio is above it, and with `bar.unit_edges_to_keep` ≥ 0 unless as many
@@ -63,6 +66,11 @@ class P2Operations {
   Index add_vertex(const Vec<D>& x, Index near);
   void remove_last_vertex();
   std::array<SymMat<D>, D + 1> element_log_metrics(Index k) const;
+  // The memo's value for `key`, or compute() without a memo.
+  template <typename Compute>
+  double remembered(const Digest& key, const Compute& compute) const {
+    return memo_ ? memo_->value(key.value(), compute) : compute();
+  }
   // The floor of the new straight simplices' quality for an operation replacing `elements`:
   // min(options' straight_quality_floor, their worst), or −1 when the options ask none.
   double straight_quality_to_keep(std::span<const Index> elements) const;
@@ -72,6 +80,7 @@ class P2Operations {
 
   Mesh<D>& mesh_;
   const MetricField<D>& field_;
+  DigestMemo* memo_;
   double straight_quality_floor_;
   std::vector<SymMat<D>> log_metrics_;
   std::vector<Index> hints_;
