@@ -65,6 +65,26 @@ void add_round(PartCurving& total, const PartCurving& round) {
   total.completion.seconds = completion_seconds;
 }
 
+// Later rounds reinsert the vertices still pending only (those every round so far froze on its
+// interfaces): they partition, send and merge the elements within this many rings of them (a
+// vertex's cavity is its ball, and a correction bends the edges around it, one ring further); the
+// rest of the mesh stays on rank 0 as a part of its own that no process curves.
+constexpr int kBandRings = 2;
+
+// Per element: within `rings` rings of a marked vertex (ring 1: the elements holding one).
+template <int D>
+std::vector<char> elements_near(const Mesh<D>& mesh, std::vector<char> marked, int rings) {
+  std::vector<char> near(static_cast<std::size_t>(mesh.element_count()), 0);
+  for (int ring = 1; ring <= rings; ++ring) {
+    for (Index k = 0; k < mesh.element_count(); ++k)
+      for (Index v : mesh.element(k)) near[k] = near[k] || marked[v];
+    for (Index k = 0; k < mesh.element_count(); ++k)
+      if (near[k])
+        for (Index v : mesh.element(k)) marked[v] = 1;
+  }
+  return near;
+}
+
 // One round on rank 0: partition, send, curve part 0, receive, merge.
 template <int D>
 struct RootRound {
@@ -72,15 +92,16 @@ struct RootRound {
   const MetricField<D>& field;
   const BoundaryGeometry<D>* geometry;
   const CurvingOptions& options;
-  std::vector<char> old_interface;  // per vertex of `mesh`: on the last round's interfaces
+  // Per vertex of `mesh`: not reinserted yet, frozen on the interfaces of every round so far (empty
+  // before the first).
+  std::vector<char> pending;
   DistributedCurvingRound figures;
 
-  PartCurving run() {
+  // A round whose curved elements are cut into `band_parts` parts (the first round: every element).
+  PartCurving run(int band_parts) {
     const auto start = std::chrono::steady_clock::now();
     const int count = process_count();
-    // Curving costs about the same per element: equal loads.
-    const std::vector<double> loads(static_cast<std::size_t>(mesh.element_count()), 1.0);
-    std::vector<MeshPart<D>> parts = split_mesh(mesh, partition_graph(element_graph(mesh, loads, old_interface), count), count);
+    std::vector<MeshPart<D>> parts = split_mesh(mesh, part_of_elements(count, band_parts), count + 1);  // (part `count`: not curved)
     figures.interface_faces = interface_face_count(parts);
     for (int p = 1; p < count; ++p) {
       send(p, pack_part(parts[p].mesh, std::span<const Index>(parts[p].global_ids)));
@@ -98,17 +119,34 @@ struct RootRound {
     return round;
   }
 
+  // The first round: every element in one of `count` parts of equal element counts (curving costs
+  // about the same per element). Later rounds: the elements near the pending vertices in `band_parts`
+  // parts so, the others in part `count`.
+  std::vector<int> part_of_elements(int count, int band_parts) const {
+    if (pending.empty()) {
+      const std::vector<double> loads(static_cast<std::size_t>(mesh.element_count()), 1.0);
+      return partition_graph(element_graph(mesh, loads, {}), count);
+    }
+    std::vector<int> part_of(static_cast<std::size_t>(mesh.element_count()), count);
+    std::vector<Index> band;
+    const WeightedGraph graph = member_graph(mesh, elements_near(mesh, pending, kBandRings), band);
+    if (band.empty()) return part_of;
+    const std::vector<int> part_of_band = band_parts > 1 ? partition_graph(graph, band_parts) : std::vector<int>(band.size(), 0);
+    for (std::size_t i = 0; i < band.size(); ++i) part_of[band[i]] = part_of_band[i];
+    return part_of;
+  }
+
   std::vector<SymMat<D>> log_metrics_of(const MeshPart<D>& part) const {
     std::vector<SymMat<D>> out;
     for (Index g : part.global_ids) out.push_back(field.vertex_log_metric(g));
     return out;
   }
 
-  // Round 2: the old interfaces' vertices; round 1: empty (all).
+  // The pending vertices; in the first round empty (all).
   std::vector<char> region_of(const MeshPart<D>& part) const {
     std::vector<char> out;
-    if (!old_interface.empty())
-      for (Index g : part.global_ids) out.push_back(old_interface[g]);
+    if (!pending.empty())
+      for (Index g : part.global_ids) out.push_back(pending[g]);
     return out;
   }
 
@@ -121,10 +159,14 @@ struct RootRound {
     mesh = std::move(merged.mesh);
     mesh.build_topology();
     figures.interface_vertices = static_cast<Index>(std::count(merged.interface_vertex.begin(), merged.interface_vertex.end(), 1));
-    if (!old_interface.empty())
-      for (std::size_t v = 0; v < old_interface.size(); ++v)
-        if (old_interface[v] && merged.interface_vertex[v]) ++figures.old_interface_vertices_frozen_again;
-    old_interface = std::move(merged.interface_vertex);
+    if (pending.empty()) {
+      pending = std::move(merged.interface_vertex);
+      return;
+    }
+    for (std::size_t v = 0; v < pending.size(); ++v) {
+      pending[v] = pending[v] && merged.interface_vertex[v];
+      figures.old_interface_vertices_frozen_again += pending[v];
+    }
   }
 
   void send(int to, const std::vector<std::byte>& bytes) { send_bytes(to, bytes, figures.bytes_sent); }
@@ -147,9 +189,10 @@ CurvingReport curve_distributed(Mesh<D>& mesh, const MetricField<D>& field, cons
   RootRound<D> root{mesh, field, geometry, part_options, {}, {}};
   PartCurving total;
   for (int round = 1; round <= kDistributedCurvingRounds; ++round) {
+    if (round > 1 && std::find(root.pending.begin(), root.pending.end(), 1) == root.pending.end()) break;
     root.figures = {};
     root.figures.round = round;
-    add_round(total, root.run());
+    add_round(total, root.run(round < kDistributedCurvingRounds ? process_count() : 1));
     if (on_round) on_round(root.figures);
   }
   for (int p = 1; p < process_count(); ++p) send_bytes(p, {});  // stop

@@ -11,14 +11,17 @@
 
 namespace hocav {
 
-// The first round curves every part, the second the old interfaces inside the new parts.
-constexpr int kDistributedCurvingRounds = 2;
+// The first round curves every part; the second the vertices of its interfaces, on the elements
+// near them cut into as many parts; the third those the second froze again, near them in one part
+// (rank 0's). A round with nothing pending is not run.
+constexpr int kDistributedCurvingRounds = 3;
 
 struct DistributedCurvingRound {
   int round = 0;                 // 1-based
   Index interface_faces = 0;     // between parts, each counted once
   Index interface_vertices = 0;  // shared by parts in the round
-  // Round 2: vertices of round 1's interfaces that lie on round 2's too (not reinserted).
+  // Rounds 2 and 3: the vertices pending (on the interfaces of every round before) that lie on this
+  // round's too (not reinserted).
   Index old_interface_vertices_frozen_again = 0;
   long long cavities = 0;    // prepared, summed over the parts
   long long bytes_sent = 0;  // parts out and back, with their metrics

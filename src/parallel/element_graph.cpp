@@ -42,6 +42,31 @@ WeightedGraph element_graph(const Mesh<D>& mesh, std::span<const double> loads, 
   return graph;
 }
 
+template <int D>
+WeightedGraph member_graph(const Mesh<D>& mesh, std::span<const char> members, std::vector<Index>& elements) {
+  elements.clear();
+  std::vector<Index> vertex_of(static_cast<std::size_t>(mesh.element_count()), kNoIndex);
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    if (members[k]) {
+      vertex_of[k] = static_cast<Index>(elements.size());
+      elements.push_back(k);
+    }
+  WeightedGraph graph;
+  graph.vertex_weights.assign(elements.size(), 1);
+  graph.offsets.push_back(0);
+  for (Index k : elements) {
+    for (int face = 0; face <= D; ++face)
+      if (const Index other = mesh.neighbor(k, face); other != kNoIndex && vertex_of[other] != kNoIndex) {
+        graph.neighbours.push_back(vertex_of[other]);
+        graph.edge_weights.push_back(1);
+      }
+    graph.offsets.push_back(static_cast<std::int64_t>(graph.neighbours.size()));
+  }
+  return graph;
+}
+
+template WeightedGraph member_graph(const Mesh<2>&, std::span<const char>, std::vector<Index>&);
+template WeightedGraph member_graph(const Mesh<3>&, std::span<const char>, std::vector<Index>&);
 template WeightedGraph element_graph(const Mesh<2>&, std::span<const double>, std::span<const char>);
 template WeightedGraph element_graph(const Mesh<3>&, std::span<const double>, std::span<const char>);
 

@@ -26,6 +26,11 @@ constexpr std::int64_t kOldInterfaceFaceWeight = 100;
 template <int D>
 WeightedGraph element_graph(const Mesh<D>& mesh, std::span<const double> loads, std::span<const char> old_interface);
 
+// The dual graph of the elements marked in `members` (per element), each of weight 1, joined across
+// the faces they share with other members; graph vertex i is element `elements[i]` (in mesh order).
+template <int D>
+WeightedGraph member_graph(const Mesh<D>& mesh, std::span<const char> members, std::vector<Index>& elements);
+
 // Scotch's partition of `graph` into `part_count` parts of balanced vertex weight and small cut
 // weight; the part of each vertex. The same graph gives the same parts.
 std::vector<int> partition_graph(const WeightedGraph& graph, int part_count);
