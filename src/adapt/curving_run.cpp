@@ -5,7 +5,6 @@
 #include <chrono>
 #include <optional>
 
-#include "adapt/proposal_completion.hpp"
 #include "adapt/proposal_node_source.hpp"
 #include "base/error.hpp"
 #include "mesh/consistency.hpp"
@@ -23,9 +22,9 @@ double processor_seconds() {
 }  // namespace
 
 template <int D>
-CurvingRun curve_with_boundary(Mesh<D>& mesh, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
-                               const ReinsertionOptions& options, const ProposalScope& scope) {
-  CurvingRun run;
+CurvingWork curve_unmeasured(Mesh<D>& mesh, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
+                             const ReinsertionOptions& options, const ProposalScope& scope) {
+  CurvingWork work;
   const auto proposal_start = std::chrono::steady_clock::now();
   std::optional<BoundaryProposals<D>> proposals;
   std::optional<ProposalNodeSource<D>> boundary_nodes;
@@ -33,19 +32,29 @@ CurvingRun curve_with_boundary(Mesh<D>& mesh, const MetricField<D>& field, const
     proposals.emplace(mesh, *geometry, scope);
     boundary_nodes.emplace(*proposals);
   }
-  run.proposal_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - proposal_start).count();
-  const Index points_before = mesh.vertex_count();
+  work.proposal_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - proposal_start).count();
   const double processor_start = processor_seconds();
-  ReinsertionResult result = curve_by_reinsertion<D>(mesh, field, boundary_nodes ? &*boundary_nodes : nullptr, options);
-  ProposalCompletion completion;
+  work.result = curve_by_reinsertion<D>(mesh, field, boundary_nodes ? &*boundary_nodes : nullptr, options);
   if (proposals) {
-    completion = complete_boundary_proposals<D>(
+    work.completion = complete_boundary_proposals<D>(
         mesh, *proposals, {.jacobian_floor = options.cavity.jacobian_floor, .correction_steps = options.cavity.correction_steps});
-    result.seconds += completion.seconds;
+    work.result.seconds += work.completion.seconds;
+    work.proposals_left = static_cast<Index>(proposals->size());
   }
-  run.cpu_seconds = processor_seconds() - processor_start;
-  run.report = make_curving_report(mesh, field, points_before, result, proposals ? static_cast<Index>(proposals->size()) : 0);
-  run.report.boundary_completion = completion;
+  work.cpu_seconds = processor_seconds() - processor_start;
+  return work;
+}
+
+template <int D>
+CurvingRun curve_with_boundary(Mesh<D>& mesh, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
+                               const ReinsertionOptions& options, const ProposalScope& scope) {
+  const Index points_before = mesh.vertex_count();
+  const CurvingWork work = curve_unmeasured(mesh, field, geometry, options, scope);
+  CurvingRun run;
+  run.proposal_seconds = work.proposal_seconds;
+  run.cpu_seconds = work.cpu_seconds;
+  run.report = make_curving_report(mesh, field, points_before, work.result, work.proposals_left);
+  run.report.boundary_completion = work.completion;
   run.report.threads = options.threads;
   return run;
 }
@@ -82,6 +91,10 @@ CurvingReport curve_in_metric(Mesh<D>& mesh, const MetricField<D>& field, const 
   return report;
 }
 
+template CurvingWork curve_unmeasured(Mesh<2>&, const MetricField<2>&, const BoundaryGeometry<2>*, const ReinsertionOptions&,
+                                      const ProposalScope&);
+template CurvingWork curve_unmeasured(Mesh<3>&, const MetricField<3>&, const BoundaryGeometry<3>*, const ReinsertionOptions&,
+                                      const ProposalScope&);
 template CurvingRun curve_with_boundary(Mesh<2>&, const MetricField<2>&, const BoundaryGeometry<2>*, const ReinsertionOptions&,
                                         const ProposalScope&);
 template CurvingRun curve_with_boundary(Mesh<3>&, const MetricField<3>&, const BoundaryGeometry<3>*, const ReinsertionOptions&,

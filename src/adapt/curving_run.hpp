@@ -6,6 +6,7 @@
 
 #include <functional>
 
+#include "adapt/proposal_completion.hpp"
 #include "adapt/reinsertion_curving.hpp"
 #include "curve/quadrature.hpp"
 #include "report/curving_report.hpp"
@@ -20,7 +21,22 @@ struct CurvingRun {
   double cpu_seconds = 0;       // processor time of the reinsertion, all threads
 };
 
+// A curving's work without the measures of its output.
+struct CurvingWork {
+  ReinsertionResult result;       // its seconds include the last pass's
+  ProposalCompletion completion;  // the last pass over the proposals no cavity consumed
+  Index proposals_left = 0;       // proposals no cavity consumed
+  double proposal_seconds = 0;    // wall time building the boundary proposals
+  double cpu_seconds = 0;         // processor time of the reinsertion, all threads
+};
+
 // `scope`: which boundary edges get a proposal (boundary_proposals.hpp; by default every one).
+// Without measuring the output: for a caller that measures what it merges (a distributed part).
+template <int D>
+CurvingWork curve_unmeasured(Mesh<D>& mesh, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
+                             const ReinsertionOptions& options, const ProposalScope& scope = {});
+
+// curve_unmeasured, then the output measured.
 template <int D>
 CurvingRun curve_with_boundary(Mesh<D>& mesh, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
                                const ReinsertionOptions& options, const ProposalScope& scope = {});

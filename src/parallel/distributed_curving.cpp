@@ -33,8 +33,9 @@ PartCurving curve_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics, co
   ReinsertionOptions reinsertion = reinsertion_options(options);
   reinsertion.region = region;
   const ProposalScope scope{kInterfaceRef, region, part.global_ids};
-  const CurvingReport report = curve_with_boundary(part.mesh, field, geometry, reinsertion, scope).report;
-  return {report.counters, report.boundary_completion, report.seconds, report.boundary_proposals_left};
+  // (Rank 0 measures the merged mesh: the part's own measures would be thrown away.)
+  const CurvingWork work = curve_unmeasured(part.mesh, field, geometry, reinsertion, scope);
+  return {work.result.counters, work.completion, work.result.seconds, work.proposals_left};
 }
 
 void add_completion(ProposalCompletion& sum, const ProposalCompletion& part) {
