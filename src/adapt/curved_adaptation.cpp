@@ -323,7 +323,7 @@ CurvedAdaptationRun adapt_curved(Mesh<D>& mesh, const MetricField<D>& field, con
     run.seconds += last.seconds;
     run.converged = static_cast<double>(last.splits.done + last.collapses.done) <= kConvergedChange * static_cast<double>(last.vertices);
   }
-    return run;
+  return run;
 }
 
 template <int D>

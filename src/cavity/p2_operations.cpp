@@ -209,19 +209,17 @@ CavityStatus P2Operations<D>::move_vertex(Index v, const Vec<D>& x, Bar bar) {
 template <int D>
 double P2Operations<D>::edge_length(Index a, Index b) const {
   const auto sa = static_cast<std::size_t>(a), sb = static_cast<std::size_t>(b);
-  const Vec<D>& node = mesh_.edge_node(mesh_.find_edge(a, b));
-  return remembered(edge_digest(kCurvedLength, mesh_.vertex(a), mesh_.vertex(b), log_metrics_[sa], log_metrics_[sb], hints_[sa], node), [&] {
-    return high_precision_edge_length(field_, mesh_.vertex(a), mesh_.vertex(b), log_metrics_[sa], log_metrics_[sb], node, hints_[sa]);
-  });
+  const Vec<D> A = mesh_.vertex(a), B = mesh_.vertex(b), node = mesh_.edge_node(mesh_.find_edge(a, b));
+  return remembered(edge_digest(kCurvedLength, A, B, log_metrics_[sa], log_metrics_[sb], hints_[sa], node),
+                    [&] { return high_precision_edge_length(field_, A, B, log_metrics_[sa], log_metrics_[sb], node, hints_[sa]); });
 }
 
 template <int D>
 double P2Operations<D>::straight_length(Index a, Index b) const {
   const auto sa = static_cast<std::size_t>(a), sb = static_cast<std::size_t>(b);
   const Vec<D> A = mesh_.vertex(a), B = mesh_.vertex(b), middle = 0.5 * (A + B);
-  return remembered(edge_digest(kStraightLength, A, B, log_metrics_[sa], log_metrics_[sb], hints_[sa], middle), [&] {
-    return high_precision_edge_length(field_, A, B, log_metrics_[sa], log_metrics_[sb], middle, hints_[sa]);
-  });
+  return remembered(edge_digest(kStraightLength, A, B, log_metrics_[sa], log_metrics_[sb], hints_[sa], middle),
+                    [&] { return high_precision_edge_length(field_, A, B, log_metrics_[sa], log_metrics_[sb], middle, hints_[sa]); });
 }
 
 template <int D>
