@@ -33,7 +33,7 @@ PartCurving curve_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics, co
   ReinsertionOptions reinsertion = reinsertion_options(options);
   reinsertion.region = region;
   const ProposalScope scope{kInterfaceRef, region, part.global_ids};
-  // (Rank 0 measures the merged mesh: the part's own measures would be thrown away.)
+  // (Rank 0 measures the whole mesh: the part's own measures would be thrown away.)
   const CurvingWork work = curve_unmeasured(part.mesh, field, geometry, reinsertion, scope);
   return {work.result.counters, work.completion, work.result.seconds, work.proposals_left};
 }
@@ -67,9 +67,9 @@ void add_round(PartCurving& total, const PartCurving& round) {
 }
 
 // Later rounds reinsert the vertices still pending only (those every round so far froze on its
-// interfaces): they partition, send and merge the elements within this many rings of them (a
+// interfaces): they partition, send and write back the elements within this many rings of them (a
 // vertex's cavity is its ball, and a correction bends the edges around it, one ring further); the
-// rest of the mesh stays on rank 0 as a part of its own that no process curves.
+// rest of the mesh is in no part.
 constexpr int kBandRings = 2;
 
 // Per element: within `rings` rings of a marked vertex (ring 1: the elements holding one).
@@ -86,7 +86,8 @@ std::vector<char> elements_near(const Mesh<D>& mesh, std::vector<char> marked, i
   return near;
 }
 
-// One round on rank 0: partition, send, curve part 0, receive, merge.
+// One round on rank 0: partition, send, curve part 0, receive, write the parts' nodes back (a
+// curving changes no element: write_back_nodes).
 template <int D>
 struct RootRound {
   Mesh<D>& mesh;
@@ -102,7 +103,9 @@ struct RootRound {
   PartCurving run(int band_parts) {
     const auto start = std::chrono::steady_clock::now();
     const int count = process_count();
-    std::vector<MeshPart<D>> parts = split_mesh(mesh, part_of_elements(count, band_parts), count + 1);  // (part `count`: not curved)
+    std::vector<MeshPart<D>> parts = split_mesh(mesh, part_of_elements(count, band_parts), count);
+    std::vector<Index> elements_sent;
+    for (const MeshPart<D>& part : parts) elements_sent.push_back(part.mesh.element_count());
     figures.interface_faces = interface_face_count(parts);
     for (int p = 1; p < count; ++p) {
       send(p, pack_part(parts[p].mesh, std::span<const Index>(parts[p].global_ids)));
@@ -114,7 +117,10 @@ struct RootRound {
       parts[p] = unpack_part<D>(receive(p));
       add_part(round, values_of_bytes<PartCurving>(receive(p)).at(0));
     }
-    merge(parts);
+    for (int p = 0; p < count; ++p)
+      if (parts[p].mesh.element_count() != elements_sent[p])
+        throw Error("distributed curving: part " + std::to_string(p) + " came back with another element count");
+    write_back(parts);
     figures.cavities = round.counters.cavities;
     figures.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return round;
@@ -122,13 +128,13 @@ struct RootRound {
 
   // The first round: every element in one of `count` parts of equal element counts (curving costs
   // about the same per element). Later rounds: the elements near the pending vertices in `band_parts`
-  // parts so, the others in part `count`.
+  // parts so, the others in none (-1).
   std::vector<int> part_of_elements(int count, int band_parts) const {
     if (pending.empty()) {
       const std::vector<double> loads(static_cast<std::size_t>(mesh.element_count()), 1.0);
       return partition_graph(element_graph(mesh, loads, {}), count);
     }
-    std::vector<int> part_of(static_cast<std::size_t>(mesh.element_count()), count);
+    std::vector<int> part_of(static_cast<std::size_t>(mesh.element_count()), -1);
     std::vector<Index> band;
     const WeightedGraph graph = member_graph(mesh, elements_near(mesh, pending, kBandRings), band);
     if (band.empty()) return part_of;
@@ -151,21 +157,16 @@ struct RootRound {
     return out;
   }
 
-  // The merge keeps the vertex ids (no part adds a vertex), which the field and the geometry know.
-  void merge(const std::vector<MeshPart<D>>& parts) {
-    MergedMesh<D> merged = merge_parts(mesh, parts);
-    if (merged.mesh.vertex_count() != mesh.vertex_count())
-      throw Error("distributed curving: " + std::to_string(mesh.vertex_count() - merged.mesh.vertex_count()) +
-                  " vertices are in no element; curve the mesh on one process");
-    mesh = std::move(merged.mesh);
-    mesh.build_topology();
-    figures.interface_vertices = static_cast<Index>(std::count(merged.interface_vertex.begin(), merged.interface_vertex.end(), 1));
+  // The parts' nodes into the mesh; the vertices on this round's interfaces leave the pending ones.
+  void write_back(const std::vector<MeshPart<D>>& parts) {
+    std::vector<char> on_interface = write_back_nodes(mesh, parts);
+    figures.interface_vertices = static_cast<Index>(std::count(on_interface.begin(), on_interface.end(), 1));
     if (pending.empty()) {
-      pending = std::move(merged.interface_vertex);
+      pending = std::move(on_interface);
       return;
     }
     for (std::size_t v = 0; v < pending.size(); ++v) {
-      pending[v] = pending[v] && merged.interface_vertex[v];
+      pending[v] = pending[v] && on_interface[v];
       figures.old_interface_vertices_frozen_again += pending[v];
     }
   }

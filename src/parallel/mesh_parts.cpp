@@ -150,8 +150,10 @@ struct PartBuilder {
 template <int D>
 std::vector<MeshPart<D>> split_mesh(const Mesh<D>& mesh, std::span<const int> part_of, int part_count) {
   std::vector<std::vector<Index>> elements(static_cast<std::size_t>(part_count)), facets(elements.size());
-  for (Index k = 0; k < mesh.element_count(); ++k) elements[part_of[k]].push_back(k);
-  for (Index f = 0; f < mesh.facet_count(); ++f) facets[part_of[mesh.facet_element_face(f) / (D + 1)]].push_back(f);
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    if (part_of[k] >= 0) elements[part_of[k]].push_back(k);
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    if (const int p = part_of[mesh.facet_element_face(f) / (D + 1)]; p >= 0) facets[p].push_back(f);
   const EntityTags<D> tags(mesh);
   const auto line_of_edge = lines_by_edge(mesh.lines());
   std::vector<Index> local(static_cast<std::size_t>(mesh.vertex_count()), kNoIndex);
@@ -296,6 +298,48 @@ Index interface_face_count(const std::vector<MeshPart<D>>& parts) {
   return count / 2;
 }
 
+namespace {
+
+// The edges of a part's interface facets (by local ids); their vertices marked in `interface_vertex`
+// (by global ids).
+template <int D>
+std::unordered_set<std::uint64_t> interface_edges(const MeshPart<D>& part, std::vector<char>& interface_vertex) {
+  std::unordered_set<std::uint64_t> edges;
+  for (Index f = 0; f < part.mesh.facet_count(); ++f) {
+    if (part.mesh.facet_ref(f) != kInterfaceRef) continue;
+    const auto& facet = part.mesh.facet(f);
+    for (int i = 0; i < D; ++i) {
+      interface_vertex[part.global_ids[facet[i]]] = 1;
+      if (D == 3 || i == 0) edges.insert(Mesh<D>::edge_key(facet[i], facet[(i + 1) % D]));
+    }
+  }
+  return edges;
+}
+
+}  // namespace
+
+template <int D>
+std::vector<char> write_back_nodes(Mesh<D>& mesh, const std::vector<MeshPart<D>>& parts) {
+  std::vector<char> interface_vertex(static_cast<std::size_t>(mesh.vertex_count()), 0);
+  for (const MeshPart<D>& part : parts) {
+    const std::unordered_set<std::uint64_t> frozen = interface_edges(part, interface_vertex);
+    for (Index e = 0; e < part.mesh.edge_count(); ++e) {
+      const auto& ends = part.mesh.edge_vertices(e);
+      if (ends[0] == kNoIndex) continue;  // a removed edge
+      const Index a = part.global_ids[ends[0]], b = part.global_ids[ends[1]], whole = mesh.find_edge(a, b);
+      if (whole == kNoIndex)
+        throw Error("distributed curving: a part has edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) + "), which the mesh lacks");
+      if (!frozen.contains(Mesh<D>::edge_key(ends[0], ends[1])))
+        mesh.edge_node(whole) = part.mesh.edge_node(e);
+      else if (!(part.mesh.edge_node(e) == mesh.edge_node(whole)))
+        throw Error("distributed curving: interface edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) + ") came back with another node");
+    }
+  }
+  return interface_vertex;
+}
+
+template std::vector<char> write_back_nodes(Mesh<2>&, const std::vector<MeshPart<2>>&);
+template std::vector<char> write_back_nodes(Mesh<3>&, const std::vector<MeshPart<3>>&);
 template std::vector<MeshPart<2>> split_mesh(const Mesh<2>&, std::span<const int>, int);
 template std::vector<MeshPart<3>> split_mesh(const Mesh<3>&, std::span<const int>, int);
 template MergedMesh<2> merge_parts(const Mesh<2>&, const std::vector<MeshPart<2>>&);

@@ -25,8 +25,8 @@ struct MeshPart {
 };
 
 // Splits `mesh` (with topology, compact) into `part_count` parts, element k going to part
-// `part_of[k]`. A part's vertices keep the mesh's order, its elements and facets too; a P2 mesh gives
-// P2 parts with the same nodes.
+// `part_of[k]` (to none when negative). A part's vertices keep the mesh's order, its elements and
+// facets too; a P2 mesh gives P2 parts with the same nodes.
 template <int D>
 std::vector<MeshPart<D>> split_mesh(const Mesh<D>& mesh, std::span<const int> part_of, int part_count);
 
@@ -45,6 +45,14 @@ struct MergedMesh {
 // when two parts give an edge different nodes (an interface edge that was not frozen on both sides).
 template <int D>
 MergedMesh<D> merge_parts(const Mesh<D>& old_mesh, const std::vector<MeshPart<D>>& parts);
+
+// Writes the P2 nodes of curved `parts` of the P2 `mesh` back into it by global vertex ids: a
+// curving changes no element, only edge nodes (each ball is re-starred from its own vertex), so the
+// mesh keeps its elements, their order and its edge table. Returns per mesh vertex whether it lies
+// on an interface facet of a part. Throws Error when a part has an edge the mesh lacks, or gives an
+// interface edge (frozen on both sides) a node other than the mesh's.
+template <int D>
+std::vector<char> write_back_nodes(Mesh<D>& mesh, const std::vector<MeshPart<D>>& parts);
 
 // The faces between parts, each counted once.
 template <int D>

@@ -164,6 +164,54 @@ TEST(MeshParts, PartsThatDisagreeOnAnInterfaceNodeAreRefused) {
   EXPECT_THROW(merge_parts(mesh, parts), Error);
 }
 
+// Parts of the middle slab and of the last, the first slab in no part; each part moves the nodes of
+// its edges off the interfaces: written back by global ids, the mesh takes exactly those moves and
+// keeps every other node, its elements and their order. A part that gives an interface edge another
+// node, or holds an edge the mesh lacks, is refused.
+TEST(MeshParts, CurvedNodesAreWrittenBackByGlobalIds) {
+  SlicedCube cube(3);
+  Mesh<3> mesh = curved_cube(cube);
+  std::vector<int> part_of = cube.part_of;
+  for (int& p : part_of) p -= 1;  // slab 0 in no part
+  std::vector<MeshPart<3>> parts = split_mesh(mesh, part_of, 2);
+  Mesh<3> expected = mesh;
+  Index moved = 0;
+  std::vector<char> expected_interface(static_cast<std::size_t>(mesh.vertex_count()), 0);
+  for (MeshPart<3>& part : parts) {
+    std::set<std::pair<Index, Index>> interface;
+    for (Index f = 0; f < part.mesh.facet_count(); ++f)
+      if (part.mesh.facet_ref(f) == kInterfaceRef) {
+        const auto& facet = part.mesh.facet(f);
+        for (int i = 0; i < 3; ++i) {
+          expected_interface[part.global_ids[facet[i]]] = 1;
+          interface.insert(std::minmax(facet[i], facet[(i + 1) % 3]));
+        }
+      }
+    for (Index e = 0; e < part.mesh.edge_count(); ++e) {
+      const auto [a, b] = part.mesh.edge_vertices(e);
+      if (interface.contains(std::minmax(a, b))) continue;
+      part.mesh.edge_node(e)[0] += 1e-3;
+      expected.edge_node(expected.find_edge(part.global_ids[a], part.global_ids[b]))[0] += 1e-3;
+      ++moved;
+    }
+  }
+  ASSERT_GT(moved, 0);
+  EXPECT_EQ(write_back_nodes(mesh, parts), expected_interface);
+  EXPECT_EQ(std::vector<Vec<3>>(mesh.edge_nodes().begin(), mesh.edge_nodes().end()),
+            std::vector<Vec<3>>(expected.edge_nodes().begin(), expected.edge_nodes().end()));
+  EXPECT_TRUE(std::equal(mesh.elements().begin(), mesh.elements().end(), cube.mesh.elements().begin(), cube.mesh.elements().end()));
+
+  std::vector<MeshPart<3>> changed = parts;
+  Mesh<3>& part = changed[0].mesh;
+  const auto interface = std::find(part.facet_refs().begin(), part.facet_refs().end(), kInterfaceRef);
+  const auto& facet = part.facet(static_cast<Index>(interface - part.facet_refs().begin()));
+  part.edge_node(part.find_edge(facet[0], facet[1]))[2] += 1e-9;
+  EXPECT_THROW(write_back_nodes(mesh, changed), Error);
+  changed = parts;
+  changed[0].global_ids[changed[0].mesh.edge_vertices(0)[0]] = 0;  // an edge (0, w) the mesh lacks
+  EXPECT_THROW(write_back_nodes(mesh, changed), Error);
+}
+
 TEST(PartMessage, RefusesP2NodesThatDoNotFit) {
   SlicedCube cube(2);
   const Mesh<3> mesh = curved_cube(cube);
