@@ -328,11 +328,13 @@ std::vector<char> write_back_nodes(Mesh<D>& mesh, const std::vector<MeshPart<D>>
       if (ends[0] == kNoIndex) continue;  // a removed edge
       const Index a = part.global_ids[ends[0]], b = part.global_ids[ends[1]], whole = mesh.find_edge(a, b);
       if (whole == kNoIndex)
-        throw Error("distributed curving: a part has edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) + "), which the mesh lacks");
+        throw Error("distributed curving: a part has edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) +
+                    "), which the mesh lacks");
       if (!frozen.contains(Mesh<D>::edge_key(ends[0], ends[1])))
         mesh.edge_node(whole) = part.mesh.edge_node(e);
       else if (!(part.mesh.edge_node(e) == mesh.edge_node(whole)))
-        throw Error("distributed curving: interface edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) + ") came back with another node");
+        throw Error("distributed curving: interface edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) +
+                    ") came back with another node");
     }
   }
   return interface_vertex;
