@@ -52,8 +52,10 @@ AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric,
   report.output_vertices = mesh.vertex_count();
   report.output_elements = mesh.element_count();
 
-  Mesh<D> copy = mesh;  // the statistics build an edge table
-  report.measures = compute_metric_statistics(copy, rows_of_metrics(metrics).values, settings.threads);
+  if (settings.measure_output) {
+    Mesh<D> copy = mesh;  // the statistics build an edge table
+    report.measures = compute_metric_statistics(copy, rows_of_metrics(metrics).values, settings.threads);
+  }
   out.field = std::make_unique<MetricField<D>>(mesh, metrics);
   report.peak_memory_bytes = peak_resident_bytes();
   return out;
@@ -145,6 +147,7 @@ std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector
   settings.hausd = job.hausd.value_or(kRelativeHausd * bounding_box_diagonal(back));
   settings.threads = job.threads;
   settings.progress = job.pass_progress;
+  settings.measure_output = job.measure_output;
   return setup;
 }
 

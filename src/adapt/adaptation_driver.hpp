@@ -67,6 +67,7 @@ struct AdaptationJob {
   // curving); may return null (no geometry).
   std::function<std::unique_ptr<BoundaryGeometry<D>>(const Mesh<D>&)> geometry;
   std::function<void(int, int)> pass_progress;  // AdaptationSettings::progress
+  bool measure_output = true;                   // AdaptationSettings::measure_output
   // Warnings on the way ("<metric_name>: sizes down to ... clamped"), when set.
   std::string metric_name = "the metric";
   std::function<void(const std::string&)> warn;

@@ -36,6 +36,10 @@ struct AdaptationSettings {
   std::vector<char> first_pass_vertices;
   // Called after each pass with its number (1-based) and the passes' cap, for progress.
   std::function<void(int, int)> progress;
+  // False: the driver leaves the output unmeasured (the report's edge-length and quality figures
+  // empty), for a run that prints and writes no report: the figures take a 16-point quadrature
+  // per edge, 12% of the sphere shell's one-thread run (docs/usage.md).
+  bool measure_output = true;
 };
 
 struct AdaptationPass {

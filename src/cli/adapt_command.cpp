@@ -69,6 +69,7 @@ AdaptationJob<D> adaptation_job(const AdaptOptions& o) {
   job.angle = o.angle;
   job.iterations = o.iterations;
   job.threads = o.threads;
+  job.measure_output = !o.quiet || !o.report.empty();  // (what -q would not print)
   job.metric_name = o.analytic.empty() ? o.metric : "--analytic " + o.analytic;
   job.warn = [](const std::string& warning) { std::cerr << "hocav adapt: warning: " << warning << '\n'; };
   if (o.order == 2) {

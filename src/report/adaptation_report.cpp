@@ -61,8 +61,9 @@ std::string non_convergence_summary(const AdaptationReport& report) {
   const AdaptationPass& last = report.run.passes.back();
   std::ostringstream text;
   text << "not converged after " << report.run.passes.size() << " passes (the last split " << last.splits.done << " and collapsed "
-       << last.collapses.done << " edges; " << static_cast<int>(1000 * report.measures.unit_share) / 10.0
-       << "% of edges unit); raise --iterations, or check that the metric asks for sizes the geometry allows";
+       << last.collapses.done << " edges";
+  if (report.measures.edge_count > 0) text << "; " << static_cast<int>(1000 * report.measures.unit_share) / 10.0 << "% of edges unit";
+  text << "); raise --iterations, or check that the metric asks for sizes the geometry allows";
   return text.str();
 }
 

@@ -68,11 +68,19 @@ TEST_F(AdaptCli, ABoundaryLayerShellCoarsenedAlongItsWallsStaysConsistent) {
   }
 }
 
+// The warning names the unit share when the output was measured (a report asked), and not in a
+// quiet run without a report, which leaves the output unmeasured.
 TEST_F(AdaptCli, StoppingAtTheIterationCapIsWarnedOf) {
   run_ok("generate square --h 0.1 -o square.meshb");
   const Outcome capped = run("adapt square.meshb --analytic linear --hmin 0.01 -o capped.meshb --order 1 --iterations 1 -q");
   EXPECT_EQ(capped.exit_code, 0);
   EXPECT_NE(capped.err.find("warning: square.meshb: not converged after 1 passes"), std::string::npos) << capped.err;
+  EXPECT_EQ(capped.err.find("% of edges unit"), std::string::npos) << capped.err;
+  const Outcome reported = run(
+      "adapt square.meshb --analytic linear --hmin 0.01 -o reported.meshb --order 1 --iterations 1 -q --report report.json");
+  EXPECT_NE(reported.err.find("% of edges unit"), std::string::npos) << reported.err;
+  EXPECT_GT(report_value("d[\"edge_length\"][\"unit_share\"]"), 0);
+  EXPECT_EQ(read("capped.meshb"), read("reported.meshb")) << "measuring changes nothing";
   EXPECT_TRUE(fs::exists(path("capped.meshb")));  // the mesh as far as it got
   const Outcome converged = run("adapt square.meshb --analytic linear --hmin 0.01 -o converged.meshb --order 1 -q");
   EXPECT_EQ(converged.err.find("warning"), std::string::npos) << converged.err;
