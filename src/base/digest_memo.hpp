@@ -35,7 +35,7 @@ class Digest {
     for (double x : values) add(x);
   }
 
-  // (Its first word is odd: a memo's empty slot has an even one.)
+  // (Its first word is odd, never the 0 that marks a memo's empty slot.)
   Value value() const { return {mix(first_ ^ second_) | 1, mix(second_ + 0x94d049bb133111ebULL * first_)}; }
 
  private:

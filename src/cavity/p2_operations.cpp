@@ -210,7 +210,7 @@ template <int D>
 double P2Operations<D>::edge_length(Index a, Index b) const {
   const auto sa = static_cast<std::size_t>(a), sb = static_cast<std::size_t>(b);
   const Vec<D> A = mesh_.vertex(a), B = mesh_.vertex(b), node = mesh_.edge_node(mesh_.find_edge(a, b));
-  return remembered(edge_digest(kCurvedLength, A, B, log_metrics_[sa], log_metrics_[sb], hints_[sa], node),
+  return remembered([&] { return edge_digest(kCurvedLength, A, B, log_metrics_[sa], log_metrics_[sb], hints_[sa], node); },
                     [&] { return high_precision_edge_length(field_, A, B, log_metrics_[sa], log_metrics_[sb], node, hints_[sa]); });
 }
 
@@ -218,7 +218,7 @@ template <int D>
 double P2Operations<D>::straight_length(Index a, Index b) const {
   const auto sa = static_cast<std::size_t>(a), sb = static_cast<std::size_t>(b);
   const Vec<D> A = mesh_.vertex(a), B = mesh_.vertex(b), middle = 0.5 * (A + B);
-  return remembered(edge_digest(kStraightLength, A, B, log_metrics_[sa], log_metrics_[sb], hints_[sa], middle),
+  return remembered([&] { return edge_digest(kStraightLength, A, B, log_metrics_[sa], log_metrics_[sb], hints_[sa], middle); },
                     [&] { return high_precision_edge_length(field_, A, B, log_metrics_[sa], log_metrics_[sb], middle, hints_[sa]); });
 }
 
@@ -234,10 +234,13 @@ template <int D>
 double P2Operations<D>::quality(Index k) const {
   const P2Element<D> element = gather_p2_element(mesh_, k);
   const std::array<SymMat<D>, D + 1> log_metrics = element_log_metrics(k);
-  Digest digest(kCurvedQuality);
-  for (const Vec<D>& node : element.nodes) digest.add_all(node.c);
-  for (const SymMat<D>& log_metric : log_metrics) digest.add_all(log_metric.entries);
-  return remembered(digest, [&] { return curved_mean_ratio(element, log_metrics).value; });
+  const auto key = [&] {
+    Digest digest(kCurvedQuality);
+    for (const Vec<D>& node : element.nodes) digest.add_all(node.c);
+    for (const SymMat<D>& log_metric : log_metrics) digest.add_all(log_metric.entries);
+    return digest;
+  };
+  return remembered(key, [&] { return curved_mean_ratio(element, log_metrics).value; });
 }
 
 template <int D>

@@ -66,10 +66,10 @@ class P2Operations {
   Index add_vertex(const Vec<D>& x, Index near);
   void remove_last_vertex();
   std::array<SymMat<D>, D + 1> element_log_metrics(Index k) const;
-  // The memo's value for `key`, or compute() without a memo.
-  template <typename Compute>
-  double remembered(const Digest& key, const Compute& compute) const {
-    return memo_ ? memo_->value(key.value(), compute) : compute();
+  // The memo's value for the digest key() makes, or compute() without a memo (and no digest).
+  template <typename Key, typename Compute>
+  double remembered(const Key& key, const Compute& compute) const {
+    return memo_ ? memo_->value(key().value(), compute) : compute();
   }
   // The floor of the new straight simplices' quality for an operation replacing `elements`:
   // min(options' straight_quality_floor, their worst), or −1 when the options ask none.
