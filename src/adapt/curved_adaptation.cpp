@@ -12,6 +12,7 @@
 #include "base/thread_pool.hpp"
 #include "bezier/p2_element.hpp"
 #include "cavity/p2_operations.hpp"
+#include "geom/sym_functions.hpp"
 #include "mesh/ball_and_shell.hpp"
 
 namespace hocav {
@@ -138,13 +139,28 @@ double quality_to_keep(const P2Operations<D>& operations, std::span<const Index>
   return std::min(worst_quality(operations, cavity), mesh_worst);
 }
 
+// The ring's vertices, the longest segment from `kept` first by its length in the metric at `kept`:
+// a guess (one exponential for the whole ring), so that a verdict that is "too long" usually needs
+// one quadrature, not several (the first pass measures each segment anew).
+template <int D>
+void longest_first(const Mesh<D>& mesh, const P2Operations<D>& operations, Index kept, std::vector<Index>& ring) {
+  const SymMat<D> metric = exp_sym(operations.log_metric(kept));
+  const auto guess = [&](Index w) { return quadratic_form(metric, mesh.vertex(w) - mesh.vertex(kept)); };
+  std::sort(ring.begin(), ring.end(), [&](Index x, Index y) {
+    const double gx = guess(x), gy = guess(y);
+    return gx != gy ? gx > gy : x < y;
+  });
+}
+
 // Whether collapsing `removed` onto `kept` leaves every straight segment from `kept` to the ball's
 // vertices within √2: the curved edges the optimizer makes are no longer, so no collapse makes work
-// for the next split (the P1 loop's closed window, docs/adaptation.md).
+// for the next split (the P1 loop's closed window, docs/adaptation.md). The verdict does not depend
+// on the order the segments are measured in.
 template <int D>
 bool collapse_keeps_lengths(const Mesh<D>& mesh, const P2Operations<D>& operations, Index removed, Index kept, std::span<const Index> ball,
                             std::vector<Index>& ring) {
   other_vertices<D>(mesh, ball, removed, kept, ring);
+  longest_first(mesh, operations, kept, ring);
   return std::all_of(ring.begin(), ring.end(), [&](Index w) { return operations.straight_length(kept, w) <= kSplitLength; });
 }
 
@@ -233,10 +249,7 @@ CurvedOperationCount swap_poor_shells(Mesh<D>& mesh, P2Operations<D>& operations
     count.add(unless_refused_before(refusals, cavity_digest(kSwapRefusal, mesh, operations, shell, {a, b}), [&] {
       const typename P2Operations<D>::Bar bar{kQualityGain * worst_quality(operations, shell), unit_length(operations.edge_length(a, b))};
       other_vertices<D>(mesh, shell, a, b, ring);
-      CavityStatus status = CavityStatus::kNotStarShaped;
-      for (std::size_t i = 0; i < ring.size() && status != CavityStatus::kAccepted && status != CavityStatus::kCrossesBoundary; ++i)
-        status = operations.swap_edge(a, b, ring[i], bar);
-      return status;
+      return operations.swap_edge(a, b, ring, bar);
     }));
   }
   return count;

@@ -163,19 +163,25 @@ CavityStatus P2Operations<D>::collapse_edge(Index removed, Index kept, Bar bar) 
 }
 
 template <int D>
-CavityStatus P2Operations<D>::swap_edge(Index a, Index b, Index apex, Bar bar) {
+CavityStatus P2Operations<D>::swap_edge(Index a, Index b, std::span<const Index> apexes, Bar bar) {
   if (mesh_.find_edge(a, b) == kNoIndex) return CavityStatus::kNotStarShaped;
   collect_shell(mesh_, a, b, cavity_);
   const Index ends[2] = {a, b};
   if (on_boundary(cavity_, ends)) return CavityStatus::kCrossesBoundary;
-  const bool apex_in_shell = std::any_of(cavity_.begin(), cavity_.end(), [&](Index k) { return small_set_holds(mesh_.element(k), apex); });
-  if (apex == a || apex == b || !apex_in_shell) return CavityStatus::kNotStarShaped;
   // The new edges from the apex start straight (their fallback).
   P2CavityRequest<D> request;
   request.quality_to_beat = bar.quality_to_beat;
   request.unit_edges_to_keep = bar.unit_edges_to_keep;
   request.straight_quality_to_keep = straight_quality_to_keep(cavity_);
-  return operator_.apply(mesh_, cavity_, apex, request);
+  // (A shell that holds a boundary facet is refused whatever the apex.)
+  CavityStatus status = CavityStatus::kNotStarShaped;
+  for (std::size_t i = 0; i < apexes.size() && status != CavityStatus::kAccepted && status != CavityStatus::kCrossesBoundary; ++i) {
+    const Index apex = apexes[i];
+    const bool apex_in_shell = std::any_of(cavity_.begin(), cavity_.end(),
+                                           [&](Index k) { return small_set_holds(mesh_.element(k), apex); });
+    status = apex == a || apex == b || !apex_in_shell ? CavityStatus::kNotStarShaped : operator_.apply(mesh_, cavity_, apex, request);
+  }
+  return status;
 }
 
 template <int D>

@@ -42,7 +42,9 @@ class P2Operations {
   // Each returns the P2 operator's verdict; on anything but kAccepted the mesh is unchanged.
   CavityStatus split_edge(Index a, Index b, Index* inserted = nullptr, Bar bar = {});
   CavityStatus collapse_edge(Index removed, Index kept, Bar bar = {});
-  CavityStatus swap_edge(Index a, Index b, Index apex, Bar bar = {});
+  // The shell of (a, b) re-starred from the first of `apexes` that the operator accepts.
+  CavityStatus swap_edge(Index a, Index b, std::span<const Index> apexes, Bar bar = {});
+  CavityStatus swap_edge(Index a, Index b, Index apex, Bar bar = {}) { return swap_edge(a, b, std::span(&apex, 1), bar); }
   CavityStatus move_vertex(Index v, const Vec<D>& x, Bar bar = {});
 
   // The Riemannian length of the curved edge (a, b) (high-precision quadrature of the length the

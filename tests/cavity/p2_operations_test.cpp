@@ -278,6 +278,36 @@ void expect_quality_bar_kept(int cells) {
 TEST(P2Operations, TriangleOperationsKeepTheirQualityBar) { expect_quality_bar_kept<2>(8); }
 TEST(P2Operations, TetrahedralOperationsKeepTheirQualityBar) { expect_quality_bar_kept<3>(4); }
 
+// A swap given a list of apexes is the swap from the first apex of the list that the operator
+// accepts: on two copies of the mesh, the list at once and its apexes one by one give the same
+// verdicts and the same bytes.
+template <int D>
+void expect_apex_list_is_the_first_accepted(int cells) {
+  CurvedCase<D> curved(cells);
+  Mesh<D> copy = curved.mesh;
+  P2Operations<D> at_once(curved.mesh, *curved.field, nullptr, {}), one_by_one(copy, *curved.field, nullptr, {});
+  std::mt19937 random(11);
+  std::vector<Index> shell, ring;
+  int accepted = 0;
+  for (int i = 0; i < 40; ++i) {
+    const auto [a, b, c] = random_edge(curved.mesh, random);
+    collect_shell(curved.mesh, a, b, shell);
+    other_vertices<D>(curved.mesh, shell, a, b, ring);
+    std::reverse(ring.begin(), ring.end());  // not the order the shell lists them in
+    const CavityStatus status = at_once.swap_edge(a, b, ring);
+    CavityStatus expected = CavityStatus::kNotStarShaped;
+    for (std::size_t k = 0; k < ring.size() && expected != CavityStatus::kAccepted && expected != CavityStatus::kCrossesBoundary; ++k)
+      expected = one_by_one.swap_edge(a, b, ring[k]);
+    ASSERT_EQ(status, expected) << "swap " << i;
+    ASSERT_EQ(mesh_bytes(curved.mesh), mesh_bytes(copy)) << "swap " << i;
+    accepted += status == CavityStatus::kAccepted;
+  }
+  EXPECT_GT(accepted, 0);
+}
+
+TEST(P2Operations, TriangleSwapFromTheFirstAcceptedApex) { expect_apex_list_is_the_first_accepted<2>(8); }
+TEST(P2Operations, TetrahedralSwapFromTheFirstAcceptedApex) { expect_apex_list_is_the_first_accepted<3>(4); }
+
 // The P2 map of element k at barycentrics λ: Σ λ_i(2λ_i − 1) x_i + Σ_edges 4 λ_i λ_j x_ij.
 template <int D>
 Vec<D> p2_map(const Mesh<D>& mesh, Index k, const std::array<double, D + 1>& lambda) {
