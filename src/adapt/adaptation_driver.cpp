@@ -78,7 +78,7 @@ void adapt_curved_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const CurvingOpti
   check_curved_consistency(mesh);
   report.output_vertices = mesh.vertex_count();
   report.output_elements = mesh.element_count();
-  measure_curved_output(*report.curving, mesh, *adapted.field);
+  measure_curved_output(*report.curving, mesh, *adapted.field, options.threads);
   report.peak_memory_bytes = peak_resident_bytes();
 }
 

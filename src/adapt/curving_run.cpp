@@ -53,7 +53,7 @@ CurvingRun curve_with_boundary(Mesh<D>& mesh, const MetricField<D>& field, const
   CurvingRun run;
   run.proposal_seconds = work.proposal_seconds;
   run.cpu_seconds = work.cpu_seconds;
-  run.report = make_curving_report(mesh, field, points_before, work.result, work.proposals_left);
+  run.report = make_curving_report(mesh, field, points_before, work.result, work.proposals_left, options.threads);
   run.report.boundary_completion = work.completion;
   run.report.threads = options.threads;
   return run;

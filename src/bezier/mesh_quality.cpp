@@ -4,14 +4,23 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/thread_pool.hpp"
 #include "bezier/p2_element.hpp"
 
 namespace hocav {
+namespace {
+// Elements measured per task of the pool.
+constexpr std::size_t kMeasuredChunk = 1024;
+}  // namespace
 
 template <int D>
-std::vector<JacobianQuality> mesh_jacobian_quality(const Mesh<D>& mesh, const RefinementOptions& options) {
+std::vector<JacobianQuality> mesh_jacobian_quality(const Mesh<D>& mesh, const RefinementOptions& options, int threads) {
   std::vector<JacobianQuality> qualities(mesh.element_count());
-  for (Index k = 0; k < mesh.element_count(); ++k) qualities[k] = jacobian_quality(gather_p2_element(mesh, k), options);
+  ThreadPool pool(threads);
+  run_chunked(pool, qualities.size(), kMeasuredChunk, [&](std::size_t begin, std::size_t end) {
+    for (auto k = static_cast<Index>(begin); k < static_cast<Index>(end); ++k)
+      qualities[k] = jacobian_quality(gather_p2_element(mesh, k), options);
+  });
   return qualities;
 }
 
@@ -52,7 +61,7 @@ MeshJacobianSummary summarize_jacobian_quality(std::span<const JacobianQuality> 
   return {summarize_values(min_normalized, bin_count, 0.0, 1.0), summarize_values(scaled, bin_count, 0.0, 1.0)};
 }
 
-template std::vector<JacobianQuality> mesh_jacobian_quality(const Mesh<2>&, const RefinementOptions&);
-template std::vector<JacobianQuality> mesh_jacobian_quality(const Mesh<3>&, const RefinementOptions&);
+template std::vector<JacobianQuality> mesh_jacobian_quality(const Mesh<2>&, const RefinementOptions&, int);
+template std::vector<JacobianQuality> mesh_jacobian_quality(const Mesh<3>&, const RefinementOptions&, int);
 
 }  // namespace hocav

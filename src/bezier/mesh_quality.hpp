@@ -11,10 +11,11 @@
 
 namespace hocav {
 
-// One entry per element, in element order. A P1 mesh has straight elements: 1 and 1 for every
-// positive element, −1 and −1 for an inverted one.
+// One entry per element, in element order, measured on `threads` threads (the same entries for any
+// count). A P1 mesh has straight elements: 1 and 1 for every positive element, −1 and −1 for an
+// inverted one.
 template <int D>
-std::vector<JacobianQuality> mesh_jacobian_quality(const Mesh<D>& mesh, const RefinementOptions& options = {});
+std::vector<JacobianQuality> mesh_jacobian_quality(const Mesh<D>& mesh, const RefinementOptions& options = {}, int threads = 1);
 
 struct ValueSummary {
   Index count = 0;

@@ -205,7 +205,7 @@ CurvingReport curve_distributed(Mesh<D>& mesh, const MetricField<D>& field, cons
   result.counters = total.counters;
   result.seconds = total.seconds;
   result.vertices_reinserted = static_cast<Index>(total.counters.cavities);
-  CurvingReport report = make_curving_report(mesh, field, points_before, result, static_cast<Index>(total.proposals_left));
+  CurvingReport report = make_curving_report(mesh, field, points_before, result, static_cast<Index>(total.proposals_left), options.threads);
   report.boundary_completion = total.completion;
   report.threads = options.threads;
   return report;

@@ -6,6 +6,7 @@
 #include <numeric>
 #include <ostream>
 
+#include "base/thread_pool.hpp"
 #include "curve/edge_optimizer.hpp"
 #include "geom/sym_eigen.hpp"
 #include "mesh/boundary_vertices.hpp"
@@ -13,33 +14,46 @@
 
 namespace hocav {
 
+namespace {
+
+// Edges measured per task of the pool.
+constexpr std::size_t kMeasuredChunk = 1024;
+
+// The gain of edge e (a, b) and its curved node.
 template <int D>
-std::vector<double> volume_edge_gains(const Mesh<D>& mesh, const MetricField<D>& field) {
+double edge_gain(const Mesh<D>& mesh, const MetricField<D>& field, Index e, Index a, Index b) {
+  const Vec<D> straight = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
+  // A straight edge (most of them) gains nothing: no length to compute.
+  if (mesh.edge_node(e) == straight) return 0;
+  const EdgeEndpoint<D> end_a = edge_endpoint(mesh.vertex(a), field.vertex_log_metric(a));
+  const EdgeEndpoint<D> end_b = edge_endpoint(mesh.vertex(b), field.vertex_log_metric(b));
+  const Index hint = field.back_mesh().vertex_element(a);  // the input, whose vertices the curved mesh keeps: hints near them
+  const double straight_length = high_precision_edge_length(field, end_a, end_b, straight, hint);
+  const double curved_length = high_precision_edge_length(field, end_a, end_b, mesh.edge_node(e), hint);
+  return 1 - curved_length / straight_length;
+}
+
+}  // namespace
+
+template <int D>
+std::vector<double> volume_edge_gains(const Mesh<D>& mesh, const MetricField<D>& field, int threads) {
   const std::vector<bool> on_boundary = boundary_vertex_flags(mesh);
-  const Mesh<D>& back = field.back_mesh();  // the input, whose vertices the curved mesh keeps: hints near them
-  std::vector<double> gains;
-  for (Index e = 0; e < mesh.edge_count(); ++e) {
-    auto [a, b] = mesh.edge_vertices(e);
-    if (a == kNoIndex || (on_boundary[a] && on_boundary[b])) continue;
-    const Vec<D> straight = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
-    // A straight edge (most of them) gains nothing: no length to compute.
-    if (mesh.edge_node(e) == straight) {
-      gains.push_back(0);
-      continue;
+  // Per edge its gain, NaN for an edge that is not measured; then the measured ones in order.
+  std::vector<double> per_edge(static_cast<std::size_t>(mesh.edge_count()), NAN);
+  ThreadPool pool(threads);
+  run_chunked(pool, per_edge.size(), kMeasuredChunk, [&](std::size_t begin, std::size_t end) {
+    for (auto e = static_cast<Index>(begin); e < static_cast<Index>(end); ++e) {
+      auto [a, b] = mesh.edge_vertices(e);
+      if (a != kNoIndex && !(on_boundary[a] && on_boundary[b])) per_edge[e] = edge_gain(mesh, field, e, a, b);
     }
-    const EdgeEndpoint<D> end_a = edge_endpoint(mesh.vertex(a), field.vertex_log_metric(a));
-    const EdgeEndpoint<D> end_b = edge_endpoint(mesh.vertex(b), field.vertex_log_metric(b));
-    const Index hint = back.vertex_element(a);
-    const double straight_length = high_precision_edge_length(field, end_a, end_b, straight, hint);
-    const double curved_length = high_precision_edge_length(field, end_a, end_b, mesh.edge_node(e), hint);
-    gains.push_back(1 - curved_length / straight_length);
-  }
-  return gains;
+  });
+  std::erase_if(per_edge, [](double gain) { return std::isnan(gain); });
+  return per_edge;
 }
 
 template <int D>
 CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& field, Index points_before, const ReinsertionResult& result,
-                                  Index boundary_proposals_left) {
+                                  Index boundary_proposals_left, int threads) {
   CurvingReport report;
   report.dimension = D;
   report.points_before = points_before;
@@ -53,19 +67,19 @@ CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& fie
     // Sizes are e^(−θ/2): their ratio is e^((θmax − θmin)/2).
     report.max_anisotropy = std::max(report.max_anisotropy, std::exp(0.5 * (eigen.values[D - 1] - eigen.values[0])));
   }
-  measure_curved_output(report, mesh, field);
+  measure_curved_output(report, mesh, field, threads);
   return report;
 }
 
 template <int D>
-void measure_curved_output(CurvingReport& report, const Mesh<D>& mesh, const MetricField<D>& field) {
+void measure_curved_output(CurvingReport& report, const Mesh<D>& mesh, const MetricField<D>& field, int threads) {
   report.elements = mesh.element_count();
   report.points_after = mesh.vertex_count() + mesh.edge_count();
-  auto summary = summarize_jacobian_quality(mesh_jacobian_quality(mesh, kReportedRefinement));
+  auto summary = summarize_jacobian_quality(mesh_jacobian_quality(mesh, kReportedRefinement, threads));
   report.normalized_jacobian = summary.min_normalized_jacobian;
   report.scaled_jacobian = summary.scaled_jacobian;
 
-  const std::vector<double> gains = volume_edge_gains(mesh, field);
+  const std::vector<double> gains = volume_edge_gains(mesh, field, threads);
   report.average_gain = report.max_gain = 0;
   if (!gains.empty()) {
     report.average_gain = std::accumulate(gains.begin(), gains.end(), 0.0) / static_cast<double>(gains.size());
@@ -154,11 +168,11 @@ void write_curving_report_table(std::ostream& out, const CurvingReport& report) 
   row("  left: pulled back / blocked", "%d / %d (largest gap %.2g)", b.pulled_back, b.blocked, b.largest_gap);
 }
 
-template std::vector<double> volume_edge_gains(const Mesh<2>&, const MetricField<2>&);
-template std::vector<double> volume_edge_gains(const Mesh<3>&, const MetricField<3>&);
-template void measure_curved_output(CurvingReport&, const Mesh<2>&, const MetricField<2>&);
-template void measure_curved_output(CurvingReport&, const Mesh<3>&, const MetricField<3>&);
-template CurvingReport make_curving_report(const Mesh<2>&, const MetricField<2>&, Index, const ReinsertionResult&, Index);
-template CurvingReport make_curving_report(const Mesh<3>&, const MetricField<3>&, Index, const ReinsertionResult&, Index);
+template std::vector<double> volume_edge_gains(const Mesh<2>&, const MetricField<2>&, int);
+template std::vector<double> volume_edge_gains(const Mesh<3>&, const MetricField<3>&, int);
+template void measure_curved_output(CurvingReport&, const Mesh<2>&, const MetricField<2>&, int);
+template void measure_curved_output(CurvingReport&, const Mesh<3>&, const MetricField<3>&, int);
+template CurvingReport make_curving_report(const Mesh<2>&, const MetricField<2>&, Index, const ReinsertionResult&, Index, int);
+template CurvingReport make_curving_report(const Mesh<3>&, const MetricField<3>&, Index, const ReinsertionResult&, Index, int);
 
 }  // namespace hocav

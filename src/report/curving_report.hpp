@@ -31,18 +31,19 @@ struct CurvingReport {
 };
 
 // 1 − ℓ(curved) / ℓ(straight) of every volume edge (not both ends on the boundary), in edge order,
-// lengths in the metric by 16-point Gauss: the gains the report averages.
+// lengths in the metric by 16-point Gauss: the gains the report averages. The measures below run
+// on `threads` threads and give the same figures for any count.
 template <int D>
-std::vector<double> volume_edge_gains(const Mesh<D>& mesh, const MetricField<D>& field);
+std::vector<double> volume_edge_gains(const Mesh<D>& mesh, const MetricField<D>& field, int threads = 1);
 
 // Measures `mesh` into the report's output figures: element and point counts, Jacobians, gains.
 template <int D>
-void measure_curved_output(CurvingReport& report, const Mesh<D>& mesh, const MetricField<D>& field);
+void measure_curved_output(CurvingReport& report, const Mesh<D>& mesh, const MetricField<D>& field, int threads);
 
 // Measures the output (Jacobians, gains) and gathers the run's figures.
 template <int D>
 CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& field, Index points_before, const ReinsertionResult& result,
-                                  Index boundary_proposals_left);
+                                  Index boundary_proposals_left, int threads);
 
 void write_curving_report_json(std::ostream& out, const CurvingReport& report);
 // The same object, as a value inside a larger report.

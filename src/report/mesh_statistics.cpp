@@ -117,8 +117,8 @@ MetricStatistics metric_statistics(const Mesh<D>& mesh, std::span<const double> 
 }
 
 template <int D>
-JacobianStatistics jacobian_statistics(const Mesh<D>& mesh) {
-  const std::vector<JacobianQuality> qualities = mesh_jacobian_quality(mesh, kReportedRefinement);
+JacobianStatistics jacobian_statistics(const Mesh<D>& mesh, int threads) {
+  const std::vector<JacobianQuality> qualities = mesh_jacobian_quality(mesh, kReportedRefinement, threads);
   const MeshJacobianSummary summary = summarize_jacobian_quality(qualities);
   auto figures = [](const ValueSummary& values) {
     JacobianFigures f;
@@ -322,7 +322,7 @@ MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> no
   ConsistencyOptions options;
   options.require_positive_orientation = !mesh.is_p2();  // a valid curved element may be an inverted P1 one
   s.consistency_problems = check_consistency(mesh, options);
-  s.jacobian = jacobian_statistics(mesh);
+  s.jacobian = jacobian_statistics(mesh, std::max(1, threads));
   if (!node_metrics.empty()) s.metric = compute_metric_statistics(mesh, node_metrics, threads);
   return s;
 }

@@ -141,6 +141,45 @@ TEST(ReinsertionCurving, WorkNotRedoneOptimizesEachEdgeOnceAndChangesLittle) {
   EXPECT_NEAR(reused_gain, redone_gain, 0.05 * redone_gain);
 }
 
+// The output's measures (each element's Jacobians, each volume edge's gain) are the same, bit for
+// bit and in the same order, on one thread and on three; and the gains are those of the edges,
+// measured one by one.
+TEST(ReinsertionCurving, OutputMeasuresDoNotDependOnTheThreadCount) {
+  ShearSquare square;
+  MetricField<2> field(square.mesh, analytic_metric_at_vertices(square.spec, square.mesh));
+  curve_by_reinsertion<2>(square.mesh, field, nullptr, ReinsertionOptions{});
+  const std::vector<double> gains = volume_edge_gains(square.mesh, field, 1);
+  EXPECT_EQ(volume_edge_gains(square.mesh, field, 3), gains);
+  const auto one = mesh_jacobian_quality(square.mesh, kReportedRefinement, 1),
+             three = mesh_jacobian_quality(square.mesh, kReportedRefinement, 3);
+  ASSERT_EQ(one.size(), three.size());
+  for (std::size_t k = 0; k < one.size(); ++k) {
+    EXPECT_EQ(one[k].min_normalized_jacobian, three[k].min_normalized_jacobian) << "element " << k;
+    EXPECT_EQ(one[k].scaled_jacobian, three[k].scaled_jacobian) << "element " << k;
+  }
+  // The volume edges, in order: not both ends on the boundary.
+  std::vector<bool> on_boundary(static_cast<std::size_t>(square.mesh.vertex_count()), false);
+  for (Index f = 0; f < square.mesh.facet_count(); ++f)
+    for (Index v : square.mesh.facet(f)) on_boundary[v] = true;
+  std::size_t next = 0;
+  int curved = 0;
+  for (Index e = 0; e < square.mesh.edge_count(); ++e) {
+    const auto [a, b] = square.mesh.edge_vertices(e);
+    if (on_boundary[a] && on_boundary[b]) continue;
+    ASSERT_LT(next, gains.size());
+    const Vec2 middle = 0.5 * (square.mesh.vertex(a) + square.mesh.vertex(b));
+    const auto length = [&](const Vec2& node) {
+      return high_precision_edge_length(field, square.mesh.vertex(a), square.mesh.vertex(b), field.vertex_log_metric(a),
+                                        field.vertex_log_metric(b), node, field.back_mesh().vertex_element(a));
+    };
+    const double expected = square.mesh.edge_node(e) == middle ? 0 : 1 - length(square.mesh.edge_node(e)) / length(middle);
+    EXPECT_EQ(gains[next++], expected) << "edge " << e;
+    curved += expected != 0;
+  }
+  EXPECT_EQ(next, gains.size());
+  EXPECT_GT(curved, 100);
+}
+
 TEST(ReinsertionCurving, CertificatesAreKeptOnlyWhenEveryInputElementIsAboveTheFloor) {
   ShearSquare square;
   MetricField<2> field(square.mesh, analytic_metric_at_vertices(square.spec, square.mesh));
