@@ -163,7 +163,7 @@ AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics,
     const auto curving_geometry = job.geometry(mesh);  // of the adapted boundary
     curve_adapted_mesh(adapted, mesh, curving_geometry.get(), curving, job.curve);
     if (job.curved) adapt_curved_mesh(adapted, mesh, curving, job.iterations);
-    adapted.report.curved_measures = measure_curved(mesh, *adapted.field);
+    if (setup->settings.measure_output) adapted.report.curved_measures = measure_curved(mesh, *adapted.field, curving.threads);
   }
   return adapted;
 }

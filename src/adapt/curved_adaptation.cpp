@@ -340,15 +340,20 @@ CurvedAdaptationRun adapt_curved(Mesh<D>& mesh, const MetricField<D>& field, con
 }
 
 template <int D>
-CurvedMeasures measure_curved(Mesh<D>& mesh, const MetricField<D>& field) {
+CurvedMeasures measure_curved(Mesh<D>& mesh, const MetricField<D>& field, int threads) {
   const P2Operations<D> operations(mesh, field, nullptr, {});
+  ThreadPool pool(std::max(1, threads));
+  // Each measure on the pool's threads, then the sums in order: the same figures for any count.
+  const std::vector<double> lengths = scan_in_chunks<double>(pool, mesh.edge_count(), [&](Index e, std::vector<double>& out) {
+    const auto& ends = mesh.edge_vertices(e);
+    if (ends[0] != kNoIndex) out.push_back(operations.edge_length(ends[0], ends[1]));
+  });
+  const std::vector<double> qualities = scan_in_chunks<double>(
+      pool, mesh.element_count(), [&](Index k, std::vector<double>& out) { out.push_back(operations.quality(k)); });
   CurvedMeasures measures;
   measures.length_min = INFINITY;
   Index unit = 0;
-  for (Index e = 0; e < mesh.edge_count(); ++e) {
-    const auto& ends = mesh.edge_vertices(e);
-    if (ends[0] == kNoIndex) continue;
-    const double length = operations.edge_length(ends[0], ends[1]);
+  for (const double length : lengths) {
     ++measures.edge_count;
     measures.length_min = std::min(measures.length_min, length);
     measures.length_max = std::max(measures.length_max, length);
@@ -358,8 +363,7 @@ CurvedMeasures measure_curved(Mesh<D>& mesh, const MetricField<D>& field) {
   measures.length_mean /= static_cast<double>(std::max<Index>(1, measures.edge_count));
   measures.unit_share = static_cast<double>(unit) / static_cast<double>(std::max<Index>(1, measures.edge_count));
   measures.quality_min = INFINITY;
-  for (Index k = 0; k < mesh.element_count(); ++k) {
-    const double quality = operations.quality(k);
+  for (const double quality : qualities) {
     measures.quality_min = std::min(measures.quality_min, quality);
     measures.quality_mean += quality;
   }
@@ -369,7 +373,7 @@ CurvedMeasures measure_curved(Mesh<D>& mesh, const MetricField<D>& field) {
 
 template CurvedAdaptationRun adapt_curved(Mesh<2>&, const MetricField<2>&, const P2CavityOptions&, int, int);
 template CurvedAdaptationRun adapt_curved(Mesh<3>&, const MetricField<3>&, const P2CavityOptions&, int, int);
-template CurvedMeasures measure_curved(Mesh<2>&, const MetricField<2>&);
-template CurvedMeasures measure_curved(Mesh<3>&, const MetricField<3>&);
+template CurvedMeasures measure_curved(Mesh<2>&, const MetricField<2>&, int);
+template CurvedMeasures measure_curved(Mesh<3>&, const MetricField<3>&, int);
 
 }  // namespace hocav

@@ -55,7 +55,8 @@ template <int D>
 CurvedAdaptationRun adapt_curved(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, int max_passes,
                                  int threads = 1);
 
+// Measured on `threads` threads; the same figures for any count.
 template <int D>
-CurvedMeasures measure_curved(Mesh<D>& mesh, const MetricField<D>& field);
+CurvedMeasures measure_curved(Mesh<D>& mesh, const MetricField<D>& field, int threads = 1);
 
 }  // namespace hocav
