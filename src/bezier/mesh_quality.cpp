@@ -16,7 +16,7 @@ constexpr std::size_t kMeasuredChunk = 1024;
 template <int D>
 std::vector<JacobianQuality> mesh_jacobian_quality(const Mesh<D>& mesh, const RefinementOptions& options, int threads) {
   std::vector<JacobianQuality> qualities(mesh.element_count());
-  ThreadPool pool(threads);
+  ThreadPool pool(std::max(1, threads));
   run_chunked(pool, qualities.size(), kMeasuredChunk, [&](std::size_t begin, std::size_t end) {
     for (auto k = static_cast<Index>(begin); k < static_cast<Index>(end); ++k)
       qualities[k] = jacobian_quality(gather_p2_element(mesh, k), options);

@@ -38,17 +38,22 @@ double edge_gain(const Mesh<D>& mesh, const MetricField<D>& field, Index e, Inde
 template <int D>
 std::vector<double> volume_edge_gains(const Mesh<D>& mesh, const MetricField<D>& field, int threads) {
   const std::vector<bool> on_boundary = boundary_vertex_flags(mesh);
-  // Per edge its gain, NaN for an edge that is not measured; then the measured ones in order.
-  std::vector<double> per_edge(static_cast<std::size_t>(mesh.edge_count()), NAN);
-  ThreadPool pool(threads);
-  run_chunked(pool, per_edge.size(), kMeasuredChunk, [&](std::size_t begin, std::size_t end) {
+  // Per edge whether it is measured and its gain; then the measured ones in order.
+  const auto edge_count = static_cast<std::size_t>(mesh.edge_count());
+  std::vector<char> measured(edge_count, 0);
+  std::vector<double> per_edge(edge_count, 0);
+  ThreadPool pool(std::max(1, threads));
+  run_chunked(pool, edge_count, kMeasuredChunk, [&](std::size_t begin, std::size_t end) {
     for (auto e = static_cast<Index>(begin); e < static_cast<Index>(end); ++e) {
       auto [a, b] = mesh.edge_vertices(e);
-      if (a != kNoIndex && !(on_boundary[a] && on_boundary[b])) per_edge[e] = edge_gain(mesh, field, e, a, b);
+      measured[e] = a != kNoIndex && !(on_boundary[a] && on_boundary[b]);
+      if (measured[e]) per_edge[e] = edge_gain(mesh, field, e, a, b);
     }
   });
-  std::erase_if(per_edge, [](double gain) { return std::isnan(gain); });
-  return per_edge;
+  std::vector<double> gains;
+  for (std::size_t e = 0; e < edge_count; ++e)
+    if (measured[e]) gains.push_back(per_edge[e]);
+  return gains;
 }
 
 template <int D>
