@@ -5,8 +5,10 @@
 #include <string>
 
 #include "base/error.hpp"
+#include "mesh/boundary_vertices.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/element_partition.hpp"
+#include "parallel/part_measures.hpp"
 #include "parallel/part_message.hpp"
 
 namespace hocav {
@@ -100,6 +102,12 @@ struct RootRound {
   // (without them the cubed shell on 2 processes left 56 boundary edges straight, the serial run 0).
   std::vector<char> pending;
   DistributedCurvingRound figures;
+  // The first round's parts as they came back (part 0 curved here, to measure at the end; the
+  // others for their vertices and interfaces), part 0's log-metrics, and per mesh edge whether a
+  // later round wrote its node.
+  std::vector<MeshPart<D>> first_parts;
+  std::vector<SymMat<D>> first_log_metrics;
+  std::vector<char> written_later;
 
   // A round whose curved elements are cut into `band_parts` parts (the first round: every element).
   PartCurving run(int band_parts) {
@@ -122,7 +130,12 @@ struct RootRound {
     for (int p = 0; p < count; ++p)
       if (parts[p].mesh.element_count() != elements_sent[p])
         throw Error("distributed curving: part " + std::to_string(p) + " came back with another element count");
+    const bool first = pending.empty();
     write_back(parts);
+    if (first) {
+      first_log_metrics = log_metrics_of(parts[0]);
+      first_parts = std::move(parts);
+    }
     figures.cavities = round.counters.cavities;
     figures.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return round;
@@ -161,7 +174,8 @@ struct RootRound {
 
   // The parts' nodes into the mesh; the vertices on this round's interfaces leave the pending ones.
   void write_back(const std::vector<MeshPart<D>>& parts) {
-    std::vector<char> on_interface = write_back_nodes(mesh, parts);
+    if (!pending.empty() && written_later.empty()) written_later.assign(static_cast<std::size_t>(mesh.edge_count()), 0);
+    std::vector<char> on_interface = write_back_nodes(mesh, parts, pending.empty() ? nullptr : &written_later);
     figures.interface_vertices = static_cast<Index>(std::count(on_interface.begin(), on_interface.end(), 1));
     if (pending.empty()) {
       pending = std::move(on_interface);
@@ -173,9 +187,51 @@ struct RootRound {
     }
   }
 
+  // The output's Jacobians and gains, measured by the first round's parts, in part order.
+  PartMeasures measure_output() {
+    if (written_later.empty()) written_later.assign(static_cast<std::size_t>(mesh.edge_count()), 0);
+    const std::vector<bool> on_boundary = boundary_vertex_flags(mesh);
+    const auto before = interface_edges_measured_before(first_parts);
+    const auto boundary_of = [&](const MeshPart<D>& part) {
+      std::vector<char> out;
+      for (Index g : part.global_ids) out.push_back(on_boundary[g]);
+      return out;
+    };
+    for (int p = 1; p < process_count(); ++p) {
+      send_values(p, node_updates_for(mesh, written_later, first_parts[p].global_ids));
+      send_values(p, boundary_of(first_parts[p]));
+      send_values(p, before[p]);
+    }
+    const auto updates = node_updates_for(mesh, written_later, first_parts[0].global_ids);
+    PartMeasures all = measure_part<D>(first_parts[0], std::move(first_log_metrics), updates, boundary_of(first_parts[0]), before[0],
+                                       options.threads);
+    for (int p = 1; p < process_count(); ++p) {
+      const auto elements = receive_values<JacobianQuality>(p);
+      const auto gains = receive_values<double>(p);
+      const auto deferred = receive_values<std::array<Index, 2>>(p);
+      all.elements.insert(all.elements.end(), elements.begin(), elements.end());
+      all.gains.insert(all.gains.end(), gains.begin(), gains.end());
+      all.deferred.insert(all.deferred.end(), deferred.begin(), deferred.end());
+    }
+    for (const auto& [a, b] : all.deferred) all.gains.push_back(edge_gain(mesh, field, mesh.find_edge(a, b)));
+    return all;
+  }
+
   void send(int to, const std::vector<std::byte>& bytes) { send_bytes(to, bytes, figures.bytes_sent); }
   std::vector<std::byte> receive(int from) { return receive_bytes(from, figures.bytes_sent); }
 };
+
+// A worker's end of RootRound::measure_output: its first-round part measured.
+template <int D>
+void measure_first_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics, int threads) {
+  const auto updates = receive_values<NodeUpdate<D>>(0);
+  const auto on_boundary = receive_values<char>(0);
+  const auto before = receive_values<std::array<Index, 2>>(0);
+  const PartMeasures measures = measure_part<D>(part, std::move(log_metrics), updates, on_boundary, before, threads);
+  send_values(0, measures.elements);
+  send_values(0, measures.gains);
+  send_values(0, measures.deferred);
+}
 
 }  // namespace
 
@@ -190,7 +246,7 @@ CurvingReport curve_distributed(Mesh<D>& mesh, const MetricField<D>& field, cons
   const Index points_before = mesh.vertex_count();
   CurvingOptions part_options = options;
   part_options.progress = {};  // rank 0's part is not the whole
-  RootRound<D> root{mesh, field, geometry, part_options, {}, {}};
+  RootRound<D> root{mesh, field, geometry, part_options, {}, {}, {}, {}, {}};
   PartCurving total;
   for (int round = 1; round <= kDistributedCurvingRounds; ++round) {
     if (round > 1 && std::find(root.pending.begin(), root.pending.end(), 1) == root.pending.end()) break;
@@ -199,13 +255,15 @@ CurvingReport curve_distributed(Mesh<D>& mesh, const MetricField<D>& field, cons
     add_round(total, root.run(round < kDistributedCurvingRounds ? process_count() : 1));
     if (on_round) on_round(root.figures);
   }
-  for (int p = 1; p < process_count(); ++p) send_bytes(p, {});  // stop
+  for (int p = 1; p < process_count(); ++p) send_bytes(p, {});  // the rounds are over
   check_curved_consistency(mesh);
+  const PartMeasures measures = root.measure_output();
   ReinsertionResult result;
   result.counters = total.counters;
   result.seconds = total.seconds;
   result.vertices_reinserted = static_cast<Index>(total.counters.cavities);
-  CurvingReport report = make_curving_report(mesh, field, points_before, result, static_cast<Index>(total.proposals_left), options.threads);
+  CurvingReport report = curving_run_report(field, points_before, result, static_cast<Index>(total.proposals_left));
+  summarize_curved_output(report, mesh, measures.elements, measures.gains);
   report.boundary_completion = total.completion;
   report.threads = options.threads;
   return report;
@@ -213,16 +271,23 @@ CurvingReport curve_distributed(Mesh<D>& mesh, const MetricField<D>& field, cons
 
 template <int D>
 void serve_distributed_curving(const BoundaryGeometry<D>* geometry, const CurvingOptions& options) {
-  for (;;) {
+  MeshPart<D> first;  // the first round's part, kept to measure the output at the end
+  std::vector<SymMat<D>> first_log_metrics;
+  for (bool first_round = true;; first_round = false) {
     const std::vector<std::byte> bytes = receive_bytes(0);
-    if (bytes.empty()) return;
+    if (bytes.empty()) break;
     MeshPart<D> part = unpack_part<D>(bytes);
     std::vector<SymMat<D>> log_metrics = receive_values<SymMat<D>>(0);
     const std::vector<char> region = receive_values<char>(0);
-    const PartCurving result = curve_part(part, std::move(log_metrics), region, geometry, options);
+    const PartCurving result = curve_part(part, first_round ? log_metrics : std::move(log_metrics), region, geometry, options);
     send_bytes(0, pack_part(part.mesh, std::span<const Index>(part.global_ids)));
     send_values(0, std::vector<PartCurving>{result});
+    if (first_round) {
+      first = std::move(part);
+      first_log_metrics = std::move(log_metrics);
+    }
   }
+  measure_first_part(first, std::move(first_log_metrics), options.threads);
 }
 
 template CurvingReport curve_distributed(Mesh<2>&, const MetricField<2>&, const BoundaryGeometry<2>*, const CurvingOptions&,

@@ -319,7 +319,7 @@ std::unordered_set<std::uint64_t> interface_edges(const MeshPart<D>& part, std::
 }  // namespace
 
 template <int D>
-std::vector<char> write_back_nodes(Mesh<D>& mesh, const std::vector<MeshPart<D>>& parts) {
+std::vector<char> write_back_nodes(Mesh<D>& mesh, const std::vector<MeshPart<D>>& parts, std::vector<char>* written) {
   std::vector<char> interface_vertex(static_cast<std::size_t>(mesh.vertex_count()), 0);
   for (const MeshPart<D>& part : parts) {
     const std::unordered_set<std::uint64_t> frozen = interface_edges(part, interface_vertex);
@@ -330,9 +330,10 @@ std::vector<char> write_back_nodes(Mesh<D>& mesh, const std::vector<MeshPart<D>>
       if (whole == kNoIndex)
         throw Error("distributed curving: a part has edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) +
                     "), which the mesh lacks");
-      if (!frozen.contains(Mesh<D>::edge_key(ends[0], ends[1])))
+      if (!frozen.contains(Mesh<D>::edge_key(ends[0], ends[1]))) {
         mesh.edge_node(whole) = part.mesh.edge_node(e);
-      else if (!(part.mesh.edge_node(e) == mesh.edge_node(whole)))
+        if (written) (*written)[whole] = 1;
+      } else if (!(part.mesh.edge_node(e) == mesh.edge_node(whole)))
         throw Error("distributed curving: interface edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) +
                     ") came back with another node");
     }
@@ -340,8 +341,8 @@ std::vector<char> write_back_nodes(Mesh<D>& mesh, const std::vector<MeshPart<D>>
   return interface_vertex;
 }
 
-template std::vector<char> write_back_nodes(Mesh<2>&, const std::vector<MeshPart<2>>&);
-template std::vector<char> write_back_nodes(Mesh<3>&, const std::vector<MeshPart<3>>&);
+template std::vector<char> write_back_nodes(Mesh<2>&, const std::vector<MeshPart<2>>&, std::vector<char>*);
+template std::vector<char> write_back_nodes(Mesh<3>&, const std::vector<MeshPart<3>>&, std::vector<char>*);
 template std::vector<MeshPart<2>> split_mesh(const Mesh<2>&, std::span<const int>, int);
 template std::vector<MeshPart<3>> split_mesh(const Mesh<3>&, std::span<const int>, int);
 template MergedMesh<2> merge_parts(const Mesh<2>&, const std::vector<MeshPart<2>>&);

@@ -49,10 +49,11 @@ MergedMesh<D> merge_parts(const Mesh<D>& old_mesh, const std::vector<MeshPart<D>
 // Writes the P2 nodes of curved `parts` of the P2 `mesh` back into it by global vertex ids: a
 // curving changes no element, only edge nodes (each ball is re-starred from its own vertex), so the
 // mesh keeps its elements, their order and its edge table. Returns per mesh vertex whether it lies
-// on an interface facet of a part. Throws Error when a part has an edge the mesh lacks, or gives an
-// interface edge (frozen on both sides) a node other than the mesh's.
+// on an interface facet of a part; with `written`, marks there (per mesh edge) the edges whose node
+// was written. Throws Error when a part has an edge the mesh lacks, or gives an interface edge
+// (frozen on both sides) a node other than the mesh's.
 template <int D>
-std::vector<char> write_back_nodes(Mesh<D>& mesh, const std::vector<MeshPart<D>>& parts);
+std::vector<char> write_back_nodes(Mesh<D>& mesh, const std::vector<MeshPart<D>>& parts, std::vector<char>* written = nullptr);
 
 // The faces between parts, each counted once.
 template <int D>

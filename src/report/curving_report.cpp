@@ -15,13 +15,13 @@
 namespace hocav {
 
 namespace {
-
 // Edges measured per task of the pool.
 constexpr std::size_t kMeasuredChunk = 1024;
+}  // namespace
 
-// The gain of edge e (a, b) and its curved node.
 template <int D>
-double edge_gain(const Mesh<D>& mesh, const MetricField<D>& field, Index e, Index a, Index b) {
+double edge_gain(const Mesh<D>& mesh, const MetricField<D>& field, Index e) {
+  const auto [a, b] = mesh.edge_vertices(e);
   const Vec<D> straight = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
   // A straight edge (most of them) gains nothing: no length to compute.
   if (mesh.edge_node(e) == straight) return 0;
@@ -32,8 +32,6 @@ double edge_gain(const Mesh<D>& mesh, const MetricField<D>& field, Index e, Inde
   const double curved_length = high_precision_edge_length(field, end_a, end_b, mesh.edge_node(e), hint);
   return 1 - curved_length / straight_length;
 }
-
-}  // namespace
 
 template <int D>
 std::vector<double> volume_edge_gains(const Mesh<D>& mesh, const MetricField<D>& field, int threads) {
@@ -47,7 +45,7 @@ std::vector<double> volume_edge_gains(const Mesh<D>& mesh, const MetricField<D>&
     for (auto e = static_cast<Index>(begin); e < static_cast<Index>(end); ++e) {
       auto [a, b] = mesh.edge_vertices(e);
       measured[e] = a != kNoIndex && !(on_boundary[a] && on_boundary[b]);
-      if (measured[e]) per_edge[e] = edge_gain(mesh, field, e, a, b);
+      if (measured[e]) per_edge[e] = edge_gain(mesh, field, e);
     }
   });
   std::vector<double> gains;
@@ -59,6 +57,14 @@ std::vector<double> volume_edge_gains(const Mesh<D>& mesh, const MetricField<D>&
 template <int D>
 CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& field, Index points_before, const ReinsertionResult& result,
                                   Index boundary_proposals_left, int threads) {
+  CurvingReport report = curving_run_report(field, points_before, result, boundary_proposals_left);
+  measure_curved_output(report, mesh, field, threads);
+  return report;
+}
+
+template <int D>
+CurvingReport curving_run_report(const MetricField<D>& field, Index points_before, const ReinsertionResult& result,
+                                 Index boundary_proposals_left) {
   CurvingReport report;
   report.dimension = D;
   report.points_before = points_before;
@@ -72,19 +78,22 @@ CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& fie
     // Sizes are e^(−θ/2): their ratio is e^((θmax − θmin)/2).
     report.max_anisotropy = std::max(report.max_anisotropy, std::exp(0.5 * (eigen.values[D - 1] - eigen.values[0])));
   }
-  measure_curved_output(report, mesh, field, threads);
   return report;
 }
 
 template <int D>
 void measure_curved_output(CurvingReport& report, const Mesh<D>& mesh, const MetricField<D>& field, int threads) {
+  summarize_curved_output(report, mesh, mesh_jacobian_quality(mesh, kReportedRefinement, threads), volume_edge_gains(mesh, field, threads));
+}
+
+template <int D>
+void summarize_curved_output(CurvingReport& report, const Mesh<D>& mesh, std::span<const JacobianQuality> elements,
+                             std::span<const double> gains) {
   report.elements = mesh.element_count();
   report.points_after = mesh.vertex_count() + mesh.edge_count();
-  auto summary = summarize_jacobian_quality(mesh_jacobian_quality(mesh, kReportedRefinement, threads));
+  auto summary = summarize_jacobian_quality(elements);
   report.normalized_jacobian = summary.min_normalized_jacobian;
   report.scaled_jacobian = summary.scaled_jacobian;
-
-  const std::vector<double> gains = volume_edge_gains(mesh, field, threads);
   report.average_gain = report.max_gain = 0;
   if (!gains.empty()) {
     report.average_gain = std::accumulate(gains.begin(), gains.end(), 0.0) / static_cast<double>(gains.size());
@@ -175,6 +184,12 @@ void write_curving_report_table(std::ostream& out, const CurvingReport& report) 
 
 template std::vector<double> volume_edge_gains(const Mesh<2>&, const MetricField<2>&, int);
 template std::vector<double> volume_edge_gains(const Mesh<3>&, const MetricField<3>&, int);
+template double edge_gain(const Mesh<2>&, const MetricField<2>&, Index);
+template double edge_gain(const Mesh<3>&, const MetricField<3>&, Index);
+template void summarize_curved_output(CurvingReport&, const Mesh<2>&, std::span<const JacobianQuality>, std::span<const double>);
+template void summarize_curved_output(CurvingReport&, const Mesh<3>&, std::span<const JacobianQuality>, std::span<const double>);
+template CurvingReport curving_run_report(const MetricField<2>&, Index, const ReinsertionResult&, Index);
+template CurvingReport curving_run_report(const MetricField<3>&, Index, const ReinsertionResult&, Index);
 template void measure_curved_output(CurvingReport&, const Mesh<2>&, const MetricField<2>&, int);
 template void measure_curved_output(CurvingReport&, const Mesh<3>&, const MetricField<3>&, int);
 template CurvingReport make_curving_report(const Mesh<2>&, const MetricField<2>&, Index, const ReinsertionResult&, Index, int);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <iosfwd>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,11 @@ struct CurvingReport {
   int threads = 1;
 };
 
+// 1 − ℓ(curved) / ℓ(straight) of edge e (0 for a straight one), lengths in the metric by 16-point
+// Gauss.
+template <int D>
+double edge_gain(const Mesh<D>& mesh, const MetricField<D>& field, Index e);
+
 // 1 − ℓ(curved) / ℓ(straight) of every volume edge (not both ends on the boundary), in edge order,
 // lengths in the metric by 16-point Gauss: the gains the report averages. The measures below run
 // on `threads` threads and give the same figures for any count.
@@ -39,6 +45,17 @@ std::vector<double> volume_edge_gains(const Mesh<D>& mesh, const MetricField<D>&
 // Measures `mesh` into the report's output figures: element and point counts, Jacobians, gains.
 template <int D>
 void measure_curved_output(CurvingReport& report, const Mesh<D>& mesh, const MetricField<D>& field, int threads);
+
+// The output figures from measures taken elsewhere (the parts of a distributed curving): each
+// element's Jacobians and each volume edge's gain, every one once.
+template <int D>
+void summarize_curved_output(CurvingReport& report, const Mesh<D>& mesh, std::span<const JacobianQuality> elements,
+                             std::span<const double> gains);
+
+// The run's figures (times, counters, the metric's anisotropy), without the output's.
+template <int D>
+CurvingReport curving_run_report(const MetricField<D>& field, Index points_before, const ReinsertionResult& result,
+                                 Index boundary_proposals_left);
 
 // Measures the output (Jacobians, gains) and gathers the run's figures.
 template <int D>

@@ -1,0 +1,116 @@
+#include "parallel/part_measures.hpp"
+
+#include <algorithm>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "base/thread_pool.hpp"
+#include "bezier/mesh_quality.hpp"
+#include "metric/metric_field.hpp"
+#include "report/curving_report.hpp"
+
+namespace hocav {
+namespace {
+
+// Edges measured per task of the pool.
+constexpr std::size_t kMeasuredChunk = 1024;
+
+std::uint64_t key_of(Index a, Index b) { return Mesh<3>::edge_key(a, b); }
+
+}  // namespace
+
+template <int D>
+std::vector<NodeUpdate<D>> node_updates_for(const Mesh<D>& mesh, const std::vector<char>& written, std::span<const Index> global_ids) {
+  std::vector<char> in_part(static_cast<std::size_t>(mesh.vertex_count()), 0);
+  for (Index g : global_ids)
+    if (g != kNoIndex) in_part[g] = 1;
+  std::vector<NodeUpdate<D>> updates;
+  for (Index e = 0; e < mesh.edge_count(); ++e) {
+    const auto& ends = mesh.edge_vertices(e);
+    if (written[e] && in_part[ends[0]] && in_part[ends[1]]) updates.push_back({ends, mesh.edge_node(e)});
+  }
+  return updates;
+}
+
+template <int D>
+std::vector<std::vector<std::array<Index, 2>>> interface_edges_measured_before(const std::vector<MeshPart<D>>& parts) {
+  std::unordered_set<std::uint64_t> held;  // the interface edges of the parts before
+  std::vector<std::vector<std::array<Index, 2>>> before(parts.size());
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    const MeshPart<D>& part = parts[p];
+    std::unordered_set<std::uint64_t> own;
+    for (Index f = 0; f < part.mesh.facet_count(); ++f) {
+      if (part.mesh.facet_ref(f) != kInterfaceRef) continue;
+      const auto& facet = part.mesh.facet(f);
+      for (int i = 0; i < (D == 3 ? 3 : 1); ++i) {
+        const Index a = part.global_ids[facet[i]], b = part.global_ids[facet[(i + 1) % D]];
+        if (!own.insert(key_of(a, b)).second) continue;
+        if (held.contains(key_of(a, b))) before[p].push_back({std::min(a, b), std::max(a, b)});
+      }
+    }
+    held.insert(own.begin(), own.end());
+  }
+  return before;
+}
+
+template <int D>
+PartMeasures measure_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics, std::span<const NodeUpdate<D>> updates,
+                          const std::vector<char>& on_boundary, std::span<const std::array<Index, 2>> measured_before, int threads) {
+  Mesh<D>& mesh = part.mesh;
+  if (mesh.element_count() == 0) return {};
+  std::unordered_map<Index, Index> local;
+  for (Index v = 0; v < mesh.vertex_count(); ++v)
+    if (part.global_ids[v] != kNoIndex) local.emplace(part.global_ids[v], v);
+  const auto local_of = [&](Index g) {
+    const auto found = local.find(g);
+    return found == local.end() ? kNoIndex : found->second;
+  };
+  for (const NodeUpdate<D>& update : updates) {
+    const Index a = local_of(update.ends[0]), b = local_of(update.ends[1]);
+    if (const Index e = a == kNoIndex || b == kNoIndex ? kNoIndex : mesh.find_edge(a, b); e != kNoIndex) mesh.edge_node(e) = update.node;
+  }
+  std::unordered_set<std::uint64_t> skipped;
+  for (const auto& [a, b] : measured_before) skipped.insert(key_of(a, b));
+  std::vector<Index> edges;  // the edges this part measures, in order
+  for (Index e = 0; e < mesh.edge_count(); ++e) {
+    const auto& [a, b] = mesh.edge_vertices(e);
+    if (a == kNoIndex || (on_boundary[a] && on_boundary[b])) continue;
+    if (!skipped.contains(key_of(part.global_ids[a], part.global_ids[b]))) edges.push_back(e);
+  }
+  const MetricField<D> field = MetricField<D>::from_log_metrics(mesh, std::move(log_metrics));
+  PartMeasures measures;
+  measures.elements = mesh_jacobian_quality(mesh, kReportedRefinement, threads);
+  std::vector<double> gains(edges.size(), 0);
+  std::vector<char> outside(edges.size(), 0);
+  ThreadPool pool(std::max(1, threads));
+  run_chunked(pool, edges.size(), kMeasuredChunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const auto& [a, b] = mesh.edge_vertices(edges[i]);
+      const Vec<D>& node = mesh.edge_node(edges[i]);
+      const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
+      // (The search edge_gain makes: from a non-convex part, another start may find the point.)
+      const auto inside = [&](const Vec<D>& x) { return field.sample(x, field.back_mesh().vertex_element(a)).where.inside; };
+      outside[i] = node != middle && !(inside(node) && inside(middle));
+      if (!outside[i]) gains[i] = edge_gain(mesh, field, edges[i]);
+    }
+  });
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const auto& [a, b] = mesh.edge_vertices(edges[i]);
+    if (outside[i])
+      measures.deferred.push_back({part.global_ids[a], part.global_ids[b]});
+    else
+      measures.gains.push_back(gains[i]);
+  }
+  return measures;
+}
+
+#define HOCAV_INSTANTIATE(D)                                                                                                         \
+  template std::vector<NodeUpdate<D>> node_updates_for(const Mesh<D>&, const std::vector<char>&, std::span<const Index>);            \
+  template std::vector<std::vector<std::array<Index, 2>>> interface_edges_measured_before(const std::vector<MeshPart<D>>&);          \
+  template PartMeasures measure_part(MeshPart<D>&, std::vector<SymMat<D>>, std::span<const NodeUpdate<D>>, const std::vector<char>&, \
+                                     std::span<const std::array<Index, 2>>, int);
+HOCAV_INSTANTIATE(2)
+HOCAV_INSTANTIATE(3)
+#undef HOCAV_INSTANTIATE
+
+}  // namespace hocav

@@ -1,0 +1,51 @@
+// The output figures of a distributed curving measured by the first round's parts
+// (docs/distributed.md §Curving): every element lies in exactly one of them, and later rounds only
+// move some of their edges' nodes, which rank 0 sends back to them before they measure.
+#pragma once
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "bezier/jacobian_bounds.hpp"
+#include "geom/sym_mat.hpp"
+#include "parallel/mesh_parts.hpp"
+
+namespace hocav {
+
+// An edge's node by the edge's ends in the whole mesh.
+template <int D>
+struct NodeUpdate {
+  std::array<Index, 2> ends;
+  Vec<D> node;
+};
+
+// The nodes of the mesh's edges marked `written` whose ends both lie in a part (its vertices'
+// global ids): what later rounds changed in that part.
+template <int D>
+std::vector<NodeUpdate<D>> node_updates_for(const Mesh<D>& mesh, const std::vector<char>& written, std::span<const Index> global_ids);
+
+// Per part, the interface edges (by global ends) that an earlier part holds too: each edge's gain
+// is measured once, by the first part that holds it.
+template <int D>
+std::vector<std::vector<std::array<Index, 2>>> interface_edges_measured_before(const std::vector<MeshPart<D>>& parts);
+
+// What a part measures: each element's Jacobians, in the part's order, and the gain of each edge
+// it measures (not both ends on the whole mesh's boundary, not measured by an earlier part). An
+// edge whose curved node or straight middle lies outside the part is left to the whole mesh's
+// field (`deferred`, by global ends): the part's field there is an extension, and its gain would
+// be another (a gain of 0.77 where the whole field gives 0.10, on the layered shell).
+struct PartMeasures {
+  std::vector<JacobianQuality> elements;
+  std::vector<double> gains;
+  std::vector<std::array<Index, 2>> deferred;
+};
+
+// Measures a curved part (P2, with its topology) in the field of its own vertices' log-metrics,
+// after writing `updates` into its nodes. `on_boundary`: per part vertex, whether it lies on the
+// whole mesh's boundary.
+template <int D>
+PartMeasures measure_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics, std::span<const NodeUpdate<D>> updates,
+                          const std::vector<char>& on_boundary, std::span<const std::array<Index, 2>> measured_before, int threads);
+
+}  // namespace hocav
