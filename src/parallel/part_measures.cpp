@@ -85,11 +85,12 @@ PartMeasures measure_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics,
   ThreadPool pool(std::max(1, threads));
   run_chunked(pool, edges.size(), kMeasuredChunk, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
-      const auto& [a, b] = mesh.edge_vertices(edges[i]);
+      const auto& ends = mesh.edge_vertices(edges[i]);
       const Vec<D>& node = mesh.edge_node(edges[i]);
-      const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
-      // (The search edge_gain makes: from a non-convex part, another start may find the point.)
-      const auto inside = [&](const Vec<D>& x) { return field.sample(x, field.back_mesh().vertex_element(a)).where.inside; };
+      const Vec<D> middle = 0.5 * (mesh.vertex(ends[0]) + mesh.vertex(ends[1]));
+      // The search edge_gain makes (from a non-convex part, another start may find the point).
+      const Index hint = field.back_mesh().vertex_element(ends[0]);
+      const auto inside = [&](const Vec<D>& x) { return field.sample(x, hint).where.inside; };
       outside[i] = node != middle && !(inside(node) && inside(middle));
       if (!outside[i]) gains[i] = edge_gain(mesh, field, edges[i]);
     }
