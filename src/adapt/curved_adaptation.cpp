@@ -145,11 +145,10 @@ double quality_to_keep(const P2Operations<D>& operations, std::span<const Index>
 template <int D>
 void longest_first(const Mesh<D>& mesh, const P2Operations<D>& operations, Index kept, std::vector<Index>& ring) {
   const SymMat<D> metric = exp_sym(operations.log_metric(kept));
-  const auto guess = [&](Index w) { return quadratic_form(metric, mesh.vertex(w) - mesh.vertex(kept)); };
-  std::sort(ring.begin(), ring.end(), [&](Index x, Index y) {
-    const double gx = guess(x), gy = guess(y);
-    return gx != gy ? gx > gy : x < y;
-  });
+  std::vector<std::pair<double, Index>> guessed;  // (−squared length, vertex): the longest first
+  for (Index w : ring) guessed.emplace_back(-quadratic_form(metric, mesh.vertex(w) - mesh.vertex(kept)), w);
+  std::sort(guessed.begin(), guessed.end());
+  for (std::size_t i = 0; i < ring.size(); ++i) ring[i] = guessed[i].second;
 }
 
 // Whether collapsing `removed` onto `kept` leaves every straight segment from `kept` to the ball's

@@ -149,7 +149,7 @@ AdaptationReport run_sphere_shell(const DemoOptions& options, Written& written) 
                                       Box{{{0.28, 0.28}}, {{0.58, 0.58}}},  // the detail: where the inner sphere meets x = y
                                       CutPlane{}};
   write_svg(written.path(options, "sphere-shell-cut.svg"), jacobian_picture(mesh, jacobians, figure));
-  write_histograms(volume_edge_gains(mesh, field), jacobians, options, written);
+  write_histograms(volume_edge_gains(mesh, field, options.threads), jacobians, options, written);
   return report;
 }
 

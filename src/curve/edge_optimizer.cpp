@@ -273,13 +273,19 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Edge
 template <int D>
 double high_precision_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b, const Vec<D>& node,
                                   Index hint) {
-  return EdgeLengthFunction<D>(a, b, high_precision_rule()).length(node, field.log_metric_at(node, hint));
+  return high_precision_edge_length(a, b, node, field.log_metric_at(node, hint));
 }
 
-#define HOCAV_INSTANTIATE(D)                                                                                                              \
-  template EdgeOptimization<D> optimize_edge_length(const MetricField<D>&, const EdgeEndpoint<D>&, const EdgeEndpoint<D>&, const Vec<D>&, \
-                                                    Index, const EdgeOptimizerOptions&, LocatorScratch&);                                 \
-  template double high_precision_edge_length(const MetricField<D>&, const EdgeEndpoint<D>&, const EdgeEndpoint<D>&, const Vec<D>&, Index);
+template <int D>
+double high_precision_edge_length(const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b, const Vec<D>& node, const SymMat<D>& log_node) {
+  return EdgeLengthFunction<D>(a, b, high_precision_rule()).length(node, log_node);
+}
+
+#define HOCAV_INSTANTIATE(D)                                                                                                               \
+  template EdgeOptimization<D> optimize_edge_length(const MetricField<D>&, const EdgeEndpoint<D>&, const EdgeEndpoint<D>&, const Vec<D>&,  \
+                                                    Index, const EdgeOptimizerOptions&, LocatorScratch&);                                  \
+  template double high_precision_edge_length(const MetricField<D>&, const EdgeEndpoint<D>&, const EdgeEndpoint<D>&, const Vec<D>&, Index); \
+  template double high_precision_edge_length(const EdgeEndpoint<D>&, const EdgeEndpoint<D>&, const Vec<D>&, const SymMat<D>&);
 HOCAV_INSTANTIATE(2)
 HOCAV_INSTANTIATE(3)
 #undef HOCAV_INSTANTIATE

@@ -73,6 +73,9 @@ EdgeOptimization<D> optimize_edge_length(const MetricField<D>& field, const Vec<
 template <int D>
 double high_precision_edge_length(const MetricField<D>& field, const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b, const Vec<D>& node,
                                   Index hint = kNoIndex);
+// The same with the back mesh's log-metric at the node already sampled.
+template <int D>
+double high_precision_edge_length(const EdgeEndpoint<D>& a, const EdgeEndpoint<D>& b, const Vec<D>& node, const SymMat<D>& log_node);
 // The same from the vertices' positions and log-metrics.
 template <int D>
 double high_precision_edge_length(const MetricField<D>& field, const Vec<D>& a, const Vec<D>& b, const SymMat<D>& log_a,

@@ -135,6 +135,7 @@ struct RootRound {
     if (first) {
       first_log_metrics = log_metrics_of(parts[0]);
       first_parts = std::move(parts);
+      written_later.assign(static_cast<std::size_t>(mesh.edge_count()), 0);
     }
     figures.cavities = round.counters.cavities;
     figures.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -174,7 +175,6 @@ struct RootRound {
 
   // The parts' nodes into the mesh; the vertices on this round's interfaces leave the pending ones.
   void write_back(const std::vector<MeshPart<D>>& parts) {
-    if (!pending.empty() && written_later.empty()) written_later.assign(static_cast<std::size_t>(mesh.edge_count()), 0);
     std::vector<char> on_interface = write_back_nodes(mesh, parts, pending.empty() ? nullptr : &written_later);
     figures.interface_vertices = static_cast<Index>(std::count(on_interface.begin(), on_interface.end(), 1));
     if (pending.empty()) {
@@ -189,7 +189,9 @@ struct RootRound {
 
   // The output's Jacobians and gains, measured by the first round's parts, in part order.
   PartMeasures measure_output() {
-    if (written_later.empty()) written_later.assign(static_cast<std::size_t>(mesh.edge_count()), 0);
+    std::vector<Index> written;
+    for (Index e = 0; e < mesh.edge_count(); ++e)
+      if (written_later[e]) written.push_back(e);
     const std::vector<bool> on_boundary = boundary_vertex_flags(mesh);
     const auto before = interface_edges_measured_before(first_parts);
     const auto boundary_of = [&](const MeshPart<D>& part) {
@@ -198,11 +200,11 @@ struct RootRound {
       return out;
     };
     for (int p = 1; p < process_count(); ++p) {
-      send_values(p, node_updates_for(mesh, written_later, first_parts[p].global_ids));
+      send_values(p, node_updates_for(mesh, written, first_parts[p].global_ids));
       send_values(p, boundary_of(first_parts[p]));
       send_values(p, before[p]);
     }
-    const auto updates = node_updates_for(mesh, written_later, first_parts[0].global_ids);
+    const auto updates = node_updates_for(mesh, written, first_parts[0].global_ids);
     PartMeasures all = measure_part<D>(first_parts[0], std::move(first_log_metrics), updates, boundary_of(first_parts[0]), before[0],
                                        options.threads);
     for (int p = 1; p < process_count(); ++p) {
@@ -213,7 +215,7 @@ struct RootRound {
       all.gains.insert(all.gains.end(), gains.begin(), gains.end());
       all.deferred.insert(all.deferred.end(), deferred.begin(), deferred.end());
     }
-    for (const auto& [a, b] : all.deferred) all.gains.push_back(edge_gain(mesh, field, mesh.find_edge(a, b)));
+    for (const auto& [a, b] : all.deferred) all.gains.push_back(edge_gain(mesh, field, mesh.find_edge(a, b)).value);
     return all;
   }
 

@@ -20,14 +20,14 @@ std::uint64_t key_of(Index a, Index b) { return Mesh<3>::edge_key(a, b); }
 }  // namespace
 
 template <int D>
-std::vector<NodeUpdate<D>> node_updates_for(const Mesh<D>& mesh, const std::vector<char>& written, std::span<const Index> global_ids) {
+std::vector<NodeUpdate<D>> node_updates_for(const Mesh<D>& mesh, std::span<const Index> written, std::span<const Index> global_ids) {
   std::vector<char> in_part(static_cast<std::size_t>(mesh.vertex_count()), 0);
   for (Index g : global_ids)
     if (g != kNoIndex) in_part[g] = 1;
   std::vector<NodeUpdate<D>> updates;
-  for (Index e = 0; e < mesh.edge_count(); ++e) {
+  for (Index e : written) {
     const auto& ends = mesh.edge_vertices(e);
-    if (written[e] && in_part[ends[0]] && in_part[ends[1]]) updates.push_back({ends, mesh.edge_node(e)});
+    if (in_part[ends[0]] && in_part[ends[1]]) updates.push_back({ends, mesh.edge_node(e)});
   }
   return updates;
 }
@@ -80,33 +80,23 @@ PartMeasures measure_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics,
   const MetricField<D> field = MetricField<D>::from_log_metrics(mesh, std::move(log_metrics));
   PartMeasures measures;
   measures.elements = mesh_jacobian_quality(mesh, kReportedRefinement, threads);
-  std::vector<double> gains(edges.size(), 0);
-  std::vector<char> outside(edges.size(), 0);
+  std::vector<EdgeGain> gains(edges.size());
   ThreadPool pool(std::max(1, threads));
   run_chunked(pool, edges.size(), kMeasuredChunk, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      const auto& ends = mesh.edge_vertices(edges[i]);
-      const Vec<D>& node = mesh.edge_node(edges[i]);
-      const Vec<D> middle = 0.5 * (mesh.vertex(ends[0]) + mesh.vertex(ends[1]));
-      // The search edge_gain makes (from a non-convex part, another start may find the point).
-      const Index hint = field.back_mesh().vertex_element(ends[0]);
-      const auto inside = [&](const Vec<D>& x) { return field.sample(x, hint).where.inside; };
-      outside[i] = node != middle && !(inside(node) && inside(middle));
-      if (!outside[i]) gains[i] = edge_gain(mesh, field, edges[i]);
-    }
+    for (std::size_t i = begin; i < end; ++i) gains[i] = edge_gain(mesh, field, edges[i]);
   });
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const auto& [a, b] = mesh.edge_vertices(edges[i]);
-    if (outside[i])
+    if (!gains[i].sampled_inside)
       measures.deferred.push_back({part.global_ids[a], part.global_ids[b]});
     else
-      measures.gains.push_back(gains[i]);
+      measures.gains.push_back(gains[i].value);
   }
   return measures;
 }
 
 #define HOCAV_INSTANTIATE(D)                                                                                                         \
-  template std::vector<NodeUpdate<D>> node_updates_for(const Mesh<D>&, const std::vector<char>&, std::span<const Index>);            \
+  template std::vector<NodeUpdate<D>> node_updates_for(const Mesh<D>&, std::span<const Index>, std::span<const Index>);              \
   template std::vector<std::vector<std::array<Index, 2>>> interface_edges_measured_before(const std::vector<MeshPart<D>>&);          \
   template PartMeasures measure_part(MeshPart<D>&, std::vector<SymMat<D>>, std::span<const NodeUpdate<D>>, const std::vector<char>&, \
                                      std::span<const std::array<Index, 2>>, int);

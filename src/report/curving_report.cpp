@@ -20,17 +20,18 @@ constexpr std::size_t kMeasuredChunk = 1024;
 }  // namespace
 
 template <int D>
-double edge_gain(const Mesh<D>& mesh, const MetricField<D>& field, Index e) {
+EdgeGain edge_gain(const Mesh<D>& mesh, const MetricField<D>& field, Index e) {
   const auto [a, b] = mesh.edge_vertices(e);
   const Vec<D> straight = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
   // A straight edge (most of them) gains nothing: no length to compute.
-  if (mesh.edge_node(e) == straight) return 0;
+  if (mesh.edge_node(e) == straight) return {};
   const EdgeEndpoint<D> end_a = edge_endpoint(mesh.vertex(a), field.vertex_log_metric(a));
   const EdgeEndpoint<D> end_b = edge_endpoint(mesh.vertex(b), field.vertex_log_metric(b));
   const Index hint = field.back_mesh().vertex_element(a);  // the input, whose vertices the curved mesh keeps: hints near them
-  const double straight_length = high_precision_edge_length(field, end_a, end_b, straight, hint);
-  const double curved_length = high_precision_edge_length(field, end_a, end_b, mesh.edge_node(e), hint);
-  return 1 - curved_length / straight_length;
+  const auto straight_sample = field.sample(straight, hint), curved_sample = field.sample(mesh.edge_node(e), hint);
+  const double straight_length = high_precision_edge_length(end_a, end_b, straight, straight_sample.log_metric);
+  const double curved_length = high_precision_edge_length(end_a, end_b, mesh.edge_node(e), curved_sample.log_metric);
+  return {1 - curved_length / straight_length, straight_sample.where.inside && curved_sample.where.inside};
 }
 
 template <int D>
@@ -45,7 +46,7 @@ std::vector<double> volume_edge_gains(const Mesh<D>& mesh, const MetricField<D>&
     for (auto e = static_cast<Index>(begin); e < static_cast<Index>(end); ++e) {
       auto [a, b] = mesh.edge_vertices(e);
       measured[e] = a != kNoIndex && !(on_boundary[a] && on_boundary[b]);
-      if (measured[e]) per_edge[e] = edge_gain(mesh, field, e);
+      if (measured[e]) per_edge[e] = edge_gain(mesh, field, e).value;
     }
   });
   std::vector<double> gains;
@@ -184,8 +185,8 @@ void write_curving_report_table(std::ostream& out, const CurvingReport& report) 
 
 template std::vector<double> volume_edge_gains(const Mesh<2>&, const MetricField<2>&, int);
 template std::vector<double> volume_edge_gains(const Mesh<3>&, const MetricField<3>&, int);
-template double edge_gain(const Mesh<2>&, const MetricField<2>&, Index);
-template double edge_gain(const Mesh<3>&, const MetricField<3>&, Index);
+template EdgeGain edge_gain(const Mesh<2>&, const MetricField<2>&, Index);
+template EdgeGain edge_gain(const Mesh<3>&, const MetricField<3>&, Index);
 template void summarize_curved_output(CurvingReport&, const Mesh<2>&, std::span<const JacobianQuality>, std::span<const double>);
 template void summarize_curved_output(CurvingReport&, const Mesh<3>&, std::span<const JacobianQuality>, std::span<const double>);
 template CurvingReport curving_run_report(const MetricField<2>&, Index, const ReinsertionResult&, Index);

@@ -32,9 +32,14 @@ struct CurvingReport {
 };
 
 // 1 − ℓ(curved) / ℓ(straight) of edge e (0 for a straight one), lengths in the metric by 16-point
-// Gauss.
+// Gauss, and whether the field's search found its node and its straight middle inside the back
+// mesh (a distributed part hands the others on: parallel/part_measures.hpp).
+struct EdgeGain {
+  double value = 0;
+  bool sampled_inside = true;
+};
 template <int D>
-double edge_gain(const Mesh<D>& mesh, const MetricField<D>& field, Index e);
+EdgeGain edge_gain(const Mesh<D>& mesh, const MetricField<D>& field, Index e);
 
 // 1 − ℓ(curved) / ℓ(straight) of every volume edge (not both ends on the boundary), in edge order,
 // lengths in the metric by 16-point Gauss: the gains the report averages. The measures below run

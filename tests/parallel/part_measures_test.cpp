@@ -59,6 +59,9 @@ struct CurvedCube {
   PartMeasures measured_by(std::vector<MeshPart<3>>& parts, const std::vector<char>& written) const {
     const std::vector<bool> on_boundary = boundary_vertex_flags(mesh);
     const auto before = interface_edges_measured_before(parts);
+    std::vector<Index> changed;
+    for (Index e = 0; e < mesh.edge_count(); ++e)
+      if (written[e]) changed.push_back(e);
     PartMeasures all;
     for (std::size_t p = 0; p < parts.size(); ++p) {
       std::vector<SymMat<3>> log_metrics;
@@ -67,13 +70,13 @@ struct CurvedCube {
         log_metrics.push_back(field->vertex_log_metric(g));
         boundary.push_back(on_boundary[g]);
       }
-      const auto updates = node_updates_for(mesh, written, parts[p].global_ids);
+      const auto updates = node_updates_for(mesh, changed, parts[p].global_ids);
       const PartMeasures part = measure_part<3>(parts[p], log_metrics, updates, boundary, before[p], 2);
       all.elements.insert(all.elements.end(), part.elements.begin(), part.elements.end());
       all.gains.insert(all.gains.end(), part.gains.begin(), part.gains.end());
       all.deferred.insert(all.deferred.end(), part.deferred.begin(), part.deferred.end());
     }
-    for (const auto& [a, b] : all.deferred) all.gains.push_back(edge_gain(mesh, *field, mesh.find_edge(a, b)));
+    for (const auto& [a, b] : all.deferred) all.gains.push_back(edge_gain(mesh, *field, mesh.find_edge(a, b)).value);
     return all;
   }
 
