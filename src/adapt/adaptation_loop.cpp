@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "adapt/adaptation_mesh.hpp"
+#include "adapt/boundary_settling.hpp"
 #include "base/error.hpp"
 #include "mesh/spatial_order.hpp"
 
@@ -81,6 +82,11 @@ template <int D>
 AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits, ThreadPool& pool) {
   AdaptationPass pass;
   am.start_pass();
+  if (am.geometry()) {
+    const BoundarySettling settling = timed(pass.seconds_settle, [&] { return settle_boundary_between_passes(am); });
+    pass.settled = settling.settled;
+    pass.partly_settled = settling.partly;
+  }
   pass.collapses = timed(pass.seconds_collapse, [&] { return collapse_short_edges(am, limits, pool); });
   pass.swaps = timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, am.start_sweep(), pool); });
   pass.splits = timed(pass.seconds_split, [&] { return split_long_edges(am, limits, pool); });
@@ -96,7 +102,8 @@ AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits, T
   });
   pass.vertices = am.mesh().vertex_count();
   pass.elements = am.mesh().element_count();
-  pass.seconds = pass.seconds_collapse + pass.seconds_swap + pass.seconds_split + pass.seconds_smooth + pass.seconds_compact;
+  pass.seconds = pass.seconds_collapse + pass.seconds_swap + pass.seconds_split + pass.seconds_smooth + pass.seconds_compact +
+                 pass.seconds_settle;
   return pass;
 }
 

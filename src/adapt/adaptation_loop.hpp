@@ -47,7 +47,10 @@ struct AdaptationPass {
   Index vertices = 0, elements = 0;  // after the pass
   double seconds = 0;
   // Per operator (collapse, swap, split, smoothing) and for the compaction.
-  double seconds_collapse = 0, seconds_swap = 0, seconds_split = 0, seconds_smooth = 0, seconds_compact = 0;
+  double seconds_collapse = 0, seconds_swap = 0, seconds_split = 0, seconds_smooth = 0, seconds_compact = 0, seconds_settle = 0;
+  // The boundary settling at the pass's start (with a geometry): vertices moved onto the geometry,
+  // and part of the way (docs/adaptation.md §Boundary settling).
+  Index settled = 0, partly_settled = 0;
   // The loop's window (docs/adaptation.md §The loop) during the pass: open, a collapse may make
   // edges up to collapse_length_bound (2); closed, up to √2.
   bool window_open = false;

@@ -87,6 +87,20 @@ void AdaptationMesh<D>::move_vertex(Index v, const Vec<D>& x, std::span<const In
 }
 
 template <int D>
+void AdaptationMesh<D>::vertices_moved(std::span<const char> moved) {
+  for (Index v = 0; v < mesh_.vertex_count(); ++v)
+    if (moved[static_cast<std::size_t>(v)]) set_point_metric(v, metric_at_point(mesh_.vertex(v), v));
+  std::vector<Index> elements;
+  for (Index k = 0; k < mesh_.element_count(); ++k) {
+    const Element& element = mesh_.element(k);
+    if (std::none_of(element.begin(), element.end(), [&](Index v) { return moved[static_cast<std::size_t>(v)] != 0; })) continue;
+    elements.push_back(k);
+    for (Index v : element) mark_changed(v);
+  }
+  update_qualities(elements);
+}
+
+template <int D>
 double AdaptationMesh<D>::quality(const Element& element, Index moved, const Vec<D>& x, const SymMat<D>& metric_x) const {
   SimplexPoints<D> points;
   std::array<SymMat<D>, D + 1> metrics;

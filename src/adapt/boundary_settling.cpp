@@ -50,19 +50,19 @@ std::optional<Vec<D>> geometric_point(const Mesh<D>& mesh, Index v, VertexClass 
   return geometry.project_on_ridge(mesh.vertex(v), refs.front(), refs.back());
 }
 
-// The moves that put the boundary vertices on the geometry (zero for those on it), every boundary
-// vertex flagged fixed; counts those off it.
+// The moves that put the boundary vertices on the geometry (zero for those on it, and for those
+// `candidates` leaves out when it is not empty), every boundary vertex flagged fixed; counts those off it.
 template <int D>
-std::vector<Vec<D>> boundary_moves(Mesh<D>& mesh, const BoundaryGeometry<D>& geometry, double feature_angle_degrees,
-                                   std::vector<char>& fixed, BoundarySettling& out) {
+std::vector<Vec<D>> boundary_moves(Mesh<D>& mesh, const BoundaryGeometry<D>& geometry, std::span<const VertexClass> classes,
+                                   std::span<const char> candidates, std::vector<char>& fixed, BoundarySettling& out) {
   const double tolerance = kOnGeometry * bounding_box_diagonal(mesh);
-  const std::vector<VertexClass> classes = classify_vertices(mesh, feature_angle_degrees);
   std::vector<Vec<D>> moves(static_cast<std::size_t>(mesh.vertex_count()), Vec<D>{});
   fixed.assign(moves.size(), 0);
   std::vector<Index> ball, facets;
   for (Index v = 0; v < mesh.vertex_count(); ++v) {
     if (classes[v] == VertexClass::kInterior) continue;
     fixed[v] = 1;
+    if (!candidates.empty() && !candidates[v]) continue;
     const std::optional<Vec<D>> point = geometric_point(mesh, v, classes[v], geometry, ball, facets);
     if (!point || !(norm(*point - mesh.vertex(v)) > tolerance)) continue;
     moves[v] = *point - mesh.vertex(v);
@@ -150,15 +150,15 @@ void count_moves(const ScaledMoves<D>& moves, const std::vector<char>& fixed, Bo
   }
 }
 
-}  // namespace
-
+// settle_boundary with the vertices' classes given, moving only the boundary vertices flagged in
+// `candidates` (all when it is empty).
 template <int D>
-BoundarySettling settle_boundary(Mesh<D>& mesh, std::span<const SymMat<D>> metrics, const BoundaryGeometry<D>& geometry,
-                                 double feature_angle_degrees) {
+BoundarySettling settle_classified_boundary(Mesh<D>& mesh, std::span<const SymMat<D>> metrics, const BoundaryGeometry<D>& geometry,
+                                            std::span<const VertexClass> classes, std::span<const char> candidates) {
   const auto start = std::chrono::steady_clock::now();
   BoundarySettling out;
   std::vector<char> fixed;
-  const std::vector<Vec<D>> on_boundary = boundary_moves(mesh, geometry, feature_angle_degrees, fixed, out);
+  const std::vector<Vec<D>> on_boundary = boundary_moves(mesh, geometry, classes, candidates, fixed, out);
   if (out.off_geometry > 0) {
     const HarmonicExtension<D> extension = harmonic_extension<D>(mesh, vertex_graph(mesh), fixed, on_boundary, kReachFactor);
     out.solver_iterations = extension.iterations;
@@ -171,7 +171,38 @@ BoundarySettling settle_boundary(Mesh<D>& mesh, std::span<const SymMat<D>> metri
   return out;
 }
 
+}  // namespace
+
+template <int D>
+BoundarySettling settle_boundary(Mesh<D>& mesh, std::span<const SymMat<D>> metrics, const BoundaryGeometry<D>& geometry,
+                                 double feature_angle_degrees) {
+  const std::vector<VertexClass> classes = classify_vertices(mesh, feature_angle_degrees);
+  return settle_classified_boundary<D>(mesh, metrics, geometry, classes, {});
+}
+
+template <int D>
+BoundarySettling settle_boundary_between_passes(AdaptationMesh<D>& am) {
+  Mesh<D>& mesh = am.mesh();
+  const auto count = static_cast<std::size_t>(mesh.vertex_count());
+  std::vector<SymMat<D>> metrics(count);
+  std::vector<VertexClass> classes(count);
+  std::vector<char> changed(count);
+  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+    metrics[v] = am.metric(v);
+    classes[v] = am.vertex_class(v);
+    changed[v] = am.changed_recently(v);
+  }
+  const std::vector<Vec<D>> before(mesh.vertices().begin(), mesh.vertices().end());
+  const BoundarySettling out = settle_classified_boundary<D>(mesh, metrics, *am.geometry(), classes, changed);
+  std::vector<char> moved(count, 0);
+  for (Index v = 0; v < mesh.vertex_count(); ++v) moved[v] = !(mesh.vertex(v) == before[v]);
+  am.vertices_moved(moved);
+  return out;
+}
+
 template BoundarySettling settle_boundary(Mesh<2>&, std::span<const SymMat<2>>, const BoundaryGeometry<2>&, double);
 template BoundarySettling settle_boundary(Mesh<3>&, std::span<const SymMat<3>>, const BoundaryGeometry<3>&, double);
+template BoundarySettling settle_boundary_between_passes(AdaptationMesh<2>&);
+template BoundarySettling settle_boundary_between_passes(AdaptationMesh<3>&);
 
 }  // namespace hocav

@@ -8,6 +8,7 @@
 
 #include <span>
 
+#include "adapt/adaptation_mesh.hpp"
 #include "geom/sym_mat.hpp"
 #include "mesh/mesh.hpp"
 #include "surface/boundary_geometry.hpp"
@@ -33,5 +34,14 @@ struct BoundarySettling {
 template <int D>
 BoundarySettling settle_boundary(Mesh<D>& mesh, std::span<const SymMat<D>> metrics, const BoundaryGeometry<D>& geometry,
                                  double feature_angle_degrees);
+
+// The same at the start of a pass of the loop (after am.start_pass()), on its mesh (which has a
+// geometry), with its classes and vertex metrics, for the boundary vertices changed since the
+// previous pass began (the others were settled, or refused, as they are): each vertex it moves then
+// takes the metric at its new point and the qualities of its elements follow, so that the pass's
+// collapses, swaps and moves mend what the moves left poor, and the next settling goes further
+// (docs/adaptation.md §Boundary settling).
+template <int D>
+BoundarySettling settle_boundary_between_passes(AdaptationMesh<D>& am);
 
 }  // namespace hocav

@@ -108,10 +108,13 @@ AdaptationRun combined(const std::vector<AdaptationRun>& runs) {
       sum.moves += pass.moves;
       sum.vertices += pass.vertices;
       sum.elements += pass.elements;
+      sum.settled += pass.settled;
+      sum.partly_settled += pass.partly_settled;
       sum.window_open = sum.window_open || pass.window_open;
       sum.collapse_length_bound = std::max(sum.collapse_length_bound, pass.collapse_length_bound);
-      for (auto seconds : {&AdaptationPass::seconds, &AdaptationPass::seconds_collapse, &AdaptationPass::seconds_swap,
-                           &AdaptationPass::seconds_split, &AdaptationPass::seconds_smooth, &AdaptationPass::seconds_compact})
+      for (auto seconds :
+           {&AdaptationPass::seconds, &AdaptationPass::seconds_collapse, &AdaptationPass::seconds_swap, &AdaptationPass::seconds_split,
+            &AdaptationPass::seconds_smooth, &AdaptationPass::seconds_compact, &AdaptationPass::seconds_settle})
         sum.*seconds = std::max(sum.*seconds, pass.*seconds);
     }
   }

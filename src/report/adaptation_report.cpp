@@ -131,7 +131,8 @@ void write_adaptation_report_json(std::ostream& out, const AdaptationReport& rep
     json.member("vertices", pass.vertices).member("elements", pass.elements).member("seconds", pass.seconds);
     json.key("seconds_per_operator").begin_object();
     json.member("collapse", pass.seconds_collapse).member("swap", pass.seconds_swap).member("split", pass.seconds_split);
-    json.member("smooth", pass.seconds_smooth).member("compact", pass.seconds_compact).end_object();
+    json.member("smooth", pass.seconds_smooth).member("compact", pass.seconds_compact).member("settle", pass.seconds_settle).end_object();
+    json.member("settled", pass.settled).member("partly_settled", pass.partly_settled);
     json.member("window_open", pass.window_open).member("collapse_length_bound", pass.collapse_length_bound);
     json.end_object();
   }
@@ -158,12 +159,12 @@ void write_adaptation_report_json(std::ostream& out, const AdaptationReport& rep
 }
 
 void write_adaptation_report_table(std::ostream& out, const AdaptationReport& report) {
-  out << "pass  collapses  splits   swaps   moves  vertices  elements  seconds  window\n";
+  out << "pass  collapses  splits   swaps   moves  settled  vertices  elements  seconds  window\n";
   for (std::size_t i = 0; i < report.run.passes.size(); ++i) {
     const AdaptationPass& p = report.run.passes[i];
     char line[160];
-    std::snprintf(line, sizeof line, "%4zu %10d %7d %7d %7d %9d %9d %8.2f  %s\n", i + 1, p.collapses.done, p.splits.done, p.swaps.done,
-                  p.moves.done, p.vertices, p.elements, p.seconds, p.window_open ? "open" : "closed");
+    std::snprintf(line, sizeof line, "%4zu %10d %7d %7d %7d %8d %9d %9d %8.2f  %s\n", i + 1, p.collapses.done, p.splits.done, p.swaps.done,
+                  p.moves.done, p.settled + p.partly_settled, p.vertices, p.elements, p.seconds, p.window_open ? "open" : "closed");
     out << line;
   }
   char summary[512];
