@@ -194,18 +194,18 @@ struct RootRound {
       if (written_later[e]) written.push_back(e);
     const std::vector<bool> on_boundary = boundary_vertex_flags(mesh);
     const auto before = interface_edges_measured_before(first_parts);
+    auto updates = node_updates_by_part(mesh, written, first_parts);
     const auto boundary_of = [&](const MeshPart<D>& part) {
       std::vector<char> out;
       for (Index g : part.global_ids) out.push_back(on_boundary[g]);
       return out;
     };
     for (int p = 1; p < process_count(); ++p) {
-      send_values(p, node_updates_for(mesh, written, first_parts[p].global_ids));
+      send_values(p, updates[p]);
       send_values(p, boundary_of(first_parts[p]));
       send_values(p, before[p]);
     }
-    const auto updates = node_updates_for(mesh, written, first_parts[0].global_ids);
-    PartMeasures all = measure_part<D>(first_parts[0], std::move(first_log_metrics), updates, boundary_of(first_parts[0]), before[0],
+    PartMeasures all = measure_part<D>(first_parts[0], std::move(first_log_metrics), updates[0], boundary_of(first_parts[0]), before[0],
                                        options.threads);
     for (int p = 1; p < process_count(); ++p) {
       const auto elements = receive_values<JacobianQuality>(p);

@@ -20,14 +20,25 @@ std::uint64_t key_of(Index a, Index b) { return Mesh<3>::edge_key(a, b); }
 }  // namespace
 
 template <int D>
-std::vector<NodeUpdate<D>> node_updates_for(const Mesh<D>& mesh, std::span<const Index> written, std::span<const Index> global_ids) {
-  std::vector<char> in_part(static_cast<std::size_t>(mesh.vertex_count()), 0);
-  for (Index g : global_ids)
-    if (g != kNoIndex) in_part[g] = 1;
-  std::vector<NodeUpdate<D>> updates;
+std::vector<std::vector<NodeUpdate<D>>> node_updates_by_part(const Mesh<D>& mesh, std::span<const Index> written,
+                                                             const std::vector<MeshPart<D>>& parts) {
+  // The parts that hold each vertex of the mesh, as offsets into one list (a vertex on an interface
+  // is in several): memory for the parts' vertices, not for parts × vertices.
+  std::vector<Index> offsets(static_cast<std::size_t>(mesh.vertex_count()) + 1, 0);
+  for (const MeshPart<D>& part : parts)
+    for (Index g : part.global_ids)
+      if (g != kNoIndex) ++offsets[g + 1];
+  for (std::size_t v = 1; v < offsets.size(); ++v) offsets[v] += offsets[v - 1];
+  std::vector<Index> holders(static_cast<std::size_t>(offsets.back())), filled(offsets.begin(), offsets.end() - 1);
+  for (std::size_t p = 0; p < parts.size(); ++p)
+    for (Index g : parts[p].global_ids)
+      if (g != kNoIndex) holders[filled[g]++] = static_cast<Index>(p);
+  std::vector<std::vector<NodeUpdate<D>>> updates(parts.size());
   for (Index e : written) {
     const auto& ends = mesh.edge_vertices(e);
-    if (in_part[ends[0]] && in_part[ends[1]]) updates.push_back({ends, mesh.edge_node(e)});
+    for (Index i = offsets[ends[0]]; i < offsets[ends[0] + 1]; ++i)
+      for (Index j = offsets[ends[1]]; j < offsets[ends[1] + 1]; ++j)
+        if (holders[i] == holders[j]) updates[holders[i]].push_back({ends, mesh.edge_node(e)});
   }
   return updates;
 }
@@ -96,7 +107,8 @@ PartMeasures measure_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics,
 }
 
 #define HOCAV_INSTANTIATE(D)                                                                                                         \
-  template std::vector<NodeUpdate<D>> node_updates_for(const Mesh<D>&, std::span<const Index>, std::span<const Index>);              \
+  template std::vector<std::vector<NodeUpdate<D>>> node_updates_by_part(const Mesh<D>&, std::span<const Index>,                      \
+                                                                        const std::vector<MeshPart<D>>&);                            \
   template std::vector<std::vector<std::array<Index, 2>>> interface_edges_measured_before(const std::vector<MeshPart<D>>&);          \
   template PartMeasures measure_part(MeshPart<D>&, std::vector<SymMat<D>>, std::span<const NodeUpdate<D>>, const std::vector<char>&, \
                                      std::span<const std::array<Index, 2>>, int);

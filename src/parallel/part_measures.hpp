@@ -20,10 +20,11 @@ struct NodeUpdate {
   Vec<D> node;
 };
 
-// The nodes of the `written` edges of the mesh whose ends both lie in a part (its vertices' global
-// ids): what later rounds changed in that part.
+// Per part, the nodes of the `written` edges of the mesh whose ends both lie in it (its vertices'
+// global ids): what later rounds changed in that part.
 template <int D>
-std::vector<NodeUpdate<D>> node_updates_for(const Mesh<D>& mesh, std::span<const Index> written, std::span<const Index> global_ids);
+std::vector<std::vector<NodeUpdate<D>>> node_updates_by_part(const Mesh<D>& mesh, std::span<const Index> written,
+                                                             const std::vector<MeshPart<D>>& parts);
 
 // Per part, the interface edges (by global ends) that an earlier part holds too: each edge's gain
 // is measured once, by the first part that holds it.

@@ -62,6 +62,7 @@ struct CurvedCube {
     std::vector<Index> changed;
     for (Index e = 0; e < mesh.edge_count(); ++e)
       if (written[e]) changed.push_back(e);
+    const auto updates = node_updates_by_part(mesh, changed, parts);
     PartMeasures all;
     for (std::size_t p = 0; p < parts.size(); ++p) {
       std::vector<SymMat<3>> log_metrics;
@@ -70,8 +71,7 @@ struct CurvedCube {
         log_metrics.push_back(field->vertex_log_metric(g));
         boundary.push_back(on_boundary[g]);
       }
-      const auto updates = node_updates_for(mesh, changed, parts[p].global_ids);
-      const PartMeasures part = measure_part<3>(parts[p], log_metrics, updates, boundary, before[p], 2);
+      const PartMeasures part = measure_part<3>(parts[p], log_metrics, updates[p], boundary, before[p], 2);
       all.elements.insert(all.elements.end(), part.elements.begin(), part.elements.end());
       all.gains.insert(all.gains.end(), part.gains.begin(), part.gains.end());
       all.deferred.insert(all.deferred.end(), part.deferred.begin(), part.deferred.end());
