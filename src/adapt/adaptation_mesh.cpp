@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "adapt/vertex_classes.hpp"
+#include "mesh/ball_and_shell.hpp"
 
 namespace hocav {
 
@@ -87,16 +88,17 @@ void AdaptationMesh<D>::move_vertex(Index v, const Vec<D>& x, std::span<const In
 }
 
 template <int D>
-void AdaptationMesh<D>::vertices_moved(std::span<const char> moved) {
-  for (Index v = 0; v < mesh_.vertex_count(); ++v)
-    if (moved[static_cast<std::size_t>(v)]) set_point_metric(v, metric_at_point(mesh_.vertex(v), v));
-  std::vector<Index> elements;
-  for (Index k = 0; k < mesh_.element_count(); ++k) {
-    const Element& element = mesh_.element(k);
-    if (std::none_of(element.begin(), element.end(), [&](Index v) { return moved[static_cast<std::size_t>(v)] != 0; })) continue;
-    elements.push_back(k);
-    for (Index v : element) mark_changed(v);
+void AdaptationMesh<D>::vertices_moved(std::span<const Index> moved) {
+  for (Index v : moved) set_point_metric(v, metric_at_point(mesh_.vertex(v), v));
+  std::vector<Index> ball, elements;
+  for (Index v : moved) {
+    collect_ball(mesh_, v, ball);
+    elements.insert(elements.end(), ball.begin(), ball.end());
   }
+  std::sort(elements.begin(), elements.end());
+  elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
+  for (Index k : elements)
+    for (Index v : mesh_.element(k)) mark_changed(v);
   update_qualities(elements);
 }
 

@@ -102,9 +102,9 @@ class AdaptationMesh {
       if (!region[static_cast<std::size_t>(v)]) mesh_.vertex_attribute(stamp_attribute_, v)[0] = -1;
   }
   // After vertices moved by something other than the operators (the boundary settling): each moved
-  // vertex (per vertex, nonzero) takes the metric at its new point, the elements that hold one renew
-  // their qualities, and their vertices are marked changed.
-  void vertices_moved(std::span<const char> moved);
+  // vertex takes the metric at its new point, the elements of their balls renew their qualities, and
+  // their vertices are marked changed.
+  void vertices_moved(std::span<const Index> moved);
   bool changed_recently(Index v) const { return changed_since(v, previous_pass_start_); }
   // Whether v's ball changed at or after `clock` (everything did since clock 0).
   bool changed_since(Index v, int clock) const { return mesh_.vertex_attribute(stamp_attribute_, v)[0] >= clock; }

@@ -151,10 +151,11 @@ void count_moves(const ScaledMoves<D>& moves, const std::vector<char>& fixed, Bo
 }
 
 // settle_boundary with the vertices' classes given, moving only the boundary vertices flagged in
-// `candidates` (all when it is empty).
+// `candidates` (all when it is empty); the vertices it moved, boundary and inner, go to `moved`.
 template <int D>
 BoundarySettling settle_classified_boundary(Mesh<D>& mesh, std::span<const SymMat<D>> metrics, const BoundaryGeometry<D>& geometry,
-                                            std::span<const VertexClass> classes, std::span<const char> candidates) {
+                                            std::span<const VertexClass> classes, std::span<const char> candidates,
+                                            std::vector<Index>& moved) {
   const auto start = std::chrono::steady_clock::now();
   BoundarySettling out;
   std::vector<char> fixed;
@@ -165,7 +166,11 @@ BoundarySettling settle_classified_boundary(Mesh<D>& mesh, std::span<const SymMa
     ScaledMoves<D> moves(mesh, metrics, extension.moves);
     while (moves.scale_back_failing(out.rounds)) ++out.rounds;
     count_moves(moves, fixed, out);
-    for (Index v = 0; v < mesh.vertex_count(); ++v) mesh.vertex(v) = moves.point(v);
+    for (Index v = 0; v < mesh.vertex_count(); ++v)
+      if (moves.scale(v) > 0 && norm(moves.move(v)) > 0) {
+        mesh.vertex(v) = moves.point(v);
+        moved.push_back(v);
+      }
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
@@ -177,7 +182,8 @@ template <int D>
 BoundarySettling settle_boundary(Mesh<D>& mesh, std::span<const SymMat<D>> metrics, const BoundaryGeometry<D>& geometry,
                                  double feature_angle_degrees) {
   const std::vector<VertexClass> classes = classify_vertices(mesh, feature_angle_degrees);
-  return settle_classified_boundary<D>(mesh, metrics, geometry, classes, {});
+  std::vector<Index> moved;
+  return settle_classified_boundary<D>(mesh, metrics, geometry, classes, {}, moved);
 }
 
 template <int D>
@@ -192,10 +198,8 @@ BoundarySettling settle_boundary_between_passes(AdaptationMesh<D>& am) {
     classes[v] = am.vertex_class(v);
     changed[v] = am.changed_recently(v);
   }
-  const std::vector<Vec<D>> before(mesh.vertices().begin(), mesh.vertices().end());
-  const BoundarySettling out = settle_classified_boundary<D>(mesh, metrics, *am.geometry(), classes, changed);
-  std::vector<char> moved(count, 0);
-  for (Index v = 0; v < mesh.vertex_count(); ++v) moved[v] = !(mesh.vertex(v) == before[v]);
+  std::vector<Index> moved;
+  const BoundarySettling out = settle_classified_boundary<D>(mesh, metrics, *am.geometry(), classes, changed, moved);
   am.vertices_moved(moved);
   return out;
 }
