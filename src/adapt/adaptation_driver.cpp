@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "adapt/hausdorff_metric.hpp"
 #include "base/memory_budget.hpp"
 #include "base/thread_pool.hpp"
 #include "geom/sym_eigen.hpp"
@@ -103,12 +104,27 @@ double smallest_size_at_vertices(const Mesh<D>& input, const AdaptationMetric<D>
 template <int D>
 AdaptationMetric<D> metric_within(const AdaptationSetup<D>& out, const AdaptationJob<D>& job, const SizeBounds& bounds) {
   if (out.field) return AdaptationMetric<D>(*out.field, bounds);
-  return AdaptationMetric<D>(*job.analytic, bounds);
+  return AdaptationMetric<D>(*job.analytic, bounds, out.hausdorff_field ? &*out.hausdorff_field : nullptr);
+}
+
+// An analytic metric's Hausdorff bound: a field on the input, kept when the bound is finer than the
+// metric at some vertex of the input.
+template <int D>
+void bound_analytic_metric(AdaptationSetup<D>& out, const Mesh<D>& input, const AnalyticMetricSpec& analytic, const HausdorffBound& bound) {
+  const std::vector<SymMat<D>> bounds = hausdorff_metrics(input, *out.geometry, bound);
+  for (Index v = 0; v < input.vertex_count(); ++v) {
+    const SymMat<D> metric = analytic_metric<D>(analytic, input.vertex(v));
+    out.hausdorff_bounded_vertices += within_bound(metric, bounds[v]) != metric;
+  }
+  if (out.hausdorff_bounded_vertices > 0) out.hausdorff_field.emplace(input, bounds);
 }
 
 template <int D>
 void make_job_metric(AdaptationSetup<D>& out, const Mesh<D>& input, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job) {
+  const HausdorffBound bound{out.settings.hausd, job.angle};
+  if (job.analytic && out.geometry) bound_analytic_metric(out, input, *job.analytic, bound);
   if (!job.analytic) {
+    if (out.geometry) out.hausdorff_bounded_vertices = bound_metrics_by_hausdorff(input, metrics, *out.geometry, bound);
     if (job.gradation) grade_metrics(input, metrics, {*job.gradation});
     out.field.emplace(input, metrics);
   }
@@ -136,10 +152,6 @@ std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector
   auto setup = std::make_unique<AdaptationSetup<D>>();
   setup->input = std::move(input);
   const Mesh<D>& back = setup->input;
-  make_job_metric(*setup, back, std::move(metrics), job);
-  const double expected = expected_element_count(back, *setup->metric);
-  check_memory_fits("adapting " + name + " (the metric asks for about " + std::to_string(static_cast<long long>(expected)) + " elements)",
-                    expected, kAdaptationBytesPerElement);
   setup->geometry = job.geometry(back);
   AdaptationSettings& settings = setup->settings;
   settings.max_passes = job.iterations;
@@ -148,6 +160,10 @@ std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector
   settings.threads = job.threads;
   settings.progress = job.pass_progress;
   settings.measure_output = job.measure_output;
+  make_job_metric(*setup, back, std::move(metrics), job);
+  const double expected = expected_element_count(back, *setup->metric);
+  check_memory_fits("adapting " + name + " (the metric asks for about " + std::to_string(static_cast<long long>(expected)) + " elements)",
+                    expected, kAdaptationBytesPerElement);
   return setup;
 }
 
@@ -156,6 +172,7 @@ AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics,
   mesh.forget_edges();
   const auto setup = set_up_adaptation(mesh, std::move(metrics), job, name);
   AdaptedMesh<D> adapted = adapt_in_metric(mesh, *setup->metric, setup->geometry.get(), setup->settings, job.loop);
+  adapted.report.hausdorff_bounded_vertices = setup->hausdorff_bounded_vertices;
   if (job.curving) {
     CurvingOptions curving = *job.curving;
     if (job.before_curving) job.before_curving(mesh, curving);

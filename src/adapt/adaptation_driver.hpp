@@ -84,9 +84,12 @@ template <int D>
 struct AdaptationSetup {
   Mesh<D> input;  // the field's back mesh
   std::optional<MetricField<D>> field;
+  std::optional<MetricField<D>> hausdorff_field;  // an analytic metric's Hausdorff bound, where it is finer
   std::optional<AdaptationMetric<D>> metric;
   std::unique_ptr<BoundaryGeometry<D>> geometry;
   AdaptationSettings settings;
+  // The input's vertices whose metric the Hausdorff bound made finer (hausdorff_metric.hpp).
+  Index hausdorff_bounded_vertices = 0;
 };
 
 // Sets up `job` on `input` (P1), `metrics` the metric at its vertices (empty with an analytic metric),

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "adapt/hausdorff_metric.hpp"
 #include "geom/sym_eigen.hpp"
 #include "geom/sym_functions.hpp"
 #include "mesh/measure.hpp"
@@ -11,7 +12,13 @@ namespace hocav {
 
 template <int D>
 SymMat<D> AdaptationMetric<D>::metric_at(const Vec<D>& x, Index& hint) const {
-  if (analytic_) return clamped(analytic_metric<D>(*analytic_, x));
+  if (analytic_) {
+    const SymMat<D> metric = analytic_metric<D>(*analytic_, x);
+    if (!hausdorff_) return clamped(metric);
+    const auto sample = hausdorff_->sample(x, hint);
+    hint = sample.where.element;
+    return clamped(within_bound(metric, exp_sym(sample.log_metric)));
+  }
   const auto sample = field_->sample(x, hint);
   hint = sample.where.element;
   return clamped(exp_sym(sample.log_metric));

@@ -1,6 +1,8 @@
 // The metric an adaptation run adapts to (docs/adaptation.md §Metric): either a field on a back mesh
 // (the input mesh with a metric at its vertices, log-Euclidean interpolation) or an analytic field
-// evaluated exactly at every new vertex; sizes clamped to [h_min, h_max] in both cases.
+// evaluated exactly at every new vertex, then intersected with the Hausdorff bound where that is
+// finer (hausdorff_metric.hpp; a field on a back mesh has the bound in its vertex metrics already);
+// sizes clamped to [h_min, h_max] in both cases.
 #pragma once
 
 #include <optional>
@@ -22,10 +24,12 @@ class AdaptationMetric {
  public:
   // The field must outlive this object.
   AdaptationMetric(const MetricField<D>& field, SizeBounds bounds) : field_(&field), bounds_(bounds) {}
-  AdaptationMetric(AnalyticMetricSpec spec, SizeBounds bounds) : analytic_(std::move(spec)), bounds_(bounds) {}
+  // `hausdorff`, when given, must outlive this object.
+  AdaptationMetric(AnalyticMetricSpec spec, SizeBounds bounds, const MetricField<D>* hausdorff = nullptr)
+      : hausdorff_(hausdorff), analytic_(std::move(spec)), bounds_(bounds) {}
 
   // The metric at x, clamped. `hint`: a back element near x (kNoIndex: none), updated to where x
-  // fell; ignored by an analytic field.
+  // fell; unused by an analytic field without a Hausdorff bound.
   SymMat<D> metric_at(const Vec<D>& x, Index& hint) const;
 
   // Clamps a metric's sizes to the bounds (eigenvalues to [1/h_max², 1/h_min²]).
@@ -33,6 +37,7 @@ class AdaptationMetric {
 
  private:
   const MetricField<D>* field_ = nullptr;
+  const MetricField<D>* hausdorff_ = nullptr;  // with an analytic field: the bound on its back mesh
   std::optional<AnalyticMetricSpec> analytic_;
   SizeBounds bounds_;
 };

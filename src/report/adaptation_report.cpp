@@ -119,6 +119,7 @@ void write_adaptation_report_json(std::ostream& out, const AdaptationReport& rep
   json.member("dimension", report.dimension);
   json.member("input_vertices", report.input_vertices).member("input_elements", report.input_elements);
   json.member("output_vertices", report.output_vertices).member("output_elements", report.output_elements);
+  json.member("hausdorff_bounded_vertices", report.hausdorff_bounded_vertices);
   json.member("converged", report.run.converged);
   json.member("stopped_with_window_open", report.run.stopped_with_window_open);
   json.key("passes").begin_array();

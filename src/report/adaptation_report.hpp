@@ -20,6 +20,8 @@ struct AdaptationReport {
   int dimension = 3;
   Index input_vertices = 0, input_elements = 0;
   Index output_vertices = 0, output_elements = 0;
+  // The input's vertices whose metric the Hausdorff bound (--hausd) made finer before the loop.
+  Index hausdorff_bounded_vertices = 0;
   AdaptationRun run;
   // With a geometry: the boundary vertices the loop left off it, moved onto it after the loop.
   std::optional<BoundarySettling> settling;

@@ -1,0 +1,38 @@
+// The Hausdorff bound as a metric (docs/adaptation.md §The Hausdorff bound): at each boundary vertex of
+// the back mesh, the sizes that keep a unit boundary facet within `hausd` of the geometry, from the
+// curvature the geometry has along the vertex's boundary edges. Intersected with the given metric
+// before its gradation, as mmg does with its -hausd: the split then refines a curved boundary
+// because the metric asks for it, and no collapse undoes that split.
+#pragma once
+
+#include <vector>
+
+#include "geom/sym_mat.hpp"
+#include "mesh/mesh.hpp"
+#include "surface/boundary_geometry.hpp"
+
+namespace hocav {
+
+struct HausdorffBound {
+  double hausd = 0;                   // > 0
+  double feature_angle_degrees = 45;  // ridges and corners as the loop finds them (AdaptationSettings)
+};
+
+// The bound at every vertex of `mesh` (P1, with its boundary facets): at the boundary vertices the
+// sizes the geometry's curvature asks for, graded into the domain; sizes of the domain's diagonal
+// where it asks for nothing.
+template <int D>
+std::vector<SymMat<D>> hausdorff_metrics(const Mesh<D>& mesh, const BoundaryGeometry<D>& geometry, const HausdorffBound& bound);
+
+// metric ∩ bound, or `metric` itself, bit for bit, when it is at least as fine every way (metric −
+// bound positive semi-definite).
+template <int D>
+SymMat<D> within_bound(const SymMat<D>& metric, const SymMat<D>& bound);
+
+// Makes each vertex's metric within_bound of the bound's.
+// Returns how many vertices changed.
+template <int D>
+Index bound_metrics_by_hausdorff(const Mesh<D>& mesh, std::vector<SymMat<D>>& metrics, const BoundaryGeometry<D>& geometry,
+                                 const HausdorffBound& bound);
+
+}  // namespace hocav
