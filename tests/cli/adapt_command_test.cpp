@@ -54,6 +54,27 @@ TEST_F(AdaptCli, CubeWithAMetricFileStopsAtOrderOne) {
   EXPECT_EQ(stats_json("adapted.meshb", "d[\"consistency\"][\"consistent\"], d[\"order\"], d[\"counts\"][\"corners\"]"), "(True, 1, 8)");
 }
 
+// --hausd refines a coarse curved boundary through the metric, given in a file or analytic; a bound
+// looser than the boundary's sag touches nothing (docs/adaptation.md §The Hausdorff bound).
+TEST_F(AdaptCli, TheHausdorffBoundRefinesACoarseCircle) {
+  run_ok("generate polar-annulus --target-triangles 200 -o annulus.meshb");
+  run_ok("metric annulus.meshb --analytic uniform --h 0.3 -o annulus.solb");
+  const auto adapt = [&](const std::string& source, const char* hausd) {
+    run_ok("adapt annulus.meshb " + source + " --hausd " + hausd + " -o adapted.meshb --order 1 --report report.json -q");
+    return std::pair(report_value("d[\"hausdorff_bounded_vertices\"]"), report_value("d[\"output_elements\"]"));
+  };
+  const auto [loose_bounded, loose_elements] = adapt("--metric annulus.solb", "1");
+  const auto [tight_bounded, tight_elements] = adapt("--metric annulus.solb", "0.002");
+  EXPECT_EQ(loose_bounded, 0);
+  EXPECT_GT(tight_bounded, 0);
+  EXPECT_GT(tight_elements, 3 * loose_elements);
+  const auto [analytic_loose_bounded, analytic_loose_elements] = adapt("--analytic uniform", "1");
+  const auto [analytic_tight_bounded, analytic_tight_elements] = adapt("--analytic uniform", "0.0005");
+  EXPECT_EQ(analytic_loose_bounded, 0);
+  EXPECT_GT(analytic_tight_bounded, 0);
+  EXPECT_GT(analytic_tight_elements, 1.5 * analytic_loose_elements);
+}
+
 // A boundary-layer shell in its implied metric (coarsened along the walls): at 5fcd448 a surface
 // collapse on the inner wall there folded the surface onto itself and the output stacked two
 // facets on one face, which `hocav stats` refused (the collapse's surface link condition,
