@@ -1,4 +1,5 @@
-// hocav adapt IN --metric SOL | --analytic NAME -o OUT [--order 2|1] [--hmin H] [--hmax H]
+// hocav adapt IN --metric SOL | --analytic NAME | --hessian FIELD --complexity N [--norm P]
+//                | --surface-sizes HN,HT | --implied -o OUT [--order 2|1] [--hmin H] [--hmax H]
 //                [--hgrad BETA] [--hausd D] [--angle DEG] [--surface p3|cad:FILE|none]
 //                [--curved] [--jacobian-floor J] [--iterations N] [--threads N] [--report R.json] [--vtu V.vtu]
 // Metric-based adaptation to a unit mesh (split, collapse, swap, smooth; boundary points on the
@@ -14,10 +15,14 @@
 #include "base/thread_pool.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
+#include "cli/metric_sources.hpp"
 #include "cli/number_checks.hpp"
 #include "io/atomic_output.hpp"
 #include "io/node_metrics.hpp"
 #include "io/output_set.hpp"
+#include "mesh/measure.hpp"
+#include "metric/implied_metric.hpp"
+#include "metric/surface_metric.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_adaptation.hpp"
 #include "parallel/distributed_curving.hpp"
@@ -30,6 +35,10 @@ namespace {
 
 struct AdaptOptions {
   std::string input, metric, analytic, output, report, vtu, surface = "p3";
+  std::string hessian;  // the Lp metric of a field's Hessian (metric_sources.hpp)
+  std::optional<double> complexity, norm;
+  std::vector<double> surface_sizes;  // HN, HT: the surface metric (needs --hgrad)
+  bool implied = false;
   int order = 2;
   std::optional<double> h_min, h_max, gradation;
   std::optional<double> hausd_given;
@@ -42,7 +51,15 @@ struct AdaptOptions {
 };
 
 void check_options(const AdaptOptions& o) {
-  if (o.metric.empty() == o.analytic.empty()) throw Error("give exactly one metric source: --metric SOL or --analytic NAME");
+  const int sources = !o.metric.empty() + !o.analytic.empty() + !o.hessian.empty() + !o.surface_sizes.empty() + o.implied;
+  if (sources != 1)
+    throw Error(
+        "give exactly one metric source: --metric SOL, --analytic NAME, --hessian FIELD --complexity N, --surface-sizes HN,HT or "
+        "--implied");
+  if (o.hessian.empty() != !o.complexity) throw Error("--hessian and --complexity N go together");
+  if (o.norm && o.hessian.empty()) throw Error("--norm applies to --hessian only");
+  if (!o.surface_sizes.empty() && !o.gradation)
+    throw Error("--surface-sizes needs --hgrad BETA to carry the boundary sizes into the volume");
   if (o.curved && o.order == 1) throw Error("--curved adapts the curved mesh: it needs --order 2");
   if (o.h_min && o.h_max && *o.h_min > *o.h_max) throw Error("--hmin must not exceed --hmax");
   if (o.gradation && !o.analytic.empty())
@@ -53,6 +70,34 @@ void check_options(const AdaptOptions& o) {
 void warn_if_not_converged(const AdaptOptions& o, const AdaptationReport& report) {
   if (const std::string why = non_convergence_summary(report); !why.empty())
     std::cerr << "hocav adapt: warning: " << o.input << ": " << why << '\n';
+}
+
+// The metric source as warnings name it.
+std::string metric_source_name(const AdaptOptions& o) {
+  if (!o.metric.empty()) return o.metric;
+  if (!o.analytic.empty()) return "--analytic " + o.analytic;
+  if (!o.hessian.empty()) return "--hessian " + o.hessian;
+  return o.implied ? "--implied" : "--surface-sizes";
+}
+
+// The metric at the input's vertices (none for an analytic metric, evaluated at every vertex).
+template <int D>
+std::vector<SymMat<D>> vertex_metrics(const Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o) {
+  if (!o.metric.empty()) return metrics_of_rows<D>(read_metric_for_mesh(o.metric, file, false));
+  if (!o.hessian.empty()) {
+    HessianSource source;
+    source.field = o.hessian;
+    source.complexity = *o.complexity;
+    source.norm = o.norm;
+    source.h_min = o.h_min;
+    source.h_max = o.h_max;
+    return hessian_source_metrics(mesh, file, source);
+  }
+  if (!o.surface_sizes.empty())
+    return surface_metric_at_vertices(mesh,
+                                      SurfaceSizes{o.surface_sizes[0], o.surface_sizes[1], o.h_max.value_or(bounding_box_diagonal(mesh))});
+  if (o.implied) return implied_metric_at_vertices(mesh);
+  return {};
 }
 
 // The command's options as the library's job.
@@ -70,7 +115,7 @@ AdaptationJob<D> adaptation_job(const AdaptOptions& o) {
   job.iterations = o.iterations;
   job.threads = o.threads;
   job.measure_output = !o.quiet || !o.report.empty();  // (what -q would not print)
-  job.metric_name = o.analytic.empty() ? o.metric : "--analytic " + o.analytic;
+  job.metric_name = metric_source_name(o);
   job.warn = [](const std::string& warning) { std::cerr << "hocav adapt: warning: " << warning << '\n'; };
   if (o.order == 2) {
     job.curving.emplace();
@@ -160,8 +205,7 @@ void serve_adaptation(const AdaptOptions& o) {
 template <int D>
 void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, OutputSet& outputs) {
   check_mesh_or_warn(mesh, o.input);
-  std::vector<SymMat<D>> metrics;
-  if (o.analytic.empty()) metrics = metrics_of_rows<D>(read_metric_for_mesh(o.metric, file, false));
+  std::vector<SymMat<D>> metrics = vertex_metrics(mesh, file, o);
   AdaptationJob<D> job = adaptation_job<D>(o);
   std::vector<DistributedIteration> iterations;
   if (process_count() > 1) distribute(mesh, metrics, job, o, iterations);
@@ -194,6 +238,7 @@ void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, Ou
 void declare_adapt_files(OutputSet& outputs, const AdaptOptions& o) {
   outputs.add_input(o.input, "the input mesh");
   if (!o.metric.empty()) outputs.add_input(o.metric, "--metric");
+  if (!o.hessian.empty() && !is_analytic_field(o.hessian)) outputs.add_input(o.hessian, "--hessian");
   if (o.surface.starts_with("cad:")) outputs.add_input(o.surface.substr(4), "--surface cad:");
   check_writable_mesh_format(o.output);
   outputs.add_output(o.output, "-o");
@@ -214,6 +259,18 @@ void add_adapt_command(CLI::App& app) {
         for (const auto& n : analytic_metric_names()) names += (names.empty() ? "" : ", ") + n;
         return names;
       }() + ")");
+  command->add_option("--hessian", o->hessian,
+                      "or the Lp metric of a field's Hessian: FIELD.sol(b) at the input's nodes, or analytic:NAME (as hocav metric)");
+  command->add_option("--complexity", o->complexity, "--hessian: the target complexity N (about the vertex count)")
+      ->check(finite_positive());
+  command->add_option("--norm", o->norm, "--hessian: the p of the Lp norm of the error (default 2)")->check(finite_positive());
+  command
+      ->add_option("--surface-sizes", o->surface_sizes,
+                   "or size HN along the boundary normal and HT along the boundary (hocav metric --surface), carried inside by --hgrad")
+      ->delimiter(',')
+      ->expected(2)
+      ->check(finite_positive());
+  command->add_flag("--implied", o->implied, "or the metric in which the input is a unit mesh");
   command->add_option("-o,--output", o->output, "adapted mesh to write (.mesh, .meshb, .msh, .vtu)")->required();
   command->add_option("--order", o->order, "2: curve the adapted mesh (P2 output); 1: stop after the P1 adaptation")
       ->check(CLI::IsMember({1, 2}))
@@ -224,7 +281,8 @@ void add_adapt_command(CLI::App& app) {
       ->check(finite_range(1.0 + 1e-12, 1e6, "BETA > 1"));
   command
       ->add_option("--hausd", o->hausd_given,
-                   "largest distance from a new boundary facet to the geometry (default 0.01 x the bounding box's diagonal)")
+                   "bound on the distance from the boundary to the geometry: the metric is refined along curved boundaries, and no "
+                   "collapse or move puts a facet farther (default 0.01 x the bounding box's diagonal)")
       ->check(finite_positive());
   command->add_option("--angle", o->angle, "boundary sides meeting at more than this dihedral angle are ridges (degrees)")
       ->check(finite_range(0.0, 180.0, "0 to 180"))

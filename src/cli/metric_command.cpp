@@ -15,6 +15,7 @@
 #include "base/memory_budget.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
+#include "cli/metric_sources.hpp"
 #include "cli/number_checks.hpp"
 #include "geom/sym_functions.hpp"
 #include "io/node_metrics.hpp"
@@ -24,7 +25,6 @@
 #include "metric/analytic_metric.hpp"
 #include "metric/gradation.hpp"
 #include "metric/hessian_metric.hpp"
-#include "metric/hessian_recovery.hpp"
 #include "metric/implied_metric.hpp"
 #include "metric/surface_metric.hpp"
 #include "report/mesh_summary.hpp"
@@ -33,8 +33,6 @@ namespace hocav {
 namespace {
 
 enum class Source { kAnalytic, kImplied, kSurface, kHessian, kInput, kInterpolated };
-
-constexpr const char* kAnalyticFieldPrefix = "analytic:";
 
 struct MetricOptions {
   std::string mesh, output;
@@ -62,8 +60,6 @@ Source chosen_source(const MetricOptions& options) {
         "or --from MESH --from-metric SOL");
   return given.front();
 }
-
-bool is_analytic_field(const std::string& hessian) { return hessian.starts_with(kAnalyticFieldPrefix); }
 
 // Options that belong to other sources, or to another analytic metric, are refused rather than
 // silently ignored.
@@ -120,13 +116,17 @@ AnalyticMetricSpec analytic_metric_spec(const MetricOptions& options) {
 }
 
 template <int D>
-AnalyticFieldSpec analytic_field_spec(const MetricOptions& options) {
-  AnalyticFieldSpec spec;
-  spec.name = options.hessian.substr(std::string(kAnalyticFieldPrefix).size());
-  spec.radius = options.radius.value_or(spec.radius);
-  spec.width = options.width.value_or(spec.width);
-  spec.origin = origin_of<D>(options);
-  return spec;
+HessianSource hessian_source(const MetricOptions& options) {
+  HessianSource source;
+  source.field = options.hessian;
+  source.shape.radius = options.radius.value_or(source.shape.radius);
+  source.shape.width = options.width.value_or(source.shape.width);
+  source.shape.origin = origin_of<D>(options);
+  source.complexity = *options.complexity;
+  source.norm = options.norm;
+  source.h_min = options.h_min;
+  source.h_max = options.h_max;
+  return source;
 }
 
 // The metric at the vertices and, when the source knows them exactly, at the P2 nodes (else empty).
@@ -134,23 +134,6 @@ template <int D>
 struct SourceMetrics {
   std::vector<SymMat<D>> vertices, edge_nodes;
 };
-
-template <int D>
-SourceMetrics<D> hessian_metrics(const Mesh<D>& mesh, const MeshFileContent& file, const MetricOptions& options) {
-  std::vector<SymMat<D>> hessians;
-  if (is_analytic_field(options.hessian)) {
-    AnalyticFieldSpec spec = analytic_field_spec<D>(options);
-    for (const auto& x : mesh.vertices()) hessians.push_back(analytic_field_hessian<D>(spec, x));
-  } else {
-    hessians = recover_hessians(mesh, read_scalar_for_mesh(options.hessian, file));
-  }
-  LpMetricOptions lp;
-  lp.complexity = *options.complexity;
-  lp.norm = options.norm.value_or(lp.norm);
-  lp.h_max = options.h_max.value_or(bounding_box_diagonal(mesh));
-  lp.h_min = options.h_min.value_or(kHessianSizeRange * lp.h_max);
-  return {lp_metric(mesh, hessians, lp), {}};
-}
 
 // The back mesh's metric interpolated at the nodes of `mesh` (MetricField: log-Euclidean in the back
 // element containing the node, extended affinely just outside the back mesh).
@@ -182,7 +165,7 @@ SourceMetrics<D> source_metrics(const Mesh<D>& mesh, const MeshFileContent& file
       SurfaceSizes sizes{options.surface[0], options.surface[1], options.h_max.value_or(bounding_box_diagonal(mesh))};
       return {surface_metric_at_vertices(mesh, sizes), {}};
     }
-    case Source::kHessian: return hessian_metrics(mesh, file, options);
+    case Source::kHessian: return {hessian_source_metrics(mesh, file, hessian_source<D>(options)), {}};
     case Source::kInput: {
       std::vector<SymMat<D>> rows = metrics_of_rows<D>(read_metric_for_mesh(options.input, file, mesh.is_p2()));
       auto first_node = rows.begin() + mesh.vertex_count();

@@ -75,6 +75,27 @@ TEST_F(AdaptCli, TheHausdorffBoundRefinesACoarseCircle) {
   EXPECT_GT(analytic_tight_elements, 1.5 * analytic_loose_elements);
 }
 
+// The sources of `hocav metric` given to `hocav adapt` directly: the same output, byte for byte, as the
+// metric written by `hocav metric` and adapted from the file. (The surface sizes with a loose
+// --hausd: the bound comes before --hgrad, which `hocav metric --gradation` has applied already.)
+TEST_F(AdaptCli, TheMetricCommandsSourcesAdaptAsTheirFiles) {
+  run_ok("generate polar-annulus --target-triangles 300 -o annulus.meshb");
+  const auto same_as_file = [&](const std::string& metric_source, const std::string& adapt_source) {
+    run_ok("metric annulus.meshb " + metric_source + " -o source.solb");
+    run_ok("adapt annulus.meshb --metric source.solb --hausd 1000 -o from_file.meshb --order 1 -q");
+    run_ok("adapt annulus.meshb " + adapt_source + " --hausd 1000 -o direct.meshb --order 1 -q --report report.json");
+    EXPECT_GT(report_value("d[\"output_elements\"]"), 0) << adapt_source;
+    EXPECT_EQ(read("from_file.meshb"), read("direct.meshb")) << adapt_source;
+  };
+  same_as_file("--hessian analytic:tanh-shock --complexity 400", "--hessian analytic:tanh-shock --complexity 400");
+  same_as_file("--surface 0.01,0.1 --gradation 1.5", "--surface-sizes 0.01,0.1 --hgrad 1.5");
+  same_as_file("--implied", "--implied");
+  EXPECT_EQ(run("adapt annulus.meshb --surface-sizes 0.01,0.1 -o x.meshb").exit_code, 2);       // no --hgrad
+  EXPECT_EQ(run("adapt annulus.meshb --hessian analytic:tanh-shock -o x.meshb").exit_code, 2);  // no --complexity
+  EXPECT_EQ(run("adapt annulus.meshb --implied --analytic uniform -o x.meshb").exit_code, 2);   // two sources
+  EXPECT_FALSE(fs::exists(path("x.meshb")));
+}
+
 // A boundary-layer shell in its implied metric (coarsened along the walls): at 5fcd448 a surface
 // collapse on the inner wall there folded the surface onto itself and the output stacked two
 // facets on one face, which `hocav stats` refused (the collapse's surface link condition,

@@ -1,0 +1,31 @@
+#include "cli/metric_sources.hpp"
+
+#include "io/node_metrics.hpp"
+#include "mesh/measure.hpp"
+#include "metric/hessian_metric.hpp"
+#include "metric/hessian_recovery.hpp"
+
+namespace hocav {
+
+template <int D>
+std::vector<SymMat<D>> hessian_source_metrics(const Mesh<D>& mesh, const MeshFileContent& file, const HessianSource& source) {
+  std::vector<SymMat<D>> hessians;
+  if (is_analytic_field(source.field)) {
+    AnalyticFieldSpec shape = source.shape;
+    shape.name = source.field.substr(std::string(kAnalyticFieldPrefix).size());
+    for (const auto& x : mesh.vertices()) hessians.push_back(analytic_field_hessian<D>(shape, x));
+  } else {
+    hessians = recover_hessians(mesh, read_scalar_for_mesh(source.field, file));
+  }
+  LpMetricOptions lp;
+  lp.complexity = source.complexity;
+  lp.norm = source.norm.value_or(lp.norm);
+  lp.h_max = source.h_max.value_or(bounding_box_diagonal(mesh));
+  lp.h_min = source.h_min.value_or(kHessianSizeRange * lp.h_max);
+  return lp_metric(mesh, hessians, lp);
+}
+
+template std::vector<SymMat<2>> hessian_source_metrics(const Mesh<2>&, const MeshFileContent&, const HessianSource&);
+template std::vector<SymMat<3>> hessian_source_metrics(const Mesh<3>&, const MeshFileContent&, const HessianSource&);
+
+}  // namespace hocav
