@@ -111,11 +111,9 @@ AdaptationMetric<D> metric_within(const AdaptationSetup<D>& out, const Adaptatio
 // metric at some vertex of the input.
 template <int D>
 void bound_analytic_metric(AdaptationSetup<D>& out, const Mesh<D>& input, const AnalyticMetricSpec& analytic, const HausdorffBound& bound) {
-  const std::vector<SymMat<D>> bounds = hausdorff_metrics(input, *out.geometry, bound);
-  for (Index v = 0; v < input.vertex_count(); ++v) {
-    const SymMat<D> metric = analytic_metric<D>(analytic, input.vertex(v));
-    out.hausdorff_bounded_vertices += within_bound(metric, bounds[v]) != metric;
-  }
+  const std::vector<SymMat<D>> given = analytic_metric_at_vertices(analytic, input);
+  const std::vector<SymMat<D>> bounds = hausdorff_metrics<D>(input, *out.geometry, bound, given);
+  for (Index v = 0; v < input.vertex_count(); ++v) out.hausdorff_bounded_vertices += within_bound(given[v], bounds[v]) != given[v];
   if (out.hausdorff_bounded_vertices > 0) out.hausdorff_field.emplace(input, bounds);
 }
 

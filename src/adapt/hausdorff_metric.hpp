@@ -5,6 +5,7 @@
 // because the metric asks for it, and no collapse undoes that split.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "geom/sym_mat.hpp"
@@ -18,11 +19,13 @@ struct HausdorffBound {
   double feature_angle_degrees = 45;  // ridges and corners as the loop finds them (AdaptationSettings)
 };
 
-// The bound at every vertex of `mesh` (P1, with its boundary facets): at the boundary vertices the
-// sizes the geometry's curvature asks for, graded into the domain; sizes of the domain's diagonal
-// where it asks for nothing.
+// The bound at every vertex of `mesh` (P1, with its boundary facets), `given` the metric at its
+// vertices: at the boundary vertices where the geometry's curvature asks for smaller sizes than
+// `given`, those sizes, graded into the domain; sizes of the domain's diagonal elsewhere, which ask
+// for nothing.
 template <int D>
-std::vector<SymMat<D>> hausdorff_metrics(const Mesh<D>& mesh, const BoundaryGeometry<D>& geometry, const HausdorffBound& bound);
+std::vector<SymMat<D>> hausdorff_metrics(const Mesh<D>& mesh, const BoundaryGeometry<D>& geometry, const HausdorffBound& bound,
+                                         std::span<const SymMat<D>> given);
 
 // metric ∩ bound, or `metric` itself, bit for bit, when it is at least as fine every way (metric −
 // bound positive semi-definite).

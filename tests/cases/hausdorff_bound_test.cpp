@@ -31,6 +31,13 @@ double shell_radius(const Mesh<D>& mesh, Index v) {
   return 0;
 }
 
+// A metric of sizes 100 every way: coarser than any bound here, which then holds at every boundary
+// vertex.
+template <int D>
+std::vector<SymMat<D>> coarse(const Mesh<D>& mesh) {
+  return std::vector<SymMat<D>>(static_cast<std::size_t>(mesh.vertex_count()), SymMat<D>::identity() * 1e-4);
+}
+
 // Where the bound asks for a size on a sphere of radius R, its eigenvalues must be the chord-sag
 // formula's, μ = 1 / (6 R hausd), along the surface and, by the bound's choice, across it; in 2D
 // μ = 1 / (8 R hausd). The edges are coarse (L/R up to 0.3): their sags read the curvature to about
@@ -38,7 +45,7 @@ double shell_radius(const Mesh<D>& mesh, Index v) {
 template <int D>
 void expect_sphere_sizes(const Mesh<D>& mesh, double hausd, int& checked) {
   const AnalyticBoundary<D> geometry = concentric_shell_boundary<D>(kInner, kOuter);
-  const std::vector<SymMat<D>> bound = hausdorff_metrics(mesh, geometry, {hausd, 45});
+  const std::vector<SymMat<D>> bound = hausdorff_metrics<D>(mesh, geometry, {hausd, 45}, coarse(mesh));
   ASSERT_EQ(bound.size(), static_cast<std::size_t>(mesh.vertex_count()));
   for (Index v = 0; v < mesh.vertex_count(); ++v) {
     const double radius = shell_radius(mesh, v);
@@ -70,7 +77,7 @@ TEST(HausdorffMetric, GradesTheBoundInside) {
   const std::array<double, 3> radii{kInner, 0.75, kOuter};
   const Mesh<3> mesh = generate_cubed_sphere_shell(6, radii);
   const double hausd = 1e-3;
-  const std::vector<SymMat<3>> bound = hausdorff_metrics(mesh, concentric_shell_boundary<3>(kInner, kOuter), {hausd, 45});
+  const std::vector<SymMat<3>> bound = hausdorff_metrics<3>(mesh, concentric_shell_boundary<3>(kInner, kOuter), {hausd, 45}, coarse(mesh));
   const double inner_size = std::sqrt(6 * kInner * hausd);
   for (Index v = 0; v < mesh.vertex_count(); ++v) {
     if (std::abs(norm(mesh.vertex(v)) - 0.75) > 1e-9) continue;
@@ -89,6 +96,16 @@ TEST(HausdorffMetric, LeavesAFlatBoundaryAlone) {
   const std::vector<SymMat<3>> before = metrics;
   EXPECT_EQ(bound_metrics_by_hausdorff(mesh, metrics, geometry, {1e-6, 45}), 0);
   EXPECT_EQ(metrics, before);
+}
+
+// Where the given metric is finer than the bound already, the bound asks for nothing, there nor inside.
+TEST(HausdorffMetric, IsNothingWhereTheGivenMetricIsFiner) {
+  const std::array<double, 3> radii{kInner, 0.75, kOuter};
+  const Mesh<3> mesh = generate_cubed_sphere_shell(6, radii);
+  const std::vector<SymMat<3>> fine(static_cast<std::size_t>(mesh.vertex_count()), SymMat<3>::identity() * 1e4);
+  const std::vector<SymMat<3>> bound = hausdorff_metrics<3>(mesh, concentric_shell_boundary<3>(kInner, kOuter), {1e-3, 45}, fine);
+  const double diagonal_eigenvalue = 1 / (4 * 3.0);  // the box [-1, 1]³: diagonal 2√3
+  for (const SymMat<3>& metric : bound) EXPECT_NEAR(spd_eigen(metric).values[2], diagonal_eigenvalue, 1e-12);
 }
 
 TEST(HausdorffMetric, WithinBoundIsTheIntersectionOrTheMetricItself) {
