@@ -48,13 +48,16 @@ std::vector<SaggingEdge<2>> sagging_edges(const Mesh<2>& mesh, const BoundaryGeo
 std::vector<SaggingEdge<3>> sagging_edges(const Mesh<3>& mesh, const BoundaryGeometry<3>& geometry) {
   struct Side {
     std::uint64_t key;
-    Index facet;
+    Index facet, a, b;
     bool operator<(const Side& other) const { return std::tie(key, facet) < std::tie(other.key, other.facet); }
   };
   std::vector<Side> sides;
   for (Index f = 0; f < mesh.facet_count(); ++f)
     if (!mesh.facet_removed(f))
-      for (int i = 0; i < 3; ++i) sides.push_back({Mesh<3>::edge_key(mesh.facet(f)[i], mesh.facet(f)[(i + 1) % 3]), f});
+      for (int i = 0; i < 3; ++i) {
+        const Index a = mesh.facet(f)[i], b = mesh.facet(f)[(i + 1) % 3];
+        sides.push_back({Mesh<3>::edge_key(a, b), f, a, b});
+      }
   std::sort(sides.begin(), sides.end());
   std::vector<std::uint64_t> lines;
   for (Index l = 0; l < mesh.line_count(); ++l)
@@ -64,8 +67,8 @@ std::vector<SaggingEdge<3>> sagging_edges(const Mesh<3>& mesh, const BoundaryGeo
   for (std::size_t first = 0, last = 0; first < sides.size(); first = last) {
     while (last < sides.size() && sides[last].key == sides[first].key) ++last;
     SaggingEdge<3> edge;
-    edge.a = static_cast<Index>(sides[first].key >> 32);
-    edge.b = static_cast<Index>(sides[first].key & 0xffffffffu);
+    edge.a = sides[first].a;
+    edge.b = sides[first].b;
     edge.ref = mesh.facet_ref(sides[first].facet);
     edge.on_line = std::binary_search(lines.begin(), lines.end(), sides[first].key);
     const Vec3 middle = 0.5 * (mesh.vertex(edge.a) + mesh.vertex(edge.b));
@@ -89,10 +92,7 @@ double sag_curvature(const Mesh<D>& mesh, const SaggingEdge<D>& edge, const Vec<
 // eigenvector: a regular unit triangle's centroid sags by (κ1/μ1 + κ2/μ2)/12, hausd with μ = |κ|/(6
 // hausd) both ways. Along a curve (a 2D boundary, a 3D feature line), a unit chord sags by
 // κ/(8μ).
-template <int D>
-double surface_eigenvalue(double curvature, double hausd) {
-  return std::abs(curvature) / ((D == 3 ? 6 : 8) * hausd);
-}
+double surface_eigenvalue(double curvature, double hausd) { return std::abs(curvature) / (6 * hausd); }
 double curve_eigenvalue(double curvature, double hausd) { return std::abs(curvature) / (8 * hausd); }
 
 template <int D>
@@ -122,7 +122,7 @@ double isotropic_eigenvalue(const Mesh<D>& mesh, const std::vector<SaggingEdge<D
   for (Index i : around) {
     const SaggingEdge<D>& edge = edges[static_cast<std::size_t>(i)];
     const double curvature = sag_curvature(mesh, edge, (1 / std::max(norm(edge.sag), 1e-300)) * edge.sag);
-    largest = std::max(largest, edge.on_line || D == 2 ? curve_eigenvalue(curvature, hausd) : surface_eigenvalue<D>(curvature, hausd));
+    largest = std::max(largest, edge.on_line || D == 2 ? curve_eigenvalue(curvature, hausd) : surface_eigenvalue(curvature, hausd));
   }
   return largest;
 }
@@ -160,7 +160,7 @@ std::optional<SymMat<3>> smooth_surface_metric(const Mesh<3>& mesh, Index v, con
   SymMat<3> metric{};
   for (int j = 0; j < 2; ++j) {
     // No principal curvature beyond the largest measured: a fit of coarse edges may overshoot.
-    eigenvalues[j] = std::max(surface_eigenvalue<3>(std::min(std::abs(principal.values[j]), largest), hausd), floor);
+    eigenvalues[j] = std::max(surface_eigenvalue(std::min(std::abs(principal.values[j]), largest), hausd), floor);
     metric += outer<3>(principal.vectors(0, j) * e1 + principal.vectors(1, j) * e2, eigenvalues[j]);
   }
   // Across the surface, the larger of the two sizes: elements of the bound's sizes along the surface
@@ -187,9 +187,9 @@ SymMat<D> isotropic(double eigenvalue) {
 template <int D>
 std::vector<SymMat<D>> hausdorff_metrics(const Mesh<D>& mesh, const BoundaryGeometry<D>& geometry, const HausdorffBound& bound,
                                          std::span<const SymMat<D>> given) {
-  // Ridges and corners as the loop classifies them, on a copy (classifying tags the mesh).
+  // Ridges and corners as the loop classifies them (from the facets alone), on a copy: classifying
+  // tags the mesh.
   Mesh<D> classified = mesh;
-  classified.build_topology();
   const std::vector<VertexClass> classes = classify_vertices(classified, bound.feature_angle_degrees);
   const std::vector<SaggingEdge<D>> edges = sagging_edges(classified, geometry);
   const std::vector<std::vector<Index>> at = edges_at_vertices(classified, edges);
