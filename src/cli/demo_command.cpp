@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "adapt/adaptation_driver.hpp"
+#include "adapt/hausdorff_metric.hpp"
 #include "base/error.hpp"
 #include "base/thread_pool.hpp"
 #include "cases/case_registry.hpp"
@@ -104,15 +105,16 @@ AdaptationReport run_sphere_shell(const DemoOptions& options, Written& written) 
   progress("surface metric graded into the volume (" + mesh_summary(input) + ")");
   std::vector<SymMat<3>> metrics = surface_metric_at_vertices(
       input, SurfaceSizes{kShellNormalRatio * options.h, options.h, bounding_box_diagonal(input)});
+  const BoundaryChoice p3{BoundaryKind::kP3Surrogate, ""};
+  const auto surface = make_boundary_geometry<3>(p3, input);
+  AdaptationSettings adaptation;
+  adaptation.hausd = kRelativeHausd * bounding_box_diagonal(input);
+  bound_metrics_by_hausdorff(input, metrics, *surface, {adaptation.hausd, adaptation.feature_angle_degrees});  // as hocav adapt
   grade_metrics(input, metrics, GradationOptions{kShellGradation});
   const MetricField<3> back(input, metrics);
   const AdaptationMetric<3> metric(back, {});
-  const BoundaryChoice p3{BoundaryKind::kP3Surrogate, ""};
-  const auto surface = make_boundary_geometry<3>(p3, input);
 
   progress("adapting to it, then curving on " + std::to_string(options.threads) + " threads");
-  AdaptationSettings adaptation;
-  adaptation.hausd = 0.01 * bounding_box_diagonal(input);
   adaptation.threads = options.threads;
   adaptation.progress = [](int pass, int cap) {
     progress("adapting: pass " + std::to_string(pass) + " (at most " + std::to_string(cap) + ")");
