@@ -55,7 +55,8 @@ TEST_F(AdaptCli, CubeWithAMetricFileStopsAtOrderOne) {
 }
 
 // --hausd refines a coarse curved boundary through the metric, given in a file or analytic; a bound
-// looser than the boundary's sag touches nothing (docs/adaptation.md §The Hausdorff bound).
+// looser than the boundary's sag touches nothing (docs/adaptation.md §The Hausdorff bound); the output
+// does not depend on the thread count.
 TEST_F(AdaptCli, TheHausdorffBoundRefinesACoarseCircle) {
   run_ok("generate polar-annulus --target-triangles 200 -o annulus.meshb");
   run_ok("metric annulus.meshb --analytic uniform --h 0.3 -o annulus.solb");
@@ -73,6 +74,10 @@ TEST_F(AdaptCli, TheHausdorffBoundRefinesACoarseCircle) {
   EXPECT_EQ(analytic_loose_bounded, 0);
   EXPECT_GT(analytic_tight_bounded, 0);
   EXPECT_GT(analytic_tight_elements, 1.5 * analytic_loose_elements);
+  // The analytic metric then samples the bound on the input: the same curved output on 1 and 2 threads.
+  for (const char* threads : {"1", "2"})
+    run_ok(std::string("adapt annulus.meshb --analytic uniform --hausd 0.0005 -q -o curved") + threads + ".meshb --threads " + threads);
+  EXPECT_EQ(read("curved1.meshb"), read("curved2.meshb"));
 }
 
 // The sources of `hocav metric` given to `hocav adapt` directly: the same output, byte for byte, as the
