@@ -205,6 +205,8 @@ void serve_adaptation(const AdaptOptions& o) {
 template <int D>
 void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, OutputSet& outputs) {
   check_mesh_or_warn(mesh, o.input);
+  if (o.hausd_given && o.surface == "none")
+    std::cerr << "hocav adapt: warning: --hausd bounds nothing with --surface none (no geometry to measure the boundary against)\n";
   std::vector<SymMat<D>> metrics = vertex_metrics(mesh, file, o);
   AdaptationJob<D> job = adaptation_job<D>(o);
   std::vector<DistributedIteration> iterations;

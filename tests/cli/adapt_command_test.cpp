@@ -78,6 +78,10 @@ TEST_F(AdaptCli, TheHausdorffBoundRefinesACoarseCircle) {
   for (const char* threads : {"1", "2"})
     run_ok(std::string("adapt annulus.meshb --analytic uniform --hausd 0.0005 -q -o curved") + threads + ".meshb --threads " + threads);
   EXPECT_EQ(read("curved1.meshb"), read("curved2.meshb"));
+  // Without a geometry there is nothing to bound the boundary against: said, not silently ignored.
+  const Outcome none = run("adapt annulus.meshb --analytic uniform --hausd 0.0005 --surface none --order 1 -q -o flat.meshb");
+  EXPECT_EQ(none.exit_code, 0);
+  EXPECT_NE(none.err.find("--hausd bounds nothing with --surface none"), std::string::npos) << none.err;
 }
 
 // The sources of `hocav metric` given to `hocav adapt` directly: the same output, byte for byte, as the
