@@ -1,8 +1,9 @@
-// Mesh model: time to build topology and the P2 edge table on a ~1M-tetrahedron cube, and the
-// bytes held per tetrahedron (P1 with topology; P2 with edge table and nodes).
+// Mesh model: time to build topology, the vertex graph and the P2 edge table on a ~1M-tetrahedron
+// cube, and the bytes held per tetrahedron (P1 with topology; P2 with edge table and nodes).
 #include <benchmark/benchmark.h>
 
 #include "cases/structured.hpp"
+#include "mesh/vertex_graph.hpp"
 
 namespace hocav {
 namespace {
@@ -21,6 +22,14 @@ void BM_BuildTopology(benchmark::State& state) {
   state.counters["bytes_per_tet_p1"] = double(mesh.memory_bytes()) / mesh.element_count();
 }
 BENCHMARK(BM_BuildTopology)->Unit(benchmark::kMillisecond);
+
+void BM_VertexGraph(benchmark::State& state) {
+  const Mesh<3>& mesh = cube();
+  std::size_t entries = 0;
+  for (auto _ : state) entries = vertex_graph(mesh).neighbors.size();
+  state.counters["neighbor_entries"] = static_cast<double>(entries);
+}
+BENCHMARK(BM_VertexGraph)->Unit(benchmark::kMillisecond);
 
 void BM_MakeP2(benchmark::State& state) {
   Mesh<3> mesh = cube();

@@ -6,29 +6,33 @@ namespace hocav {
 
 template <int D>
 VertexGraph vertex_graph(const Mesh<D>& mesh) {
-  // Every element edge once (sorted keys, deduplicated), then both of its directions by counting.
-  std::vector<std::uint64_t> edges;
-  edges.reserve(static_cast<std::size_t>(mesh.element_count()) * Simplex<D>::kEdges);
+  // Each element's vertices listed in the rows of its other vertices (a counting sort by vertex),
+  // then each row sorted and made unique, packed in place: no sort of the whole mesh's edges.
+  const auto vertex_count = static_cast<std::size_t>(mesh.vertex_count());
+  std::vector<Index> start(vertex_count + 1, 0);
   for (const auto& element : mesh.elements())
-    for (const auto& [i, j] : Simplex<D>::kEdgeLocalVertices) edges.push_back(Mesh<D>::edge_key(element[i], element[j]));
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-
-  auto low = [](std::uint64_t key) { return static_cast<Index>(key >> 32); };
-  auto high = [](std::uint64_t key) { return static_cast<Index>(key & 0xffffffffu); };
+    for (Index v : element) start[static_cast<std::size_t>(v) + 1] += D;
+  for (std::size_t v = 1; v <= vertex_count; ++v) start[v] += start[v - 1];
+  std::vector<Index> listed(static_cast<std::size_t>(start[vertex_count]));
+  std::vector<Index> next(start.begin(), start.end() - 1);
+  for (const auto& element : mesh.elements())
+    for (int i = 0; i <= D; ++i)
+      for (int j = 0; j <= D; ++j)
+        if (j != i) listed[static_cast<std::size_t>(next[element[i]]++)] = element[j];
   VertexGraph graph;
-  graph.offsets.assign(static_cast<std::size_t>(mesh.vertex_count()) + 1, 0);
-  for (std::uint64_t key : edges) {
-    ++graph.offsets[low(key) + 1];
-    ++graph.offsets[high(key) + 1];
+  graph.offsets.assign(vertex_count + 1, 0);
+  auto packed = listed.begin();
+  for (std::size_t v = 0; v < vertex_count; ++v) {
+    const auto row_begin = listed.begin() + start[v], row_end = listed.begin() + start[v + 1];
+    std::sort(row_begin, row_end);
+    // Written at or before what is read next (rows only shrink); compared with the row's last kept.
+    const auto row_packed = packed;
+    for (auto it = row_begin; it != row_end; ++it)
+      if (packed == row_packed || *it != *(packed - 1)) *packed++ = *it;
+    graph.offsets[v + 1] = static_cast<Index>(packed - listed.begin());
   }
-  for (std::size_t v = 1; v < graph.offsets.size(); ++v) graph.offsets[v] += graph.offsets[v - 1];
-  graph.neighbors.resize(2 * edges.size());
-  std::vector<Index> next(graph.offsets.begin(), graph.offsets.end() - 1);
-  // Keys ascend by low vertex, so each row receives its lower neighbours (from the high side) in
-  // ascending order, then its higher ones: rows come out sorted.
-  for (std::uint64_t key : edges) graph.neighbors[next[high(key)]++] = low(key);
-  for (std::uint64_t key : edges) graph.neighbors[next[low(key)]++] = high(key);
+  listed.resize(static_cast<std::size_t>(packed - listed.begin()));
+  graph.neighbors = std::move(listed);
   return graph;
 }
 
