@@ -151,6 +151,8 @@ std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector
   setup->input = std::move(input);
   const Mesh<D>& back = setup->input;
   setup->geometry = job.geometry(back);
+  if (job.hausd && !setup->geometry && job.warn)
+    job.warn("the Hausdorff bound (--hausd) bounds nothing without a boundary geometry (--surface none)");
   AdaptationSettings& settings = setup->settings;
   settings.max_passes = job.iterations;
   settings.feature_angle_degrees = job.angle;

@@ -121,7 +121,8 @@ double isotropic_eigenvalue(const Mesh<D>& mesh, const std::vector<SaggingEdge<D
   double largest = 0;
   for (Index i : around) {
     const SaggingEdge<D>& edge = edges[static_cast<std::size_t>(i)];
-    const double curvature = sag_curvature(mesh, edge, (1 / std::max(norm(edge.sag), 1e-300)) * edge.sag);
+    const Vec<D> chord = mesh.vertex(edge.b) - mesh.vertex(edge.a);
+    const double curvature = 8 * norm(edge.sag) / dot(chord, chord);  // sag_curvature along the sag itself
     largest = std::max(largest, edge.on_line || D == 2 ? curve_eigenvalue(curvature, hausd) : surface_eigenvalue(curvature, hausd));
   }
   return largest;

@@ -20,9 +20,7 @@
 #include "io/atomic_output.hpp"
 #include "io/node_metrics.hpp"
 #include "io/output_set.hpp"
-#include "mesh/measure.hpp"
 #include "metric/implied_metric.hpp"
-#include "metric/surface_metric.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_adaptation.hpp"
 #include "parallel/distributed_curving.hpp"
@@ -93,9 +91,7 @@ std::vector<SymMat<D>> vertex_metrics(const Mesh<D>& mesh, const MeshFileContent
     source.h_max = o.h_max;
     return hessian_source_metrics(mesh, file, source);
   }
-  if (!o.surface_sizes.empty())
-    return surface_metric_at_vertices(mesh,
-                                      SurfaceSizes{o.surface_sizes[0], o.surface_sizes[1], o.h_max.value_or(bounding_box_diagonal(mesh))});
+  if (!o.surface_sizes.empty()) return surface_source_metrics(mesh, o.surface_sizes[0], o.surface_sizes[1], o.h_max);
   if (o.implied) return implied_metric_at_vertices(mesh);
   return {};
 }
@@ -205,8 +201,6 @@ void serve_adaptation(const AdaptOptions& o) {
 template <int D>
 void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, OutputSet& outputs) {
   check_mesh_or_warn(mesh, o.input);
-  if (o.hausd_given && o.surface == "none")
-    std::cerr << "hocav adapt: warning: --hausd bounds nothing with --surface none (no geometry to measure the boundary against)\n";
   std::vector<SymMat<D>> metrics = vertex_metrics(mesh, file, o);
   AdaptationJob<D> job = adaptation_job<D>(o);
   std::vector<DistributedIteration> iterations;

@@ -20,13 +20,11 @@
 #include "geom/sym_functions.hpp"
 #include "io/node_metrics.hpp"
 #include "io/output_set.hpp"
-#include "mesh/measure.hpp"
 #include "metric/analytic_field.hpp"
 #include "metric/analytic_metric.hpp"
 #include "metric/gradation.hpp"
 #include "metric/hessian_metric.hpp"
 #include "metric/implied_metric.hpp"
-#include "metric/surface_metric.hpp"
 #include "report/mesh_summary.hpp"
 
 namespace hocav {
@@ -161,10 +159,7 @@ SourceMetrics<D> source_metrics(const Mesh<D>& mesh, const MeshFileContent& file
       return metrics;
     }
     case Source::kImplied: return {implied_metric_at_vertices(mesh), {}};
-    case Source::kSurface: {
-      SurfaceSizes sizes{options.surface[0], options.surface[1], options.h_max.value_or(bounding_box_diagonal(mesh))};
-      return {surface_metric_at_vertices(mesh, sizes), {}};
-    }
+    case Source::kSurface: return {surface_source_metrics(mesh, options.surface[0], options.surface[1], options.h_max), {}};
     case Source::kHessian: return {hessian_source_metrics(mesh, file, hessian_source<D>(options)), {}};
     case Source::kInput: {
       std::vector<SymMat<D>> rows = metrics_of_rows<D>(read_metric_for_mesh(options.input, file, mesh.is_p2()));

@@ -29,4 +29,9 @@ inline bool is_analytic_field(const std::string& field) { return field.starts_wi
 template <int D>
 std::vector<SymMat<D>> hessian_source_metrics(const Mesh<D>& mesh, const MeshFileContent& file, const HessianSource& source);
 
+// The surface metric (docs/metrics.md): size `normal` across the boundary and `tangential` along it;
+// inside, h_max (default the bounding-box diagonal) until a gradation carries the boundary's sizes in.
+template <int D>
+std::vector<SymMat<D>> surface_source_metrics(const Mesh<D>& mesh, double normal, double tangential, std::optional<double> h_max);
+
 }  // namespace hocav
