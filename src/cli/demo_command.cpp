@@ -13,7 +13,6 @@
 #include <memory>
 
 #include "adapt/adaptation_driver.hpp"
-#include "adapt/hausdorff_metric.hpp"
 #include "base/error.hpp"
 #include "base/thread_pool.hpp"
 #include "cases/case_registry.hpp"
@@ -24,7 +23,6 @@
 #include "io/output_set.hpp"
 #include "mesh/measure.hpp"
 #include "metric/analytic_metric.hpp"
-#include "metric/gradation.hpp"
 #include "metric/surface_metric.hpp"
 #include "picture/histogram_chart.hpp"
 #include "picture/jacobian_picture.hpp"
@@ -101,33 +99,29 @@ void write_histograms(const std::vector<double>& gains, const std::vector<double
 // Generates the sphere-shell case and its surface metric, adapts the mesh to the metric, curves
 // the unit mesh and writes it; draws its cut and histograms.
 AdaptationReport run_sphere_shell(const DemoOptions& options, Written& written) {
-  const Mesh<3> input = generated<3>("sphere-shell", {{"h", options.h}});
-  progress("surface metric graded into the volume (" + mesh_summary(input) + ")");
+  Mesh<3> mesh = generated<3>("sphere-shell", {{"h", options.h}});
+  progress("surface metric graded into the volume (" + mesh_summary(mesh) + ")");
   std::vector<SymMat<3>> metrics = surface_metric_at_vertices(
-      input, SurfaceSizes{kShellNormalRatio * options.h, options.h, bounding_box_diagonal(input)});
-  const BoundaryChoice p3{BoundaryKind::kP3Surrogate, ""};
-  const auto surface = make_boundary_geometry<3>(p3, input);
-  AdaptationSettings adaptation;
-  adaptation.hausd = kRelativeHausd * bounding_box_diagonal(input);
-  bound_metrics_by_hausdorff(input, metrics, *surface, {adaptation.hausd, adaptation.feature_angle_degrees});  // as hocav adapt
-  grade_metrics(input, metrics, GradationOptions{kShellGradation});
-  const MetricField<3> back(input, metrics);
-  const AdaptationMetric<3> metric(back, {});
-
-  progress("adapting to it, then curving on " + std::to_string(options.threads) + " threads");
-  adaptation.threads = options.threads;
-  adaptation.progress = [](int pass, int cap) {
+      mesh, SurfaceSizes{kShellNormalRatio * options.h, options.h, bounding_box_diagonal(mesh)});
+  // `hocav adapt`'s job: the Hausdorff bound, then the gradation, the P3 surrogate of the input's
+  // boundary for the adaptation and of the adapted one's for the curving.
+  AdaptationJob<3> job;
+  job.gradation = kShellGradation;
+  job.threads = options.threads;
+  job.geometry = [](const Mesh<3>& m) { return make_boundary_geometry<3>({BoundaryKind::kP3Surrogate, ""}, m); };
+  job.pass_progress = [](int pass, int cap) {
     progress("adapting: pass " + std::to_string(pass) + " (at most " + std::to_string(cap) + ")");
   };
-  Mesh<3> mesh = input;
-  AdaptedMesh<3> adapted = adapt_in_metric(mesh, metric, surface.get(), adaptation);
-  CurvingOptions curving;
-  curving.threads = options.threads;
-  const auto adapted_surface = make_boundary_geometry<3>(p3, mesh);
-  CurvingProgress curving_progress(mesh, curving.passes, true);
-  curving_progress.attach(curving);
-  curve_adapted_mesh(adapted, mesh, adapted_surface.get(), curving);
-  curving_progress.complete();
+  job.curving.emplace();
+  job.curving->threads = options.threads;
+  std::optional<CurvingProgress> curving_progress;
+  job.before_curving = [&curving_progress](const Mesh<3>& adapted, CurvingOptions& curving) {
+    curving_progress.emplace(adapted, curving.passes, true);
+    curving_progress->attach(curving);
+  };
+  progress("adapting to it, then curving on " + std::to_string(options.threads) + " threads");
+  AdaptedMesh<3> adapted = run_adaptation_job(mesh, std::move(metrics), job, "the demo's sphere shell");
+  if (curving_progress) curving_progress->complete();
   const AdaptationReport& report = adapted.report;
   const MetricField<3>& field = *adapted.field;
 
