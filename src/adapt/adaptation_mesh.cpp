@@ -89,16 +89,21 @@ void AdaptationMesh<D>::move_vertex(Index v, const Vec<D>& x, std::span<const In
 
 template <int D>
 void AdaptationMesh<D>::vertices_moved(std::span<const Index> moved) {
-  for (Index v : moved) set_point_metric(v, metric_at_point(mesh_.vertex(v), v));
-  std::vector<Index> ball, elements;
+  if (moved.empty()) return;
+  std::vector<char> is_moved(static_cast<std::size_t>(mesh_.vertex_count()), 0);
   for (Index v : moved) {
-    collect_ball(mesh_, v, ball);
-    elements.insert(elements.end(), ball.begin(), ball.end());
+    set_point_metric(v, metric_at_point(mesh_.vertex(v), v));
+    is_moved[v] = 1;
   }
-  std::sort(elements.begin(), elements.end());
-  elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
-  for (Index k : elements)
-    for (Index v : mesh_.element(k)) mark_changed(v);
+  // Every element with a moved vertex, found by a scan: a walk around each vertex would miss the
+  // far side of a vertex where two parts of the mesh touch.
+  std::vector<Index> elements;
+  for (Index k = 0; k < mesh_.element_count(); ++k) {
+    const Element& element = mesh_.element(k);
+    if (std::none_of(element.begin(), element.end(), [&](Index v) { return is_moved[v] != 0; })) continue;
+    elements.push_back(k);
+    for (Index v : element) mark_changed(v);
+  }
   update_qualities(elements);
 }
 
