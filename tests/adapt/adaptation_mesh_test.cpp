@@ -2,26 +2,16 @@
 // vertices move outside the operators, every element holding one is measured again.
 #include <gtest/gtest.h>
 
+#include "../mesh/pinched_mesh.hpp"
 #include "adapt/adaptation_mesh.hpp"
 #include "mesh/measure.hpp"
 
 namespace hocav {
 namespace {
 
-// Two tetrahedra that share only vertex 0: a walk around it sees one of them.
-Mesh<3> pinched_pair() {
-  Mesh<3> mesh;
-  for (const Vec3& p :
-       {Vec3{{0, 0, 0}}, Vec3{{1, 0, 0}}, Vec3{{0, 1, 0}}, Vec3{{0, 0, 1}}, Vec3{{-1, 0, 0}}, Vec3{{0, -1, 0}}, Vec3{{0, 0, -1}}})
-    mesh.add_vertex(p);
-  mesh.add_element({0, 1, 2, 3});
-  mesh.add_element({0, 5, 4, 6});
-  mesh.build_topology();
-  return mesh;
-}
-
 TEST(AdaptationMesh, AMovedVertexRenewsTheQualityOfEveryElementItHoldsWhereTwoPartsMeet) {
-  Mesh<3> mesh = pinched_pair();
+  Mesh<3> mesh = mesh_test::pinched_tetrahedra();
+  mesh.build_topology();
   const AdaptationMetric<3> metric(AnalyticMetricSpec{}, {});
   AdaptationMesh<3> am(mesh, metric, nullptr, 45);
   const double before[2] = {am.quality(0), am.quality(1)};

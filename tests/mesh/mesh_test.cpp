@@ -11,6 +11,7 @@
 #include "mesh/ball_and_shell.hpp"
 #include "mesh/consistency.hpp"
 #include "mesh/measure.hpp"
+#include "pinched_mesh.hpp"
 
 namespace hocav {
 namespace {
@@ -52,12 +53,7 @@ TEST(Mesh, EulerCharacteristicOfTheEdgeTable) {
 // Two tetrahedra that share only vertex 0: the walk from vertex 0's element sees one of them, yet
 // a feature line on the other's edge is an element edge; a line on no element's edge is named.
 TEST(Mesh, ConsistencyFindsALineAtAVertexWhereTwoPartsMeet) {
-  Mesh<3> mesh;
-  for (const Vec3& p :
-       {Vec3{{0, 0, 0}}, Vec3{{1, 0, 0}}, Vec3{{0, 1, 0}}, Vec3{{0, 0, 1}}, Vec3{{-1, 0, 0}}, Vec3{{0, -1, 0}}, Vec3{{0, 0, -1}}})
-    mesh.add_vertex(p);
-  mesh.add_element({0, 1, 2, 3});
-  mesh.add_element({0, 5, 4, 6});
+  Mesh<3> mesh = mesh_test::pinched_tetrahedra();
   ASSERT_GT(signed_measure(mesh.vertex(0), mesh.vertex(5), mesh.vertex(4), mesh.vertex(6)), 0);
   mesh.add_line({0, 1});
   mesh.add_line({0, 4});
