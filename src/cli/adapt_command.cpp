@@ -135,10 +135,11 @@ std::string rank_range(const std::vector<T>& values, double unit) {
 }
 
 void print_iteration(const DistributedIteration& figures) {
-  std::cerr << "distributed: iteration " << figures.iteration << " of " << kDistributedIterations << ": " << process_count() << " parts, "
-            << figures.interface_faces << " interface faces, " << figures.interface_vertices << " of " << figures.vertices
-            << " vertices on the interfaces, " << figures.bytes_sent << " bytes sent, " << figures.seconds << " s (partition "
-            << figures.seconds_partition << " s; parts " << rank_range(figures.part_seconds, 1) << " s, peak memory "
+  const bool band = figures.iteration == kDistributedIterations;
+  std::cerr << "distributed: iteration " << figures.iteration << " of " << kDistributedIterations << (band ? " (the band)" : "") << ": "
+            << process_count() << " parts, " << figures.interface_faces << " interface faces, " << figures.interface_vertices << " of "
+            << figures.vertices << " vertices on the interfaces, " << figures.bytes_sent << " bytes sent, " << figures.seconds
+            << " s (partition " << figures.seconds_partition << " s; parts " << rank_range(figures.part_seconds, 1) << " s, peak memory "
             << rank_range(figures.peak_memory_bytes, 1 << 20) << " MiB per rank)\n";
 }
 

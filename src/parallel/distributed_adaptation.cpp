@@ -35,26 +35,18 @@ AdaptationRun adapt_part(MeshPart<D>& part, const AdaptationMetric<D>& metric, c
   return run;
 }
 
-// In iterations whose interfaces move next, a part's loop splits no edge at an interface vertex and
-// stops this many passes after its window closes: next to a frozen interface much coarser than the
-// metric, splits toward it never end, and what the loop would do there the next iteration, with that
-// interface inside a part, does better (docs/distributed.md).
+// Every iteration's parts split no edge at an interface vertex and stop this many passes after their
+// loop's window closes: next to a frozen interface much coarser than the metric, splits toward it
+// never end, and what a part would do there the next iteration, with that interface inside a part,
+// does better; so does the band iteration and the last serial run (docs/distributed.md).
 constexpr int kEarlyPassesAfterWindowCloses = 2;
 
-// What changes between iterations: the early iterations' limits.
-std::vector<std::byte> pack_iteration_settings(const AdaptationSettings& settings) {
-  const int values[2] = {settings.passes_after_window_closes, settings.split_at_required_vertices ? 1 : 0};
-  std::vector<std::byte> bytes(sizeof values);
-  std::memcpy(bytes.data(), values, sizeof values);
-  return bytes;
-}
-
-void unpack_iteration_settings(const std::vector<std::byte>& bytes, AdaptationSettings& settings) {
-  int values[2] = {};
-  if (bytes.size() != sizeof values) throw Error("a distributed adaptation message has the wrong size");
-  std::memcpy(values, bytes.data(), sizeof values);
-  settings.passes_after_window_closes = values[0];
-  settings.split_at_required_vertices = values[1] != 0;
+// The settings of a part's loop: the run's, with the limits above.
+AdaptationSettings part_settings(const AdaptationSettings& settings) {
+  AdaptationSettings part = settings;
+  part.passes_after_window_closes = kEarlyPassesAfterWindowCloses;
+  part.split_at_required_vertices = false;
+  return part;
 }
 
 static_assert(std::is_trivially_copyable_v<AdaptationPass>);
@@ -134,27 +126,42 @@ std::vector<char> around_interfaces(const Mesh<D>& mesh, const std::vector<char>
   return region;
 }
 
-// One iteration on rank 0: partition, send, adapt part 0, receive, merge.
+// The faces between two adapted parts (those below `adapted`) of a partition, and their vertices.
+struct PartInterfaces {
+  Index faces = 0;
+  std::vector<char> vertex;  // per mesh vertex
+};
+
+template <int D>
+PartInterfaces interfaces_between(const Mesh<D>& mesh, std::span<const int> part_of, int adapted) {
+  PartInterfaces out{0, std::vector<char>(static_cast<std::size_t>(mesh.vertex_count()), 0)};
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (int face = 0; face <= D; ++face) {
+      const Index other = mesh.neighbor(k, face);
+      if (other == kNoIndex || other < k || part_of[other] == part_of[k] || part_of[k] >= adapted || part_of[other] >= adapted) continue;
+      ++out.faces;
+      for (int i = 0; i < D; ++i) out.vertex[mesh.element(k)[face_vertices<D>(face)[i]]] = 1;
+    }
+  return out;
+}
+
+// One iteration on rank 0: split along a partition, send, adapt part 0, receive, merge. Part r goes
+// to rank r; the elements of part `process_count()` (the kept part) stay as they are.
 template <int D>
 struct RootIteration {
   Mesh<D>& mesh;
   const AdaptationMetric<D>& metric;
   const BoundaryGeometry<D>* geometry;
-  std::vector<char> old_interface;  // per vertex of `mesh`
+  std::vector<char> old_interface;  // per vertex of `mesh`: on the interfaces between adapted parts
   DistributedIteration figures;
 
-  AdaptationRun run(const AdaptationSettings& settings) {
-    const auto start = std::chrono::steady_clock::now();
+  AdaptationRun run(const std::vector<int>& part_of, const AdaptationSettings& settings, std::chrono::steady_clock::time_point start) {
     const int count = process_count();
-    const std::vector<double> loads = expected_element_counts(mesh, metric);
-    const std::vector<int> part_of = partition_graph(element_graph(mesh, loads, old_interface), count);
-    std::vector<MeshPart<D>> parts = split_mesh(mesh, part_of, count);
+    std::vector<MeshPart<D>> parts = split_mesh(mesh, part_of, count + 1);
+    const PartInterfaces interfaces = interfaces_between(mesh, part_of, count);
     figures.seconds_partition = seconds_since(start);
-    figures.interface_faces = interface_face_count(parts);
-    for (int p = 1; p < count; ++p) {
-      send(p, pack_part(parts[p].mesh, std::span<const Index>(parts[p].global_ids)));
-      send(p, pack_iteration_settings(settings));
-    }
+    figures.interface_faces = interfaces.faces;
+    for (int p = 1; p < count; ++p) send(p, pack_part(parts[p].mesh, std::span<const Index>(parts[p].global_ids)));
     auto [run0, figures0] = adapt_part_measured(parts[0], metric, geometry, settings);
     std::vector<AdaptationRun> runs{std::move(run0)};
     note(figures0);
@@ -168,12 +175,34 @@ struct RootIteration {
     MergedMesh<D> merged = merge_parts(mesh, parts);
     mesh = std::move(merged.mesh);
     mesh.build_topology();
-    old_interface = std::move(merged.interface_vertex);
+    old_interface.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
+    for (std::size_t v = 0; v < interfaces.vertex.size(); ++v)
+      if (interfaces.vertex[v]) old_interface[merged.old_vertex_ids[v]] = 1;
     figures.interface_vertices = static_cast<Index>(std::count(old_interface.begin(), old_interface.end(), 1));
     figures.vertices = mesh.vertex_count();
     figures.elements = mesh.element_count();
     figures.seconds = seconds_since(start);
     return combined(runs);
+  }
+
+  // Every element in one of the processes' parts, of balanced predicted output; the faces near the
+  // last interfaces heavy, so that those fall inside parts.
+  std::vector<int> whole_partition() const {
+    const std::vector<double> loads = expected_element_counts(mesh, metric);
+    return partition_graph(element_graph(mesh, loads, old_interface), process_count());
+  }
+
+  // The elements within kInterfaceBandRings rings of the last interfaces in the processes' parts, of
+  // balanced predicted output; the others in the kept part.
+  std::vector<int> band_partition() const {
+    std::vector<int> part_of(static_cast<std::size_t>(mesh.element_count()), process_count());
+    std::vector<Index> band;
+    const WeightedGraph graph = member_graph(mesh, elements_near(mesh, old_interface, kInterfaceBandRings),
+                                             expected_element_counts(mesh, metric), band);
+    if (band.empty()) return part_of;
+    const std::vector<int> part_of_band = partition_graph(graph, process_count());
+    for (std::size_t i = 0; i < band.size(); ++i) part_of[band[i]] = part_of_band[i];
+    return part_of;
   }
 
   void note(const PartFigures& part) {
@@ -194,23 +223,21 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   classify_vertices(mesh, settings.feature_angle_degrees);
   RootIteration<D> root{mesh, metric, geometry, {}, {}};
   AdaptationRun run;
-  AdaptationSettings early = settings;
-  early.passes_after_window_closes = kEarlyPassesAfterWindowCloses;
-  early.split_at_required_vertices = false;
+  const AdaptationSettings early = part_settings(settings);
   for (int iteration = 1; iteration <= kDistributedIterations; ++iteration) {
     root.figures = {};
     root.figures.iteration = iteration;
-    const AdaptationRun step = root.run(iteration < kDistributedIterations ? early : settings);
+    const auto start = std::chrono::steady_clock::now();
+    const bool band = iteration == kDistributedIterations;
+    const std::vector<int> part_of = band ? root.band_partition() : root.whole_partition();
+    const AdaptationRun step = root.run(part_of, early, start);
     run.passes.insert(run.passes.end(), step.passes.begin(), step.passes.end());
-    run.converged = step.converged;
-    run.stopped_with_window_open = step.stopped_with_window_open;
     if (on_iteration) on_iteration(root.figures);
   }
   for (int p = 1; p < process_count(); ++p) send_bytes(p, {});  // stop
-  // The last iteration's parts kept their interfaces frozen: an element a split made poor next to
-  // one stays poor, since mending it needs a swap through the interface or a move of its vertices.
-  // The serial loop, from the merged mesh, tries first only the region around them (and the poor
-  // elements a part's loop left elsewhere).
+  // The band's parts kept their own interfaces frozen, where they cross the band: the serial loop,
+  // from the merged mesh, tries first only the region around them (and the poor elements a part's
+  // loop left elsewhere).
   AdaptationSettings last = settings;
   last.first_pass_vertices = around_interfaces(mesh, root.old_interface);
   const AdaptationRun mending = adapt_to_metric(mesh, metric, geometry, last);
@@ -227,9 +254,7 @@ void serve_distributed_adaptation(const AdaptationMetric<D>& metric, const Bound
     const std::vector<std::byte> bytes = receive_bytes(0);
     if (bytes.empty()) return;
     MeshPart<D> part = unpack_part<D>(bytes);
-    AdaptationSettings iteration = settings;
-    unpack_iteration_settings(receive_bytes(0), iteration);
-    const auto [run, figures] = adapt_part_measured(part, metric, geometry, iteration);
+    const auto [run, figures] = adapt_part_measured(part, metric, geometry, part_settings(settings));
     send_bytes(0, pack_part(part.mesh, std::span<const Index>(part.global_ids)));
     send_bytes(0, pack_run(run));
     send_values(0, std::vector<PartFigures>{figures});

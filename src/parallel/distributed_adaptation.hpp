@@ -1,7 +1,7 @@
 // The distributed P1 adaptation loop, ParMmg's scheme (docs/distributed.md §The scheme): rank 0
 // partitions the mesh by the metric's predicted output per element, each process adapts its part
 // with the interfaces frozen, rank 0 merges the parts by global vertex ids and partitions again so
-// that the old interfaces fall inside parts; kDistributedIterations times.
+// that the old interfaces fall inside parts; the last time only a band around them is adapted.
 #pragma once
 
 #include <functional>
@@ -11,10 +11,14 @@
 
 namespace hocav {
 
-// Remeshing iterations: ParMmg's default is 3; the first here freezes the input's interfaces, as
-// coarse as the input, and a fourth brought the 4-process test case within 1% of the serial run
-// (docs/distributed.md).
+// Remeshing iterations: the first kDistributedIterations - 1 cut the whole mesh (ParMmg's scheme;
+// its default is 3 iterations), the last only a band around the last interfaces, whose own frozen
+// boundary lies in the adapted region (docs/distributed.md §The scheme).
 constexpr int kDistributedIterations = 4;
+
+// The band of the last iteration: the elements within this many rings of the last interfaces'
+// vertices (one ring holds every element of a frozen vertex's ball; a second gives its loop room).
+constexpr int kInterfaceBandRings = 2;
 
 // On rank 0: adapts `mesh` (P1, with topology) with every process (the others in
 // serve_distributed_adaptation), the same interface as adapt_to_metric. The mesh is compact and has

@@ -74,20 +74,6 @@ void add_round(PartCurving& total, const PartCurving& round) {
 // rest of the mesh is in no part.
 constexpr int kBandRings = 2;
 
-// Per element: within `rings` rings of a marked vertex (ring 1: the elements holding one).
-template <int D>
-std::vector<char> elements_near(const Mesh<D>& mesh, std::vector<char> marked, int rings) {
-  std::vector<char> near(static_cast<std::size_t>(mesh.element_count()), 0);
-  for (int ring = 1; ring <= rings; ++ring) {
-    for (Index k = 0; k < mesh.element_count(); ++k)
-      for (Index v : mesh.element(k)) near[k] = near[k] || marked[v];
-    for (Index k = 0; k < mesh.element_count(); ++k)
-      if (near[k])
-        for (Index v : mesh.element(k)) marked[v] = 1;
-  }
-  return near;
-}
-
 // One round on rank 0: partition, send, curve part 0, receive, write the parts' nodes back (a
 // curving changes no element: write_back_nodes).
 template <int D>
@@ -152,7 +138,7 @@ struct RootRound {
     }
     std::vector<int> part_of(static_cast<std::size_t>(mesh.element_count()), -1);
     std::vector<Index> band;
-    const WeightedGraph graph = member_graph(mesh, elements_near(mesh, pending, kBandRings), band);
+    const WeightedGraph graph = member_graph(mesh, elements_near(mesh, pending, kBandRings), {}, band);
     if (band.empty()) return part_of;
     const std::vector<int> part_of_band = band_parts > 1 ? partition_graph(graph, band_parts) : std::vector<int>(band.size(), 0);
     for (std::size_t i = 0; i < band.size(); ++i) part_of[band[i]] = part_of_band[i];

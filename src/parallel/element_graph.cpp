@@ -43,7 +43,8 @@ WeightedGraph element_graph(const Mesh<D>& mesh, std::span<const double> loads, 
 }
 
 template <int D>
-WeightedGraph member_graph(const Mesh<D>& mesh, std::span<const char> members, std::vector<Index>& elements) {
+WeightedGraph member_graph(const Mesh<D>& mesh, std::span<const char> members, std::span<const double> loads,
+                           std::vector<Index>& elements) {
   elements.clear();
   std::vector<Index> vertex_of(static_cast<std::size_t>(mesh.element_count()), kNoIndex);
   for (Index k = 0; k < mesh.element_count(); ++k)
@@ -52,7 +53,13 @@ WeightedGraph member_graph(const Mesh<D>& mesh, std::span<const char> members, s
       elements.push_back(k);
     }
   WeightedGraph graph;
-  graph.vertex_weights.assign(elements.size(), 1);
+  if (loads.empty()) {
+    graph.vertex_weights.assign(elements.size(), 1);
+  } else {
+    std::vector<double> member_loads;
+    for (Index k : elements) member_loads.push_back(loads[k]);
+    graph.vertex_weights = integer_loads(member_loads);
+  }
   graph.offsets.push_back(0);
   for (Index k : elements) {
     for (int face = 0; face <= D; ++face)
@@ -65,8 +72,23 @@ WeightedGraph member_graph(const Mesh<D>& mesh, std::span<const char> members, s
   return graph;
 }
 
-template WeightedGraph member_graph(const Mesh<2>&, std::span<const char>, std::vector<Index>&);
-template WeightedGraph member_graph(const Mesh<3>&, std::span<const char>, std::vector<Index>&);
+template <int D>
+std::vector<char> elements_near(const Mesh<D>& mesh, std::vector<char> marked, int rings) {
+  std::vector<char> near(static_cast<std::size_t>(mesh.element_count()), 0);
+  for (int ring = 1; ring <= rings; ++ring) {
+    for (Index k = 0; k < mesh.element_count(); ++k)
+      for (Index v : mesh.element(k)) near[k] = near[k] || marked[v];
+    for (Index k = 0; k < mesh.element_count(); ++k)
+      if (near[k])
+        for (Index v : mesh.element(k)) marked[v] = 1;
+  }
+  return near;
+}
+
+template WeightedGraph member_graph(const Mesh<2>&, std::span<const char>, std::span<const double>, std::vector<Index>&);
+template WeightedGraph member_graph(const Mesh<3>&, std::span<const char>, std::span<const double>, std::vector<Index>&);
+template std::vector<char> elements_near(const Mesh<2>&, std::vector<char>, int);
+template std::vector<char> elements_near(const Mesh<3>&, std::vector<char>, int);
 template WeightedGraph element_graph(const Mesh<2>&, std::span<const double>, std::span<const char>);
 template WeightedGraph element_graph(const Mesh<3>&, std::span<const double>, std::span<const char>);
 

@@ -26,10 +26,15 @@ constexpr std::int64_t kOldInterfaceFaceWeight = 100;
 template <int D>
 WeightedGraph element_graph(const Mesh<D>& mesh, std::span<const double> loads, std::span<const char> old_interface);
 
-// The dual graph of the elements marked in `members` (per element), each of weight 1, joined across
-// the faces they share with other members; graph vertex i is element `elements[i]` (in mesh order).
+// The dual graph of the elements marked in `members` (per element), joined across the faces they
+// share with other members; graph vertex i is element `elements[i]` (in mesh order), weighing in
+// proportion to its `loads` entry (per element of `mesh`), or 1 when `loads` is empty.
 template <int D>
-WeightedGraph member_graph(const Mesh<D>& mesh, std::span<const char> members, std::vector<Index>& elements);
+WeightedGraph member_graph(const Mesh<D>& mesh, std::span<const char> members, std::span<const double> loads, std::vector<Index>& elements);
+
+// Per element: within `rings` rings of a vertex marked in `marked` (ring 1: the elements holding one).
+template <int D>
+std::vector<char> elements_near(const Mesh<D>& mesh, std::vector<char> marked, int rings);
 
 // Scotch's partition of `graph` into `part_count` parts of balanced vertex weight and small cut
 // weight; the part of each vertex. The same graph gives the same parts.

@@ -287,6 +287,7 @@ MergedMesh<D> merge_parts(const Mesh<D>& old_mesh, const std::vector<MeshPart<D>
   merger.add_vertices();
   for (std::size_t p = 0; p < parts.size(); ++p) merger.add_part(p);
   if (any_p2(parts)) merger.add_nodes();
+  out.old_vertex_ids = vertices.old_ids;
   return out;
 }
 

@@ -1,5 +1,7 @@
 #!/usr/bin/python3
-"""`mpirun -np N hocav adapt` (docs/distributed.md) against the serial `hocav adapt` on a small cube.
+"""`mpirun -np N hocav adapt` (docs/distributed.md) against the serial `hocav adapt` on a small cube,
+with two metrics: h-min 0.03, and h-min 0.001 where the first interfaces are 100 times too coarse
+(looser bounds there, FINE_*).
 
 With one process the output must be the serial one byte for byte. With 2, 3 and 4 processes
 (oversubscribed): the output is consistent and valid (`hocav stats`), keeps the input's element and
@@ -20,6 +22,11 @@ from mpi_test_support import SKIP, check_same_refs, check_valid, mpirun_or_none,
 
 TOLERANCE = 0.01
 MIN_QUALITY_SHARE = 0.5
+# The fine metric: the issue's 1% is not met there yet (3 processes: 97.2% unit against 98.9%, mean
+# quality 0.848 against 0.859), nor the minimum quality (2 processes: 0.00005); these bounds hold the band iteration's gain (before
+# it: 84-85% unit, 8-17% of the elements below 0.1; docs/distributed.md).
+FINE_TOLERANCE = 0.02
+FINE_BELOW_0_1 = 0.001
 
 
 def ridge_length(path):
@@ -44,13 +51,17 @@ def ridge_length(path):
 
 
 def report(path):
+    """Unit share, mean quality, min quality and the share of elements below quality 0.1."""
     with open(path) as file:
         data = json.load(file)
-    return data["edge_length"]["unit_share"], data["quality"]["mean"], data["quality"]["min"]
+    quality = data["quality"]
+    return data["edge_length"]["unit_share"], quality["mean"], quality["min"], quality["share_below_0_1"]
 
 
-def check_iterations(path, processes):
-    """The report's distributed iterations: one per iteration, each with every rank's time and peak memory."""
+def check_iterations(path, processes, fine):
+    """The report's distributed iterations: one per iteration, each with every rank's time and peak
+    memory; the last iteration's mesh within 20% of the output's size, except with the fine metric,
+    where the serial run after the iterations still adds half of it (docs/distributed.md)."""
     with open(path) as file:
         data = json.load(file)
     iterations, output_elements = data["distributed_iterations"], data["output_elements"]
@@ -63,7 +74,45 @@ def check_iterations(path, processes):
         assert 0 < it["interface_vertices"] < it["vertices"], it
         assert it["bytes_sent"] > 0, it
     last = iterations[-1]["elements"]
-    assert abs(last - output_elements) <= 0.2 * output_elements, f"last iteration {last} elements, output {output_elements}"
+    print(f"  the last iteration's mesh: {last} elements, the output {output_elements}")
+    assert fine or abs(last - output_elements) <= 0.2 * output_elements, f"last iteration {last} elements, output {output_elements}"
+
+
+def compare_with_serial(hocav, mpirun, work, metric, tolerance=TOLERANCE, fine=False):
+    """The checks of the module's docstring on the cube adapted to `metric` (a .solb in `work`), the
+    unit share and mean quality within `tolerance` of the serial ones; with `fine`, at most 0.1% of the elements
+    below quality 0.1 in place of the minimum quality's bound."""
+    adapt = ["adapt", "cube.meshb", "--metric", metric, "--order", "1", "--threads", "1", "-q"]
+    run([hocav] + adapt + ["-o", "serial.meshb", "--report", "serial.json"], work)
+    serial = stats(hocav, "serial.meshb", work)
+    serial_unit, serial_quality, serial_min, _ = report(os.path.join(work, "serial.json"))
+
+    run(mpirun + ["-np", "1", hocav] + adapt + ["-o", "one.meshb"], work)
+    assert same_bytes(work, "one.meshb", "serial.meshb"), f"{metric}, mpirun -np 1: not the serial output byte for byte"
+
+    run([hocav, "convert", "serial.meshb", "serial.mesh"], work)
+    serial_ridges = ridge_length(os.path.join(work, "serial.mesh"))
+    for processes in (2, 3, 4):
+        name = f"{processes}.mesh"
+        run(mpirun + ["-np", str(processes), hocav] + adapt + ["-o", name, "--report", f"{processes}.json"], work)
+        name = f"{metric}, {processes} processes"
+        figures = stats(hocav, f"{processes}.mesh", work)
+        check_valid(figures, name)
+        assert figures["corners"] == serial["corners"], f"{name}: {figures['corners']} corners, serial {serial['corners']}"
+        assert figures["required vertices"] == "0", f"{name}: {figures['required vertices']} required vertices (the interfaces' tags left)"
+        ridges = ridge_length(os.path.join(work, f"{processes}.mesh"))
+        assert abs(ridges - serial_ridges) <= 1e-9 * serial_ridges, f"{name}: ridge lines {ridges} long, serial {serial_ridges}"
+        check_same_refs(figures, serial, name)
+        unit, quality, minimum, below = report(os.path.join(work, f"{processes}.json"))
+        check_iterations(os.path.join(work, f"{processes}.json"), processes, fine)
+        print(f"{name}: unit {unit:.4f} (serial {serial_unit:.4f}), mean quality {quality:.4f} "
+              f"(serial {serial_quality:.4f}), min quality {minimum:.4f} (serial {serial_min:.4f}), below 0.1 {below:.5f}")
+        assert abs(unit - serial_unit) <= tolerance * serial_unit, f"{name}: unit share {unit} vs {serial_unit}"
+        assert abs(quality - serial_quality) <= tolerance * serial_quality, f"{name}: mean quality {quality} vs {serial_quality}"
+        if fine:
+            assert below <= FINE_BELOW_0_1, f"{name}: {below} of the elements below quality 0.1"
+        else:
+            assert minimum >= MIN_QUALITY_SHARE * serial_min, f"{name}: min quality {minimum} vs serial {serial_min}"
 
 
 def main():
@@ -74,33 +123,11 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         run([hocav, "generate", "cube", "--h", "0.1", "-o", "cube.meshb"], work)
         run([hocav, "metric", "cube.meshb", "--analytic", "linear", "--h-min", "0.03", "-o", "cube.solb"], work)
-        adapt = ["adapt", "cube.meshb", "--metric", "cube.solb", "--order", "1", "--threads", "1", "-q"]
-        run([hocav] + adapt + ["-o", "serial.meshb", "--report", "serial.json"], work)
-        serial = stats(hocav, "serial.meshb", work)
-        serial_unit, serial_quality, serial_min = report(os.path.join(work, "serial.json"))
-
-        run(mpirun + ["-np", "1", hocav] + adapt + ["-o", "one.meshb"], work)
-        assert same_bytes(work, "one.meshb", "serial.meshb"), "mpirun -np 1: not the serial output byte for byte"
-
-        run([hocav, "convert", "serial.meshb", "serial.mesh"], work)
-        serial_ridges = ridge_length(os.path.join(work, "serial.mesh"))
-        for processes in (2, 3, 4):
-            name = f"{processes}.mesh"
-            run(mpirun + ["-np", str(processes), hocav] + adapt + ["-o", name, "--report", f"{processes}.json"], work)
-            figures = stats(hocav, name, work)
-            check_valid(figures, name)
-            assert figures["corners"] == serial["corners"], f"{name}: {figures['corners']} corners, serial {serial['corners']}"
-            assert figures["required vertices"] == "0", f"{name}: {figures['required vertices']} required vertices (the interfaces' tags left)"
-            ridges = ridge_length(os.path.join(work, name))
-            assert abs(ridges - serial_ridges) <= 1e-9 * serial_ridges, f"{name}: ridge lines {ridges} long, serial {serial_ridges}"
-            check_same_refs(figures, serial, name)
-            unit, quality, minimum = report(os.path.join(work, f"{processes}.json"))
-            check_iterations(os.path.join(work, f"{processes}.json"), processes)
-            print(f"{processes} processes: unit {unit:.4f} (serial {serial_unit:.4f}), mean quality {quality:.4f} "
-                  f"(serial {serial_quality:.4f}), min quality {minimum:.4f} (serial {serial_min:.4f})")
-            assert abs(unit - serial_unit) <= TOLERANCE * serial_unit, f"{name}: unit share {unit} vs {serial_unit}"
-            assert abs(quality - serial_quality) <= TOLERANCE * serial_quality, f"{name}: mean quality {quality} vs {serial_quality}"
-            assert minimum >= MIN_QUALITY_SHARE * serial_min, f"{name}: min quality {minimum} vs serial {serial_min}"
+        compare_with_serial(hocav, mpirun, work, "cube.solb")
+        # The metric's own h-min (0.001), 100 times finer than the input: the frozen interfaces are
+        # far coarser than the metric (docs/distributed.md, "A small case that shows the defect").
+        run([hocav, "metric", "cube.meshb", "--analytic", "linear", "-o", "fine.solb"], work)
+        compare_with_serial(hocav, mpirun, work, "fine.solb", FINE_TOLERANCE, fine=True)
 
         curved = ["adapt", "cube.meshb", "--metric", "cube.solb", "--order", "2", "-q", "-o", "curved.meshb"]
         run(mpirun + ["-np", "2", hocav] + curved, work)

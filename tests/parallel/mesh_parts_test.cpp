@@ -74,6 +74,27 @@ TEST(MeshParts, SplitAndMergeGiveTheSameMesh) {
   }
 }
 
+TEST(MeshParts, OldVertexIdsFollowTheMergeAndMissTheVerticesOfNoPart) {
+  SlicedCube cube(4);
+  for (int& part : cube.part_of)
+    if (part == 1 || part == 2) part = -1;  // the two middle slabs in no part: the plane x = 0.5 is lost
+  const MergedMesh<3> merged = merge_parts(cube.mesh, split_mesh(cube.mesh, cube.part_of, 4));
+  ASSERT_EQ(merged.old_vertex_ids.size(), static_cast<std::size_t>(cube.mesh.vertex_count()));
+  int lost = 0;
+  for (Index v = 0; v < cube.mesh.vertex_count(); ++v) {
+    const Index id = merged.old_vertex_ids[v];
+    const bool on_lost_plane = cube.mesh.vertex(v)[0] == 0.5;
+    EXPECT_EQ(id == kNoIndex, on_lost_plane) << v;
+    if (id == kNoIndex) {
+      ++lost;
+      continue;
+    }
+    ASSERT_LT(id, merged.mesh.vertex_count());
+    EXPECT_EQ(merged.mesh.vertex(id), cube.mesh.vertex(v)) << v;
+  }
+  EXPECT_EQ(lost, 25) << "a 5 x 5 vertex plane";
+}
+
 TEST(MeshParts, PartsAreConsistentWithRequiredInterfaces) {
   SlicedCube cube(3);
   for (MeshPart<3> part : split_mesh(cube.mesh, cube.part_of, 3)) {
