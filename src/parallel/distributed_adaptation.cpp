@@ -37,8 +37,8 @@ AdaptationRun adapt_part(MeshPart<D>& part, const AdaptationMetric<D>& metric, c
 
 // Every iteration's parts split no edge at an interface vertex and stop this many passes after their
 // loop's window closes: next to a frozen interface much coarser than the metric, splits toward it
-// never end, and what a part would do there the next iteration, with that interface inside a part,
-// does better; so does the band iteration and the last serial run (docs/distributed.md).
+// never end, and what a part would do there a later iteration (with that interface inside a part),
+// the band or the last serial run does better (docs/distributed.md).
 constexpr int kEarlyPassesAfterWindowCloses = 2;
 
 // The settings of a part's loop: the run's, with the limits above.

@@ -211,7 +211,6 @@ struct PartMerger {
 
   void add_vertices() {
     for (const auto& [p, v] : vertices.source) out.mesh.add_vertex(parts[p].mesh.vertex(v), parts[p].mesh.vertex_ref(v));
-    out.interface_vertex.assign(vertices.source.size(), 0);
     const EntityTags<D> old_tags(old_mesh);
     for (Index g = 0; g < old_mesh.vertex_count(); ++g) {
       if (vertices.old_ids[g] == kNoIndex) continue;
@@ -233,10 +232,7 @@ struct PartMerger {
         add_tagged_facet(out.mesh, mapped(p, part.facet(f)), part.facet_ref(f), tags, f);
         continue;
       }
-      for (int i = 0; i < D; ++i) {
-        out.interface_vertex[vertices.merged_ids[p][part.facet(f)[i]]] = 1;
-        interface_edges.insert(Mesh<D>::edge_key(part.facet(f)[i], part.facet(f)[(i + 1) % D]));
-      }
+      for (int i = 0; i < D; ++i) interface_edges.insert(Mesh<D>::edge_key(part.facet(f)[i], part.facet(f)[(i + 1) % D]));
     }
     if constexpr (D == 3) add_lines(p, tags, interface_edges);
   }

@@ -32,9 +32,8 @@ std::vector<MeshPart<D>> split_mesh(const Mesh<D>& mesh, std::span<const int> pa
 
 template <int D>
 struct MergedMesh {
-  Mesh<D> mesh;                        // P1, or P2 when a part is, without topology
-  std::vector<char> interface_vertex;  // per vertex: it lay on an interface of the parts
-  std::vector<Index> old_vertex_ids;   // per vertex of the old mesh: its id here, kNoIndex if no part kept it
+  Mesh<D> mesh;                       // P1, or P2 when a part is, without topology
+  std::vector<Index> old_vertex_ids;  // per vertex of the old mesh: its id here, kNoIndex if no part kept it
 };
 
 // Merges adapted `parts` (compact) of `old_mesh`: the vertices they share by their global ids,
