@@ -117,12 +117,11 @@ AdaptationRun combined(const std::vector<AdaptationRun>& runs) {
 // pass, which mends what the parts could not mend next to their frozen interfaces.
 template <int D>
 std::vector<char> around_interfaces(const Mesh<D>& mesh, const std::vector<char>& interface_vertex) {
+  const std::vector<char> near = elements_near(mesh, interface_vertex, 1);
   std::vector<char> region(interface_vertex.size(), 0);
-  for (Index k = 0; k < mesh.element_count(); ++k) {
-    const auto& element = mesh.element(k);
-    if (std::none_of(element.begin(), element.end(), [&](Index v) { return interface_vertex[static_cast<std::size_t>(v)] != 0; })) continue;
-    for (Index v : element) region[static_cast<std::size_t>(v)] = 1;
-  }
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    if (near[k])
+      for (Index v : mesh.element(k)) region[v] = 1;
   return region;
 }
 
