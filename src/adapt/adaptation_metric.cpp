@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "adapt/hausdorff_metric.hpp"
+#include "base/error.hpp"
 #include "geom/sym_eigen.hpp"
 #include "geom/sym_functions.hpp"
 #include "mesh/measure.hpp"
@@ -12,6 +13,26 @@ namespace hocav {
 
 template <int D>
 SymMat<D> AdaptationMetric<D>::metric_at(const Vec<D>& x, Index& hint) const {
+  const SymMat<D> target = target_at(x, hint);
+  if (!start_) return target;
+  const auto sample = start_->sample(x, hint);
+  hint = sample.where.element;
+  return exp_sym((1 - fraction_) * sample.log_metric + fraction_ * log_spd(target));
+}
+
+template <int D>
+AdaptationMetric<D> AdaptationMetric<D>::partway_from(const MetricField<D>& start, double fraction) const {
+  for (const MetricField<D>* field : {field_, hausdorff_})
+    if (field && field->back_mesh().element_count() != start.back_mesh().element_count())
+      throw Error("a gradual metric's start is not on the metric's back mesh");
+  AdaptationMetric partway = *this;
+  partway.start_ = &start;
+  partway.fraction_ = fraction;
+  return partway;
+}
+
+template <int D>
+SymMat<D> AdaptationMetric<D>::target_at(const Vec<D>& x, Index& hint) const {
   if (analytic_) {
     const SymMat<D> metric = analytic_metric<D>(*analytic_, x);
     if (!hausdorff_) return clamped(metric);

@@ -35,11 +35,21 @@ class AdaptationMetric {
   // Clamps a metric's sizes to the bounds (eigenvalues to [1/h_max², 1/h_min²]).
   SymMat<D> clamped(const SymMat<D>& metric) const;
 
+  // This metric a fraction t ∈ [0, 1] of the way from `start`'s, log-Euclidean: log M_t =
+  // (1 − t) log M_start + t log M (a distributed run's early iterations, docs/distributed.md §A
+  // gradual metric). `start` must be on this metric's back mesh (they share hints) and outlive the
+  // result.
+  AdaptationMetric partway_from(const MetricField<D>& start, double fraction) const;
+
  private:
+  SymMat<D> target_at(const Vec<D>& x, Index& hint) const;
+
   const MetricField<D>* field_ = nullptr;
   const MetricField<D>* hausdorff_ = nullptr;  // with an analytic field: the bound on its back mesh
   std::optional<AnalyticMetricSpec> analytic_;
   SizeBounds bounds_;
+  const MetricField<D>* start_ = nullptr;  // with partway_from: where the metric starts
+  double fraction_ = 1;
 };
 
 // The output's element count `metric` asks for inside each element of `input`: ∫ √det M over the

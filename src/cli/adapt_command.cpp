@@ -136,11 +136,12 @@ std::string rank_range(const std::vector<T>& values, double unit) {
 
 void print_iteration(const DistributedIteration& figures) {
   const bool band = figures.iteration == kDistributedIterations;
-  std::cerr << "distributed: iteration " << figures.iteration << " of " << kDistributedIterations << (band ? " (the band)" : "") << ": "
-            << process_count() << " parts, " << figures.interface_faces << " interface faces, " << figures.interface_vertices << " of "
-            << figures.vertices << " vertices on the interfaces, " << figures.bytes_sent << " bytes sent, " << figures.seconds
-            << " s (partition " << figures.seconds_partition << " s; parts " << rank_range(figures.part_seconds, 1) << " s, peak memory "
-            << rank_range(figures.peak_memory_bytes, 1 << 20) << " MiB per rank)\n";
+  std::cerr << "distributed: iteration " << figures.iteration << " of " << kDistributedIterations << (band ? " (the band)" : "")
+            << ": metric " << figures.metric_fraction << " of the way, " << process_count() << " parts, " << figures.interface_faces
+            << " interface faces, " << figures.interface_vertices << " of " << figures.vertices << " vertices on the interfaces, "
+            << figures.bytes_sent << " bytes sent, " << figures.seconds << " s (partition " << figures.seconds_partition << " s; parts "
+            << rank_range(figures.part_seconds, 1) << " s, peak memory " << rank_range(figures.peak_memory_bytes, 1 << 20)
+            << " MiB per rank)\n";
 }
 
 // With several processes (docs/distributed.md): the input and its metric to every process, and the
@@ -180,7 +181,7 @@ void serve_adaptation(const AdaptOptions& o, const std::vector<std::byte>& input
   job.warn = {};  // rank 0 warns
   job.pass_progress = {};
   const auto setup = set_up_adaptation(std::move(part.mesh), std::move(metrics), job, o.input);
-  serve_distributed_adaptation(*setup->metric, setup->geometry.get(), setup->settings);
+  serve_distributed_adaptation(setup->input, *setup->metric, setup->geometry.get(), setup->settings);
   if (!job.curving) return;
   setup->geometry.reset();  // one CAD model open at a time, as on rank 0
   std::vector<std::byte> bytes;

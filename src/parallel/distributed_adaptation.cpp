@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <utility>
 
 #include "adapt/vertex_classes.hpp"
 #include "base/error.hpp"
 #include "base/memory_budget.hpp"
+#include "geom/sym_eigen.hpp"
+#include "geom/sym_functions.hpp"
+#include "metric/implied_metric.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/element_partition.hpp"
 #include "parallel/part_message.hpp"
@@ -40,6 +44,35 @@ AdaptationRun adapt_part(MeshPart<D>& part, const AdaptationMetric<D>& metric, c
 // never end, and what a part would do there a later iteration (with that interface inside a part),
 // the band or the last serial run does better (docs/distributed.md).
 constexpr int kEarlyPassesAfterWindowCloses = 2;
+
+// A whole-mesh iteration asks for sizes at most this many times finer than the mesh it starts from
+// (where the metric is finest against the input), if kDistributedIterations - 1 steps allow.
+constexpr double kGradualRefinement = 5;
+
+// The whole-mesh iterations that step from the input's own metric to the target: enough for the
+// largest ratio of the input's sizes to the target's, at the input's vertices, to take steps of at
+// most kGradualRefinement, and at most kDistributedIterations - 1.
+template <int D>
+int gradual_steps(const Mesh<D>& input, const MetricField<D>& input_metric, const AdaptationMetric<D>& metric) {
+  double ratio = 1;
+  Index hint = kNoIndex;
+  for (Index v = 0; v < input.vertex_count(); ++v) {
+    // sizes in the target over the input's, along the eigenvectors of M_input^(-1/2) M M_input^(-1/2)
+    SymEigen<D> own = spd_eigen(exp_sym(input_metric.vertex_log_metric(v)));
+    for (int k = 0; k < D; ++k)
+      for (int i = 0; i < D; ++i) own.vectors(i, k) /= std::sqrt(own.values[k]);
+    const SymEigen<D> relative = spd_eigen(congruence_transposed(own.vectors, metric.metric_at(input.vertex(v), hint)));
+    for (int k = 0; k < D; ++k) ratio = std::max(ratio, std::sqrt(relative.values[k]));
+  }
+  const int steps = static_cast<int>(std::ceil(std::log(ratio) / std::log(kGradualRefinement) - 1e-9));
+  return std::clamp(steps, 1, kDistributedIterations - 1);
+}
+
+// The share of the way from the input's own metric to the target that an iteration adapts to: the
+// whole mesh's iterations step there evenly, so that each starts at most a few times coarser than
+// it asks and its frozen interfaces stay near their metric; the band and the last run adapt to the
+// target (docs/distributed.md §A gradual metric).
+double gradual_fraction(int iteration, int steps) { return std::min(1.0, static_cast<double>(iteration) / steps); }
 
 // The settings of a part's loop: the run's, with the limits above.
 AdaptationSettings part_settings(const AdaptationSettings& settings) {
@@ -149,18 +182,22 @@ PartInterfaces interfaces_between(const Mesh<D>& mesh, std::span<const int> part
 template <int D>
 struct RootIteration {
   Mesh<D>& mesh;
-  const AdaptationMetric<D>& metric;
+  AdaptationMetric<D> metric;  // the iteration's
   const BoundaryGeometry<D>* geometry;
   std::vector<char> old_interface;  // per vertex of `mesh`: on the interfaces between adapted parts
   DistributedIteration figures;
 
-  AdaptationRun run(const std::vector<int>& part_of, const AdaptationSettings& settings, std::chrono::steady_clock::time_point start) {
+  AdaptationRun run(const std::vector<int>& part_of, double fraction, const AdaptationSettings& settings,
+                    std::chrono::steady_clock::time_point start) {
     const int count = process_count();
     std::vector<MeshPart<D>> parts = split_mesh(mesh, part_of, count + 1);
     const PartInterfaces interfaces = interfaces_between(mesh, part_of, count);
     figures.seconds_partition = seconds_since(start);
     figures.interface_faces = interfaces.faces;
-    for (int p = 1; p < count; ++p) send(p, pack_part(parts[p].mesh, std::span<const Index>(parts[p].global_ids)));
+    for (int p = 1; p < count; ++p) {
+      send(p, bytes_of_values(std::vector<double>{fraction}));
+      send(p, pack_part(parts[p].mesh, std::span<const Index>(parts[p].global_ids)));
+    }
     auto [run0, figures0] = adapt_part_measured(parts[0], metric, geometry, settings);
     std::vector<AdaptationRun> runs{std::move(run0)};
     note(figures0);
@@ -220,6 +257,9 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   // The whole mesh's corners and feature lines first, as the serial loop finds them: a part sees
   // only its share of the boundary (docs/distributed.md §Parts).
   classify_vertices(mesh, settings.feature_angle_degrees);
+  // The input's own metric, where the gradual metric starts (on every rank the same field).
+  const MetricField<D> input_metric(mesh, implied_metric_at_vertices(mesh));
+  const int steps = gradual_steps(mesh, input_metric, metric);
   RootIteration<D> root{mesh, metric, geometry, {}, {}};
   AdaptationRun run;
   const AdaptationSettings early = part_settings(settings);
@@ -228,8 +268,11 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
     root.figures.iteration = iteration;
     const auto start = std::chrono::steady_clock::now();
     const bool band = iteration == kDistributedIterations;
+    const double fraction = gradual_fraction(iteration, steps);
+    root.metric = metric.partway_from(input_metric, fraction);
+    root.figures.metric_fraction = fraction;
     const std::vector<int> part_of = band ? root.band_partition() : root.whole_partition();
-    const AdaptationRun step = root.run(part_of, early, start);
+    const AdaptationRun step = root.run(part_of, fraction, early, start);
     run.passes.insert(run.passes.end(), step.passes.begin(), step.passes.end());
     if (on_iteration) on_iteration(root.figures);
   }
@@ -247,13 +290,15 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
 }
 
 template <int D>
-void serve_distributed_adaptation(const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
+void serve_distributed_adaptation(const Mesh<D>& input, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                                   const AdaptationSettings& settings) {
+  const MetricField<D> input_metric(input, implied_metric_at_vertices(input));
   for (;;) {
-    const std::vector<std::byte> bytes = receive_bytes(0);
-    if (bytes.empty()) return;
-    MeshPart<D> part = unpack_part<D>(bytes);
-    const auto [run, figures] = adapt_part_measured(part, metric, geometry, part_settings(settings));
+    const std::vector<double> fraction = receive_values<double>(0);
+    if (fraction.size() != 1) return;  // stop
+    MeshPart<D> part = unpack_part<D>(receive_bytes(0));
+    const auto [run, figures] = adapt_part_measured(part, metric.partway_from(input_metric, fraction[0]), geometry,
+                                                    part_settings(settings));
     send_bytes(0, pack_part(part.mesh, std::span<const Index>(part.global_ids)));
     send_bytes(0, pack_run(run));
     send_values(0, std::vector<PartFigures>{figures});
@@ -264,7 +309,9 @@ template AdaptationRun adapt_distributed(Mesh<2>&, const AdaptationMetric<2>&, c
                                          const std::function<void(const DistributedIteration&)>&);
 template AdaptationRun adapt_distributed(Mesh<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*, const AdaptationSettings&,
                                          const std::function<void(const DistributedIteration&)>&);
-template void serve_distributed_adaptation(const AdaptationMetric<2>&, const BoundaryGeometry<2>*, const AdaptationSettings&);
-template void serve_distributed_adaptation(const AdaptationMetric<3>&, const BoundaryGeometry<3>*, const AdaptationSettings&);
+template void serve_distributed_adaptation(const Mesh<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*,
+                                           const AdaptationSettings&);
+template void serve_distributed_adaptation(const Mesh<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*,
+                                           const AdaptationSettings&);
 
 }  // namespace hocav

@@ -10,6 +10,7 @@ namespace hocav {
 
 struct DistributedIteration {
   int iteration = 0;                          // 1-based
+  double metric_fraction = 1;                 // of the way from the input's own metric to the target
   Index vertices = 0, elements = 0;           // of the merged mesh
   Index interface_vertices = 0;               // shared by parts in the iteration
   Index interface_faces = 0;                  // between parts, each counted once

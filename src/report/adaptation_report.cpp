@@ -79,7 +79,8 @@ void write_per_rank(JsonWriter& json, std::string_view name, const std::vector<T
 void write_distributed_iterations(JsonWriter& json, const std::vector<DistributedIteration>& iterations) {
   json.key("distributed_iterations").begin_array();
   for (const DistributedIteration& it : iterations) {
-    json.begin_object().member("iteration", it.iteration).member("vertices", it.vertices).member("elements", it.elements);
+    json.begin_object().member("iteration", it.iteration).member("metric_fraction", it.metric_fraction);
+    json.member("vertices", it.vertices).member("elements", it.elements);
     json.member("interface_vertices", it.interface_vertices).member("interface_faces", it.interface_faces);
     json.member("bytes_sent", it.bytes_sent).member("seconds", it.seconds).member("seconds_partition", it.seconds_partition);
     write_per_rank(json, "part_seconds", it.part_seconds);

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """`mpirun -np N hocav adapt` (docs/distributed.md) against the serial `hocav adapt` on a small cube,
-with two metrics: h-min 0.03, and h-min 0.001 where the first interfaces are 100 times too coarse
-(looser bounds there, FINE_*).
+with two metrics: h-min 0.03, and h-min 0.001 where the input is 100 times too coarse (the
+iterations then step there by a gradual metric).
 
 With one process the output must be the serial one byte for byte. With 2, 3 and 4 processes
 (oversubscribed): the output is consistent and valid (`hocav stats`), keeps the input's element and
@@ -22,11 +22,6 @@ from mpi_test_support import SKIP, check_same_refs, check_valid, mpirun_or_none,
 
 TOLERANCE = 0.01
 MIN_QUALITY_SHARE = 0.5
-# The fine metric: the issue's 1% is not met there yet (3 processes: 97.2% unit against 98.9%, mean
-# quality 0.848 against 0.859), nor the minimum quality (2 processes: 0.00005); these bounds hold the band iteration's gain (before
-# it: 84-85% unit, 8-17% of the elements below 0.1; docs/distributed.md).
-FINE_TOLERANCE = 0.02
-FINE_BELOW_0_1 = 0.001
 
 
 def ridge_length(path):
@@ -60,7 +55,7 @@ def report(path):
 
 def check_iterations(path, processes, fine):
     """The report's distributed iterations: one per iteration, each with every rank's time and peak
-    memory; the last iteration's mesh within 20% of the output's size, except with the fine metric,
+    memory, and its metric's fraction of the way to the target; the last iteration's mesh within 20% of the output's size, except with the fine metric,
     where the serial run after the iterations still adds half of it (docs/distributed.md)."""
     with open(path) as file:
         data = json.load(file)
@@ -73,15 +68,19 @@ def check_iterations(path, processes, fine):
         assert all(memory > 1 << 20 for memory in it["peak_memory_bytes"]), it
         assert 0 < it["interface_vertices"] < it["vertices"], it
         assert it["bytes_sent"] > 0, it
+    fractions = [it["metric_fraction"] for it in iterations]
+    assert fractions == sorted(fractions) and fractions[-2:] == [1, 1], fractions
+    # The gradual metric (docs/distributed.md): 100 times finer than the input takes three steps,
+    # about 3 times (h-min 0.03) one.
+    assert (fractions[0] < 0.34) if fine else (fractions[0] == 1), fractions
     last = iterations[-1]["elements"]
     print(f"  the last iteration's mesh: {last} elements, the output {output_elements}")
     assert fine or abs(last - output_elements) <= 0.2 * output_elements, f"last iteration {last} elements, output {output_elements}"
 
 
-def compare_with_serial(hocav, mpirun, work, metric, tolerance=TOLERANCE, fine=False):
-    """The checks of the module's docstring on the cube adapted to `metric` (a .solb in `work`), the
-    unit share and mean quality within `tolerance` of the serial ones; with `fine`, at most 0.1% of the elements
-    below quality 0.1 in place of the minimum quality's bound."""
+def compare_with_serial(hocav, mpirun, work, metric, fine=False):
+    """The checks of the module's docstring on the cube adapted to `metric` (a .solb in `work`); with
+    `fine`, the last iteration's mesh may be far from the output's size (check_iterations)."""
     adapt = ["adapt", "cube.meshb", "--metric", metric, "--order", "1", "--threads", "1", "-q"]
     run([hocav] + adapt + ["-o", "serial.meshb", "--report", "serial.json"], work)
     serial = stats(hocav, "serial.meshb", work)
@@ -107,12 +106,9 @@ def compare_with_serial(hocav, mpirun, work, metric, tolerance=TOLERANCE, fine=F
         check_iterations(os.path.join(work, f"{processes}.json"), processes, fine)
         print(f"{name}: unit {unit:.4f} (serial {serial_unit:.4f}), mean quality {quality:.4f} "
               f"(serial {serial_quality:.4f}), min quality {minimum:.4f} (serial {serial_min:.4f}), below 0.1 {below:.5f}")
-        assert abs(unit - serial_unit) <= tolerance * serial_unit, f"{name}: unit share {unit} vs {serial_unit}"
-        assert abs(quality - serial_quality) <= tolerance * serial_quality, f"{name}: mean quality {quality} vs {serial_quality}"
-        if fine:
-            assert below <= FINE_BELOW_0_1, f"{name}: {below} of the elements below quality 0.1"
-        else:
-            assert minimum >= MIN_QUALITY_SHARE * serial_min, f"{name}: min quality {minimum} vs serial {serial_min}"
+        assert abs(unit - serial_unit) <= TOLERANCE * serial_unit, f"{name}: unit share {unit} vs {serial_unit}"
+        assert abs(quality - serial_quality) <= TOLERANCE * serial_quality, f"{name}: mean quality {quality} vs {serial_quality}"
+        assert minimum >= MIN_QUALITY_SHARE * serial_min, f"{name}: min quality {minimum} vs serial {serial_min}"
 
 
 def main():
@@ -124,10 +120,11 @@ def main():
         run([hocav, "generate", "cube", "--h", "0.1", "-o", "cube.meshb"], work)
         run([hocav, "metric", "cube.meshb", "--analytic", "linear", "--h-min", "0.03", "-o", "cube.solb"], work)
         compare_with_serial(hocav, mpirun, work, "cube.solb")
-        # The metric's own h-min (0.001), 100 times finer than the input: the frozen interfaces are
-        # far coarser than the metric (docs/distributed.md, "A small case that shows the defect").
+        # The metric's own h-min (0.001), 100 times finer than the input: with the target in the first
+        # iteration its frozen interfaces would be far coarser than the metric (docs/distributed.md,
+        # "A small case that shows the defect"; before the gradual metric: 97.2% unit against 98.9%).
         run([hocav, "metric", "cube.meshb", "--analytic", "linear", "-o", "fine.solb"], work)
-        compare_with_serial(hocav, mpirun, work, "fine.solb", FINE_TOLERANCE, fine=True)
+        compare_with_serial(hocav, mpirun, work, "fine.solb", fine=True)
 
         curved = ["adapt", "cube.meshb", "--metric", "cube.solb", "--order", "2", "-q", "-o", "curved.meshb"]
         run(mpirun + ["-np", "2", hocav] + curved, work)
