@@ -187,15 +187,15 @@ struct RootIteration {
   std::vector<char> old_interface;  // per vertex of `mesh`: on the interfaces between adapted parts
   DistributedIteration figures;
 
-  AdaptationRun run(const std::vector<int>& part_of, double fraction, const AdaptationSettings& settings,
-                    std::chrono::steady_clock::time_point start) {
+  // The parts' metric is `metric`, figures.metric_fraction of the way (sent to the other ranks).
+  AdaptationRun run(const std::vector<int>& part_of, const AdaptationSettings& settings, std::chrono::steady_clock::time_point start) {
     const int count = process_count();
     std::vector<MeshPart<D>> parts = split_mesh(mesh, part_of, count + 1);
     const PartInterfaces interfaces = interfaces_between(mesh, part_of, count);
     figures.seconds_partition = seconds_since(start);
     figures.interface_faces = interfaces.faces;
     for (int p = 1; p < count; ++p) {
-      send(p, bytes_of_values(std::vector<double>{fraction}));
+      send(p, bytes_of_values(std::vector<double>{figures.metric_fraction}));
       send(p, pack_part(parts[p].mesh, std::span<const Index>(parts[p].global_ids)));
     }
     auto [run0, figures0] = adapt_part_measured(parts[0], metric, geometry, settings);
@@ -272,7 +272,7 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
     root.metric = metric.partway_from(input_metric, fraction);
     root.figures.metric_fraction = fraction;
     const std::vector<int> part_of = band ? root.band_partition() : root.whole_partition();
-    const AdaptationRun step = root.run(part_of, fraction, early, start);
+    const AdaptationRun step = root.run(part_of, early, start);
     run.passes.insert(run.passes.end(), step.passes.begin(), step.passes.end());
     if (on_iteration) on_iteration(root.figures);
   }
