@@ -9,8 +9,8 @@
 #include "adapt/vertex_classes.hpp"
 #include "base/error.hpp"
 #include "base/memory_budget.hpp"
-#include "geom/sym_eigen.hpp"
 #include "geom/sym_functions.hpp"
+#include "metric/gradation.hpp"
 #include "metric/implied_metric.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/element_partition.hpp"
@@ -57,12 +57,8 @@ int gradual_steps(const Mesh<D>& input, const MetricField<D>& input_metric, cons
   double ratio = 1;
   Index hint = kNoIndex;
   for (Index v = 0; v < input.vertex_count(); ++v) {
-    // sizes in the target over the input's, along the eigenvectors of M_input^(-1/2) M M_input^(-1/2)
-    SymEigen<D> own = spd_eigen(exp_sym(input_metric.vertex_log_metric(v)));
-    for (int k = 0; k < D; ++k)
-      for (int i = 0; i < D; ++i) own.vectors(i, k) /= std::sqrt(own.values[k]);
-    const SymEigen<D> relative = spd_eigen(congruence_transposed(own.vectors, metric.metric_at(input.vertex(v), hint)));
-    for (int k = 0; k < D; ++k) ratio = std::max(ratio, std::sqrt(relative.values[k]));
+    const SymMat<D> own = exp_sym(input_metric.vertex_log_metric(v));
+    ratio = std::max(ratio, std::sqrt(largest_relative_eigenvalue(metric.metric_at(input.vertex(v), hint), own)));
   }
   const int steps = static_cast<int>(std::ceil(std::log(ratio) / std::log(kGradualRefinement) - 1e-9));
   return std::clamp(steps, 1, kDistributedIterations - 1);
