@@ -161,7 +161,7 @@ BoundarySettling settle_classified_boundary(Mesh<D>& mesh, std::span<const SymMa
   std::vector<char> fixed;
   const std::vector<Vec<D>> on_boundary = boundary_moves(mesh, geometry, classes, candidates, fixed, out);
   if (out.off_geometry > 0) {
-    const HarmonicExtension<D> extension = harmonic_extension<D>(mesh, vertex_graph(mesh), fixed, on_boundary, kReachFactor);
+    const HarmonicExtension<D> extension = harmonic_extension<D>(mesh, fixed, on_boundary, kReachFactor);
     out.solver_iterations = extension.iterations;
     ScaledMoves<D> moves(mesh, metrics, extension.moves);
     while (moves.scale_back_failing(out.rounds)) ++out.rounds;

@@ -17,10 +17,11 @@ constexpr double kRelativeResidual = 1e-10;
 constexpr int kMaxIterations = 20000;
 
 // Per vertex, the least over moving fixed vertices s of (path length from s − reach_factor × |move
-// of s|): negative within the reach of some moving vertex (a multi-source Dijkstra from them).
+// of s|): negative within the reach of some moving vertex (a multi-source Dijkstra from them, along
+// the edges of the elements around each vertex reached).
 template <int D>
-std::vector<double> reach_labels(const Mesh<D>& mesh, const VertexGraph& graph, std::span<const char> fixed, std::span<const Vec<D>> moves,
-                                 double reach_factor) {
+std::vector<double> reach_labels(const Mesh<D>& mesh, const VertexElements& around, std::span<const char> fixed,
+                                 std::span<const Vec<D>> moves, double reach_factor) {
   std::vector<double> label(static_cast<std::size_t>(mesh.vertex_count()), std::numeric_limits<double>::infinity());
   using Entry = std::pair<double, Index>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
@@ -30,8 +31,9 @@ std::vector<double> reach_labels(const Mesh<D>& mesh, const VertexGraph& graph, 
     const auto [at, v] = queue.top();
     queue.pop();
     if (at > label[v]) continue;  // reached shorter since
-    for (Index w : graph.neighbors_of(v))
-      if (const double to = at + norm(mesh.vertex(w) - mesh.vertex(v)); to < 0 && to < label[w]) queue.push({label[w] = to, w});
+    for (Index k : around.of(v))
+      for (Index w : mesh.element(k))
+        if (const double to = at + norm(mesh.vertex(w) - mesh.vertex(v)); w != v && to < 0 && to < label[w]) queue.push({label[w] = to, w});
   }
   return label;
 }
@@ -149,13 +151,17 @@ int conjugate_gradients(const FreeSystem<D>& system, const std::vector<double>& 
 }  // namespace
 
 template <int D>
-HarmonicExtension<D> harmonic_extension(const Mesh<D>& mesh, const VertexGraph& graph, std::span<const char> fixed,
-                                        std::span<const Vec<D>> moves, double reach_factor) {
+HarmonicExtension<D> harmonic_extension(const Mesh<D>& mesh, std::span<const char> fixed, std::span<const Vec<D>> moves,
+                                        double reach_factor) {
   HarmonicExtension<D> out;
   out.moves.assign(static_cast<std::size_t>(mesh.vertex_count()), Vec<D>{});
   for (Index v = 0; v < mesh.vertex_count(); ++v)
     if (fixed[v]) out.moves[v] = moves[v];
-  const FreeSystem<D> system = free_system(mesh, graph, fixed, moves, reach_labels(mesh, graph, fixed, moves, reach_factor));
+  const VertexElements around = vertex_elements(mesh);
+  const std::vector<double> label = reach_labels(mesh, around, fixed, moves, reach_factor);
+  std::vector<char> within(label.size());
+  for (std::size_t v = 0; v < label.size(); ++v) within[v] = label[v] < 0;
+  const FreeSystem<D> system = free_system(mesh, vertex_graph(mesh, around, within), fixed, moves, label);
   out.free_vertices = static_cast<Index>(system.vertices.size());
   std::vector<double> b(system.vertices.size()), x;
   for (int c = 0; c < D; ++c) {
@@ -166,9 +172,7 @@ HarmonicExtension<D> harmonic_extension(const Mesh<D>& mesh, const VertexGraph& 
   return out;
 }
 
-template HarmonicExtension<2> harmonic_extension(const Mesh<2>&, const VertexGraph&, std::span<const char>, std::span<const Vec<2>>,
-                                                 double);
-template HarmonicExtension<3> harmonic_extension(const Mesh<3>&, const VertexGraph&, std::span<const char>, std::span<const Vec<3>>,
-                                                 double);
+template HarmonicExtension<2> harmonic_extension(const Mesh<2>&, std::span<const char>, std::span<const Vec<2>>, double);
+template HarmonicExtension<3> harmonic_extension(const Mesh<3>&, std::span<const char>, std::span<const Vec<3>>, double);
 
 }  // namespace hocav

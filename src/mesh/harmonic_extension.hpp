@@ -19,11 +19,12 @@ struct HarmonicExtension {
   int iterations = 0;         // of the conjugate gradients, summed over the coordinates
 };
 
-// `fixed` and `moves` per vertex of `mesh` (whose `graph` is given); the moves of free vertices are
-// ignored. Solved by Jacobi-preconditioned conjugate gradients, serially (the same result for any
-// thread count).
+// `fixed` and `moves` per vertex of `mesh`; the moves of free vertices are ignored. Solved by
+// Jacobi-preconditioned conjugate gradients, serially (the same result for any thread count). Only
+// the vertices within reach are visited and given graph rows, so a few moves in a large mesh cost
+// little more than their neighbourhoods (and a pass over the elements).
 template <int D>
-HarmonicExtension<D> harmonic_extension(const Mesh<D>& mesh, const VertexGraph& graph, std::span<const char> fixed,
-                                        std::span<const Vec<D>> moves, double reach_factor);
+HarmonicExtension<D> harmonic_extension(const Mesh<D>& mesh, std::span<const char> fixed, std::span<const Vec<D>> moves,
+                                        double reach_factor);
 
 }  // namespace hocav

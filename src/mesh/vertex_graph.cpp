@@ -36,7 +36,43 @@ VertexGraph vertex_graph(const Mesh<D>& mesh) {
   return graph;
 }
 
+template <int D>
+VertexElements vertex_elements(const Mesh<D>& mesh) {
+  const auto vertex_count = static_cast<std::size_t>(mesh.vertex_count());
+  VertexElements around;
+  around.offsets.assign(vertex_count + 1, 0);
+  for (const auto& element : mesh.elements())
+    for (Index v : element) ++around.offsets[static_cast<std::size_t>(v) + 1];
+  for (std::size_t v = 1; v <= vertex_count; ++v) around.offsets[v] += around.offsets[v - 1];
+  around.elements.resize(static_cast<std::size_t>(around.offsets[vertex_count]));
+  std::vector<Index> next(around.offsets.begin(), around.offsets.end() - 1);
+  for (Index k = 0; k < mesh.element_count(); ++k)  // in order, so each row is ascending
+    for (Index v : mesh.element(k)) around.elements[static_cast<std::size_t>(next[v]++)] = k;
+  return around;
+}
+
+template <int D>
+VertexGraph vertex_graph(const Mesh<D>& mesh, const VertexElements& around, std::span<const char> rows) {
+  VertexGraph graph;
+  graph.offsets.assign(static_cast<std::size_t>(mesh.vertex_count()) + 1, 0);
+  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+    const auto row_begin = static_cast<std::ptrdiff_t>(graph.neighbors.size());
+    if (rows[v])
+      for (Index k : around.of(v))
+        for (Index w : mesh.element(k))
+          if (w != v) graph.neighbors.push_back(w);
+    std::sort(graph.neighbors.begin() + row_begin, graph.neighbors.end());
+    graph.neighbors.erase(std::unique(graph.neighbors.begin() + row_begin, graph.neighbors.end()), graph.neighbors.end());
+    graph.offsets[v + 1] = static_cast<Index>(graph.neighbors.size());
+  }
+  return graph;
+}
+
 template VertexGraph vertex_graph(const Mesh<2>&);
 template VertexGraph vertex_graph(const Mesh<3>&);
+template VertexElements vertex_elements(const Mesh<2>&);
+template VertexElements vertex_elements(const Mesh<3>&);
+template VertexGraph vertex_graph(const Mesh<2>&, const VertexElements&, std::span<const char>);
+template VertexGraph vertex_graph(const Mesh<3>&, const VertexElements&, std::span<const char>);
 
 }  // namespace hocav

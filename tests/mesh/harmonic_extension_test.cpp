@@ -32,7 +32,7 @@ void expect_linear_move_extended_exactly(const Mesh<D>& mesh, Field linear) {
   std::vector<char> fixed;
   std::vector<Vec<D>> moves;
   fix_boundary(mesh, linear, fixed, moves);
-  const HarmonicExtension<D> extension = harmonic_extension<D>(mesh, vertex_graph(mesh), fixed, moves, 1e9);
+  const HarmonicExtension<D> extension = harmonic_extension<D>(mesh, fixed, moves, 1e9);
   EXPECT_GT(extension.free_vertices, 0);
   // (The solver stops at a residual of 1e-10 of the start.)
   for (Index v = 0; v < mesh.vertex_count(); ++v) EXPECT_LT(norm(extension.moves[v] - linear(mesh.vertex(v))), 1e-10) << v;
@@ -76,7 +76,7 @@ TEST(HarmonicExtension, MinimizesTheDirichletEnergyOverTheFreeVertices) {
         return Vec2{{jitter(random), jitter(random)}};
       },
       fixed, moves);
-  const HarmonicExtension<2> extension = harmonic_extension<2>(mesh, vertex_graph(mesh), fixed, moves, 1e9);
+  const HarmonicExtension<2> extension = harmonic_extension<2>(mesh, fixed, moves, 1e9);
   const double least = dirichlet_energy(mesh, extension.moves);
   for (Index v = 0; v < mesh.vertex_count(); ++v) {
     if (fixed[v]) continue;
@@ -100,7 +100,7 @@ TEST(HarmonicExtension, MovesNothingBeyondTheReach) {
     if (norm(mesh.vertex(v) - Vec2{{0.5, 0}}) < 1e-12) moved = v;
   ASSERT_NE(moved, kNoIndex);
   moves[moved] = Vec2{{0, 0.01}};
-  const HarmonicExtension<2> extension = harmonic_extension<2>(mesh, vertex_graph(mesh), fixed, moves, 25);  // reach 0.25
+  const HarmonicExtension<2> extension = harmonic_extension<2>(mesh, fixed, moves, 25);  // reach 0.25
   for (Index v = 0; v < mesh.vertex_count(); ++v) {
     if (fixed[v]) continue;
     const double distance = norm(mesh.vertex(v) - mesh.vertex(moved));

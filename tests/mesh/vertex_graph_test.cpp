@@ -37,5 +37,31 @@ TEST(VertexGraph, UnusedVerticesHaveNoNeighbours) {
   EXPECT_TRUE(vertex_graph(mesh).neighbors_of(4).empty());
 }
 
+TEST(VertexElements, ListEachVertexsElementsInAscendingOrder) {
+  const Mesh<3> mesh = generate_cube(2);
+  const VertexElements around = vertex_elements(mesh);
+  std::size_t listed = 0;
+  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+    const auto elements = around.of(v);
+    EXPECT_TRUE(std::is_sorted(elements.begin(), elements.end()));
+    for (Index k : elements) EXPECT_NE(std::find(mesh.element(k).begin(), mesh.element(k).end(), v), mesh.element(k).end());
+    listed += elements.size();
+  }
+  EXPECT_EQ(listed, 4 * static_cast<std::size_t>(mesh.element_count()));  // every element under each of its vertices
+}
+
+TEST(VertexGraph, RowsOfFlaggedVerticesAreTheWholeGraphsOthersEmpty) {
+  const Mesh<3> mesh = generate_cube(3);
+  const VertexGraph whole = vertex_graph(mesh);
+  std::vector<char> rows(static_cast<std::size_t>(mesh.vertex_count()), 0);
+  for (Index v = 0; v < mesh.vertex_count(); v += 3) rows[v] = 1;
+  const VertexGraph some = vertex_graph(mesh, vertex_elements(mesh), rows);
+  ASSERT_EQ(some.vertex_count(), mesh.vertex_count());
+  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+    const auto expected = rows[v] ? whole.neighbors_of(v) : std::span<const Index>{};
+    EXPECT_TRUE(std::ranges::equal(some.neighbors_of(v), expected)) << v;
+  }
+}
+
 }  // namespace
 }  // namespace hocav
