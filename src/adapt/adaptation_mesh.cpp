@@ -4,6 +4,7 @@
 
 #include "adapt/vertex_classes.hpp"
 #include "mesh/ball_and_shell.hpp"
+#include "mesh/mesh_defects.hpp"
 
 namespace hocav {
 
@@ -18,7 +19,10 @@ AdaptationMesh<D>::AdaptationMesh(Mesh<D>& mesh, const AdaptationMetric<D>& metr
   surface_hint_attribute_ = mesh_.add_vertex_attribute(1);
   stamp_attribute_ = mesh_.add_vertex_attribute(1);  // the clock when the vertex's ball last changed
   smoothing_refused_attribute_ = mesh_.add_vertex_attribute(1);
-  const std::vector<VertexClass> classes = classify_vertices(mesh_, feature_angle_degrees);
+  non_manifold_attribute_ = mesh_.add_vertex_attribute(1);
+  const NonManifoldPlaces places = non_manifold_places(mesh_);
+  for (Index v : places.every_vertex()) mesh_.vertex_attribute(non_manifold_attribute_, v)[0] = 1;
+  const std::vector<VertexClass> classes = classify_vertices(mesh_, feature_angle_degrees, places);
   for (Index v = 0; v < mesh_.vertex_count(); ++v) {
     mesh_.vertex_attribute(class_attribute_, v)[0] = static_cast<double>(classes[v]);
     mesh_.vertex_attribute(hint_attribute_, v)[0] = kNoIndex;

@@ -1,7 +1,8 @@
 // The mesh an adaptation run changes, with what its operators read at every vertex: the metric
 // (clamped, from the run's AdaptationMetric), the vertex's geometric class, a back-mesh hint for the
 // next metric evaluation near it, a geometry hint for the next projection near it, when its ball
-// last changed and when a smoothing move of it was last refused. All six are vertex attributes of
+// last changed, when a smoothing move of it was last refused, and whether parts of the mesh meet
+// there without a face (a non-manifold place). All seven are vertex attributes of
 // the mesh, so they follow every insertion, removal and compaction (docs/mesh-model.md); each
 // element's quality is an element attribute.
 #pragma once
@@ -47,6 +48,10 @@ class AdaptationMesh {
     return m;
   }
   VertexClass vertex_class(Index v) const { return static_cast<VertexClass>(mesh_.vertex_attribute(class_attribute_, v)[0]); }
+  // Whether parts of the input meet at v without a face (non_manifold_places: a pinched vertex, or
+  // an end of an edge with more than two boundary faces): a corner, whose ball and shells a walk
+  // sees on one side only.
+  bool non_manifold(Index v) const { return mesh_.vertex_attribute(non_manifold_attribute_, v)[0] != 0; }
   // The geometry's patch of the last projection at or near a boundary vertex (kNoIndex: none yet):
   // the next projection near it starts there (ProjectionQuery::hint).
   Index surface_hint(Index v) const { return static_cast<Index>(mesh_.vertex_attribute(surface_hint_attribute_, v)[0]); }
@@ -137,7 +142,7 @@ class AdaptationMesh {
   const AdaptationMetric<D>& metric_;
   const BoundaryGeometry<D>* geometry_;
   int metric_attribute_, class_attribute_, hint_attribute_, surface_hint_attribute_, stamp_attribute_, smoothing_refused_attribute_,
-      quality_attribute_, element_stamp_attribute_;
+      non_manifold_attribute_, quality_attribute_, element_stamp_attribute_;
   int clock_ = 0, pass_start_ = 0, previous_pass_start_ = 0, sweep_start_ = 0;
   CavityWorkspace<D> work_;
 };

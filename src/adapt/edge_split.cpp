@@ -47,7 +47,8 @@ template <int D>
 struct SplitPreview {
   bool made = false;  // false when (a, b) was no edge
   // Never split: both ends are corners and a required facet or line holds the edge, or a line lies
-  // on it with no facet (its new vertex would have no surface to go on).
+  // on it with no facet (its new vertex would have no surface to go on), or both ends are
+  // non-manifold places.
   bool kept = false;
   std::vector<Index> shell, facets, lines, cavity;
   EdgeSurfaces surfaces;
@@ -162,8 +163,10 @@ void preview_split(const AdaptationMesh<D>& am, Index a, Index b, SplitPreview<D
   // A kept edge is never split (split_edge refuses it): its straight middle, not a projection onto
   // a surface the geometry may not have (a distributed part's interface: docs/distributed.md).
   const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
+  // An edge between two non-manifold places may be shared by parts that its shell (one part's) does
+  // not see: kept, so that every part keeps it.
   p.kept = (am.vertex_class(a) == VertexClass::kCorner && am.vertex_class(b) == VertexClass::kCorner && holds_required(mesh, p)) ||
-           (p.facets.empty() && !p.lines.empty());
+           (p.facets.empty() && !p.lines.empty()) || (am.non_manifold(a) && am.non_manifold(b));
   const BoundaryPoint<D> on_geometry = p.kept ? BoundaryPoint<D>{middle} : split_point(am, middle, p.surfaces);
   p.point = on_geometry.point;
   p.patch = on_geometry.patch;

@@ -47,7 +47,7 @@ void classify_features(Mesh<2>& mesh, const SurfaceTopology<2>& surface, std::ve
 }  // namespace
 
 template <int D>
-std::vector<VertexClass> classify_vertices(Mesh<D>& mesh, double feature_angle_degrees) {
+std::vector<VertexClass> classify_vertices(Mesh<D>& mesh, double feature_angle_degrees, const NonManifoldPlaces& places) {
   std::vector<VertexClass> classes(static_cast<std::size_t>(mesh.vertex_count()), VertexClass::kInterior);
   for (const auto& facet : mesh.facets())
     for (Index v : facet) classes[v] = VertexClass::kSurface;
@@ -61,9 +61,17 @@ std::vector<VertexClass> classify_vertices(Mesh<D>& mesh, double feature_angle_d
   }
   for (Index f : mesh.required_triangles())
     for (Index v : mesh.facet(f)) classes[v] = VertexClass::kCorner;
+  for (Index v : places.every_vertex()) tag_corner(mesh.corners(), classes, v);
   return classes;
 }
 
+template <int D>
+std::vector<VertexClass> classify_vertices(Mesh<D>& mesh, double feature_angle_degrees) {
+  return classify_vertices(mesh, feature_angle_degrees, non_manifold_places(mesh));
+}
+
+template std::vector<VertexClass> classify_vertices(Mesh<2>&, double, const NonManifoldPlaces&);
+template std::vector<VertexClass> classify_vertices(Mesh<3>&, double, const NonManifoldPlaces&);
 template std::vector<VertexClass> classify_vertices(Mesh<2>&, double);
 template std::vector<VertexClass> classify_vertices(Mesh<3>&, double);
 

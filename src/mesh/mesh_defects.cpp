@@ -1,8 +1,8 @@
 #include "mesh/mesh_defects.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <unordered_map>
 
 #include "mesh/ball_and_shell.hpp"
 #include "mesh/simplex.hpp"
@@ -69,57 +69,91 @@ std::string MeshDefects::summary() const {
   return text + ")";
 }
 
+std::vector<Index> NonManifoldPlaces::every_vertex() const {
+  std::vector<Index> every = vertices;
+  for (const std::uint64_t key : edges) {
+    every.push_back(static_cast<Index>(key >> 32));
+    every.push_back(static_cast<Index>(key & 0xffffffffu));
+  }
+  std::sort(every.begin(), every.end());
+  every.erase(std::unique(every.begin(), every.end()), every.end());
+  return every;
+}
+
+template <int D>
+NonManifoldPlaces non_manifold_places(const Mesh<D>& mesh) {
+  NonManifoldPlaces places;
+  const auto vertex_count = static_cast<std::size_t>(mesh.vertex_count());
+  std::vector<Index> incident(vertex_count, 0);
+  std::vector<char> on_boundary(vertex_count, 0);
+  std::vector<std::uint64_t> boundary_face_edges;  // 3D: each boundary face's edges
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    const auto& element = mesh.element(k);
+    for (Index v : element) ++incident[v];
+    for (int face = 0; face <= D; ++face) {
+      if (mesh.neighbor(k, face) != kNoIndex) continue;
+      const auto& local = face_vertices<D>(face);
+      for (int j = 0; j < D; ++j) on_boundary[element[local[j]]] = 1;
+      if constexpr (D == 3)
+        for (int j = 0; j < 3; ++j) boundary_face_edges.push_back(Mesh<D>::edge_key(element[local[j]], element[local[(j + 1) % 3]]));
+    }
+  }
+  // A walk around an inner vertex meets no boundary face, so it goes all around: only boundary
+  // vertices are walked.
+  std::vector<Index> ball;
+  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+    if (!on_boundary[v]) continue;
+    collect_ball(mesh, v, ball);  // reaches one side of a pinch only
+    if (static_cast<Index>(ball.size()) < incident[v]) places.vertices.push_back(v);
+  }
+  std::sort(boundary_face_edges.begin(), boundary_face_edges.end());
+  for (auto run = boundary_face_edges.begin(); run != boundary_face_edges.end();) {
+    const auto end = std::upper_bound(run, boundary_face_edges.end(), *run);
+    if (end - run > 2) places.edges.push_back(*run);
+    run = end;
+  }
+  return places;
+}
+
 template <int D>
 MeshDefects find_mesh_defects(const Mesh<D>& mesh, std::size_t max_examples) {
   DefectFinder finder(max_examples);
   MeshDefects& defects = finder.defects;
   if (!mesh.has_topology()) return defects;
   const auto vertex_count = static_cast<std::size_t>(mesh.vertex_count());
-  std::vector<Index> incident(vertex_count, 0);
   std::vector<bool> on_boundary(vertex_count, false);
   std::vector<double> angle(vertex_count, 0.0);
-  std::unordered_map<std::uint64_t, int> boundary_edge_uses;  // 3D: boundary faces around each edge
   for (Index k = 0; k < mesh.element_count(); ++k) {
     const auto& element = mesh.element(k);
-    for (int i = 0; i <= D; ++i) {
-      const Index v = element[static_cast<std::size_t>(i)];
-      ++incident[v];
-      angle[v] += corner_angle(mesh, k, i);
-    }
+    for (int i = 0; i <= D; ++i) angle[element[static_cast<std::size_t>(i)]] += corner_angle(mesh, k, i);
     for (int face = 0; face <= D; ++face) {
       if (mesh.neighbor(k, face) != kNoIndex) continue;
       if (mesh.element_face_facet(k, face) == kNoIndex)
         finder.add(defects.open_faces, "face " + std::to_string(face + 1) + " of element " + id(k) + " has no boundary facet");
-      const auto& local = face_vertices<D>(face);
-      for (int j = 0; j < D; ++j) on_boundary[element[static_cast<std::size_t>(local[static_cast<std::size_t>(j)])]] = true;
-      if constexpr (D == 3)
-        for (int j = 0; j < 3; ++j) {
-          Index a = element[static_cast<std::size_t>(local[static_cast<std::size_t>(j)])];
-          Index b = element[static_cast<std::size_t>(local[static_cast<std::size_t>((j + 1) % 3)])];
-          if (a > b) std::swap(a, b);
-          ++boundary_edge_uses[(static_cast<std::uint64_t>(a) << 32) | b];
-        }
+      for (int j = 0; j < D; ++j)
+        on_boundary[element[static_cast<std::size_t>(face_vertices<D>(face)[static_cast<std::size_t>(j)])]] = true;
     }
   }
-  std::vector<Index> ball;
+  const NonManifoldPlaces places = non_manifold_places(mesh);
   const double full_angle = D == 2 ? 2 * std::numbers::pi : 4 * std::numbers::pi;
+  auto pinched = places.vertices.begin();
   for (Index v = 0; v < mesh.vertex_count(); ++v) {
-    if (incident[v] == 0) continue;
-    collect_ball(mesh, v, ball);  // reaches one side of a pinch only
-    if (static_cast<Index>(ball.size()) < incident[v])
+    if (pinched != places.vertices.end() && *pinched == v) {
+      ++pinched;
       finder.add(defects.non_manifold_vertices, "vertex " + id(v) + " joins parts that share no face");
-    else if (!on_boundary[v] && angle[v] > kOverlapAngleRatio * full_angle)
+    } else if (!on_boundary[v] && angle[v] > kOverlapAngleRatio * full_angle) {
       finder.add(defects.overlap_vertices, "the elements around inner vertex " + id(v) + " overlap");
+    }
   }
-  for (const auto& [key, uses] : boundary_edge_uses)
-    if (uses > 2)
-      finder.add(defects.non_manifold_edges, "edge (" + id(static_cast<Index>(key >> 32)) + ", " +
-                                                 id(static_cast<Index>(key & 0xffffffffu)) + ") has " + std::to_string(uses) +
-                                                 " boundary faces");
+  for (const std::uint64_t key : places.edges)
+    finder.add(defects.non_manifold_edges, "edge (" + id(static_cast<Index>(key >> 32)) + ", " + id(static_cast<Index>(key & 0xffffffffu)) +
+                                               ") has more than two boundary faces");
   return defects;
 }
 
 template MeshDefects find_mesh_defects(const Mesh<2>&, std::size_t);
 template MeshDefects find_mesh_defects(const Mesh<3>&, std::size_t);
+template NonManifoldPlaces non_manifold_places(const Mesh<2>&);
+template NonManifoldPlaces non_manifold_places(const Mesh<3>&);
 
 }  // namespace hocav

@@ -5,6 +5,7 @@
 // turn more than once). Needs Mesh::build_topology().
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -24,5 +25,21 @@ struct MeshDefects {
 
 template <int D>
 MeshDefects find_mesh_defects(const Mesh<D>& mesh, std::size_t max_examples = 3);
+
+// Where parts of a mesh meet without sharing a face: the vertices that a walk through the faces
+// around them does not take all around (ascending ids: two parts touching at a point, or along an
+// edge), and in 3D the edges with more than two boundary faces around them (ascending
+// Mesh::edge_key values). Every operator that walks a ball or a shell sees one side of such a
+// place. Needs Mesh::build_topology().
+struct NonManifoldPlaces {
+  std::vector<Index> vertices;
+  std::vector<std::uint64_t> edges;
+
+  // The vertices and the edges' ends, ascending, once each.
+  std::vector<Index> every_vertex() const;
+};
+
+template <int D>
+NonManifoldPlaces non_manifold_places(const Mesh<D>& mesh);
 
 }  // namespace hocav

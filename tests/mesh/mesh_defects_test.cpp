@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "cases/structured.hpp"
+#include "pinched_mesh.hpp"
 
 namespace hocav {
 namespace {
@@ -74,6 +75,33 @@ TEST(MeshDefects, NamesAnInnerVertexWhoseElementsTurnTwice) {
   EXPECT_EQ(defects.overlap_vertices, 1);
   EXPECT_EQ(defects.non_manifold_vertices + defects.open_faces, 0);
   EXPECT_NE(defects.summary().find("inner vertex 1 overlap"), std::string::npos) << defects.summary();
+}
+
+TEST(NonManifoldPlaces, AreThePinchedVerticesAndTheEdgesWithMoreThanTwoBoundaryFaces) {
+  Mesh<3> pinched = mesh_test::pinched_tetrahedra();
+  pinched.build_topology();
+  EXPECT_EQ(non_manifold_places(pinched).vertices, std::vector<Index>{0});
+  EXPECT_TRUE(non_manifold_places(pinched).edges.empty());
+
+  Mesh<3> cubes = mesh_test::cubes_sharing_an_edge(2);
+  cubes.build_topology();
+  const NonManifoldPlaces places = non_manifold_places(cubes);
+  ASSERT_EQ(places.vertices.size(), 3u);  // the shared edge's vertices, at z = 0, 0.5, 1
+  for (Index v : places.vertices) {
+    EXPECT_EQ(cubes.vertex(v)[0], 1);
+    EXPECT_EQ(cubes.vertex(v)[1], 1);
+  }
+  ASSERT_EQ(places.edges.size(), 2u);
+  for (const std::uint64_t key : places.edges) {
+    const Index a = static_cast<Index>(key >> 32), b = static_cast<Index>(key & 0xffffffffu);
+    EXPECT_EQ(std::abs(cubes.vertex(a)[2] - cubes.vertex(b)[2]), 0.5);
+  }
+  EXPECT_EQ(places.every_vertex(), places.vertices);
+  EXPECT_EQ(find_mesh_defects(cubes).non_manifold_edges, 2);
+  Mesh<3> cube = generate_cube(2);
+  cube.build_topology();
+  EXPECT_TRUE(non_manifold_places(cube).vertices.empty());
+  EXPECT_TRUE(non_manifold_places(cube).edges.empty());
 }
 
 }  // namespace
