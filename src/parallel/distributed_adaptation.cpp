@@ -180,11 +180,12 @@ struct RootIteration {
   Mesh<D>& mesh;
   AdaptationMetric<D> metric;  // the iteration's
   const BoundaryGeometry<D>* geometry;
+  AdaptationSettings settings;      // the parts' loop's (part_settings)
   std::vector<char> old_interface;  // per vertex of `mesh`: on the interfaces between adapted parts
   DistributedIteration figures;
 
   // The parts' metric is `metric`, figures.metric_fraction of the way (sent to the other ranks).
-  AdaptationRun run(const std::vector<int>& part_of, const AdaptationSettings& settings, std::chrono::steady_clock::time_point start) {
+  AdaptationRun run(const std::vector<int>& part_of, std::chrono::steady_clock::time_point start) {
     const int count = process_count();
     std::vector<MeshPart<D>> parts = split_mesh(mesh, part_of, count + 1);
     const PartInterfaces interfaces = interfaces_between(mesh, part_of, count);
@@ -256,9 +257,8 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   // The input's own metric, where the gradual metric starts (on every rank the same field).
   const MetricField<D> input_metric(mesh, implied_metric_at_vertices(mesh));
   const int steps = gradual_steps(mesh, input_metric, metric);
-  RootIteration<D> root{mesh, metric, geometry, {}, {}};
+  RootIteration<D> root{mesh, metric, geometry, part_settings(settings), {}, {}};
   AdaptationRun run;
-  const AdaptationSettings early = part_settings(settings);
   for (int iteration = 1; iteration <= kDistributedIterations; ++iteration) {
     root.figures = {};
     root.figures.iteration = iteration;
@@ -268,7 +268,7 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
     root.metric = metric.partway_from(input_metric, fraction);
     root.figures.metric_fraction = fraction;
     const std::vector<int> part_of = band ? root.band_partition() : root.whole_partition();
-    const AdaptationRun step = root.run(part_of, early, start);
+    const AdaptationRun step = root.run(part_of, start);
     run.passes.insert(run.passes.end(), step.passes.begin(), step.passes.end());
     if (on_iteration) on_iteration(root.figures);
   }
