@@ -83,6 +83,7 @@ std::vector<Index> NonManifoldPlaces::every_vertex() const {
 template <int D>
 NonManifoldPlaces non_manifold_places(const Mesh<D>& mesh) {
   NonManifoldPlaces places;
+  if (!mesh.has_topology()) return places;
   const auto vertex_count = static_cast<std::size_t>(mesh.vertex_count());
   std::vector<Index> incident(vertex_count, 0);
   std::vector<char> on_boundary(vertex_count, 0);

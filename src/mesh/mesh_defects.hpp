@@ -30,7 +30,7 @@ MeshDefects find_mesh_defects(const Mesh<D>& mesh, std::size_t max_examples = 3)
 // around them does not take all around (ascending ids: two parts touching at a point, or along an
 // edge), and in 3D the edges with more than two boundary faces around them (ascending
 // Mesh::edge_key values). Every operator that walks a ball or a shell sees one side of such a
-// place. Needs Mesh::build_topology().
+// place. Needs Mesh::build_topology() (none are found without it).
 struct NonManifoldPlaces {
   std::vector<Index> vertices;
   std::vector<std::uint64_t> edges;

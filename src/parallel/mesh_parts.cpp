@@ -5,6 +5,7 @@
 #include <unordered_set>
 
 #include "base/error.hpp"
+#include "mesh/mesh_defects.hpp"
 
 namespace hocav {
 namespace {
@@ -74,6 +75,10 @@ struct PartBuilder {
   const std::unordered_map<std::uint64_t, Index>& line_of_edge;
   std::vector<Index>& local;       // per mesh vertex: its id in the part (kNoIndex outside), reset on return
   std::vector<Index>& line_stamp;  // per mesh line: the last part that took it
+  // Per mesh vertex: at a non-manifold place of the mesh (non_manifold_places), where a part may
+  // hold one of the parts of the mesh that meet there and not see the others: required in every
+  // part, as the interfaces are, so that no part splits an edge there or moves the vertex.
+  const std::vector<char>& non_manifold;
 
   MeshPart<D> build(int p, const std::vector<Index>& elements, const std::vector<Index>& facets) {
     MeshPart<D> part;
@@ -109,7 +114,7 @@ struct PartBuilder {
     for (Index v : part.global_ids) {
       local[v] = part.mesh.add_vertex(mesh.vertex(v), mesh.vertex_ref(v));
       if (tags.corner[v]) part.mesh.corners().push_back(local[v]);
-      if (tags.required_vertex[v]) part.mesh.required_vertices().push_back(local[v]);
+      if (tags.required_vertex[v] || non_manifold[v]) part.mesh.required_vertices().push_back(local[v]);
     }
   }
 
@@ -158,7 +163,8 @@ std::vector<MeshPart<D>> split_mesh(const Mesh<D>& mesh, std::span<const int> pa
   const auto line_of_edge = lines_by_edge(mesh.lines());
   std::vector<Index> local(static_cast<std::size_t>(mesh.vertex_count()), kNoIndex);
   std::vector<Index> line_stamp(static_cast<std::size_t>(mesh.line_count()), -1);
-  PartBuilder<D> builder{mesh, part_of, tags, line_of_edge, local, line_stamp};
+  const std::vector<char> non_manifold = flags_of(non_manifold_places(mesh).every_vertex(), mesh.vertex_count());
+  PartBuilder<D> builder{mesh, part_of, tags, line_of_edge, local, line_stamp, non_manifold};
   std::vector<MeshPart<D>> parts;
   for (int p = 0; p < part_count; ++p) parts.push_back(builder.build(p, elements[p], facets[p]));
   return parts;

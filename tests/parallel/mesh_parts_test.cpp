@@ -9,6 +9,7 @@
 #include <cstring>
 #include <set>
 
+#include "../mesh/pinched_mesh.hpp"
 #include "adapt/vertex_classes.hpp"
 #include "cases/structured.hpp"
 #include "mesh/consistency.hpp"
@@ -114,6 +115,25 @@ TEST(MeshParts, PartsAreConsistentWithRequiredInterfaces) {
     EXPECT_GT(interface_facets, 0);
     for (Index v = 0; v < part.mesh.vertex_count(); ++v) EXPECT_EQ(part.mesh.vertex(v), cube.mesh.vertex(part.global_ids[v]));
   }
+}
+
+// Two cubes sharing an edge, a cube in each part: no interface face between them, yet each part
+// holds one side of the shared edge, so its vertices are required in both (a part's loop must
+// neither split the edge on its side nor move them); merged back, they are not required.
+TEST(MeshParts, NonManifoldPlacesAreRequiredInEveryPart) {
+  Mesh<3> mesh = mesh_test::cubes_sharing_an_edge(2);
+  mesh.build_topology();
+  std::vector<int> part_of(static_cast<std::size_t>(mesh.element_count()));
+  for (Index k = 0; k < mesh.element_count(); ++k) part_of[k] = mesh.element_ref(k) == 2 ? 1 : 0;
+  const std::vector<MeshPart<3>> parts = split_mesh(mesh, part_of, 2);
+  for (const MeshPart<3>& part : parts) {
+    EXPECT_EQ(part.mesh.required_vertices().size(), 3u);
+    for (Index v : part.mesh.required_vertices()) {
+      EXPECT_EQ(part.mesh.vertex(v)[0], 1);
+      EXPECT_EQ(part.mesh.vertex(v)[1], 1);
+    }
+  }
+  EXPECT_TRUE(merge_parts(mesh, parts).mesh.required_vertices().empty());
 }
 
 TEST(PartMessage, APartComesBackUnchanged) {
