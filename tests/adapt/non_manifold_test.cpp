@@ -68,5 +68,26 @@ TEST(NonManifoldMesh, TwoCubesSharingAnEdgeStayJoinedAlongItAndValid) {
   EXPECT_EQ(non_manifold_places(mesh).vertices.size(), 3u);
 }
 
+// In 2D (where the shared corner is a corner by its angle as well): the squares still meet there.
+TEST(NonManifoldMesh, TwoSquaresSharingACornerKeepItAndStayValid) {
+  Mesh<2> mesh = mesh_test::squares_sharing_a_corner(2);
+  mesh.build_topology();
+  ASSERT_EQ(non_manifold_places(mesh).vertices.size(), 1u);
+  AnalyticMetricSpec spec;
+  spec.name = "uniform";
+  spec.h = 0.1;
+  const AdaptationMetric<2> metric(spec, {});
+  adapt_to_metric<2>(mesh, metric, nullptr, {});
+  ASSERT_GT(mesh.element_count(), 100);
+  adapt_test::expect_closed_and_consistent(mesh);
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    const auto& e = mesh.element(k);
+    ASSERT_GT(signed_measure(mesh.vertex(e[0]), mesh.vertex(e[1]), mesh.vertex(e[2])), 0) << "element " << k;
+  }
+  const std::vector<Index> pinched = non_manifold_places(mesh).vertices;
+  ASSERT_EQ(pinched.size(), 1u);
+  EXPECT_EQ(mesh.vertex(pinched[0]), (Vec2{{1, 1}}));
+}
+
 }  // namespace
 }  // namespace hocav

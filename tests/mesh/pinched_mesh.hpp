@@ -48,4 +48,30 @@ inline Mesh<3> cubes_sharing_an_edge(int cells) {
   return mesh;
 }
 
+// Two structured unit squares (generate_square(cells), the second's facet refs + 10 and element ref
+// 2) that share only the corner (1, 1), the second shifted by (1, 1). With its facets, without
+// topology.
+inline Mesh<2> squares_sharing_a_corner(int cells) {
+  Mesh<2> mesh = generate_square(cells);
+  const Mesh<2> copy = mesh;
+  Index shared = 0;
+  while (mesh.vertex(shared) != Vec2{{1, 1}}) ++shared;
+  std::vector<Index> moved(static_cast<std::size_t>(copy.vertex_count()));
+  for (Index v = 0; v < copy.vertex_count(); ++v) {
+    const Vec2 p = copy.vertex(v) + Vec2{{1, 1}};
+    moved[v] = p == mesh.vertex(shared) ? shared : mesh.add_vertex(p);
+  }
+  for (Index k = 0; k < copy.element_count(); ++k) {
+    Mesh<2>::Element element = copy.element(k);
+    for (Index& v : element) v = moved[v];
+    mesh.add_element(element, 2);
+  }
+  for (Index f = 0; f < copy.facet_count(); ++f) {
+    Mesh<2>::Facet facet = copy.facet(f);
+    for (Index& v : facet) v = moved[v];
+    mesh.add_facet(facet, copy.facet_ref(f) + 10);
+  }
+  return mesh;
+}
+
 }  // namespace hocav::mesh_test
