@@ -88,6 +88,7 @@ AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits, T
     pass.partly_settled = settling.partly;
   }
   pass.collapses = timed(pass.seconds_collapse, [&] { return collapse_short_edges(am, limits, pool); });
+  pass.collapses += timed(pass.seconds_collapse, [&] { return collapse_thin_vertices(am, limits); });
   pass.swaps = timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, am.start_sweep(), pool); });
   pass.splits = timed(pass.seconds_split, [&] { return split_long_edges(am, limits, pool); });
   pass.splits += timed(pass.seconds_split, [&] { return cut_boundary_only_elements(am, limits); });

@@ -78,6 +78,12 @@ OperationCount cut_boundary_only_elements(AdaptationMesh<D>& mesh, const Adaptat
 template <int D>
 OperationCount collapse_short_edges(AdaptationMesh<D>& mesh, const AdaptationLimits& limits, ThreadPool& pool);
 
+// Collapses the inner vertices that lie a hair above a boundary facet of a poor element (below 1% of
+// the metric's size across it) onto that facet's nearest vertex, when collapse_edge allows it (any
+// new edge length): thin_vertices.cpp.
+template <int D>
+OperationCount collapse_thin_vertices(AdaptationMesh<D>& mesh, const AdaptationLimits& limits);
+
 // Collapses `removed` onto `kept` (an edge) when the classes, the cavity operator and the tests
 // of collapse_short_edges allow it.
 template <int D>

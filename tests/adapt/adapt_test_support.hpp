@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "../metric/metric_test_support.hpp"
+#include "adapt/adaptation_metric.hpp"
 #include "mesh/consistency.hpp"
 #include "surface/analytic_boundary.hpp"
 
@@ -20,6 +21,15 @@ void expect_closed_and_consistent(const Mesh<D>& mesh) {
   ConsistencyOptions options;
   options.require_boundary_facets = true;
   ASSERT_EQ(check_consistency(mesh, options), std::vector<std::string>{});
+}
+
+// The uniform metric of size h.
+template <int D>
+AdaptationMetric<D> uniform_metric(double h) {
+  AnalyticMetricSpec spec;
+  spec.name = "uniform";
+  spec.h = h;
+  return AdaptationMetric<D>(spec, {});
 }
 
 // The unit square's or cube's sides as planes (generate_square's and generate_cube's refs).

@@ -44,14 +44,6 @@ std::map<int, double> boundary_measure_by_ref(const Mesh<D>& mesh) {
 }
 
 template <int D>
-AdaptationMetric<D> uniform_metric(double h) {
-  AnalyticMetricSpec spec;
-  spec.name = "uniform";
-  spec.h = h;
-  return AdaptationMetric<D>(spec, {});
-}
-
-template <int D>
 AdaptationMetric<D> linear_metric(double h_min) {
   AnalyticMetricSpec spec;
   spec.name = "linear";
@@ -146,24 +138,24 @@ TEST(AdaptationLoop, TheFirstPassTriesOnlyTheGivenVertices) {
   Mesh<2> mesh = input;
   AdaptationSettings settings;
   settings.first_pass_vertices.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
-  const AdaptationRun run = adapt_to_metric<2>(mesh, uniform_metric<2>(0.05), nullptr, settings);
+  const AdaptationRun run = adapt_to_metric<2>(mesh, adapt_test::uniform_metric<2>(0.05), nullptr, settings);
   ASSERT_EQ(run.passes.size(), 1u);
   EXPECT_TRUE(run.converged);
   EXPECT_EQ(run.passes[0].splits.done + run.passes[0].collapses.done + run.passes[0].swaps.done + run.passes[0].moves.done, 0);
   EXPECT_EQ(mesh.element_count(), input.element_count());
   ASSERT_EQ(mesh.vertex_count(), input.vertex_count());
   Mesh<2> free = input;
-  adapt_to_metric<2>(free, uniform_metric<2>(0.05), nullptr, {});
+  adapt_to_metric<2>(free, adapt_test::uniform_metric<2>(0.05), nullptr, {});
   EXPECT_GT(free.element_count(), 2 * input.element_count());  // what the limit kept from happening
   settings.first_pass_vertices.pop_back();
-  EXPECT_THROW(adapt_to_metric<2>(mesh, uniform_metric<2>(0.05), nullptr, settings), Error);
+  EXPECT_THROW(adapt_to_metric<2>(mesh, adapt_test::uniform_metric<2>(0.05), nullptr, settings), Error);
 }
 
 // The first pass also tries the poor elements outside the region: the square, unit in its metric
 // but for the vertex at its centre moved 0.09 toward its right neighbour, is mended with no vertex given.
 TEST(AdaptationLoop, TheFirstPassAlsoTriesThePoorElements) {
   Mesh<2> mesh = adapt_test::unit_mesh<2>(10);
-  const AdaptationMetric<2> metric = uniform_metric<2>(0.1);
+  const AdaptationMetric<2> metric = adapt_test::uniform_metric<2>(0.1);
   Index centre = kNoIndex;
   for (Index v = 0; v < mesh.vertex_count(); ++v)
     if (norm(mesh.vertex(v) - Vec<2>{0.5, 0.5}) < 1e-12) centre = v;
@@ -254,7 +246,7 @@ TEST(AdaptationLoop, RequiredEdgesAndTrianglesAreKept) {
 
 TEST(AdaptationLoop, CoarseningAFineMeshInAUniformMetric) {
   Mesh<3> mesh = adapt_test::unit_mesh<3>(8);
-  const AdaptationMetric<3> metric = uniform_metric<3>(0.3);
+  const AdaptationMetric<3> metric = adapt_test::uniform_metric<3>(0.3);
   const Index before = mesh.element_count();
   // Short edges that no collapse within √2 removes go while the loop's window is open
   // (docs/adaptation.md §The loop): 98.8% unit, 87.4% with the window closed from the start.
@@ -277,7 +269,7 @@ TEST(AdaptationLoop, SizeBoundsClampTheMetric) {
 // cut, a collapse pass no short interior edge it could remove, and neither breaks the mesh.
 TEST(AdaptationPasses, SplitAndCollapseEachDoWhatTheySay) {
   Mesh<2> mesh = adapt_test::unit_mesh<2>(6);
-  const AdaptationMetric<2> fine = uniform_metric<2>(0.05);
+  const AdaptationMetric<2> fine = adapt_test::uniform_metric<2>(0.05);
   AdaptationMesh<2> am(mesh, fine, nullptr, 45);
   const AdaptationLimits limits;
   ThreadPool pool(2);
@@ -286,7 +278,7 @@ TEST(AdaptationPasses, SplitAndCollapseEachDoWhatTheySay) {
   EXPECT_GT(splits.done, 0);
   EXPECT_EQ(mesh.vertex_count(), before + splits.done);
   adapt_test::expect_closed_and_consistent(mesh);
-  const AdaptationMetric<2> coarse = uniform_metric<2>(0.5);
+  const AdaptationMetric<2> coarse = adapt_test::uniform_metric<2>(0.5);
   AdaptationMesh<2> coarse_am(mesh, coarse, nullptr, 45);
   const Index vertices = mesh.live_vertex_count();
   const OperationCount collapses = collapse_short_edges(coarse_am, limits, pool);
@@ -306,7 +298,7 @@ TEST(AdaptationPasses, ABoundarySplitGoesAsCloseToTheGeometryAsItsFacetsAllow) {
   Mesh<2> mesh = adapt_test::unit_mesh<2>(4);
   AnalyticBoundary<2> sides = adapt_test::unit_box_sides<2>();
   sides.add(1, AnalyticSurface<2>::plane(Vec2{{0, -0.15}}, Vec2{{0, 1}}));
-  const AdaptationMetric<2> metric = uniform_metric<2>(0.15);
+  const AdaptationMetric<2> metric = adapt_test::uniform_metric<2>(0.15);
   AdaptationMesh<2> am(mesh, metric, &sides, 45);
   AdaptationLimits limits;
   limits.cos_feature_angle = std::cos(std::numbers::pi / 4);
@@ -343,7 +335,7 @@ TEST(AdaptationPasses, KeptQualitiesFollowEveryOperation) {
   expect_kept_qualities_current(am);
   mesh.compact();
   expect_kept_qualities_current(am);
-  const AdaptationMetric<3> coarse = uniform_metric<3>(0.5);
+  const AdaptationMetric<3> coarse = adapt_test::uniform_metric<3>(0.5);
   AdaptationMesh<3> coarse_am(mesh, coarse, nullptr, 45);
   EXPECT_GT(collapse_short_edges(coarse_am, limits, pool).done, 0);
   expect_kept_qualities_current(coarse_am);

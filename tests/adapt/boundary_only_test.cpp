@@ -11,14 +11,6 @@ namespace hocav {
 namespace {
 
 template <int D>
-AdaptationMetric<D> uniform_metric() {
-  AnalyticMetricSpec spec;
-  spec.name = "uniform";
-  spec.h = 1;
-  return AdaptationMetric<D>(spec, {});
-}
-
-template <int D>
 Index poor_boundary_only(const AdaptationMesh<D>& am) {
   Index count = 0;
   for (Index k = 0; k < am.mesh().element_count(); ++k) {
@@ -45,7 +37,7 @@ void expect_cut() {
     const Vec<D> on_diagonal = (dot(offset, along) / dot(along, along)) * along;
     mesh.vertex(v) = start + on_diagonal + 0.1 * (offset - on_diagonal);
   }
-  const AdaptationMetric<D> metric = uniform_metric<D>();
+  const AdaptationMetric<D> metric = adapt_test::uniform_metric<D>(1);
   AdaptationMesh<D> am(mesh, metric, nullptr, 45);
   ASSERT_EQ(poor_boundary_only(am), mesh.element_count());
   const Index before = mesh.vertex_count();
@@ -66,7 +58,7 @@ TEST(BoundaryOnlyElements, PoorOnesAreCutThroughTheirInnerEdge) {
 // Elements near the regular one in their metric are left alone, boundary-only or not.
 TEST(BoundaryOnlyElements, GoodOnesAreLeftAlone) {
   Mesh<3> mesh = adapt_test::unit_mesh<3>(1);
-  const AdaptationMetric<3> metric = uniform_metric<3>();
+  const AdaptationMetric<3> metric = adapt_test::uniform_metric<3>(1);
   AdaptationMesh<3> am(mesh, metric, nullptr, 45);
   EXPECT_EQ(cut_boundary_only_elements(am, AdaptationLimits{}).done, 0);
   EXPECT_EQ(mesh.element_count(), 6);
