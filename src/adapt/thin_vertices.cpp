@@ -9,7 +9,7 @@
 #include <limits>
 
 #include "adapt/adaptation_operations.hpp"
-#include "mesh/measure.hpp"
+#include "adapt/boundary_pieces.hpp"
 
 namespace hocav {
 namespace {
@@ -20,24 +20,17 @@ constexpr double kThinHeight = 1e-2;
 template <int D>
 struct ThinVertex {
   Index vertex;
-  std::array<Index, D> facet;  // the vertices of the boundary facet it is a hair above
+  typename Mesh<D>::Facet facet;  // the boundary facet it is a hair above
 };
 
 // The height of point x above the plane of `facet` in `metric`: its distance to the plane along the
 // unit normal n, times the metric length of n.
 template <int D>
-double height_in_metric(const Mesh<D>& mesh, const std::array<Index, D>& facet, const Vec<D>& x, const SymMat<D>& metric) {
-  Vec<D> normal;
-  if constexpr (D == 2) {
-    const Vec<2> side = mesh.vertex(facet[1]) - mesh.vertex(facet[0]);
-    normal = Vec<2>{{-side[1], side[0]}};
-  } else {
-    normal = cross(mesh.vertex(facet[1]) - mesh.vertex(facet[0]), mesh.vertex(facet[2]) - mesh.vertex(facet[0]));
-  }
-  const double length = norm(normal);
-  if (!(length > 0)) return 0;
-  normal = (1 / length) * normal;
-  return std::abs(dot(normal, x - mesh.vertex(facet[0]))) * std::sqrt(quadratic_form(metric, normal));
+double height_in_metric(const Mesh<D>& mesh, const typename Mesh<D>::Facet& facet, const Vec<D>& x, const SymMat<D>& metric) {
+  const Vec<D> normal = area_normal<D>(mesh, facet);
+  const double area = norm(normal);
+  if (!(area > 0)) return 0;
+  return std::abs(dot(normal, x - mesh.vertex(facet[0]))) / area * std::sqrt(quadratic_form(metric, normal)) / area;
 }
 
 // The thin vertices of the poor elements, each once (the first facet found), by vertex id.
@@ -48,11 +41,10 @@ std::vector<ThinVertex<D>> thin_vertices(const AdaptationMesh<D>& am) {
   for (Index k = 0; k < mesh.element_count(); ++k) {
     if (am.quality(k) >= kThinQuality) continue;
     for (int face = 0; face <= D; ++face) {
-      const Index apex = mesh.element(k)[face];
-      if (mesh.element_face_facet(k, face) == kNoIndex || am.vertex_class(apex) != VertexClass::kInterior) continue;
-      ThinVertex<D> candidate{apex, {}};
-      for (int i = 0; i < D; ++i) candidate.facet[i] = mesh.element(k)[face_vertices<D>(face)[i]];
-      if (height_in_metric<D>(mesh, candidate.facet, mesh.vertex(apex), am.metric(apex)) < kThinHeight) thin.push_back(candidate);
+      const Index apex = mesh.element(k)[face], facet = mesh.element_face_facet(k, face);
+      if (facet == kNoIndex || am.vertex_class(apex) != VertexClass::kInterior) continue;
+      if (height_in_metric<D>(mesh, mesh.facet(facet), mesh.vertex(apex), am.metric(apex)) < kThinHeight)
+        thin.push_back({apex, mesh.facet(facet)});
     }
   }
   std::stable_sort(thin.begin(), thin.end(), [](const ThinVertex<D>& x, const ThinVertex<D>& y) { return x.vertex < y.vertex; });

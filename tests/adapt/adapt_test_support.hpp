@@ -26,8 +26,7 @@ void expect_closed_and_consistent(const Mesh<D>& mesh) {
 // The uniform metric of size h.
 template <int D>
 AdaptationMetric<D> uniform_metric(double h) {
-  AnalyticMetricSpec spec;
-  spec.name = "uniform";
+  AnalyticMetricSpec spec;  // "uniform" unless named
   spec.h = h;
   return AdaptationMetric<D>(spec, {});
 }

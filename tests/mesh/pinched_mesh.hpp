@@ -20,58 +20,34 @@ inline Mesh<3> pinched_tetrahedra() {
   return mesh;
 }
 
-// Two structured unit cubes (generate_cube(cells), the second's facet refs + 10 and element ref 2)
-// that share only the edge x = y = 1 of the first, the second shifted by (1, 1, 0): its cells + 1
-// vertices are non-manifold, its cells edges have four boundary faces. With its facets, without
+// The mesh with a copy of itself shifted by `shift` (the copy's element ref 2 and facet refs + 10),
+// the copy's vertices that land on one of the mesh's merged with it. With its facets, without
 // topology.
-inline Mesh<3> cubes_sharing_an_edge(int cells) {
-  Mesh<3> mesh = generate_cube(cells);
-  const Mesh<3> copy = mesh;
-  std::map<std::array<double, 3>, Index> at;
-  for (Index v = 0; v < mesh.vertex_count(); ++v) at[{mesh.vertex(v)[0], mesh.vertex(v)[1], mesh.vertex(v)[2]}] = v;
+template <int D>
+Mesh<D> with_shifted_copy(Mesh<D> mesh, const Vec<D>& shift) {
+  const Mesh<D> copy = mesh;
+  std::map<std::array<double, D>, Index> at;
+  for (Index v = 0; v < mesh.vertex_count(); ++v) at[mesh.vertex(v).c] = v;
   std::vector<Index> moved(static_cast<std::size_t>(copy.vertex_count()));
   for (Index v = 0; v < copy.vertex_count(); ++v) {
-    const Vec3 p = copy.vertex(v) + Vec3{{1, 1, 0}};
-    const auto found = at.find({p[0], p[1], p[2]});
+    const Vec<D> p = copy.vertex(v) + shift;
+    const auto found = at.find(p.c);
     moved[v] = found != at.end() ? found->second : mesh.add_vertex(p);
   }
-  for (Index k = 0; k < copy.element_count(); ++k) {
-    Mesh<3>::Element element = copy.element(k);
-    for (Index& v : element) v = moved[v];
-    mesh.add_element(element, 2);
-  }
-  for (Index f = 0; f < copy.facet_count(); ++f) {
-    Mesh<3>::Facet facet = copy.facet(f);
-    for (Index& v : facet) v = moved[v];
-    mesh.add_facet(facet, copy.facet_ref(f) + 10);
-  }
+  const auto mapped = [&](auto ids) {
+    for (Index& v : ids) v = moved[v];
+    return ids;
+  };
+  for (Index k = 0; k < copy.element_count(); ++k) mesh.add_element(mapped(copy.element(k)), 2);
+  for (Index f = 0; f < copy.facet_count(); ++f) mesh.add_facet(mapped(copy.facet(f)), copy.facet_ref(f) + 10);
   return mesh;
 }
 
-// Two structured unit squares (generate_square(cells), the second's facet refs + 10 and element ref
-// 2) that share only the corner (1, 1), the second shifted by (1, 1). With its facets, without
-// topology.
-inline Mesh<2> squares_sharing_a_corner(int cells) {
-  Mesh<2> mesh = generate_square(cells);
-  const Mesh<2> copy = mesh;
-  Index shared = 0;
-  while (mesh.vertex(shared) != Vec2{{1, 1}}) ++shared;
-  std::vector<Index> moved(static_cast<std::size_t>(copy.vertex_count()));
-  for (Index v = 0; v < copy.vertex_count(); ++v) {
-    const Vec2 p = copy.vertex(v) + Vec2{{1, 1}};
-    moved[v] = p == mesh.vertex(shared) ? shared : mesh.add_vertex(p);
-  }
-  for (Index k = 0; k < copy.element_count(); ++k) {
-    Mesh<2>::Element element = copy.element(k);
-    for (Index& v : element) v = moved[v];
-    mesh.add_element(element, 2);
-  }
-  for (Index f = 0; f < copy.facet_count(); ++f) {
-    Mesh<2>::Facet facet = copy.facet(f);
-    for (Index& v : facet) v = moved[v];
-    mesh.add_facet(facet, copy.facet_ref(f) + 10);
-  }
-  return mesh;
-}
+// Two structured unit cubes (generate_cube(cells)) that share only the edge x = y = 1 of the first:
+// its cells + 1 vertices are non-manifold, its cells edges have four boundary faces.
+inline Mesh<3> cubes_sharing_an_edge(int cells) { return with_shifted_copy<3>(generate_cube(cells), Vec3{{1, 1, 0}}); }
+
+// Two structured unit squares (generate_square(cells)) that share only the corner (1, 1).
+inline Mesh<2> squares_sharing_a_corner(int cells) { return with_shifted_copy<2>(generate_square(cells), Vec2{{1, 1}}); }
 
 }  // namespace hocav::mesh_test
