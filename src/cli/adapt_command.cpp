@@ -1,11 +1,13 @@
 // hocav adapt IN --metric SOL | --analytic NAME | --hessian FIELD --complexity N [--norm P]
 //                | --surface-sizes HN,HT | --implied -o OUT [--order 2|1] [--hmin H] [--hmax H]
 //                [--hgrad BETA] [--hausd D] [--angle DEG] [--surface p3|cad:FILE|none]
-//                [--curved] [--jacobian-floor J] [--iterations N] [--threads N] [--report R.json] [--vtu V.vtu]
+//                [--curved] [--jacobian-floor J] [--iterations N] [--threads N] [--partition-seed S] [--report R.json]
+//                [--vtu V.vtu]
 // Metric-based adaptation to a unit mesh (split, collapse, swap, smooth; boundary points on the
 // geometry), then, with --order 2, the curving of `hocav curve` in the same metric. Under
 // `mpirun -np N` (N > 1) the P1 loop and the curving are distributed (docs/distributed.md); rank 0
 // reads and writes, and runs the curved passes of --curved.
+#include <cstdint>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -44,6 +46,7 @@ struct AdaptOptions {
   double jacobian_floor = 0.01;
   int iterations = 20;
   int threads = every_core();
+  std::int64_t partition_seed = 0;  // mpirun: the partitioner's random seed (0: its own)
   bool curved = false;
   bool quiet = false;
 };
@@ -159,9 +162,9 @@ void distribute(Mesh<D>& mesh, std::vector<SymMat<D>>& metrics, AdaptationJob<D>
     if (!quiet) print_iteration(figures);
     iterations.push_back(figures);
   };
-  job.loop = [on_iteration](Mesh<D>& adapted, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
-                            const AdaptationSettings& settings) {
-    return adapt_distributed(adapted, metric, geometry, settings, on_iteration);
+  job.loop = [on_iteration, seed = o.partition_seed](Mesh<D>& adapted, const AdaptationMetric<D>& metric,
+                                                     const BoundaryGeometry<D>* geometry, const AdaptationSettings& settings) {
+    return adapt_distributed(adapted, metric, geometry, settings, seed, on_iteration);
   };
   // The adapted mesh to every process, whose curving geometry is made from it.
   job.curve = [quiet = o.quiet](Mesh<D>& adapted, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
@@ -303,6 +306,12 @@ void add_adapt_command(CLI::App& app) {
       ->add_option("--threads", o->threads,
                    "threads of the swaps, smoothing, collapse tests and curving (the output does not depend on it)")
       ->check(CLI::Range(1, 256))
+      ->capture_default_str();
+  command
+      ->add_option("--partition-seed", o->partition_seed,
+                   "mpirun: the partitioner's random seed (0: its own); another seed cuts the mesh elsewhere, to measure how much "
+                   "a distributed run depends on its cuts")
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   command->add_option("--report", o->report, "write the run's figures (passes, lengths, qualities, Table-1 columns) as JSON");
   command->add_option("--vtu", o->vtu, "also write a .vtu for ParaView (metric and min normalized Jacobian)");

@@ -180,7 +180,8 @@ struct RootIteration {
   Mesh<D>& mesh;
   AdaptationMetric<D> metric;  // the iteration's
   const BoundaryGeometry<D>* geometry;
-  AdaptationSettings settings;      // the parts' loop's (part_settings)
+  AdaptationSettings settings;  // the parts' loop's (part_settings)
+  std::int64_t partition_seed;
   std::vector<char> old_interface;  // per vertex of `mesh`: on the interfaces between adapted parts
   DistributedIteration figures;
 
@@ -222,7 +223,7 @@ struct RootIteration {
   // last interfaces heavy, so that those fall inside parts.
   std::vector<int> whole_partition() const {
     const std::vector<double> loads = expected_element_counts(mesh, metric);
-    return partition_graph(element_graph(mesh, loads, old_interface), process_count());
+    return partition_graph(element_graph(mesh, loads, old_interface), process_count(), partition_seed);
   }
 
   // The elements within kInterfaceBandRings rings of the last interfaces in the processes' parts, of
@@ -233,7 +234,7 @@ struct RootIteration {
     const WeightedGraph graph = member_graph(mesh, elements_near(mesh, old_interface, kInterfaceBandRings),
                                              expected_element_counts(mesh, metric), band);
     if (band.empty()) return part_of;
-    const std::vector<int> part_of_band = partition_graph(graph, process_count());
+    const std::vector<int> part_of_band = partition_graph(graph, process_count(), partition_seed);
     for (std::size_t i = 0; i < band.size(); ++i) part_of[band[i]] = part_of_band[i];
     return part_of;
   }
@@ -250,14 +251,15 @@ struct RootIteration {
 
 template <int D>
 AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
-                                const AdaptationSettings& settings, const std::function<void(const DistributedIteration&)>& on_iteration) {
+                                const AdaptationSettings& settings, std::int64_t partition_seed,
+                                const std::function<void(const DistributedIteration&)>& on_iteration) {
   // The whole mesh's corners and feature lines first, as the serial loop finds them: a part sees
   // only its share of the boundary (docs/distributed.md §Parts).
   classify_vertices(mesh, settings.feature_angle_degrees);
   // The input's own metric, where the gradual metric starts (on every rank the same field).
   const MetricField<D> input_metric(mesh, implied_metric_at_vertices(mesh));
   const int steps = gradual_steps(mesh, input_metric, metric);
-  RootIteration<D> root{mesh, metric, geometry, part_settings(settings), {}, {}};
+  RootIteration<D> root{mesh, metric, geometry, part_settings(settings), partition_seed, {}, {}};
   AdaptationRun run;
   for (int iteration = 1; iteration <= kDistributedIterations; ++iteration) {
     root.figures = {};
@@ -302,9 +304,9 @@ void serve_distributed_adaptation(const Mesh<D>& input, const AdaptationMetric<D
 }
 
 template AdaptationRun adapt_distributed(Mesh<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*, const AdaptationSettings&,
-                                         const std::function<void(const DistributedIteration&)>&);
+                                         std::int64_t, const std::function<void(const DistributedIteration&)>&);
 template AdaptationRun adapt_distributed(Mesh<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*, const AdaptationSettings&,
-                                         const std::function<void(const DistributedIteration&)>&);
+                                         std::int64_t, const std::function<void(const DistributedIteration&)>&);
 template void serve_distributed_adaptation(const Mesh<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*,
                                            const AdaptationSettings&);
 template void serve_distributed_adaptation(const Mesh<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*,

@@ -24,10 +24,12 @@ constexpr int kInterfaceBandRings = 2;
 // serve_distributed_adaptation), the same interface as adapt_to_metric. `mesh` is the metric's back
 // mesh, if it has one: the iterations' gradual metric starts from its own (docs/distributed.md). The mesh is compact and has
 // its topology on return; the run's passes are each iteration's, summed over the parts, then those
-// of the last serial run from the last interfaces (docs/distributed.md).
+// of the last serial run from the last interfaces (docs/distributed.md). `partition_seed`: the
+// partitioner's (element_partition.hpp; 0: its own).
 template <int D>
 AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
-                                const AdaptationSettings& settings, const std::function<void(const DistributedIteration&)>& on_iteration);
+                                const AdaptationSettings& settings, std::int64_t partition_seed,
+                                const std::function<void(const DistributedIteration&)>& on_iteration);
 
 // On the other ranks: adapts the parts rank 0 sends until it says stop. `input`: rank 0's mesh as
 // adapt_distributed received it, where the iterations' gradual metric starts.

@@ -37,7 +37,9 @@ template <int D>
 std::vector<char> elements_near(const Mesh<D>& mesh, std::vector<char> marked, int rings);
 
 // Scotch's partition of `graph` into `part_count` parts of balanced vertex weight and small cut
-// weight; the part of each vertex. The same graph gives the same parts.
-std::vector<int> partition_graph(const WeightedGraph& graph, int part_count);
+// weight; the part of each vertex. The same graph and seed give the same parts; seed 0 is Scotch's
+// own fixed seed, and another seed makes another partition as good (bench/distributed_draws.py
+// measures a distributed run over several).
+std::vector<int> partition_graph(const WeightedGraph& graph, int part_count, std::int64_t seed = 0);
 
 }  // namespace hocav

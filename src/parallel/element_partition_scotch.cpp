@@ -29,13 +29,15 @@ struct ScotchGraph {
   ~ScotchGraph() { SCOTCH_graphExit(&graph); }
 };
 
-// A context that makes Scotch deterministic (its threads otherwise race) with a fixed random seed.
+// A context that makes Scotch deterministic (its threads otherwise race) with a fixed random seed
+// (`seed`, or Scotch's own for 0).
 struct ScotchContext {
   SCOTCH_Context context;
-  ScotchContext() {
+  explicit ScotchContext(std::int64_t seed) {
     check(SCOTCH_contextInit(&context), "SCOTCH_contextInit");
     check(SCOTCH_contextOptionSetNum(&context, SCOTCH_OPTIONNUMDETERMINISTIC, 1), "SCOTCH_contextOptionSetNum");
     check(SCOTCH_contextOptionSetNum(&context, SCOTCH_OPTIONNUMRANDOMFIXEDSEED, 1), "SCOTCH_contextOptionSetNum");
+    if (seed != 0) SCOTCH_contextRandomSeed(&context, static_cast<SCOTCH_Num>(seed));
     SCOTCH_contextRandomReset(&context);
   }
   ~ScotchContext() { SCOTCH_contextExit(&context); }
@@ -49,11 +51,11 @@ struct ScotchStrategy {
 
 }  // namespace
 
-std::vector<int> partition_graph(const WeightedGraph& graph, int part_count) {
+std::vector<int> partition_graph(const WeightedGraph& graph, int part_count, std::int64_t seed) {
   const auto vertex_count = static_cast<SCOTCH_Num>(graph.vertex_weights.size());
   std::vector<int> parts(graph.vertex_weights.size(), 0);
   if (part_count <= 1 || vertex_count == 0) return parts;
-  ScotchContext context;  // the same graph, the same parts
+  ScotchContext context(seed);  // the same graph and seed, the same parts
   ScotchGraph scotch, bound;
   // Scotch reads the arrays without changing them (its interface is not const).
   auto* offsets = const_cast<SCOTCH_Num*>(reinterpret_cast<const SCOTCH_Num*>(graph.offsets.data()));

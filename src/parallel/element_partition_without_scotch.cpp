@@ -4,7 +4,7 @@
 
 namespace hocav {
 
-std::vector<int> partition_graph(const WeightedGraph& graph, int part_count) {
+std::vector<int> partition_graph(const WeightedGraph& graph, int part_count, std::int64_t /*seed*/) {
   if (part_count > 1) throw Error("hocav was built without Scotch (docs/distributed.md): it makes one part");
   return std::vector<int>(graph.vertex_weights.size(), 0);
 }
