@@ -54,21 +54,21 @@ def figures(folder, report):
     }
 
 
-def adapt_args(case, folder):
+def adapt_args(args, case, folder):
     spec = CASES[case]
     if spec["source"]:
         return spec["source"]
     metric = f"{case}.solb"
     if not os.path.exists(os.path.join(folder, metric)):
-        run([ARGS.hocav, "metric", "cube.meshb", *spec["metric_args"], "-o", metric], folder)
+        run([args.hocav, "metric", "cube.meshb", *spec["metric_args"], "-o", metric], folder)
     return ["--metric", metric]
 
 
-def adapt(case, folder, tag, processes=None, seed=0):
-    command = [ARGS.hocav, "adapt", "cube.meshb", *adapt_args(case, folder), "-o", f"{tag}.meshb", "--order", "1",
-               "--threads", str(ARGS.threads), "--report", f"{tag}.json", "-q"]
+def adapt(args, case, folder, tag, processes=None, seed=0):
+    command = [args.hocav, "adapt", "cube.meshb", *adapt_args(args, case, folder), "-o", f"{tag}.meshb", "--order", "1",
+               "--threads", str(args.threads), "--report", f"{tag}.json", "-q"]
     if processes:
-        command = [ARGS.mpirun, "--oversubscribe", "-np", str(processes), *command, "--partition-seed", str(seed)]
+        command = [args.mpirun, "--oversubscribe", "-np", str(processes), *command, "--partition-seed", str(seed)]
     run(command, folder)
     return figures(folder, f"{tag}.json")
 
@@ -88,7 +88,6 @@ def summary(case, processes, serial, draws):
 
 
 def main():
-    global ARGS
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--hocav", default="build/release/hocav")
     parser.add_argument("--mpirun", default=os.environ.get("HOCAV_MPIEXEC") or "mpirun")
@@ -97,28 +96,28 @@ def main():
     parser.add_argument("--seeds", default="0,2,4,7,12345", help="partitioner seeds (some seeds give the same cuts)")
     parser.add_argument("--threads", type=int, default=1)
     parser.add_argument("--out", help="working folder (a new temporary one by default)")
-    ARGS = parser.parse_args()
-    ARGS.hocav = os.path.abspath(ARGS.hocav)
-    if shutil.which(ARGS.mpirun) is None:
-        print(f"skipping: no {ARGS.mpirun}")
+    args = parser.parse_args()
+    args.hocav = os.path.abspath(args.hocav)
+    if shutil.which(args.mpirun) is None:
+        print(f"skipping: no {args.mpirun}")
         return
     os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT", "1")
     os.environ.setdefault("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1")
-    folder = ARGS.out or tempfile.mkdtemp(prefix="hocav-draws-")
+    folder = args.out or tempfile.mkdtemp(prefix="hocav-draws-")
     os.makedirs(folder, exist_ok=True)
-    run([ARGS.hocav, "generate", "cube", "--h", "0.1", "-o", "cube.meshb"], folder)
+    run([args.hocav, "generate", "cube", "--h", "0.1", "-o", "cube.meshb"], folder)
     rows = []
-    for case in ARGS.cases.split(","):
-        serial = adapt(case, folder, f"{case}-serial")
+    for case in args.cases.split(","):
+        serial = adapt(args, case, folder, f"{case}-serial")
         print(f"{case}, serial: unit {serial['unit']:.2%}, mean quality {serial['mean']:.3f}, min {serial['min']:.3f}", flush=True)
-        for processes in map(int, ARGS.processes.split(",")):
-            draws = [adapt(case, folder, f"{case}-{processes}-{seed}", processes, int(seed)) for seed in ARGS.seeds.split(",")]
+        for processes in map(int, args.processes.split(",")):
+            draws = [adapt(args, case, folder, f"{case}-{processes}-{seed}", processes, int(seed)) for seed in args.seeds.split(",")]
             if not all(d["distributed"] for d in draws):
                 print("skipping: hocav was built without MPI (its reports have no distributed iterations)")
                 return
             rows.append(summary(case, processes, serial, draws))
             print(rows[-1], flush=True)
-    print("\n| case | processes | unit share gap, median / worst | mean quality gap, median / worst | min quality, median / "
+    print("\n| case | processes | unit share gap, median / farthest | mean quality gap, median / farthest | min quality, median / "
           "lowest | below 0.1, largest | seeds within 1% |")
     print("|---|---|---|---|---|---|---|")
     print("\n".join(rows))
