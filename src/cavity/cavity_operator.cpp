@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "base/error.hpp"
+#include "mesh/ball_and_shell.hpp"
 #include "mesh/measure.hpp"
 
 namespace hocav {
@@ -160,7 +161,32 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
     }
 
   if (mesh.has_edges() && mesh.edge_count() > 0) return plan_edges(mesh);
-  return CavityStatus::kAccepted;
+  // P1: the measure test is the only geometric one, and rounding defeats it on near-flat elements
+  // (P2 certifies its elements above the Jacobian floor, far above rounding).
+  return boundary_is_a_sphere() && !star_folds_over_mesh(mesh) ? CavityStatus::kAccepted : CavityStatus::kNotStarShaped;
+}
+
+template <int D>
+bool CavityOperator<D>::star_folds_over_mesh(const Mesh<D>& mesh) {
+  if (mesh.vertex_element(vertex_) == kNoIndex) return false;  // a new vertex: every edge of its star is new
+  // The star's edges from the vertex that no boundary face of the cavity holds are new.
+  kept_neighbors_.clear();
+  for (const BoundaryFace& face : boundary_faces_)
+    if (std::find(face.vertices.begin(), face.vertices.end(), vertex_) != face.vertices.end())
+      kept_neighbors_.insert(kept_neighbors_.end(), face.vertices.begin(), face.vertices.end());
+  new_neighbors_.clear();
+  const auto listed = [](const std::vector<Index>& list, Index v) { return std::find(list.begin(), list.end(), v) != list.end(); };
+  for (const Element& element : new_elements_)
+    for (int i = 1; i <= D; ++i)
+      if (!listed(kept_neighbors_, element[i]) && !listed(new_neighbors_, element[i])) new_neighbors_.push_back(element[i]);
+  if (new_neighbors_.empty()) return false;
+  // Any of them joined to the vertex through an element outside the cavity?
+  collect_ball(mesh, vertex_, ball_);
+  for (Index k : ball_)
+    if (!in_cavity(k))
+      for (Index v : mesh.element(k))
+        if (listed(new_neighbors_, v)) return true;
+  return false;
 }
 
 template <int D>
@@ -190,6 +216,29 @@ CavityStatus CavityOperator<D>::collect_boundary(const Mesh<D>& mesh) {
     }
   }
   return removed_found == removed_facets_.size() ? CavityStatus::kAccepted : CavityStatus::kCrossesBoundary;
+}
+
+template <int D>
+bool CavityOperator<D>::boundary_is_a_sphere() {
+  // The distinct vertices of the faces, counted in an open-addressing table (a sort cost more).
+  std::size_t size = 16;
+  while (size < 2 * D * boundary_faces_.size()) size *= 2;
+  sphere_vertices_.assign(size, kNoIndex);
+  std::size_t vertices = 0;
+  for (const BoundaryFace& face : boundary_faces_)
+    for (Index v : face.vertices) {
+      std::size_t slot = (static_cast<std::uint64_t>(v) * 0x9E3779B97F4A7C15ull) >> 40 & (size - 1);
+      while (sphere_vertices_[slot] != kNoIndex && sphere_vertices_[slot] != v) slot = (slot + 1) & (size - 1);
+      if (sphere_vertices_[slot] == kNoIndex) {
+        sphere_vertices_[slot] = v;
+        ++vertices;
+      }
+    }
+  const std::size_t faces = boundary_faces_.size();
+  if constexpr (D == 2)
+    return vertices == faces;  // a cycle: as many vertices as sides
+  else
+    return 2 * vertices == faces + 4;  // V − E + F = 2 with E = 3F / 2
 }
 
 template <int D>

@@ -124,6 +124,11 @@ class CavityOperator {
 
   bool in_cavity(Index k) const;
   CavityStatus collect_boundary(const Mesh<D>& mesh);
+  // P1 (see plan_edges for P2): whether the boundary faces bound a ball, one sphere (2D: one cycle)
+  // by Euler's formula. A cavity whose boundary touches itself at a vertex would be starred into
+  // two fans around one new edge, pinching that vertex; only rounding on near-flat elements lets
+  // such a star pass the measure test.
+  bool boundary_is_a_sphere();
   // Boundary operations: the new facets and lines, starred from the vertex.
   struct SurfaceSide {
     Index from, to;  // 3D: a directed edge of a removed facet; 2D: its vertex as `from` (tail) or `to` (head)
@@ -138,6 +143,11 @@ class CavityOperator {
   CavityStatus match_ridges();
   bool pair_ridge_faces();  // fills links_; false when a ridge has not exactly two faces
   CavityStatus plan_edges(const Mesh<D>& mesh);
+  // P1 (no edge table, whose look-up plan_edges makes): whether a new edge of the star already joins
+  // its ends through an element outside the cavity. Exact orientations would forbid it, but
+  // near-flat elements let rounding pass a star that folds over the mesh, and a face would then
+  // have three elements.
+  bool star_folds_over_mesh(const Mesh<D>& mesh);
   // Position of the edge with this key in boundary_edge_keys_, or its size when it is not there.
   std::size_t boundary_edge_slot(std::uint64_t key) const;
   // new_element_edges_ holds edge ids (≥ 0) and, for new inner edge i, whose id only the commit
@@ -173,6 +183,8 @@ class CavityOperator {
   std::vector<Index> new_element_ids_;  // per new element: its id once committed
   std::vector<Point> start_nodes_;
   std::vector<Index> scratch_;
+  std::vector<Index> ball_, kept_neighbors_, new_neighbors_;  // star_folds_over_mesh's
+  std::vector<Index> sphere_vertices_;                        // boundary_is_a_sphere's
 };
 
 extern template class CavityOperator<2>;

@@ -148,5 +148,68 @@ TEST(CavityOperator, BoundaryEdgesOfAPlanAreFoundByTheirVertices) {
   for (const auto& [a, b] : op.new_inner_edges()) EXPECT_EQ(op.boundary_edge(a, b), kNoIndex);
 }
 
+// Two elements of the mesh that share exactly one vertex.
+template <int D>
+std::vector<Index> elements_touching_at_one_vertex(const Mesh<D>& mesh) {
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (Index j = k + 1; j < mesh.element_count(); ++j) {
+      int shared = 0;
+      for (Index v : mesh.element(k)) shared += local_vertex(mesh, j, v) >= 0;
+      if (shared == 1) return {k, j};
+    }
+  return {};
+}
+
+// A cavity whose boundary touches itself at a vertex is no ball: its star would wrap two fans around
+// one new edge. With the measure test on, only rounding on near-flat elements lets such a star
+// through; with it off, the topology alone must refuse it.
+template <int D>
+void expect_pinched_cavity_refused(const Mesh<D>& structured) {
+  Mesh<D> mesh = structured;
+  const std::vector<Index> cavity = elements_touching_at_one_vertex(mesh);
+  ASSERT_EQ(cavity.size(), 2u);
+  Vec<D> centre{};
+  for (Index k : cavity)
+    for (Index v : mesh.element(k)) centre = centre + (1.0 / (2 * (D + 1))) * mesh.vertex(v);
+  const Index vertex = mesh.add_vertex(centre);
+  CavityOptions options;
+  options.check_straight_measure = false;
+  CavityOperator<D> op;
+  EXPECT_EQ(op.plan(mesh, cavity, vertex, options), CavityStatus::kNotStarShaped);
+  // Each element alone is a ball.
+  EXPECT_EQ(op.plan(mesh, std::span<const Index>(cavity).first(1), vertex, options), CavityStatus::kAccepted);
+}
+
+TEST(CavityOperator, ACavityPinchedAtAVertexIsRefused2D) { expect_pinched_cavity_refused(generate_square(3)); }
+TEST(CavityOperator, ACavityPinchedAtAVertexIsRefused3D) { expect_pinched_cavity_refused(generate_cube(3)); }
+
+// A star whose new edge already joins its ends through an element outside the cavity folds over
+// the mesh (a face would get three elements). The P2 operator finds such an edge in its edge table;
+// a P1 mesh has none, and is searched around the vertex.
+template <int D>
+void expect_folding_star_refused(const Mesh<D>& structured) {
+  Mesh<D> mesh = structured;
+  // An element, and a vertex outside it joined by an edge to one of its vertices.
+  const Index k = 0;
+  std::vector<Index> ball;
+  collect_ball(mesh, mesh.element(k)[0], ball);
+  Index vertex = kNoIndex;
+  for (Index j : ball)
+    for (Index v : mesh.element(j))
+      if (local_vertex(mesh, k, v) < 0) vertex = v;
+  ASSERT_NE(vertex, kNoIndex);
+  CavityOptions options;
+  options.check_straight_measure = false;
+  CavityOperator<D> op;
+  const Index cavity[1] = {k};
+  EXPECT_EQ(op.plan(mesh, cavity, vertex, options), CavityStatus::kNotStarShaped);
+  // A new vertex at the same place has no edges yet: its star folds over nothing.
+  const Index fresh = mesh.add_vertex(mesh.vertex(vertex));
+  EXPECT_EQ(op.plan(mesh, cavity, fresh, options), CavityStatus::kAccepted);
+}
+
+TEST(CavityOperator, AStarThatFoldsOverTheMeshIsRefused2D) { expect_folding_star_refused(generate_square(3)); }
+TEST(CavityOperator, AStarThatFoldsOverTheMeshIsRefused3D) { expect_folding_star_refused(generate_cube(3)); }
+
 }  // namespace
 }  // namespace hocav
