@@ -96,15 +96,27 @@ std::array<Refusal, 2> pretest_both_ways(const AdaptationMesh<D>& am, const Edge
   return {forward, collapse_pretest(am, s.ball, c.b, c.a, limits, s)};
 }
 
-// Whether a facet the plan creates is already a facet around `kept`: the surface link condition.
-// When the ends of a surface edge share a neighbour on the surface besides the far vertices of the
-// edge's two facets, the collapse folds the surface onto itself and leaves two facets on one face,
-// each the boundary of elements on both sides of it (a boundary-layer shell's inner wall did).
+// Whether the collapse folds the surface: the link condition on the surface. The ends of a surface
+// edge may share no surface neighbour besides the far vertices of the edge's facets (else the
+// collapse leaves an edge with four facets, pinching the domain there), and no facet the plan
+// creates may be one around `kept` already (two facets on one face, each the boundary of elements
+// on both sides of it: a boundary-layer shell's inner wall did).
 template <int D>
-bool facet_exists_already(const Mesh<D>& mesh, const CavityOperator<D>& plan, Index kept, CollapseScratch<D>& s) {
+bool folds_surface(const Mesh<D>& mesh, const CavityOperator<D>& plan, Index removed, Index kept, CollapseScratch<D>& s) {
   collect_ball(mesh, kept, s.ball);
   const Index center[1] = {kept};
   facets_through(mesh, std::span<const Index>(s.ball), center, s.kept_facets);
+  const auto holds = [&](const auto& facet, Index v) { return std::find(facet.begin(), facet.end(), v) != facet.end(); };
+  const auto kept_neighbor = [&](Index v) {
+    return std::any_of(s.kept_facets.begin(), s.kept_facets.end(), [&](Index f) { return holds(mesh.facet(f), v); });
+  };
+  for (Index f : s.facets) {
+    if (holds(mesh.facet(f), kept)) continue;  // its far vertex is the edge's: shared, as it should be
+    for (Index v : mesh.facet(f))
+      if (v != removed && kept_neighbor(v) &&
+          std::none_of(s.facets.begin(), s.facets.end(), [&](Index g) { return holds(mesh.facet(g), kept) && holds(mesh.facet(g), v); }))
+        return true;
+  }
   const auto sorted = [](auto vertices) {
     std::sort(vertices.begin(), vertices.end());
     return vertices;
@@ -128,7 +140,7 @@ Refusal collapse_edge(AdaptationMesh<D>& am, Index removed, Index kept, const Ad
   options.removed_facets = s.facets;
   options.removed_lines = s.lines;
   if (work.cavity_operator.plan(mesh, work.cavity, kept, options) != CavityStatus::kAccepted) return Refusal::kTopology;
-  if (!s.facets.empty() && facet_exists_already(mesh, work.cavity_operator, kept, s)) return Refusal::kTopology;
+  if (!s.facets.empty() && folds_surface(mesh, work.cavity_operator, removed, kept, s)) return Refusal::kTopology;
   if (!s.facets.empty() && !boundary_change_acceptable(am, work.cavity_operator, limits.cos_feature_angle, limits.hausd))
     return Refusal::kGeometry;
   am.commit(work.cavity_operator);

@@ -5,8 +5,11 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <initializer_list>
+#include <map>
 #include <random>
 
+#include "adapt/adaptation_operations.hpp"
 #include "adapt/boundary_pieces.hpp"
 #include "adapt_test_support.hpp"
 #include "base/error.hpp"
@@ -154,6 +157,90 @@ TEST(BoundaryCavity, ABoundaryCollapseWithoutItsFacetsIsRefused) {
   }
   CavityWorkspace<3> work;
   EXPECT_NE(collapse_edge(mesh, work, center, neighbor, {}), CavityStatus::kAccepted);
+  adapt_test::expect_closed_and_consistent(mesh);
+}
+
+// The surface link condition: four tetrahedra, (u, w, x, p) and (u, w, x, q) on either side of the
+// inner triangle (u, w, x) and one more on each of their faces (u, x, p) and (u, x, q), out to c and
+// d. The triangle's three edges are on the boundary, so u and w share the surface neighbour x
+// though (u, w, x) is no facet: collapsing u onto w would flatten the triangle onto the edge (w, x)
+// and leave that edge four facets (the domain pinched along it), though the tetrahedra it makes are
+// positive and none of the facets it makes is one already.
+TEST(BoundaryCavity, ACollapseThatPinchesTheSurfaceIsRefused3D) {
+  constexpr Index u = 0, w = 1, x = 2, p = 3, q = 4, c = 5, d = 6;
+  Mesh<3> mesh;
+  for (const Vec3& point : {Vec3{{0, 0, 0}}, Vec3{{0.5, 0.9, 0}}, Vec3{{1, 0, 0}}, Vec3{{0.5, 0.3, -0.8}}, Vec3{{0.5, 0.3, 0.8}},
+                            Vec3{{0.5, -0.8, -0.6}}, Vec3{{0.5, -0.8, 0.6}}})
+    mesh.add_vertex(point);
+  const auto positive = [&](const Mesh<3>::Element& e) {
+    return signed_measure(mesh.vertex(e[0]), mesh.vertex(e[1]), mesh.vertex(e[2]), mesh.vertex(e[3])) > 0;
+  };
+  for (const Mesh<3>::Element& element : {Mesh<3>::Element{u, w, x, p}, {w, u, x, q}, {u, x, c, p}, {x, u, d, q}}) {
+    ASSERT_TRUE(positive(element));
+    mesh.add_element(element, 1);
+  }
+  // A facet, oriented outward, on every face of one element only.
+  const auto face = [&](Index k, int f) {
+    Mesh<3>::Facet vertices;
+    for (int i = 0; i < 3; ++i) vertices[i] = mesh.element(k)[face_vertices<3>(f)[i]];
+    return vertices;
+  };
+  const auto sorted = [](Mesh<3>::Facet vertices) {
+    std::sort(vertices.begin(), vertices.end());
+    return vertices;
+  };
+  std::map<Mesh<3>::Facet, int> elements_on;
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (int f = 0; f < 4; ++f) ++elements_on[sorted(face(k, f))];
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (int f = 0; f < 4; ++f)
+      if (elements_on[sorted(face(k, f))] == 1) mesh.add_facet(face(k, f), 1);
+  mesh.build_topology();
+  ASSERT_EQ(mesh.facet_count(), 10);
+
+  // Whether a facet holds all these vertices.
+  const auto on_a_facet = [&](std::initializer_list<Index> vertices) {
+    return std::any_of(mesh.facets().begin(), mesh.facets().end(), [&](const Mesh<3>::Facet& facet) {
+      return std::all_of(vertices.begin(), vertices.end(),
+                         [&](Index v) { return std::find(facet.begin(), facet.end(), v) != facet.end(); });
+    });
+  };
+  ASSERT_TRUE(on_a_facet({u, w}));
+  ASSERT_TRUE(on_a_facet({u, x}));
+  ASSERT_TRUE(on_a_facet({w, x}));
+  ASSERT_FALSE(on_a_facet({u, w, x}));
+  // What the collapse makes from u's elements and facets without w (u moved onto w): positive
+  // tetrahedra, and facets not there already.
+  const auto moves = [&](const auto& vertices) {
+    return std::find(vertices.begin(), vertices.end(), u) != vertices.end() &&
+           std::find(vertices.begin(), vertices.end(), w) == vertices.end();
+  };
+  const auto moved = [&](auto vertices) {
+    std::replace(vertices.begin(), vertices.end(), u, w);
+    return vertices;
+  };
+  for (const Mesh<3>::Element& element : mesh.elements()) {
+    if (!moves(element)) continue;
+    ASSERT_TRUE(positive(moved(element)));
+  }
+  for (const Mesh<3>::Facet& facet : mesh.facets()) {
+    if (!moves(facet)) continue;
+    const Mesh<3>::Facet made = moved(facet);
+    ASSERT_FALSE(on_a_facet({made[0], made[1], made[2]}));
+  }
+
+  const AdaptationMetric<3> metric = adapt_test::uniform_metric<3>(1);
+  AdaptationMesh<3> am(mesh, metric, nullptr, 180);  // one facet ref, a feature angle of 180°: no ridges
+  ASSERT_EQ(am.vertex_class(u), VertexClass::kSurface);
+  ASSERT_EQ(am.vertex_class(w), VertexClass::kSurface);
+  AdaptationLimits limits;  // no length or turn refuses it first
+  limits.collapse_new_length = 1e9;
+  limits.cos_feature_angle = -1;
+  CollapseScratch<3> scratch;
+  const Refusal refusal = collapse_edge(am, u, w, limits, scratch);
+  EXPECT_EQ(refusal, Refusal::kTopology) << to_string(refusal);
+  EXPECT_FALSE(mesh.vertex_removed(u));
+  EXPECT_EQ(mesh.element_count(), 4);
   adapt_test::expect_closed_and_consistent(mesh);
 }
 
