@@ -220,21 +220,10 @@ CavityStatus CavityOperator<D>::collect_boundary(const Mesh<D>& mesh) {
 
 template <int D>
 bool CavityOperator<D>::boundary_is_a_sphere() {
-  // The distinct vertices of the faces, counted in an open-addressing table (a sort cost more).
-  std::size_t size = 16;
-  while (size < 2 * D * boundary_faces_.size()) size *= 2;
-  sphere_vertices_.assign(size, kNoIndex);
-  std::size_t vertices = 0;
+  sphere_vertices_.clear();  // the faces' distinct vertices (a sort of them cost more)
   for (const BoundaryFace& face : boundary_faces_)
-    for (Index v : face.vertices) {
-      std::size_t slot = (static_cast<std::uint64_t>(v) * 0x9E3779B97F4A7C15ull) >> 40 & (size - 1);
-      while (sphere_vertices_[slot] != kNoIndex && sphere_vertices_[slot] != v) slot = (slot + 1) & (size - 1);
-      if (sphere_vertices_[slot] == kNoIndex) {
-        sphere_vertices_[slot] = v;
-        ++vertices;
-      }
-    }
-  const std::size_t faces = boundary_faces_.size();
+    for (Index v : face.vertices) sphere_vertices_.insert(static_cast<std::uint64_t>(v), v);
+  const std::size_t vertices = sphere_vertices_.size(), faces = boundary_faces_.size();
   if constexpr (D == 2)
     return vertices == faces;  // a cycle: as many vertices as sides
   else

@@ -11,6 +11,7 @@
 #include <span>
 #include <vector>
 
+#include "base/index_hash_map.hpp"
 #include "mesh/mesh.hpp"
 
 namespace hocav {
@@ -184,7 +185,7 @@ class CavityOperator {
   std::vector<Point> start_nodes_;
   std::vector<Index> scratch_;
   std::vector<Index> ball_, kept_neighbors_, new_neighbors_;  // star_folds_over_mesh's
-  std::vector<Index> sphere_vertices_;                        // boundary_is_a_sphere's
+  IndexHashMap sphere_vertices_;                              // boundary_is_a_sphere's
 };
 
 extern template class CavityOperator<2>;

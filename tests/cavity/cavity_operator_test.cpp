@@ -180,6 +180,8 @@ void expect_pinched_cavity_refused(const Mesh<D>& structured) {
   EXPECT_EQ(op.plan(mesh, std::span<const Index>(cavity).first(1), vertex, options), CavityStatus::kAccepted);
 }
 
+// (In 2D the pairing of the new faces through the vertex refuses it too: the pinched vertex is the
+// key of four of them.)
 TEST(CavityOperator, ACavityPinchedAtAVertexIsRefused2D) { expect_pinched_cavity_refused(generate_square(3)); }
 TEST(CavityOperator, ACavityPinchedAtAVertexIsRefused3D) { expect_pinched_cavity_refused(generate_cube(3)); }
 
