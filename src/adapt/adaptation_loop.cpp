@@ -58,7 +58,7 @@ bool ping_pong(const std::vector<AdaptationPass>& passes) {
 
 bool stalled(const std::vector<AdaptationPass>& passes) {
   if (passes.size() < 2) return false;
-  if (ping_pong(passes)) return true;
+  if (!passes.back().coarse_phase && ping_pong(passes)) return true;
   Index busiest = 0;
   for (std::size_t i = 0; i + 1 < passes.size(); ++i) busiest = std::max(busiest, changes(passes[i]));
   const Index before = changes(passes[passes.size() - 2]);
@@ -90,7 +90,9 @@ AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits, T
   pass.collapses = timed(pass.seconds_collapse, [&] { return collapse_short_edges(am, limits, pool); });
   pass.collapses += timed(pass.seconds_collapse, [&] { return collapse_thin_vertices(am, limits); });
   pass.swaps = timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, am.start_sweep(), pool); });
-  pass.splits = timed(pass.seconds_split, [&] { return split_long_edges(am, limits, pool); });
+  const SplitSweep split = timed(pass.seconds_split, [&] { return split_long_edges(am, limits, pool); });
+  pass.splits = split.count;
+  pass.coarse_phase = split.coarse_phase;
   pass.splits += timed(pass.seconds_split, [&] { return cut_boundary_only_elements(am, limits); });
   pass.swaps += timed(pass.seconds_swap, [&] { return swap_for_quality(am, limits, am.start_sweep(), pool); });
   pass.moves = timed(pass.seconds_smooth, [&] { return smooth_vertices(am, limits, pool); });

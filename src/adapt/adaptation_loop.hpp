@@ -55,6 +55,9 @@ struct AdaptationPass {
   // edges up to collapse_length_bound (2); closed, up to √2.
   bool window_open = false;
   double collapse_length_bound = 0;
+  // The split's coarse phase (3D: only edges longer than 2 were split): the pass cut coarse edges,
+  // new work rather than ping-pong, so the window does not close after it.
+  bool coarse_phase = false;
 };
 
 struct AdaptationRun {

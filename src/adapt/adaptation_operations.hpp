@@ -62,8 +62,13 @@ struct OperationCount {
 // longest first. A new vertex with an edge shorter than collapse_length is then collapsed onto that
 // edge's other end when it can be: the long edge is cut at a vertex already there, not beside it
 // (anisotropic refinement by midpoints would otherwise crowd the directions that need no refinement).
+// In 3D, while many long edges are longer than 2, only those are split (the coarse phase).
+struct SplitSweep {
+  OperationCount count;
+  bool coarse_phase = false;  // only the edges longer than 2 were candidates
+};
 template <int D>
-OperationCount split_long_edges(AdaptationMesh<D>& mesh, const AdaptationLimits& limits, ThreadPool& pool);
+SplitSweep split_long_edges(AdaptationMesh<D>& mesh, const AdaptationLimits& limits, ThreadPool& pool);
 
 // Cuts the poor elements whose vertices all lie on the boundary, worst first, by splitting their
 // longest inner edge (no boundary facet through it) at its middle, without snapping. Swaps keep
@@ -80,7 +85,8 @@ OperationCount collapse_short_edges(AdaptationMesh<D>& mesh, const AdaptationLim
 
 // Collapses the inner vertices that lie a hair above a boundary facet of a poor element (below 1% of
 // the metric's size across it) onto that facet's nearest vertex, when collapse_edge allows it (any
-// new edge length): thin_vertices.cpp.
+// new edge length); one that no such collapse removes sinks onto the boundary (replaced by its
+// closest point there, the facets under it re-starred): thin_vertices.cpp.
 template <int D>
 OperationCount collapse_thin_vertices(AdaptationMesh<D>& mesh, const AdaptationLimits& limits);
 

@@ -255,16 +255,18 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const SplitPreview<D
 }  // namespace
 
 template <int D>
-OperationCount split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limits, ThreadPool& pool) {
+SplitSweep split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limits, ThreadPool& pool) {
   std::vector<EdgeCandidate> candidates = edges_beyond(am, limits.split_length, true, pool);
   // 3D coarse phase: while many long edges are longer than 2, only those are split. Their halves
   // are longer than 1, so the mesh never gets denser than the metric asks; halves of edges in
   // (√2, 2) would be, while the coarse edges around them are still to be cut. (In 2D, where a
   // split triangle makes 4 and not 8 children, it lowered the annulus's mean quality.)
   const auto beyond_two = std::partition_point(candidates.begin(), candidates.end(), [](const EdgeCandidate& c) { return c.length > 2; });
-  if (D == 3 && static_cast<double>(beyond_two - candidates.begin()) > kCoarsePhaseShare * static_cast<double>(candidates.size()))
-    candidates.erase(beyond_two, candidates.end());
-  OperationCount count;
+  SplitSweep sweep;
+  sweep.coarse_phase = D == 3 &&
+                       static_cast<double>(beyond_two - candidates.begin()) > kCoarsePhaseShare * static_cast<double>(candidates.size());
+  if (sweep.coarse_phase) candidates.erase(beyond_two, candidates.end());
+  OperationCount& count = sweep.count;
   if (!limits.split_at_required_vertices) {
     std::vector<char> required(static_cast<std::size_t>(am.mesh().vertex_count()), 0);
     for (Index v : am.mesh().required_vertices()) required[v] = 1;
@@ -293,7 +295,7 @@ OperationCount split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& l
       count.add(split_edge(am, c.a, c.b, previews[i], limits, SplitPurpose::kLength, scratch.front()));
     }
   }
-  return count;
+  return sweep;
 }
 
 namespace {
@@ -361,7 +363,7 @@ OperationCount cut_boundary_only_elements(AdaptationMesh<D>& am, const Adaptatio
 
 template OperationCount cut_boundary_only_elements(AdaptationMesh<2>&, const AdaptationLimits&);
 template OperationCount cut_boundary_only_elements(AdaptationMesh<3>&, const AdaptationLimits&);
-template OperationCount split_long_edges(AdaptationMesh<2>&, const AdaptationLimits&, ThreadPool&);
-template OperationCount split_long_edges(AdaptationMesh<3>&, const AdaptationLimits&, ThreadPool&);
+template SplitSweep split_long_edges(AdaptationMesh<2>&, const AdaptationLimits&, ThreadPool&);
+template SplitSweep split_long_edges(AdaptationMesh<3>&, const AdaptationLimits&, ThreadPool&);
 
 }  // namespace hocav

@@ -3,13 +3,15 @@
 // less than kThinHeight above the facet's plane, measured in that vertex's metric. The loop's other
 // operators do not see such a vertex: its edges along the boundary are long (so split, which puts
 // their middles closer still) and its smoothing target stays near the boundary. It is collapsed
-// onto the facet's vertex nearest it in the metric, else onto another of them.
+// onto the facet's vertex nearest it in the metric, else onto another of them; a vertex that stands
+// over several facets, so that no collapse removes it, sinks onto the boundary instead.
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "adapt/adaptation_operations.hpp"
 #include "adapt/boundary_pieces.hpp"
+#include "mesh/ball_and_shell.hpp"
 
 namespace hocav {
 namespace {
@@ -20,7 +22,8 @@ constexpr double kThinHeight = 1e-2;
 template <int D>
 struct ThinVertex {
   Index vertex;
-  typename Mesh<D>::Facet facet;  // the boundary facet it is a hair above
+  Index facet_id;                 // the boundary facet it is a hair above
+  typename Mesh<D>::Facet facet;  // that facet's vertices
 };
 
 // The height of point x above the plane of `facet` in `metric`: its distance to the plane along the
@@ -44,13 +47,102 @@ std::vector<ThinVertex<D>> thin_vertices(const AdaptationMesh<D>& am) {
       const Index apex = mesh.element(k)[face], facet = mesh.element_face_facet(k, face);
       if (facet == kNoIndex || am.vertex_class(apex) != VertexClass::kInterior) continue;
       if (height_in_metric<D>(mesh, mesh.facet(facet), mesh.vertex(apex), am.metric(apex)) < kThinHeight)
-        thin.push_back({apex, mesh.facet(facet)});
+        thin.push_back({apex, facet, mesh.facet(facet)});
     }
   }
   std::stable_sort(thin.begin(), thin.end(), [](const ThinVertex<D>& x, const ThinVertex<D>& y) { return x.vertex < y.vertex; });
   thin.erase(std::unique(thin.begin(), thin.end(), [](const ThinVertex<D>& x, const ThinVertex<D>& y) { return x.vertex == y.vertex; }),
              thin.end());
   return thin;
+}
+
+// 3D: whether a feature line runs along an edge that two of these facets share.
+template <int D>
+bool line_between(const AdaptationMesh<D>& am, std::span<const Index> facets) {
+  if constexpr (D == 3) {
+    const Mesh<D>& mesh = am.mesh();
+    const auto holds = [](const auto& facet, Index v) { return std::find(facet.begin(), facet.end(), v) != facet.end(); };
+    std::vector<Index> lines;
+    for (std::size_t i = 0; i < facets.size(); ++i)
+      for (int e = 0; e < 3; ++e) {
+        const Index a = mesh.facet(facets[i])[e], b = mesh.facet(facets[i])[(e + 1) % 3];
+        if (am.vertex_class(a) < VertexClass::kRidge || am.vertex_class(b) < VertexClass::kRidge) continue;
+        const bool shared = std::any_of(facets.begin(), facets.begin() + static_cast<std::ptrdiff_t>(i),
+                                        [&](Index f) { return holds(mesh.facet(f), a) && holds(mesh.facet(f), b); });
+        if (!shared) continue;
+        lines_along(mesh, a, b, lines);
+        if (!lines.empty()) return true;
+      }
+  }
+  return false;
+}
+
+// The facets of ref `ref` on the faces of v's ball (all opposite v, an inner vertex): the part of the
+// boundary under v. False when one of them is required, or when a feature line runs between two of
+// them: the sink's surface star would remove it.
+template <int D>
+bool facets_below(const AdaptationMesh<D>& am, std::span<const Index> ball, int ref, std::vector<Index>& out) {
+  const Mesh<D>& mesh = am.mesh();
+  facets_through(mesh, ball, {}, out);
+  std::erase_if(out, [&](Index f) { return mesh.facet_ref(f) != ref; });
+  const std::vector<Index>& required = D == 2 ? mesh.required_edges() : mesh.required_triangles();
+  const auto is_required = [&](Index f) { return std::find(required.begin(), required.end(), f) != required.end(); };
+  return std::none_of(out.begin(), out.end(), is_required) && !line_between(am, out);
+}
+
+// Whether the thin vertex's facet is still in the mesh: earlier operations of the sweep re-star
+// facets, and may give a removed facet's id to another.
+template <int D>
+bool still_below(const Mesh<D>& mesh, const ThinVertex<D>& thin) {
+  if (thin.facet_id >= mesh.facet_count() || mesh.facet_removed(thin.facet_id)) return false;
+  auto now = mesh.facet(thin.facet_id), then = thin.facet;
+  std::sort(now.begin(), now.end());
+  std::sort(then.begin(), then.end());
+  return now == then;
+}
+
+// Where a thin vertex sinks to: its closest point on the geometry's part of the facet's ref, or
+// without a geometry its foot on the facet's plane.
+template <int D>
+BoundaryPoint<D> sink_point(const AdaptationMesh<D>& am, const ThinVertex<D>& thin) {
+  const Mesh<D>& mesh = am.mesh();
+  const Vec<D>& x = mesh.vertex(thin.vertex);
+  const int ref = mesh.facet_ref(thin.facet_id);
+  if (am.geometry()) return am.geometry()->project(x, {ref, am.surface_hint(thin.facet[0])});
+  const Vec<D> normal = area_normal<D>(mesh, thin.facet);
+  return {x - dot(normal, x - mesh.vertex(thin.facet[0])) / dot(normal, normal) * normal};
+}
+
+// Replaces a thin vertex by a new boundary vertex at its sink point: its ball re-starred from there,
+// the facets under it re-starred with it. Refused as a collapse would be (the floor on the new
+// elements' quality, the boundary's turn and distance).
+template <int D>
+Refusal sink_thin_vertex(AdaptationMesh<D>& am, const ThinVertex<D>& thin, const AdaptationLimits& limits, std::vector<Index>& below) {
+  Mesh<D>& mesh = am.mesh();
+  auto& work = am.workspace();
+  collect_ball(mesh, thin.vertex, work.cavity);
+  if (!facets_below(am, work.cavity, mesh.facet_ref(thin.facet_id), below)) return Refusal::kClasses;
+  const BoundaryPoint<D> sink = sink_point(am, thin);
+  const double floor = std::min(0.3 * worst_quality<D>(am, work.cavity), 0.1);
+  const Index w = am.add_vertex(sink.point, VertexClass::kSurface, thin.vertex);
+  am.set_surface_hint(w, sink.patch);
+  CavityOptions options;
+  options.removable_vertex = thin.vertex;
+  options.removed_facets = below;
+  CavityOperator<D>& plan = work.cavity_operator;
+  Refusal refusal = Refusal::kNone;
+  if (plan.plan(mesh, work.cavity, w, options) != CavityStatus::kAccepted)
+    refusal = Refusal::kTopology;
+  else if (!(worst_planned_quality(am, plan) >= floor))
+    refusal = Refusal::kQuality;
+  else if (!boundary_change_acceptable(am, plan, limits.cos_feature_angle, limits.hausd))
+    refusal = Refusal::kGeometry;
+  if (refusal != Refusal::kNone) {
+    mesh.pop_vertex();
+    return refusal;
+  }
+  am.commit(plan);
+  return Refusal::kNone;
 }
 
 }  // namespace
@@ -63,6 +155,7 @@ OperationCount collapse_thin_vertices(AdaptationMesh<D>& am, const AdaptationLim
   AdaptationLimits any_length = limits;
   any_length.collapse_new_length = std::numeric_limits<double>::infinity();
   CollapseScratch<D> scratch;
+  std::vector<Index> below;
   for (ThinVertex<D> thin : thin_vertices(am)) {
     if (am.mesh().vertex_removed(thin.vertex)) continue;
     std::sort(thin.facet.begin(), thin.facet.end(),
@@ -76,6 +169,8 @@ OperationCount collapse_thin_vertices(AdaptationMesh<D>& am, const AdaptationLim
         break;
       }
     }
+    if (first != Refusal::kNone && still_below(am.mesh(), thin) && sink_thin_vertex(am, thin, limits, below) == Refusal::kNone)
+      first = Refusal::kNone;
     count.add(first);
   }
   return count;

@@ -1,15 +1,19 @@
 // Vertex smoothing (docs/adaptation.md §Smoothing): an interior or surface vertex moves toward the
 // mean of the points that would make each of its edges unit (w + (v − w)/l(v, w) for each neighbour
-// w), by the whole step or a half or a quarter of it, when that raises the worst quality of its ball.
+// w), by the whole step or half of it, when that raises the worst quality of its ball; a ball with a
+// poor element then also tries the point that makes that element regular.
 // A surface vertex stays on its surface (projected on the geometry, or kept in the plane of its
 // facets without one) and its facets pass the boundary test of splits and collapses. The ball keeps
 // its topology, so the move is checked by the quality itself: it is positive only for elements of
 // positive measure.
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 #include "adapt/adaptation_operations.hpp"
 #include "adapt/boundary_pieces.hpp"
 #include "adapt/conflict_batches.hpp"
+#include "adapt/regular_apex.hpp"
 #include "mesh/ball_and_shell.hpp"
 
 namespace hocav {
@@ -37,6 +41,24 @@ Vec<D> unit_edge_target(const AdaptationMesh<D>& am, Index v, std::span<const In
         ++count;
       }
   return count ? (1.0 / count) * sum : mesh.vertex(v);
+}
+
+// The fractions of the way to its target a vertex tries.
+constexpr std::array<double, 2> kSmoothingSteps{1, 0.5};
+// A ball whose worst element is below this quality also tries the point that makes that element
+// regular (refine's repair target), down to a small fraction of the way: a vertex a hair from a
+// face gains much from a short move off it.
+constexpr double kRepairQuality = 0.1;
+constexpr std::array<double, 5> kRepairSteps{1, 0.5, 0.25, 0.125, 0.0625};
+
+// Where v would make `element` (of its ball) regular in v's metric (regular_apex.hpp).
+template <int D>
+Vec<D> repair_target(const AdaptationMesh<D>& am, Index v, const typename Mesh<D>::Element& element) {
+  std::array<Vec<D>, D> face;
+  int n = 0;
+  for (Index w : element)
+    if (w != v) face[static_cast<std::size_t>(n++)] = am.mesh().vertex(w);
+  return regular_apex<D>(face, am.mesh().vertex(v), am.metric(v));
 }
 
 template <int D>
@@ -106,19 +128,23 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, std::span<const Index> ball, 
     for (Index f : scratch.facets) scratch.facet_normals.push_back(area_normal<D>(am.mesh(), am.mesh().facet(f)));
   }
   const double old_worst = am.quality(*worst);
-  const Vec<D> step = unit_edge_target(am, v, ball, scratch.neighbors, scratch.lengths) - start;
-  for (double fraction : {1.0, 0.5}) {
-    const Vec<D> x = on_boundary ? on_surface(am, v, start + fraction * step, start, scratch) : start + fraction * step;
-    if (!move_passes(am, v, x, am.metric_near(x, v), scratch, kSmoothingGain * old_worst, old_lengths, limits)) continue;
-    const SymMat<D> start_metric = am.metric(v);
-    am.move_vertex(v, x, ball);
-    if (on_boundary && !facets_stay_close(am, scratch, limits)) {  // read on the moved mesh
-      am.restore_vertex(v, start, start_metric, ball);
-      continue;
+  const auto toward = [&](const Vec<D>& target, std::span<const double> fractions) {
+    for (double fraction : fractions) {
+      const Vec<D> x = on_boundary ? on_surface(am, v, start + fraction * (target - start), start, scratch)
+                                   : start + fraction * (target - start);
+      if (!move_passes(am, v, x, am.metric_near(x, v), scratch, kSmoothingGain * old_worst, old_lengths, limits)) continue;
+      const SymMat<D> start_metric = am.metric(v);
+      am.move_vertex(v, x, ball);
+      if (on_boundary && !facets_stay_close(am, scratch, limits)) {  // read on the moved mesh
+        am.restore_vertex(v, start, start_metric, ball);
+        continue;
+      }
+      return true;
     }
-    return true;
-  }
-  return false;
+    return false;
+  };
+  if (toward(unit_edge_target(am, v, ball, scratch.neighbors, scratch.lengths), kSmoothingSteps)) return true;
+  return old_worst < kRepairQuality && toward(repair_target(am, v, scratch.elements.front()), kRepairSteps);
 }
 
 // The vertices a sweep tries, with their balls: smoothing keeps the topology, so the balls

@@ -136,6 +136,7 @@ void write_adaptation_report_json(std::ostream& out, const AdaptationReport& rep
     json.member("smooth", pass.seconds_smooth).member("compact", pass.seconds_compact).member("settle", pass.seconds_settle).end_object();
     json.member("settled", pass.settled).member("partly_settled", pass.partly_settled);
     json.member("window_open", pass.window_open).member("collapse_length_bound", pass.collapse_length_bound);
+    json.member("coarse_phase", pass.coarse_phase);
     json.end_object();
   }
   json.end_array();

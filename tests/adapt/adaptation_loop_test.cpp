@@ -274,7 +274,7 @@ TEST(AdaptationPasses, SplitAndCollapseEachDoWhatTheySay) {
   const AdaptationLimits limits;
   ThreadPool pool(2);
   const Index before = mesh.vertex_count();
-  const OperationCount splits = split_long_edges(am, limits, pool);
+  const OperationCount splits = split_long_edges(am, limits, pool).count;
   EXPECT_GT(splits.done, 0);
   EXPECT_EQ(mesh.vertex_count(), before + splits.done);
   adapt_test::expect_closed_and_consistent(mesh);
@@ -303,7 +303,7 @@ TEST(AdaptationPasses, ABoundarySplitGoesAsCloseToTheGeometryAsItsFacetsAllow) {
   AdaptationLimits limits;
   limits.cos_feature_angle = std::cos(std::numbers::pi / 4);
   ThreadPool pool(1);
-  EXPECT_GT(split_long_edges(am, limits, pool).done, 0);
+  EXPECT_GT(split_long_edges(am, limits, pool).count.done, 0);
   for (const double x : {0.125, 0.375, 0.625, 0.875}) {
     Index v = kNoIndex;
     for (Index w = 0; w < mesh.vertex_count(); ++w)
@@ -327,7 +327,7 @@ TEST(AdaptationPasses, KeptQualitiesFollowEveryOperation) {
   const AdaptationLimits limits;
   ThreadPool pool(2);
   expect_kept_qualities_current(am);
-  EXPECT_GT(split_long_edges(am, limits, pool).done, 0);
+  EXPECT_GT(split_long_edges(am, limits, pool).count.done, 0);
   expect_kept_qualities_current(am);
   EXPECT_GT(swap_for_quality(am, limits, 0, pool).done, 0);
   expect_kept_qualities_current(am);

@@ -45,6 +45,23 @@ TEST_F(AdaptCli, ACadSurfaceServesTheLoopAndTheCurving) {
   EXPECT_EQ(stats_json("adapted.meshb", "d[\"consistency\"][\"consistent\"], d[\"order\"]"), "(True, 2)");
 }
 
+// The window (docs/adaptation.md §The loop) does not close after a pass whose split was in its
+// coarse phase: its splits and collapses are new work, even when they balance. The distributed
+// test's fine case (the cube 100 times too coarse across the metric's layer): its sixth pass, still
+// coarse, split about as many vertices as it collapsed, and the window closed there (96.0% of edges
+// unit against 98.5% now).
+TEST_F(AdaptCli, TheWindowStaysOpenThroughTheSplitsCoarsePhase) {
+  run_ok("generate cube --h 0.1 -o cube.meshb");
+  run_ok("metric cube.meshb --analytic linear -o cube.solb");
+  run_ok("adapt cube.meshb --metric cube.solb -o adapted.meshb --order 1 --report report.json -q");
+  const std::string passes = "d[\"passes\"]";
+  const std::string closed_after_coarse = "[i + 2 for i, (p, q) in enumerate(zip(" + passes + ", " + passes +
+                                          "[1:])) if p[\"coarse_phase\"] and p[\"window_open\"] and not q[\"window_open\"]]";
+  EXPECT_GT(report_value("sum(p[\"coarse_phase\"] for p in " + passes + ")"), 0);
+  EXPECT_EQ(json_value("report.json", closed_after_coarse), "[]") << "passes that closed the window after a coarse pass";
+  EXPECT_GE(report_value("d[\"edge_length\"][\"unit_share\"]"), 0.98);
+}
+
 TEST_F(AdaptCli, CubeWithAMetricFileStopsAtOrderOne) {
   run_ok("generate cube --h 0.25 -o cube.meshb");
   run_ok("metric cube.meshb --analytic linear --h-min 0.03 -o cube.solb");
