@@ -282,8 +282,13 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   last.first_pass_vertices = around_interfaces(mesh, root.old_interface);
   const AdaptationRun mending = adapt_to_metric(mesh, metric, geometry, last);
   run.passes.insert(run.passes.end(), mending.passes.begin(), mending.passes.end());
-  run.converged = mending.converged;
-  run.stopped_with_window_open = mending.stopped_with_window_open;
+  // Once more, from what that run left (its poor elements) with its window open again: a run that
+  // closed its window early cannot collapse what it made later.
+  last.first_pass_vertices.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
+  const AdaptationRun again = adapt_to_metric(mesh, metric, geometry, last);
+  run.passes.insert(run.passes.end(), again.passes.begin(), again.passes.end());
+  run.converged = again.converged;
+  run.stopped_with_window_open = again.stopped_with_window_open;
   return run;
 }
 
