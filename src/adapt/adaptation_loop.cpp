@@ -110,15 +110,25 @@ AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits, T
   return pass;
 }
 
-// AdaptationSettings::first_pass_vertices with the vertices of the poor elements.
+// AdaptationSettings::first_pass_vertices with the vertices of the poor elements, and with the ends
+// of the edges outside the unit window when `unfinished_edges`.
 template <int D>
-std::vector<char> first_pass_region(const AdaptationMesh<D>& am, std::vector<char> region) {
+std::vector<char> first_pass_region(const AdaptationMesh<D>& am, std::vector<char> region, bool unfinished_edges,
+                                    const AdaptationLimits& limits) {
   const Mesh<D>& mesh = am.mesh();
   if (region.size() != static_cast<std::size_t>(mesh.vertex_count()))
     throw Error("adaptation: the first pass's vertices do not match the mesh");
-  for (Index k = 0; k < mesh.element_count(); ++k)
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    const auto& element = mesh.element(k);
     if (am.quality(k) < kPoorQuality)
-      for (Index v : mesh.element(k)) region[static_cast<std::size_t>(v)] = 1;
+      for (Index v : element) region[static_cast<std::size_t>(v)] = 1;
+    if (unfinished_edges)
+      for (const auto& [i, j] : Simplex<D>::kEdgeLocalVertices) {
+        const double length = am.edge_length(element[i], element[j]);
+        if (length > limits.split_length || length < limits.collapse_length)
+          region[static_cast<std::size_t>(element[i])] = region[static_cast<std::size_t>(element[j])] = 1;
+      }
+  }
   return region;
 }
 
@@ -128,8 +138,9 @@ template <int D>
 AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                               const AdaptationSettings& settings) {
   AdaptationMesh<D> am(mesh, metric, geometry, settings.feature_angle_degrees);
-  if (!settings.first_pass_vertices.empty()) am.settle_outside(first_pass_region(am, settings.first_pass_vertices));
   AdaptationLimits limits;
+  if (!settings.first_pass_vertices.empty())
+    am.settle_outside(first_pass_region(am, settings.first_pass_vertices, settings.first_pass_unfinished_edges, limits));
   limits.collapse_new_length = kOpenCollapseLength;
   limits.cos_feature_angle = std::cos(settings.feature_angle_degrees * std::numbers::pi / 180);
   limits.hausd = settings.hausd;

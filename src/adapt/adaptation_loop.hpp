@@ -34,6 +34,9 @@ struct AdaptationSettings {
   // always. The distributed loop's last run near the interfaces its parts kept frozen, and around
   // the poor elements a part left (docs/distributed.md).
   std::vector<char> first_pass_vertices;
+  // With first_pass_vertices: the first pass also tries the ends of every edge outside the unit
+  // window [1/√2, √2] (what earlier runs left unfinished: the distributed loop's parts stop early).
+  bool first_pass_unfinished_edges = false;
   // Called after each pass with its number (1-based) and the passes' cap, for progress.
   std::function<void(int, int)> progress;
   // False: the driver leaves the output unmeasured (the report's edge-length and quality figures

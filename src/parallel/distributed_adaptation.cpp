@@ -280,6 +280,7 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   // loop left elsewhere).
   AdaptationSettings last = settings;
   last.first_pass_vertices = around_interfaces(mesh, root.old_interface);
+  last.first_pass_unfinished_edges = true;
   const AdaptationRun mending = adapt_to_metric(mesh, metric, geometry, last);
   run.passes.insert(run.passes.end(), mending.passes.begin(), mending.passes.end());
   // Once more, from what that run left (its poor elements) with its window open again: a run that

@@ -151,6 +151,20 @@ TEST(AdaptationLoop, TheFirstPassTriesOnlyTheGivenVertices) {
   EXPECT_THROW(adapt_to_metric<2>(mesh, adapt_test::uniform_metric<2>(0.05), nullptr, settings), Error);
 }
 
+// With first_pass_unfinished_edges the first pass also tries the ends of the edges outside the unit
+// window: the square twice too coarse, no vertex given, is adapted as if the run were free.
+TEST(AdaptationLoop, TheFirstPassCanAlsoTryTheUnfinishedEdges) {
+  const Mesh<2> input = adapt_test::unit_mesh<2>(10);
+  Mesh<2> mesh = input;
+  AdaptationSettings settings;
+  settings.first_pass_vertices.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
+  settings.first_pass_unfinished_edges = true;
+  const AdaptationRun run = adapt_to_metric<2>(mesh, adapt_test::uniform_metric<2>(0.05), nullptr, settings);
+  EXPECT_GT(run.passes[0].splits.done, 0);
+  EXPECT_GT(mesh.element_count(), 2 * input.element_count());
+  adapt_test::expect_closed_and_consistent(mesh);
+}
+
 // The first pass also tries the poor elements outside the region: the square, unit in its metric
 // but for the vertex at its centre moved 0.09 toward its right neighbour, is mended with no vertex given.
 TEST(AdaptationLoop, TheFirstPassAlsoTriesThePoorElements) {
