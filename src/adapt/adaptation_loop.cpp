@@ -111,24 +111,21 @@ AdaptationPass run_pass(AdaptationMesh<D>& am, const AdaptationLimits& limits, T
 }
 
 // AdaptationSettings::first_pass_vertices with the vertices of the poor elements, and with the ends
-// of the edges outside the unit window when `unfinished_edges`.
+// of the edges outside the unit window when `unfinished_edges` (found as the split and the collapse
+// find their candidates: every vertex counts as changed before the first pass).
 template <int D>
 std::vector<char> first_pass_region(const AdaptationMesh<D>& am, std::vector<char> region, bool unfinished_edges,
-                                    const AdaptationLimits& limits) {
+                                    const AdaptationLimits& limits, ThreadPool& pool) {
   const Mesh<D>& mesh = am.mesh();
   if (region.size() != static_cast<std::size_t>(mesh.vertex_count()))
     throw Error("adaptation: the first pass's vertices do not match the mesh");
-  for (Index k = 0; k < mesh.element_count(); ++k) {
-    const auto& element = mesh.element(k);
+  for (Index k = 0; k < mesh.element_count(); ++k)
     if (am.quality(k) < kPoorQuality)
-      for (Index v : element) region[static_cast<std::size_t>(v)] = 1;
-    if (unfinished_edges)
-      for (const auto& [i, j] : Simplex<D>::kEdgeLocalVertices) {
-        const double length = am.edge_length(element[i], element[j]);
-        if (length > limits.split_length || length < limits.collapse_length)
-          region[static_cast<std::size_t>(element[i])] = region[static_cast<std::size_t>(element[j])] = 1;
-      }
-  }
+      for (Index v : mesh.element(k)) region[static_cast<std::size_t>(v)] = 1;
+  if (unfinished_edges)
+    for (const bool longer : {true, false})
+      for (const EdgeCandidate& c : edges_beyond(am, longer ? limits.split_length : limits.collapse_length, longer, pool))
+        region[static_cast<std::size_t>(c.a)] = region[static_cast<std::size_t>(c.b)] = 1;
   return region;
 }
 
@@ -139,13 +136,13 @@ AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, 
                               const AdaptationSettings& settings) {
   AdaptationMesh<D> am(mesh, metric, geometry, settings.feature_angle_degrees);
   AdaptationLimits limits;
+  ThreadPool pool(std::max(1, settings.threads));
   if (!settings.first_pass_vertices.empty())
-    am.settle_outside(first_pass_region(am, settings.first_pass_vertices, settings.first_pass_unfinished_edges, limits));
+    am.settle_outside(first_pass_region(am, settings.first_pass_vertices, settings.first_pass_unfinished_edges, limits, pool));
   limits.collapse_new_length = kOpenCollapseLength;
   limits.cos_feature_angle = std::cos(settings.feature_angle_degrees * std::numbers::pi / 180);
   limits.hausd = settings.hausd;
   limits.split_at_required_vertices = settings.split_at_required_vertices;
-  ThreadPool pool(std::max(1, settings.threads));
   AdaptationRun run;
   int closed_passes = 0;
   for (int pass = 1; pass <= settings.max_passes && !run.converged && closed_passes != settings.passes_after_window_closes; ++pass) {

@@ -276,15 +276,15 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   }
   for (int p = 1; p < process_count(); ++p) send_bytes(p, {});  // stop
   // The band's parts kept their own interfaces frozen, where they cross the band: the serial loop,
-  // from the merged mesh, tries first only the region around them (and the poor elements a part's
-  // loop left elsewhere).
+  // from the merged mesh, tries first only the region around them, the poor elements and the edges
+  // outside the unit window that the parts, stopped early, left elsewhere.
   AdaptationSettings last = settings;
   last.first_pass_vertices = around_interfaces(mesh, root.old_interface);
   last.first_pass_unfinished_edges = true;
   const AdaptationRun mending = adapt_to_metric(mesh, metric, geometry, last);
   run.passes.insert(run.passes.end(), mending.passes.begin(), mending.passes.end());
-  // Once more, from what that run left (its poor elements) with its window open again: a run that
-  // closed its window early cannot collapse what it made later.
+  // Once more, from what that run left (its poor elements and edges outside the unit window) with
+  // its window open again: a run that closed its window early cannot collapse what it made later.
   last.first_pass_vertices.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
   const AdaptationRun again = adapt_to_metric(mesh, metric, geometry, last);
   run.passes.insert(run.passes.end(), again.passes.begin(), again.passes.end());
