@@ -8,6 +8,7 @@
 
 #include "adapt/adaptation_operations.hpp"
 #include "adapt/boundary_pieces.hpp"
+#include "base/small_set.hpp"
 #include "mesh/ball_and_shell.hpp"
 
 namespace hocav {
@@ -106,15 +107,15 @@ bool folds_surface(const Mesh<D>& mesh, const CavityOperator<D>& plan, Index rem
   collect_ball(mesh, kept, s.ball);
   const Index center[1] = {kept};
   facets_through(mesh, std::span<const Index>(s.ball), center, s.kept_facets);
-  const auto holds = [&](const auto& facet, Index v) { return std::find(facet.begin(), facet.end(), v) != facet.end(); };
   const auto kept_neighbor = [&](Index v) {
-    return std::any_of(s.kept_facets.begin(), s.kept_facets.end(), [&](Index f) { return holds(mesh.facet(f), v); });
+    return std::any_of(s.kept_facets.begin(), s.kept_facets.end(), [&](Index f) { return small_set_holds(mesh.facet(f), v); });
   };
   for (Index f : s.facets) {
-    if (holds(mesh.facet(f), kept)) continue;  // its far vertex is the edge's: shared, as it should be
+    if (small_set_holds(mesh.facet(f), kept)) continue;  // its far vertex is the edge's: shared, as it should be
     for (Index v : mesh.facet(f))
-      if (v != removed && kept_neighbor(v) &&
-          std::none_of(s.facets.begin(), s.facets.end(), [&](Index g) { return holds(mesh.facet(g), kept) && holds(mesh.facet(g), v); }))
+      if (v != removed && kept_neighbor(v) && std::none_of(s.facets.begin(), s.facets.end(), [&](Index g) {
+            return small_set_holds(mesh.facet(g), kept) && small_set_holds(mesh.facet(g), v);
+          }))
         return true;
   }
   const auto sorted = [](auto vertices) {

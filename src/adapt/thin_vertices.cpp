@@ -11,6 +11,7 @@
 
 #include "adapt/adaptation_operations.hpp"
 #include "adapt/boundary_pieces.hpp"
+#include "base/small_set.hpp"
 #include "mesh/ball_and_shell.hpp"
 
 namespace hocav {
@@ -61,14 +62,13 @@ template <int D>
 bool line_between(const AdaptationMesh<D>& am, std::span<const Index> facets) {
   if constexpr (D == 3) {
     const Mesh<D>& mesh = am.mesh();
-    const auto holds = [](const auto& facet, Index v) { return std::find(facet.begin(), facet.end(), v) != facet.end(); };
     std::vector<Index> lines;
     for (std::size_t i = 0; i < facets.size(); ++i)
       for (int e = 0; e < 3; ++e) {
         const Index a = mesh.facet(facets[i])[e], b = mesh.facet(facets[i])[(e + 1) % 3];
         if (am.vertex_class(a) < VertexClass::kRidge || am.vertex_class(b) < VertexClass::kRidge) continue;
         const bool shared = std::any_of(facets.begin(), facets.begin() + static_cast<std::ptrdiff_t>(i),
-                                        [&](Index f) { return holds(mesh.facet(f), a) && holds(mesh.facet(f), b); });
+                                        [&](Index f) { return small_set_holds(mesh.facet(f), a) && small_set_holds(mesh.facet(f), b); });
         if (!shared) continue;
         lines_along(mesh, a, b, lines);
         if (!lines.empty()) return true;

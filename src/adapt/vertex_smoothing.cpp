@@ -102,6 +102,38 @@ bool move_passes(const AdaptationMesh<D>& am, Index v, const Vec<D>& x, const Sy
   return lengths_stay_in_window(old_lengths, length_range_from<D>(am, x, metric_x, scratch.neighbors), limits);
 }
 
+// One vertex's smoothing: what every trial position is judged against, read before any move.
+template <int D>
+struct SmoothingTrial {
+  Index v;
+  std::span<const Index> ball;
+  Vec<D> start;
+  bool on_boundary;
+  double old_worst;
+  std::pair<double, double> old_lengths;
+};
+
+// Moves the trial's vertex to the first of `fractions` of the way to `target` that passes; false
+// (nothing moved) when none does.
+template <int D>
+bool move_toward(AdaptationMesh<D>& am, const SmoothingTrial<D>& trial, const Vec<D>& target, std::span<const double> fractions,
+                 SmoothingScratch<D>& scratch, const AdaptationLimits& limits) {
+  const Index v = trial.v;
+  for (double fraction : fractions) {
+    const Vec<D> along = trial.start + fraction * (target - trial.start);
+    const Vec<D> x = trial.on_boundary ? on_surface(am, v, along, trial.start, scratch) : along;
+    if (!move_passes(am, v, x, am.metric_near(x, v), scratch, kSmoothingGain * trial.old_worst, trial.old_lengths, limits)) continue;
+    const SymMat<D> start_metric = am.metric(v);
+    am.move_vertex(v, x, trial.ball);
+    if (trial.on_boundary && !facets_stay_close(am, scratch, limits)) {  // read on the moved mesh
+      am.restore_vertex(v, trial.start, start_metric, trial.ball);
+      continue;
+    }
+    return true;
+  }
+  return false;
+}
+
 // Tries to move v (its ball: `ball`); changes only v, its metric, geometry hint and its ball's kept qualities, so
 // vertices whose balls share no element may be tried at the same time.
 template <int D>
@@ -117,34 +149,19 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, std::span<const Index> ball, 
   scratch.lengths.clear();
   for (Index w : scratch.neighbors) scratch.lengths.push_back(am.edge_length(v, w));
   const auto [shortest, longest] = std::minmax_element(scratch.lengths.begin(), scratch.lengths.end());
-  const std::pair<double, double> old_lengths{*shortest, *longest};
-  const Vec<D> start = am.mesh().vertex(v);
-  const bool on_boundary = am.vertex_class(v) == VertexClass::kSurface;
-  if (on_boundary) {
+  const SmoothingTrial<D> trial{
+      v, ball, am.mesh().vertex(v), am.vertex_class(v) == VertexClass::kSurface, am.quality(*worst), {*shortest, *longest}};
+  if (trial.on_boundary) {
     const Index center[1] = {v};
     facets_through<D>(am.mesh(), ball, center, scratch.facets);
     if (scratch.facets.empty()) return false;
     scratch.facet_normals.clear();
     for (Index f : scratch.facets) scratch.facet_normals.push_back(area_normal<D>(am.mesh(), am.mesh().facet(f)));
   }
-  const double old_worst = am.quality(*worst);
-  const auto toward = [&](const Vec<D>& target, std::span<const double> fractions) {
-    for (double fraction : fractions) {
-      const Vec<D> x = on_boundary ? on_surface(am, v, start + fraction * (target - start), start, scratch)
-                                   : start + fraction * (target - start);
-      if (!move_passes(am, v, x, am.metric_near(x, v), scratch, kSmoothingGain * old_worst, old_lengths, limits)) continue;
-      const SymMat<D> start_metric = am.metric(v);
-      am.move_vertex(v, x, ball);
-      if (on_boundary && !facets_stay_close(am, scratch, limits)) {  // read on the moved mesh
-        am.restore_vertex(v, start, start_metric, ball);
-        continue;
-      }
-      return true;
-    }
-    return false;
-  };
-  if (toward(unit_edge_target(am, v, ball, scratch.neighbors, scratch.lengths), kSmoothingSteps)) return true;
-  return old_worst < kRepairQuality && toward(repair_target(am, v, scratch.elements.front()), kRepairSteps);
+  if (move_toward(am, trial, unit_edge_target(am, v, ball, scratch.neighbors, scratch.lengths), kSmoothingSteps, scratch, limits))
+    return true;
+  return trial.old_worst < kRepairQuality &&
+         move_toward(am, trial, repair_target(am, v, scratch.elements.front()), kRepairSteps, scratch, limits);
 }
 
 // The vertices a sweep tries, with their balls: smoothing keeps the topology, so the balls
