@@ -15,7 +15,7 @@ template <int D>
 SymMat<D> AdaptationMetric<D>::metric_at(const Vec<D>& x, Index& hint) const {
   const SymMat<D> target = target_at(x, hint);
   if (!start_) return target;
-  const auto sample = start_->sample(x, hint);
+  const auto sample = start_->sample_within(x, hint);
   hint = sample.where.element;
   return exp_sym((1 - fraction_) * sample.log_metric + fraction_ * log_spd(target));
 }
@@ -36,11 +36,11 @@ SymMat<D> AdaptationMetric<D>::target_at(const Vec<D>& x, Index& hint) const {
   if (analytic_) {
     const SymMat<D> metric = analytic_metric<D>(*analytic_, x);
     if (!hausdorff_) return clamped(metric);
-    const auto sample = hausdorff_->sample(x, hint);
+    const auto sample = hausdorff_->sample_within(x, hint);
     hint = sample.where.element;
     return clamped(within_bound(metric, exp_sym(sample.log_metric)));
   }
-  const auto sample = field_->sample(x, hint);
+  const auto sample = field_->sample_within(x, hint);
   hint = sample.where.element;
   return clamped(exp_sym(sample.log_metric));
 }

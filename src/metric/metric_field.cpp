@@ -1,5 +1,6 @@
 #include "metric/metric_field.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "base/error.hpp"
@@ -69,6 +70,19 @@ typename MetricField<D>::Sample MetricField<D>::sample(const Vec<D>& x, Index hi
 }
 
 template <int D>
+typename MetricField<D>::Sample MetricField<D>::sample_within(const Vec<D>& x, Index hint, LocatorScratch& scratch) const {
+  Sample result{locator_->localize(x, hint, scratch), {}};
+  Barycentrics<D> lambda = result.where.barycentrics;
+  const double centroid = 1.0 / (D + 1), lowest = *std::min_element(lambda.begin(), lambda.end());
+  if (lowest < -kMostExtension) {  // toward the centroid until the lowest is −kMostExtension
+    const double shrink = (centroid + kMostExtension) / (centroid - lowest);
+    for (double& l : lambda) l = centroid + shrink * (l - centroid);
+  }
+  result.log_metric = interpolate(result.where.element, lambda);
+  return result;
+}
+
+template <int D>
 typename MetricField<D>::Sample MetricField<D>::sample(const Vec<D>& x, const ElementFrame& frame, LocatorScratch& scratch) const {
   const Barycentrics<D> lambda = barycentric_coordinates<D>(frame.barycentric_gradients, frame.origin, x);
   if (!PointLocator<D>::contains(lambda)) return sample(x, frame.element, scratch);
@@ -104,7 +118,7 @@ std::vector<SymMat<D>> metrics_at(const MetricField<D>& field, std::span<const V
   std::vector<SymMat<D>> metrics;
   metrics.reserve(points.size());
   for (const Vec<D>& x : points) {
-    const typename MetricField<D>::Sample sample = field.sample(x, hint, scratch);
+    const typename MetricField<D>::Sample sample = field.sample_within(x, hint, scratch);
     hint = sample.where.element;
     metrics.push_back(exp_sym(sample.log_metric));
   }

@@ -40,6 +40,18 @@ class MetricField {
     return sample(x, hint, scratch);
   }
   SymMat<D> log_metric_at(const Vec<D>& x, Index hint = kNoIndex) const { return sample(x, hint).log_metric; }
+  // The same, but the affine extension outside the back mesh goes no farther than kMostExtension of
+  // the element's height beyond a face (barycentrics pulled toward the centroid until none is below
+  // −kMostExtension): it suits points just outside the mesh, but a vertex placed on a curved
+  // boundary can lie farther out than a thin element is high, where the extension runs away (a
+  // boundary-layer mesh's implied metric gave 1e7 times its largest eigenvalue; docs/adaptation.md
+  // §Metric).
+  static constexpr double kMostExtension = 0.25;
+  Sample sample_within(const Vec<D>& x, Index hint, LocatorScratch& scratch) const;
+  Sample sample_within(const Vec<D>& x, Index hint = kNoIndex) const {
+    LocatorScratch scratch;
+    return sample_within(x, hint, scratch);
+  }
 
   // ∂(log M)/∂x_i = Σ_j (∂λ_j/∂x_i) R_j in back element k (constant inside it, docs/method.md §6).
   std::array<SymMat<D>, D> log_metric_gradient(Index back_element) const;
@@ -67,8 +79,8 @@ class MetricField {
   std::unique_ptr<PointLocator<D>> locator_;
 };
 
-// The metric (not its log) at each point, each localization starting where the previous point fell
-// (`hint`, updated): points in a mesh's order are mostly near their predecessor.
+// The metric (not its log) at each point (sample_within), each localization starting where the
+// previous point fell (`hint`, updated): points in a mesh's order are mostly near their predecessor.
 template <int D>
 std::vector<SymMat<D>> metrics_at(const MetricField<D>& field, std::span<const Vec<D>> points, Index& hint);
 

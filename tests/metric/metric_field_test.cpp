@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "base/error.hpp"
@@ -66,6 +67,47 @@ TEST(MetricField, InterpolationIsLogEuclideanNotLinear) {
   EXPECT_NEAR(middle(1, 1) / 1e2, 1, 1e-12);
   EXPECT_NEAR(middle(0, 1), 0, 1e-9);
 }
+
+// One thin simplex (height 0.01 over its base) whose apex asks 1e4·I and base 1·I. A point four
+// heights above the apex: the affine extension runs away (λ_apex = 5: 1e20·I); sample_within pulls
+// the barycentrics toward the centroid until the lowest is −kMostExtension, so the apex's weight
+// (1 minus the base's) is at most 1 + D·kMostExtension. Within that reach the two agree bit for bit.
+template <int D>
+void expect_sample_within_to_stay_in_reach() {
+  Mesh<D> mesh;
+  for (int i = 0; i < D; ++i) {
+    Vec<D> corner{};
+    if (i > 0) corner[i - 1] = 1;
+    mesh.add_vertex(corner);
+  }
+  Vec<D> apex{};
+  for (int i = 0; i < D - 1; ++i) apex[i] = 0.25;
+  apex[D - 1] = 0.01;
+  mesh.add_vertex(apex);
+  typename Mesh<D>::Element element;
+  for (int i = 0; i <= D; ++i) element[i] = i;
+  mesh.add_element(element);
+  mesh.build_topology();
+  const SymMat<D> top = 1e4 * SymMat<D>::identity();
+  std::vector<SymMat<D>> metrics(D + 1, SymMat<D>::identity());
+  metrics[D] = top;
+  MetricField<D> field(mesh, metrics);
+  const double reach = MetricField<D>::kMostExtension, top_norm = frobenius_norm(log_spd(top));
+  Vec<D> above = apex;
+  above[D - 1] = 0.05;
+  EXPECT_GT(frobenius_norm(field.sample(above).log_metric), 4 * top_norm);  // the runaway
+  const auto far = field.sample_within(above);
+  EXPECT_LT(*std::min_element(far.where.barycentrics.begin(), far.where.barycentrics.end()), -reach);
+  EXPECT_LE(frobenius_norm(far.log_metric), (1 + D * reach) * top_norm * (1 + 1e-12));
+  EXPECT_GT(frobenius_norm(far.log_metric), top_norm);  // still extended, as far as the reach
+  Vec<D> near = apex;
+  near[D - 1] = 0.011;  // a tenth of the height above the apex: the base's barycentrics sum to −0.1
+  EXPECT_EQ(field.sample_within(near).log_metric.entries, field.sample(near).log_metric.entries);
+  EXPECT_GT(frobenius_norm(field.sample(near).log_metric), top_norm);
+}
+
+TEST(MetricField, SampleWithinExtendsNoFartherThanItsReach2D) { expect_sample_within_to_stay_in_reach<2>(); }
+TEST(MetricField, SampleWithinExtendsNoFartherThanItsReach3D) { expect_sample_within_to_stay_in_reach<3>(); }
 
 TEST(MetricField, RefusesNonSpdMetricsAndWrongCounts) {
   Mesh<2> mesh = generate_square(1);
