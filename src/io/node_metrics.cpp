@@ -9,6 +9,7 @@ namespace hocav {
 
 SolutionField read_metric_for_mesh(const std::string& metric_path, const MeshFileContent& mesh_file, bool with_edge_nodes) {
   SolutionFileContent content = read_solution_file(metric_path);
+  add_metric_of_sizes(content, metric_path);
   const SolutionField& field = checked_metric_field(content, metric_path, dimension_of(mesh_file.mesh), mesh_file.file_node_count);
   SolutionField rows{field.kind, field.dimension, {}};
   auto components = static_cast<std::size_t>(field.components());

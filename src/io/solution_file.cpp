@@ -1,6 +1,8 @@
 // Gamma solution files: SolAtVertices through the shared keyword readers and writers.
 #include "io/solution_file.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 
 #include "base/error.hpp"
@@ -127,6 +129,27 @@ void write_solution_file(const std::string& path, const SolutionFileContent& con
   else
     write_solution(gamma::TextKeywordWriter(path, gamma::resolve_version(path, gamma_version, content.count, 2), content.dimension),
                    content);
+}
+
+void add_metric_of_sizes(SolutionFileContent& content, const std::string& path) {
+  const auto of_kind = [&](SolutionKind kind) {
+    return std::find_if(content.fields.begin(), content.fields.end(), [&](const SolutionField& field) { return field.kind == kind; });
+  };
+  const auto matrix = of_kind(SolutionKind::kSymmetricMatrix);
+  const auto sizes = of_kind(SolutionKind::kScalar);
+  if ((matrix != content.fields.end() && matrix->dimension == content.dimension) || sizes == content.fields.end()) return;
+  const int d = content.dimension;
+  SolutionField metric{SolutionKind::kSymmetricMatrix, d, {}};
+  metric.values.reserve(sizes->values.size() * static_cast<std::size_t>(d * (d + 1) / 2));
+  for (std::size_t vertex = 0; vertex < sizes->values.size(); ++vertex) {
+    const double h = sizes->values[vertex];
+    const std::string where = " at vertex " + std::to_string(vertex + 1);
+    if (!std::isfinite(h)) throw Error(path + ": SolAtVertices: size" + where + " is not finite");
+    if (!(h > 0)) throw Error(path + ": SolAtVertices: size" + where + " is not positive");
+    for (int row = 0; row < d; ++row)  // the lower triangle row by row: the diagonal ends each row
+      for (int column = 0; column <= row; ++column) metric.values.push_back(row == column ? 1 / (h * h) : 0.0);
+  }
+  content.fields.push_back(std::move(metric));
 }
 
 const SolutionField& checked_metric_field(const SolutionFileContent& content, const std::string& path, int dimension,

@@ -34,6 +34,12 @@ SolutionFileContent read_solution_file(const std::string& path);
 // Binary version: 0 picks 3 (4 when counts need 64 bits).
 void write_solution_file(const std::string& path, const SolutionFileContent& content, int gamma_version = 0);
 
+// mmg's isotropic size field: when `content` holds no symmetric-matrix field of its dimension but a
+// scalar one (SolAtVertices type 1, a size h per node), appends the metric I/h² of each size as a
+// symmetric-matrix field. Throws Error "<file>: SolAtVertices: size at vertex N is not positive"
+// (or not finite).
+void add_metric_of_sizes(SolutionFileContent& content, const std::string& path);
+
 // Checks a metric field against the mesh it goes with: a symmetric-matrix field of the mesh's
 // dimension, one row per file node, every matrix finite and positive definite. Throws Error
 // "<file>: SolAtVertices: <what> at vertex N" otherwise. Returns the field.

@@ -122,6 +122,28 @@ TEST_F(AdaptCli, TheMetricCommandsSourcesAdaptAsTheirFiles) {
   EXPECT_FALSE(fs::exists(path("x.meshb")));
 }
 
+// mmg's isotropic size file (SolAtVertices type 1, a size h per vertex) is the metric I/h²: the same
+// output as the uniform metric of that size (h = 1/16, so that 1/h² is exact either way).
+TEST_F(AdaptCli, AnIsotropicSizeFileAdaptsAsItsMetric) {
+  run_ok("generate square --h 0.25 -o square.meshb");
+  const int vertices = std::stoi(stats_json("square.meshb", "d[\"counts\"][\"vertices\"]"));
+  std::string sizes = "MeshVersionFormatted 2\nDimension 2\nSolAtVertices\n" + std::to_string(vertices) + "\n1 1\n";
+  for (int v = 0; v < vertices; ++v) sizes += "0.0625\n";
+  write("sizes.sol", sizes + "End\n");
+  run_ok("metric square.meshb --analytic uniform --h 0.0625 -o matrix.sol");
+  run_ok("adapt square.meshb --metric sizes.sol -o from_sizes.meshb --order 1 -q --report report.json");
+  run_ok("adapt square.meshb --metric matrix.sol -o from_matrix.meshb --order 1 -q");
+  EXPECT_GT(report_value("d[\"output_elements\"]"), 4 * report_value("d[\"input_elements\"]"));
+  EXPECT_EQ(read("from_sizes.meshb"), read("from_matrix.meshb"));
+  std::string zero = "MeshVersionFormatted 2\nDimension 2\nSolAtVertices\n" + std::to_string(vertices) + "\n1 1\n0\n";
+  for (int v = 1; v < vertices; ++v) zero += "0.0625\n";
+  write("zero.sol", zero + "End\n");
+  const auto refused = run("adapt square.meshb --metric zero.sol -o x.meshb");
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("zero.sol: SolAtVertices: size at vertex 1 is not positive"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(path("x.meshb")));
+}
+
 // A boundary-layer shell in its implied metric (coarsened along the walls): at 5fcd448 a surface
 // collapse on the inner wall there folded the surface onto itself and the output stacked two
 // facets on one face, which `hocav stats` refused (the collapse's surface link condition,

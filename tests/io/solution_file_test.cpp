@@ -162,6 +162,28 @@ TEST(SolutionFile, ChecksMetricsAgainstTheirMesh) {
   EXPECT_NE(error_of([&] { checked_metric_field(scalar_first, "m.sol", 2, 3); }).find("no symmetric-matrix field"), std::string::npos);
 }
 
+// mmg's isotropic size field (type 1): each size h is the metric I/h², in the on-disk order.
+TEST(SolutionFile, ReadsAnIsotropicSizeFieldAsAMetric) {
+  SolutionFileContent sizes{3, 2, {{SolutionKind::kScalar, 3, {0.5, 0.1}}}};
+  add_metric_of_sizes(sizes, "h.sol");
+  ASSERT_EQ(sizes.fields.size(), 2u);
+  const SolutionField& metric = checked_metric_field(sizes, "h.sol", 3, 2);
+  EXPECT_EQ(metric.values, (std::vector<double>{4, 0, 4, 0, 0, 4, /**/ 1 / (0.1 * 0.1), 0, 1 / (0.1 * 0.1), 0, 0, 1 / (0.1 * 0.1)}));
+  SolutionFileContent sizes_2d{2, 1, {{SolutionKind::kScalar, 2, {0.25}}}};
+  add_metric_of_sizes(sizes_2d, "h.sol");
+  EXPECT_EQ(checked_metric_field(sizes_2d, "h.sol", 2, 1).values, (std::vector<double>{16, 0, 16}));
+
+  // A symmetric-matrix field wins over the sizes: nothing is added.
+  SolutionFileContent both = every_kind_of_field(3, 2);
+  add_metric_of_sizes(both, "h.sol");
+  EXPECT_EQ(both.fields.size(), 4u);
+
+  SolutionFileContent zero{2, 3, {{SolutionKind::kScalar, 2, {0.1, 0.2, 0}}}};
+  EXPECT_EQ(error_of([&] { add_metric_of_sizes(zero, "h.sol"); }), "h.sol: SolAtVertices: size at vertex 3 is not positive");
+  SolutionFileContent infinite{2, 1, {{SolutionKind::kScalar, 2, {std::numeric_limits<double>::infinity()}}}};
+  EXPECT_EQ(error_of([&] { add_metric_of_sizes(infinite, "h.sol"); }), "h.sol: SolAtVertices: size at vertex 1 is not finite");
+}
+
 TEST(SolutionFile, PicksTheFirstSymmetricMatrixField) {
   SolutionFileContent content{2, 1, {}};
   content.fields.push_back({SolutionKind::kScalar, 2, {5}});
