@@ -8,6 +8,7 @@
 #include "adapt/boundary_pieces.hpp"
 #include "base/small_set.hpp"
 #include "mesh/ball_and_shell.hpp"
+#include "mesh/element_snapshot.hpp"
 
 namespace hocav {
 namespace {
@@ -58,12 +59,7 @@ struct SplitPreview {
   std::vector<Index> read;  // the shell and every element the Delaunay growth tested
   std::vector<typename Mesh<D>::Element> read_vertices;
 
-  bool current(const Mesh<D>& mesh) const {
-    if (!made) return false;
-    for (std::size_t i = 0; i < read.size(); ++i)
-      if (read[i] >= mesh.element_count() || mesh.element(read[i]) != read_vertices[i]) return false;
-    return true;
-  }
+  bool current(const Mesh<D>& mesh) const { return made && elements_unchanged<D>(mesh, read, read_vertices); }
 };
 
 // After a split: the new vertex v onto its nearest neighbour, when their edge is short.

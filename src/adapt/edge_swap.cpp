@@ -12,6 +12,7 @@
 #include "adapt/conflict_batches.hpp"
 #include "base/small_set.hpp"
 #include "mesh/ball_and_shell.hpp"
+#include "mesh/element_snapshot.hpp"
 
 namespace hocav {
 namespace {
@@ -53,12 +54,7 @@ struct SwapCavity {
   std::vector<Index> elements, apexes;
   std::vector<typename Mesh<D>::Element> vertices;
 
-  bool current(const Mesh<D>& mesh) const {
-    if (elements.empty()) return false;
-    for (std::size_t i = 0; i < elements.size(); ++i)
-      if (elements[i] >= mesh.element_count() || mesh.element(elements[i]) != vertices[i]) return false;
-    return true;
-  }
+  bool current(const Mesh<D>& mesh) const { return !elements.empty() && elements_unchanged<D>(mesh, elements, vertices); }
 };
 
 // The worst quality below which a cavity is judged. 3D shells of more elements rarely gain unless

@@ -65,7 +65,8 @@ bool sees_face(const Mesh<D>& mesh, Index k, int face, const Vec<D>& x) {
   double longest2 = 0;
   for (int i = 0; i <= D; ++i)
     for (int j = 0; j < i; ++j) longest2 = std::max(longest2, dot(points[i] - points[j], points[i] - points[j]));
-  return measure > kVisibleMeasure * std::pow(longest2, 0.5 * D);
+  const double longest_power = D == 2 ? longest2 : longest2 * std::sqrt(longest2);  // |longest|^D without pow
+  return measure > kVisibleMeasure * longest_power;
 }
 
 // Whether x sees every face of element k on the cavity's boundary.

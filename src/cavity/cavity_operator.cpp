@@ -53,15 +53,16 @@ struct LocalEdges {
 template <int D>
 constexpr LocalEdges<D> kLocalEdge{};
 
+// The length of the element's longest edge to the power D, the scale of its measure.
 template <int D>
-double longest_edge(const Mesh<D>& mesh, const typename Mesh<D>::Element& element, const Vec<D>& extra, bool use_extra) {
-  double longest = 0;
+double longest_edge_power(const Mesh<D>& mesh, const typename Mesh<D>::Element& element) {
+  double longest2 = 0;
   for (int i = 0; i <= D; ++i)
     for (int j = 0; j < i; ++j) {
-      Vec<D> p = (use_extra && i == 0) ? extra : mesh.vertex(element[i]);
-      longest = std::max(longest, norm(p - mesh.vertex(element[j])));
+      const Vec<D> e = mesh.vertex(element[i]) - mesh.vertex(element[j]);
+      longest2 = std::max(longest2, dot(e, e));
     }
-  return longest;
+  return D == 2 ? longest2 : longest2 * std::sqrt(longest2);  // one root, no pow: the test runs for every planned element
 }
 
 }  // namespace
@@ -156,8 +157,7 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
         measure = signed_measure(p[0], p[1], p[2]);
       else
         measure = signed_measure(p[0], p[1], p[2], p[3]);
-      if (!(measure > options.min_relative_measure * std::pow(longest_edge(mesh, element, p[0], false), D)))
-        return CavityStatus::kNonPositiveMeasure;
+      if (!(measure > options.min_relative_measure * longest_edge_power(mesh, element))) return CavityStatus::kNonPositiveMeasure;
     }
 
   if (mesh.has_edges() && mesh.edge_count() > 0) return plan_edges(mesh);
