@@ -52,8 +52,9 @@ class Case:
 
 # mmg's torus and metric as shipped; the UGAWG "linear" field from the 6,000-tet cube; a boundary
 # layer on both walls of the sphere shell (README's demo metric: 0.01 across, 0.1 along, graded
-# 1.5); an anisotropic layer (10:1) across the sphere r = 0.75 inside the shell; and the same two
-# in the annulus for mmg2d.
+# 1.5); an anisotropic layer (10:1) across the sphere r = 0.75 inside the shell; a structured
+# boundary-layer shell (layers on both walls, first layer 0.003) in its own implied metric, which
+# changes by up to 100 across one element; and the sphere shell's two metrics in the annulus for mmg2d.
 def case_list():
     surface = ["--surface", "0.01,0.1", "--gradation", "1.5"]
     surface_2d = ["--surface", "0.005,0.05", "--gradation", "1.5"]
@@ -65,6 +66,8 @@ def case_list():
                                  ["metric", "start.mesh", *surface, "-o", "start.sol"]]),
         Case("shear-sphere", 3, [["generate", "sphere-shell", "--h", "0.1", "-o", "start.mesh"]],
              analytic=["--analytic", "shear-sphere", "--h-min", "0.01"], iterations=3),
+        Case("bl-shell-implied", 3, [["generate", "cubed-shell-bl-both", "--target-tets", "8000", "--first-layer", "0.003", "-o", "start.mesh"],
+                                     ["metric", "start.mesh", "--implied", "-o", "start.sol"]]),
         Case("annulus", 2, [["generate", "annulus", "--h", "0.05", "-o", "start.mesh"],
                             ["metric", "start.mesh", *surface_2d, "-o", "start.sol"]]),
         Case("shear-circle", 2, [["generate", "annulus", "--h", "0.05", "-o", "start.mesh"]],
