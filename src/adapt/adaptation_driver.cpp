@@ -170,6 +170,7 @@ std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector
 template <int D>
 AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job, const std::string& name) {
   mesh.forget_edges();
+  mesh.orient_boundary_facets_outward();  // before the geometry is made of them: the loop orients them so too
   const auto setup = set_up_adaptation(mesh, std::move(metrics), job, name);
   AdaptedMesh<D> adapted = adapt_in_metric(mesh, *setup->metric, setup->geometry.get(), setup->settings, job.loop);
   adapted.report.hausdorff_bounded_vertices = setup->hausdorff_bounded_vertices;

@@ -13,6 +13,7 @@ AdaptationMesh<D>::AdaptationMesh(Mesh<D>& mesh, const AdaptationMetric<D>& metr
                                   double feature_angle_degrees)
     : mesh_(mesh), metric_(metric), geometry_(geometry) {
   mesh_.compact();
+  mesh_.orient_boundary_facets_outward();  // as the cavity operator makes them: its boundary tests compare the two
   metric_attribute_ = mesh_.add_vertex_attribute(SymMat<D>::kEntryCount);
   class_attribute_ = mesh_.add_vertex_attribute(1);
   hint_attribute_ = mesh_.add_vertex_attribute(1);

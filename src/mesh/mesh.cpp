@@ -309,6 +309,23 @@ void Mesh<D>::build_topology() {
 }
 
 template <int D>
+void Mesh<D>::orient_boundary_facets_outward() {
+  for (Index f = 0; f < facet_count(); ++f) {
+    if (facet_removed(f)) continue;
+    const Index k = facet_element_face_[f] / (D + 1);
+    const int face = static_cast<int>(facet_element_face_[f] % (D + 1));
+    if (neighbor(k, face) != kNoIndex) continue;
+    Facet outward;
+    for (int i = 0; i < D; ++i) outward[i] = elements_[k][hocav::face_vertices<D>(face)[i]];
+    Facet& facet = facets_[f];
+    // The same orientation: 2D the same first vertex, 3D a rotation of the outward face.
+    const auto first = static_cast<int>(std::find(facet.begin(), facet.end(), outward[0]) - facet.begin());
+    const bool same = D == 2 ? first == 0 : facet[(first + 1) % D] == outward[1];
+    if (!same) std::swap(facet[0], facet[1]);
+  }
+}
+
+template <int D>
 Index Mesh<D>::append_element(const Element& vertices, int ref) {
   // Derived arrays that were complete before stay complete.
   bool had_topology = adjacency_.size() == elements_.size();

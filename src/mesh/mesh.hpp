@@ -145,6 +145,11 @@ class Mesh {
   // shared by more than two elements or a facet that is no element face.
   void build_topology();
   bool has_topology() const { return adjacency_.size() == elements_.size() && !elements_.empty(); }
+  // Orders every facet on the domain's boundary (no element across its face) as that face of its
+  // element: outward, the elements being positive. The file formats leave a facet's orientation
+  // free, and gmsh's surfaces come either way; the operators orient the facets they make outward.
+  // Needs the topology.
+  void orient_boundary_facets_outward();
   // The element across face `face` of element k, or kNoIndex on the boundary of the domain.
   Index neighbor(Index k, int face) const { return adjacency_[k][face]; }
   // An element incident to vertex v (kNoIndex for a vertex no element uses).
