@@ -208,6 +208,7 @@ void serve_adaptation(const AdaptOptions& o) {
 template <int D>
 void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, OutputSet& outputs) {
   check_mesh_or_warn(mesh, o.input);
+  mesh.orient_boundary_facets_outward();  // before the parts are cut: each rank's geometry as the serial run's
   std::vector<SymMat<D>> metrics = vertex_metrics(mesh, file, o);
   AdaptationJob<D> job = adaptation_job<D>(o);
   std::vector<DistributedIteration> iterations;
