@@ -11,6 +11,7 @@
 #include "geom/sym_eigen.hpp"
 #include "io/node_metrics.hpp"
 #include "mesh/measure.hpp"
+#include "mesh/open_boundary.hpp"
 #include "metric/gradation.hpp"
 
 namespace hocav {
@@ -168,9 +169,16 @@ std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector
 }
 
 template <int D>
+void prepare_boundary(Mesh<D>& mesh, const std::string& name, const std::function<void(const std::string&)>& warn) {
+  if (const Index added = add_facets_on_open_faces(mesh, 0); added > 0 && warn)
+    warn(name + ": " + std::to_string(added) + " boundary faces had no facet: facets of ref 0 made for them");
+  mesh.orient_boundary_facets_outward();
+}
+
+template <int D>
 AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job, const std::string& name) {
   mesh.forget_edges();
-  mesh.orient_boundary_facets_outward();  // before the geometry is made of them: the loop orients them so too
+  prepare_boundary(mesh, name, job.warn);  // before the geometry is made of it
   const auto setup = set_up_adaptation(mesh, std::move(metrics), job, name);
   AdaptedMesh<D> adapted = adapt_in_metric(mesh, *setup->metric, setup->geometry.get(), setup->settings, job.loop);
   adapted.report.hausdorff_bounded_vertices = setup->hausdorff_bounded_vertices;
@@ -186,6 +194,8 @@ AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics,
   return adapted;
 }
 
+template void prepare_boundary(Mesh<2>&, const std::string&, const std::function<void(const std::string&)>&);
+template void prepare_boundary(Mesh<3>&, const std::string&, const std::function<void(const std::string&)>&);
 template AdaptedMesh<2> run_adaptation_job(Mesh<2>&, std::vector<SymMat<2>>, const AdaptationJob<2>&, const std::string&);
 template AdaptedMesh<3> run_adaptation_job(Mesh<3>&, std::vector<SymMat<3>>, const AdaptationJob<3>&, const std::string&);
 template std::unique_ptr<AdaptationSetup<2>> set_up_adaptation(Mesh<2>, std::vector<SymMat<2>>, const AdaptationJob<2>&,

@@ -99,6 +99,13 @@ template <int D>
 std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job,
                                                       const std::string& name);
 
+// The input's boundary as the loop needs it: a facet on every face of the domain's boundary (made
+// with ref 0 where the input gives none, said through `warn`, which may be empty) and every
+// boundary facet ordered outward (the cavity operator makes them so, and the boundary tests
+// compare the two). The adaptation does it itself; a caller that cuts the mesh first does it before.
+template <int D>
+void prepare_boundary(Mesh<D>& mesh, const std::string& name, const std::function<void(const std::string&)>& warn);
+
 // Runs `job` on `mesh` (P1 or P2, whose nodes are dropped), `metrics` the metric at its vertices
 // (empty with an analytic metric). `name` names the mesh in errors (a job too large for the memory).
 template <int D>

@@ -207,8 +207,8 @@ void serve_adaptation(const AdaptOptions& o) {
 
 template <int D>
 void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, OutputSet& outputs) {
-  check_mesh_or_warn(mesh, o.input);
-  mesh.orient_boundary_facets_outward();  // before the parts are cut: each rank's geometry as the serial run's
+  prepare_boundary<D>(mesh, o.input, [](const std::string& warning) { std::cerr << "hocav: warning: " << warning << '\n'; });
+  check_mesh_or_warn(mesh, o.input);  // (prepared before the parts are cut: each rank's geometry is the serial run's)
   std::vector<SymMat<D>> metrics = vertex_metrics(mesh, file, o);
   AdaptationJob<D> job = adaptation_job<D>(o);
   std::vector<DistributedIteration> iterations;
