@@ -15,6 +15,7 @@
 #include "binding.hpp"
 #include "io/node_metrics.hpp"
 #include "mesh/input_check.hpp"
+#include "mesh/open_boundary.hpp"
 #include "report/curved_vtu.hpp"
 #include "report/mesh_statistics.hpp"
 
@@ -110,8 +111,9 @@ py::tuple curve(const PyMesh& input_mesh, const DoubleArray& metric, const std::
     options.passes = passes;
     options.threads = threads.value_or(every_core());
     const GeometryMaker<D> make_geometry = geometry_maker<D>(surface);
-    warn(check_input_mesh(input, "mesh"));
     Mesh<D> mesh = input;  // a Mesh never changes: the result is a new one
+    warn(close_open_boundary(mesh, "mesh"));
+    warn(check_input_mesh(mesh, "mesh"));
     std::ostringstream report;
     {
       py::gil_scoped_release release;

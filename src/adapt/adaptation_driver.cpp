@@ -170,8 +170,7 @@ std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector
 
 template <int D>
 void prepare_boundary(Mesh<D>& mesh, const std::string& name, const std::function<void(const std::string&)>& warn) {
-  if (const Index added = add_facets_on_open_faces(mesh, 0); added > 0 && warn)
-    warn(name + ": " + std::to_string(added) + " boundary faces had no facet: facets of ref 0 made for them");
+  if (const std::string closed = close_open_boundary(mesh, name); !closed.empty() && warn) warn(closed);
   mesh.orient_boundary_facets_outward();
 }
 

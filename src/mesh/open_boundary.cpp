@@ -21,7 +21,16 @@ Index add_facets_on_open_faces(Mesh<D>& mesh, int ref) {
   return static_cast<Index>(open.size());
 }
 
+template <int D>
+std::string close_open_boundary(Mesh<D>& mesh, const std::string& name) {
+  const Index added = add_facets_on_open_faces(mesh, 0);
+  if (added == 0) return "";
+  return name + ": " + std::to_string(added) + " boundary faces had no facet: facets of ref 0 made for them";
+}
+
 template Index add_facets_on_open_faces(Mesh<2>&, int);
 template Index add_facets_on_open_faces(Mesh<3>&, int);
+template std::string close_open_boundary(Mesh<2>&, const std::string&);
+template std::string close_open_boundary(Mesh<3>&, const std::string&);
 
 }  // namespace hocav

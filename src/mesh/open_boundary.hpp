@@ -3,6 +3,8 @@
 // without them the adaptation takes the boundary's vertices for inner ones.
 #pragma once
 
+#include <string>
+
 #include "mesh/mesh.hpp"
 
 namespace hocav {
@@ -11,5 +13,10 @@ namespace hocav {
 // (as the face of its element), and rebuilds the topology when it adds any. Returns how many.
 template <int D>
 Index add_facets_on_open_faces(Mesh<D>& mesh, int ref);
+
+// The same with ref 0, for an input mesh: returns the warning to show (naming `name`, the input),
+// or "" when every boundary face had its facet.
+template <int D>
+std::string close_open_boundary(Mesh<D>& mesh, const std::string& name);
 
 }  // namespace hocav

@@ -187,27 +187,6 @@ TEST_F(AdaptCli, BoundaryFacetsGivenInwardAdaptAsOutward) {
   }
 }
 
-// The text of a .mesh file without its block `keyword` (the facets).
-std::string without_block(const std::string& text, const std::string& keyword) {
-  std::istringstream in(text);
-  std::ostringstream out;
-  std::string line;
-  int to_skip = 0;  // lines of the block left: its count's, then its entries'
-  while (std::getline(in, line)) {
-    if (line == keyword) {
-      std::getline(in, line);
-      to_skip = std::stoi(line);
-      continue;
-    }
-    if (to_skip > 0) {
-      --to_skip;
-      continue;
-    }
-    out << line << '\n';
-  }
-  return out.str();
-}
-
 // A volume mesh given without its boundary facets (as mesh generators often write one) gets facets
 // of ref 0 on its open faces, with a warning, and adapts as with them; before, its boundary
 // vertices were taken for inner ones (the cube: 72.1% unit, minimum quality 0.000, to the pass cap).

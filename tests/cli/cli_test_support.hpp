@@ -78,6 +78,27 @@ inline std::vector<std::vector<double>> gamma_block(const std::string& text, con
   return rows;
 }
 
+// The text of a .mesh file without its block `keyword` (the facets).
+inline std::string without_block(const std::string& text, const std::string& keyword) {
+  std::istringstream in(text);
+  std::ostringstream out;
+  std::string line;
+  int to_skip = 0;  // lines of the block left: its count's, then its entries'
+  while (std::getline(in, line)) {
+    if (line == keyword) {
+      std::getline(in, line);
+      to_skip = std::stoi(line);
+      continue;
+    }
+    if (to_skip > 0) {
+      --to_skip;
+      continue;
+    }
+    out << line << '\n';
+  }
+  return out.str();
+}
+
 class Cli : public ::testing::Test {
  protected:
   void SetUp() override {

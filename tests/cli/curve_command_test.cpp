@@ -37,6 +37,22 @@ class CurveCli : public Cli {
   }
 };
 
+// A mesh given without its boundary facets gets facets of ref 0 on its open faces, with a warning,
+// and curves as with them (the same Jacobian figures); before, that boundary stayed straight.
+TEST_F(CurveCli, AMeshWithoutItsFacetsGetsThemAndCurvesItsBoundary) {
+  run_ok("generate polar-annulus --target-triangles 400 -o whole.mesh");
+  write("bare.mesh", without_block(read("whole.mesh"), "Edges"));
+  run_ok("metric whole.mesh --analytic shear-circle -o metric.sol");
+  run_ok("curve whole.mesh --metric metric.sol -o whole_curved.meshb --report whole.json -q");
+  const auto bare = run("curve bare.mesh --metric metric.sol -o bare_curved.meshb --report report.json");
+  ASSERT_EQ(bare.exit_code, 0) << bare.err;
+  EXPECT_NE(bare.err.find("bare.mesh: "), std::string::npos) << bare.err;
+  EXPECT_NE(bare.err.find(" boundary faces had no facet: facets of ref 0 made for them"), std::string::npos) << bare.err;
+  EXPECT_GT(report_value("d[\"cavities\"][\"boundary_nodes_applied\"]"), 0);
+  const std::string jacobian = "d[\"normalized_jacobian\"][\"min\"], d[\"normalized_jacobian\"][\"avg\"]";
+  EXPECT_EQ(json_value("report.json", jacobian), json_value("whole.json", jacobian));
+}
+
 TEST_F(CurveCli, AnnulusInACircularShearLayer) {
   HOCAV_SKIP_WITHOUT_GMSH();
   run_ok("generate annulus --h 0.05 -o annulus.meshb");
