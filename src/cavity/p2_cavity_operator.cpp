@@ -5,6 +5,7 @@
 #include <chrono>
 #include <utility>
 
+#include "base/bisection.hpp"
 #include "bezier/jacobian_bounds.hpp"
 #include "curve/curved_quality.hpp"
 #include "mesh/ball_and_shell.hpp"
@@ -354,13 +355,10 @@ bool P2CavityOperator<D>::correct(const Candidate& candidate) {
       set_factor(1);
       continue;
     }
-    double good = 0, bad = 1;
-    for (int step = 0; step < options_.correction_steps; ++step) {
-      double middle = 0.5 * (good + bad);
-      set_factor(middle);
-      (certified(candidate) ? good : bad) = middle;
-    }
-    set_factor(good);
+    set_factor(largest_fraction_holding(options_.correction_steps, [&](double factor) {
+      set_factor(factor);
+      return certified(candidate);
+    }));
     return true;
   }
   return false;
