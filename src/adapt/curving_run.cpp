@@ -37,7 +37,8 @@ CurvingWork curve_unmeasured(Mesh<D>& mesh, const MetricField<D>& field, const B
   work.result = curve_by_reinsertion<D>(mesh, field, boundary_nodes ? &*boundary_nodes : nullptr, options);
   if (proposals) {
     work.completion = complete_boundary_proposals<D>(
-        mesh, *proposals, {.jacobian_floor = options.cavity.jacobian_floor, .correction_steps = options.cavity.correction_steps});
+        mesh, *proposals,
+        {.jacobian_floor = options.cavity.jacobian_floor, .field = &field, .correction_steps = options.cavity.correction_steps});
     work.result.seconds += work.completion.seconds;
     work.proposals_left = static_cast<Index>(proposals->size());
   }

@@ -46,6 +46,8 @@ void add_completion(ProposalCompletion& sum, const ProposalCompletion& part) {
   sum.pulled_back += part.pulled_back;
   sum.blocked += part.blocked;
   sum.absent += part.absent;
+  sum.bends += part.bends;
+  sum.volume_nodes_bent += part.volume_nodes_bent;
   sum.largest_gap = std::max(sum.largest_gap, part.largest_gap);
   sum.elements_certified += part.elements_certified;
   sum.sweeps = std::max(sum.sweeps, part.sweeps);

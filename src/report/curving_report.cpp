@@ -138,6 +138,7 @@ void write_curving_report_object(JsonWriter& json, const CurvingReport& report) 
   json.key("boundary_completion").begin_object();
   json.member("placed", b.placed).member("already_placed", b.already_placed);
   json.member("pulled_back", b.pulled_back).member("blocked", b.blocked).member("absent", b.absent);
+  json.member("bends", b.bends).member("volume_nodes_bent", b.volume_nodes_bent);
   json.member("largest_gap", b.largest_gap).member("elements_certified", b.elements_certified);
   json.member("sweeps", b.sweeps).member("seconds", b.seconds);
   json.end_object();
@@ -180,6 +181,7 @@ void write_curving_report_table(std::ostream& out, const CurvingReport& report) 
   row("boundary nodes applied / left", "%lld / %d", report.counters.boundary_nodes_applied, report.boundary_proposals_left);
   const ProposalCompletion& b = report.boundary_completion;
   row("  placed by the last pass", "%d (+%d already there)", b.placed, b.already_placed);
+  row("  layers bent / their nodes", "%d / %d", b.bends, b.volume_nodes_bent);
   row("  left: pulled back / blocked", "%d / %d (largest gap %.2g)", b.pulled_back, b.blocked, b.largest_gap);
 }
 
