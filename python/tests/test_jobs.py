@@ -73,6 +73,20 @@ def test_adapt_refuses_what_the_command_refuses(ring):
         hocav.adapt(mesh, analytic="uniform", surface="sphere")
     with pytest.raises(hocav.Error, match="curved adapts the curved mesh: it needs order 2"):
         hocav.adapt(mesh, analytic="uniform", order=1, curved=True)
+    with pytest.raises(hocav.Error, match="hausd_relative: a finite number >= 0"):
+        hocav.adapt(mesh, analytic="uniform", hausd_relative=-1)
+
+
+def test_adapt_hausd_relative_gives_the_commands_mesh(tmp_path):
+    layers = tmp_path / "layers.meshb"
+    run_cli("generate", "polar-annulus-bl-inner", "--target-triangles", "400", "-o", layers)
+    run_cli("metric", layers, "--implied", "-o", tmp_path / "m.sol")
+    run_cli("adapt", layers, "--metric", tmp_path / "m.sol", "--order", "1", "--hausd-relative", "0.5", "-o", tmp_path / "cli.meshb")
+    mesh = hocav.read(layers)
+    adapted, report = hocav.adapt(mesh, hocav.read_metric(tmp_path / "m.sol", mesh), order=1, hausd_relative=0.5)
+    hocav.write(tmp_path / "module.meshb", adapted)
+    assert (tmp_path / "cli.meshb").read_bytes() == (tmp_path / "module.meshb").read_bytes()
+    assert report["hausdorff_bounded_vertices"] > 0
 
 
 def test_the_commands_warnings_are_python_warnings(ring):

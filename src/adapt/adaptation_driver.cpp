@@ -120,7 +120,7 @@ void bound_analytic_metric(AdaptationSetup<D>& out, const Mesh<D>& input, const 
 
 template <int D>
 void make_job_metric(AdaptationSetup<D>& out, const Mesh<D>& input, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job) {
-  const HausdorffBound bound{out.settings.hausd, job.angle};
+  const HausdorffBound bound{out.settings.hausd, job.angle, job.hausd_relative};
   if (job.analytic && out.geometry) bound_analytic_metric(out, input, *job.analytic, bound);
   if (!job.analytic) {
     if (out.geometry) out.hausdorff_bounded_vertices = bound_metrics_by_hausdorff(input, metrics, *out.geometry, bound);
@@ -152,7 +152,7 @@ std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector
   setup->input = std::move(input);
   const Mesh<D>& back = setup->input;
   setup->geometry = job.geometry(back);
-  if (job.hausd && !setup->geometry && job.warn)
+  if ((job.hausd || job.hausd_relative > 0) && !setup->geometry && job.warn)
     job.warn("the Hausdorff bound (--hausd) bounds nothing without a boundary geometry (--surface none)");
   AdaptationSettings& settings = setup->settings;
   settings.max_passes = job.iterations;

@@ -58,6 +58,7 @@ struct AdaptationJob {
   SizeBounds bounds;
   std::optional<double> gradation;        // grades the given metric first
   std::optional<double> hausd;            // default kRelativeHausd × the input's bounding box diagonal
+  double hausd_relative = 0;              // HausdorffBound::relative_to_size (0: none)
   double angle = 45;                      // AdaptationSettings::feature_angle_degrees
   int iterations = 20;                    // AdaptationSettings::max_passes
   int threads = 1;                        // AdaptationSettings::threads

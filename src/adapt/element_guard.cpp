@@ -16,7 +16,8 @@ ElementGuard<D>::ElementGuard(const Mesh<D>& mesh, std::vector<Index> elements, 
   bars_.reserve(elements_.size());
   for (Index k : elements_) {
     const double before = quality(k);
-    bars_.push_back(std::max(0.7 * before, std::min(before, 0.1)));
+    // Less round-off: a node moved by 1e-16 must not be refused for a quality 1e-17 lower.
+    bars_.push_back(std::max(0.7 * before, std::min(before, 0.1)) - 1e-12);
   }
 }
 

@@ -178,6 +178,16 @@ SymMat<2> smooth_curve_metric(const Mesh<2>& mesh, const Vec2& normal, const std
   return SymMat<2>::identity() * std::max(curve_eigenvalue(largest, hausd), floor);
 }
 
+// The distance bound at a boundary vertex whose given metric is `given`.
+template <int D>
+double bound_at(const HausdorffBound& bound, const SymMat<D>& given) {
+  if (!(bound.relative_to_size > 0)) return bound.hausd;
+  const SymEigen<D> eigen = sym_eigen(given);
+  double largest = 0;
+  for (int k = 0; k < D; ++k) largest = std::max(largest, eigen.values[k]);
+  return std::min(bound.hausd, bound.relative_to_size / std::sqrt(largest));
+}
+
 template <int D>
 SymMat<D> isotropic(double eigenvalue) {
   return SymMat<D>::identity() * eigenvalue;
@@ -201,15 +211,16 @@ std::vector<SymMat<D>> hausdorff_metrics(const Mesh<D>& mesh, const BoundaryGeom
   for (Index v = 0; v < mesh.vertex_count(); ++v) {
     const std::vector<Index>& around = at[static_cast<std::size_t>(v)];
     if (around.empty()) continue;
+    const double hausd = bound_at(bound, given[static_cast<std::size_t>(v)]);
     std::optional<SymMat<D>> metric;
     if (classes[static_cast<std::size_t>(v)] == VertexClass::kSurface) {
       const Vec<D> normal = geometry.normal(mesh.vertex(v), {edges[static_cast<std::size_t>(around.front())].ref});
       if constexpr (D == 3)
-        metric = smooth_surface_metric(mesh, v, normal, edges, around, bound.hausd, floor);
+        metric = smooth_surface_metric(mesh, v, normal, edges, around, hausd, floor);
       else
-        metric = smooth_curve_metric(mesh, normal, edges, around, bound.hausd, floor);
+        metric = smooth_curve_metric(mesh, normal, edges, around, hausd, floor);
     }
-    if (!metric) metric = isotropic<D>(std::max(isotropic_eigenvalue(mesh, edges, around, bound.hausd), floor));
+    if (!metric) metric = isotropic<D>(std::max(isotropic_eigenvalue(mesh, edges, around, hausd), floor));
     if (within_bound(given[static_cast<std::size_t>(v)], *metric) == given[static_cast<std::size_t>(v)]) continue;
     metrics[static_cast<std::size_t>(v)] = *metric;
     finer = true;

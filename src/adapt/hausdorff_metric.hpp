@@ -17,6 +17,9 @@ namespace hocav {
 struct HausdorffBound {
   double hausd = 0;                   // > 0
   double feature_angle_degrees = 45;  // ridges and corners as the loop finds them (AdaptationSettings)
+  // When > 0, at each boundary vertex also at most this times the smallest size the given metric
+  // asks there (docs/adaptation.md §The Hausdorff bound: a wall's sag within its first layer).
+  double relative_to_size = 0;
 };
 
 // The bound at every vertex of `mesh` (P1, with its boundary facets), `given` the metric at its

@@ -1,6 +1,6 @@
 // hocav adapt IN --metric SOL | --analytic NAME | --hessian FIELD --complexity N [--norm P]
 //                | --surface-sizes HN,HT | --implied -o OUT [--order 2|1] [--hmin H] [--hmax H]
-//                [--hgrad BETA] [--hausd D] [--angle DEG] [--surface p3|cad:FILE|none]
+//                [--hgrad BETA] [--hausd D] [--hausd-relative C] [--angle DEG] [--surface p3|cad:FILE|none]
 //                [--curved] [--jacobian-floor J] [--iterations N] [--threads N] [--partition-seed S] [--report R.json]
 //                [--vtu V.vtu]
 // Metric-based adaptation to a unit mesh (split, collapse, swap, smooth; boundary points on the
@@ -42,6 +42,7 @@ struct AdaptOptions {
   int order = 2;
   std::optional<double> h_min, h_max, gradation;
   std::optional<double> hausd_given;
+  double hausd_relative = 0;
   double angle = 45;
   double jacobian_floor = 0.01;
   int iterations = 20;
@@ -110,6 +111,7 @@ AdaptationJob<D> adaptation_job(const AdaptOptions& o) {
   job.bounds = {o.h_min.value_or(0), o.h_max.value_or(1e300)};
   job.gradation = o.gradation;
   job.hausd = o.hausd_given;
+  job.hausd_relative = o.hausd_relative;
   job.angle = o.angle;
   job.iterations = o.iterations;
   job.threads = o.threads;
@@ -287,6 +289,11 @@ void add_adapt_command(CLI::App& app) {
       ->add_option("--hausd", o->hausd_given,
                    "bound on the distance from the boundary to the geometry: the metric is refined along curved boundaries, and no "
                    "collapse or move puts a facet farther (default 0.01 x the bounding box's diagonal)")
+      ->check(finite_positive());
+  command
+      ->add_option("--hausd-relative", o->hausd_relative,
+                   "also bound that distance at each boundary vertex by C x the smallest size the metric asks there (0.5 keeps a "
+                   "curved wall's sag within its first layer, so that the curving can put the wall on the geometry; default: none)")
       ->check(finite_positive());
   command->add_option("--angle", o->angle, "boundary sides meeting at more than this dihedral angle are ridges (degrees)")
       ->check(finite_range(0.0, 180.0, "0 to 180"))

@@ -108,6 +108,47 @@ TEST(HausdorffMetric, IsNothingWhereTheGivenMetricIsFiner) {
   for (const SymMat<3>& metric : bound) EXPECT_NEAR(spd_eigen(metric).values[2], diagonal_eigenvalue, 1e-12);
 }
 
+// A metric of layers around the origin: size `across` along the radius, 100 along the spheres.
+template <int D>
+std::vector<SymMat<D>> layered(const Mesh<D>& mesh, double across) {
+  std::vector<SymMat<D>> metrics;
+  for (const Vec<D>& x : mesh.vertices()) {
+    const Vec<D> n = x * (1 / norm(x));
+    SymMat<D> m = SymMat<D>::identity() * 1e-4;
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j <= i; ++j) m(i, j) += (1 / (across * across) - 1e-4) * n[i] * n[j];
+    metrics.push_back(m);
+  }
+  return metrics;
+}
+
+// Whether two lists of metrics agree to round-off (each entry within 1e-9 of the matrix's largest).
+template <int D>
+bool agree(const std::vector<SymMat<D>>& a, const std::vector<SymMat<D>>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t v = 0; v < a.size(); ++v)
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j <= i; ++j)
+        if (std::abs(a[v](i, j) - b[v](i, j)) > 1e-9 * spd_eigen(b[v]).values[D - 1]) return false;
+  return true;
+}
+
+// The relative bound: at each boundary vertex the distance is also at most C times the smallest
+// size the metric asks there, so a loose hausd with C = 0.5 over layers of 0.004 asks what hausd
+// 0.002 asks, and nothing without C.
+TEST(HausdorffMetric, TheRelativeBoundIsTheBoundOfThatFractionOfTheSizeAcross) {
+  const std::array<double, 3> radii{kInner, 0.75, kOuter};
+  const Mesh<3> mesh = generate_cubed_sphere_shell(6, radii);
+  const AnalyticBoundary<3> geometry = concentric_shell_boundary<3>(kInner, kOuter);
+  const std::vector<SymMat<3>> given = layered(mesh, 0.004);
+  EXPECT_TRUE(agree(hausdorff_metrics<3>(mesh, geometry, {100, 45, 0.5}, given), hausdorff_metrics<3>(mesh, geometry, {0.002, 45}, given)));
+  const double diagonal_eigenvalue = 1 / (4 * 3.0);  // asks nothing: the sizes of the box's diagonal
+  for (const SymMat<3>& metric : hausdorff_metrics<3>(mesh, geometry, {100, 45}, given))
+    EXPECT_NEAR(spd_eigen(metric).values[2], diagonal_eigenvalue, 1e-12);
+  // Where C times the given metric's smallest size is above hausd, hausd holds, bit for bit.
+  EXPECT_EQ(hausdorff_metrics<3>(mesh, geometry, {1e-3, 45, 0.5}, given), hausdorff_metrics<3>(mesh, geometry, {1e-3, 45}, given));
+}
+
 TEST(HausdorffMetric, WithinBoundIsTheIntersectionOrTheMetricItself) {
   const SymMat<2> fine = SymMat<2>::identity() * 100.0;
   const SymMat<2> bound = SymMat<2>::from_diagonal({{50, 200}});

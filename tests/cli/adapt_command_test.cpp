@@ -103,6 +103,28 @@ TEST_F(AdaptCli, TheHausdorffBoundRefinesACoarseCircle) {
   EXPECT_NE(none.err.find("(--hausd) bounds nothing without a boundary geometry"), std::string::npos) << none.err;
 }
 
+// --hausd-relative bounds the sag of a curved wall by a fraction of the size across it: under the
+// thin layers of a boundary-layer annulus it refines the wall where a loose --hausd asks nothing.
+TEST_F(AdaptCli, TheRelativeHausdorffBoundRefinesAWallUnderThinLayers) {
+  run_ok("generate polar-annulus-bl-inner --target-triangles 400 -o layers.meshb");
+  run_ok("metric layers.meshb --implied -o layers.solb");
+  const auto adapt = [&](const std::string& options) {
+    run_ok("adapt layers.meshb --metric layers.solb --order 1 -q -o adapted.meshb --report report.json --hausd 1 " + options);
+    return std::pair(report_value("d[\"hausdorff_bounded_vertices\"]"), report_value("d[\"output_elements\"]"));
+  };
+  const auto [loose_bounded, loose_elements] = adapt("");
+  const auto [relative_bounded, relative_elements] = adapt("--hausd-relative 0.5");
+  EXPECT_EQ(loose_bounded, 0);
+  EXPECT_GT(relative_bounded, 0);
+  EXPECT_GT(relative_elements, loose_elements);
+  for (const char* bad : {"0", "-1", "nan"}) {
+    const Outcome refused = run(std::string("adapt layers.meshb --metric layers.solb -o refused.meshb --hausd-relative ") + bad);
+    EXPECT_EQ(refused.exit_code, 2) << bad;
+    EXPECT_NE(refused.err.find("--hausd-relative"), std::string::npos) << refused.err;
+    EXPECT_FALSE(fs::exists(path("refused.meshb")));
+  }
+}
+
 // The sources of `hocav metric` given to `hocav adapt` directly: the same output, byte for byte, as the
 // metric written by `hocav metric` and adapted from the file. (The surface sizes with a loose
 // --hausd: the bound comes before --hgrad, which `hocav metric --gradation` has applied already.)
