@@ -12,6 +12,7 @@
 #include "mesh/consistency.hpp"
 #include "mesh/measure.hpp"
 #include "pinched_mesh.hpp"
+#include "turned_facets.hpp"
 
 namespace hocav {
 namespace {
@@ -39,27 +40,11 @@ TEST(Mesh, SquareCountsAndConsistency) {
   EXPECT_EQ(check_consistency(mesh, options), std::vector<std::string>{});
 }
 
-// A copy of `mesh` (vertices, elements, facets) with every other facet turned inward (its first two
-// vertices swapped): the file formats leave a facet's orientation free.
-template <int D>
-Mesh<D> with_facets_turned(const Mesh<D>& mesh) {
-  Mesh<D> turned;
-  for (const auto& p : mesh.vertices()) turned.add_vertex(p);
-  for (Index k = 0; k < mesh.element_count(); ++k) turned.add_element(mesh.element(k), mesh.element_ref(k));
-  for (Index f = 0; f < mesh.facet_count(); ++f) {
-    auto facet = mesh.facet(f);
-    if (f % 2 == 0) std::swap(facet[0], facet[1]);
-    turned.add_facet(facet, mesh.facet_ref(f));
-  }
-  turned.build_topology();
-  return turned;
-}
-
 // The generated meshes' facets are outward; turned and oriented again, each is as it was (3D: up to
 // a rotation, the same vertices in the same cyclic order).
 template <int D>
 void expect_facets_oriented_outward(const Mesh<D>& mesh) {
-  Mesh<D> turned = with_facets_turned(mesh);
+  Mesh<D> turned = mesh_test::with_facets_turned(mesh, 2);
   const auto cyclic = [](auto facet) {  // 3D: the rotation that starts at the smallest vertex (2D: as it is)
     if constexpr (D == 3) std::rotate(facet.begin(), std::min_element(facet.begin(), facet.end()), facet.end());
     return facet;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "../mesh/turned_facets.hpp"
 #include "base/error.hpp"
 #include "metric_test_support.hpp"
 
@@ -28,22 +29,9 @@ TEST(SurfaceMetric, NormalsOfTheSquareAreOutwardAndAreaWeighted) {
   expect_near(normals[vertex_at(mesh, Vec2{{0.5, 0.5}})], Vec2{});
 }
 
-// The cube with its boundary facets listed in both orientations at random: normals are outward anyway.
-Mesh<3> cube_with_shuffled_facets(int cells) {
-  Mesh<3> cube = generate_cube(cells), mesh;
-  for (const auto& x : cube.vertices()) mesh.add_vertex(x);
-  for (const auto& element : cube.elements()) mesh.add_element(element, 1);
-  for (Index f = 0; f < cube.facet_count(); ++f) {
-    auto facet = cube.facet(f);
-    if (f % 3 == 0) std::swap(facet[1], facet[2]);
-    mesh.add_facet(facet, cube.facet_ref(f));
-  }
-  mesh.build_topology();
-  return mesh;
-}
-
 TEST(SurfaceMetric, NormalsOfTheCubeAreOutwardWhateverTheFacetOrientation) {
-  Mesh<3> mesh = cube_with_shuffled_facets(2);
+  // Every third facet of the cube listed in the other orientation.
+  Mesh<3> mesh = mesh_test::with_facets_turned(generate_cube(2), 3);
   auto normals = boundary_vertex_normals(mesh);
   expect_near(normals[vertex_at(mesh, Vec3{{0.5, 0.5, 0}})], Vec3{{0, 0, -1}});
   expect_near(normals[vertex_at(mesh, Vec3{{1, 0.5, 0.5}})], Vec3{{1, 0, 0}});
