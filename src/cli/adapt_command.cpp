@@ -70,8 +70,7 @@ void check_options(const AdaptOptions& o) {
 
 // A loop stopped by --iterations is worth a warning (non_convergence_summary says why).
 void warn_if_not_converged(const AdaptOptions& o, const AdaptationReport& report) {
-  if (const std::string why = non_convergence_summary(report); !why.empty())
-    std::cerr << "hocav adapt: warning: " << o.input << ": " << why << '\n';
+  if (const std::string why = non_convergence_summary(report); !why.empty()) warn_on_stderr(o.input + ": " + why);
 }
 
 // The metric source as warnings name it.
@@ -117,7 +116,7 @@ AdaptationJob<D> adaptation_job(const AdaptOptions& o) {
   job.threads = o.threads;
   job.measure_output = !o.quiet || !o.report.empty();  // (what -q would not print)
   job.metric_name = metric_source_name(o);
-  job.warn = [](const std::string& warning) { std::cerr << "hocav adapt: warning: " << warning << '\n'; };
+  job.warn = warn_on_stderr;
   if (o.order == 2) {
     job.curving.emplace();
     job.curving->jacobian_floor = o.jacobian_floor;
@@ -209,7 +208,7 @@ void serve_adaptation(const AdaptOptions& o) {
 
 template <int D>
 void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, OutputSet& outputs) {
-  prepare_boundary<D>(mesh, o.input, [](const std::string& warning) { std::cerr << "hocav: warning: " << warning << '\n'; });
+  prepare_boundary<D>(mesh, o.input, warn_on_stderr);
   check_mesh_or_warn(mesh, o.input);  // (prepared before the parts are cut: each rank's geometry is the serial run's)
   std::vector<SymMat<D>> metrics = vertex_metrics(mesh, file, o);
   AdaptationJob<D> job = adaptation_job<D>(o);

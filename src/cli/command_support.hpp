@@ -1,4 +1,4 @@
-// What the commands share: the input mesh's check with its warning, the progress line of a
+// What the commands share: their warnings, the input mesh's check, the progress line of a
 // curving run and the line of a distributed curving's round. The rest they share is the library's, which each command includes itself
 // (io/node_metrics.hpp, report/curved_vtu.hpp, report/mesh_summary.hpp, surface/boundary_choice.hpp).
 #pragma once
@@ -14,10 +14,13 @@
 
 namespace hocav {
 
+// A warning of the commands on stderr: one line, "hocav: warning: " and what it says.
+inline void warn_on_stderr(const std::string& warning) { std::cerr << "hocav: warning: " << warning << '\n'; }
+
 // check_input_mesh, its defects (which the operators work around) as a warning on stderr.
 template <int D>
 void check_mesh_or_warn(const Mesh<D>& mesh, const std::string& path) {
-  if (const std::string defects = check_input_mesh(mesh, path); !defects.empty()) std::cerr << "hocav: warning: " << defects << '\n';
+  if (const std::string defects = check_input_mesh(mesh, path); !defects.empty()) warn_on_stderr(defects);
 }
 
 // The progress line of a curving of a mesh on stderr: drawn when wanted, stderr is a terminal and the

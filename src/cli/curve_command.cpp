@@ -80,8 +80,7 @@ void serve_curving(const CurveOptions& options) {
 template <int D>
 void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& options, OutputSet& outputs) {
   // A boundary face without a facet would stay straight: it gets one (before the parts are cut).
-  if (const std::string closed = close_open_boundary(mesh, options.input); !closed.empty())
-    std::cerr << "hocav: warning: " << closed << '\n';
+  if (const std::string closed = close_open_boundary(mesh, options.input); !closed.empty()) warn_on_stderr(closed);
   check_mesh_or_warn(mesh, options.input);
   check_memory_fits("curving " + options.input, mesh.element_count(), kCurvingBytesPerElement);
   const MetricField<D> field(mesh, metrics_of_rows<D>(read_metric_for_mesh(options.metric, file, false)));
