@@ -29,9 +29,8 @@ std::vector<double> read_scalar_for_mesh(const std::string& solution_path, const
   if (content.dimension != dimension_of(mesh_file.mesh))
     throw Error(solution_path + ": Dimension: the solution is " + std::to_string(content.dimension) + "D but the mesh is " +
                 std::to_string(dimension_of(mesh_file.mesh)) + "D");
-  auto scalar = std::find_if(content.fields.begin(), content.fields.end(),
-                             [](const SolutionField& field) { return field.kind == SolutionKind::kScalar; });
-  if (scalar == content.fields.end()) throw Error(solution_path + ": SolAtVertices: no scalar field (type 1)");
+  const SolutionField* scalar = content.first_of_kind(SolutionKind::kScalar);
+  if (!scalar) throw Error(solution_path + ": SolAtVertices: no scalar field (type 1)");
   if (scalar->count() != mesh_file.file_node_count)
     throw Error(solution_path + ": SolAtVertices: " + std::to_string(scalar->count()) + " values for a mesh of " +
                 std::to_string(mesh_file.file_node_count) + " nodes");

@@ -131,13 +131,15 @@ void write_solution_file(const std::string& path, const SolutionFileContent& con
                    content);
 }
 
+const SolutionField* SolutionFileContent::first_of_kind(SolutionKind kind) const {
+  for (const SolutionField& field : fields)
+    if (field.kind == kind && (kind != SolutionKind::kSymmetricMatrix || field.dimension == dimension)) return &field;
+  return nullptr;
+}
+
 void add_metric_of_sizes(SolutionFileContent& content, const std::string& path) {
-  const auto of_kind = [&](SolutionKind kind) {
-    return std::find_if(content.fields.begin(), content.fields.end(), [&](const SolutionField& field) { return field.kind == kind; });
-  };
-  const auto matrix = of_kind(SolutionKind::kSymmetricMatrix);
-  const auto sizes = of_kind(SolutionKind::kScalar);
-  if ((matrix != content.fields.end() && matrix->dimension == content.dimension) || sizes == content.fields.end()) return;
+  const SolutionField* sizes = content.first_of_kind(SolutionKind::kScalar);
+  if (content.first_of_kind(SolutionKind::kSymmetricMatrix) || !sizes) return;
   const int d = content.dimension;
   SolutionField metric{SolutionKind::kSymmetricMatrix, d, {}};
   metric.values.reserve(sizes->values.size() * static_cast<std::size_t>(d * (d + 1) / 2));
@@ -157,12 +159,7 @@ const SolutionField& checked_metric_field(const SolutionFileContent& content, co
   if (content.dimension != dimension)
     throw Error(path + ": Dimension: the solution is " + std::to_string(content.dimension) + "D but the mesh is " +
                 std::to_string(dimension) + "D");
-  const SolutionField* metric = nullptr;
-  for (const SolutionField& field : content.fields)
-    if (field.kind == SolutionKind::kSymmetricMatrix && field.dimension == dimension) {
-      metric = &field;
-      break;
-    }
+  const SolutionField* metric = content.first_of_kind(SolutionKind::kSymmetricMatrix);
   if (!metric) throw Error(path + ": SolAtVertices: no symmetric-matrix field (type 3), so no metric");
   if (metric->count() != file_node_count)
     throw Error(path + ": SolAtVertices: " + std::to_string(metric->count()) + " metrics for a mesh of " + std::to_string(file_node_count) +

@@ -25,6 +25,9 @@ struct SolutionFileContent {
   int dimension = 3;
   Index count = 0;  // the number of rows (file nodes)
   std::vector<SolutionField> fields;
+
+  // The first field of this kind (a matrix one of the content's dimension), or null.
+  const SolutionField* first_of_kind(SolutionKind kind) const;
 };
 
 // Reads a .sol/.solb file. Throws Error naming file, keyword and line/entity on malformed input.
