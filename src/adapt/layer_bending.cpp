@@ -75,11 +75,10 @@ class Bend {
     const Index edge = mesh_.find_edge(a, b);
     const auto target = proposals_.find(a, b);
     if (edge == kNoIndex || !target) return {};
-    reach_ = options_.reach_in_moves * norm(*target - mesh_.edge_node(edge));
     const Vec<D> center = 0.5 * (mesh_.vertex(a) + mesh_.vertex(b));
+    reach_ = options_.reach_in_bows * bow(a, b, *target);
     const auto patch = patch_around(mesh_, shell, center, 0.5 * norm(mesh_.vertex(b) - mesh_.vertex(a)) + reach_);
     plan_wall_moves(facets_of(mesh_, patch));
-    for (const auto& m : moves_) reach_ = std::max(reach_, options_.reach_in_moves * norm(m.move));
     plan_volume_moves(patch);
     guard_.emplace(mesh_, moved_elements(), options_.jacobian_floor, options_.field);
     return made();
@@ -96,10 +95,20 @@ class Bend {
           if (edge == kNoIndex || planned(edge)) continue;
           const auto target = proposals_.find(vertices[i], vertices[j]);
           plan(edge, target ? *target - mesh_.edge_node(edge) : Vec<D>{});
-          if (target) result_.wall_edges.push_back({vertices[i], vertices[j]});
+          if (!target) continue;
+          result_.wall_edges.push_back({vertices[i], vertices[j]});
+          reach_ = std::max(reach_, options_.reach_in_bows * bow(vertices[i], vertices[j], *target));
         }
       wall_.push_back(f);
     }
+  }
+
+  // How far the wall edge (a, b) bows at its proposal: from the chord's middle, or from its node when
+  // that is farther. The layers above must follow the whole bow, also where a cavity placed the node
+  // part of the way and left them behind.
+  double bow(Index a, Index b, const Vec<D>& target) const {
+    const Vec<D> middle = 0.5 * (mesh_.vertex(a) + mesh_.vertex(b));
+    return std::max(norm(target - middle), norm(target - mesh_.edge_node(mesh_.find_edge(a, b))));
   }
 
   // A volume edge's node moves by the wall's P2 displacement at its foot (the closest point of the

@@ -2,9 +2,9 @@
 // the first layer can be thinner than a wall edge's sag, so the wall's node cannot reach the
 // geometry while the edges above it stay where they are. A bend moves the wall's nodes around the
 // edge to their proposals and the nodes of the volume edges above them by the wall's P2
-// displacement at their foot, faded to zero at a reach of a few times the largest move. Every
-// element holding a moved node is certified (and keeps most of its quality in the metric); a failing bend moves by the largest common
-// fraction that certifies (bisection), or not at all.
+// displacement at their foot, faded to zero at a reach of a few times the wall edges' bow. Every
+// element holding a moved node is certified (and keeps most of its quality in the metric); a
+// failing bend moves by the largest common fraction that certifies (bisection), or not at all.
 #pragma once
 
 #include <vector>
@@ -21,8 +21,8 @@ struct LayerBendOptions {
   // With a metric, each element a bend changes also keeps its curved quality (docs/curving.md §Curved
   // quality) at least max(0.7 q, min(q, 0.1)), q its quality before, as the boundary settling does.
   const MetricField<D>* field = nullptr;
-  int correction_steps = 4;   // bisection steps of the common fraction
-  double reach_in_moves = 4;  // the volume's moves fade to zero this many wall moves from the wall
+  int correction_steps = 4;  // bisection steps of the common fraction
+  double reach_in_bows = 4;  // the volume's moves fade to zero this many times the wall edges' bow from the wall
 };
 
 struct LayerBend {

@@ -3,9 +3,11 @@
 // vertex's ball holds one of the edge's elements, which misses every edge whose elements have all
 // their vertices on the boundary (along ridges, in thin walls), and a cavity may have applied a
 // proposal only in part. This pass takes every proposal left, in a fixed order, and moves its edge's
-// node toward it: in full when every element around the edge certifies above the Jacobian floor,
-// else by the largest fraction (bisection) that does. Sweeps repeat while they make progress, since
-// a node placed may free a neighbour blocked by an element they share.
+// node toward it: in full when every element around the edge passes (element_guard.hpp: certified
+// above the Jacobian floor, and with a metric most of its curved quality kept), else with the
+// layers above it bent along (layer_bending.hpp), else alone by the largest fraction (bisection)
+// that passes. Sweeps repeat while they make progress, since a node placed may free a neighbour
+// blocked by an element they share.
 #pragma once
 
 #include "mesh/mesh.hpp"
