@@ -17,6 +17,7 @@
 #include "binding.hpp"
 #include "io/node_metrics.hpp"
 #include "mesh/input_check.hpp"
+#include "mesh/inverted_input.hpp"
 #include "mesh/open_boundary.hpp"
 #include "report/curved_vtu.hpp"
 #include "report/mesh_statistics.hpp"
@@ -114,6 +115,7 @@ py::tuple curve(const PyMesh& input_mesh, const DoubleArray& metric, const std::
     options.threads = threads.value_or(every_core());
     const GeometryMaker<D> make_geometry = geometry_maker<D>(surface);
     Mesh<D> mesh = input;  // a Mesh never changes: the result is a new one
+    warn(reorient_inverted_mesh(mesh, "mesh"));
     warn(close_open_boundary(mesh, "mesh"));
     warn(check_input_mesh(mesh, "mesh"));
     std::ostringstream report;
@@ -181,11 +183,12 @@ py::tuple adapt(const PyMesh& mesh, const AdaptArguments& a) {
     constexpr int D = kDimensionOf<std::decay_t<decltype(input)>>;
     std::vector<SymMat<D>> metrics;
     if (a.metric) metrics = metrics_of_array<D>(*a.metric, input.vertex_count(), "metric");
-    warn(check_input_mesh(input, "mesh"));
+    Mesh<D> output = input;
+    prepare_boundary<D>(output, "mesh", warn);  // as the command does, before the check
+    warn(check_input_mesh(output, "mesh"));
     AdaptationJob<D> job = adaptation_job<D>(a);
     std::vector<std::string> warnings;  // given to Python once it holds the GIL again
     job.warn = [&warnings](const std::string& warning) { warnings.push_back(warning); };
-    Mesh<D> output = input;
     std::ostringstream report;
     {
       py::gil_scoped_release release;

@@ -97,6 +97,21 @@ def test_the_commands_warnings_are_python_warnings(ring):
         hocav.adapt(mesh, analytic="linear", hmin=1e-12, iterations=1, order=1)
 
 
+def test_a_mesh_given_all_inverted_is_reoriented_with_a_warning(tmp_path):
+    square = ("MeshVersionFormatted 2\nDimension 2\nVertices\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
+              "Triangles\n2\n1 {} 1\n1 {} 1\nEdges\n4\n1 2 1\n2 3 1\n3 4 1\n4 1 1\nEnd\n")
+    (tmp_path / "inverted.mesh").write_text(square.format("3 2", "4 3"))
+    (tmp_path / "square.mesh").write_text(square.format("2 3", "3 4"))
+    inverted, positive = hocav.read(tmp_path / "inverted.mesh"), hocav.read(tmp_path / "square.mesh")
+    with pytest.warns(UserWarning, match="every one of its 2 elements is negatively oriented"):
+        adapted = hocav.adapt(inverted, analytic="uniform", order=1)[0]
+    hocav.write(tmp_path / "turned.meshb", adapted)
+    hocav.write(tmp_path / "straight.meshb", hocav.adapt(positive, analytic="uniform", order=1)[0])
+    assert (tmp_path / "turned.meshb").read_bytes() == (tmp_path / "straight.meshb").read_bytes()
+    with pytest.warns(UserWarning, match="negatively oriented"):
+        hocav.curve(inverted, hocav.analytic_metric(inverted, "uniform"))
+
+
 @pytest.mark.parametrize("arguments, call", [
     (["--analytic", "linear", "--h-min", "0.01"], lambda m: hocav.analytic_metric(m, "linear", h_min=0.01)),
     (["--implied"], hocav.implied_metric),

@@ -100,7 +100,8 @@ template <int D>
 std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job,
                                                       const std::string& name);
 
-// The input's boundary as the loop needs it: a facet on every face of the domain's boundary (made
+// The input as the loop needs it: its elements positive (a mesh given all inverted is reoriented,
+// said through `warn`), a facet on every face of the domain's boundary (made
 // with ref 0 where the input gives none, said through `warn`, which may be empty) and every
 // boundary facet ordered outward (the cavity operator makes them so, and the boundary tests
 // compare the two). The adaptation does it itself; a caller that cuts the mesh first does it before.

@@ -14,6 +14,7 @@
 #include "io/atomic_output.hpp"
 #include "io/node_metrics.hpp"
 #include "io/output_set.hpp"
+#include "mesh/inverted_input.hpp"
 #include "mesh/open_boundary.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_curving.hpp"
@@ -80,6 +81,7 @@ void serve_curving(const CurveOptions& options) {
 template <int D>
 void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& options, OutputSet& outputs) {
   // A boundary face without a facet would stay straight: it gets one (before the parts are cut).
+  if (const std::string turned = reorient_inverted_mesh(mesh, options.input); !turned.empty()) warn_on_stderr(turned);
   if (const std::string closed = close_open_boundary(mesh, options.input); !closed.empty()) warn_on_stderr(closed);
   check_mesh_or_warn(mesh, options.input);
   check_memory_fits("curving " + options.input, mesh.element_count(), kCurvingBytesPerElement);

@@ -296,6 +296,36 @@ TEST_F(CarefulUser, CurveRefusesAnInconsistentMeshAsStatsDoesAndNamesTheProblem)
   EXPECT_FALSE(fs::exists(path("out.meshb")));
 }
 
+// The square with both triangles listed clockwise (a mesh written with the other orientation
+// convention), and with one of them only (a defect).
+constexpr const char* kInvertedSquare =
+    "MeshVersionFormatted 2\nDimension 2\nVertices\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
+    "Triangles\n2\n1 3 2 1\n1 4 3 1\nEdges\n4\n1 2 1\n2 3 1\n3 4 1\n4 1 1\nEnd\n";
+constexpr const char* kHalfInvertedSquare =
+    "MeshVersionFormatted 2\nDimension 2\nVertices\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
+    "Triangles\n2\n1 3 2 1\n1 3 4 1\nEdges\n4\n1 2 1\n2 3 1\n3 4 1\n4 1 1\nEnd\n";
+constexpr const char* kSquare =
+    "MeshVersionFormatted 2\nDimension 2\nVertices\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
+    "Triangles\n2\n1 2 3 1\n1 3 4 1\nEdges\n4\n1 2 1\n2 3 1\n3 4 1\n4 1 1\nEnd\n";
+
+TEST_F(CarefulUser, AMeshGivenAllInvertedIsReorientedAsMmgDoesAndAHalfInvertedOneRefused) {
+  write("inverted.mesh", kInvertedSquare);
+  write("half.mesh", kHalfInvertedSquare);
+  write("square.mesh", kSquare);
+  write("unit.sol", kUnitMetric);
+  const std::string warning =
+      "hocav: warning: inverted.mesh: every one of its 2 elements is negatively oriented (the other convention): reoriented";
+  for (const char* command : {"adapt", "curve"}) {
+    SCOPED_TRACE(command);
+    const Outcome turned = run_ok(std::string(command) + " inverted.mesh --metric unit.sol -o turned.meshb -q");
+    EXPECT_NE(turned.err.find(warning), std::string::npos) << turned.err;
+    run_ok(std::string(command) + " square.mesh --metric unit.sol -o straight.meshb -q");
+    EXPECT_EQ(read("turned.meshb"), read("straight.meshb"));
+    expect_clean_failure(std::string(command) + " half.mesh --metric unit.sol -o half.meshb", "half.mesh: inconsistent mesh");
+    EXPECT_FALSE(fs::exists(path("half.meshb")));
+  }
+}
+
 TEST_F(CarefulUser, CurveAndStatsNameTheDefectsOfAnOpenMesh) {
   write("open.mesh", kOpenBoundary);
   write("unit.sol", kUnitMetric);

@@ -1,0 +1,29 @@
+#include "mesh/inverted_input.hpp"
+
+#include <utility>
+
+#include "mesh/measure.hpp"
+
+namespace hocav {
+
+template <int D>
+std::string reorient_inverted_mesh(Mesh<D>& mesh, const std::string& name) {
+  if (mesh.is_p2() || mesh.element_count() == 0) return "";
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    if (!(element_measure(mesh, k) < 0)) return "";
+  const bool had_topology = mesh.has_topology(), had_edges = mesh.has_edges() && mesh.edge_count() > 0;
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    auto vertices = mesh.element(k);
+    std::swap(vertices[D - 1], vertices[D]);
+    mesh.set_element(k, vertices, mesh.element_ref(k));
+  }
+  if (had_edges) mesh.build_edges();  // the elements' local edges follow their vertices
+  if (had_topology) mesh.build_topology();
+  return name + ": every one of its " + std::to_string(mesh.element_count()) +
+         " elements is negatively oriented (the other convention): reoriented";
+}
+
+template std::string reorient_inverted_mesh(Mesh<2>&, const std::string&);
+template std::string reorient_inverted_mesh(Mesh<3>&, const std::string&);
+
+}  // namespace hocav
