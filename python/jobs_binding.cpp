@@ -5,7 +5,6 @@
 // command's message, and its warnings are Python warnings.
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
-#include <cmath>
 
 #include <cmath>
 #include <sstream>
@@ -17,8 +16,6 @@
 #include "binding.hpp"
 #include "io/node_metrics.hpp"
 #include "mesh/input_check.hpp"
-#include "mesh/inverted_input.hpp"
-#include "mesh/open_boundary.hpp"
 #include "report/curved_vtu.hpp"
 #include "report/mesh_statistics.hpp"
 
@@ -115,8 +112,7 @@ py::tuple curve(const PyMesh& input_mesh, const DoubleArray& metric, const std::
     options.threads = threads.value_or(every_core());
     const GeometryMaker<D> make_geometry = geometry_maker<D>(surface);
     Mesh<D> mesh = input;  // a Mesh never changes: the result is a new one
-    warn(reorient_inverted_mesh(mesh, "mesh"));
-    warn(close_open_boundary(mesh, "mesh"));
+    prepare_input_mesh(mesh, "mesh", warn);
     warn(check_input_mesh(mesh, "mesh"));
     std::ostringstream report;
     {

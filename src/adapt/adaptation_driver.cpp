@@ -10,9 +10,8 @@
 #include "base/thread_pool.hpp"
 #include "geom/sym_eigen.hpp"
 #include "io/node_metrics.hpp"
-#include "mesh/inverted_input.hpp"
+#include "mesh/input_check.hpp"
 #include "mesh/measure.hpp"
-#include "mesh/open_boundary.hpp"
 #include "metric/gradation.hpp"
 
 namespace hocav {
@@ -171,8 +170,7 @@ std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector
 
 template <int D>
 void prepare_boundary(Mesh<D>& mesh, const std::string& name, const std::function<void(const std::string&)>& warn) {
-  if (const std::string turned = reorient_inverted_mesh(mesh, name); !turned.empty() && warn) warn(turned);
-  if (const std::string closed = close_open_boundary(mesh, name); !closed.empty() && warn) warn(closed);
+  prepare_input_mesh(mesh, name, warn);
   mesh.orient_boundary_facets_outward();
 }
 

@@ -182,10 +182,8 @@ SymMat<2> smooth_curve_metric(const Mesh<2>& mesh, const Vec2& normal, const std
 template <int D>
 double bound_at(const HausdorffBound& bound, const SymMat<D>& given) {
   if (!(bound.relative_to_size > 0)) return bound.hausd;
-  const SymEigen<D> eigen = sym_eigen(given);
-  double largest = 0;
-  for (int k = 0; k < D; ++k) largest = std::max(largest, eigen.values[k]);
-  return std::min(bound.hausd, bound.relative_to_size / std::sqrt(largest));
+  const double largest_eigenvalue = sym_eigen(given).values[D - 1];  // (ascending)
+  return std::min(bound.hausd, bound.relative_to_size / std::sqrt(largest_eigenvalue));
 }
 
 template <int D>

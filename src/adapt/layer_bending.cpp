@@ -70,11 +70,11 @@ class Bend {
       : mesh_(mesh), proposals_(proposals), options_(options) {}
 
   LayerBend run(Index a, Index b) {
-    std::vector<Index> shell;
-    collect_shell(mesh_, a, b, shell);
     const Index edge = mesh_.find_edge(a, b);
     const auto target = proposals_.find(a, b);
     if (edge == kNoIndex || !target) return {};
+    std::vector<Index> shell;
+    collect_shell(mesh_, a, b, shell);
     const Vec<D> center = 0.5 * (mesh_.vertex(a) + mesh_.vertex(b));
     reach_ = options_.reach_in_bows * bow(a, b, *target);
     const auto patch = patch_around(mesh_, shell, center, 0.5 * norm(mesh_.vertex(b) - mesh_.vertex(a)) + reach_);

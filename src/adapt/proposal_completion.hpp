@@ -19,7 +19,7 @@ namespace hocav {
 struct ProposalCompletion {
   Index placed = 0;             // proposals applied in full (consumed)
   Index already_placed = 0;     // the edge's node was the proposal already (consumed)
-  Index pulled_back = 0;        // left: moved only part of the way, the Jacobian floor forbids more
+  Index pulled_back = 0;        // left: moved only part of the way (ElementGuard forbids more)
   Index blocked = 0;            // left: not moved at all (an element around the edge fails at any fraction)
   Index absent = 0;             // left: the edge is not in the mesh any more
   Index bends = 0;              // layers bent with their wall so that its proposals could be placed
@@ -33,7 +33,7 @@ struct ProposalCompletion {
 template <int D>
 struct ProposalCompletionOptions {
   double jacobian_floor = 0.01;
-  const MetricField<D>* field = nullptr;  // when given, bends keep most of each element's curved quality
+  const MetricField<D>* field = nullptr;  // when given, every move keeps most of each element's curved quality
   int correction_steps = 4;               // bisection steps of the fraction (resolution 2^-steps)
   int max_sweeps = 4;
 };

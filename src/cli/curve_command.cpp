@@ -14,8 +14,6 @@
 #include "io/atomic_output.hpp"
 #include "io/node_metrics.hpp"
 #include "io/output_set.hpp"
-#include "mesh/inverted_input.hpp"
-#include "mesh/open_boundary.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_curving.hpp"
 #include "parallel/part_message.hpp"
@@ -80,9 +78,8 @@ void serve_curving(const CurveOptions& options) {
 
 template <int D>
 void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& options, OutputSet& outputs) {
-  // A boundary face without a facet would stay straight: it gets one (before the parts are cut).
-  if (const std::string turned = reorient_inverted_mesh(mesh, options.input); !turned.empty()) warn_on_stderr(turned);
-  if (const std::string closed = close_open_boundary(mesh, options.input); !closed.empty()) warn_on_stderr(closed);
+  // (Before the parts are cut; a boundary face without a facet would stay straight.)
+  prepare_input_mesh(mesh, options.input, warn_on_stderr);
   check_mesh_or_warn(mesh, options.input);
   check_memory_fits("curving " + options.input, mesh.element_count(), kCurvingBytesPerElement);
   const MetricField<D> field(mesh, metrics_of_rows<D>(read_metric_for_mesh(options.metric, file, false)));

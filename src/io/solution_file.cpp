@@ -1,8 +1,6 @@
 // Gamma solution files: SolAtVertices through the shared keyword readers and writers.
 #include "io/solution_file.hpp"
 
-#include <algorithm>
-
 #include <cmath>
 
 #include "base/error.hpp"

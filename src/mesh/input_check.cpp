@@ -2,7 +2,9 @@
 
 #include "base/error.hpp"
 #include "mesh/consistency.hpp"
+#include "mesh/inverted_input.hpp"
 #include "mesh/mesh_defects.hpp"
+#include "mesh/open_boundary.hpp"
 
 namespace hocav {
 
@@ -17,6 +19,14 @@ std::string check_input_mesh(const Mesh<D>& mesh, const std::string& path) {
   return defects.none() ? "" : path + ": " + defects.summary();
 }
 
+template <int D>
+void prepare_input_mesh(Mesh<D>& mesh, const std::string& path, const std::function<void(const std::string&)>& warn) {
+  for (const std::string& said : {reorient_inverted_mesh(mesh, path), close_open_boundary(mesh, path)})
+    if (!said.empty() && warn) warn(said);
+}
+
+template void prepare_input_mesh(Mesh<2>&, const std::string&, const std::function<void(const std::string&)>&);
+template void prepare_input_mesh(Mesh<3>&, const std::string&, const std::function<void(const std::string&)>&);
 template std::string check_input_mesh(const Mesh<2>&, const std::string&);
 template std::string check_input_mesh(const Mesh<3>&, const std::string&);
 
