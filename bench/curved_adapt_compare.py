@@ -2,7 +2,8 @@
 passes) on the same inputs, one run each (docs/benchmarks.md §Curved adaptation). Figures from each
 run's --report: the share of edges unit in their curved length and the curved mean ratio (min,
 mean; docs/curving.md §Curved quality), the min/avg normalized Jacobian, corrections and cavities
-rejected by the curving (the reinsertion's and the curved passes'), the curved passes' operations (collapses, splits, swaps, moves, and the passes),
+rejected by the curving (the reinsertion's and the curved passes'), the curved passes' operations (collapses, splits, swaps, moves, and the passes;
+the collapses, splits and moves made on the boundary),
 the command's wall time; and, for the cases bounded by circles or spheres centred at the origin,
 the distance of the output's boundary P2 nodes from the true circle or sphere (max and mean).
 
@@ -88,7 +89,8 @@ def measure(hocav, case, curved, threads, folder):
         row["corrections"] += passes["corrections"]
         row["rejected"] += passes["rejected_by_curving"]
         row["curved_ops"] = (*(sum(p[op]["done"] for p in passes["passes"]) for op in ("collapses", "splits", "swaps", "moves")),
-                             len(passes["passes"]))
+                             len(passes["passes"]),
+                             sum(p[op].get("boundary_done", 0) for p in passes["passes"] for op in ("collapses", "splits", "moves")))
     if radii:
         run(hocav, ["convert", output, output.replace(".meshb", ".vtu")], folder)
         row["boundary"] = boundary_node_errors(folder / output.replace(".meshb", ".vtu"), dimension, radii)
@@ -97,11 +99,11 @@ def measure(hocav, case, curved, threads, folder):
 
 def markdown(rows):
     lines = ["| case | run | elements | unit (curved length) | curved q mean / min | norm. Jacobian min / avg | boundary error max / mean "
-             "| corrections | rejected | curved collapses / splits / swaps / moves (passes) | time s |",
+             "| corrections | rejected | curved collapses / splits / swaps / moves (passes; on the boundary) | time s |",
              "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         boundary = f"{r['boundary'][0]:.2e} / {r['boundary'][1]:.2e}" if r["boundary"] else "n/a"
-        ops = " / ".join(f"{n:,}" for n in r["curved_ops"][:4]) + f" ({r['curved_ops'][4]})" if r["curved_ops"] else ""
+        ops = " / ".join(f"{n:,}" for n in r["curved_ops"][:4]) + f" ({r['curved_ops'][4]}; {r['curved_ops'][5]:,})" if r["curved_ops"] else ""
         lines.append(f"| {r['case']} | {r['run']} | {r['elements']:,} | {100 * r['unit']:.1f}% | {r['q_mean']:.3f} / {r['q_min']:.3f} "
                      f"| {r['j_min']:.4f} / {r['j_avg']:.3f} | {boundary} | {r['corrections']:,} | {r['rejected']:,} | {ops} "
                      f"| {r['seconds']:.1f} |")

@@ -74,9 +74,10 @@ void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGe
 }
 
 template <int D>
-void adapt_curved_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const CurvingOptions& options, int max_passes) {
+void adapt_curved_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const CurvingOptions& options, int max_passes,
+                       const CurvedPassGeometry<D>& geometry) {
   AdaptationReport& report = adapted.report;
-  report.curved_passes = adapt_curved(mesh, *adapted.field, cavity_options(options), max_passes, options.threads);
+  report.curved_passes = adapt_curved(mesh, *adapted.field, cavity_options(options), max_passes, options.threads, geometry);
   check_curved_consistency(mesh);
   report.output_vertices = mesh.vertex_count();
   report.output_elements = mesh.element_count();
@@ -187,7 +188,7 @@ AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics,
     setup->geometry.reset();                           // a CAD model is open once at a time (gmsh's one model per thread)
     const auto curving_geometry = job.geometry(mesh);  // of the adapted boundary
     curve_adapted_mesh(adapted, mesh, curving_geometry.get(), curving, job.curve);
-    if (job.curved) adapt_curved_mesh(adapted, mesh, curving, job.iterations);
+    if (job.curved) adapt_curved_mesh(adapted, mesh, curving, job.iterations, {curving_geometry.get(), job.angle});
     if (setup->settings.measure_output) adapted.report.curved_measures = measure_curved(mesh, *adapted.field, curving.threads);
   }
   return adapted;
@@ -205,8 +206,8 @@ template AdaptedMesh<2> adapt_in_metric(Mesh<2>&, const AdaptationMetric<2>&, co
                                         const AdaptationLoop<2>&);
 template AdaptedMesh<3> adapt_in_metric(Mesh<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*, const AdaptationSettings&,
                                         const AdaptationLoop<3>&);
-template void adapt_curved_mesh(AdaptedMesh<2>&, Mesh<2>&, const CurvingOptions&, int);
-template void adapt_curved_mesh(AdaptedMesh<3>&, Mesh<3>&, const CurvingOptions&, int);
+template void adapt_curved_mesh(AdaptedMesh<2>&, Mesh<2>&, const CurvingOptions&, int, const CurvedPassGeometry<2>&);
+template void adapt_curved_mesh(AdaptedMesh<3>&, Mesh<3>&, const CurvingOptions&, int, const CurvedPassGeometry<3>&);
 template void curve_adapted_mesh(AdaptedMesh<2>&, Mesh<2>&, const BoundaryGeometry<2>*, const CurvingOptions&, const CurvingStep<2>&);
 template void curve_adapted_mesh(AdaptedMesh<3>&, Mesh<3>&, const BoundaryGeometry<3>*, const CurvingOptions&, const CurvingStep<3>&);
 

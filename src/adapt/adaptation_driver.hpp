@@ -9,6 +9,7 @@
 #include <string>
 
 #include "adapt/adaptation_loop.hpp"
+#include "adapt/curved_adaptation.hpp"
 #include "adapt/curving_run.hpp"
 #include "report/adaptation_report.hpp"
 
@@ -45,10 +46,11 @@ template <int D>
 void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGeometry<D>* geometry, const CurvingOptions& options,
                         const CurvingStep<D>& curve = {});
 
-// Then runs at most `max_passes` curved passes on the curved `mesh` (adapt_curved, in `adapted.field`),
-// and measures the output again into the report.
+// Then runs at most `max_passes` curved passes on the curved `mesh` (adapt_curved, in `adapted.field`,
+// its boundary operations on `geometry`), and measures the output again into the report.
 template <int D>
-void adapt_curved_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const CurvingOptions& options, int max_passes);
+void adapt_curved_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const CurvingOptions& options, int max_passes,
+                       const CurvedPassGeometry<D>& geometry);
 
 // `hocav adapt`'s job with its options as values (docs/usage.md): the metric set up, the memory
 // checked, the adaptation, then (with `curving`) the curving.

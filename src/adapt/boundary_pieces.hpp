@@ -13,6 +13,10 @@ namespace hocav {
 template <int D>
 void facets_through(const Mesh<D>& mesh, std::span<const Index> elements, std::span<const Index> through, std::vector<Index>& out);
 
+// Whether one of these facets is required (RequiredTriangles in 3D; RequiredEdges, the facets, in 2D).
+template <int D>
+bool holds_required_facet(const Mesh<D>& mesh, std::span<const Index> facets);
+
 // 3D: the feature lines through v (a scan of the lines: they are few, and only ridge and corner
 // vertices ask).
 void lines_through(const Mesh<3>& mesh, Index v, std::vector<Index>& out);
@@ -25,6 +29,23 @@ void lines_along(const Mesh<3>& mesh, Index a, Index b, std::vector<Index>& out)
 // geometry and hausd > 0) each new facet's centroid lies within hausd of the geometry.
 template <int D>
 bool boundary_change_acceptable(const AdaptationMesh<D>& mesh, const CavityOperator<D>& plan, double cos_feature_angle, double hausd);
+
+// Whether a facet with these vertices turns by less than the feature angle from a facet of area
+// normal `old_normal`; and whether every new facet of a plan does from the facet it replaces.
+template <int D>
+bool turns_less(const Mesh<D>& mesh, const typename Mesh<D>::Facet& vertices, const Vec<D>& old_normal, double cos_feature_angle);
+template <int D>
+bool new_facets_turn_less(const Mesh<D>& mesh, const CavityOperator<D>& plan, double cos_feature_angle);
+
+// Whether the planned collapse of `removed` (its facets: `removed_facets`) onto `kept` folds the
+// surface: the link condition on the surface. The ends of a surface edge may share no surface
+// neighbour besides the far vertices of the edge's facets (else the collapse leaves an edge with four
+// facets, pinching the domain there), and no facet the plan creates may be one around `kept` already
+// (two facets on one face, each the boundary of elements on both sides of it: a boundary-layer
+// shell's inner wall did). `ball` and `kept_facets` are scratch.
+template <int D>
+bool collapse_folds_surface(const Mesh<D>& mesh, const CavityOperator<D>& plan, Index removed, Index kept,
+                            std::span<const Index> removed_facets, std::vector<Index>& ball, std::vector<Index>& kept_facets);
 
 // The same test for a facet of the mesh whose vertices moved: its normal against the one it had.
 template <int D>

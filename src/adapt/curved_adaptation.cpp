@@ -8,6 +8,7 @@
 #include <numeric>
 #include <optional>
 
+#include "adapt/curved_boundary.hpp"
 #include "adapt/reinsertion_curving.hpp"
 #include "base/thread_pool.hpp"
 #include "bezier/p2_element.hpp"
@@ -20,7 +21,7 @@ namespace hocav {
 void CurvedOperationCount::add(CavityStatus status) {
   if (status == CavityStatus::kAccepted)
     ++done;
-  else if (status == CavityStatus::kCrossesBoundary)
+  else if (status == CavityStatus::kCrossesBoundary || status == CavityStatus::kBoundaryGeometry)
     ++on_boundary;
   else if (status == CavityStatus::kNoImprovement)
     ++no_gain;
@@ -163,40 +164,66 @@ bool collapse_keeps_lengths(const Mesh<D>& mesh, const P2Operations<D>& operatio
   return std::all_of(ring.begin(), ring.end(), [&](Index w) { return operations.straight_length(kept, w) <= kSplitLength; });
 }
 
-// The P2 operator's verdict, or none when the collapse would make a long edge (not tried).
+// What a pass changes: the mesh, its operations, and (with a geometry) its boundary.
 template <int D>
-std::optional<CavityStatus> collapse(Mesh<D>& mesh, P2Operations<D>& operations, Index removed, Index kept, std::vector<Index>& ball,
-                                     std::vector<Index>& ring, double mesh_worst) {
-  collect_ball(mesh, removed, ball);
-  if (!collapse_keeps_lengths(mesh, operations, removed, kept, ball, ring)) return std::nullopt;
-  return operations.collapse_edge(removed, kept, {quality_to_keep(operations, ball, mesh_worst), -1});
+struct PassTools {
+  Mesh<D>& mesh;
+  P2Operations<D>& operations;
+  CurvedBoundary<D>* boundary;  // null: interior operations only
+  double mesh_worst;            // the mesh's worst curved quality at the pass's start
+};
+
+// A collapse's verdict: the P2 operator's, with whether it was placed on the boundary; none when
+// the collapse would make a long edge (not tried).
+struct CollapseVerdict {
+  CavityStatus status;
+  bool on_boundary;
+};
+template <int D>
+std::optional<CollapseVerdict> collapse(PassTools<D>& tools, Index removed, Index kept, std::vector<Index>& ball,
+                                        std::vector<Index>& ring) {
+  collect_ball(tools.mesh, removed, ball);
+  if (!collapse_keeps_lengths(tools.mesh, tools.operations, removed, kept, ball, ring)) return std::nullopt;
+  const auto placement = tools.boundary ? tools.boundary->collapse_placement(ball, removed, kept) : std::nullopt;
+  const typename P2Operations<D>::Bar bar{quality_to_keep(tools.operations, ball, tools.mesh_worst), -1};
+  return CollapseVerdict{tools.operations.collapse_edge(removed, kept, bar, placement ? &*placement : nullptr), placement.has_value()};
 }
 
 // Each short edge collapses one way or the other; a refusal counts the reason of the second try.
 template <int D>
-CurvedOperationCount collapse_short_curved_edges(Mesh<D>& mesh, P2Operations<D>& operations, double mesh_worst, ThreadPool& pool) {
+CurvedOperationCount collapse_short_curved_edges(PassTools<D>& tools, ThreadPool& pool) {
   CurvedOperationCount count;
   std::vector<Index> ball, ring;
-  for (const EdgeToFix& edge : edges_outside(mesh, operations, kCollapseLength, INFINITY, pool)) {
-    if (!still_edge_of_length(mesh, operations, edge, kCollapseLength, INFINITY)) continue;
-    std::optional<CavityStatus> status = collapse(mesh, operations, edge.a, edge.b, ball, ring, mesh_worst);
-    if (status != CavityStatus::kAccepted) status = collapse(mesh, operations, edge.b, edge.a, ball, ring, mesh_worst);
-    if (status)
-      count.add(*status);
-    else
+  for (const EdgeToFix& edge : edges_outside(tools.mesh, tools.operations, kCollapseLength, INFINITY, pool)) {
+    if (!still_edge_of_length(tools.mesh, tools.operations, edge, kCollapseLength, INFINITY)) continue;
+    std::optional<CollapseVerdict> verdict = collapse(tools, edge.a, edge.b, ball, ring);
+    if (!verdict || verdict->status != CavityStatus::kAccepted) verdict = collapse(tools, edge.b, edge.a, ball, ring);
+    if (!verdict) {
       ++count.too_long;
+      continue;
+    }
+    count.add(verdict->status);
+    count.boundary_done += verdict->status == CavityStatus::kAccepted && verdict->on_boundary;
   }
   return count;
 }
 
 template <int D>
-CurvedOperationCount split_long_curved_edges(Mesh<D>& mesh, P2Operations<D>& operations, double mesh_worst, ThreadPool& pool) {
+CurvedOperationCount split_long_curved_edges(PassTools<D>& tools, ThreadPool& pool) {
   CurvedOperationCount count;
   std::vector<Index> shell;
-  for (const EdgeToFix& edge : edges_outside(mesh, operations, -INFINITY, kSplitLength, pool)) {
-    if (!still_edge_of_length(mesh, operations, edge, -INFINITY, kSplitLength)) continue;
-    collect_shell(mesh, edge.a, edge.b, shell);
-    count.add(operations.split_edge(edge.a, edge.b, nullptr, {quality_to_keep(operations, shell, mesh_worst), -1}));
+  for (const EdgeToFix& edge : edges_outside(tools.mesh, tools.operations, -INFINITY, kSplitLength, pool)) {
+    if (!still_edge_of_length(tools.mesh, tools.operations, edge, -INFINITY, kSplitLength)) continue;
+    collect_shell(tools.mesh, edge.a, edge.b, shell);
+    const auto placement = tools.boundary ? tools.boundary->split_placement(shell, edge.a, edge.b) : std::nullopt;
+    const typename P2Operations<D>::Bar bar{quality_to_keep(tools.operations, shell, tools.mesh_worst), -1};
+    Index inserted = kNoIndex;
+    const CavityStatus status = tools.operations.split_edge(edge.a, edge.b, &inserted, bar, placement ? &*placement : nullptr);
+    count.add(status);
+    if (status == CavityStatus::kAccepted && placement) {
+      tools.boundary->add_surface_vertex(inserted);
+      ++count.boundary_done;
+    }
   }
   return count;
 }
@@ -254,30 +281,44 @@ CurvedOperationCount swap_poor_shells(Mesh<D>& mesh, P2Operations<D>& operations
   return count;
 }
 
-// The inner vertices of the poor elements, each once, in order.
+// The vertices of the poor elements that may move, each once, in order: the inner ones, and with a
+// boundary its surface vertices.
 template <int D>
-std::vector<Index> inner_vertices_of_poor_elements(const Mesh<D>& mesh, const P2Operations<D>& operations, ThreadPool& pool) {
-  std::vector<bool> inner(static_cast<std::size_t>(mesh.vertex_count()), false);
-  for (Index v : volume_vertices(mesh)) inner[static_cast<std::size_t>(v)] = !mesh.vertex_removed(v);
+std::vector<Index> movable_vertices_of_poor_elements(const PassTools<D>& tools, ThreadPool& pool) {
+  const Mesh<D>& mesh = tools.mesh;
+  std::vector<bool> movable(static_cast<std::size_t>(mesh.vertex_count()), false);
+  for (Index v : volume_vertices(mesh)) movable[static_cast<std::size_t>(v)] = !mesh.vertex_removed(v);
+  if (tools.boundary)
+    for (Index v = 0; v < mesh.vertex_count(); ++v)
+      if (!mesh.vertex_removed(v) && tools.boundary->surface_vertex(v)) movable[static_cast<std::size_t>(v)] = true;
   std::vector<Index> vertices;
-  for (Index k : poor_elements(mesh, operations, pool))
+  for (Index k : poor_elements(mesh, tools.operations, pool))
     for (Index v : mesh.element(k))
-      if (inner[static_cast<std::size_t>(v)]) vertices.push_back(v);
+      if (movable[static_cast<std::size_t>(v)]) vertices.push_back(v);
   std::sort(vertices.begin(), vertices.end());
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
   return vertices;
 }
 
-// Each inner vertex of a poor element moved toward the mean of the points that would make its
-// curved edges unit (w + (v − w)/l(v, w) over its neighbours w, as the P1 smoothing), the whole
-// step or half of it, when that raises its ball's worst curved quality and keeps its unit edges.
+// Each movable vertex of a poor element moved toward the mean of the points that would make its
+// curved edges unit (w + (v − w)/l(v, w) over its neighbours w, as the P1 smoothing; a surface
+// vertex to that point's closest point of its surface), the whole step or half of it, when that
+// raises its ball's worst curved quality and keeps its unit edges.
 template <int D>
-CurvedOperationCount smooth_curved(Mesh<D>& mesh, P2Operations<D>& operations, DigestMemo& refusals, ThreadPool& pool) {
+CurvedOperationCount smooth_curved(PassTools<D>& tools, DigestMemo& refusals, ThreadPool& pool) {
+  Mesh<D>& mesh = tools.mesh;
+  P2Operations<D>& operations = tools.operations;
   CurvedOperationCount count;
   std::vector<Index> ball, neighbors;
-  for (Index v : inner_vertices_of_poor_elements(mesh, operations, pool)) {
+  for (Index v : movable_vertices_of_poor_elements(tools, pool)) {
     collect_ball(mesh, v, ball);
-    count.add(unless_refused_before(refusals, cavity_digest(kMoveRefusal, mesh, operations, ball, {v}), [&] {
+    const bool on_surface = tools.boundary && tools.boundary->surface_vertex(v);
+    const auto placement = on_surface ? tools.boundary->move_placement(ball, v) : std::nullopt;
+    if (on_surface && !placement) {
+      ++count.on_boundary;
+      continue;
+    }
+    const CavityStatus status = unless_refused_before(refusals, cavity_digest(kMoveRefusal, mesh, operations, ball, {v}), [&] {
       other_vertices<D>(mesh, ball, v, v, neighbors);
       Vec<D> target{};
       int unit = 0;
@@ -288,11 +329,14 @@ CurvedOperationCount smooth_curved(Mesh<D>& mesh, P2Operations<D>& operations, D
       }
       const Vec<D> from = mesh.vertex(v), step = (1.0 / static_cast<double>(neighbors.size())) * target - from;
       const typename P2Operations<D>::Bar bar{kQualityGain * worst_quality(operations, ball), unit};
-      CavityStatus status = operations.move_vertex(v, from + step, bar);
-      if (status == CavityStatus::kNoImprovement || status == CavityStatus::kRejectedByCurving)
-        status = operations.move_vertex(v, from + 0.5 * step, bar);
-      return status;
-    }));
+      const BoundaryPlacement<D>* surface = placement ? &*placement : nullptr;
+      CavityStatus moved = operations.move_vertex(v, from + step, bar, surface);
+      if (moved == CavityStatus::kNoImprovement || moved == CavityStatus::kRejectedByCurving)
+        moved = operations.move_vertex(v, from + 0.5 * step, bar, surface);
+      return moved;
+    });
+    count.add(status);
+    count.boundary_done += status == CavityStatus::kAccepted && on_surface;
   }
   return count;
 }
@@ -301,20 +345,20 @@ CurvedOperationCount smooth_curved(Mesh<D>& mesh, P2Operations<D>& operations, D
 // The memo keeps the lengths and qualities measured in earlier passes: most edges and elements come
 // back unchanged, and each measure is a quadrature with a matrix exponential per point.
 template <int D>
-CurvedPass run_curved_pass(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, P2CavityCounters& counters,
-                           DigestMemo& measures, DigestMemo& refusals, ThreadPool& pool) {
+CurvedPass run_curved_pass(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, CurvedBoundary<D>* boundary,
+                           P2CavityCounters& counters, DigestMemo& measures, DigestMemo& refusals, ThreadPool& pool) {
   const auto start = std::chrono::steady_clock::now();
   CurvedPass pass;
   P2CavityOptions positive = options;
   positive.positive_straight_elements = true;
   positive.straight_quality_floor = kStraightQualityFloor;
   P2Operations<D> operations(mesh, field, nullptr, positive, &measures);
-  // (Collapses and splits keep it: it holds for the whole pass.)
-  const double mesh_worst = worst_element_quality(mesh, operations, pool);
-  pass.collapses = collapse_short_curved_edges(mesh, operations, mesh_worst, pool);
-  pass.splits = split_long_curved_edges(mesh, operations, mesh_worst, pool);
+  // (Collapses and splits keep the mesh's worst: it holds for the whole pass.)
+  PassTools<D> tools{mesh, operations, boundary, worst_element_quality(mesh, operations, pool)};
+  pass.collapses = collapse_short_curved_edges(tools, pool);
+  pass.splits = split_long_curved_edges(tools, pool);
   pass.swaps = swap_poor_shells(mesh, operations, refusals, pool);
-  pass.moves = smooth_curved(mesh, operations, refusals, pool);
+  pass.moves = smooth_curved(tools, refusals, pool);
   counters += operations.cavity_operator().counters();
   mesh.compact();
   pass.vertices = mesh.vertex_count();
@@ -326,12 +370,16 @@ CurvedPass run_curved_pass(Mesh<D>& mesh, const MetricField<D>& field, const P2C
 }  // namespace
 
 template <int D>
-CurvedAdaptationRun adapt_curved(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, int max_passes, int threads) {
+CurvedAdaptationRun adapt_curved(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, int max_passes, int threads,
+                                 const CurvedPassGeometry<D>& geometry) {
   CurvedAdaptationRun run;
   ThreadPool pool(std::max(1, threads));
   DigestMemo measures, refusals;
+  std::optional<CurvedBoundary<D>> boundary;
+  if (geometry.geometry) boundary.emplace(mesh, *geometry.geometry, geometry.feature_angle_degrees);
   for (int pass = 1; pass <= max_passes && !run.converged; ++pass) {
-    const CurvedPass& last = run.passes.emplace_back(run_curved_pass(mesh, field, options, run.counters, measures, refusals, pool));
+    const CurvedPass& last = run.passes.emplace_back(
+        run_curved_pass(mesh, field, options, boundary ? &*boundary : nullptr, run.counters, measures, refusals, pool));
     run.seconds += last.seconds;
     run.converged = static_cast<double>(last.splits.done + last.collapses.done) <= kConvergedChange * static_cast<double>(last.vertices);
   }
@@ -370,8 +418,8 @@ CurvedMeasures measure_curved(Mesh<D>& mesh, const MetricField<D>& field, int th
   return measures;
 }
 
-template CurvedAdaptationRun adapt_curved(Mesh<2>&, const MetricField<2>&, const P2CavityOptions&, int, int);
-template CurvedAdaptationRun adapt_curved(Mesh<3>&, const MetricField<3>&, const P2CavityOptions&, int, int);
+template CurvedAdaptationRun adapt_curved(Mesh<2>&, const MetricField<2>&, const P2CavityOptions&, int, int, const CurvedPassGeometry<2>&);
+template CurvedAdaptationRun adapt_curved(Mesh<3>&, const MetricField<3>&, const P2CavityOptions&, int, int, const CurvedPassGeometry<3>&);
 template CurvedMeasures measure_curved(Mesh<2>&, const MetricField<2>&, int);
 template CurvedMeasures measure_curved(Mesh<3>&, const MetricField<3>&, int);
 

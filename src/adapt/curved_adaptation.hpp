@@ -5,22 +5,27 @@
 // almost nothing. Every operation is a P2 cavity operation (cavity/p2_operations.hpp), so
 // the mesh stays P2 and certified above the Jacobian floor after each one. The operations are
 // serial (the scans that list candidates run on threads): the output does not depend on the thread
-// count. Interior only: boundary edges keep what the P1 loop made.
+// count. With a geometry, boundary edges are split and surface vertices collapsed and moved too,
+// their vertices and boundary nodes on the geometry (curved_boundary.hpp); swaps stay inside.
 #pragma once
 
 #include <vector>
 
 #include "cavity/p2_cavity_operator.hpp"
+#include "surface/boundary_geometry.hpp"
 
 namespace hocav {
 
 struct CurvedOperationCount {
   Index done = 0;
-  Index on_boundary = 0;  // refused: an edge or removed vertex on the boundary (left to the P1 loop)
-  Index too_long = 0;     // collapses refused: a straight segment to the kept vertex longer than √2
-  Index no_gain = 0;      // swaps and moves refused: the worst curved quality would not rise
-  Index flat = 0;         // refused: a new straight simplex below the straight quality floor
-  Index refused = 0;      // refused by the P2 operator otherwise (topology, or no certified curving)
+  Index boundary_done = 0;  // of those done, on the boundary (a boundary edge split, a surface vertex removed or moved)
+  // Refused: an edge or removed vertex on the boundary where no boundary operation applies (a feature
+  // line, a corner, no geometry), or whose new facets would turn or fold (CurvedBoundary).
+  Index on_boundary = 0;
+  Index too_long = 0;  // collapses refused: a straight segment to the kept vertex longer than √2
+  Index no_gain = 0;   // swaps and moves refused: the worst curved quality would not rise
+  Index flat = 0;      // refused: a new straight simplex below the straight quality floor
+  Index refused = 0;   // refused by the P2 operator otherwise (topology, or no certified curving)
 
   void add(CavityStatus status);
 };
@@ -47,13 +52,21 @@ struct CurvedMeasures {
   double quality_min = 0, quality_mean = 0;
 };
 
+// The boundary's geometry for the curved passes' boundary operations (null: interior only), and the
+// feature angle that classifies its vertices (as the P1 loop's --angle).
+template <int D>
+struct CurvedPassGeometry {
+  const BoundaryGeometry<D>* geometry = nullptr;
+  double feature_angle_degrees = 45;
+};
+
 // Runs at most `max_passes` curved passes on `mesh` (P2, certified above options.jacobian_floor,
 // with its topology), whose metric is `field`; the mesh is compact on return. The passes' scans of
 // the whole mesh (curved lengths, curved qualities) run on `threads`; the operations are serial, and
 // the output does not depend on the thread count.
 template <int D>
 CurvedAdaptationRun adapt_curved(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, int max_passes,
-                                 int threads = 1);
+                                 int threads = 1, const CurvedPassGeometry<D>& geometry = {});
 
 // Measured on `threads` threads; the same figures for any count.
 template <int D>

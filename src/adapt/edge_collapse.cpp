@@ -8,7 +8,6 @@
 
 #include "adapt/adaptation_operations.hpp"
 #include "adapt/boundary_pieces.hpp"
-#include "base/small_set.hpp"
 #include "mesh/ball_and_shell.hpp"
 
 namespace hocav {
@@ -97,37 +96,6 @@ std::array<Refusal, 2> pretest_both_ways(const AdaptationMesh<D>& am, const Edge
   return {forward, collapse_pretest(am, s.ball, c.b, c.a, limits, s)};
 }
 
-// Whether the collapse folds the surface: the link condition on the surface. The ends of a surface
-// edge may share no surface neighbour besides the far vertices of the edge's facets (else the
-// collapse leaves an edge with four facets, pinching the domain there), and no facet the plan
-// creates may be one around `kept` already (two facets on one face, each the boundary of elements
-// on both sides of it: a boundary-layer shell's inner wall did).
-template <int D>
-bool folds_surface(const Mesh<D>& mesh, const CavityOperator<D>& plan, Index removed, Index kept, CollapseScratch<D>& s) {
-  collect_ball(mesh, kept, s.ball);
-  const Index center[1] = {kept};
-  facets_through(mesh, std::span<const Index>(s.ball), center, s.kept_facets);
-  const auto kept_neighbor = [&](Index v) {
-    return std::any_of(s.kept_facets.begin(), s.kept_facets.end(), [&](Index f) { return small_set_holds(mesh.facet(f), v); });
-  };
-  for (Index f : s.facets) {
-    if (small_set_holds(mesh.facet(f), kept)) continue;  // its far vertex is the edge's: shared, as it should be
-    for (Index v : mesh.facet(f))
-      if (v != removed && kept_neighbor(v) && std::none_of(s.facets.begin(), s.facets.end(), [&](Index g) {
-            return small_set_holds(mesh.facet(g), kept) && small_set_holds(mesh.facet(g), v);
-          }))
-        return true;
-  }
-  const auto sorted = [](auto vertices) {
-    std::sort(vertices.begin(), vertices.end());
-    return vertices;
-  };
-  return std::any_of(plan.new_facets().begin(), plan.new_facets().end(), [&](const auto& created) {
-    const auto created_vertices = sorted(created.vertices);
-    return std::any_of(s.kept_facets.begin(), s.kept_facets.end(), [&](Index f) { return sorted(mesh.facet(f)) == created_vertices; });
-  });
-}
-
 }  // namespace
 
 template <int D>
@@ -141,7 +109,8 @@ Refusal collapse_edge(AdaptationMesh<D>& am, Index removed, Index kept, const Ad
   options.removed_facets = s.facets;
   options.removed_lines = s.lines;
   if (work.cavity_operator.plan(mesh, work.cavity, kept, options) != CavityStatus::kAccepted) return Refusal::kTopology;
-  if (!s.facets.empty() && folds_surface(mesh, work.cavity_operator, removed, kept, s)) return Refusal::kTopology;
+  if (!s.facets.empty() && collapse_folds_surface(mesh, work.cavity_operator, removed, kept, s.facets, s.ball, s.kept_facets))
+    return Refusal::kTopology;
   if (!s.facets.empty() && !boundary_change_acceptable(am, work.cavity_operator, limits.cos_feature_angle, limits.hausd))
     return Refusal::kGeometry;
   am.commit(work.cavity_operator);

@@ -98,8 +98,7 @@ EdgeSurfaces boundary_through_edge(const AdaptationMesh<D>& am, Index a, Index b
 template <int D>
 bool holds_required(const Mesh<D>& mesh, const SplitPreview<D>& p) {
   const auto listed = [](const std::vector<Index>& ids, Index id) { return std::find(ids.begin(), ids.end(), id) != ids.end(); };
-  const std::vector<Index>& required_facets = D == 2 ? mesh.required_edges() : mesh.required_triangles();
-  return std::any_of(p.facets.begin(), p.facets.end(), [&](Index f) { return listed(required_facets, f); }) ||
+  return holds_required_facet(mesh, p.facets) ||
          std::any_of(p.lines.begin(), p.lines.end(), [&](Index l) { return listed(mesh.required_edges(), l); });
 }
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "base/error.hpp"
 #include "mesh/ball_and_shell.hpp"
 #include "mesh/measure.hpp"
 
@@ -20,6 +19,7 @@ const char* to_string(CavityStatus status) {
     case CavityStatus::kRejectedByCurving: return "no valid curving";
     case CavityStatus::kNoImprovement: return "no quality improvement";
     case CavityStatus::kFlatStraightElement: return "near-flat straight element";
+    case CavityStatus::kBoundaryGeometry: return "new boundary off the geometry";
   }
   return "?";
 }
@@ -107,8 +107,6 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
   std::sort(removed_facets_.begin(), removed_facets_.end());
   removed_lines_.assign(options.removed_lines.begin(), options.removed_lines.end());
   std::sort(removed_lines_.begin(), removed_lines_.end());
-  if (!removed_facets_.empty() && mesh.has_edges() && mesh.edge_count() > 0)
-    throw Error("internal error: boundary cavities are for P1 meshes without an edge table");
   if (CavityStatus status = collect_boundary(mesh); status != CavityStatus::kAccepted) return status;
   if (CavityStatus status = star_surface(mesh, options); status != CavityStatus::kAccepted) return status;
 
@@ -361,10 +359,13 @@ bool CavityOperator<D>::pair_ridge_faces() {
 template <int D>
 CavityStatus CavityOperator<D>::plan_edges(const Mesh<D>& mesh) {
   // The boundary faces' edges, their ids from the cavity elements the faces belong to (no look-up),
-  // kept sorted by key as they come: each is listed by two faces, so the list stays short.
+  // kept sorted by key as they come: each is listed by two faces, so the list stays short. A
+  // removed facet's face does not stay: an edge only on such faces (a split boundary edge, the
+  // edges of a collapsed boundary vertex) goes with the cavity.
   boundary_edge_keys_.clear();
   boundary_edge_ids_.clear();
   for (const auto& face : boundary_faces_) {
+    if (face.removed) continue;
     const auto& ids = mesh.element_edges(face.inner_element);
     const auto& local = face_vertices<D>(face.inner_face);
     for (int i = 0; i < D; ++i)

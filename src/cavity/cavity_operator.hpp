@@ -23,7 +23,7 @@ struct CavityOptions {
   double min_relative_measure = 1e-12;
   // The one vertex inside the cavity that may disappear (collapse), or kNoIndex.
   Index removable_vertex = kNoIndex;
-  // Boundary operations (P1 meshes): boundary facets on the cavity's boundary that the operation
+  // Boundary operations (P1 and P2 meshes): boundary facets on the cavity's boundary that the operation
   // replaces. They are re-starred from the vertex within each facet ref (the surface cavity), and in
   // 3D the feature lines among their edges that the operation replaces are re-starred from it too
   // (a split or collapse along a ridge). The caller names them: which boundary pieces an operation
@@ -42,6 +42,7 @@ enum class CavityStatus {
   kRejectedByCurving,    // the P2 operator found no valid curved configuration
   kNoImprovement,        // the P2 operator's new elements are not better than the request asks
   kFlatStraightElement,  // the P2 operator: a new straight simplex below the request's quality floor
+  kBoundaryGeometry,     // the P2 operator: the request's test of the new boundary facets failed
 };
 const char* to_string(CavityStatus status);
 

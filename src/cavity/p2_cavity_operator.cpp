@@ -40,6 +40,7 @@ P2CavityCounters& P2CavityCounters::operator+=(const P2CavityCounters& other) {
   rejected_curving += other.rejected_curving;
   rejected_quality += other.rejected_quality;
   rejected_straight_quality += other.rejected_straight_quality;
+  rejected_boundary += other.rejected_boundary;
   edges_optimized += other.edges_optimized;
   optimizer_iterations += other.optimizer_iterations;
   edges_kept_optimal += other.edges_kept_optimal;
@@ -73,11 +74,16 @@ CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const I
   CavityOptions plan_options;
   plan_options.check_straight_measure = options_.positive_straight_elements;
   plan_options.removable_vertex = request.removable_vertex;
+  plan_options.removed_facets = request.removed_facets;
   CavityStatus status = p1_.plan(mesh, cavity, vertex, plan_options);
   counters_.seconds_plan += seconds_since(start);
   if (status != CavityStatus::kAccepted) {
     ++counters_.rejected_topology;
     return status;
+  }
+  if (request.boundary_check && !request.boundary_check(p1_)) {
+    ++counters_.rejected_boundary;
+    return CavityStatus::kBoundaryGeometry;
   }
   if (request.straight_quality_to_keep >= 0 && !new_straight_elements_above(mesh, request.straight_quality_to_keep)) {
     ++counters_.rejected_straight_quality;
@@ -86,8 +92,8 @@ CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const I
 
   start = Clock::now();
   curved_.clear();
-  curve_inner_edges(mesh, request.start_nodes);
-  take_boundary_proposals(mesh);
+  curve_inner_edges(mesh, request);
+  take_boundary_nodes(mesh, request);
   counters_.seconds_optimize += seconds_since(start);
 
   start = Clock::now();
@@ -177,7 +183,7 @@ void P2CavityOperator<D>::commit(Mesh<D>& mesh) {
       inner_nodes_[edge.id] = edge.node();
     } else {
       boundary_nodes_.emplace_back(edge.id, edge.node());
-      if (edge.scale == 1) {
+      if (edge.proposal && edge.scale == 1) {
         boundary_->consume(edge.a, edge.b);
         ++counters_.boundary_nodes_applied;
       }
@@ -190,7 +196,7 @@ void P2CavityOperator<D>::commit(Mesh<D>& mesh) {
 }
 
 template <int D>
-void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh, std::span<const EdgeStart<D>> start_nodes) {
+void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh, const P2CavityRequest<D>& request) {
   const auto edges = p1_.new_inner_edges();
   const auto default_starts = p1_.new_inner_edge_start_nodes();
   const auto recreated_ids = p1_.new_inner_edge_recreated_ids();
@@ -199,10 +205,16 @@ void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh, std::span<const
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const auto [a, b] = edges[i];
     const std::uint64_t key = Mesh<D>::edge_key(a, b);  // a plain variable: clang's lambdas take no structured binding
-    const auto given = std::find_if(start_nodes.begin(), start_nodes.end(),
-                                    [key](const EdgeStart<D>& s) { return Mesh<D>::edge_key(s.a, s.b) == key; });
-    const Vec<D> start = given != start_nodes.end() ? given->node : default_starts[i];
-    if (given == start_nodes.end() && optimized_edges_ && recreated_ids[i] != kNoIndex && optimized_edges_->marked(recreated_ids[i])) {
+    const auto same_edge = [key](const EdgeStart<D>& s) { return Mesh<D>::edge_key(s.a, s.b) == key; };
+    const auto given = std::find_if(request.start_nodes.begin(), request.start_nodes.end(), same_edge);
+    const Vec<D> start = given != request.start_nodes.end() ? given->node : default_starts[i];
+    const auto on_geometry = std::find_if(request.boundary_nodes.begin(), request.boundary_nodes.end(), same_edge);
+    if (on_geometry != request.boundary_nodes.end()) {  // a new boundary edge: its node is the geometry's
+      curved_.push_back({a, b, start, on_geometry->node, 1, true, static_cast<Index>(i), false});
+      continue;
+    }
+    if (given == request.start_nodes.end() && optimized_edges_ && recreated_ids[i] != kNoIndex &&
+        optimized_edges_->marked(recreated_ids[i])) {
       ++counters_.edges_kept_optimal;
       curved_.push_back({a, b, start, start, 1, true, static_cast<Index>(i), true});
       continue;
@@ -225,14 +237,24 @@ void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh, std::span<const
 }
 
 template <int D>
-void P2CavityOperator<D>::take_boundary_proposals(const Mesh<D>& mesh) {
-  if (!boundary_) return;
+void P2CavityOperator<D>::take_boundary_nodes(const Mesh<D>& mesh, const P2CavityRequest<D>& request) {
   for (Index edge : p1_.boundary_edges()) {
     const auto [a, b] = mesh.edge_vertices(edge);
+    const std::uint64_t key = Mesh<D>::edge_key(a, b);  // a plain variable: clang's lambdas take no structured binding
+    const auto same_edge = [key](const EdgeStart<D>& s) { return Mesh<D>::edge_key(s.a, s.b) == key; };
+    if (const auto placed = std::find_if(request.boundary_nodes.begin(), request.boundary_nodes.end(), same_edge);
+        placed != request.boundary_nodes.end()) {
+      // A moved vertex's boundary edge: from its start node (its bend kept) toward the geometry.
+      const auto given = std::find_if(request.start_nodes.begin(), request.start_nodes.end(), same_edge);
+      curved_.push_back(
+          {a, b, given != request.start_nodes.end() ? given->node : mesh.edge_node(edge), placed->node, 1, false, edge, false});
+      continue;
+    }
+    if (!boundary_) continue;
     auto proposal = boundary_->proposal(a, b);
     if (!proposal || *proposal == mesh.edge_node(edge)) continue;
     // Pulling back moves the node from where it is now toward the proposal.
-    curved_.push_back({a, b, mesh.edge_node(edge), *proposal, 1, false, edge, false});
+    curved_.push_back({a, b, mesh.edge_node(edge), *proposal, 1, false, edge, false, kNoIndex, true});
   }
 }
 

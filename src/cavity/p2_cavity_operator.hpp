@@ -20,6 +20,7 @@
 #pragma once
 
 #include <cmath>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -79,6 +80,15 @@ struct P2CavityRequest {
   // Every new element's straight simplex must have a metric mean ratio (centroid_metric_mean_ratio)
   // of at least this, else kFlatStraightElement, refused before any curving. Negative: not asked.
   double straight_quality_to_keep = -1;
+  // Boundary operations (docs/curving.md §Curved operations on the boundary): the boundary facets
+  // the operation re-stars from its vertex (CavityOptions::removed_facets); the edges through the
+  // vertex that lie on the boundary (new inner edges, or the kept boundary edges of a moved
+  // vertex), each with its node on the geometry, which it takes instead of the optimizer's (pulled
+  // back toward its start node if the certification asks); and a test of the planned boundary,
+  // before any curving (false: kBoundaryGeometry).
+  std::span<const Index> removed_facets{};
+  std::span<const EdgeStart<D>> boundary_nodes{};
+  std::function<bool(const CavityOperator<D>&)> boundary_check{};
 };
 
 // Whether a Riemannian edge length is unit (the loop's range [1/√2, √2]).
@@ -88,6 +98,7 @@ struct P2CavityCounters {
   long long cavities = 0, accepted = 0;
   long long rejected_topology = 0, rejected_curving = 0, rejected_quality = 0;
   long long rejected_straight_quality = 0;  // a new straight simplex below the request's floor
+  long long rejected_boundary = 0;          // the request's test of the new boundary facets failed
   long long edges_optimized = 0, optimizer_iterations = 0;
   long long edges_kept_optimal = 0;  // recreated at their optimum: not optimized again
   long long boundary_nodes_applied = 0;
@@ -133,6 +144,7 @@ class P2CavityOperator {
     Index id;                     // index in the plan's inner edges, or the mesh edge id
     bool optimal;                 // target is the edge's converged optimum
     Index start_hint = kNoIndex;  // the back element its optimization started from (it depends on it)
+    bool proposal = false;        // a boundary edge taking the BoundaryNodeSource's proposal
     Vec<D> node() const { return fallback + scale * (target - fallback); }
   };
   std::span<const CurvedEdge> curved_edges() const { return curved_; }
@@ -147,8 +159,10 @@ class P2CavityOperator {
     std::array<int, Simplex<D>::kEdges> curved;
   };
 
-  void curve_inner_edges(const Mesh<D>& mesh, std::span<const EdgeStart<D>> start_nodes);
-  void take_boundary_proposals(const Mesh<D>& mesh);
+  void curve_inner_edges(const Mesh<D>& mesh, const P2CavityRequest<D>& request);
+  // The cavity's boundary edges that change: those the request places on the geometry, and those
+  // with a waiting proposal.
+  void take_boundary_nodes(const Mesh<D>& mesh, const P2CavityRequest<D>& request);
   void collect_candidates(const Mesh<D>& mesh);
   // The cavity's elements as (sorted vertices, parity of the sort), sorted: to find the one a new
   // element recreates.

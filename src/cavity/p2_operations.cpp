@@ -97,18 +97,19 @@ double P2Operations<D>::straight_quality_to_keep(std::span<const Index> elements
 }
 
 template <int D>
-CavityStatus P2Operations<D>::split_edge(Index a, Index b, Index* inserted, Bar bar) {
+CavityStatus P2Operations<D>::split_edge(Index a, Index b, Index* inserted, Bar bar, const BoundaryPlacement<D>* boundary) {
   const Index edge = mesh_.find_edge(a, b);
   if (edge == kNoIndex) return CavityStatus::kNotStarShaped;
   collect_shell(mesh_, a, b, cavity_);
   const Index ends[2] = {a, b};
-  if (on_boundary(cavity_, ends)) return CavityStatus::kCrossesBoundary;
-  // The new vertex is the edge's P2 node, the point of the curved edge at parameter 1/2. The new
-  // edges start at the exact subdivision of the shell: the halves of the split edge and, toward
-  // each other vertex c, the point of face (a, b, c)'s P2 map halfway between the node and c. So
-  // the fallback configuration is the old shell's geometry exactly (docs/curving.md).
+  if (!boundary && on_boundary(cavity_, ends)) return CavityStatus::kCrossesBoundary;
+  // The new vertex is the edge's P2 node, the point of the curved edge at parameter 1/2 (on the
+  // boundary, that point's closest point of the surface). The new edges start at the exact
+  // subdivision of the shell: the halves of the split edge and, toward each other vertex c, the
+  // point of face (a, b, c)'s P2 map halfway between the node and c. So the fallback configuration
+  // is the old shell's geometry exactly (docs/curving.md).
   const Vec<D> A = mesh_.vertex(a), B = mesh_.vertex(b), X = mesh_.edge_node(edge);
-  const Index m = add_vertex(X, a);
+  const Index m = add_vertex(boundary ? boundary->onto_surface(X) : X, a);
   starts_.assign({{m, a, point_on_edge(A, X, B, 0.25)}, {m, b, point_on_edge(A, X, B, 0.75)}});
   neighbors_.clear();
   for (Index k : cavity_)
@@ -123,6 +124,7 @@ CavityStatus P2Operations<D>::split_edge(Index a, Index b, Index* inserted, Bar 
   request.quality_to_beat = bar.quality_to_beat;
   request.unit_edges_to_keep = bar.unit_edges_to_keep;
   request.straight_quality_to_keep = straight_quality_to_keep(cavity_);
+  if (boundary) place_on_boundary(*boundary, m, true, request);
   const CavityStatus status = operator_.apply(mesh_, cavity_, m, request);
   if (status != CavityStatus::kAccepted)
     remove_last_vertex();
@@ -145,11 +147,11 @@ void P2Operations<D>::shifted_starts(Index from_vertex, const Vec<D>& from, Inde
 }
 
 template <int D>
-CavityStatus P2Operations<D>::collapse_edge(Index removed, Index kept, Bar bar) {
+CavityStatus P2Operations<D>::collapse_edge(Index removed, Index kept, Bar bar, const BoundaryPlacement<D>* boundary) {
   if (mesh_.find_edge(removed, kept) == kNoIndex) return CavityStatus::kNotStarShaped;
   collect_ball(mesh_, removed, cavity_);
   const Index vertex[1] = {removed};
-  if (on_boundary(cavity_, vertex)) return CavityStatus::kCrossesBoundary;
+  if (!boundary && on_boundary(cavity_, vertex)) return CavityStatus::kCrossesBoundary;
   // The removed vertex's edges move onto the kept one: each new edge starts from its old node
   // shifted by half the move (the edges (kept, w) that exist already are kept as they are).
   shifted_starts(removed, mesh_.vertex(removed), kept);
@@ -159,7 +161,24 @@ CavityStatus P2Operations<D>::collapse_edge(Index removed, Index kept, Bar bar) 
   request.quality_to_beat = bar.quality_to_beat;
   request.unit_edges_to_keep = bar.unit_edges_to_keep;
   request.straight_quality_to_keep = straight_quality_to_keep(cavity_);
+  if (boundary) place_on_boundary(*boundary, kept, true, request);
   return operator_.apply(mesh_, cavity_, kept, request);
+}
+
+template <int D>
+void P2Operations<D>::place_on_boundary(const BoundaryPlacement<D>& boundary, Index center, bool restar, P2CavityRequest<D>& request) {
+  if (restar) request.removed_facets = boundary.facets;
+  request.boundary_check = boundary.check;
+  boundary_nodes_.clear();
+  for (const EdgeStart<D>& start : starts_) {
+    const Index w = start.a == center ? start.b : start.a;
+    // A split or collapse keeps the edges of `center` that exist already (a collapse's kept vertex
+    // with the far vertices of the collapsed edge's facets); a move bends all its edges.
+    if (restar && mesh_.find_edge(center, w) != kNoIndex) continue;
+    if (std::any_of(boundary.facets.begin(), boundary.facets.end(), [&](Index f) { return small_set_holds(mesh_.facet(f), w); }))
+      boundary_nodes_.push_back({start.a, start.b, boundary.onto_surface(start.node)});
+  }
+  request.boundary_nodes = boundary_nodes_;
 }
 
 template <int D>
@@ -185,24 +204,25 @@ CavityStatus P2Operations<D>::swap_edge(Index a, Index b, std::span<const Index>
 }
 
 template <int D>
-CavityStatus P2Operations<D>::move_vertex(Index v, const Vec<D>& x, Bar bar) {
+CavityStatus P2Operations<D>::move_vertex(Index v, const Vec<D>& x, Bar bar, const BoundaryPlacement<D>* boundary) {
   collect_ball(mesh_, v, cavity_);
   const Index vertex[1] = {v};
-  if (on_boundary(cavity_, vertex)) return CavityStatus::kCrossesBoundary;
+  if (!boundary && on_boundary(cavity_, vertex)) return CavityStatus::kCrossesBoundary;
   P2CavityRequest<D> request;
   request.straight_quality_to_keep = straight_quality_to_keep(cavity_);  // before the move
   const auto slot = static_cast<std::size_t>(v);
-  const Vec<D> from = mesh_.vertex(v);
+  const Vec<D> from = mesh_.vertex(v), to = boundary ? boundary->onto_surface(x) : x;
   const SymMat<D> from_log_metric = log_metrics_[slot];
   const Index from_hint = hints_[slot];
-  const auto sample = field_.sample(x, from_hint);
-  mesh_.vertex(v) = x;
+  const auto sample = field_.sample(to, from_hint);
+  mesh_.vertex(v) = to;
   log_metrics_[slot] = sample.log_metric;
   hints_[slot] = sample.where.element;
   shifted_starts(v, from, v);
   request.start_nodes = starts_;
   request.quality_to_beat = bar.quality_to_beat;
   request.unit_edges_to_keep = bar.unit_edges_to_keep;
+  if (boundary) place_on_boundary(*boundary, v, false, request);
   const CavityStatus status = operator_.apply(mesh_, cavity_, v, request);
   if (status != CavityStatus::kAccepted) {
     mesh_.vertex(v) = from;

@@ -9,11 +9,14 @@
 //   move      vertex v to x: its ball re-starred from it
 // With P2CavityOptions::straight_quality_floor, none makes a straight simplex poorer than
 // min(floor, the worst it replaces) (kFlatStraightElement).
-// Interior operations only: an edge or vertex on a boundary face is refused (kCrossesBoundary);
-// boundary splits and collapses on a P2 mesh are not built yet. The decision figures are curved
-// too: `edge_length` is the Riemannian length of the curved edge, `quality` the curved mean ratio.
+// An edge or vertex on a boundary face is refused (kCrossesBoundary) unless the caller places the
+// split, collapse or move on the boundary (BoundaryPlacement: which facets, and the geometry): the
+// new or moved vertex and the boundary edges through it then lie on the geometry. Swaps are
+// interior only. The decision figures are curved too: `edge_length` is the Riemannian length of the curved
+// edge, `quality` the curved mean ratio.
 #pragma once
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -21,6 +24,18 @@
 #include "cavity/p2_cavity_operator.hpp"
 
 namespace hocav {
+
+// A split, collapse or move on the boundary, as the caller's geometry decides it: the boundary
+// facets through the split edge or around the removed or moved vertex (all on one smooth surface;
+// a split or collapse re-stars them, a move keeps them), the closest point of that surface to a
+// point (where the new or moved vertex and the boundary edges' nodes through it go), and a test of
+// the planned boundary (P2CavityRequest::boundary_check; none when empty).
+template <int D>
+struct BoundaryPlacement {
+  std::span<const Index> facets;
+  std::function<Vec<D>(const Vec<D>&)> onto_surface;
+  std::function<bool(const CavityOperator<D>&)> check{};
+};
 
 template <int D>
 class P2Operations {
@@ -40,12 +55,14 @@ class P2Operations {
     int unit_edges_to_keep = -1;
   };
   // Each returns the P2 operator's verdict; on anything but kAccepted the mesh is unchanged.
-  CavityStatus split_edge(Index a, Index b, Index* inserted = nullptr, Bar bar = {});
-  CavityStatus collapse_edge(Index removed, Index kept, Bar bar = {});
+  // With `boundary`, the edge or the removed vertex is on it (else refused when on a boundary face).
+  CavityStatus split_edge(Index a, Index b, Index* inserted = nullptr, Bar bar = {}, const BoundaryPlacement<D>* boundary = nullptr);
+  CavityStatus collapse_edge(Index removed, Index kept, Bar bar = {}, const BoundaryPlacement<D>* boundary = nullptr);
   // The shell of (a, b) re-starred from the first of `apexes` that the operator accepts.
   CavityStatus swap_edge(Index a, Index b, std::span<const Index> apexes, Bar bar = {});
   CavityStatus swap_edge(Index a, Index b, Index apex, Bar bar = {}) { return swap_edge(a, b, std::span(&apex, 1), bar); }
-  CavityStatus move_vertex(Index v, const Vec<D>& x, Bar bar = {});
+  // With `boundary`, v is on it and goes to the closest point of its surface to x.
+  CavityStatus move_vertex(Index v, const Vec<D>& x, Bar bar = {}, const BoundaryPlacement<D>* boundary = nullptr);
 
   // The Riemannian length of the curved edge (a, b) (high-precision quadrature of the length the
   // optimizer minimizes), and the curved mean ratio of element k (src/curve/curved_quality.hpp).
@@ -79,6 +96,10 @@ class P2Operations {
   // Start nodes of the edges (center, w) of a vertex moved from `from` to its place now: each old
   // node of (from_vertex, w) shifted by half the move, so the edge keeps its bend.
   void shifted_starts(Index from_vertex, const Vec<D>& from, Index center);
+  // The request's boundary part: the placement's check, its facets as the ones to re-star when
+  // `restar`, and each start edge of `center` to a vertex of those facets on the surface (the
+  // start node's closest point there).
+  void place_on_boundary(const BoundaryPlacement<D>& boundary, Index center, bool restar, P2CavityRequest<D>& request);
 
   Mesh<D>& mesh_;
   const MetricField<D>& field_;
@@ -88,7 +109,7 @@ class P2Operations {
   std::vector<Index> hints_;
   P2CavityOperator<D> operator_;
   std::vector<Index> cavity_, neighbors_;
-  std::vector<EdgeStart<D>> starts_;
+  std::vector<EdgeStart<D>> starts_, boundary_nodes_;
 };
 
 extern template class P2Operations<2>;

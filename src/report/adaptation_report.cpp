@@ -22,7 +22,8 @@ void write_operation(JsonWriter& json, const char* name, const OperationCount& c
 }  // namespace
 
 void write_curved_operation(JsonWriter& json, const char* name, const CurvedOperationCount& count) {
-  json.key(name).begin_object().member("done", count.done).member("on_boundary", count.on_boundary);
+  json.key(name).begin_object().member("done", count.done).member("boundary_done", count.boundary_done);
+  json.member("on_boundary", count.on_boundary);
   json.member("too_long", count.too_long).member("no_gain", count.no_gain).member("flat", count.flat);
   json.member("refused", count.refused).end_object();
 }
@@ -33,6 +34,7 @@ void write_curved_passes(JsonWriter& json, const CurvedAdaptationRun& run) {
   json.member("corrections", run.counters.corrections).member("rejected_by_curving", run.counters.rejected_curving);
   json.member("rejected_by_quality", run.counters.rejected_quality);
   json.member("rejected_by_straight_quality", run.counters.rejected_straight_quality);
+  json.member("rejected_by_boundary_geometry", run.counters.rejected_boundary);
   json.key("passes").begin_array();
   for (const CurvedPass& pass : run.passes) {
     json.begin_object();

@@ -1,0 +1,221 @@
+// The curved passes' boundary operations (src/adapt/curved_boundary.hpp) one by one, in 2D and 3D:
+// a P2 split of a boundary edge, a P2 collapse of a surface vertex and a P2 move of one keep the
+// mesh consistent and every element certified, put the new or moved vertex and the boundary edges'
+// nodes through it on the geometry, and re-star the boundary facets; feature lines, corners and
+// interior edges get no placement.
+#include "adapt/curved_boundary.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+
+#include "base/small_set.hpp"
+#include "bezier/jacobian_bounds.hpp"
+#include "bezier/p2_element.hpp"
+#include "cases/cubed_sphere_shell.hpp"
+#include "cases/polar_annulus.hpp"
+#include "cases/structured.hpp"
+#include "mesh/ball_and_shell.hpp"
+#include "mesh/consistency.hpp"
+#include "surface/analytic_boundary.hpp"
+#include "surface/boundary_proposals.hpp"
+
+namespace hocav {
+namespace {
+
+constexpr std::array<double, 4> kRadii{0.5, 0.6, 0.75, 1.0};
+constexpr double kFloor = 0.01;
+
+// A shell whose boundary nodes lie on its circles or spheres, in an isotropic metric of size h.
+template <int D>
+struct CurvedShell {
+  Mesh<D> mesh;
+  AnalyticBoundary<D> geometry = concentric_shell_boundary<D>(kRadii.front(), kRadii.back());
+  std::unique_ptr<MetricField<D>> field;
+  explicit CurvedShell(double h) {
+    if constexpr (D == 2)
+      mesh = generate_polar_annulus(24, kRadii);
+    else
+      mesh = generate_cubed_sphere_shell(8, kRadii);
+    mesh.build_topology();
+    mesh.orient_boundary_facets_outward();
+    SymMat<D> metric{};
+    for (int i = 0; i < D; ++i) metric(i, i) = 1 / (h * h);
+    field = std::make_unique<MetricField<D>>(mesh, std::vector<SymMat<D>>(static_cast<std::size_t>(mesh.vertex_count()), metric));
+    BoundaryProposals<D> proposals(mesh, geometry);
+    apply_boundary_proposals(mesh, proposals);
+  }
+};
+
+template <int D>
+bool every_element_certified(const Mesh<D>& mesh) {
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    if (!certify_min_normalized_jacobian_above(gather_p2_element(mesh, k), kFloor)) return false;
+  return true;
+}
+
+template <int D>
+void expect_consistent(const Mesh<D>& mesh) {
+  ConsistencyOptions options;
+  options.require_positive_orientation = false;
+  const auto problems = check_consistency(mesh, options);
+  EXPECT_TRUE(problems.empty()) << problems.front();
+}
+
+// On the inner circle or sphere (ref 1), to round-off.
+template <int D>
+bool on_inner_wall(const Vec<D>& x) {
+  return std::abs(norm(x) - kRadii.front()) < 1e-12;
+}
+
+// The edges of the facets through v: their nodes must be on the wall.
+template <int D>
+void expect_wall_edges_on_geometry(const Mesh<D>& mesh, Index v) {
+  int edges = 0;
+  for (Index f = 0; f < mesh.facet_count(); ++f) {
+    if (mesh.facet_removed(f) || !small_set_holds(mesh.facet(f), v)) continue;
+    for (Index w : mesh.facet(f)) {
+      if (w == v) continue;
+      ++edges;
+      EXPECT_TRUE(on_inner_wall<D>(mesh.edge_node(mesh.find_edge(v, w))))
+          << "edge (" << v << ", " << w << ") " << norm(mesh.edge_node(mesh.find_edge(v, w))) - kRadii.front();
+    }
+  }
+  EXPECT_GT(edges, 0);
+}
+
+// An edge of the inner wall, and a vertex of it.
+template <int D>
+std::array<Index, 2> wall_edge(const Mesh<D>& mesh) {
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    if (mesh.facet_ref(f) == 1) return {mesh.facet(f)[0], mesh.facet(f)[1]};
+  return {kNoIndex, kNoIndex};
+}
+
+template <int D>
+void check_boundary_split() {
+  CurvedShell<D> shell(0.02);
+  Mesh<D>& mesh = shell.mesh;
+  ASSERT_TRUE(every_element_certified(mesh));
+  CurvedBoundary<D> boundary(mesh, shell.geometry, 45);
+  P2Operations<D> operations(mesh, *shell.field, nullptr, {.jacobian_floor = kFloor});
+  const auto [a, b] = wall_edge(mesh);
+  const Index facets_before = mesh.facet_count();
+  std::vector<Index> cavity;
+  collect_shell(mesh, a, b, cavity);
+  const auto placement = boundary.split_placement(cavity, a, b);
+  ASSERT_TRUE(placement);
+  // Without the placement, the boundary edge is refused as before.
+  EXPECT_EQ(operations.split_edge(a, b), CavityStatus::kCrossesBoundary);
+  Index m = kNoIndex;
+  ASSERT_EQ(operations.split_edge(a, b, &m, {}, &*placement), CavityStatus::kAccepted);
+  boundary.add_surface_vertex(m);
+  EXPECT_TRUE(on_inner_wall<D>(mesh.vertex(m)));
+  expect_wall_edges_on_geometry(mesh, m);
+  EXPECT_EQ(mesh.find_edge(a, b), kNoIndex);
+  mesh.compact();
+  expect_consistent(mesh);
+  EXPECT_TRUE(every_element_certified(mesh));
+  EXPECT_EQ(mesh.facet_count(), facets_before + (D == 2 ? 1 : 2));  // one facet in two (2D), two in four (3D)
+  for (Index f = 0; f < mesh.facet_count(); ++f) {
+    if (!small_set_holds(mesh.facet(f), m)) continue;
+    EXPECT_EQ(mesh.facet_ref(f), 1);
+  }
+}
+
+template <int D>
+void check_boundary_collapse() {
+  // A metric of size 0.5: the wall's edges are short, and its vertices may go.
+  CurvedShell<D> shell(0.5);
+  Mesh<D>& mesh = shell.mesh;
+  CurvedBoundary<D> boundary(mesh, shell.geometry, 45);
+  P2Operations<D> operations(mesh, *shell.field, nullptr, {.jacobian_floor = kFloor});
+  const auto [removed, kept] = wall_edge(mesh);
+  const Index facets_before = mesh.facet_count();
+  std::vector<Index> ball;
+  collect_ball(mesh, removed, ball);
+  const auto placement = boundary.collapse_placement(ball, removed, kept);
+  ASSERT_TRUE(placement);
+  EXPECT_EQ(operations.collapse_edge(removed, kept), CavityStatus::kCrossesBoundary);
+  ASSERT_EQ(operations.collapse_edge(removed, kept, {}, &*placement), CavityStatus::kAccepted);
+  EXPECT_TRUE(mesh.vertex_removed(removed));
+  expect_wall_edges_on_geometry(mesh, kept);
+  const Vec<D> kept_point = mesh.vertex(kept);
+  mesh.compact();
+  expect_consistent(mesh);
+  EXPECT_TRUE(every_element_certified(mesh));
+  EXPECT_EQ(mesh.facet_count(), facets_before - (D == 2 ? 1 : 2));  // the edge's facets go
+  EXPECT_TRUE(on_inner_wall<D>(kept_point));
+}
+
+template <int D>
+void check_boundary_move() {
+  CurvedShell<D> shell(0.05);
+  Mesh<D>& mesh = shell.mesh;
+  CurvedBoundary<D> boundary(mesh, shell.geometry, 45);
+  P2Operations<D> operations(mesh, *shell.field, nullptr, {.jacobian_floor = kFloor});
+  const auto [v, w] = wall_edge(mesh);
+  ASSERT_TRUE(boundary.surface_vertex(v));
+  std::vector<Index> ball;
+  collect_ball(mesh, v, ball);
+  const auto placement = boundary.move_placement(ball, v);
+  ASSERT_TRUE(placement);
+  // A fifth of the way toward w, off the wall (along the chord): the move lands on the wall.
+  const Vec<D> from = mesh.vertex(v), x = from + 0.2 * (mesh.vertex(w) - from);
+  EXPECT_EQ(operations.move_vertex(v, x), CavityStatus::kCrossesBoundary);
+  ASSERT_EQ(operations.move_vertex(v, x, {}, &*placement), CavityStatus::kAccepted);
+  EXPECT_TRUE(on_inner_wall<D>(mesh.vertex(v)));
+  EXPECT_GT(norm(mesh.vertex(v) - from), 0.1 * norm(x - from));
+  expect_wall_edges_on_geometry(mesh, v);
+  expect_consistent(mesh);
+  EXPECT_TRUE(every_element_certified(mesh));
+}
+
+TEST(CurvedBoundary, ASurfaceVertexMovedInP2StaysOnTheGeometryWithItsBoundaryNodes2D) { check_boundary_move<2>(); }
+TEST(CurvedBoundary, ASurfaceVertexMovedInP2StaysOnTheGeometryWithItsBoundaryNodes3D) { check_boundary_move<3>(); }
+
+TEST(CurvedBoundary, ABoundaryEdgeSplitInP2PutsItsVertexAndNewBoundaryNodesOnTheGeometry2D) { check_boundary_split<2>(); }
+TEST(CurvedBoundary, ABoundaryEdgeSplitInP2PutsItsVertexAndNewBoundaryNodesOnTheGeometry3D) { check_boundary_split<3>(); }
+TEST(CurvedBoundary, ASurfaceVertexCollapsedInP2LeavesItsNewBoundaryNodesOnTheGeometry2D) { check_boundary_collapse<2>(); }
+TEST(CurvedBoundary, ASurfaceVertexCollapsedInP2LeavesItsNewBoundaryNodesOnTheGeometry3D) { check_boundary_collapse<3>(); }
+
+// The unit cube's edges are feature lines (90° > 45°) and its corners corners: a cube edge is not
+// split, a vertex on it or at a corner is not removed; an interior edge gets no placement; a face
+// vertex collapses only along the face.
+TEST(CurvedBoundary, FeatureLinesCornersAndInteriorEdgesGetNoPlacement) {
+  Mesh<3> mesh = generate_cube(2);
+  mesh.build_topology();
+  mesh.orient_boundary_facets_outward();
+  mesh.make_p2();
+  const AnalyticBoundary<3> geometry = concentric_shell_boundary<3>(0.5, 1.0);  // never asked here
+  CurvedBoundary<3> boundary(mesh, geometry, 45);
+  const auto find_vertex = [&](Vec3 x) {
+    for (Index v = 0; v < mesh.vertex_count(); ++v)
+      if (norm(mesh.vertex(v) - x) < 1e-12) return v;
+    return kNoIndex;
+  };
+  const Index corner = find_vertex({0, 0, 0}), on_line = find_vertex({0.5, 0, 0}), on_face = find_vertex({0.5, 0.5, 0});
+  const Index center = find_vertex({0.5, 0.5, 0.5});
+  ASSERT_NE(corner, kNoIndex);
+  ASSERT_NE(on_line, kNoIndex);
+  ASSERT_NE(on_face, kNoIndex);
+  ASSERT_NE(center, kNoIndex);
+  std::vector<Index> elements;
+  collect_shell(mesh, corner, on_line, elements);
+  EXPECT_FALSE(boundary.split_placement(elements, corner, on_line));
+  collect_shell(mesh, on_face, center, elements);
+  EXPECT_FALSE(boundary.split_placement(elements, on_face, center));
+  collect_shell(mesh, on_line, on_face, elements);
+  EXPECT_TRUE(boundary.split_placement(elements, on_line, on_face));  // an edge inside face z = 0
+  collect_ball(mesh, on_line, elements);
+  EXPECT_FALSE(boundary.collapse_placement(elements, on_line, corner));
+  collect_ball(mesh, corner, elements);
+  EXPECT_FALSE(boundary.collapse_placement(elements, corner, on_line));
+  collect_ball(mesh, on_face, elements);
+  EXPECT_FALSE(boundary.collapse_placement(elements, on_face, center));  // not along the boundary
+  EXPECT_TRUE(boundary.collapse_placement(elements, on_face, on_line));
+}
+
+}  // namespace
+}  // namespace hocav
