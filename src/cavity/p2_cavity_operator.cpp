@@ -127,6 +127,10 @@ CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const I
     ++counters_.rejected_curving;
     return CavityStatus::kRejectedByCurving;
   }
+  if (std::any_of(curved_.begin(), curved_.end(), [](const CurvedEdge& edge) { return edge.placed && edge.scale < 1; })) {
+    ++counters_.rejected_boundary;  // a boundary node pulled off the geometry
+    return CavityStatus::kBoundaryGeometry;
+  }
   if ((request.quality_to_beat >= 0 && !new_elements_above(request.quality_to_beat)) ||
       (request.unit_edges_to_keep >= 0 && unit_new_inner_edges(mesh) < request.unit_edges_to_keep)) {
     ++counters_.rejected_quality;
@@ -210,7 +214,7 @@ void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh, const P2CavityR
     const Vec<D> start = given != request.start_nodes.end() ? given->node : default_starts[i];
     const auto on_geometry = std::find_if(request.boundary_nodes.begin(), request.boundary_nodes.end(), same_edge);
     if (on_geometry != request.boundary_nodes.end()) {  // a new boundary edge: its node is the geometry's
-      curved_.push_back({a, b, start, on_geometry->node, 1, true, static_cast<Index>(i), false});
+      curved_.push_back({a, b, start, on_geometry->node, 1, true, static_cast<Index>(i), false, kNoIndex, false, true});
       continue;
     }
     if (given == request.start_nodes.end() && optimized_edges_ && recreated_ids[i] != kNoIndex &&

@@ -84,8 +84,9 @@ struct P2CavityRequest {
   // the operation re-stars from its vertex (CavityOptions::removed_facets); the edges through the
   // vertex that lie on the boundary (new inner edges, or the kept boundary edges of a moved
   // vertex), each with its node on the geometry, which it takes instead of the optimizer's (pulled
-  // back toward its start node if the certification asks); and a test of the planned boundary,
-  // before any curving (false: kBoundaryGeometry).
+  // back toward its start node if the certification asks, but not refused: the operation is
+  // refused, kBoundaryGeometry, unless every such node reaches the geometry, so the boundary never
+  // leaves it); and a test of the planned boundary, before any curving (false: kBoundaryGeometry).
   std::span<const Index> removed_facets{};
   std::span<const EdgeStart<D>> boundary_nodes{};
   std::function<bool(const CavityOperator<D>&)> boundary_check{};
@@ -145,6 +146,7 @@ class P2CavityOperator {
     bool optimal;                 // target is the edge's converged optimum
     Index start_hint = kNoIndex;  // the back element its optimization started from (it depends on it)
     bool proposal = false;        // a boundary edge taking the BoundaryNodeSource's proposal
+    bool placed = false;          // an edge the request places on the geometry (boundary_nodes)
     Vec<D> node() const { return fallback + scale * (target - fallback); }
   };
   std::span<const CurvedEdge> curved_edges() const { return curved_; }

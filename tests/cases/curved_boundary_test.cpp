@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -33,11 +34,12 @@ struct CurvedShell {
   Mesh<D> mesh;
   AnalyticBoundary<D> geometry = concentric_shell_boundary<D>(kRadii.front(), kRadii.back());
   std::unique_ptr<MetricField<D>> field;
-  explicit CurvedShell(double h) {
+  // `cells`: around the circle (2D), or along each cube face's side (3D).
+  explicit CurvedShell(double h, int cells = D == 2 ? 24 : 8) {
     if constexpr (D == 2)
-      mesh = generate_polar_annulus(24, kRadii);
+      mesh = generate_polar_annulus(cells, kRadii);
     else
-      mesh = generate_cubed_sphere_shell(8, kRadii);
+      mesh = generate_cubed_sphere_shell(cells, kRadii);
     mesh.build_topology();
     mesh.orient_boundary_facets_outward();
     SymMat<D> metric{};
@@ -174,6 +176,29 @@ void check_boundary_move() {
 
 TEST(CurvedBoundary, ASurfaceVertexMovedInP2StaysOnTheGeometryWithItsBoundaryNodes2D) { check_boundary_move<2>(); }
 TEST(CurvedBoundary, ASurfaceVertexMovedInP2StaysOnTheGeometryWithItsBoundaryNodes3D) { check_boundary_move<3>(); }
+
+// On a coarse shell (4 cells along a cube face's side), collapsing a wall vertex doubles wall edges
+// whose nodes on the sphere would fold their elements: the certification pulls them off the
+// geometry, so the collapse is refused and the mesh left as it was.
+TEST(CurvedBoundary, AnOperationWhoseBoundaryNodesCannotReachTheGeometryIsRefused) {
+  CurvedShell<3> shell(0.5, 4);
+  Mesh<3>& mesh = shell.mesh;
+  CurvedBoundary<3> boundary(mesh, shell.geometry, 45);
+  P2Operations<3> operations(mesh, *shell.field, nullptr, {.jacobian_floor = kFloor});
+  const auto [removed, kept] = wall_edge(mesh);
+  std::vector<Index> ball;
+  collect_ball(mesh, removed, ball);
+  const auto placement = boundary.collapse_placement(ball, removed, kept);
+  ASSERT_TRUE(placement);
+  const Mesh<3> before = mesh;
+  EXPECT_EQ(operations.collapse_edge(removed, kept, {}, &*placement), CavityStatus::kBoundaryGeometry);
+  EXPECT_GT(operations.cavity_operator().counters().corrections, 0);
+  EXPECT_TRUE(std::ranges::equal(mesh.vertices(), before.vertices()));
+  EXPECT_TRUE(std::ranges::equal(mesh.elements(), before.elements()));
+  EXPECT_TRUE(std::ranges::equal(mesh.facets(), before.facets()));
+  EXPECT_TRUE(std::ranges::equal(mesh.edge_nodes(), before.edge_nodes()));
+  EXPECT_FALSE(mesh.vertex_removed(removed));
+}
 
 TEST(CurvedBoundary, ABoundaryEdgeSplitInP2PutsItsVertexAndNewBoundaryNodesOnTheGeometry2D) { check_boundary_split<2>(); }
 TEST(CurvedBoundary, ABoundaryEdgeSplitInP2PutsItsVertexAndNewBoundaryNodesOnTheGeometry3D) { check_boundary_split<3>(); }
