@@ -153,8 +153,10 @@ std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector
   setup->input = std::move(input);
   const Mesh<D>& back = setup->input;
   setup->geometry = job.geometry(back);
-  if ((job.hausd || job.hausd_relative > 0) && !setup->geometry && job.warn)
-    job.warn("the Hausdorff bound (--hausd) bounds nothing without a boundary geometry (--surface none)");
+  if ((job.hausd || job.hausd_relative > 0) && !setup->geometry && job.warn) {
+    const char* given = job.hausd && job.hausd_relative > 0 ? "--hausd, --hausd-relative" : job.hausd ? "--hausd" : "--hausd-relative";
+    job.warn(std::string("the Hausdorff bound (") + given + ") bounds nothing without a boundary geometry (--surface none)");
+  }
   AdaptationSettings& settings = setup->settings;
   settings.max_passes = job.iterations;
   settings.feature_angle_degrees = job.angle;

@@ -101,6 +101,10 @@ TEST_F(AdaptCli, TheHausdorffBoundRefinesACoarseCircle) {
   const Outcome none = run("adapt annulus.meshb --analytic uniform --hausd 0.0005 --surface none --order 1 -q -o flat.meshb");
   EXPECT_EQ(none.exit_code, 0);
   EXPECT_NE(none.err.find("(--hausd) bounds nothing without a boundary geometry"), std::string::npos) << none.err;
+  // The warning names the bound given.
+  const Outcome relative = run("adapt annulus.meshb --analytic uniform --hausd-relative 0.5 --surface none --order 1 -q -o flat.meshb");
+  EXPECT_EQ(relative.exit_code, 0);
+  EXPECT_NE(relative.err.find("(--hausd-relative) bounds nothing without a boundary geometry"), std::string::npos) << relative.err;
 }
 
 // --hausd-relative bounds the sag of a curved wall by a fraction of the size across it: under the
