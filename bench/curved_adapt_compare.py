@@ -3,7 +3,7 @@ passes) on the same inputs, one run each (docs/benchmarks.md §Curved adaptation
 run's --report: the share of edges unit in their curved length and the curved mean ratio (min,
 mean; docs/curving.md §Curved quality), the min/avg normalized Jacobian, corrections and cavities
 rejected by the curving (the reinsertion's and the curved passes'), the curved passes' operations (collapses, splits, swaps, moves, and the passes;
-the collapses, splits and moves made on the boundary),
+the operations made on the boundary),
 the command's wall time; and, for the cases bounded by circles or spheres centred at the origin,
 the distance of the output's boundary P2 nodes from the true circle or sphere (max and mean).
 
@@ -90,7 +90,7 @@ def measure(hocav, case, curved, threads, folder):
         row["rejected"] += passes["rejected_by_curving"]
         row["curved_ops"] = (*(sum(p[op]["done"] for p in passes["passes"]) for op in ("collapses", "splits", "swaps", "moves")),
                              len(passes["passes"]),
-                             sum(p[op].get("boundary_done", 0) for p in passes["passes"] for op in ("collapses", "splits", "moves")))
+                             sum(p[op].get("boundary_done", 0) for p in passes["passes"] for op in ("collapses", "splits", "swaps", "moves")))
     if radii:
         run(hocav, ["convert", output, output.replace(".meshb", ".vtu")], folder)
         row["boundary"] = boundary_node_errors(folder / output.replace(".meshb", ".vtu"), dimension, radii)

@@ -215,7 +215,7 @@ CurvedOperationCount split_long_curved_edges(PassTools<D>& tools, ThreadPool& po
   for (const EdgeToFix& edge : edges_outside(tools.mesh, tools.operations, -INFINITY, kSplitLength, pool)) {
     if (!still_edge_of_length(tools.mesh, tools.operations, edge, -INFINITY, kSplitLength)) continue;
     collect_shell(tools.mesh, edge.a, edge.b, shell);
-    const auto placement = tools.boundary ? tools.boundary->split_placement(shell, edge.a, edge.b) : std::nullopt;
+    const auto placement = tools.boundary ? tools.boundary->edge_placement(shell, edge.a, edge.b) : std::nullopt;
     const typename P2Operations<D>::Bar bar{quality_to_keep(tools.operations, shell, tools.mesh_worst), -1};
     Index inserted = kNoIndex;
     const CavityStatus status = tools.operations.split_edge(edge.a, edge.b, &inserted, bar, placement ? &*placement : nullptr);
@@ -263,20 +263,31 @@ std::vector<std::pair<Index, Index>> edges_of_poor_elements(const Mesh<D>& mesh,
 }
 
 // Each edge's shell re-starred from the first vertex of its ring that raises the shell's worst
-// curved quality.
+// curved quality; in 3D, with a boundary, a boundary edge is flipped on its surface (the apexes are
+// the far vertices of its two facets).
 template <int D>
-CurvedOperationCount swap_poor_shells(Mesh<D>& mesh, P2Operations<D>& operations, DigestMemo& refusals, ThreadPool& pool) {
+CurvedOperationCount swap_poor_shells(PassTools<D>& tools, DigestMemo& refusals, ThreadPool& pool) {
+  Mesh<D>& mesh = tools.mesh;
+  P2Operations<D>& operations = tools.operations;
   CurvedOperationCount count;
   std::vector<Index> shell, ring;
   for (const auto& [first, second] : edges_of_poor_elements(mesh, operations, pool)) {
     const Index a = first, b = second;
     if (mesh.find_edge(a, b) == kNoIndex) continue;
     collect_shell(mesh, a, b, shell);
-    count.add(unless_refused_before(refusals, cavity_digest(kSwapRefusal, mesh, operations, shell, {a, b}), [&] {
+    const auto placement = D == 3 && tools.boundary ? tools.boundary->edge_placement(shell, a, b) : std::nullopt;
+    const CavityStatus status = unless_refused_before(refusals, cavity_digest(kSwapRefusal, mesh, operations, shell, {a, b}), [&] {
       const typename P2Operations<D>::Bar bar{kQualityGain * worst_quality(operations, shell), unit_length(operations.edge_length(a, b))};
-      other_vertices<D>(mesh, shell, a, b, ring);
-      return operations.swap_edge(a, b, ring, bar);
-    }));
+      ring.clear();
+      if (placement)
+        for (Index f : placement->facets)
+          for (Index w : mesh.facet(f))
+            if (w != a && w != b) ring.push_back(w);
+      if (!placement) other_vertices<D>(mesh, shell, a, b, ring);
+      return operations.swap_edge(a, b, ring, bar, placement ? &*placement : nullptr);
+    });
+    count.add(status);
+    count.boundary_done += status == CavityStatus::kAccepted && placement;
   }
   return count;
 }
@@ -357,7 +368,7 @@ CurvedPass run_curved_pass(Mesh<D>& mesh, const MetricField<D>& field, const P2C
   PassTools<D> tools{mesh, operations, boundary, worst_element_quality(mesh, operations, pool)};
   pass.collapses = collapse_short_curved_edges(tools, pool);
   pass.splits = split_long_curved_edges(tools, pool);
-  pass.swaps = swap_poor_shells(mesh, operations, refusals, pool);
+  pass.swaps = swap_poor_shells(tools, refusals, pool);
   pass.moves = smooth_curved(tools, refusals, pool);
   counters += operations.cavity_operator().counters();
   mesh.compact();

@@ -50,7 +50,7 @@ BoundaryPlacement<D> CurvedBoundary<D>::placement(int ref) {
 }
 
 template <int D>
-std::optional<BoundaryPlacement<D>> CurvedBoundary<D>::split_placement(std::span<const Index> shell, Index a, Index b) {
+std::optional<BoundaryPlacement<D>> CurvedBoundary<D>::edge_placement(std::span<const Index> shell, Index a, Index b) {
   const Index ends[2] = {a, b};
   facets_through<D>(mesh_, shell, ends, facets_);
   if (!facets_on_one_surface() || holds_required_facet<D>(mesh_, facets_)) return std::nullopt;

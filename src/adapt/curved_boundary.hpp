@@ -1,8 +1,9 @@
 // The boundary as the curved passes change it (docs/adaptation.md §Curved passes, on the boundary):
 // which boundary edges a P2 split may cut and which boundary vertices a P2 collapse may remove, and
 // where their new vertex and new boundary edges' nodes go (the closest points of the geometry the
-// curving used). A split takes an edge of one smooth surface (not a feature line, no fold sharper
-// than the feature angle between its two facets, no required facet); a collapse removes a surface vertex (not on a
+// curving used). A split or a swap (3D: a flip of the edge on its surface) takes an edge of one
+// smooth surface (not a feature line, no fold sharper than the feature angle between its two
+// facets, no required facet); a collapse removes a surface vertex (not on a
 // feature line, not a corner) along a boundary edge. Both keep every new facet within the feature
 // angle of the facet it replaces, and a collapse keeps the surface's link condition. A move takes
 // a surface vertex along its surface, each of its facets turning by less than the feature angle.
@@ -25,9 +26,9 @@ class CurvedBoundary {
   // they follow every operation and compaction. `geometry` outlives this object.
   CurvedBoundary(Mesh<D>& mesh, const BoundaryGeometry<D>& geometry, double feature_angle_degrees);
 
-  // The placement of a split of edge (a, b), whose shell is `shell`, when the edge is on the
-  // boundary and may be split there; none otherwise (an interior edge, or one the passes leave).
-  std::optional<BoundaryPlacement<D>> split_placement(std::span<const Index> shell, Index a, Index b);
+  // The placement of a split or swap of edge (a, b), whose shell is `shell`, when the edge is on
+  // the boundary and may change there; none otherwise (an interior edge, or one the passes leave).
+  std::optional<BoundaryPlacement<D>> edge_placement(std::span<const Index> shell, Index a, Index b);
   // The placement of the collapse of `removed`, whose ball is `ball`, onto `kept`, when `removed`
   // is on the boundary and may go; none otherwise.
   std::optional<BoundaryPlacement<D>> collapse_placement(std::span<const Index> ball, Index removed, Index kept);

@@ -182,11 +182,11 @@ void P2Operations<D>::place_on_boundary(const BoundaryPlacement<D>& boundary, In
 }
 
 template <int D>
-CavityStatus P2Operations<D>::swap_edge(Index a, Index b, std::span<const Index> apexes, Bar bar) {
+CavityStatus P2Operations<D>::swap_edge(Index a, Index b, std::span<const Index> apexes, Bar bar, const BoundaryPlacement<D>* boundary) {
   if (mesh_.find_edge(a, b) == kNoIndex) return CavityStatus::kNotStarShaped;
   collect_shell(mesh_, a, b, cavity_);
   const Index ends[2] = {a, b};
-  if (on_boundary(cavity_, ends)) return CavityStatus::kCrossesBoundary;
+  if (!boundary && on_boundary(cavity_, ends)) return CavityStatus::kCrossesBoundary;
   // The new edges from the apex start straight (their fallback).
   P2CavityRequest<D> request;
   request.quality_to_beat = bar.quality_to_beat;
@@ -198,7 +198,18 @@ CavityStatus P2Operations<D>::swap_edge(Index a, Index b, std::span<const Index>
     const Index apex = apexes[i];
     const bool apex_in_shell = std::any_of(cavity_.begin(), cavity_.end(),
                                            [&](Index k) { return small_set_holds(mesh_.element(k), apex); });
-    status = apex == a || apex == b || !apex_in_shell ? CavityStatus::kNotStarShaped : operator_.apply(mesh_, cavity_, apex, request);
+    if (apex == a || apex == b || !apex_in_shell) {
+      status = CavityStatus::kNotStarShaped;
+      continue;
+    }
+    if (boundary) {  // a surface flip: the new boundary edge from the apex starts straight too
+      starts_.clear();
+      for (Index f : boundary->facets)
+        for (Index w : mesh_.facet(f))
+          if (w != apex) starts_.push_back({apex, w, 0.5 * (mesh_.vertex(apex) + mesh_.vertex(w))});
+      place_on_boundary(*boundary, apex, true, request);
+    }
+    status = operator_.apply(mesh_, cavity_, apex, request);
   }
   return status;
 }

@@ -10,10 +10,9 @@
 // With P2CavityOptions::straight_quality_floor, none makes a straight simplex poorer than
 // min(floor, the worst it replaces) (kFlatStraightElement).
 // An edge or vertex on a boundary face is refused (kCrossesBoundary) unless the caller places the
-// split, collapse or move on the boundary (BoundaryPlacement: which facets, and the geometry): the
-// new or moved vertex and the boundary edges through it then lie on the geometry. Swaps are
-// interior only. The decision figures are curved too: `edge_length` is the Riemannian length of the curved
-// edge, `quality` the curved mean ratio.
+// split, collapse, swap or move on the boundary (BoundaryPlacement: which facets, and the geometry):
+// the new or moved vertex and the new boundary edges then lie on the geometry. The decision figures are curved too: `edge_length` is the
+// Riemannian length of the curved edge, `quality` the curved mean ratio.
 #pragma once
 
 #include <functional>
@@ -25,9 +24,9 @@
 
 namespace hocav {
 
-// A split, collapse or move on the boundary, as the caller's geometry decides it: the boundary
-// facets through the split edge or around the removed or moved vertex (all on one smooth surface;
-// a split or collapse re-stars them, a move keeps them), the closest point of that surface to a
+// A split, collapse, swap or move on the boundary, as the caller's geometry decides it: the boundary
+// facets through the split or swapped edge or around the removed or moved vertex (all on one smooth
+// surface; a split, collapse or swap re-stars them, a move keeps them), the closest point of that surface to a
 // point (where the new or moved vertex and the boundary edges' nodes through it go), and a test of
 // the planned boundary (P2CavityRequest::boundary_check; none when empty).
 template <int D>
@@ -59,7 +58,9 @@ class P2Operations {
   CavityStatus split_edge(Index a, Index b, Index* inserted = nullptr, Bar bar = {}, const BoundaryPlacement<D>* boundary = nullptr);
   CavityStatus collapse_edge(Index removed, Index kept, Bar bar = {}, const BoundaryPlacement<D>* boundary = nullptr);
   // The shell of (a, b) re-starred from the first of `apexes` that the operator accepts.
-  CavityStatus swap_edge(Index a, Index b, std::span<const Index> apexes, Bar bar = {});
+  // With `boundary`, (a, b) is a boundary edge flipped on its surface: the apexes are the far
+  // vertices of its two facets, and the new boundary edge between them goes on the geometry.
+  CavityStatus swap_edge(Index a, Index b, std::span<const Index> apexes, Bar bar = {}, const BoundaryPlacement<D>* boundary = nullptr);
   CavityStatus swap_edge(Index a, Index b, Index apex, Bar bar = {}) { return swap_edge(a, b, std::span(&apex, 1), bar); }
   // With `boundary`, v is on it and goes to the closest point of its surface to x.
   CavityStatus move_vertex(Index v, const Vec<D>& x, Bar bar = {}, const BoundaryPlacement<D>* boundary = nullptr);

@@ -1,7 +1,8 @@
 // The curved passes' boundary operations (src/adapt/curved_boundary.hpp) one by one, in 2D and 3D:
-// a P2 split of a boundary edge, a P2 collapse of a surface vertex and a P2 move of one keep the
-// mesh consistent and every element certified, put the new or moved vertex and the boundary edges'
-// nodes through it on the geometry, and re-star the boundary facets; feature lines, corners and
+// a P2 split of a boundary edge, a P2 collapse of a surface vertex, a P2 flip of a boundary edge
+// and a P2 move of a surface vertex keep the mesh consistent and every element certified, put the
+// new or moved vertex and the new boundary edges' nodes on the geometry, and re-star the boundary
+// facets; feature lines, corners and
 // interior edges get no placement.
 #include "adapt/curved_boundary.hpp"
 
@@ -106,7 +107,7 @@ void check_boundary_split() {
   const Index facets_before = mesh.facet_count();
   std::vector<Index> cavity;
   collect_shell(mesh, a, b, cavity);
-  const auto placement = boundary.split_placement(cavity, a, b);
+  const auto placement = boundary.edge_placement(cavity, a, b);
   ASSERT_TRUE(placement);
   // Without the placement, the boundary edge is refused as before.
   EXPECT_EQ(operations.split_edge(a, b), CavityStatus::kCrossesBoundary);
@@ -177,6 +178,46 @@ void check_boundary_move() {
 TEST(CurvedBoundary, ASurfaceVertexMovedInP2StaysOnTheGeometryWithItsBoundaryNodes2D) { check_boundary_move<2>(); }
 TEST(CurvedBoundary, ASurfaceVertexMovedInP2StaysOnTheGeometryWithItsBoundaryNodes3D) { check_boundary_move<3>(); }
 
+// A wall edge flipped on the sphere: the edge between the far vertices of its two facets replaces it,
+// its node on the sphere, the facets as many as before and of the wall's ref. (The structured shell's
+// first wall edges fold their shell when flipped: the first flip the certificate accepts is checked.)
+TEST(CurvedBoundary, ABoundaryEdgeSwappedInP2IsFlippedOnTheGeometry) {
+  CurvedShell<3> shell(0.05);
+  Mesh<3>& mesh = shell.mesh;
+  CurvedBoundary<3> boundary(mesh, shell.geometry, 45);
+  P2Operations<3> operations(mesh, *shell.field, nullptr, {.jacobian_floor = kFloor});
+  const Index facets_before = mesh.facet_count();
+  std::vector<Index> cavity, far;
+  Index flipped = kNoIndex, tried = 0;
+  for (Index f = 0; f < facets_before && flipped == kNoIndex; ++f) {
+    if (mesh.facet_ref(f) != 1) continue;
+    const Index a = mesh.facet(f)[0], b = mesh.facet(f)[1];
+    collect_shell(mesh, a, b, cavity);
+    const auto placement = boundary.edge_placement(cavity, a, b);
+    ASSERT_TRUE(placement);
+    far.clear();
+    for (Index g : placement->facets)
+      for (Index w : mesh.facet(g))
+        if (w != a && w != b) far.push_back(w);
+    ASSERT_EQ(far.size(), 2u);
+    EXPECT_EQ(operations.swap_edge(a, b, far), CavityStatus::kCrossesBoundary);
+    ++tried;
+    if (operations.swap_edge(a, b, far, {}, &*placement) != CavityStatus::kAccepted) continue;
+    EXPECT_EQ(mesh.find_edge(a, b), kNoIndex);
+    flipped = mesh.find_edge(far[0], far[1]);
+  }
+  ASSERT_NE(flipped, kNoIndex) << tried << " flips tried";
+  EXPECT_TRUE(on_inner_wall<3>(mesh.edge_node(flipped)));
+  mesh.compact();
+  expect_consistent(mesh);
+  EXPECT_TRUE(every_element_certified(mesh));
+  EXPECT_EQ(mesh.facet_count(), facets_before);
+  for (Index f = 0; f < mesh.facet_count(); ++f) {
+    if (!small_set_holds(mesh.facet(f), far[0]) || !small_set_holds(mesh.facet(f), far[1])) continue;
+    EXPECT_EQ(mesh.facet_ref(f), 1);
+  }
+}
+
 // On a coarse shell (4 cells along a cube face's side), collapsing a wall vertex doubles wall edges
 // whose nodes on the sphere would fold their elements: the certification pulls them off the
 // geometry, so the collapse is refused and the mesh left as it was.
@@ -228,11 +269,11 @@ TEST(CurvedBoundary, FeatureLinesCornersAndInteriorEdgesGetNoPlacement) {
   ASSERT_NE(center, kNoIndex);
   std::vector<Index> elements;
   collect_shell(mesh, corner, on_line, elements);
-  EXPECT_FALSE(boundary.split_placement(elements, corner, on_line));
+  EXPECT_FALSE(boundary.edge_placement(elements, corner, on_line));
   collect_shell(mesh, on_face, center, elements);
-  EXPECT_FALSE(boundary.split_placement(elements, on_face, center));
+  EXPECT_FALSE(boundary.edge_placement(elements, on_face, center));
   collect_shell(mesh, on_line, on_face, elements);
-  EXPECT_TRUE(boundary.split_placement(elements, on_line, on_face));  // an edge inside face z = 0
+  EXPECT_TRUE(boundary.edge_placement(elements, on_line, on_face));  // an edge inside face z = 0
   collect_ball(mesh, on_line, elements);
   EXPECT_FALSE(boundary.collapse_placement(elements, on_line, corner));
   collect_ball(mesh, corner, elements);
