@@ -35,6 +35,9 @@ CASES = {
     "cubed-shell-bl-inner": (3, [["generate", "cubed-shell-bl-inner", "--target-tets", "5000", "-o", "start.meshb"],
                                  ["metric", "start.meshb", "--implied", "-o", "start.solb"]],
                              ["--metric", "start.solb"], (0.5, 1.0)),
+    "cubed-shell-bl-both": (3, [["generate", "cubed-shell-bl-both", "--target-tets", "5000", "-o", "start.meshb"],
+                                ["metric", "start.meshb", "--implied", "-o", "start.solb"]],
+                            ["--metric", "start.solb"], (0.5, 1.0)),
     # Issue 13's wall with its sag bounded by half the first layer (docs/adaptation.md §The Hausdorff bound).
     "cubed-shell-bl-inner-relative": (3, [["generate", "cubed-shell-bl-inner", "--target-tets", "5000", "-o", "start.meshb"],
                                           ["metric", "start.meshb", "--implied", "-o", "start.solb"]],
