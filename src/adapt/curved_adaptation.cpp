@@ -215,13 +215,13 @@ CurvedOperationCount split_long_curved_edges(PassTools<D>& tools, ThreadPool& po
   for (const EdgeToFix& edge : edges_outside(tools.mesh, tools.operations, -INFINITY, kSplitLength, pool)) {
     if (!still_edge_of_length(tools.mesh, tools.operations, edge, -INFINITY, kSplitLength)) continue;
     collect_shell(tools.mesh, edge.a, edge.b, shell);
-    const auto placement = tools.boundary ? tools.boundary->edge_placement(shell, edge.a, edge.b) : std::nullopt;
+    const auto placement = tools.boundary ? tools.boundary->edge_placement(shell, edge.a, edge.b, true) : std::nullopt;
     const typename P2Operations<D>::Bar bar{quality_to_keep(tools.operations, shell, tools.mesh_worst), -1};
     Index inserted = kNoIndex;
     const CavityStatus status = tools.operations.split_edge(edge.a, edge.b, &inserted, bar, placement ? &*placement : nullptr);
     count.add(status);
     if (status == CavityStatus::kAccepted && placement) {
-      tools.boundary->add_surface_vertex(inserted);
+      tools.boundary->add_boundary_vertex(inserted, placement->lines.empty() ? VertexClass::kSurface : VertexClass::kRidge);
       ++count.boundary_done;
     }
   }
@@ -275,7 +275,7 @@ CurvedOperationCount swap_poor_shells(PassTools<D>& tools, DigestMemo& refusals,
     const Index a = first, b = second;
     if (mesh.find_edge(a, b) == kNoIndex) continue;
     collect_shell(mesh, a, b, shell);
-    const auto placement = D == 3 && tools.boundary ? tools.boundary->edge_placement(shell, a, b) : std::nullopt;
+    const auto placement = D == 3 && tools.boundary ? tools.boundary->edge_placement(shell, a, b, false) : std::nullopt;
     const CavityStatus status = unless_refused_before(refusals, cavity_digest(kSwapRefusal, mesh, operations, shell, {a, b}), [&] {
       const typename P2Operations<D>::Bar bar{kQualityGain * worst_quality(operations, shell), unit_length(operations.edge_length(a, b))};
       ring.clear();

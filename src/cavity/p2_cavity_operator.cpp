@@ -75,6 +75,7 @@ CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const I
   plan_options.check_straight_measure = options_.positive_straight_elements;
   plan_options.removable_vertex = request.removable_vertex;
   plan_options.removed_facets = request.removed_facets;
+  plan_options.removed_lines = request.removed_lines;
   CavityStatus status = p1_.plan(mesh, cavity, vertex, plan_options);
   counters_.seconds_plan += seconds_since(start);
   if (status != CavityStatus::kAccepted) {

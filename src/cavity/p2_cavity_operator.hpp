@@ -88,6 +88,7 @@ struct P2CavityRequest {
   // refused, kBoundaryGeometry, unless every such node reaches the geometry, so the boundary never
   // leaves it); and a test of the planned boundary, before any curving (false: kBoundaryGeometry).
   std::span<const Index> removed_facets{};
+  std::span<const Index> removed_lines{};  // 3D: the feature lines it re-stars too (CavityOptions::removed_lines)
   std::span<const EdgeStart<D>> boundary_nodes{};
   std::function<bool(const CavityOperator<D>&)> boundary_check{};
 };

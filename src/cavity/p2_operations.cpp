@@ -109,7 +109,7 @@ CavityStatus P2Operations<D>::split_edge(Index a, Index b, Index* inserted, Bar 
   // point of face (a, b, c)'s P2 map halfway between the node and c. So the fallback configuration
   // is the old shell's geometry exactly (docs/curving.md).
   const Vec<D> A = mesh_.vertex(a), B = mesh_.vertex(b), X = mesh_.edge_node(edge);
-  const Index m = add_vertex(boundary ? boundary->onto_surface(X) : X, a);
+  const Index m = add_vertex(boundary ? boundary->place(X, kNoIndex) : X, a);
   starts_.assign({{m, a, point_on_edge(A, X, B, 0.25)}, {m, b, point_on_edge(A, X, B, 0.75)}});
   neighbors_.clear();
   for (Index k : cavity_)
@@ -167,7 +167,10 @@ CavityStatus P2Operations<D>::collapse_edge(Index removed, Index kept, Bar bar, 
 
 template <int D>
 void P2Operations<D>::place_on_boundary(const BoundaryPlacement<D>& boundary, Index center, bool restar, P2CavityRequest<D>& request) {
-  if (restar) request.removed_facets = boundary.facets;
+  if (restar) {
+    request.removed_facets = boundary.facets;
+    request.removed_lines = boundary.lines;
+  }
   request.boundary_check = boundary.check;
   boundary_nodes_.clear();
   for (const EdgeStart<D>& start : starts_) {
@@ -176,7 +179,7 @@ void P2Operations<D>::place_on_boundary(const BoundaryPlacement<D>& boundary, In
     // with the far vertices of the collapsed edge's facets); a move bends all its edges.
     if (restar && mesh_.find_edge(center, w) != kNoIndex) continue;
     if (std::any_of(boundary.facets.begin(), boundary.facets.end(), [&](Index f) { return small_set_holds(mesh_.facet(f), w); }))
-      boundary_nodes_.push_back({start.a, start.b, boundary.onto_surface(start.node)});
+      boundary_nodes_.push_back({start.a, start.b, boundary.place(start.node, w)});
   }
   request.boundary_nodes = boundary_nodes_;
 }
@@ -222,7 +225,7 @@ CavityStatus P2Operations<D>::move_vertex(Index v, const Vec<D>& x, Bar bar, con
   P2CavityRequest<D> request;
   request.straight_quality_to_keep = straight_quality_to_keep(cavity_);  // before the move
   const auto slot = static_cast<std::size_t>(v);
-  const Vec<D> from = mesh_.vertex(v), to = boundary ? boundary->onto_surface(x) : x;
+  const Vec<D> from = mesh_.vertex(v), to = boundary ? boundary->place(x, kNoIndex) : x;
   const SymMat<D> from_log_metric = log_metrics_[slot];
   const Index from_hint = hints_[slot];
   const auto sample = field_.sample(to, from_hint);

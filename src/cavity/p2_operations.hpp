@@ -25,14 +25,16 @@
 namespace hocav {
 
 // A split, collapse, swap or move on the boundary, as the caller's geometry decides it: the boundary
-// facets through the split or swapped edge or around the removed or moved vertex (all on one smooth
-// surface; a split, collapse or swap re-stars them, a move keeps them), the closest point of that surface to a
-// point (where the new or moved vertex and the boundary edges' nodes through it go), and a test of
-// the planned boundary (P2CavityRequest::boundary_check; none when empty).
+// facets through the split or swapped edge or around the removed or moved vertex (a split, collapse
+// or swap re-stars them, a move keeps them), and in 3D the feature lines it re-stars with them (a
+// split or collapse along a line); where a point goes on the boundary (`place(x, w)`: for the new
+// or moved vertex, w = kNoIndex; for the boundary edge from that vertex to w, its node); and a test
+// of the planned boundary (P2CavityRequest::boundary_check; none when empty).
 template <int D>
 struct BoundaryPlacement {
   std::span<const Index> facets;
-  std::function<Vec<D>(const Vec<D>&)> onto_surface;
+  std::span<const Index> lines{};
+  std::function<Vec<D>(const Vec<D>&, Index)> place;
   std::function<bool(const CavityOperator<D>&)> check{};
 };
 

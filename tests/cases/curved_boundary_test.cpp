@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 
+#include "adapt/boundary_pieces.hpp"
 #include "base/small_set.hpp"
 #include "bezier/jacobian_bounds.hpp"
 #include "bezier/p2_element.hpp"
@@ -22,6 +23,7 @@
 #include "mesh/consistency.hpp"
 #include "surface/analytic_boundary.hpp"
 #include "surface/boundary_proposals.hpp"
+#include "surface/p3_surrogate.hpp"
 
 namespace hocav {
 namespace {
@@ -107,13 +109,13 @@ void check_boundary_split() {
   const Index facets_before = mesh.facet_count();
   std::vector<Index> cavity;
   collect_shell(mesh, a, b, cavity);
-  const auto placement = boundary.edge_placement(cavity, a, b);
+  const auto placement = boundary.edge_placement(cavity, a, b, true);
   ASSERT_TRUE(placement);
   // Without the placement, the boundary edge is refused as before.
   EXPECT_EQ(operations.split_edge(a, b), CavityStatus::kCrossesBoundary);
   Index m = kNoIndex;
   ASSERT_EQ(operations.split_edge(a, b, &m, {}, &*placement), CavityStatus::kAccepted);
-  boundary.add_surface_vertex(m);
+  boundary.add_boundary_vertex(m, VertexClass::kSurface);
   EXPECT_TRUE(on_inner_wall<D>(mesh.vertex(m)));
   expect_wall_edges_on_geometry(mesh, m);
   EXPECT_EQ(mesh.find_edge(a, b), kNoIndex);
@@ -193,7 +195,7 @@ TEST(CurvedBoundary, ABoundaryEdgeSwappedInP2IsFlippedOnTheGeometry) {
     if (mesh.facet_ref(f) != 1) continue;
     const Index a = mesh.facet(f)[0], b = mesh.facet(f)[1];
     collect_shell(mesh, a, b, cavity);
-    const auto placement = boundary.edge_placement(cavity, a, b);
+    const auto placement = boundary.edge_placement(cavity, a, b, true);
     ASSERT_TRUE(placement);
     far.clear();
     for (Index g : placement->facets)
@@ -246,9 +248,9 @@ TEST(CurvedBoundary, ABoundaryEdgeSplitInP2PutsItsVertexAndNewBoundaryNodesOnThe
 TEST(CurvedBoundary, ASurfaceVertexCollapsedInP2LeavesItsNewBoundaryNodesOnTheGeometry2D) { check_boundary_collapse<2>(); }
 TEST(CurvedBoundary, ASurfaceVertexCollapsedInP2LeavesItsNewBoundaryNodesOnTheGeometry3D) { check_boundary_collapse<3>(); }
 
-// The unit cube's edges are feature lines (90° > 45°) and its corners corners: a cube edge is not
-// split, a vertex on it or at a corner is not removed; an interior edge gets no placement; a face
-// vertex collapses only along the face.
+// The unit cube's edges are feature lines (90° > 45°) and its corners corners: a cube edge is split
+// along its line but not flipped, a vertex on it collapses only along it, a corner never; an
+// interior edge gets no placement; a face vertex collapses only along the face.
 TEST(CurvedBoundary, FeatureLinesCornersAndInteriorEdgesGetNoPlacement) {
   Mesh<3> mesh = generate_cube(2);
   mesh.build_topology();
@@ -269,18 +271,76 @@ TEST(CurvedBoundary, FeatureLinesCornersAndInteriorEdgesGetNoPlacement) {
   ASSERT_NE(center, kNoIndex);
   std::vector<Index> elements;
   collect_shell(mesh, corner, on_line, elements);
-  EXPECT_FALSE(boundary.edge_placement(elements, corner, on_line));
+  EXPECT_FALSE(boundary.edge_placement(elements, corner, on_line, false));      // a line is not flipped
+  const auto along = boundary.edge_placement(elements, corner, on_line, true);  // but split along its curve
+  ASSERT_TRUE(along);
+  EXPECT_EQ(along->lines.size(), 1u);
   collect_shell(mesh, on_face, center, elements);
-  EXPECT_FALSE(boundary.edge_placement(elements, on_face, center));
+  EXPECT_FALSE(boundary.edge_placement(elements, on_face, center, true));
   collect_shell(mesh, on_line, on_face, elements);
-  EXPECT_TRUE(boundary.edge_placement(elements, on_line, on_face));  // an edge inside face z = 0
+  EXPECT_TRUE(boundary.edge_placement(elements, on_line, on_face, false));  // an edge inside face z = 0
   collect_ball(mesh, on_line, elements);
-  EXPECT_FALSE(boundary.collapse_placement(elements, on_line, corner));
+  EXPECT_FALSE(boundary.collapse_placement(elements, on_line, on_face));            // off its line
+  const auto onto_corner = boundary.collapse_placement(elements, on_line, corner);  // along it
+  ASSERT_TRUE(onto_corner);
+  EXPECT_EQ(onto_corner->lines.size(), 2u);
   collect_ball(mesh, corner, elements);
   EXPECT_FALSE(boundary.collapse_placement(elements, corner, on_line));
   collect_ball(mesh, on_face, elements);
   EXPECT_FALSE(boundary.collapse_placement(elements, on_face, center));  // not along the boundary
   EXPECT_TRUE(boundary.collapse_placement(elements, on_face, on_line));
+}
+
+// A cube edge (a feature line between two faces of different refs) split along it in P2 on the
+// cube's P3 surrogate: the new vertex and the line's new edges lie on the cube edge, the line is
+// one more edge long; then the new vertex collapsed back along its line onto a corner.
+TEST(CurvedBoundary, AFeatureLineIsSplitAndCollapsedAlongItsCurve) {
+  Mesh<3> mesh = generate_cube(2);
+  mesh.build_topology();
+  mesh.orient_boundary_facets_outward();
+  const P3Surrogate<3> geometry(mesh);
+  mesh.make_p2();
+  SymMat<3> metric{};
+  for (int i = 0; i < 3; ++i) metric(i, i) = 100;  // h = 0.1
+  const MetricField<3> field(mesh, std::vector<SymMat<3>>(static_cast<std::size_t>(mesh.vertex_count()), metric));
+  CurvedBoundary<3> boundary(mesh, geometry, 45);
+  P2Operations<3> operations(mesh, field, nullptr, {.jacobian_floor = kFloor});
+  const auto find_vertex = [&](Vec3 x) {
+    for (Index v = 0; v < mesh.vertex_count(); ++v)
+      if (norm(mesh.vertex(v) - x) < 1e-12) return v;
+    return kNoIndex;
+  };
+  const Index corner = find_vertex({0, 0, 0}), on_line = find_vertex({0.5, 0, 0});
+  const auto on_cube_edge = [](const Vec3& x) { return std::abs(x[1]) < 1e-12 && std::abs(x[2]) < 1e-12; };
+  mesh.compact();
+  const Index lines_before = mesh.line_count();
+  std::vector<Index> elements, lines;
+  collect_shell(mesh, corner, on_line, elements);
+  const auto split = boundary.edge_placement(elements, corner, on_line, true);
+  ASSERT_TRUE(split);
+  Index m = kNoIndex;
+  ASSERT_EQ(operations.split_edge(corner, on_line, &m, {}, &*split), CavityStatus::kAccepted);
+  boundary.add_boundary_vertex(m, VertexClass::kRidge);
+  EXPECT_TRUE(on_cube_edge(mesh.vertex(m)));
+  for (Index end : {corner, on_line}) {
+    lines_along(mesh, m, end, lines);
+    EXPECT_EQ(lines.size(), 1u);
+    EXPECT_TRUE(on_cube_edge(mesh.edge_node(mesh.find_edge(m, end))));
+  }
+  expect_consistent(mesh);
+  EXPECT_TRUE(every_element_certified(mesh));
+
+  collect_ball(mesh, m, elements);
+  const auto collapse = boundary.collapse_placement(elements, m, corner);
+  ASSERT_TRUE(collapse);
+  ASSERT_EQ(operations.collapse_edge(m, corner, {}, &*collapse), CavityStatus::kAccepted);
+  lines_along(mesh, corner, on_line, lines);
+  EXPECT_EQ(lines.size(), 1u);
+  EXPECT_TRUE(on_cube_edge(mesh.edge_node(mesh.find_edge(corner, on_line))));
+  mesh.compact();
+  EXPECT_EQ(mesh.line_count(), lines_before);
+  expect_consistent(mesh);
+  EXPECT_TRUE(every_element_certified(mesh));
 }
 
 }  // namespace
