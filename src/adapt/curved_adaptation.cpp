@@ -184,7 +184,8 @@ std::optional<CollapseVerdict> collapse(PassTools<D>& tools, Index removed, Inde
                                         std::vector<Index>& ring) {
   collect_ball(tools.mesh, removed, ball);
   if (!collapse_keeps_lengths(tools.mesh, tools.operations, removed, kept, ball, ring)) return std::nullopt;
-  const auto placement = tools.boundary ? tools.boundary->collapse_placement(ball, removed, kept) : std::nullopt;
+  auto placement = tools.boundary ? tools.boundary->collapse_placement(ball, removed, kept) : std::nullopt;
+  if (placement) placement->longest_edge = kSplitLength;  // its boundary edges follow the geometry: measured
   const typename P2Operations<D>::Bar bar{quality_to_keep(tools.operations, ball, tools.mesh_worst), -1};
   return CollapseVerdict{tools.operations.collapse_edge(removed, kept, bar, placement ? &*placement : nullptr), placement.has_value()};
 }

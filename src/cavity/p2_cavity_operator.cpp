@@ -133,7 +133,8 @@ CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const I
     return CavityStatus::kBoundaryGeometry;
   }
   if ((request.quality_to_beat >= 0 && !new_elements_above(request.quality_to_beat)) ||
-      (request.unit_edges_to_keep >= 0 && unit_new_inner_edges(mesh) < request.unit_edges_to_keep)) {
+      (request.unit_edges_to_keep >= 0 && unit_new_inner_edges(mesh) < request.unit_edges_to_keep) ||
+      !placed_edges_within(mesh, request.longest_placed_edge)) {
     ++counters_.rejected_quality;
     return CavityStatus::kNoImprovement;
   }
@@ -141,15 +142,25 @@ CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const I
 }
 
 template <int D>
+double P2CavityOperator<D>::curved_length(const Mesh<D>& mesh, const CurvedEdge& edge) const {
+  const auto a = static_cast<std::size_t>(edge.a), b = static_cast<std::size_t>(edge.b);
+  return high_precision_edge_length(field_, mesh.vertex(edge.a), mesh.vertex(edge.b), vertex_log_metrics_[a], vertex_log_metrics_[b],
+                                    edge.node(), vertex_hints_[a]);
+}
+
+template <int D>
 int P2CavityOperator<D>::unit_new_inner_edges(const Mesh<D>& mesh) const {
   int unit = 0;
-  for (const CurvedEdge& edge : curved_) {
-    if (!edge.inner) continue;
-    const auto a = static_cast<std::size_t>(edge.a), b = static_cast<std::size_t>(edge.b);
-    unit += unit_length(high_precision_edge_length(field_, mesh.vertex(edge.a), mesh.vertex(edge.b), vertex_log_metrics_[a],
-                                                   vertex_log_metrics_[b], edge.node(), vertex_hints_[a]));
-  }
+  for (const CurvedEdge& edge : curved_)
+    if (edge.inner) unit += unit_length(curved_length(mesh, edge));
   return unit;
+}
+
+template <int D>
+bool P2CavityOperator<D>::placed_edges_within(const Mesh<D>& mesh, double longest) const {
+  if (longest == INFINITY) return true;
+  return std::all_of(curved_.begin(), curved_.end(),
+                     [&](const CurvedEdge& edge) { return !edge.placed || curved_length(mesh, edge) <= longest; });
 }
 
 template <int D>

@@ -91,6 +91,10 @@ struct P2CavityRequest {
   std::span<const Index> removed_lines{};  // 3D: the feature lines it re-stars too (CavityOptions::removed_lines)
   std::span<const EdgeStart<D>> boundary_nodes{};
   std::function<bool(const CavityOperator<D>&)> boundary_check{};
+  // The edges placed on the geometry must be at most this long in their curved length, else
+  // kNoImprovement (a boundary edge follows the geometry, not the optimizer, so its straight
+  // length does not bound it).
+  double longest_placed_edge = INFINITY;
 };
 
 // Whether a Riemannian edge length is unit (the loop's range [1/√2, √2]).
@@ -184,6 +188,9 @@ class P2CavityOperator {
   bool new_elements_above(double bar) const;
   // How many new inner edges are unit in their curved length.
   int unit_new_inner_edges(const Mesh<D>& mesh) const;
+  // Whether every edge placed on the geometry is at most `longest` in its curved length.
+  bool placed_edges_within(const Mesh<D>& mesh, double longest) const;
+  double curved_length(const Mesh<D>& mesh, const CurvedEdge& edge) const;
   // Pulls back the changed edges of a failing candidate; false when nothing certifies it.
   bool correct(const Candidate& candidate);
   // After a correction: the candidates holding an edge it moved need certifying again.

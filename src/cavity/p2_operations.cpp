@@ -172,6 +172,7 @@ void P2Operations<D>::place_on_boundary(const BoundaryPlacement<D>& boundary, In
     request.removed_lines = boundary.lines;
   }
   request.boundary_check = boundary.check;
+  request.longest_placed_edge = boundary.longest_edge;
   boundary_nodes_.clear();
   for (const EdgeStart<D>& start : starts_) {
     const Index w = start.a == center ? start.b : start.a;

@@ -15,6 +15,7 @@
 // Riemannian length of the curved edge, `quality` the curved mean ratio.
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <span>
 #include <vector>
@@ -36,6 +37,7 @@ struct BoundaryPlacement {
   std::span<const Index> lines{};
   std::function<Vec<D>(const Vec<D>&, Index)> place;
   std::function<bool(const CavityOperator<D>&)> check{};
+  double longest_edge = INFINITY;  // P2CavityRequest::longest_placed_edge
 };
 
 template <int D>

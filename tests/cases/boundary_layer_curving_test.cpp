@@ -156,6 +156,7 @@ TEST(BoundaryLayerCurving, CurvedPassesChangeTheWallAndKeepItOnTheGeometry) {
   for (const CurvedPass& pass : adapted.report.curved_passes->passes)
     on_boundary += pass.collapses.boundary_done + pass.splits.boundary_done + pass.moves.boundary_done;
   EXPECT_GT(on_boundary, 0);
+  EXPECT_TRUE(adapted.report.curved_passes->converged);
   const auto [node, surrogate] = wall_errors(mesh, input);
   EXPECT_LT(node, 2 * surrogate) << node << " " << surrogate;
   EXPECT_GE(adapted.report.curving->normalized_jacobian.min, CurvingOptions{}.jacobian_floor);

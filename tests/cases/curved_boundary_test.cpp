@@ -140,9 +140,15 @@ void check_boundary_collapse() {
   const Index facets_before = mesh.facet_count();
   std::vector<Index> ball;
   collect_ball(mesh, removed, ball);
-  const auto placement = boundary.collapse_placement(ball, removed, kept);
+  auto placement = boundary.collapse_placement(ball, removed, kept);
   ASSERT_TRUE(placement);
   EXPECT_EQ(operations.collapse_edge(removed, kept), CavityStatus::kCrossesBoundary);
+  // Its new boundary edges (about two wall edges long, a fraction of the metric's size 0.5) are
+  // measured along the geometry: refused when they may be no longer than a hundredth.
+  placement->longest_edge = 0.01;
+  EXPECT_EQ(operations.collapse_edge(removed, kept, {}, &*placement), CavityStatus::kNoImprovement);
+  EXPECT_FALSE(mesh.vertex_removed(removed));
+  placement->longest_edge = INFINITY;
   ASSERT_EQ(operations.collapse_edge(removed, kept, {}, &*placement), CavityStatus::kAccepted);
   EXPECT_TRUE(mesh.vertex_removed(removed));
   expect_wall_edges_on_geometry(mesh, kept);
