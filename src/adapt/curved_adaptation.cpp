@@ -293,44 +293,30 @@ CurvedOperationCount swap_poor_shells(PassTools<D>& tools, DigestMemo& refusals,
   return count;
 }
 
-// The vertices of the poor elements that may move, each once, in order: the inner ones, and with a
-// boundary its surface vertices.
+// The inner vertices of the poor elements, each once, in order.
 template <int D>
-std::vector<Index> movable_vertices_of_poor_elements(const PassTools<D>& tools, ThreadPool& pool) {
-  const Mesh<D>& mesh = tools.mesh;
-  std::vector<bool> movable(static_cast<std::size_t>(mesh.vertex_count()), false);
-  for (Index v : volume_vertices(mesh)) movable[static_cast<std::size_t>(v)] = !mesh.vertex_removed(v);
-  if (tools.boundary)
-    for (Index v = 0; v < mesh.vertex_count(); ++v)
-      if (!mesh.vertex_removed(v) && tools.boundary->surface_vertex(v)) movable[static_cast<std::size_t>(v)] = true;
+std::vector<Index> inner_vertices_of_poor_elements(const Mesh<D>& mesh, const P2Operations<D>& operations, ThreadPool& pool) {
+  std::vector<bool> inner(static_cast<std::size_t>(mesh.vertex_count()), false);
+  for (Index v : volume_vertices(mesh)) inner[static_cast<std::size_t>(v)] = !mesh.vertex_removed(v);
   std::vector<Index> vertices;
-  for (Index k : poor_elements(mesh, tools.operations, pool))
+  for (Index k : poor_elements(mesh, operations, pool))
     for (Index v : mesh.element(k))
-      if (movable[static_cast<std::size_t>(v)]) vertices.push_back(v);
+      if (inner[static_cast<std::size_t>(v)]) vertices.push_back(v);
   std::sort(vertices.begin(), vertices.end());
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
   return vertices;
 }
 
-// Each movable vertex of a poor element moved toward the mean of the points that would make its
-// curved edges unit (w + (v − w)/l(v, w) over its neighbours w, as the P1 smoothing; a surface
-// vertex to that point's closest point of its surface), the whole step or half of it, when that
-// raises its ball's worst curved quality and keeps its unit edges.
+// Each inner vertex of a poor element moved toward the mean of the points that would make its
+// curved edges unit (w + (v − w)/l(v, w) over its neighbours w, as the P1 smoothing), the whole
+// step or half of it, when that raises its ball's worst curved quality and keeps its unit edges.
 template <int D>
-CurvedOperationCount smooth_curved(PassTools<D>& tools, DigestMemo& refusals, ThreadPool& pool) {
-  Mesh<D>& mesh = tools.mesh;
-  P2Operations<D>& operations = tools.operations;
+CurvedOperationCount smooth_curved(Mesh<D>& mesh, P2Operations<D>& operations, DigestMemo& refusals, ThreadPool& pool) {
   CurvedOperationCount count;
   std::vector<Index> ball, neighbors;
-  for (Index v : movable_vertices_of_poor_elements(tools, pool)) {
+  for (Index v : inner_vertices_of_poor_elements(mesh, operations, pool)) {
     collect_ball(mesh, v, ball);
-    const bool on_surface = tools.boundary && tools.boundary->surface_vertex(v);
-    const auto placement = on_surface ? tools.boundary->move_placement(ball, v) : std::nullopt;
-    if (on_surface && !placement) {
-      ++count.on_boundary;
-      continue;
-    }
-    const CavityStatus status = unless_refused_before(refusals, cavity_digest(kMoveRefusal, mesh, operations, ball, {v}), [&] {
+    count.add(unless_refused_before(refusals, cavity_digest(kMoveRefusal, mesh, operations, ball, {v}), [&] {
       other_vertices<D>(mesh, ball, v, v, neighbors);
       Vec<D> target{};
       int unit = 0;
@@ -341,14 +327,11 @@ CurvedOperationCount smooth_curved(PassTools<D>& tools, DigestMemo& refusals, Th
       }
       const Vec<D> from = mesh.vertex(v), step = (1.0 / static_cast<double>(neighbors.size())) * target - from;
       const typename P2Operations<D>::Bar bar{kQualityGain * worst_quality(operations, ball), unit};
-      const BoundaryPlacement<D>* surface = placement ? &*placement : nullptr;
-      CavityStatus moved = operations.move_vertex(v, from + step, bar, surface);
-      if (moved == CavityStatus::kNoImprovement || moved == CavityStatus::kRejectedByCurving)
-        moved = operations.move_vertex(v, from + 0.5 * step, bar, surface);
-      return moved;
-    });
-    count.add(status);
-    count.boundary_done += status == CavityStatus::kAccepted && on_surface;
+      CavityStatus status = operations.move_vertex(v, from + step, bar);
+      if (status == CavityStatus::kNoImprovement || status == CavityStatus::kRejectedByCurving)
+        status = operations.move_vertex(v, from + 0.5 * step, bar);
+      return status;
+    }));
   }
   return count;
 }
@@ -370,7 +353,7 @@ CurvedPass run_curved_pass(Mesh<D>& mesh, const MetricField<D>& field, const P2C
   pass.collapses = collapse_short_curved_edges(tools, pool);
   pass.splits = split_long_curved_edges(tools, pool);
   pass.swaps = swap_poor_shells(tools, refusals, pool);
-  pass.moves = smooth_curved(tools, refusals, pool);
+  pass.moves = smooth_curved(mesh, operations, refusals, pool);
   counters += operations.cavity_operator().counters();
   mesh.compact();
   pass.vertices = mesh.vertex_count();

@@ -5,8 +5,9 @@
 // almost nothing. Every operation is a P2 cavity operation (cavity/p2_operations.hpp), so
 // the mesh stays P2 and certified above the Jacobian floor after each one. The operations are
 // serial (the scans that list candidates run on threads): the output does not depend on the thread
-// count. With a geometry, boundary edges are split and flipped (3D) and surface vertices collapsed
-// and moved too, their vertices and boundary nodes on the geometry (curved_boundary.hpp).
+// count. With a geometry, boundary edges are split and flipped (3D) and boundary vertices collapsed
+// too, their new vertices and boundary nodes on the geometry (curved_boundary.hpp); the moves are
+// of inner vertices.
 #pragma once
 
 #include <vector>
@@ -18,7 +19,7 @@ namespace hocav {
 
 struct CurvedOperationCount {
   Index done = 0;
-  Index boundary_done = 0;  // of those done, on the boundary (a boundary edge split or flipped, a surface vertex removed or moved)
+  Index boundary_done = 0;  // of those done, on the boundary (a boundary edge split or flipped, a boundary vertex removed)
   // Refused: an edge or removed vertex on the boundary where no boundary operation applies (a feature
   // line, a corner, no geometry), or whose new facets would turn or fold (CurvedBoundary).
   Index on_boundary = 0;

@@ -125,29 +125,6 @@ std::optional<BoundaryPlacement<D>> CurvedBoundary<D>::collapse_placement(std::s
   return collapse;
 }
 
-template <int D>
-std::optional<BoundaryPlacement<D>> CurvedBoundary<D>::move_placement(std::span<const Index> ball, Index v) {
-  const Index center[1] = {v};
-  facets_through<D>(mesh_, ball, center, facets_);
-  lines_.clear();
-  ridge_ends_ = {kNoIndex, kNoIndex};
-  if (!surface_vertex(v) || !facets_on_domain_boundary() || !facets_of_one_ref()) return std::nullopt;
-  facet_normals_.clear();
-  for (Index f : facets_) facet_normals_.push_back(area_normal<D>(mesh_, mesh_.facet(f)));
-  BoundaryPlacement<D> move = placement();
-  move.check = [this](const CavityOperator<D>&) {  // the vertex is where the move puts it
-    for (std::size_t i = 0; i < facets_.size(); ++i)
-      if (!turns_less<D>(mesh_, mesh_.facet(facets_[i]), facet_normals_[i], cos_feature_angle_)) return false;
-    return true;
-  };
-  return move;
-}
-
-template <int D>
-bool CurvedBoundary<D>::surface_vertex(Index v) const {
-  return vertex_class(v) == VertexClass::kSurface;
-}
-
 template class CurvedBoundary<2>;
 template class CurvedBoundary<3>;
 

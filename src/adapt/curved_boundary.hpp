@@ -1,13 +1,12 @@
 // The boundary as the curved passes change it (docs/adaptation.md §Curved passes, "The boundary"):
 // which boundary edges a P2 split or flip may change, which boundary vertices a P2 collapse may
-// remove or a P2 move may move, and where their vertex and new boundary edges' nodes go (the
-// closest points of the geometry the curving used). A split or a flip (3D: a swap of the edge on
+// remove, and where their new vertex and new boundary edges' nodes go (the closest points of the
+// geometry the curving used). A split or a flip (3D: a swap of the edge on
 // its surface) takes an edge of one smooth surface (no fold sharper than the feature angle between
 // its two facets, no required facet), and a split also an edge of a feature line (3D), on its ridge
 // curve; a collapse removes a surface vertex along a boundary edge, or a ridge vertex along its line
 // (never a corner). Each keeps every new facet within the feature angle of the facet it replaces,
-// and a collapse keeps the surface's link condition. A move takes a surface vertex along its
-// surface, each of its facets turning by less than the feature angle.
+// and a collapse keeps the surface's link condition.
 #pragma once
 
 #include <array>
@@ -38,13 +37,8 @@ class CurvedBoundary {
   // is on the boundary and may go: a surface vertex along a boundary edge, or a ridge vertex along
   // its line; none otherwise.
   std::optional<BoundaryPlacement<D>> collapse_placement(std::span<const Index> ball, Index removed, Index kept);
-  // The placement of a move of surface vertex v, whose ball is `ball`, along its surface; none when
-  // v is not a surface vertex. Its facets may turn by less than the feature angle.
-  std::optional<BoundaryPlacement<D>> move_placement(std::span<const Index> ball, Index v);
   // After a split placed on the boundary: the class of its new vertex (kSurface, or kRidge on a line).
   void add_boundary_vertex(Index v, VertexClass vertex_class);
-  // On one smooth surface, not on a feature line, not a corner: it may move along it or vanish.
-  bool surface_vertex(Index v) const;
 
  private:
   VertexClass vertex_class(Index v) const;
@@ -66,7 +60,6 @@ class CurvedBoundary {
   std::vector<Index> facets_, lines_, ball_, kept_facets_;
   std::array<Index, 2> ridge_ends_{kNoIndex, kNoIndex};
   std::array<int, 2> ridge_refs_{};
-  std::vector<Vec<D>> facet_normals_;  // a move's facets' area normals before it
 };
 
 extern template class CurvedBoundary<2>;

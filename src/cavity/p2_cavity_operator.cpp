@@ -94,7 +94,7 @@ CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const I
   start = Clock::now();
   curved_.clear();
   curve_inner_edges(mesh, request);
-  take_boundary_nodes(mesh, request);
+  take_boundary_proposals(mesh);
   counters_.seconds_optimize += seconds_since(start);
 
   start = Clock::now();
@@ -199,7 +199,7 @@ void P2CavityOperator<D>::commit(Mesh<D>& mesh) {
       inner_nodes_[edge.id] = edge.node();
     } else {
       boundary_nodes_.emplace_back(edge.id, edge.node());
-      if (edge.proposal && edge.scale == 1) {
+      if (edge.scale == 1) {
         boundary_->consume(edge.a, edge.b);
         ++counters_.boundary_nodes_applied;
       }
@@ -226,7 +226,7 @@ void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh, const P2CavityR
     const Vec<D> start = given != request.start_nodes.end() ? given->node : default_starts[i];
     const auto on_geometry = std::find_if(request.boundary_nodes.begin(), request.boundary_nodes.end(), same_edge);
     if (on_geometry != request.boundary_nodes.end()) {  // a new boundary edge: its node is the geometry's
-      curved_.push_back({a, b, start, on_geometry->node, 1, true, static_cast<Index>(i), false, kNoIndex, false, true});
+      curved_.push_back({a, b, start, on_geometry->node, 1, true, static_cast<Index>(i), false, kNoIndex, true});
       continue;
     }
     if (given == request.start_nodes.end() && optimized_edges_ && recreated_ids[i] != kNoIndex &&
@@ -253,24 +253,14 @@ void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh, const P2CavityR
 }
 
 template <int D>
-void P2CavityOperator<D>::take_boundary_nodes(const Mesh<D>& mesh, const P2CavityRequest<D>& request) {
+void P2CavityOperator<D>::take_boundary_proposals(const Mesh<D>& mesh) {
+  if (!boundary_) return;
   for (Index edge : p1_.boundary_edges()) {
     const auto [a, b] = mesh.edge_vertices(edge);
-    const std::uint64_t key = Mesh<D>::edge_key(a, b);  // a plain variable: clang's lambdas take no structured binding
-    const auto same_edge = [key](const EdgeStart<D>& s) { return Mesh<D>::edge_key(s.a, s.b) == key; };
-    if (const auto placed = std::find_if(request.boundary_nodes.begin(), request.boundary_nodes.end(), same_edge);
-        placed != request.boundary_nodes.end()) {
-      // A moved vertex's boundary edge: from its start node (its bend kept) toward the geometry.
-      const auto given = std::find_if(request.start_nodes.begin(), request.start_nodes.end(), same_edge);
-      curved_.push_back(
-          {a, b, given != request.start_nodes.end() ? given->node : mesh.edge_node(edge), placed->node, 1, false, edge, false});
-      continue;
-    }
-    if (!boundary_) continue;
     auto proposal = boundary_->proposal(a, b);
     if (!proposal || *proposal == mesh.edge_node(edge)) continue;
     // Pulling back moves the node from where it is now toward the proposal.
-    curved_.push_back({a, b, mesh.edge_node(edge), *proposal, 1, false, edge, false, kNoIndex, true});
+    curved_.push_back({a, b, mesh.edge_node(edge), *proposal, 1, false, edge, false});
   }
 }
 

@@ -81,9 +81,9 @@ struct P2CavityRequest {
   // of at least this, else kFlatStraightElement, refused before any curving. Negative: not asked.
   double straight_quality_to_keep = -1;
   // Boundary operations (docs/curving.md §Curved operations on the boundary): the boundary facets
-  // the operation re-stars from its vertex (CavityOptions::removed_facets); the edges through the
-  // vertex that lie on the boundary (new inner edges, or the kept boundary edges of a moved
-  // vertex), each with its node on the geometry, which it takes instead of the optimizer's (pulled
+  // the operation re-stars from its vertex (CavityOptions::removed_facets); the new inner edges
+  // that lie on the boundary, each with its node on the geometry, which it takes instead of the
+  // optimizer's (pulled
   // back toward its start node if the certification asks, but not refused: the operation is
   // refused, kBoundaryGeometry, unless every such node reaches the geometry, so the boundary never
   // leaves it); and a test of the planned boundary, before any curving (false: kBoundaryGeometry).
@@ -150,8 +150,7 @@ class P2CavityOperator {
     Index id;                     // index in the plan's inner edges, or the mesh edge id
     bool optimal;                 // target is the edge's converged optimum
     Index start_hint = kNoIndex;  // the back element its optimization started from (it depends on it)
-    bool proposal = false;        // a boundary edge taking the BoundaryNodeSource's proposal
-    bool placed = false;          // an edge the request places on the geometry (boundary_nodes)
+    bool placed = false;          // a new edge the request places on the geometry (boundary_nodes)
     Vec<D> node() const { return fallback + scale * (target - fallback); }
   };
   std::span<const CurvedEdge> curved_edges() const { return curved_; }
@@ -167,9 +166,7 @@ class P2CavityOperator {
   };
 
   void curve_inner_edges(const Mesh<D>& mesh, const P2CavityRequest<D>& request);
-  // The cavity's boundary edges that change: those the request places on the geometry, and those
-  // with a waiting proposal.
-  void take_boundary_nodes(const Mesh<D>& mesh, const P2CavityRequest<D>& request);
+  void take_boundary_proposals(const Mesh<D>& mesh);
   void collect_candidates(const Mesh<D>& mesh);
   // The cavity's elements as (sorted vertices, parity of the sort), sorted: to find the one a new
   // element recreates.

@@ -124,7 +124,7 @@ CavityStatus P2Operations<D>::split_edge(Index a, Index b, Index* inserted, Bar 
   request.quality_to_beat = bar.quality_to_beat;
   request.unit_edges_to_keep = bar.unit_edges_to_keep;
   request.straight_quality_to_keep = straight_quality_to_keep(cavity_);
-  if (boundary) place_on_boundary(*boundary, m, true, request);
+  if (boundary) place_on_boundary(*boundary, m, request);
   const CavityStatus status = operator_.apply(mesh_, cavity_, m, request);
   if (status != CavityStatus::kAccepted)
     remove_last_vertex();
@@ -161,24 +161,22 @@ CavityStatus P2Operations<D>::collapse_edge(Index removed, Index kept, Bar bar, 
   request.quality_to_beat = bar.quality_to_beat;
   request.unit_edges_to_keep = bar.unit_edges_to_keep;
   request.straight_quality_to_keep = straight_quality_to_keep(cavity_);
-  if (boundary) place_on_boundary(*boundary, kept, true, request);
+  if (boundary) place_on_boundary(*boundary, kept, request);
   return operator_.apply(mesh_, cavity_, kept, request);
 }
 
 template <int D>
-void P2Operations<D>::place_on_boundary(const BoundaryPlacement<D>& boundary, Index center, bool restar, P2CavityRequest<D>& request) {
-  if (restar) {
-    request.removed_facets = boundary.facets;
-    request.removed_lines = boundary.lines;
-  }
+void P2Operations<D>::place_on_boundary(const BoundaryPlacement<D>& boundary, Index center, P2CavityRequest<D>& request) {
+  request.removed_facets = boundary.facets;
+  request.removed_lines = boundary.lines;
   request.boundary_check = boundary.check;
   request.longest_placed_edge = boundary.longest_edge;
   boundary_nodes_.clear();
   for (const EdgeStart<D>& start : starts_) {
     const Index w = start.a == center ? start.b : start.a;
-    // A split or collapse keeps the edges of `center` that exist already (a collapse's kept vertex
-    // with the far vertices of the collapsed edge's facets); a move bends all its edges.
-    if (restar && mesh_.find_edge(center, w) != kNoIndex) continue;
+    // The edges of `center` that exist already stay as they are (a collapse's kept vertex with the
+    // far vertices of the collapsed edge's facets).
+    if (mesh_.find_edge(center, w) != kNoIndex) continue;
     if (std::any_of(boundary.facets.begin(), boundary.facets.end(), [&](Index f) { return small_set_holds(mesh_.facet(f), w); }))
       boundary_nodes_.push_back({start.a, start.b, boundary.place(start.node, w)});
   }
@@ -211,7 +209,7 @@ CavityStatus P2Operations<D>::swap_edge(Index a, Index b, std::span<const Index>
       for (Index f : boundary->facets)
         for (Index w : mesh_.facet(f))
           if (w != apex) starts_.push_back({apex, w, 0.5 * (mesh_.vertex(apex) + mesh_.vertex(w))});
-      place_on_boundary(*boundary, apex, true, request);
+      place_on_boundary(*boundary, apex, request);
     }
     status = operator_.apply(mesh_, cavity_, apex, request);
   }
@@ -219,25 +217,24 @@ CavityStatus P2Operations<D>::swap_edge(Index a, Index b, std::span<const Index>
 }
 
 template <int D>
-CavityStatus P2Operations<D>::move_vertex(Index v, const Vec<D>& x, Bar bar, const BoundaryPlacement<D>* boundary) {
+CavityStatus P2Operations<D>::move_vertex(Index v, const Vec<D>& x, Bar bar) {
   collect_ball(mesh_, v, cavity_);
   const Index vertex[1] = {v};
-  if (!boundary && on_boundary(cavity_, vertex)) return CavityStatus::kCrossesBoundary;
+  if (on_boundary(cavity_, vertex)) return CavityStatus::kCrossesBoundary;
   P2CavityRequest<D> request;
   request.straight_quality_to_keep = straight_quality_to_keep(cavity_);  // before the move
   const auto slot = static_cast<std::size_t>(v);
-  const Vec<D> from = mesh_.vertex(v), to = boundary ? boundary->place(x, kNoIndex) : x;
+  const Vec<D> from = mesh_.vertex(v);
   const SymMat<D> from_log_metric = log_metrics_[slot];
   const Index from_hint = hints_[slot];
-  const auto sample = field_.sample(to, from_hint);
-  mesh_.vertex(v) = to;
+  const auto sample = field_.sample(x, from_hint);
+  mesh_.vertex(v) = x;
   log_metrics_[slot] = sample.log_metric;
   hints_[slot] = sample.where.element;
   shifted_starts(v, from, v);
   request.start_nodes = starts_;
   request.quality_to_beat = bar.quality_to_beat;
   request.unit_edges_to_keep = bar.unit_edges_to_keep;
-  if (boundary) place_on_boundary(*boundary, v, false, request);
   const CavityStatus status = operator_.apply(mesh_, cavity_, v, request);
   if (status != CavityStatus::kAccepted) {
     mesh_.vertex(v) = from;

@@ -10,9 +10,9 @@
 // With P2CavityOptions::straight_quality_floor, none makes a straight simplex poorer than
 // min(floor, the worst it replaces) (kFlatStraightElement).
 // An edge or vertex on a boundary face is refused (kCrossesBoundary) unless the caller places the
-// split, collapse, swap or move on the boundary (BoundaryPlacement: which facets, and the geometry):
-// the new or moved vertex and the new boundary edges then lie on the geometry. The decision figures are curved too: `edge_length` is the
-// Riemannian length of the curved edge, `quality` the curved mean ratio.
+// split, collapse or swap on the boundary (BoundaryPlacement: which facets, and the geometry): the
+// new vertex and the new boundary edges then lie on the geometry. Moves are interior only. The decision figures are curved too:
+// `edge_length` is the Riemannian length of the curved edge, `quality` the curved mean ratio.
 #pragma once
 
 #include <cmath>
@@ -25,12 +25,12 @@
 
 namespace hocav {
 
-// A split, collapse, swap or move on the boundary, as the caller's geometry decides it: the boundary
-// facets through the split or swapped edge or around the removed or moved vertex (a split, collapse
-// or swap re-stars them, a move keeps them), and in 3D the feature lines it re-stars with them (a
-// split or collapse along a line); where a point goes on the boundary (`place(x, w)`: for the new
-// or moved vertex, w = kNoIndex; for the boundary edge from that vertex to w, its node); and a test
-// of the planned boundary (P2CavityRequest::boundary_check; none when empty).
+// A split, collapse or swap on the boundary, as the caller's geometry decides it: the boundary
+// facets through the split or swapped edge or around the removed vertex, which it re-stars, and in
+// 3D the feature lines it re-stars with them (a split or collapse along a line); where a point goes
+// on the boundary (`place(x, w)`: for the new vertex, w = kNoIndex; for the new boundary edge from
+// the operation's vertex to w, its node); and a test of the planned boundary
+// (P2CavityRequest::boundary_check; none when empty).
 template <int D>
 struct BoundaryPlacement {
   std::span<const Index> facets;
@@ -66,8 +66,7 @@ class P2Operations {
   // vertices of its two facets, and the new boundary edge between them goes on the geometry.
   CavityStatus swap_edge(Index a, Index b, std::span<const Index> apexes, Bar bar = {}, const BoundaryPlacement<D>* boundary = nullptr);
   CavityStatus swap_edge(Index a, Index b, Index apex, Bar bar = {}) { return swap_edge(a, b, std::span(&apex, 1), bar); }
-  // With `boundary`, v is on it and goes to the closest point of its surface to x.
-  CavityStatus move_vertex(Index v, const Vec<D>& x, Bar bar = {}, const BoundaryPlacement<D>* boundary = nullptr);
+  CavityStatus move_vertex(Index v, const Vec<D>& x, Bar bar = {});
 
   // The Riemannian length of the curved edge (a, b) (high-precision quadrature of the length the
   // optimizer minimizes), and the curved mean ratio of element k (src/curve/curved_quality.hpp).
@@ -101,10 +100,10 @@ class P2Operations {
   // Start nodes of the edges (center, w) of a vertex moved from `from` to its place now: each old
   // node of (from_vertex, w) shifted by half the move, so the edge keeps its bend.
   void shifted_starts(Index from_vertex, const Vec<D>& from, Index center);
-  // The request's boundary part: the placement's check, its facets as the ones to re-star when
-  // `restar`, and each start edge of `center` to a vertex of those facets on the surface (the
-  // start node's closest point there).
-  void place_on_boundary(const BoundaryPlacement<D>& boundary, Index center, bool restar, P2CavityRequest<D>& request);
+  // The request's boundary part: the placement's facets and lines to re-star, its check and bound,
+  // and for each start edge of `center` to a vertex of those facets that does not exist yet, its
+  // node on the geometry (the placement's point for the start node).
+  void place_on_boundary(const BoundaryPlacement<D>& boundary, Index center, P2CavityRequest<D>& request);
 
   Mesh<D>& mesh_;
   const MetricField<D>& field_;

@@ -1,8 +1,7 @@
 // The curved passes' boundary operations (src/adapt/curved_boundary.hpp) one by one, in 2D and 3D:
-// a P2 split of a boundary edge, a P2 collapse of a surface vertex, a P2 flip of a boundary edge
-// and a P2 move of a surface vertex keep the mesh consistent and every element certified, put the
-// new or moved vertex and the new boundary edges' nodes on the geometry, and re-star the boundary
-// facets; feature lines, corners and
+// a P2 split of a boundary edge, a P2 collapse of a boundary vertex and a P2 flip of a boundary edge
+// keep the mesh consistent and every element certified, put the new vertex and the new boundary
+// edges' nodes on the geometry, and re-star the boundary facets; feature lines, corners and
 // interior edges get no placement.
 #include "adapt/curved_boundary.hpp"
 
@@ -159,32 +158,6 @@ void check_boundary_collapse() {
   EXPECT_EQ(mesh.facet_count(), facets_before - (D == 2 ? 1 : 2));  // the edge's facets go
   EXPECT_TRUE(on_inner_wall<D>(kept_point));
 }
-
-template <int D>
-void check_boundary_move() {
-  CurvedShell<D> shell(0.05);
-  Mesh<D>& mesh = shell.mesh;
-  CurvedBoundary<D> boundary(mesh, shell.geometry, 45);
-  P2Operations<D> operations(mesh, *shell.field, nullptr, {.jacobian_floor = kFloor});
-  const auto [v, w] = wall_edge(mesh);
-  ASSERT_TRUE(boundary.surface_vertex(v));
-  std::vector<Index> ball;
-  collect_ball(mesh, v, ball);
-  const auto placement = boundary.move_placement(ball, v);
-  ASSERT_TRUE(placement);
-  // A fifth of the way toward w, off the wall (along the chord): the move lands on the wall.
-  const Vec<D> from = mesh.vertex(v), x = from + 0.2 * (mesh.vertex(w) - from);
-  EXPECT_EQ(operations.move_vertex(v, x), CavityStatus::kCrossesBoundary);
-  ASSERT_EQ(operations.move_vertex(v, x, {}, &*placement), CavityStatus::kAccepted);
-  EXPECT_TRUE(on_inner_wall<D>(mesh.vertex(v)));
-  EXPECT_GT(norm(mesh.vertex(v) - from), 0.1 * norm(x - from));
-  expect_wall_edges_on_geometry(mesh, v);
-  expect_consistent(mesh);
-  EXPECT_TRUE(every_element_certified(mesh));
-}
-
-TEST(CurvedBoundary, ASurfaceVertexMovedInP2StaysOnTheGeometryWithItsBoundaryNodes2D) { check_boundary_move<2>(); }
-TEST(CurvedBoundary, ASurfaceVertexMovedInP2StaysOnTheGeometryWithItsBoundaryNodes3D) { check_boundary_move<3>(); }
 
 // A wall edge flipped on the sphere: the edge between the far vertices of its two facets replaces it,
 // its node on the sphere, the facets as many as before and of the wall's ref. (The structured shell's
