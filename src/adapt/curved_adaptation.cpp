@@ -276,8 +276,9 @@ CurvedOperationCount swap_poor_shells(PassTools<D>& tools, DigestMemo& refusals,
     const Index a = first, b = second;
     if (mesh.find_edge(a, b) == kNoIndex) continue;
     collect_shell(mesh, a, b, shell);
-    const auto placement = D == 3 && tools.boundary ? tools.boundary->edge_placement(shell, a, b, false) : std::nullopt;
+    bool flipped_on_boundary = false;  // (a refusal remembered answers without the placement)
     const CavityStatus status = unless_refused_before(refusals, cavity_digest(kSwapRefusal, mesh, operations, shell, {a, b}), [&] {
+      const auto placement = D == 3 && tools.boundary ? tools.boundary->edge_placement(shell, a, b, false) : std::nullopt;
       const typename P2Operations<D>::Bar bar{kQualityGain * worst_quality(operations, shell), unit_length(operations.edge_length(a, b))};
       ring.clear();
       if (placement)
@@ -285,10 +286,11 @@ CurvedOperationCount swap_poor_shells(PassTools<D>& tools, DigestMemo& refusals,
           for (Index w : mesh.facet(f))
             if (w != a && w != b) ring.push_back(w);
       if (!placement) other_vertices<D>(mesh, shell, a, b, ring);
+      flipped_on_boundary = placement.has_value();
       return operations.swap_edge(a, b, ring, bar, placement ? &*placement : nullptr);
     });
     count.add(status);
-    count.boundary_done += status == CavityStatus::kAccepted && placement;
+    count.boundary_done += status == CavityStatus::kAccepted && flipped_on_boundary;
   }
   return count;
 }
