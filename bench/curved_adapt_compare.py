@@ -5,7 +5,8 @@ mean; docs/curving.md §Curved quality), the min/avg normalized Jacobian, correc
 rejected by the curving (the reinsertion's and the curved passes'), the curved passes' operations (collapses, splits, swaps, moves, and the passes;
 the operations made on the boundary),
 the command's wall time; and, for the cases bounded by circles or spheres centred at the origin,
-the distance of the output's boundary P2 nodes from the true circle or sphere (max and mean).
+the distance of the output's boundary from the true circle or sphere (its P2 nodes' max and mean, and
+the mean over the curved boundary's length or area).
 
 Usage (from the repository root, with Debian's Python):
   /usr/bin/python3 bench/curved_adapt_compare.py build/release/hocav [--threads N] [--cases NAME,...]
@@ -50,23 +51,67 @@ def run(hocav, args, folder):
     subprocess.run([hocav, *args], cwd=folder, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
 
 
-def boundary_node_errors(path, dimension, radii):
-    """| |x| - R | of the P2 nodes of the boundary faces (faces of one element), R the nearer radius."""
+def boundary_faces(path, dimension):
+    """The output's points and its boundary P2 faces (faces of one element): corner and node indices,
+    in the order of the P2 map below (corners, then the nodes of (0,1), (1,2), (2,0); in 2D the ends,
+    then the node)."""
     mesh = meshio.read(path)
     cells = mesh.cells[0].data
     if dimension == 2:  # VTK quadratic triangle: corners 0-2, nodes of (0,1), (1,2), (2,0)
-        faces = [((0, 1), 3), ((1, 2), 4), ((2, 0), 5)]
+        faces = [((0, 1), (3,)), ((1, 2), (4,)), ((2, 0), (5,))]
     else:  # VTK quadratic tetrahedron: nodes of (0,1), (1,2), (0,2), (0,3), (1,3), (2,3) at 4-9
-        faces = [((0, 1, 2), (4, 5, 6)), ((0, 1, 3), (4, 7, 8)), ((1, 2, 3), (5, 8, 9)), ((0, 2, 3), (6, 7, 9))]
-    count = {}
+        faces = [((0, 1, 2), (4, 5, 6)), ((0, 1, 3), (4, 8, 7)), ((1, 2, 3), (5, 9, 8)), ((0, 2, 3), (6, 9, 7))]
+    found = {}
     for cell in cells:
         for corners, nodes in faces:
-            key = tuple(sorted(cell[list(corners)]))
-            count.setdefault(key, []).append(cell[list(np.atleast_1d(nodes))])
-    nodes = np.unique(np.concatenate([found[0] for found in count.values() if len(found) == 1]))
-    r = np.linalg.norm(mesh.points[nodes, :dimension], axis=1)
-    error = np.min(np.abs(r[:, None] - np.array(radii)[None, :]), axis=1)
-    return error.max(), error.mean()
+            found.setdefault(tuple(sorted(cell[list(corners)])), []).append(cell[list(corners) + list(nodes)])
+    return mesh.points[:, :dimension], np.array([f[0] for f in found.values() if len(f) == 1])
+
+
+def sphere_distance(points, radii):
+    r = np.linalg.norm(points, axis=-1)
+    return np.min(np.abs(r[..., None] - np.array(radii)), axis=-1)
+
+
+def p2_face_samples(points, faces, dimension):
+    """Points and weights (length or area, from the P2 map's Jacobian) of a Gauss rule on each face:
+    5 points on a segment, 7 (degree 5) on a triangle."""
+    if dimension == 2:
+        t, w = np.polynomial.legendre.leggauss(5)
+        t, w = (t + 1) / 2, w / 2
+        shapes = np.stack([(1 - t) * (1 - 2 * t), t * (2 * t - 1), 4 * t * (1 - t)], axis=1)
+        derivatives = np.stack([4 * t - 3, 4 * t - 1, 4 - 8 * t], axis=1)[:, :, None]
+    else:
+        a, b, c, d = 0.059715871789770, 0.470142064105115, 0.797426985353087, 0.101286507323456
+        bary = np.array([[1 / 3] * 3, [a, b, b], [b, a, b], [b, b, a], [c, d, d], [d, c, d], [d, d, c]])
+        w = np.array([0.225] + [0.132394152788506] * 3 + [0.125939180544827] * 3) / 2
+        l0, l1, l2 = bary.T
+        shapes = np.stack([l0 * (2 * l0 - 1), l1 * (2 * l1 - 1), l2 * (2 * l2 - 1), 4 * l0 * l1, 4 * l1 * l2, 4 * l2 * l0], axis=1)
+        # Derivatives along u = l1, v = l2 (l0 = 1 - u - v).
+        du = np.stack([1 - 4 * l0, 4 * l1 - 1, 0 * l0, 4 * (l0 - l1), 4 * l2, -4 * l2], axis=1)
+        dv = np.stack([1 - 4 * l0, 0 * l0, 4 * l2 - 1, -4 * l1, 4 * l1, 4 * (l0 - l2)], axis=1)
+        derivatives = np.stack([du, dv], axis=2)
+    corners = points[faces]                               # faces x nodes x dimension
+    samples = np.einsum("qn,fnd->fqd", shapes, corners)
+    jacobian = np.einsum("qnk,fnd->fqdk", derivatives, corners)
+    if dimension == 2:
+        measure = np.linalg.norm(jacobian[..., 0], axis=-1)
+    else:
+        measure = np.linalg.norm(np.cross(jacobian[..., 0], jacobian[..., 1]), axis=-1)
+    return samples, measure * w
+
+
+def boundary_errors(path, dimension, radii):
+    """The distance | |x| - R | to the true circles or spheres (R the nearer radius): the largest and
+    the mean over the boundary faces' P2 nodes, and the mean over the curved boundary itself (its
+    length or area; the node mean weighs a region by how many nodes it holds, so a coarser boundary
+    moves it even where no point of the surface moved)."""
+    points, faces = boundary_faces(path, dimension)
+    nodes = np.unique(faces[:, dimension:])
+    node_error = sphere_distance(points[nodes], radii)
+    samples, weights = p2_face_samples(points, faces, dimension)
+    surface_mean = np.sum(sphere_distance(samples, radii) * weights) / np.sum(weights)
+    return node_error.max(), node_error.mean(), surface_mean
 
 
 def measure(hocav, case, curved, threads, folder):
@@ -96,16 +141,16 @@ def measure(hocav, case, curved, threads, folder):
                              sum(p[op].get("boundary_done", 0) for p in passes["passes"] for op in ("collapses", "splits", "swaps", "moves")))
     if radii:
         run(hocav, ["convert", output, output.replace(".meshb", ".vtu")], folder)
-        row["boundary"] = boundary_node_errors(folder / output.replace(".meshb", ".vtu"), dimension, radii)
+        row["boundary"] = boundary_errors(folder / output.replace(".meshb", ".vtu"), dimension, radii)
     return row
 
 
 def markdown(rows):
-    lines = ["| case | run | elements | unit (curved length) | curved q mean / min | norm. Jacobian min / avg | boundary error max / mean "
+    lines = ["| case | run | elements | unit (curved length) | curved q mean / min | norm. Jacobian min / avg | boundary error: nodes max / mean, surface mean "
              "| corrections | rejected | curved collapses / splits / swaps / moves (passes; on the boundary) | time s |",
              "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        boundary = f"{r['boundary'][0]:.2e} / {r['boundary'][1]:.2e}" if r["boundary"] else "n/a"
+        boundary = " / ".join(f"{e:.2e}" for e in r["boundary"]) if r["boundary"] else "n/a"
         ops = " / ".join(f"{n:,}" for n in r["curved_ops"][:4]) + f" ({r['curved_ops'][4]}; {r['curved_ops'][5]:,})" if r["curved_ops"] else ""
         lines.append(f"| {r['case']} | {r['run']} | {r['elements']:,} | {100 * r['unit']:.1f}% | {r['q_mean']:.3f} / {r['q_min']:.3f} "
                      f"| {r['j_min']:.4f} / {r['j_avg']:.3f} | {boundary} | {r['corrections']:,} | {r['rejected']:,} | {ops} "

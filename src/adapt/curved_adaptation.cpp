@@ -279,7 +279,11 @@ CurvedOperationCount swap_poor_shells(PassTools<D>& tools, DigestMemo& refusals,
     bool flipped_on_boundary = false;  // (a refusal remembered answers without the placement)
     const CavityStatus status = unless_refused_before(refusals, cavity_digest(kSwapRefusal, mesh, operations, shell, {a, b}), [&] {
       const auto placement = D == 3 && tools.boundary ? tools.boundary->edge_placement(shell, a, b, false) : std::nullopt;
-      const typename P2Operations<D>::Bar bar{kQualityGain * worst_quality(operations, shell), unit_length(operations.edge_length(a, b))};
+      // A cap's removal (a shell of one element) makes no edge: the edge it removes gives way to
+      // the cap's inner edge, already there.
+      const bool cap = placement && shell.size() == 1;
+      const typename P2Operations<D>::Bar bar{kQualityGain * worst_quality(operations, shell),
+                                              cap ? -1 : static_cast<int>(unit_length(operations.edge_length(a, b)))};
       ring.clear();
       if (placement)
         for (Index f : placement->facets)

@@ -107,6 +107,7 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
   std::sort(removed_facets_.begin(), removed_facets_.end());
   removed_lines_.assign(options.removed_lines.begin(), options.removed_lines.end());
   std::sort(removed_lines_.begin(), removed_lines_.end());
+  exposes_faces_ = options.exposes_faces && !removed_facets_.empty();
   if (CavityStatus status = collect_boundary(mesh); status != CavityStatus::kAccepted) return status;
   if (CavityStatus status = star_surface(mesh, options); status != CavityStatus::kAccepted) return status;
 
@@ -122,7 +123,7 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
     new_elements_.push_back(element);
     starred_faces_.push_back(static_cast<Index>(f));
   }
-  if (new_elements_.empty()) return CavityStatus::kNotStarShaped;
+  if (new_elements_.empty() && !exposes_faces_) return CavityStatus::kNotStarShaped;
   vertex_on_boundary_ = new_elements_.size() + removed_facets_.size() < boundary_faces_.size();
   if (CavityStatus status = match_ridges(); status != CavityStatus::kAccepted) return status;
 
@@ -347,13 +348,33 @@ bool CavityOperator<D>::pair_ridge_faces() {
     ridge_partner_[j] = static_cast<int>(i);
     RidgeFace first = ridge_faces_[j], second = ridge_faces_[i];
     if (first.new_element == kNoIndex) std::swap(first, second);
-    if (first.new_element == kNoIndex) return false;  // two kept faces: a hole
+    if (first.new_element == kNoIndex) {
+      if (first.face > second.face) std::swap(first, second);  // the kept face, then the new facet
+      if (!exposable(first, second)) return false;             // two kept faces: a hole
+      links_.push_back({first.key, kNoIndex, second.face, kNoIndex, -1, first.face});
+      continue;
+    }
     if (second.new_element == kNoIndex)
       links_.push_back({first.key, first.new_element, first.face, kNoIndex, -1, second.face});
     else
       links_.push_back({first.key, first.new_element, first.face, second.new_element, second.face, -1});
   }
   return 2 * links_.size() == ridge_faces_.size();  // else a face is unpaired: a hole
+}
+
+template <int D>
+bool CavityOperator<D>::exposable(const RidgeFace& kept, const RidgeFace& facet) const {
+  const auto faces = static_cast<int>(boundary_faces_.size());
+  if (!exposes_faces_ || kept.face >= faces || facet.face < faces) return false;
+  const BoundaryFace& face = boundary_faces_[static_cast<std::size_t>(kept.face)];
+  return face.outer_element != kNoIndex && face.facet == kNoIndex;
+}
+
+template <int D>
+void CavityOperator<D>::expose(Mesh<D>& mesh, const BoundaryFace& face, const NewFacet& facet) const {
+  mesh.set_neighbor(face.outer_element, face.outer_face, kNoIndex);
+  mesh.add_attached_facet(facet.vertices, facet.ref, face.outer_element, face.outer_face);
+  for (Index v : face.vertices) mesh.set_vertex_element(v, face.outer_element);
 }
 
 template <int D>
@@ -502,6 +523,11 @@ void CavityOperator<D>::commit(Mesh<D>& mesh, std::span<const Point> inner_edge_
     for (Index v : new_elements_[n]) mesh.set_vertex_element(v, slot[n]);
   }
   for (const Link& link : links_) {
+    if (link.new_element == kNoIndex) {
+      expose(mesh, boundary_faces_[static_cast<std::size_t>(link.kept_face)],
+             new_facets_[static_cast<std::size_t>(link.face) - boundary_faces_.size()]);
+      continue;
+    }
     Index k = slot[link.new_element];
     if (link.other_new_element != kNoIndex) {
       mesh.set_neighbor(k, link.face, slot[link.other_new_element]);

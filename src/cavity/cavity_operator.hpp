@@ -30,6 +30,10 @@ struct CavityOptions {
   // changes is its geometry's decision, not the topology's.
   std::span<const Index> removed_facets{};
   std::span<const Index> removed_lines{};
+  // Boundary operations that give up part of the domain (a cap's removal): a face through the
+  // vertex on the cavity's boundary, with an element beyond it and no facet, may take a new facet
+  // and become boundary; the star may then have no element at all.
+  bool exposes_faces = false;
 };
 
 enum class CavityStatus {
@@ -111,8 +115,8 @@ class CavityOperator {
   };
   struct Link {
     std::uint64_t key;
-    Index new_element;
-    int face;
+    Index new_element;        // kNoIndex: an exposed face, kept boundary face `kept_face` taking new facet
+    int face;                 // `face` − boundary_faces_.size() (CavityOptions::exposes_faces)
     Index other_new_element;  // kNoIndex: linked to the kept boundary face `kept_face`, or to new
     int other_face;           // facet kept_face − boundary_faces_.size() when it is past them
     int kept_face;
@@ -144,6 +148,10 @@ class CavityOperator {
   bool is_removed_line(const Mesh<D>& mesh, Index a, Index b) const;
   CavityStatus match_ridges();
   bool pair_ridge_faces();  // fills links_; false when a ridge has not exactly two faces
+  // Whether two faces without a new element may pair: a kept face that may be exposed and a new facet.
+  bool exposable(const RidgeFace& kept, const RidgeFace& facet) const;
+  // Commits an exposed face: the element beyond it takes the new facet there.
+  void expose(Mesh<D>& mesh, const BoundaryFace& face, const NewFacet& facet) const;
   CavityStatus plan_edges(const Mesh<D>& mesh);
   // P1 (no edge table, whose look-up plan_edges makes): whether a new edge of the star already joins
   // its ends through an element outside the cavity. Exact orientations would forbid it, but
@@ -163,6 +171,7 @@ class CavityOperator {
   std::vector<BoundaryFace> boundary_faces_;
   std::vector<std::uint8_t> boundary_face_bits_;  // per cavity element: bit f set when its face f is a boundary face
   bool vertex_on_boundary_ = false;               // the vertex is on a boundary face (not inside the cavity)
+  bool exposes_faces_ = false;                    // CavityOptions::exposes_faces
   std::vector<Index> starred_faces_;              // boundary face of each new element
   std::vector<Element> new_elements_;
   std::vector<RidgeFace> ridge_faces_;

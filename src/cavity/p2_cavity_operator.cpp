@@ -76,6 +76,7 @@ CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const I
   plan_options.removable_vertex = request.removable_vertex;
   plan_options.removed_facets = request.removed_facets;
   plan_options.removed_lines = request.removed_lines;
+  plan_options.exposes_faces = request.exposes_faces;
   CavityStatus status = p1_.plan(mesh, cavity, vertex, plan_options);
   counters_.seconds_plan += seconds_since(start);
   if (status != CavityStatus::kAccepted) {
@@ -94,7 +95,7 @@ CavityStatus P2CavityOperator<D>::prepare(const Mesh<D>& mesh, std::span<const I
   start = Clock::now();
   curved_.clear();
   curve_inner_edges(mesh, request);
-  take_boundary_proposals(mesh);
+  take_boundary_proposals(mesh, request);
   counters_.seconds_optimize += seconds_since(start);
 
   start = Clock::now();
@@ -183,7 +184,9 @@ std::array<SymMat<D>, D + 1> P2CavityOperator<D>::log_metrics_of(const typename 
 template <int D>
 bool P2CavityOperator<D>::new_elements_above(double bar) const {
   for (const Candidate& candidate : candidates_) {
-    if (candidate.mesh_element != kNoIndex) continue;
+    const bool changed_by_placement = std::any_of(candidate.curved.begin(), candidate.curved.end(),
+                                                  [&](int i) { return i >= 0 && curved_[static_cast<std::size_t>(i)].placed; });
+    if (candidate.mesh_element != kNoIndex && !changed_by_placement) continue;
     if (!(curved_mean_ratio(element_of(candidate), log_metrics_of(candidate.vertices)).value > bar)) return false;
   }
   return true;
@@ -199,7 +202,7 @@ void P2CavityOperator<D>::commit(Mesh<D>& mesh) {
       inner_nodes_[edge.id] = edge.node();
     } else {
       boundary_nodes_.emplace_back(edge.id, edge.node());
-      if (edge.scale == 1) {
+      if (edge.scale == 1 && !edge.placed) {
         boundary_->consume(edge.a, edge.b);
         ++counters_.boundary_nodes_applied;
       }
@@ -253,10 +256,17 @@ void P2CavityOperator<D>::curve_inner_edges(const Mesh<D>& mesh, const P2CavityR
 }
 
 template <int D>
-void P2CavityOperator<D>::take_boundary_proposals(const Mesh<D>& mesh) {
-  if (!boundary_) return;
+void P2CavityOperator<D>::take_boundary_proposals(const Mesh<D>& mesh, const P2CavityRequest<D>& request) {
   for (Index edge : p1_.boundary_edges()) {
     const auto [a, b] = mesh.edge_vertices(edge);
+    const std::uint64_t key = Mesh<D>::edge_key(a, b);
+    const auto placed = std::find_if(request.boundary_nodes.begin(), request.boundary_nodes.end(),
+                                     [key](const EdgeStart<D>& s) { return Mesh<D>::edge_key(s.a, s.b) == key; });
+    if (placed != request.boundary_nodes.end()) {
+      curved_.push_back({a, b, mesh.edge_node(edge), placed->node, 1, false, edge, false, kNoIndex, true});
+      continue;
+    }
+    if (!boundary_) continue;
     auto proposal = boundary_->proposal(a, b);
     if (!proposal || *proposal == mesh.edge_node(edge)) continue;
     // Pulling back moves the node from where it is now toward the proposal.

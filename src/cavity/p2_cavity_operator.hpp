@@ -91,6 +91,10 @@ struct P2CavityRequest {
   std::span<const Index> removed_lines{};  // 3D: the feature lines it re-stars too (CavityOptions::removed_lines)
   std::span<const EdgeStart<D>> boundary_nodes{};
   std::function<bool(const CavityOperator<D>&)> boundary_check{};
+  // A cap's removal (CavityOptions::exposes_faces): its inner edge, on the cavity's boundary, becomes
+  // a boundary edge; boundary_nodes may then name such an edge too, whose node moves onto the
+  // geometry, and the elements outside the cavity around it must beat quality_to_beat as well.
+  bool exposes_faces = false;
   // The edges placed on the geometry must be at most this long in their curved length, else
   // kNoImprovement (a boundary edge follows the geometry, not the optimizer, so its straight
   // length does not bound it).
@@ -166,7 +170,9 @@ class P2CavityOperator {
   };
 
   void curve_inner_edges(const Mesh<D>& mesh, const P2CavityRequest<D>& request);
-  void take_boundary_proposals(const Mesh<D>& mesh);
+  // The new nodes of the cavity's boundary edges: the request's placed ones (an exposed edge), then
+  // the boundary source's proposals.
+  void take_boundary_proposals(const Mesh<D>& mesh, const P2CavityRequest<D>& request);
   void collect_candidates(const Mesh<D>& mesh);
   // The cavity's elements as (sorted vertices, parity of the sort), sorted: to find the one a new
   // element recreates.
@@ -181,7 +187,8 @@ class P2CavityOperator {
   std::array<SymMat<D>, D + 1> log_metrics_of(const typename Mesh<D>::Element& vertices) const;
   // Whether every new element's straight simplex has a metric mean ratio of at least `floor`.
   bool new_straight_elements_above(const Mesh<D>& mesh, double floor) const;
-  // Whether every new element's curved mean ratio is above `bar`.
+  // Whether every new element's curved mean ratio is above `bar`, and every element outside the
+  // cavity around a placed boundary edge (a cap's exposed edge).
   bool new_elements_above(double bar) const;
   // How many new inner edges are unit in their curved length.
   int unit_new_inner_edges(const Mesh<D>& mesh) const;

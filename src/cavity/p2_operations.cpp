@@ -175,8 +175,9 @@ void P2Operations<D>::place_on_boundary(const BoundaryPlacement<D>& boundary, In
   for (const EdgeStart<D>& start : starts_) {
     const Index w = start.a == center ? start.b : start.a;
     // The edges of `center` that exist already stay as they are (a collapse's kept vertex with the
-    // far vertices of the collapsed edge's facets).
-    if (mesh_.find_edge(center, w) != kNoIndex) continue;
+    // far vertices of the collapsed edge's facets), but for a cap's inner edge, which the removal
+    // makes a boundary edge (no removed facet holds it).
+    if (mesh_.find_edge(center, w) != kNoIndex && !(request.exposes_faces && !on_a_facet(boundary.facets, center, w))) continue;
     if (std::any_of(boundary.facets.begin(), boundary.facets.end(), [&](Index f) { return small_set_holds(mesh_.facet(f), w); }))
       boundary_nodes_.push_back({start.a, start.b, boundary.place(start.node, w)});
   }
@@ -194,13 +195,16 @@ CavityStatus P2Operations<D>::swap_edge(Index a, Index b, std::span<const Index>
   request.quality_to_beat = bar.quality_to_beat;
   request.unit_edges_to_keep = bar.unit_edges_to_keep;
   request.straight_quality_to_keep = straight_quality_to_keep(cavity_);
+  // A cap (one element with both facets of a boundary edge) goes with its facets: its inner faces
+  // become the boundary (docs/curving.md, "Caps").
+  request.exposes_faces = boundary && cavity_.size() == 1;
   // (A shell that holds a boundary facet is refused whatever the apex.)
   CavityStatus status = CavityStatus::kNotStarShaped;
   for (std::size_t i = 0; i < apexes.size() && status != CavityStatus::kAccepted && status != CavityStatus::kCrossesBoundary; ++i) {
     const Index apex = apexes[i];
     const bool apex_in_shell = std::any_of(cavity_.begin(), cavity_.end(),
                                            [&](Index k) { return small_set_holds(mesh_.element(k), apex); });
-    if (apex == a || apex == b || !apex_in_shell) {
+    if (apex == a || apex == b || !apex_in_shell || (request.exposes_faces && !cap_edge_inside(a, b, apex))) {
       status = CavityStatus::kNotStarShaped;
       continue;
     }
@@ -214,6 +218,21 @@ CavityStatus P2Operations<D>::swap_edge(Index a, Index b, std::span<const Index>
     status = operator_.apply(mesh_, cavity_, apex, request);
   }
   return status;
+}
+
+template <int D>
+bool P2Operations<D>::on_a_facet(std::span<const Index> facets, Index v, Index w) const {
+  return std::any_of(facets.begin(), facets.end(),
+                     [&](Index f) { return small_set_holds(mesh_.facet(f), v) && small_set_holds(mesh_.facet(f), w); });
+}
+
+template <int D>
+bool P2Operations<D>::cap_edge_inside(Index a, Index b, Index apex) {
+  Index other = kNoIndex;
+  for (Index v : mesh_.element(cavity_.front()))
+    if (v != a && v != b && v != apex) other = v;
+  collect_shell(mesh_, apex, other, edge_shell_);
+  return shell_is_closed<D>(mesh_, edge_shell_, apex, other);
 }
 
 template <int D>

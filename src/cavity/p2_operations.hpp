@@ -63,7 +63,9 @@ class P2Operations {
   CavityStatus collapse_edge(Index removed, Index kept, Bar bar = {}, const BoundaryPlacement<D>* boundary = nullptr);
   // The shell of (a, b) re-starred from the first of `apexes` that the operator accepts.
   // With `boundary`, (a, b) is a boundary edge flipped on its surface: the apexes are the far
-  // vertices of its two facets, and the new boundary edge between them goes on the geometry.
+  // vertices of its two facets, and the new boundary edge between them goes on the geometry. When
+  // its shell is one element (a cap), the flip removes it: its inner faces become the boundary, and
+  // its inner edge's node goes on the geometry.
   CavityStatus swap_edge(Index a, Index b, std::span<const Index> apexes, Bar bar = {}, const BoundaryPlacement<D>* boundary = nullptr);
   CavityStatus swap_edge(Index a, Index b, Index apex, Bar bar = {}) { return swap_edge(a, b, std::span(&apex, 1), bar); }
   CavityStatus move_vertex(Index v, const Vec<D>& x, Bar bar = {});
@@ -104,6 +106,11 @@ class P2Operations {
   // and for each start edge of `center` to a vertex of those facets that does not exist yet, its
   // node on the geometry (the placement's point for the start node).
   void place_on_boundary(const BoundaryPlacement<D>& boundary, Index center, P2CavityRequest<D>& request);
+  // Whether one of these facets holds both v and w.
+  bool on_a_facet(std::span<const Index> facets, Index v, Index w) const;
+  // A cap (the shell of boundary edge (a, b), one element): whether its inner edge, from `apex` to
+  // its fourth vertex, is inside the domain (on the boundary already, it would get four facets).
+  bool cap_edge_inside(Index a, Index b, Index apex);
 
   Mesh<D>& mesh_;
   const MetricField<D>& field_;
@@ -112,7 +119,7 @@ class P2Operations {
   std::vector<SymMat<D>> log_metrics_;
   std::vector<Index> hints_;
   P2CavityOperator<D> operator_;
-  std::vector<Index> cavity_, neighbors_;
+  std::vector<Index> cavity_, neighbors_, edge_shell_;
   std::vector<EdgeStart<D>> starts_, boundary_nodes_;
 };
 
