@@ -156,6 +156,7 @@ AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, 
     if (settings.progress) settings.progress(pass, settings.max_passes);
   }
   run.stopped_with_window_open = window_open(limits);
+  run.caps_removed = remove_boundary_caps(am, limits).done;
   mesh.compact();
   return run;
 }

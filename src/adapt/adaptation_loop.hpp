@@ -69,6 +69,7 @@ struct AdaptationRun {
   // The window never closed: the loop stopped before a pass stalled (a window closed after the last
   // pass counts as closed).
   bool stopped_with_window_open = false;
+  Index caps_removed = 0;  // after the last pass (remove_boundary_caps)
 };
 
 // Adapts `mesh` (P1, with its topology) to `metric`; new boundary vertices go on `geometry` (none:

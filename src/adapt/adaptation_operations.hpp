@@ -70,6 +70,18 @@ struct SplitSweep {
 template <int D>
 SplitSweep split_long_edges(AdaptationMesh<D>& mesh, const AdaptationLimits& limits, ThreadPool& pool);
 
+// Boundary-only elements below this quality are mended: caps removed (after the loop), the others cut.
+inline constexpr double kBoundaryOnlyQuality = 0.2;
+
+// 3D: removes the caps below kBoundaryOnlyQuality, worst first: a tetrahedron with two facets on
+// one smooth surface (one ref, neither required, no feature line along their shared edge) and its
+// other edge inside the domain. Its two inner faces become the boundary (the facets' shared edge
+// flips to the cap's inner edge on the surface) when the boundary test of splits and collapses
+// passes (feature angle, hausd): boundary_caps.cpp. 2D: none (a triangle's two boundary edges hold a
+// vertex that only it has).
+template <int D>
+OperationCount remove_boundary_caps(AdaptationMesh<D>& mesh, const AdaptationLimits& limits);
+
 // Cuts the poor elements whose vertices all lie on the boundary, worst first, by splitting their
 // longest inner edge (no boundary facet through it) at its middle, without snapping. Swaps keep
 // boundary edges and faces and smoothing keeps surface vertices on their surface, so nothing else

@@ -18,9 +18,8 @@ constexpr double kCoarsePhaseShare = 0.1;
 // With more than one thread, the candidates previewed at once (docs/adaptation.md §Threads): small
 // enough that few previews go stale before their turn, large enough to feed the threads.
 constexpr std::size_t kPreviewChunk = 64;
-// Boundary-only elements below this quality are cut (cut_boundary_only_elements), when the cut
-// raises the worst quality of its cavity by this factor.
-constexpr double kBoundaryOnlyQuality = 0.2;
+// A boundary-only element's cut (cut_boundary_only_elements) must raise the worst quality of its
+// cavity by this factor.
 constexpr double kCutGain = 1.05;
 
 template <int D>

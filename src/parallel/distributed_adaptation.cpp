@@ -80,9 +80,12 @@ AdaptationSettings part_settings(const AdaptationSettings& settings) {
 
 static_assert(std::is_trivially_copyable_v<AdaptationPass>);
 
+// The passes, the caps removed, then the two flags.
 std::vector<std::byte> pack_run(const AdaptationRun& run) {
-  std::vector<std::byte> bytes(run.passes.size() * sizeof(AdaptationPass) + 2);
-  if (!run.passes.empty()) std::memcpy(bytes.data(), run.passes.data(), run.passes.size() * sizeof(AdaptationPass));
+  const std::size_t passes = run.passes.size() * sizeof(AdaptationPass);
+  std::vector<std::byte> bytes(passes + sizeof(Index) + 2);
+  if (!run.passes.empty()) std::memcpy(bytes.data(), run.passes.data(), passes);
+  std::memcpy(bytes.data() + passes, &run.caps_removed, sizeof(Index));
   bytes[bytes.size() - 2] = std::byte{run.converged};
   bytes[bytes.size() - 1] = std::byte{run.stopped_with_window_open};
   return bytes;
@@ -90,8 +93,10 @@ std::vector<std::byte> pack_run(const AdaptationRun& run) {
 
 AdaptationRun unpack_run(const std::vector<std::byte>& bytes) {
   AdaptationRun run;
-  run.passes.resize((bytes.size() - 2) / sizeof(AdaptationPass));
-  if (!run.passes.empty()) std::memcpy(run.passes.data(), bytes.data(), run.passes.size() * sizeof(AdaptationPass));
+  run.passes.resize((bytes.size() - 2 - sizeof(Index)) / sizeof(AdaptationPass));
+  const std::size_t passes = run.passes.size() * sizeof(AdaptationPass);
+  if (!run.passes.empty()) std::memcpy(run.passes.data(), bytes.data(), passes);
+  std::memcpy(&run.caps_removed, bytes.data() + passes, sizeof(Index));
   run.converged = bytes[bytes.size() - 2] != std::byte{0};
   run.stopped_with_window_open = bytes[bytes.size() - 1] != std::byte{0};
   return run;
@@ -120,6 +125,7 @@ AdaptationRun combined(const std::vector<AdaptationRun>& runs) {
     if (run.passes.size() > out.passes.size()) out.passes.resize(run.passes.size());
     out.converged = out.converged && run.converged;
     out.stopped_with_window_open = out.stopped_with_window_open || run.stopped_with_window_open;
+    out.caps_removed += run.caps_removed;
     for (std::size_t i = 0; i < run.passes.size(); ++i) {
       AdaptationPass& sum = out.passes[i];
       const AdaptationPass& pass = run.passes[i];
@@ -272,6 +278,7 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
     const std::vector<int> part_of = band ? root.band_partition() : root.whole_partition();
     const AdaptationRun step = root.run(part_of, start);
     run.passes.insert(run.passes.end(), step.passes.begin(), step.passes.end());
+    run.caps_removed += step.caps_removed;
     if (on_iteration) on_iteration(root.figures);
   }
   for (int p = 1; p < process_count(); ++p) send_bytes(p, {});  // stop
@@ -290,6 +297,7 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   run.passes.insert(run.passes.end(), again.passes.begin(), again.passes.end());
   run.converged = again.converged;
   run.stopped_with_window_open = again.stopped_with_window_open;
+  run.caps_removed += mending.caps_removed + again.caps_removed;
   return run;
 }
 

@@ -125,6 +125,7 @@ void write_adaptation_report_json(std::ostream& out, const AdaptationReport& rep
   json.member("hausdorff_bounded_vertices", report.hausdorff_bounded_vertices);
   json.member("converged", report.run.converged);
   json.member("stopped_with_window_open", report.run.stopped_with_window_open);
+  json.member("caps_removed", report.run.caps_removed);
   json.key("passes").begin_array();
   for (const AdaptationPass& pass : report.run.passes) {
     json.begin_object();

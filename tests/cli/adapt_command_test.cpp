@@ -31,6 +31,7 @@ TEST_F(AdaptCli, SquareInTheLinearMetricIsAdaptedThenCurved) {
   EXPECT_EQ(json_value("report.json", "d[\"passes\"][0][\"window_open\"], d[\"passes\"][0][\"collapse_length_bound\"]"), "(True, 2)");
   EXPECT_EQ(json_value("report.json", "d[\"passes\"][-1][\"window_open\"], d[\"stopped_with_window_open\"]"), "(False, False)");
   EXPECT_NEAR(report_value("d[\"passes\"][-1][\"collapse_length_bound\"]"), std::sqrt(2.0), 1e-12);
+  EXPECT_EQ(report_value("d[\"caps_removed\"]"), 0);  // a triangle has no cap
   // The curving's Table-1 figures: every element certified above the default floor.
   EXPECT_GE(report_value("d[\"curving\"][\"normalized_jacobian\"][\"min\"]"), 0.01);
   EXPECT_EQ(stats_json("adapted.meshb", "d[\"consistency\"][\"consistent\"], d[\"order\"], d[\"counts\"][\"corners\"]"), "(True, 2, 4)");
