@@ -47,7 +47,7 @@ Index element_with(const Mesh<3>& mesh, std::array<Index, 4> vertices, std::vect
 }
 
 struct CapScratch {
-  std::vector<Index> ball, shell, lines, cavity;
+  std::vector<Index> ball, lines, cavity;
 };
 
 // Removes cap k when its facets are one smooth surface's, its inner edge is inside the domain, and
@@ -70,9 +70,6 @@ Refusal remove_cap(AdaptationMesh<3>& am, Index k, const AdaptationLimits& limit
     if (v != apexes[0] && v != apexes[1]) ridge[static_cast<std::size_t>(ends++)] = v;
   lines_along(mesh, ridge[0], ridge[1], scratch.lines);
   if (!scratch.lines.empty()) return Refusal::kClasses;
-  // The inner edge joins the apexes; on the boundary already, it would get four facets.
-  collect_shell(mesh, apexes[0], apexes[1], scratch.shell);
-  if (!shell_is_closed<3>(mesh, scratch.shell, apexes[0], apexes[1])) return Refusal::kTopology;
   CavityOptions options;
   options.removed_facets = facets;
   options.exposes_faces = true;

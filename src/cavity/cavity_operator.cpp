@@ -126,6 +126,7 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
   if (new_elements_.empty() && !exposes_faces_) return CavityStatus::kNotStarShaped;
   vertex_on_boundary_ = new_elements_.size() + removed_facets_.size() < boundary_faces_.size();
   if (CavityStatus status = match_ridges(); status != CavityStatus::kAccepted) return status;
+  if (exposes_faces_ && !exposed_edges_inside(mesh)) return CavityStatus::kNotStarShaped;
 
   // Vertices of the cavity on no boundary face disappear. Most lie on a boundary face of their own
   // element (in a ball, all but the vertex); only the others are searched among all the faces.
@@ -368,6 +369,27 @@ bool CavityOperator<D>::exposable(const RidgeFace& kept, const RidgeFace& facet)
   if (!exposes_faces_ || kept.face >= faces || facet.face < faces) return false;
   const BoundaryFace& face = boundary_faces_[static_cast<std::size_t>(kept.face)];
   return face.outer_element != kNoIndex && face.facet == kNoIndex;
+}
+
+template <int D>
+bool CavityOperator<D>::exposed_edges_inside(const Mesh<D>& mesh) {
+  if constexpr (D == 3) {
+    const auto removed_side = [&](Index u, Index v) {
+      return std::any_of(surface_sides_.begin(), surface_sides_.end(),
+                         [&](const SurfaceSide& s) { return (s.from == u && s.to == v) || (s.from == v && s.to == u); });
+    };
+    for (const Link& link : links_) {
+      if (link.new_element != kNoIndex) continue;
+      const auto& face = boundary_faces_[static_cast<std::size_t>(link.kept_face)].vertices;
+      for (int i = 0; i < 3; ++i) {
+        const Index u = face[i], v = face[(i + 1) % 3];
+        if (removed_side(u, v)) continue;  // on the boundary already, its removed facet replaced
+        collect_shell(mesh, u, v, ball_);
+        if (!shell_is_closed<D>(mesh, ball_, u, v)) return false;
+      }
+    }
+  }
+  return true;
 }
 
 template <int D>

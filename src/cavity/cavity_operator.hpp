@@ -32,7 +32,8 @@ struct CavityOptions {
   std::span<const Index> removed_lines{};
   // Boundary operations that give up part of the domain (a cap's removal): a face through the
   // vertex on the cavity's boundary, with an element beyond it and no facet, may take a new facet
-  // and become boundary; the star may then have no element at all.
+  // and become boundary (refused when an edge it does not share with a removed facet is on the
+  // boundary already); the star may then have no element at all.
   bool exposes_faces = false;
 };
 
@@ -150,6 +151,9 @@ class CavityOperator {
   bool pair_ridge_faces();  // fills links_; false when a ridge has not exactly two faces
   // Whether two faces without a new element may pair: a kept face that may be exposed and a new facet.
   bool exposable(const RidgeFace& kept, const RidgeFace& facet) const;
+  // Whether every edge of the exposed faces that no removed facet holds (a cap's inner edge) is
+  // inside the domain: on the boundary already, it would hold four facets.
+  bool exposed_edges_inside(const Mesh<D>& mesh);
   // Commits an exposed face: the element beyond it takes the new facet there.
   void expose(Mesh<D>& mesh, const BoundaryFace& face, const NewFacet& facet) const;
   CavityStatus plan_edges(const Mesh<D>& mesh);
@@ -194,7 +198,7 @@ class CavityOperator {
   std::vector<Index> new_element_ids_;  // per new element: its id once committed
   std::vector<Point> start_nodes_;
   std::vector<Index> scratch_;
-  std::vector<Index> ball_, kept_neighbors_, new_neighbors_;  // star_folds_over_mesh's
+  std::vector<Index> ball_, kept_neighbors_, new_neighbors_;  // star_folds_over_mesh's (ball_: exposed_edges_inside's too)
   IndexHashMap sphere_vertices_;                              // boundary_is_a_sphere's
 };
 

@@ -204,7 +204,7 @@ CavityStatus P2Operations<D>::swap_edge(Index a, Index b, std::span<const Index>
     const Index apex = apexes[i];
     const bool apex_in_shell = std::any_of(cavity_.begin(), cavity_.end(),
                                            [&](Index k) { return small_set_holds(mesh_.element(k), apex); });
-    if (apex == a || apex == b || !apex_in_shell || (request.exposes_faces && !cap_edge_inside(a, b, apex))) {
+    if (apex == a || apex == b || !apex_in_shell) {
       status = CavityStatus::kNotStarShaped;
       continue;
     }
@@ -224,15 +224,6 @@ template <int D>
 bool P2Operations<D>::on_a_facet(std::span<const Index> facets, Index v, Index w) const {
   return std::any_of(facets.begin(), facets.end(),
                      [&](Index f) { return small_set_holds(mesh_.facet(f), v) && small_set_holds(mesh_.facet(f), w); });
-}
-
-template <int D>
-bool P2Operations<D>::cap_edge_inside(Index a, Index b, Index apex) {
-  Index other = kNoIndex;
-  for (Index v : mesh_.element(cavity_.front()))
-    if (v != a && v != b && v != apex) other = v;
-  collect_shell(mesh_, apex, other, edge_shell_);
-  return shell_is_closed<D>(mesh_, edge_shell_, apex, other);
 }
 
 template <int D>

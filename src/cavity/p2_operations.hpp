@@ -108,9 +108,6 @@ class P2Operations {
   void place_on_boundary(const BoundaryPlacement<D>& boundary, Index center, P2CavityRequest<D>& request);
   // Whether one of these facets holds both v and w.
   bool on_a_facet(std::span<const Index> facets, Index v, Index w) const;
-  // A cap (the shell of boundary edge (a, b), one element): whether its inner edge, from `apex` to
-  // its fourth vertex, is inside the domain (on the boundary already, it would get four facets).
-  bool cap_edge_inside(Index a, Index b, Index apex);
 
   Mesh<D>& mesh_;
   const MetricField<D>& field_;
@@ -119,7 +116,7 @@ class P2Operations {
   std::vector<SymMat<D>> log_metrics_;
   std::vector<Index> hints_;
   P2CavityOperator<D> operator_;
-  std::vector<Index> cavity_, neighbors_, edge_shell_;
+  std::vector<Index> cavity_, neighbors_;
   std::vector<EdgeStart<D>> starts_, boundary_nodes_;
 };
 
