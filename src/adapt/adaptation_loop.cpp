@@ -41,6 +41,16 @@ bool window_open(const AdaptationLimits& limits) { return limits.collapse_new_le
 
 Index changes(const AdaptationPass& pass) { return pass.splits.done + pass.collapses.done; }
 
+// Whether the last pass's settling got further than the one before (docs/adaptation.md §Boundary
+// settling, "Between passes"): a vertex reached the geometry, or fewer were left part of the way.
+// While it does, the loop goes on though it changes little: each pass mends the elements that held
+// the last moves back, and the next settling goes further.
+bool settling_progressed(const std::vector<AdaptationPass>& passes) {
+  const AdaptationPass& last = passes.back();
+  const Index partly_before = passes.size() > 1 ? passes[passes.size() - 2].partly_settled : 0;
+  return last.settled > 0 || last.partly_settled < partly_before;
+}
+
 // Whether pass `last` moved the vertex count by less than kPingPongShare of its changes.
 bool flat(const AdaptationPass& before, const AdaptationPass& last) {
   return std::abs(static_cast<double>(last.vertices - before.vertices)) < kPingPongShare * static_cast<double>(changes(last));
@@ -150,7 +160,7 @@ AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, 
     AdaptationPass& last = run.passes.back();
     last.window_open = window_open(limits);
     last.collapse_length_bound = limits.collapse_new_length;
-    run.converged = changes(last) <= kConvergedChange * last.vertices;
+    run.converged = changes(last) <= kConvergedChange * last.vertices && !settling_progressed(run.passes);
     if (!window_open(limits)) ++closed_passes;
     if (stalled(run.passes)) limits.collapse_new_length = limits.split_length;
     if (settings.progress) settings.progress(pass, settings.max_passes);
