@@ -132,7 +132,7 @@ struct AdaptArguments {
   std::optional<std::string> analytic;
   int order;
   std::optional<double> h_min, h_max, gradation, hausd;
-  double hausd_relative;
+  std::optional<double> hausd_relative;
   double angle;
   std::string surface;
   double jacobian_floor;
@@ -172,7 +172,8 @@ py::tuple adapt(const PyMesh& mesh, const AdaptArguments& a) {
   if (a.order != 1 && a.order != 2) throw Error("order: 1 or 2, not " + std::to_string(a.order));
   if (a.curved && a.order == 1) throw Error("curved adapts the curved mesh: it needs order 2");
   if (a.h_min && a.h_max && *a.h_min > *a.h_max) throw Error("hmin must not exceed hmax");
-  if (!(a.hausd_relative >= 0 && std::isfinite(a.hausd_relative))) throw Error("hausd_relative: a finite number >= 0 (0: none)");
+  if (a.hausd_relative && !(*a.hausd_relative >= 0 && std::isfinite(*a.hausd_relative)))
+    throw Error("hausd_relative: a finite number >= 0 (0: none)");
   if (a.gradation && a.analytic)
     throw Error("hgrad grades a metric given on a mesh: make one with grade_metric(mesh, analytic_metric(...), BETA)");
   return visit_mesh(mesh, [&](const auto& input) {
@@ -241,14 +242,14 @@ passes. threads: default every core (the output does not depend on it).)");
   module.def(
       "adapt",
       [](const PyMesh& mesh, std::optional<DoubleArray> metric, std::optional<std::string> analytic, int order, std::optional<double> hmin,
-         std::optional<double> hmax, std::optional<double> hgrad, std::optional<double> hausd, double hausd_relative, double angle,
-         std::string surface, double jacobian_floor, int iterations, std::optional<int> threads, bool curved) {
+         std::optional<double> hmax, std::optional<double> hgrad, std::optional<double> hausd, std::optional<double> hausd_relative,
+         double angle, std::string surface, double jacobian_floor, int iterations, std::optional<int> threads, bool curved) {
         return adapt(mesh, {std::move(metric), std::move(analytic), order, hmin, hmax, hgrad, hausd, hausd_relative, angle,
                             std::move(surface), jacobian_floor, iterations, threads, curved});
       },
       py::arg("mesh"), py::arg("metric") = py::none(), py::kw_only(), py::arg("analytic") = py::none(), py::arg("order") = 2,
       py::arg("hmin") = py::none(), py::arg("hmax") = py::none(), py::arg("hgrad") = py::none(), py::arg("hausd") = py::none(),
-      py::arg("hausd_relative") = 0.0, py::arg("angle") = 45.0, py::arg("surface") = "p3", py::arg("jacobian_floor") = 0.01,
+      py::arg("hausd_relative") = py::none(), py::arg("angle") = 45.0, py::arg("surface") = "p3", py::arg("jacobian_floor") = 0.01,
       py::arg("iterations") = 20, py::arg("threads") = py::none(), py::arg("curved") = false,
       R"(Adapts a mesh to a metric, then curves it (`hocav adapt`): the new mesh and the report (a dict).
 
@@ -256,7 +257,8 @@ metric: one matrix per vertex of mesh (its back mesh), or analytic: a name of an
 evaluated exactly. order: 2 curves the adapted mesh, 1 stops after the P1 adaptation. hmin, hmax:
 clamp the sizes; hgrad: grade the metric first; hausd: largest distance of a new boundary facet from
 the geometry (default 0.01 of the bounding box's diagonal); hausd_relative: when > 0, that distance
-also at most this times the smallest size the metric asks at each boundary vertex; angle: ridges above this dihedral angle;
+also at most this times the smallest size the metric asks at each boundary vertex (default 1 with
+order 2, which the curving needs on a boundary layer; none with order 1); angle: ridges above this dihedral angle;
 surface: 'p3', 'cad:FILE' or 'none'; iterations: at most this many passes (a warning when the loop
 stops there); threads: of the swaps, smoothing, collapse tests and curving, default every core;
 curved: then curved passes on the curved mesh (`adapt --curved`: split and collapse by curved

@@ -121,7 +121,7 @@ void bound_analytic_metric(AdaptationSetup<D>& out, const Mesh<D>& input, const 
 
 template <int D>
 void make_job_metric(AdaptationSetup<D>& out, const Mesh<D>& input, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job) {
-  const HausdorffBound bound{out.settings.hausd, job.angle, job.hausd_relative};
+  const HausdorffBound bound{out.settings.hausd, job.angle, job.hausd_relative.value_or(job.curving ? kCurvedRelativeHausd : 0)};
   if (job.analytic && out.geometry) bound_analytic_metric(out, input, *job.analytic, bound);
   if (!job.analytic) {
     if (out.geometry) out.hausdorff_bounded_vertices = bound_metrics_by_hausdorff(input, metrics, *out.geometry, bound);
@@ -153,8 +153,9 @@ std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector
   setup->input = std::move(input);
   const Mesh<D>& back = setup->input;
   setup->geometry = job.geometry(back);
-  if ((job.hausd || job.hausd_relative > 0) && !setup->geometry && job.warn) {
-    const char* given = job.hausd && job.hausd_relative > 0 ? "--hausd, --hausd-relative" : job.hausd ? "--hausd" : "--hausd-relative";
+  const bool relative_given = job.hausd_relative.value_or(0) > 0;
+  if ((job.hausd || relative_given) && !setup->geometry && job.warn) {
+    const char* given = job.hausd && relative_given ? "--hausd, --hausd-relative" : job.hausd ? "--hausd" : "--hausd-relative";
     job.warn(std::string("the Hausdorff bound (") + given + ") bounds nothing without a boundary geometry (--surface none)");
   }
   AdaptationSettings& settings = setup->settings;

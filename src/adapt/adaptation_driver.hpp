@@ -58,9 +58,10 @@ template <int D>
 struct AdaptationJob {
   std::optional<AnalyticMetricSpec> analytic;  // the metric, evaluated exactly; else the one given per vertex
   SizeBounds bounds;
-  std::optional<double> gradation;        // grades the given metric first
-  std::optional<double> hausd;            // default kRelativeHausd × the input's bounding box diagonal
-  double hausd_relative = 0;              // HausdorffBound::relative_to_size (0: none)
+  std::optional<double> gradation;  // grades the given metric first
+  std::optional<double> hausd;      // default kRelativeHausd × the input's bounding box diagonal
+  // HausdorffBound::relative_to_size (0: none); default kCurvedRelativeHausd with `curving`, none without.
+  std::optional<double> hausd_relative;
   double angle = 45;                      // AdaptationSettings::feature_angle_degrees
   int iterations = 20;                    // AdaptationSettings::max_passes
   int threads = 1;                        // AdaptationSettings::threads

@@ -22,6 +22,11 @@ struct HausdorffBound {
   double relative_to_size = 0;
 };
 
+// The default relative_to_size when the adapted mesh is curved (`hocav adapt --order 2`): a wall
+// edge may sag at most the size across it. A deeper sag cannot be curved onto the geometry: the
+// edge's node would fold the first layer's elements (docs/adaptation.md §The Hausdorff bound).
+constexpr double kCurvedRelativeHausd = 1.0;
+
 // The bound at every vertex of `mesh` (P1, with its boundary facets), `given` the metric at its
 // vertices: at the boundary vertices where the geometry's curvature asks for smaller sizes than
 // `given`, those sizes, graded into the domain; sizes of the domain's diagonal elsewhere, which ask

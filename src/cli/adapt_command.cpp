@@ -42,7 +42,7 @@ struct AdaptOptions {
   int order = 2;
   std::optional<double> h_min, h_max, gradation;
   std::optional<double> hausd_given;
-  double hausd_relative = 0;
+  std::optional<double> hausd_relative;
   double angle = 45;
   double jacobian_floor = 0.01;
   int iterations = 20;
@@ -291,9 +291,10 @@ void add_adapt_command(CLI::App& app) {
       ->check(finite_positive());
   command
       ->add_option("--hausd-relative", o->hausd_relative,
-                   "also bound that distance at each boundary vertex by C x the smallest size the metric asks there (0.5 keeps a "
-                   "curved wall's sag within its first layer, so that the curving can put the wall on the geometry; default: none)")
-      ->check(finite_positive());
+                   "also bound that distance at each boundary vertex by C x the smallest size the metric asks there, 0 for none "
+                   "(a curved wall's sag within its first layer, so that the curving can put the wall on the geometry; default: 1 "
+                   "with --order 2, none with --order 1)")
+      ->check(finite_range(0.0, std::numeric_limits<double>::max(), "C >= 0"));
   command->add_option("--angle", o->angle, "boundary sides meeting at more than this dihedral angle are ridges (degrees)")
       ->check(finite_range(0.0, 180.0, "0 to 180"))
       ->capture_default_str();

@@ -110,19 +110,26 @@ TEST_F(AdaptCli, TheHausdorffBoundRefinesACoarseCircle) {
 
 // --hausd-relative bounds the sag of a curved wall by a fraction of the size across it: under the
 // thin layers of a boundary-layer annulus it refines the wall where a loose --hausd asks nothing.
+// With --order 2 it is on (C = 1: the curving needs it) unless given as 0; with --order 1, off.
 TEST_F(AdaptCli, TheRelativeHausdorffBoundRefinesAWallUnderThinLayers) {
   run_ok("generate polar-annulus-bl-inner --target-triangles 400 -o layers.meshb");
   run_ok("metric layers.meshb --implied -o layers.solb");
   const auto adapt = [&](const std::string& options) {
-    run_ok("adapt layers.meshb --metric layers.solb --order 1 -q -o adapted.meshb --report report.json --hausd 1 " + options);
+    run_ok("adapt layers.meshb --metric layers.solb -q -o adapted.meshb --report report.json --hausd 1 " + options);
     return std::pair(report_value("d[\"hausdorff_bounded_vertices\"]"), report_value("d[\"output_elements\"]"));
   };
-  const auto [loose_bounded, loose_elements] = adapt("");
-  const auto [relative_bounded, relative_elements] = adapt("--hausd-relative 0.5");
+  const auto [loose_bounded, loose_elements] = adapt("--order 1");
+  const auto [relative_bounded, relative_elements] = adapt("--order 1 --hausd-relative 0.5");
   EXPECT_EQ(loose_bounded, 0);
   EXPECT_GT(relative_bounded, 0);
   EXPECT_GT(relative_elements, loose_elements);
-  for (const char* bad : {"0", "-1", "nan"}) {
+  const auto [curved_bounded, curved_elements] = adapt("");
+  const auto [unbounded, unbounded_elements] = adapt("--hausd-relative 0");
+  EXPECT_GT(curved_bounded, 0);
+  EXPECT_LE(curved_bounded, relative_bounded);  // C = 1 bounds where 0.5 does, not more
+  EXPECT_EQ(unbounded, 0);
+  EXPECT_GT(curved_elements, unbounded_elements);
+  for (const char* bad : {"-1", "nan"}) {
     const Outcome refused = run(std::string("adapt layers.meshb --metric layers.solb -o refused.meshb --hausd-relative ") + bad);
     EXPECT_EQ(refused.exit_code, 2) << bad;
     EXPECT_NE(refused.err.find("--hausd-relative"), std::string::npos) << refused.err;
