@@ -1,7 +1,8 @@
 """`hocav adapt` (the P1 loop, then curving) against `hocav adapt --curved` (the same, then curved
 passes) on the same inputs, one run each (docs/benchmarks.md §Curved adaptation). Figures from each
 run's --report: the share of edges unit in their curved length and the curved mean ratio (min,
-mean; docs/curving.md §Curved quality), the min/avg normalized Jacobian, corrections and cavities
+mean; docs/curving.md §Curved quality), the min/avg normalized Jacobian, the average and largest
+gain (the relative shortening of the edges' Riemannian length by their curving, Table 1's), corrections and cavities
 rejected by the curving (the reinsertion's and the curved passes'), the curved passes' operations (collapses, splits, swaps, moves, and the passes;
 the operations made on the boundary),
 the command's wall time; and, for the cases bounded by circles or spheres centred at the origin,
@@ -129,6 +130,7 @@ def measure(hocav, case, curved, threads, folder):
         "case": case, "run": "adapt --curved" if curved else "adapt", "elements": r["output_elements"],
         "unit": measures["unit_share"], "q_mean": measures["quality_mean"], "q_min": measures["quality_min"],
         "j_min": curving["normalized_jacobian"]["min"], "j_avg": curving["normalized_jacobian"]["avg"],
+        "gain_avg": curving["average_gain"], "gain_max": curving["max_gain"],
         "corrections": curving["cavities"]["corrections"], "rejected": curving["cavities"]["rejected_curving"],
         "seconds": seconds, "boundary": None,
         "curved_ops": None,
@@ -146,14 +148,14 @@ def measure(hocav, case, curved, threads, folder):
 
 
 def markdown(rows):
-    lines = ["| case | run | elements | unit (curved length) | curved q mean / min | norm. Jacobian min / avg | boundary error: nodes max / mean, surface mean "
+    lines = ["| case | run | elements | unit (curved length) | curved q mean / min | norm. Jacobian min / avg | gain avg / max | boundary error: nodes max / mean, surface mean "
              "| corrections | rejected | curved collapses / splits / swaps / moves (passes; on the boundary) | time s |",
-             "|---|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         boundary = " / ".join(f"{e:.2e}" for e in r["boundary"]) if r["boundary"] else "n/a"
         ops = " / ".join(f"{n:,}" for n in r["curved_ops"][:4]) + f" ({r['curved_ops'][4]}; {r['curved_ops'][5]:,})" if r["curved_ops"] else ""
         lines.append(f"| {r['case']} | {r['run']} | {r['elements']:,} | {100 * r['unit']:.1f}% | {r['q_mean']:.3f} / {r['q_min']:.3f} "
-                     f"| {r['j_min']:.4f} / {r['j_avg']:.3f} | {boundary} | {r['corrections']:,} | {r['rejected']:,} | {ops} "
+                     f"| {r['j_min']:.4f} / {r['j_avg']:.3f} | {100 * r['gain_avg']:.2f}% / {100 * r['gain_max']:.1f}% | {boundary} | {r['corrections']:,} | {r['rejected']:,} | {ops} "
                      f"| {r['seconds']:.1f} |")
     return "\n".join(lines)
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <numeric>
 #include <ostream>
+#include <utility>
 
 #include "base/thread_pool.hpp"
 #include "curve/edge_optimizer.hpp"
@@ -17,6 +18,20 @@ namespace hocav {
 namespace {
 // Edges measured per task of the pool.
 constexpr std::size_t kMeasuredChunk = 1024;
+
+// Vertex v of `mesh` with its metric, and a back element near it to start the field's searches
+// from: the back mesh's own vertex v when the mesh keeps it where it was (`hocav curve`'s output keeps
+// the input's vertices), else the field sampled there (the curved passes of `adapt --curved`
+// renumber the vertices of the mesh the field was made on).
+template <int D>
+std::pair<EdgeEndpoint<D>, Index> endpoint_in_field(const Mesh<D>& mesh, const MetricField<D>& field, Index v) {
+  const Mesh<D>& back = field.back_mesh();
+  if (v < back.vertex_count() && back.vertex(v) == mesh.vertex(v))
+    return {edge_endpoint(mesh.vertex(v), field.vertex_log_metric(v)), back.vertex_element(v)};
+  const auto sample = field.sample(mesh.vertex(v));
+  return {edge_endpoint(mesh.vertex(v), sample.log_metric), sample.where.element};
+}
+
 }  // namespace
 
 template <int D>
@@ -25,9 +40,8 @@ EdgeGain edge_gain(const Mesh<D>& mesh, const MetricField<D>& field, Index e) {
   const Vec<D> straight = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
   // A straight edge (most of them) gains nothing: no length to compute.
   if (mesh.edge_node(e) == straight) return {};
-  const EdgeEndpoint<D> end_a = edge_endpoint(mesh.vertex(a), field.vertex_log_metric(a));
-  const EdgeEndpoint<D> end_b = edge_endpoint(mesh.vertex(b), field.vertex_log_metric(b));
-  const Index hint = field.back_mesh().vertex_element(a);  // the input, whose vertices the curved mesh keeps: hints near them
+  const auto [end_a, hint] = endpoint_in_field(mesh, field, a);
+  const EdgeEndpoint<D> end_b = endpoint_in_field(mesh, field, b).first;
   const auto straight_sample = field.sample(straight, hint), curved_sample = field.sample(mesh.edge_node(e), hint);
   const double straight_length = high_precision_edge_length(end_a, end_b, straight, straight_sample.log_metric);
   const double curved_length = high_precision_edge_length(end_a, end_b, mesh.edge_node(e), curved_sample.log_metric);

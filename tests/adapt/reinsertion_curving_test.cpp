@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
 #include "bezier/jacobian_bounds.hpp"
 #include "bezier/mesh_quality.hpp"
 #include "bezier/p2_element.hpp"
@@ -178,6 +181,31 @@ TEST(ReinsertionCurving, OutputMeasuresDoNotDependOnTheThreadCount) {
   }
   EXPECT_EQ(next, gains.size());
   EXPECT_GT(curved, 100);
+}
+
+// The gains of a curved mesh whose vertices are numbered otherwise than the field's back mesh (the
+// curved passes of adapt --curved renumber them): each edge's gain is the same as before, its ends'
+// metrics sampled where they are instead of read by vertex id.
+TEST(ReinsertionCurving, GainsDoNotDependOnTheVertexNumbering) {
+  ShearSquare square;
+  MetricField<2> field(square.mesh, analytic_metric_at_vertices(square.spec, square.mesh));
+  curve_by_reinsertion<2>(square.mesh, field, nullptr, ReinsertionOptions{});
+  Mesh<2> renumbered = square.mesh;
+  // Shifted by a third (a reversal would map the square onto itself through the centre, where the
+  // shear circle's metric is the same).
+  const Index n = renumbered.vertex_count();
+  std::vector<Index> shifted(static_cast<std::size_t>(n)), same(static_cast<std::size_t>(renumbered.element_count()));
+  for (Index v = 0; v < n; ++v) shifted[static_cast<std::size_t>(v)] = (v + n / 3) % n;
+  for (Index k = 0; k < renumbered.element_count(); ++k) same[static_cast<std::size_t>(k)] = k;
+  renumbered.renumber(shifted, same);
+  const std::vector<double> gains = volume_edge_gains(square.mesh, field), renumbered_gains = volume_edge_gains(renumbered, field);
+  ASSERT_EQ(renumbered_gains.size(), gains.size());
+  Index curved = 0;
+  for (std::size_t e = 0; e < gains.size(); ++e) {
+    EXPECT_NEAR(renumbered_gains[e], gains[e], 1e-9 + 1e-9 * std::abs(gains[e])) << "edge " << e;
+    curved += gains[e] > 1e-3;
+  }
+  EXPECT_GT(curved, 10);
 }
 
 TEST(ReinsertionCurving, CertificatesAreKeptOnlyWhenEveryInputElementIsAboveTheFloor) {
