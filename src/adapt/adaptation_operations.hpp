@@ -62,6 +62,8 @@ struct OperationCount {
 // longest first. A new vertex with an edge shorter than collapse_length is then collapsed onto that
 // edge's other end when it can be: the long edge is cut at a vertex already there, not beside it
 // (anisotropic refinement by midpoints would otherwise crowd the directions that need no refinement).
+// Inside the domain the two are made in one, and when they cannot be, an edge shorter than 2 away
+// from the boundary is not split (docs/adaptation.md §Split).
 // In 3D, while many long edges are longer than 2, only those are split (the coarse phase).
 struct SplitSweep {
   OperationCount count;

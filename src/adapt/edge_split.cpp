@@ -2,6 +2,8 @@
 // middle; on a boundary edge the facets (and the 3D feature line) through it are re-starred too and
 // the new vertex goes on the geometry, or on the straight middle if the geometry's point is refused.
 #include <algorithm>
+#include <array>
+#include <span>
 #include <tuple>
 
 #include "adapt/adaptation_operations.hpp"
@@ -21,6 +23,12 @@ constexpr std::size_t kPreviewChunk = 64;
 // A boundary-only element's cut (cut_boundary_only_elements) must raise the worst quality of its
 // cavity by this factor.
 constexpr double kCutGain = 1.05;
+// A split of an edge shorter than this, away from the boundary, whose point lies next to a vertex and
+// whose snap cannot be made in one, is not made (docs/adaptation.md §Split).
+constexpr double kFilteredBelow = 2;
+// The quality every element of a split and snap in one must reach (reconnect_to): the snap's
+// collapse asks at most this.
+constexpr double kReconnectQuality = 0.1;
 
 template <int D>
 struct alignas(64) SplitScratch {  // a cache line of its own: each thread writes its own
@@ -61,21 +69,45 @@ struct SplitPreview {
   bool current(const Mesh<D>& mesh) const { return made && elements_unchanged<D>(mesh, read, read_vertices); }
 };
 
+// The vertex of these elements, other than the two skipped, nearest the point x (metric m there)
+// when closer than `shortest` in the metric; kNoIndex otherwise.
+template <int D>
+Index nearest_vertex(const AdaptationMesh<D>& am, std::span<const Index> elements, const Vec<D>& x, const SymMat<D>& m,
+                     std::array<Index, 2> skipped, double shortest) {
+  Index nearest = kNoIndex;
+  for (Index k : elements)
+    for (Index w : am.mesh().element(k))
+      if (w != skipped[0] && w != skipped[1])
+        if (const double length = metric_edge_length<D>(x, am.mesh().vertex(w), m, am.metric(w)); length < shortest) {
+          shortest = length;
+          nearest = w;
+        }
+  return nearest;
+}
+
 // After a split: the new vertex v onto its nearest neighbour, when their edge is short.
 template <int D>
 void snap_to_nearest(AdaptationMesh<D>& am, Index v, const AdaptationLimits& limits, SplitScratch<D>& s) {
   auto& work = am.workspace();
   collect_ball(am.mesh(), v, work.cavity);
-  Index nearest = kNoIndex;
-  double shortest = limits.collapse_length;
-  for (Index k : work.cavity)
-    for (Index w : am.mesh().element(k))
-      if (w != v)
-        if (const double length = am.edge_length(v, w); length < shortest) {
-          shortest = length;
-          nearest = w;
-        }
+  const Index nearest = nearest_vertex(am, work.cavity, am.mesh().vertex(v), am.metric(v), {v, v}, limits.collapse_length);
   if (nearest != kNoIndex) collapse_edge(am, v, nearest, limits, s.collapse);
+}
+
+// The split and its snap in one (docs/adaptation.md §Split): the preview's cavity re-starred from
+// its vertex `nearest`, which the split's star with the snap's collapse would make, when its new
+// edges are no longer than a collapse may make and its elements reach kReconnectQuality. False
+// (nothing changed) otherwise.
+template <int D>
+bool reconnect_to(AdaptationMesh<D>& am, Index nearest, const SplitPreview<D>& p, const AdaptationLimits& limits) {
+  CavityOperator<D>& plan = am.workspace().cavity_operator;
+  if (plan.plan(am.mesh(), p.cavity, nearest, {}) != CavityStatus::kAccepted) return false;
+  for (const auto& element : plan.new_elements())
+    for (Index w : element)
+      if (w != nearest && am.edge_length(nearest, w) > limits.collapse_new_length) return false;
+  if (!(worst_planned_quality(am, plan) >= kReconnectQuality)) return false;
+  am.commit(plan);
+  return true;
 }
 
 // The boundary pieces through edge (a, b) (from its shell): its facets and, in 3D, the feature line
@@ -214,6 +246,13 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const SplitPreview<D
   Mesh<D>& mesh = am.mesh();
   auto& work = am.workspace();
   if (p.kept) return Refusal::kClasses;
+  // Inside the domain, a new point next to a vertex already there (docs/adaptation.md §Split).
+  if (purpose == SplitPurpose::kLength && !p.surfaces.boundary)
+    if (const Index nearest = nearest_vertex(am, p.cavity, p.point, p.metric.metric, {a, b}, limits.collapse_length); nearest != kNoIndex) {
+      if (reconnect_to(am, nearest, p, limits)) return Refusal::kNone;
+      const auto interior = [&](Index v) { return am.vertex_class(v) == VertexClass::kInterior; };
+      if (interior(a) && interior(b) && interior(nearest) && am.edge_length(a, b) < kFilteredBelow) return Refusal::kLength;
+    }
   const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
   const VertexClass new_class = !p.surfaces.boundary ? VertexClass::kInterior
                                 : p.lines.empty()    ? VertexClass::kSurface
