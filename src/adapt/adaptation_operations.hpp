@@ -163,4 +163,9 @@ double worst_quality(const AdaptationMesh<D>& mesh, std::span<const Index> eleme
 template <int D>
 double worst_planned_quality(const AdaptationMesh<D>& mesh, const CavityOperator<D>& plan);
 
+// Whether no edge from `center` in these elements is longer than `longest` (a collapse's or a
+// reconnection's new edges: AdaptationLimits::collapse_new_length).
+template <int D>
+bool edges_from_within(const AdaptationMesh<D>& mesh, Index center, std::span<const typename Mesh<D>::Element> elements, double longest);
+
 }  // namespace hocav

@@ -57,15 +57,6 @@ void predicted_collapse(const Mesh<D>& mesh, std::span<const Index> ball, Index 
   }
 }
 
-// No edge from the kept vertex longer than `longest` (AdaptationLimits::collapse_new_length).
-template <int D>
-bool new_edges_short(const AdaptationMesh<D>& am, Index kept, std::span<const typename Mesh<D>::Element> star, double longest) {
-  for (const auto& element : star)
-    for (Index w : element)
-      if (w != kept && am.edge_length(kept, w) > longest) return false;
-  return true;
-}
-
 template <int D>
 double worst_of(const AdaptationMesh<D>& am, std::span<const typename Mesh<D>::Element> elements) {
   double worst = std::numeric_limits<double>::infinity();
@@ -80,7 +71,7 @@ Refusal collapse_pretest(const AdaptationMesh<D>& am, std::span<const Index> bal
                          const AdaptationLimits& limits, CollapseScratch<D>& s) {
   if (!boundary_around(am, ball, removed, kept, s)) return Refusal::kClasses;
   predicted_collapse(am.mesh(), ball, removed, kept, s.star);
-  if (!new_edges_short<D>(am, kept, s.star, limits.collapse_new_length)) return Refusal::kLength;
+  if (!edges_from_within<D>(am, kept, s.star, limits.collapse_new_length)) return Refusal::kLength;
   if (!(worst_of<D>(am, s.star) >= std::min(0.3 * worst_quality<D>(am, ball), 0.1))) return Refusal::kQuality;
   return Refusal::kNone;
 }

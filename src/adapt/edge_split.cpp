@@ -102,9 +102,7 @@ template <int D>
 bool reconnect_to(AdaptationMesh<D>& am, Index nearest, const SplitPreview<D>& p, const AdaptationLimits& limits) {
   CavityOperator<D>& plan = am.workspace().cavity_operator;
   if (plan.plan(am.mesh(), p.cavity, nearest, {}) != CavityStatus::kAccepted) return false;
-  for (const auto& element : plan.new_elements())
-    for (Index w : element)
-      if (w != nearest && am.edge_length(nearest, w) > limits.collapse_new_length) return false;
+  if (!edges_from_within<D>(am, nearest, plan.new_elements(), limits.collapse_new_length)) return false;
   if (!(worst_planned_quality(am, plan) >= kReconnectQuality)) return false;
   am.commit(plan);
   return true;

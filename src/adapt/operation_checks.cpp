@@ -22,6 +22,14 @@ double worst_planned_quality(const AdaptationMesh<D>& am, const CavityOperator<D
   return worst;
 }
 
+template <int D>
+bool edges_from_within(const AdaptationMesh<D>& am, Index center, std::span<const typename Mesh<D>::Element> elements, double longest) {
+  for (const auto& element : elements)
+    for (Index w : element)
+      if (w != center && am.edge_length(center, w) > longest) return false;
+  return true;
+}
+
 const char* to_string(Refusal refusal) {
   switch (refusal) {
     case Refusal::kNone: return "accepted";
@@ -67,5 +75,7 @@ template double worst_quality(const AdaptationMesh<2>&, std::span<const Index>);
 template double worst_quality(const AdaptationMesh<3>&, std::span<const Index>);
 template double worst_planned_quality(const AdaptationMesh<2>&, const CavityOperator<2>&);
 template double worst_planned_quality(const AdaptationMesh<3>&, const CavityOperator<3>&);
+template bool edges_from_within(const AdaptationMesh<2>&, Index, std::span<const Mesh<2>::Element>, double);
+template bool edges_from_within(const AdaptationMesh<3>&, Index, std::span<const Mesh<3>::Element>, double);
 
 }  // namespace hocav
