@@ -65,6 +65,9 @@ struct SplitPreview {
   typename AdaptationMesh<D>::PointMetric metric;
   std::vector<Index> read;  // the shell and every element the Delaunay growth tested
   std::vector<typename Mesh<D>::Element> read_vertices;
+  // Inside the domain: the cavity's vertex other than the edge's ends nearest the point when closer
+  // than a collapse's bound in the metric (split_edge), or kNoIndex.
+  Index nearest = kNoIndex;
 
   bool current(const Mesh<D>& mesh) const { return made && elements_unchanged<D>(mesh, read, read_vertices); }
 };
@@ -175,9 +178,10 @@ bool buries_a_line(const AdaptationMesh<D>& am, const SplitPreview<D>& p, SplitS
 
 // The preview of splitting edge (a, b) on the mesh as it is; reads the mesh only.
 template <int D>
-void preview_split(const AdaptationMesh<D>& am, Index a, Index b, SplitPreview<D>& p, SplitScratch<D>& s) {
+void preview_split(const AdaptationMesh<D>& am, Index a, Index b, const AdaptationLimits& limits, SplitPreview<D>& p, SplitScratch<D>& s) {
   const Mesh<D>& mesh = am.mesh();
   p.made = false;
+  p.nearest = kNoIndex;
   if (mesh.vertex_removed(a) || mesh.vertex_removed(b)) return;
   collect_shell(mesh, a, b, p.shell);
   if (p.shell.empty()) return;
@@ -204,6 +208,7 @@ void preview_split(const AdaptationMesh<D>& am, Index a, Index b, SplitPreview<D
       p.read.insert(p.read.end(), p.cavity.begin() + static_cast<std::ptrdiff_t>(p.shell.size()), p.cavity.end());
       p.cavity.resize(p.shell.size());
     }
+    p.nearest = nearest_vertex(am, p.cavity, p.point, p.metric.metric, {a, b}, limits.collapse_length);
   }
   p.read.insert(p.read.end(), p.cavity.begin(), p.cavity.end());
   p.read_vertices.clear();
@@ -245,12 +250,11 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const SplitPreview<D
   auto& work = am.workspace();
   if (p.kept) return Refusal::kClasses;
   // Inside the domain, a new point next to a vertex already there (docs/adaptation.md §Split).
-  if (purpose == SplitPurpose::kLength && !p.surfaces.boundary)
-    if (const Index nearest = nearest_vertex(am, p.cavity, p.point, p.metric.metric, {a, b}, limits.collapse_length); nearest != kNoIndex) {
-      if (reconnect_to(am, nearest, p, limits)) return Refusal::kNone;
-      const auto interior = [&](Index v) { return am.vertex_class(v) == VertexClass::kInterior; };
-      if (interior(a) && interior(b) && interior(nearest) && am.edge_length(a, b) < kFilteredBelow) return Refusal::kLength;
-    }
+  if (purpose == SplitPurpose::kLength && p.nearest != kNoIndex) {
+    if (reconnect_to(am, p.nearest, p, limits)) return Refusal::kNone;
+    const auto interior = [&](Index v) { return am.vertex_class(v) == VertexClass::kInterior; };
+    if (interior(a) && interior(b) && interior(p.nearest) && am.edge_length(a, b) < kFilteredBelow) return Refusal::kLength;
+  }
   const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
   const VertexClass new_class = !p.surfaces.boundary ? VertexClass::kInterior
                                 : p.lines.empty()    ? VertexClass::kSurface
@@ -315,13 +319,14 @@ SplitSweep split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limit
   for (std::size_t start = 0; start < candidates.size(); start += chunk_size) {
     const std::span<const EdgeCandidate> chunk = std::span(candidates).subspan(start, std::min(chunk_size, candidates.size() - start));
     previews.resize(chunk.size());
-    run_strided(pool, chunk.size(), 2,
-                [&](std::size_t worker, std::size_t i) { preview_split(am, chunk[i].a, chunk[i].b, previews[i], scratch[worker]); });
+    run_strided(pool, chunk.size(), 2, [&](std::size_t worker, std::size_t i) {
+      preview_split(am, chunk[i].a, chunk[i].b, limits, previews[i], scratch[worker]);
+    });
     for (std::size_t i = 0; i < chunk.size(); ++i) {
       const EdgeCandidate& c = chunk[i];
       // (On one thread each preview was made just now.)
       if (chunk_size > 1 && (!previews[i].current(am.mesh()) || !same_boundary(am, c.a, c.b, previews[i], fresh)))
-        preview_split(am, c.a, c.b, previews[i], scratch.front());
+        preview_split(am, c.a, c.b, limits, previews[i], scratch.front());
       if (!previews[i].made || am.edge_length(c.a, c.b) <= limits.split_length) continue;  // gone, or no longer long
       count.add(split_edge(am, c.a, c.b, previews[i], limits, SplitPurpose::kLength, scratch.front()));
     }
@@ -382,7 +387,7 @@ OperationCount cut_boundary_only_elements(AdaptationMesh<D>& am, const Adaptatio
       }
     std::sort(edges.begin(), edges.end());  // longest first
     for (const auto& [minus_length, edge] : edges) {
-      preview_split(am, edge[0], edge[1], preview, scratch);
+      preview_split(am, edge[0], edge[1], limits, preview, scratch);
       if (!preview.made || preview.surfaces.boundary || !shell_holds(am.mesh(), preview, element.vertices)) continue;
       const Refusal outcome = split_edge(am, edge[0], edge[1], preview, limits, SplitPurpose::kCut, scratch);
       count.add(outcome);

@@ -22,20 +22,38 @@ namespace {
 // A move must raise the ball's worst quality by this factor (mmg asks 1.02): no move undoes another.
 constexpr double kSmoothingGain = 1.01;
 // Smaller batches are tried on the calling thread alone.
-constexpr std::size_t kSmallestThreadedBatch = 256;
+constexpr std::size_t kSmallestThreadedBatch = 32;
+
+// v's neighbours (in the order neighbors_in gives) and, for each element of the ball in turn and each
+// of its vertices other than v, that vertex's place among them: one scan of the ball for both.
+template <int D>
+void neighbors_and_places(std::span<const typename Mesh<D>::Element> ball, Index v, std::vector<Index>& neighbors,
+                          std::vector<Index>& places) {
+  neighbors.clear();
+  places.clear();
+  for (const auto& element : ball)
+    for (Index w : element)
+      if (w != v) {
+        const auto at = std::find(neighbors.begin(), neighbors.end(), w);
+        places.push_back(static_cast<Index>(at - neighbors.begin()));
+        if (at == neighbors.end()) neighbors.push_back(w);
+      }
+}
 
 // The mean over the ball's elements of w + (v − w)/l(v, w) for each other vertex w (a neighbour
-// counts once per element it shares with v), with `lengths` those of v's edges to `neighbors`.
+// counts once per element it shares with v), with `lengths` those of v's edges to its neighbours
+// and `places` as neighbors_and_places gives them for `ball`.
 template <int D>
-Vec<D> unit_edge_target(const AdaptationMesh<D>& am, Index v, std::span<const Index> ball, std::span<const Index> neighbors,
+Vec<D> unit_edge_target(const AdaptationMesh<D>& am, Index v, std::span<const Index> ball, std::span<const Index> places,
                         std::span<const double> lengths) {
   const Mesh<D>& mesh = am.mesh();
   Vec<D> sum{};
   int count = 0;
+  std::size_t slot = 0;
   for (Index k : ball)
     for (Index w : mesh.element(k))
       if (w != v) {
-        const double length = lengths[static_cast<std::size_t>(std::find(neighbors.begin(), neighbors.end(), w) - neighbors.begin())];
+        const double length = lengths[static_cast<std::size_t>(places[slot++])];
         if (!(length > 0)) continue;
         sum = sum + (mesh.vertex(w) + (1 / length) * (mesh.vertex(v) - mesh.vertex(w)));
         ++count;
@@ -63,7 +81,7 @@ Vec<D> repair_target(const AdaptationMesh<D>& am, Index v, const typename Mesh<D
 
 template <int D>
 struct alignas(64) SmoothingScratch {  // a cache line of its own: each thread writes its own
-  std::vector<Index> neighbors, facets;
+  std::vector<Index> neighbors, places, facets;
   std::vector<double> lengths;
   std::vector<typename Mesh<D>::Element> elements;
   std::vector<Vec<D>> facet_normals;  // before the move
@@ -142,7 +160,7 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, std::span<const Index> ball, 
   if (ball.empty()) return false;
   scratch.elements.clear();
   for (Index k : ball) scratch.elements.push_back(am.mesh().element(k));
-  neighbors_in<D>(scratch.elements, v, scratch.neighbors);
+  neighbors_and_places<D>(scratch.elements, v, scratch.neighbors, scratch.places);
   // Most trials are refused by the element that was the worst: judged first.
   const auto worst = std::min_element(ball.begin(), ball.end(), [&](Index x, Index y) { return am.quality(x) < am.quality(y); });
   std::swap(scratch.elements.front(), scratch.elements[static_cast<std::size_t>(worst - ball.begin())]);
@@ -158,8 +176,7 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, std::span<const Index> ball, 
     scratch.facet_normals.clear();
     for (Index f : scratch.facets) scratch.facet_normals.push_back(area_normal<D>(am.mesh(), am.mesh().facet(f)));
   }
-  if (move_toward(am, trial, unit_edge_target(am, v, ball, scratch.neighbors, scratch.lengths), kSmoothingSteps, scratch, limits))
-    return true;
+  if (move_toward(am, trial, unit_edge_target(am, v, ball, scratch.places, scratch.lengths), kSmoothingSteps, scratch, limits)) return true;
   return trial.old_worst < kRepairQuality &&
          move_toward(am, trial, repair_target(am, v, scratch.elements.front()), kRepairSteps, scratch, limits);
 }
@@ -176,20 +193,34 @@ struct SmoothingCandidates {
 };
 
 // The recently changed interior and surface vertices, with their balls, but those refused last
-// time whose balls have not changed since.
+// time whose balls have not changed since; gathered in chunks of vertices on the pool's threads,
+// then joined in order.
 template <int D>
-SmoothingCandidates smoothing_candidates(const AdaptationMesh<D>& am) {
+SmoothingCandidates smoothing_candidates(const AdaptationMesh<D>& am, ThreadPool& pool) {
+  constexpr std::size_t kChunk = 4096;
+  const auto vertex_count = static_cast<std::size_t>(am.mesh().vertex_count());
+  std::vector<SmoothingCandidates> found((vertex_count + kChunk - 1) / kChunk);
+  run_chunked(pool, vertex_count, kChunk, [&](std::size_t begin, std::size_t end) {
+    SmoothingCandidates& part = found[begin / kChunk];
+    std::vector<Index> ball;
+    part.ball_start.push_back(0);
+    for (auto v = static_cast<Index>(begin); v < static_cast<Index>(end); ++v) {
+      if (am.mesh().vertex_removed(v) || am.vertex_class(v) > VertexClass::kSurface || !am.changed_recently(v) ||
+          am.smoothing_refused_as_is(v))
+        continue;
+      collect_ball(am.mesh(), v, ball);
+      part.vertices.push_back(v);
+      part.balls.insert(part.balls.end(), ball.begin(), ball.end());
+      part.ball_start.push_back(static_cast<Index>(part.balls.size()));
+    }
+  });
   SmoothingCandidates candidates;
-  std::vector<Index> ball;
   candidates.ball_start.push_back(0);
-  for (Index v = 0; v < am.mesh().vertex_count(); ++v) {
-    if (am.mesh().vertex_removed(v) || am.vertex_class(v) > VertexClass::kSurface || !am.changed_recently(v) ||
-        am.smoothing_refused_as_is(v))
-      continue;
-    collect_ball(am.mesh(), v, ball);
-    candidates.vertices.push_back(v);
-    candidates.balls.insert(candidates.balls.end(), ball.begin(), ball.end());
-    candidates.ball_start.push_back(static_cast<Index>(candidates.balls.size()));
+  for (const SmoothingCandidates& part : found) {
+    const auto offset = static_cast<Index>(candidates.balls.size());
+    candidates.vertices.insert(candidates.vertices.end(), part.vertices.begin(), part.vertices.end());
+    candidates.balls.insert(candidates.balls.end(), part.balls.begin(), part.balls.end());
+    for (std::size_t i = 1; i < part.ball_start.size(); ++i) candidates.ball_start.push_back(offset + part.ball_start[i]);
   }
   return candidates;
 }
@@ -227,7 +258,7 @@ template <int D>
 OperationCount smooth_vertices(AdaptationMesh<D>& am, const AdaptationLimits& limits, ThreadPool& pool) {
   std::vector<SmoothingScratch<D>> scratch(static_cast<std::size_t>(pool.thread_count()));
   OperationCount count;
-  const SmoothingCandidates candidates = smoothing_candidates(am);
+  const SmoothingCandidates candidates = smoothing_candidates(am, pool);
   std::vector<Index> positions(candidates.vertices.size());
   for (std::size_t i = 0; i < positions.size(); ++i) positions[i] = static_cast<Index>(i);
   ConflictBatches batches(am.mesh().element_count());  // keys: elements
