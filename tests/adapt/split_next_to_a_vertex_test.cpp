@@ -116,5 +116,31 @@ TEST(SplitNextToAVertex, NextToABoundaryVertexTheEdgeIsStillSplit) {
   adapt_test::expect_closed_and_consistent(mesh);
 }
 
+// The vertex next to the new point may lie past the edge's shell, in the Delaunay cavity grown from
+// it: here x (0.67 from a-b's middle, in a flat triangle beyond w-b) while the shell's w and c are
+// 0.9 away. The long edge is cut at x, still with no new vertex.
+TEST(SplitNextToAVertex, TheVertexMayLieInTheGrownCavityPastTheShell) {
+  constexpr Index kX = 4;
+  Mesh<2> mesh;
+  for (const Vec2 x : {Vec2{{-0.8, 0}}, Vec2{{0.8, 0}}, Vec2{{0, 0.9}}, Vec2{{0, -0.9}}, Vec2{{0.45, 0.5}}}) mesh.add_vertex(x);
+  for (const std::array<Index, 3> element : {std::array<Index, 3>{kA, kB, kW}, {kA, kC, kB}, {kW, kB, kX}}) mesh.add_element(element, 1);
+  for (const std::array<Index, 2> facet : {std::array<Index, 2>{kA, kC}, {kC, kB}, {kB, kX}, {kX, kW}, {kW, kA}}) mesh.add_facet(facet, 1);
+  mesh.build_topology();
+  const double area = total_measure(mesh);
+  const AdaptationMetric<2> metric = adapt_test::uniform_metric<2>(1);
+  AdaptationMesh<2> am(mesh, metric, nullptr, 45);
+  ThreadPool pool(1);
+  AdaptationLimits limits = only_the_long_edge();
+  limits.collapse_new_length = 1.6;  // x-c, 1.47, may be made
+  const Index vertices = mesh.vertex_count();
+  EXPECT_EQ(split_long_edges(am, limits, pool).count.done, 1);
+  EXPECT_EQ(mesh.vertex_count(), vertices);  // not a vertex made and snapped onto x
+  EXPECT_FALSE(joined(mesh, kA, kB));
+  EXPECT_TRUE(joined(mesh, kX, kC));
+  EXPECT_TRUE(joined(mesh, kX, kA));
+  adapt_test::expect_closed_and_consistent(mesh);
+  EXPECT_NEAR(total_measure(mesh), area, 1e-12);
+}
+
 }  // namespace
 }  // namespace hocav
