@@ -138,9 +138,12 @@ struct EdgeCandidate {
 template <int D>
 std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<D>& mesh, double bound, bool longer, ThreadPool& pool);
 
-// The vertices of these elements (vertex lists) other than `center`, once each.
+// The vertices other than `center` of those of these elements (vertex lists) that hold it, once
+// each, in the order met; with `places`, also each such element's vertices other than center in
+// turn, as their places in `out`.
 template <int D>
-void neighbors_in(std::span<const typename Mesh<D>::Element> elements, Index center, std::vector<Index>& out);
+void neighbors_in(std::span<const typename Mesh<D>::Element> elements, Index center, std::vector<Index>& out,
+                  std::vector<Index>* places = nullptr);
 
 // The range of the lengths of the edges to these vertices from a point x with metric `metric_x`
 // (a trial position of a vertex), and from vertex `center` where it is.

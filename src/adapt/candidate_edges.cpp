@@ -27,20 +27,17 @@ std::vector<EdgeCandidate> edges_beyond(const AdaptationMesh<D>& am, double boun
   for_each_changed_edge([&](Index a, Index b) { ends[static_cast<std::size_t>(fill[a]++)] = b; });
   // Each bucket's sort and lengths on the pool's threads, in chunks of vertices gathered in order.
   constexpr std::size_t kChunk = 2048;
-  const auto vertex_count = static_cast<std::size_t>(mesh.vertex_count());
-  std::vector<std::vector<EdgeCandidate>> found((vertex_count + kChunk - 1) / kChunk);
-  run_chunked(pool, vertex_count, kChunk, [&](std::size_t begin, std::size_t end) {
-    std::vector<EdgeCandidate>& out = found[begin / kChunk];
-    for (auto a = static_cast<Index>(begin); a < static_cast<Index>(end); ++a) {
-      const auto bucket_begin = ends.begin() + first[a], bucket_end = ends.begin() + first[a + 1];
-      std::sort(bucket_begin, bucket_end);
-      for (auto b = bucket_begin; b != bucket_end; ++b)
-        if (b == bucket_begin || *b != *(b - 1))
-          if (const double length = am.edge_length(a, *b); longer ? length > bound : length < bound) out.push_back({length, a, *b});
-    }
-  });
-  std::vector<EdgeCandidate> candidates;
-  for (const std::vector<EdgeCandidate>& part : found) candidates.insert(candidates.end(), part.begin(), part.end());
+  std::vector<EdgeCandidate> candidates = joined(results_by_chunk<std::vector<EdgeCandidate>>(
+      pool, static_cast<std::size_t>(mesh.vertex_count()), kChunk,
+      [&](std::size_t begin, std::size_t end, std::vector<EdgeCandidate>& out) {
+        for (auto a = static_cast<Index>(begin); a < static_cast<Index>(end); ++a) {
+          const auto bucket_begin = ends.begin() + first[a], bucket_end = ends.begin() + first[a + 1];
+          std::sort(bucket_begin, bucket_end);
+          for (auto b = bucket_begin; b != bucket_end; ++b)
+            if (b == bucket_begin || *b != *(b - 1))
+              if (const double length = am.edge_length(a, *b); longer ? length > bound : length < bound) out.push_back({length, a, *b});
+        }
+      }));
   std::sort(candidates.begin(), candidates.end(), [longer](const EdgeCandidate& x, const EdgeCandidate& y) {
     if (x.length != y.length) return longer ? x.length > y.length : x.length < y.length;
     return std::pair(x.a, x.b) < std::pair(y.a, y.b);

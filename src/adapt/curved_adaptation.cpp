@@ -61,13 +61,10 @@ struct EdgeToFix {
 constexpr std::size_t kScanChunk = 2048;
 template <typename T, typename List>
 std::vector<T> scan_in_chunks(ThreadPool& pool, Index count, const List& list) {
-  std::vector<std::vector<T>> chunks((static_cast<std::size_t>(count) + kScanChunk - 1) / kScanChunk);
-  run_chunked(pool, static_cast<std::size_t>(count), kScanChunk, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) list(static_cast<Index>(i), chunks[begin / kScanChunk]);
-  });
-  std::vector<T> all;
-  for (const std::vector<T>& chunk : chunks) all.insert(all.end(), chunk.begin(), chunk.end());
-  return all;
+  return joined(results_by_chunk<std::vector<T>>(pool, static_cast<std::size_t>(count), kScanChunk,
+                                                 [&](std::size_t begin, std::size_t end, std::vector<T>& out) {
+                                                   for (std::size_t i = begin; i < end; ++i) list(static_cast<Index>(i), out);
+                                                 }));
 }
 
 // The edges whose curved length is outside (lower, upper), the ones furthest outside first; ties
@@ -233,11 +230,11 @@ CurvedOperationCount split_long_curved_edges(PassTools<D>& tools, ThreadPool& po
 template <int D>
 double worst_element_quality(const Mesh<D>& mesh, const P2Operations<D>& operations, ThreadPool& pool) {
   const auto count = static_cast<std::size_t>(mesh.element_count());
-  std::vector<double> worst((count + kScanChunk - 1) / kScanChunk, INFINITY);  // per chunk
-  run_chunked(pool, count, kScanChunk, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k)
-      worst[begin / kScanChunk] = std::min(worst[begin / kScanChunk], operations.quality(static_cast<Index>(k)));
-  });
+  const std::vector<double> worst = results_by_chunk<double>(
+      pool, count, kScanChunk, [&](std::size_t begin, std::size_t end, double& chunk_worst) {
+        chunk_worst = INFINITY;
+        for (std::size_t k = begin; k < end; ++k) chunk_worst = std::min(chunk_worst, operations.quality(static_cast<Index>(k)));
+      });
   return std::accumulate(worst.begin(), worst.end(), INFINITY, [](double x, double y) { return std::min(x, y); });
 }
 

@@ -43,12 +43,17 @@ const char* to_string(Refusal refusal) {
 }
 
 template <int D>
-void neighbors_in(std::span<const typename Mesh<D>::Element> elements, Index center, std::vector<Index>& out) {
+void neighbors_in(std::span<const typename Mesh<D>::Element> elements, Index center, std::vector<Index>& out, std::vector<Index>* places) {
   out.clear();
+  if (places) places->clear();
   for (const auto& element : elements) {
     if (std::find(element.begin(), element.end(), center) == element.end()) continue;
-    for (Index w : element)
-      if (w != center && !small_set_holds(out, w)) out.push_back(w);
+    for (Index w : element) {
+      if (w == center) continue;
+      const std::size_t place = small_set_place(out, w);
+      if (places) places->push_back(static_cast<Index>(place));
+      if (place == out.size()) out.push_back(w);
+    }
   }
 }
 
@@ -67,8 +72,8 @@ bool lengths_stay_in_window(std::pair<double, double> before, std::pair<double, 
   return after.first >= std::min(limits.collapse_length, before.first) && after.second <= std::max(limits.split_length, before.second);
 }
 
-template void neighbors_in<2>(std::span<const Mesh<2>::Element>, Index, std::vector<Index>&);
-template void neighbors_in<3>(std::span<const Mesh<3>::Element>, Index, std::vector<Index>&);
+template void neighbors_in<2>(std::span<const Mesh<2>::Element>, Index, std::vector<Index>&, std::vector<Index>*);
+template void neighbors_in<3>(std::span<const Mesh<3>::Element>, Index, std::vector<Index>&, std::vector<Index>*);
 template std::pair<double, double> length_range_from(const AdaptationMesh<2>&, const Vec<2>&, const SymMat<2>&, std::span<const Index>);
 template std::pair<double, double> length_range_from(const AdaptationMesh<3>&, const Vec<3>&, const SymMat<3>&, std::span<const Index>);
 template double worst_quality(const AdaptationMesh<2>&, std::span<const Index>);

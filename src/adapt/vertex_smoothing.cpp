@@ -24,25 +24,9 @@ constexpr double kSmoothingGain = 1.01;
 // Smaller batches are tried on the calling thread alone.
 constexpr std::size_t kSmallestThreadedBatch = 32;
 
-// v's neighbours (in the order neighbors_in gives) and, for each element of the ball in turn and each
-// of its vertices other than v, that vertex's place among them: one scan of the ball for both.
-template <int D>
-void neighbors_and_places(std::span<const typename Mesh<D>::Element> ball, Index v, std::vector<Index>& neighbors,
-                          std::vector<Index>& places) {
-  neighbors.clear();
-  places.clear();
-  for (const auto& element : ball)
-    for (Index w : element)
-      if (w != v) {
-        const auto at = std::find(neighbors.begin(), neighbors.end(), w);
-        places.push_back(static_cast<Index>(at - neighbors.begin()));
-        if (at == neighbors.end()) neighbors.push_back(w);
-      }
-}
-
 // The mean over the ball's elements of w + (v − w)/l(v, w) for each other vertex w (a neighbour
 // counts once per element it shares with v), with `lengths` those of v's edges to its neighbours
-// and `places` as neighbors_and_places gives them for `ball`.
+// and `places` as neighbors_in gives them for `ball`.
 template <int D>
 Vec<D> unit_edge_target(const AdaptationMesh<D>& am, Index v, std::span<const Index> ball, std::span<const Index> places,
                         std::span<const double> lengths) {
@@ -160,7 +144,7 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, std::span<const Index> ball, 
   if (ball.empty()) return false;
   scratch.elements.clear();
   for (Index k : ball) scratch.elements.push_back(am.mesh().element(k));
-  neighbors_and_places<D>(scratch.elements, v, scratch.neighbors, scratch.places);
+  neighbors_in<D>(scratch.elements, v, scratch.neighbors, &scratch.places);
   // Most trials are refused by the element that was the worst: judged first.
   const auto worst = std::min_element(ball.begin(), ball.end(), [&](Index x, Index y) { return am.quality(x) < am.quality(y); });
   std::swap(scratch.elements.front(), scratch.elements[static_cast<std::size_t>(worst - ball.begin())]);
@@ -198,22 +182,20 @@ struct SmoothingCandidates {
 template <int D>
 SmoothingCandidates smoothing_candidates(const AdaptationMesh<D>& am, ThreadPool& pool) {
   constexpr std::size_t kChunk = 4096;
-  const auto vertex_count = static_cast<std::size_t>(am.mesh().vertex_count());
-  std::vector<SmoothingCandidates> found((vertex_count + kChunk - 1) / kChunk);
-  run_chunked(pool, vertex_count, kChunk, [&](std::size_t begin, std::size_t end) {
-    SmoothingCandidates& part = found[begin / kChunk];
-    std::vector<Index> ball;
-    part.ball_start.push_back(0);
-    for (auto v = static_cast<Index>(begin); v < static_cast<Index>(end); ++v) {
-      if (am.mesh().vertex_removed(v) || am.vertex_class(v) > VertexClass::kSurface || !am.changed_recently(v) ||
-          am.smoothing_refused_as_is(v))
-        continue;
-      collect_ball(am.mesh(), v, ball);
-      part.vertices.push_back(v);
-      part.balls.insert(part.balls.end(), ball.begin(), ball.end());
-      part.ball_start.push_back(static_cast<Index>(part.balls.size()));
-    }
-  });
+  const std::vector<SmoothingCandidates> found = results_by_chunk<SmoothingCandidates>(
+      pool, static_cast<std::size_t>(am.mesh().vertex_count()), kChunk, [&](std::size_t begin, std::size_t end, SmoothingCandidates& part) {
+        std::vector<Index> ball;
+        part.ball_start.push_back(0);
+        for (auto v = static_cast<Index>(begin); v < static_cast<Index>(end); ++v) {
+          if (am.mesh().vertex_removed(v) || am.vertex_class(v) > VertexClass::kSurface || !am.changed_recently(v) ||
+              am.smoothing_refused_as_is(v))
+            continue;
+          collect_ball(am.mesh(), v, ball);
+          part.vertices.push_back(v);
+          part.balls.insert(part.balls.end(), ball.begin(), ball.end());
+          part.ball_start.push_back(static_cast<Index>(part.balls.size()));
+        }
+      });
   SmoothingCandidates candidates;
   candidates.ball_start.push_back(0);
   for (const SmoothingCandidates& part : found) {

@@ -66,4 +66,21 @@ void run_chunked(ThreadPool& pool, std::size_t count, std::size_t chunk, const W
   pool.run((count + chunk - 1) / chunk, [&](std::size_t c) { work(c * chunk, std::min(count, (c + 1) * chunk)); });
 }
 
+// Calls work(begin, end, result) as run_chunked does, each range filling a result of its own;
+// returns the results in the ranges' order, so the same for any thread count.
+template <typename Result, typename Work>
+std::vector<Result> results_by_chunk(ThreadPool& pool, std::size_t count, std::size_t chunk, const Work& work) {
+  std::vector<Result> results((count + chunk - 1) / chunk);
+  run_chunked(pool, count, chunk, [&](std::size_t begin, std::size_t end) { work(begin, end, results[begin / chunk]); });
+  return results;
+}
+
+// The parts one after the other.
+template <typename T>
+std::vector<T> joined(const std::vector<std::vector<T>>& parts) {
+  std::vector<T> all;
+  for (const std::vector<T>& part : parts) all.insert(all.end(), part.begin(), part.end());
+  return all;
+}
+
 }  // namespace hocav
