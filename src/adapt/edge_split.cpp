@@ -65,7 +65,7 @@ struct SplitPreview {
   typename AdaptationMesh<D>::PointMetric metric;
   std::vector<Index> read;  // the shell and every element the Delaunay growth tested
   std::vector<typename Mesh<D>::Element> read_vertices;
-  // Inside the domain: the cavity's vertex other than the edge's ends nearest the point when closer
+  // Inside the domain, for a long edge: the cavity's vertex other than the edge's ends nearest the point when closer
   // than a collapse's bound in the metric (split_edge), or kNoIndex.
   Index nearest = kNoIndex;
 
@@ -176,9 +176,15 @@ bool buries_a_line(const AdaptationMesh<D>& am, const SplitPreview<D>& p, SplitS
   return false;
 }
 
+// Why an edge is split: it is long (then a new element may be as poor as refine's floor, and the
+// new vertex is snapped), or it cuts a poor boundary-only element (then the split must raise the
+// worst quality of its cavity, and the new vertex stays).
+enum class SplitPurpose { kLength, kCut };
+
 // The preview of splitting edge (a, b) on the mesh as it is; reads the mesh only.
 template <int D>
-void preview_split(const AdaptationMesh<D>& am, Index a, Index b, const AdaptationLimits& limits, SplitPreview<D>& p, SplitScratch<D>& s) {
+void preview_split(const AdaptationMesh<D>& am, Index a, Index b, const AdaptationLimits& limits, SplitPurpose purpose, SplitPreview<D>& p,
+                   SplitScratch<D>& s) {
   const Mesh<D>& mesh = am.mesh();
   p.made = false;
   p.nearest = kNoIndex;
@@ -208,7 +214,8 @@ void preview_split(const AdaptationMesh<D>& am, Index a, Index b, const Adaptati
       p.read.insert(p.read.end(), p.cavity.begin() + static_cast<std::ptrdiff_t>(p.shell.size()), p.cavity.end());
       p.cavity.resize(p.shell.size());
     }
-    p.nearest = nearest_vertex(am, p.cavity, p.point, p.metric.metric, {a, b}, limits.collapse_length);
+    if (purpose == SplitPurpose::kLength)
+      p.nearest = nearest_vertex(am, p.cavity, p.point, p.metric.metric, {a, b}, limits.collapse_length);
   }
   p.read.insert(p.read.end(), p.cavity.begin(), p.cavity.end());
   p.read_vertices.clear();
@@ -229,11 +236,6 @@ bool plan_split(AdaptationMesh<D>& am, Index v, bool at_preview_point, const Spl
     return true;
   return plan.plan(am.mesh(), p.shell, v, options) == CavityStatus::kAccepted;
 }
-
-// Why an edge is split: it is long (then a new element may be as poor as refine's floor, and the
-// new vertex is snapped), or it cuts a poor boundary-only element (then the split must raise the
-// worst quality of its cavity, and the new vertex stays).
-enum class SplitPurpose { kLength, kCut };
 
 // The quality every element a split makes must reach.
 template <int D>
@@ -320,13 +322,13 @@ SplitSweep split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limit
     const std::span<const EdgeCandidate> chunk = std::span(candidates).subspan(start, std::min(chunk_size, candidates.size() - start));
     previews.resize(chunk.size());
     run_strided(pool, chunk.size(), 2, [&](std::size_t worker, std::size_t i) {
-      preview_split(am, chunk[i].a, chunk[i].b, limits, previews[i], scratch[worker]);
+      preview_split(am, chunk[i].a, chunk[i].b, limits, SplitPurpose::kLength, previews[i], scratch[worker]);
     });
     for (std::size_t i = 0; i < chunk.size(); ++i) {
       const EdgeCandidate& c = chunk[i];
       // (On one thread each preview was made just now.)
       if (chunk_size > 1 && (!previews[i].current(am.mesh()) || !same_boundary(am, c.a, c.b, previews[i], fresh)))
-        preview_split(am, c.a, c.b, limits, previews[i], scratch.front());
+        preview_split(am, c.a, c.b, limits, SplitPurpose::kLength, previews[i], scratch.front());
       if (!previews[i].made || am.edge_length(c.a, c.b) <= limits.split_length) continue;  // gone, or no longer long
       count.add(split_edge(am, c.a, c.b, previews[i], limits, SplitPurpose::kLength, scratch.front()));
     }
@@ -387,7 +389,7 @@ OperationCount cut_boundary_only_elements(AdaptationMesh<D>& am, const Adaptatio
       }
     std::sort(edges.begin(), edges.end());  // longest first
     for (const auto& [minus_length, edge] : edges) {
-      preview_split(am, edge[0], edge[1], limits, preview, scratch);
+      preview_split(am, edge[0], edge[1], limits, SplitPurpose::kCut, preview, scratch);
       if (!preview.made || preview.surfaces.boundary || !shell_holds(am.mesh(), preview, element.vertices)) continue;
       const Refusal outcome = split_edge(am, edge[0], edge[1], preview, limits, SplitPurpose::kCut, scratch);
       count.add(outcome);
