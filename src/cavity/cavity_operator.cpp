@@ -204,6 +204,9 @@ CavityStatus CavityOperator<D>::collect_boundary(const Mesh<D>& mesh) {
         continue;
       }
       const bool removed = facet != kNoIndex && std::binary_search(removed_facets_.begin(), removed_facets_.end(), facet);
+      // A facet with an element past it (an interface inside the domain) would leave that element's
+      // face unmatched.
+      if (removed && outer != kNoIndex) return CavityStatus::kCrossesBoundary;
       BoundaryFace boundary{{}, outer, -1, facet, k, face, removed};
       for (int i = 0; i < D; ++i) boundary.vertices[i] = mesh.element(k)[face_vertices<D>(face)[i]];
       if (outer != kNoIndex)

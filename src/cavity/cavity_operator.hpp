@@ -40,7 +40,7 @@ struct CavityOptions {
 enum class CavityStatus {
   kAccepted,
   kNotStarShaped,        // the star of the boundary from the vertex is not a closed, manifold set
-  kCrossesBoundary,      // a boundary facet lies inside the cavity, or a removed facet is not on its boundary
+  kCrossesBoundary,      // a boundary facet lies inside the cavity, or a removed facet is not on its boundary or has an element past it
   kMixedRefs,            // the cavity's elements carry different refs
   kRemovesVertex,        // a vertex other than the removable one would disappear
   kNonPositiveMeasure,   // P1 mode: a new element is flat or inverted

@@ -258,6 +258,58 @@ TEST(AdaptationLoop, RequiredEdgesAndTrianglesAreKept) {
   expect_required_kept<3>(adapt_test::unit_mesh<3>(3));
 }
 
+// The unit square or cube in two element refs, 1 for x < 0.5 and 2 past it, with the faces between
+// them as facets of ref 9: an interface inside the domain.
+template <int D>
+Mesh<D> two_refs_across_an_interface(int cells_per_side) {
+  Mesh<D> mesh = adapt_test::unit_mesh<D>(cells_per_side);
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    double x = 0;
+    for (Index v : mesh.element(k)) x += mesh.vertex(v)[0] / (D + 1);
+    mesh.set_element(k, mesh.element(k), x < 0.5 ? 1 : 2);
+    if (x > 0.5) continue;
+    for (int face = 0; face <= D; ++face) {
+      typename Mesh<D>::Facet facet;
+      for (int i = 0; i < D; ++i) facet[i] = mesh.element(k)[face_vertices<D>(face)[i]];
+      if (std::all_of(facet.begin(), facet.end(), [&](Index v) { return mesh.vertex(v)[0] == 0.5; })) mesh.add_facet(facet, 9);
+    }
+  }
+  mesh.build_topology();
+  return mesh;
+}
+
+// Per element ref, the measure of its elements, and whether each lies on its side of x = 0.5.
+template <int D>
+void expect_refs_on_their_sides(const Mesh<D>& mesh) {
+  std::map<int, double> measure;
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    double x = 0;
+    for (Index v : mesh.element(k)) x += mesh.vertex(v)[0] / (D + 1);
+    ASSERT_EQ(mesh.element_ref(k), x < 0.5 ? 1 : 2) << "element " << k << " at x = " << x;
+    SimplexPoints<D> points;
+    for (int i = 0; i <= D; ++i) points[i] = mesh.vertex(mesh.element(k)[i]);
+    measure[mesh.element_ref(k)] += signed_measure<D>(points);
+  }
+  EXPECT_NEAR(measure[1], 0.5, 1e-9);
+  EXPECT_NEAR(measure[2], 0.5, 1e-9);
+}
+
+// A mesh with an interface between element refs adapts to a consistent mesh (a cavity never
+// re-stars an interface facet from one side), every element keeping its side's ref and the
+// interface its measure.
+template <int D>
+void expect_interface_kept(Mesh<D> mesh) {
+  adapt_to_metric<D>(mesh, linear_metric<D>(0.02), nullptr, {});
+  adapt_test::expect_closed_and_consistent(mesh);
+  expect_refs_on_their_sides(mesh);
+  EXPECT_NEAR(boundary_measure_by_ref(mesh).at(9), 1, 1e-9);
+}
+
+TEST(AdaptationLoop, ElementRefsStayOnTheirSidesOfAnInterface) {
+  expect_interface_kept<2>(two_refs_across_an_interface<2>(6));
+  expect_interface_kept<3>(two_refs_across_an_interface<3>(4));
+}
+
 TEST(AdaptationLoop, CoarseningAFineMeshInAUniformMetric) {
   Mesh<3> mesh = adapt_test::unit_mesh<3>(8);
   const AdaptationMetric<3> metric = adapt_test::uniform_metric<3>(0.3);

@@ -128,6 +128,30 @@ TEST(CavityOperator, RefusedPlansLeaveNoTrace) {
   EXPECT_EQ(op2.plan(copy, two, copy.element(0)[0], options), CavityStatus::kMixedRefs);
 }
 
+// A facet inside the domain (an interface between two element refs) has an element on each side: a
+// cavity on one side that re-stars it would leave the other side's face unmatched, so the plan is
+// refused. The same cavity re-starring a facet of the domain's hull is accepted.
+TEST(CavityOperator, AnInterfaceFacetIsNotReStarredFromOneSide) {
+  Mesh<2> mesh;
+  for (const Vec2 x : {Vec2{{0, 0}}, Vec2{{1, 0}}, Vec2{{1, 1}}, Vec2{{0, 1}}, Vec2{{0.5, 0.5}}, Vec2{{0.5, 0}}}) mesh.add_vertex(x);
+  mesh.add_element({0, 1, 2}, 1);
+  mesh.add_element({0, 2, 3}, 2);
+  for (const std::array<Index, 2> hull : {std::array<Index, 2>{0, 1}, {1, 2}, {2, 3}, {3, 0}}) mesh.add_facet(hull, 1);
+  const Index interface = mesh.add_facet({0, 2}, 9);
+  mesh.build_topology();
+  const std::vector<Index> cavity{0};
+  CavityOperator<2> op;
+  CavityOptions options;
+  const std::array<Index, 1> on_interface{interface};
+  options.removed_facets = on_interface;
+  EXPECT_EQ(op.plan(mesh, cavity, 4, options), CavityStatus::kCrossesBoundary);  // vertex 4 on the interface
+  const std::array<Index, 1> on_hull{0};
+  options.removed_facets = on_hull;
+  EXPECT_EQ(op.plan(mesh, cavity, 5, options), CavityStatus::kAccepted);  // vertex 5 on the hull edge (0, 1)
+  op.commit(mesh);
+  EXPECT_EQ(check_consistency(mesh), std::vector<std::string>{});
+}
+
 TEST(CavityOperator, BoundaryEdgesOfAPlanAreFoundByTheirVertices) {
   Mesh<3> mesh = generate_cube(3);
   mesh.make_p2();
