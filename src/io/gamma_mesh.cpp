@@ -221,7 +221,9 @@ MeshFileContent build_mesh(MeshRecords&& records, const std::string& path) {
   const SimplexKeyword* element = present_keyword(records, D, path);
   if (!element) {
     if (D == 3 && present_keyword(records, 2, path))
-      throw Error(path + ": Triangles: surface meshes (triangles without tetrahedra) are not supported");
+      throw Error(path +
+                  ": Triangles: surface meshes (triangles without tetrahedra in Dimension 3) are not supported; a planar mesh "
+                  "must say Dimension 2 (gmsh writes its 2D .mesh files with Dimension 3: save them as .msh, read as 2D when z = 0)");
     throw Error(path + ": no " + gamma::keyword_name(gamma::simplex_keyword(D, 1).code) + " or " +
                 gamma::keyword_name(gamma::simplex_keyword(D, 2).code) + ": hocav reads meshes of a " + std::to_string(D) + "D domain");
   }

@@ -291,7 +291,7 @@ TEST(GammaMesh, RefusesMalformedAsciiFiles) {
                     {"Tetrahedra: ", "Dimension 2"});
   expect_read_error("mixed.mesh", kTetVertices + "Tetrahedra\n1\n1 2 3 4 1\nTriangles\n1\n1 2 3 1\nTrianglesP2\n1\n1 2 3 1 2 3 1\n",
                     {"Triangles and TrianglesP2", "mixing P1 and P2"});
-  expect_read_error("surface.mesh", kTetVertices + "Triangles\n1\n1 2 3 1\n", {"Triangles: ", "surface meshes"});
+  expect_read_error("surface.mesh", kTetVertices + "Triangles\n1\n1 2 3 1\n", {"Triangles: ", "surface meshes", "Dimension 2", ".msh"});
   expect_read_error("nothing.mesh", kTetVertices, {"no Tetrahedra or TetrahedraP2"});
   expect_read_error("p2_boundary.mesh", kTetVertices + "Tetrahedra\n1\n1 2 3 4 1\nEdgesP2\n1\n1 2 3 1\n", {"EdgesP2: ", "P1 mesh"});
   expect_read_error("twice.mesh", kTetVertices + "Vertices\n0\n", {"Vertices: ", "appears twice"});
