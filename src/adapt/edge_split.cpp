@@ -65,8 +65,8 @@ struct SplitPreview {
   typename AdaptationMesh<D>::PointMetric metric;
   std::vector<Index> read;  // the shell and every element the Delaunay growth tested
   std::vector<typename Mesh<D>::Element> read_vertices;
-  // Inside the domain, for a long edge: the cavity's vertex other than the edge's ends nearest the point when closer
-  // than a collapse's bound in the metric (split_edge), or kNoIndex.
+  // Inside the domain, for a long edge: the cavity's vertex other than the edge's ends nearest the
+  // point when closer than a collapse's bound in the metric (split_edge), or kNoIndex.
   Index nearest = kNoIndex;
 
   bool current(const Mesh<D>& mesh) const { return made && elements_unchanged<D>(mesh, read, read_vertices); }
