@@ -100,10 +100,11 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
     for (int face = 0; face <= D; ++face)
       if (Index outer = mesh.neighbor(k, face); outer != kNoIndex) mesh.prefetch_element(outer);
 
-  ref_ = mesh.element_ref(cavity_.front());
-  for (Index k : cavity_)
-    if (mesh.element_ref(k) != ref_) return CavityStatus::kMixedRefs;
   removed_facets_.assign(options.removed_facets.begin(), options.removed_facets.end());
+  // Without a removed facet no interface can be inside: refs are decided before any face is read.
+  if (removed_facets_.empty())
+    for (Index k : cavity_)
+      if (mesh.element_ref(k) != mesh.element_ref(cavity_.front())) return CavityStatus::kMixedRefs;
   std::sort(removed_facets_.begin(), removed_facets_.end());
   removed_lines_.assign(options.removed_lines.begin(), options.removed_lines.end());
   std::sort(removed_lines_.begin(), removed_lines_.end());
@@ -114,6 +115,7 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
   // One new element per boundary face not containing the vertex: (vertex, face) is positive when
   // the vertex sees the face from inside, since faces are oriented outward.
   starred_faces_.clear();
+  new_element_refs_.clear();
   for (std::size_t f = 0; f < boundary_faces_.size(); ++f) {
     const auto& face = boundary_faces_[f].vertices;
     if (boundary_faces_[f].removed || std::find(face.begin(), face.end(), vertex) != face.end()) continue;
@@ -121,10 +123,12 @@ CavityStatus CavityOperator<D>::plan(const Mesh<D>& mesh, std::span<const Index>
     element[0] = vertex;
     for (int i = 0; i < D; ++i) element[i + 1] = face[i];
     new_elements_.push_back(element);
+    new_element_refs_.push_back(mesh.element_ref(boundary_faces_[f].inner_element));
     starred_faces_.push_back(static_cast<Index>(f));
   }
   if (new_elements_.empty() && !exposes_faces_) return CavityStatus::kNotStarShaped;
-  vertex_on_boundary_ = new_elements_.size() + removed_facets_.size() < boundary_faces_.size();
+  const std::size_t removed_boundary_faces = removed_facets_.size() - inner_facets_.size();
+  vertex_on_boundary_ = new_elements_.size() + removed_boundary_faces < boundary_faces_.size();
   if (CavityStatus status = match_ridges(); status != CavityStatus::kAccepted) return status;
   if (exposes_faces_ && !exposed_edges_inside(mesh)) return CavityStatus::kNotStarShaped;
 
@@ -192,18 +196,27 @@ bool CavityOperator<D>::star_folds_over_mesh(const Mesh<D>& mesh) {
 template <int D>
 CavityStatus CavityOperator<D>::collect_boundary(const Mesh<D>& mesh) {
   boundary_faces_.clear();
+  inner_facets_.clear();
   std::size_t removed_found = 0;
+  int ref_changes = 0;  // faces between cavity elements of different refs, each counted from both sides
   boundary_face_bits_.assign(cavity_.size(), 0);
+  const auto is_removed = [&](Index facet) { return std::binary_search(removed_facets_.begin(), removed_facets_.end(), facet); };
   for (std::size_t position = 0; position < cavity_.size(); ++position) {
     const Index k = cavity_[position];
     for (int face = 0; face <= D; ++face) {
       Index outer = mesh.neighbor(k, face);
       Index facet = mesh.element_face_facet(k, face);
       if (outer != kNoIndex && in_cavity(outer)) {
-        if (facet != kNoIndex) return CavityStatus::kCrossesBoundary;
+        // An inner facet is linked from one of its sides only: it is found once.
+        ref_changes += mesh.element_ref(outer) != mesh.element_ref(k);
+        if (facet == kNoIndex) continue;
+        if (!is_removed(facet) || mesh.is_p2()) return CavityStatus::kCrossesBoundary;
+        const int here = mesh.element_ref(k), there = mesh.element_ref(outer);
+        inner_facets_.push_back({facet, {std::min(here, there), std::max(here, there)}});
+        ++removed_found;
         continue;
       }
-      const bool removed = facet != kNoIndex && std::binary_search(removed_facets_.begin(), removed_facets_.end(), facet);
+      const bool removed = facet != kNoIndex && is_removed(facet);
       // A facet with an element past it (an interface inside the domain) would leave that element's
       // face unmatched.
       if (removed && outer != kNoIndex) return CavityStatus::kCrossesBoundary;
@@ -218,7 +231,10 @@ CavityStatus CavityOperator<D>::collect_boundary(const Mesh<D>& mesh) {
       if (!removed) boundary_face_bits_[position] = static_cast<std::uint8_t>(boundary_face_bits_[position] | (1u << face));
     }
   }
-  return removed_found == removed_facets_.size() ? CavityStatus::kAccepted : CavityStatus::kCrossesBoundary;
+  if (removed_found != removed_facets_.size()) return CavityStatus::kCrossesBoundary;
+  // Elements of different refs may meet only on a removed inner facet.
+  const auto interfaces = std::count_if(inner_facets_.begin(), inner_facets_.end(), [](const InnerFacet& f) { return f.refs[0] != f.refs[1]; });
+  return ref_changes == 2 * interfaces ? CavityStatus::kAccepted : CavityStatus::kMixedRefs;
 }
 
 template <int D>
@@ -235,21 +251,24 @@ bool CavityOperator<D>::boundary_is_a_sphere() {
 
 template <int D>
 void CavityOperator<D>::collect_surface_sides(const Mesh<D>& mesh) {
-  // The removed facets' own faces (edges in 3D, vertices in 2D), directed by the outward facets,
+  // The removed facets' own faces (edges in 3D, vertices in 2D), directed by the outward facets
+  // (an inner facet by its own orientation, the same along an interface: Mesh::orient_boundary_facets_outward),
   // cancel in pairs inside each facet ref; those left bound the surface cavity.
   surface_sides_.clear();
-  for (const BoundaryFace& face : boundary_faces_) {
-    if (!face.removed) continue;
-    const int ref = mesh.facet_ref(face.facet);
+  const auto add_sides = [&](const typename Mesh<D>::Facet& vertices, Index facet, bool inner) {
+    const int ref = mesh.facet_ref(facet);
     if constexpr (D == 2) {
-      surface_sides_.push_back({face.vertices[0], kNoIndex, ref, face.facet, false});
-      surface_sides_.push_back({kNoIndex, face.vertices[1], ref, face.facet, false});
+      surface_sides_.push_back({vertices[0], kNoIndex, ref, facet, inner, false});
+      surface_sides_.push_back({kNoIndex, vertices[1], ref, facet, inner, false});
     } else {
-      for (int i = 0; i < 3; ++i) surface_sides_.push_back({face.vertices[i], face.vertices[(i + 1) % 3], ref, face.facet, false});
+      for (int i = 0; i < 3; ++i) surface_sides_.push_back({vertices[i], vertices[(i + 1) % 3], ref, facet, inner, false});
     }
-  }
+  };
+  for (const BoundaryFace& face : boundary_faces_)
+    if (face.removed) add_sides(face.vertices, face.facet, false);
+  for (const InnerFacet& inner : inner_facets_) add_sides(mesh.facet(inner.facet), inner.facet, true);
   const auto cancels = [](const SurfaceSide& x, const SurfaceSide& y) {
-    return x.ref == y.ref &&
+    return x.ref == y.ref && x.inner == y.inner &&
            (D == 2 ? (x.from == y.to && x.from != kNoIndex) || (x.to == y.from && x.to != kNoIndex) : x.from == y.to && x.to == y.from);
   };
   for (std::size_t i = 0; i < surface_sides_.size(); ++i)
@@ -271,10 +290,10 @@ CavityStatus CavityOperator<D>::star_surface(const Mesh<D>& mesh, const CavityOp
     if constexpr (D == 2) {
       const typename Mesh<D>::Facet facet = side.from != kNoIndex ? typename Mesh<D>::Facet{side.from, vertex_}
                                                                   : typename Mesh<D>::Facet{vertex_, side.to};
-      new_facets_.push_back({facet, side.ref, side.facet});
+      new_facets_.push_back({facet, side.ref, side.facet, side.inner});
     } else {
       if (is_removed_line(mesh, side.from, side.to)) continue;
-      new_facets_.push_back({{side.from, side.to, vertex_}, side.ref, side.facet});
+      new_facets_.push_back({{side.from, side.to, vertex_}, side.ref, side.facet, side.inner});
     }
   }
   // Two patches starring their shared side would stack two facets on one face.
@@ -323,12 +342,40 @@ CavityStatus CavityOperator<D>::match_ridges() {
     ridge_faces_.push_back({ridge_key<D>(face.data(), vertex_), kNoIndex, static_cast<int>(f)});
   }
   for (std::size_t f = 0; f < new_facets_.size(); ++f)
-    ridge_faces_.push_back({ridge_key<D>(new_facets_[f].vertices.data(), vertex_), kNoIndex, static_cast<int>(boundary_faces_.size() + f)});
+    if (!new_facets_[f].inner)  // an inner facet lies between two new elements: placed on their link
+      ridge_faces_.push_back({ridge_key<D>(new_facets_[f].vertices.data(), vertex_), kNoIndex, static_cast<int>(boundary_faces_.size() + f)});
   links_.clear();
   if (!pair_ridge_faces()) return CavityStatus::kNotStarShaped;
   // New facets are appended in the links' order: by key, so that it does not depend on the table.
   if (!new_facets_.empty()) std::sort(links_.begin(), links_.end(), [](const Link& x, const Link& y) { return x.key < y.key; });
+  if (!inner_facets_.empty() && !place_inner_facets()) return CavityStatus::kMixedRefs;
   return CavityStatus::kAccepted;
+}
+
+template <int D>
+const typename CavityOperator<D>::InnerFacet& CavityOperator<D>::replaced_inner_facet(const NewFacet& facet) const {
+  return *std::find_if(inner_facets_.begin(), inner_facets_.end(), [&](const InnerFacet& f) { return f.facet == facet.replaced; });
+}
+
+template <int D>
+bool CavityOperator<D>::place_inner_facets() {
+  const auto refs_of = [&](const Link& link) {
+    const int one = new_element_refs_[static_cast<std::size_t>(link.new_element)];
+    const int other = new_element_refs_[static_cast<std::size_t>(link.other_new_element)];
+    return std::array<int, 2>{std::min(one, other), std::max(one, other)};
+  };
+  for (std::size_t f = 0; f < new_facets_.size(); ++f) {
+    if (!new_facets_[f].inner) continue;
+    const std::uint64_t key = ridge_key<D>(new_facets_[f].vertices.data(), vertex_);
+    const auto link = std::lower_bound(links_.begin(), links_.end(), key, [](const Link& l, std::uint64_t k) { return l.key < k; });
+    if (link == links_.end() || link->key != key || link->new_element == kNoIndex || link->other_new_element == kNoIndex) return false;
+    if (refs_of(*link) != replaced_inner_facet(new_facets_[f]).refs) return false;  // the interface moved into a side
+    link->inner_facet = static_cast<int>(f);
+  }
+  return std::none_of(links_.begin(), links_.end(), [&](const Link& link) {
+    if (link.new_element == kNoIndex || link.other_new_element == kNoIndex || link.inner_facet >= 0) return false;
+    return refs_of(link)[0] != refs_of(link)[1];  // two sides meeting without a facet
+  });
 }
 
 template <int D>
@@ -355,13 +402,13 @@ bool CavityOperator<D>::pair_ridge_faces() {
     if (first.new_element == kNoIndex) {
       if (first.face > second.face) std::swap(first, second);  // the kept face, then the new facet
       if (!exposable(first, second)) return false;             // two kept faces: a hole
-      links_.push_back({first.key, kNoIndex, second.face, kNoIndex, -1, first.face});
+      links_.push_back({first.key, kNoIndex, second.face, kNoIndex, -1, first.face, -1});
       continue;
     }
     if (second.new_element == kNoIndex)
-      links_.push_back({first.key, first.new_element, first.face, kNoIndex, -1, second.face});
+      links_.push_back({first.key, first.new_element, first.face, kNoIndex, -1, second.face, -1});
     else
-      links_.push_back({first.key, first.new_element, first.face, second.new_element, second.face, -1});
+      links_.push_back({first.key, first.new_element, first.face, second.new_element, second.face, -1, -1});
   }
   return 2 * links_.size() == ridge_faces_.size();  // else a face is unpaired: a hole
 }
@@ -534,9 +581,9 @@ void CavityOperator<D>::commit(Mesh<D>& mesh, std::span<const Point> inner_edge_
   for (std::size_t n = 0; n < new_elements_.size(); ++n) {
     if (n < cavity_.size()) {
       new_element_ids_[n] = cavity_[n];
-      mesh.set_element(cavity_[n], new_elements_[n], ref_);
+      mesh.set_element(cavity_[n], new_elements_[n], new_element_refs_[n]);
     } else {
-      new_element_ids_[n] = mesh.append_element(new_elements_[n], ref_);
+      new_element_ids_[n] = mesh.append_element(new_elements_[n], new_element_refs_[n]);
     }
   }
   const std::vector<Index>& slot = new_element_ids_;
@@ -557,6 +604,11 @@ void CavityOperator<D>::commit(Mesh<D>& mesh, std::span<const Point> inner_edge_
     if (link.other_new_element != kNoIndex) {
       mesh.set_neighbor(k, link.face, slot[link.other_new_element]);
       mesh.set_neighbor(slot[link.other_new_element], link.other_face, k);
+      if (link.inner_facet >= 0) {  // linked from the side of the smaller ref, as orient_boundary_facets_outward orients it
+        const NewFacet& facet = new_facets_[static_cast<std::size_t>(link.inner_facet)];
+        const bool first = new_element_refs_[link.new_element] <= new_element_refs_[link.other_new_element];
+        mesh.add_attached_facet(facet.vertices, facet.ref, first ? k : slot[link.other_new_element], first ? link.face : link.other_face);
+      }
       continue;
     }
     if (static_cast<std::size_t>(link.kept_face) >= boundary_faces_.size()) {

@@ -27,7 +27,10 @@ struct CavityOptions {
   // replaces. They are re-starred from the vertex within each facet ref (the surface cavity), and in
   // 3D the feature lines among their edges that the operation replaces are re-starred from it too
   // (a split or collapse along a ridge). The caller names them: which boundary pieces an operation
-  // changes is its geometry's decision, not the topology's.
+  // changes is its geometry's decision, not the topology's. A facet inside the domain (an interface
+  // between element refs, or a baffle) may be removed when the cavity holds the elements on both of
+  // its sides: its surface cavity is re-starred the same way, each new facet between the two new
+  // elements that share it, and each new element keeps the ref of its side (P1 meshes only).
   std::span<const Index> removed_facets{};
   std::span<const Index> removed_lines{};
   // Boundary operations that give up part of the domain (a cap's removal): a face through the
@@ -41,7 +44,7 @@ enum class CavityStatus {
   kAccepted,
   kNotStarShaped,        // the star of the boundary from the vertex is not a closed, manifold set
   kCrossesBoundary,      // a boundary facet lies inside the cavity, or a removed facet is not on its boundary or has an element past it
-  kMixedRefs,            // the cavity's elements carry different refs
+  kMixedRefs,            // the cavity's elements carry different refs across a face that no removed facet holds
   kRemovesVertex,        // a vertex other than the removable one would disappear
   kNonPositiveMeasure,   // P1 mode: a new element is flat or inverted
   kRejectedByCurving,    // the P2 operator found no valid curved configuration
@@ -63,7 +66,8 @@ class CavityOperator {
   // ---- the plan (valid until the next plan or commit) ----
   Index vertex() const { return vertex_; }
   std::span<const Element> new_elements() const { return new_elements_; }
-  int new_elements_ref() const { return ref_; }
+  // Per new element, its ref: that of the cavity element whose boundary face it is starred from.
+  std::span<const int> new_element_refs() const { return new_element_refs_; }
   // Inner edges (vertex, boundary vertex) the star creates, and for each the node it had when it
   // existed before (reinsertion) or the straight midpoint: the start of its curving.
   std::span<const std::array<Index, 2>> new_inner_edges() const { return new_inner_edges_; }
@@ -83,6 +87,7 @@ class CavityOperator {
     typename Mesh<D>::Facet vertices;
     int ref;
     Index replaced;  // the removed facet whose side it stars from the vertex
+    bool inner;      // inside the domain: a face of two new elements
   };
   struct NewLine {
     typename Mesh<D>::Line vertices;
@@ -121,6 +126,12 @@ class CavityOperator {
     Index other_new_element;  // kNoIndex: linked to the kept boundary face `kept_face`, or to new
     int other_face;           // facet kept_face − boundary_faces_.size() when it is past them
     int kept_face;
+    int inner_facet;  // between two new elements: the new inner facet on the face (index in new_facets_), or −1
+  };
+  // A removed facet between two cavity elements, and the refs of its two sides (smaller first).
+  struct InnerFacet {
+    Index facet;
+    std::array<int, 2> refs;
   };
 
   // An edge of the cavity by key, with its id.
@@ -141,6 +152,7 @@ class CavityOperator {
     Index from, to;  // 3D: a directed edge of a removed facet; 2D: its vertex as `from` (tail) or `to` (head)
     int ref;
     Index facet;
+    bool inner;      // of an inner facet: cancels only with those
     bool cancelled;  // met twice in its ref: inside the surface cavity
   };
   void collect_surface_sides(const Mesh<D>& mesh);
@@ -149,6 +161,11 @@ class CavityOperator {
   bool is_removed_line(const Mesh<D>& mesh, Index a, Index b) const;
   CavityStatus match_ridges();
   bool pair_ridge_faces();  // fills links_; false when a ridge has not exactly two faces
+  // Each new inner facet on the link between the two new elements that share it, their refs those of
+  // the facet it replaces; and every other link between new elements of different refs refused.
+  bool place_inner_facets();
+  // The inner facet a new facet replaces.
+  const InnerFacet& replaced_inner_facet(const NewFacet& facet) const;
   // Whether two faces without a new element may pair: a kept face that may be exposed and a new facet.
   bool exposable(const RidgeFace& kept, const RidgeFace& facet) const;
   // Whether every edge of the exposed faces that no removed facet holds (a cap's inner edge) is
@@ -171,7 +188,8 @@ class CavityOperator {
 
   std::vector<Index> cavity_;
   Index vertex_ = kNoIndex;
-  int ref_ = 0;
+  std::vector<int> new_element_refs_;
+  std::vector<InnerFacet> inner_facets_;
   std::vector<BoundaryFace> boundary_faces_;
   std::vector<std::uint8_t> boundary_face_bits_;  // per cavity element: bit f set when its face f is a boundary face
   bool vertex_on_boundary_ = false;               // the vertex is on a boundary face (not inside the cavity)

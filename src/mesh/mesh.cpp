@@ -312,9 +312,17 @@ template <int D>
 void Mesh<D>::orient_boundary_facets_outward() {
   for (Index f = 0; f < facet_count(); ++f) {
     if (facet_removed(f)) continue;
-    const Index k = facet_element_face_[f] / (D + 1);
-    const int face = static_cast<int>(facet_element_face_[f] % (D + 1));
-    if (neighbor(k, face) != kNoIndex) continue;
+    Index k = facet_element_face_[f] / (D + 1);
+    int face = static_cast<int>(facet_element_face_[f] % (D + 1));
+    // An interface: as a face of the side with the smaller ref, so that its facets agree (the cavity
+    // operator's surface cavity needs them to). A baffle (one ref) keeps the file's orientation.
+    if (const Index across = neighbor(k, face); across != kNoIndex) {
+      if (element_refs_[k] == element_refs_[across]) continue;
+      if (element_refs_[across] < element_refs_[k]) {
+        face = static_cast<int>(std::find(adjacency_[across].begin(), adjacency_[across].end(), k) - adjacency_[across].begin());
+        k = across;
+      }
+    }
     Facet outward;
     for (int i = 0; i < D; ++i) outward[i] = elements_[k][hocav::face_vertices<D>(face)[i]];
     Facet& facet = facets_[f];

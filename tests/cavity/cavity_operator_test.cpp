@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "cases/structured.hpp"
@@ -150,6 +151,113 @@ TEST(CavityOperator, AnInterfaceFacetIsNotReStarredFromOneSide) {
   EXPECT_EQ(op.plan(mesh, cavity, 5, options), CavityStatus::kAccepted);  // vertex 5 on the hull edge (0, 1)
   op.commit(mesh);
   EXPECT_EQ(check_consistency(mesh), std::vector<std::string>{});
+}
+
+// The same interface re-starred from a vertex on it, with the cavity on both of its sides: each new
+// element keeps its side's ref, and the interface is split into two facets of its ref.
+TEST(CavityOperator, AnInterfaceFacetIsReStarredWithBothOfItsSides) {
+  Mesh<2> mesh;
+  for (const Vec2 x : {Vec2{{0, 0}}, Vec2{{1, 0}}, Vec2{{1, 1}}, Vec2{{0, 1}}, Vec2{{0.5, 0.5}}}) mesh.add_vertex(x);
+  mesh.add_element({0, 1, 2}, 1);
+  mesh.add_element({0, 2, 3}, 2);
+  for (const std::array<Index, 2> hull : {std::array<Index, 2>{0, 1}, {1, 2}, {2, 3}, {3, 0}}) mesh.add_facet(hull, 1);
+  const Index interface = mesh.add_facet({0, 2}, 9);
+  mesh.build_topology();
+  mesh.orient_boundary_facets_outward();
+  const Vec2 direction = mesh.vertex(mesh.facet(interface)[1]) - mesh.vertex(mesh.facet(interface)[0]);
+  const std::vector<Index> both{0, 1};
+  CavityOperator<2> op;
+  CavityOptions options;
+  EXPECT_EQ(op.plan(mesh, both, 4, options), CavityStatus::kMixedRefs);  // the interface kept inside: refused
+  const std::array<Index, 1> on_interface{interface};
+  options.removed_facets = on_interface;
+  ASSERT_EQ(op.plan(mesh, both, 4, options), CavityStatus::kAccepted);
+  op.commit(mesh);
+  ConsistencyOptions checks;
+  checks.require_boundary_facets = true;
+  EXPECT_EQ(check_consistency(mesh, checks), std::vector<std::string>{});
+  ASSERT_EQ(mesh.element_count(), 4);
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    Vec2 centroid{};
+    for (Index v : mesh.element(k)) centroid = centroid + (1.0 / 3) * mesh.vertex(v);
+    EXPECT_EQ(mesh.element_ref(k), centroid[0] > centroid[1] ? 1 : 2) << "element " << k;
+  }
+  std::vector<std::array<Index, 2>> interface_facets;
+  for (Index f = 0; f < mesh.facet_count(); ++f) {
+    if (mesh.facet_removed(f) || mesh.facet_ref(f) != 9) continue;
+    const auto& facet = mesh.facet(f);
+    EXPECT_GT(dot(mesh.vertex(facet[1]) - mesh.vertex(facet[0]), direction), 0) << "facet " << f << " turned around";
+    interface_facets.push_back({std::min(facet[0], facet[1]), std::max(facet[0], facet[1])});
+  }
+  std::sort(interface_facets.begin(), interface_facets.end());
+  EXPECT_EQ(interface_facets, (std::vector<std::array<Index, 2>>{{0, 4}, {2, 4}}));
+}
+
+// A 3D interface edge split with both sides: the shell of an edge on the plane x = 1/2 between two
+// element refs, starred from its middle, the facets through it re-starred.
+TEST(CavityOperator, AnInterfaceEdgeIsSplitWithBothOfItsSides3D) {
+  Mesh<3> mesh = generate_cube(2);
+  const auto centroid_x = [&](Index k) {
+    double x = 0;
+    for (Index v : mesh.element(k)) x += mesh.vertex(v)[0] / 4;
+    return x;
+  };
+  for (Index k = 0; k < mesh.element_count(); ++k) mesh.set_element(k, mesh.element(k), centroid_x(k) < 0.5 ? 1 : 2);
+  mesh.build_topology();
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (int face = 0; face < 4; ++face)
+      if (const Index across = mesh.neighbor(k, face); across != kNoIndex && k < across && mesh.element_ref(k) != mesh.element_ref(across)) {
+        std::array<Index, 3> facet;
+        for (int i = 0; i < 3; ++i) facet[i] = mesh.element(k)[face_vertices<3>(face)[i]];
+        mesh.add_facet(facet, 9);
+      }
+  mesh.build_topology();
+  mesh.orient_boundary_facets_outward();
+  const auto interface_facets = std::count(mesh.facet_refs().begin(), mesh.facet_refs().end(), 9);
+  ASSERT_EQ(interface_facets, 8);  // the plane's four squares, two triangles each
+  // An edge of the interface inside it: both ends at x = 1/2, neither on the hull.
+  Index a = kNoIndex, b = kNoIndex;
+  for (Index f = 0; f < mesh.facet_count() && a == kNoIndex; ++f) {
+    if (mesh.facet_ref(f) != 9) continue;
+    for (Index v : mesh.facet(f))
+      if (std::abs(mesh.vertex(v)[1] - 0.5) < 1e-12 && std::abs(mesh.vertex(v)[2] - 0.5) < 1e-12) a = v;  // the cube's centre
+    for (Index v : mesh.facet(f))
+      if (a != kNoIndex && v != a && b == kNoIndex) b = v;
+  }
+  ASSERT_NE(a, kNoIndex);
+  std::vector<Index> shell, facets;
+  collect_shell(mesh, a, b, shell);
+  const Index ends[2] = {a, b};
+  for (Index k : shell)
+    for (int face = 0; face < 4; ++face)
+      if (const Index f = mesh.element_face_facet(k, face); f != kNoIndex && std::count(facets.begin(), facets.end(), f) == 0) {
+        const auto& vertices = mesh.facet(f);
+        if (std::count(vertices.begin(), vertices.end(), ends[0]) && std::count(vertices.begin(), vertices.end(), ends[1])) facets.push_back(f);
+      }
+  ASSERT_EQ(facets.size(), 2u);
+  const Index middle = mesh.add_vertex(0.5 * (mesh.vertex(a) + mesh.vertex(b)));
+  CavityOperator<3> op;
+  CavityOptions options;
+  options.removed_facets = facets;
+  ASSERT_EQ(op.plan(mesh, shell, middle, options), CavityStatus::kAccepted);
+  op.commit(mesh);
+  ConsistencyOptions checks;
+  checks.require_boundary_facets = true;
+  EXPECT_EQ(check_consistency(mesh, checks), std::vector<std::string>{});
+  EXPECT_NEAR(total_measure(mesh), 1, 1e-12);
+  double area = 0;
+  Index count = 0;
+  for (Index f = 0; f < mesh.facet_count(); ++f) {
+    if (mesh.facet_removed(f) || mesh.facet_ref(f) != 9) continue;
+    const auto& t = mesh.facet(f);
+    for (Index v : t) EXPECT_NEAR(mesh.vertex(v)[0], 0.5, 1e-12);
+    // Oriented as the old ones: its normal along +x, from side 1 (x < 1/2) to side 2.
+    area += 0.5 * cross(mesh.vertex(t[1]) - mesh.vertex(t[0]), mesh.vertex(t[2]) - mesh.vertex(t[0]))[0];
+    ++count;
+  }
+  EXPECT_EQ(count, interface_facets + 2);
+  EXPECT_NEAR(area, 1, 1e-12);
+  for (Index k = 0; k < mesh.element_count(); ++k) EXPECT_EQ(mesh.element_ref(k), centroid_x(k) < 0.5 ? 1 : 2) << "element " << k;
 }
 
 TEST(CavityOperator, BoundaryEdgesOfAPlanAreFoundByTheirVertices) {
