@@ -233,7 +233,8 @@ CavityStatus CavityOperator<D>::collect_boundary(const Mesh<D>& mesh) {
   }
   if (removed_found != removed_facets_.size()) return CavityStatus::kCrossesBoundary;
   // Elements of different refs may meet only on a removed inner facet.
-  const auto interfaces = std::count_if(inner_facets_.begin(), inner_facets_.end(), [](const InnerFacet& f) { return f.refs[0] != f.refs[1]; });
+  const auto interfaces = std::count_if(inner_facets_.begin(), inner_facets_.end(),
+                                        [](const InnerFacet& f) { return f.refs[0] != f.refs[1]; });
   return ref_changes == 2 * interfaces ? CavityStatus::kAccepted : CavityStatus::kMixedRefs;
 }
 
@@ -343,7 +344,8 @@ CavityStatus CavityOperator<D>::match_ridges() {
   }
   for (std::size_t f = 0; f < new_facets_.size(); ++f)
     if (!new_facets_[f].inner)  // an inner facet lies between two new elements: placed on their link
-      ridge_faces_.push_back({ridge_key<D>(new_facets_[f].vertices.data(), vertex_), kNoIndex, static_cast<int>(boundary_faces_.size() + f)});
+      ridge_faces_.push_back(
+          {ridge_key<D>(new_facets_[f].vertices.data(), vertex_), kNoIndex, static_cast<int>(boundary_faces_.size() + f)});
   links_.clear();
   if (!pair_ridge_faces()) return CavityStatus::kNotStarShaped;
   // New facets are appended in the links' order: by key, so that it does not depend on the table.

@@ -206,7 +206,8 @@ TEST(CavityOperator, AnInterfaceEdgeIsSplitWithBothOfItsSides3D) {
   mesh.build_topology();
   for (Index k = 0; k < mesh.element_count(); ++k)
     for (int face = 0; face < 4; ++face)
-      if (const Index across = mesh.neighbor(k, face); across != kNoIndex && k < across && mesh.element_ref(k) != mesh.element_ref(across)) {
+      if (const Index across = mesh.neighbor(k, face);
+          across != kNoIndex && k < across && mesh.element_ref(k) != mesh.element_ref(across)) {
         std::array<Index, 3> facet;
         for (int i = 0; i < 3; ++i) facet[i] = mesh.element(k)[face_vertices<3>(face)[i]];
         mesh.add_facet(facet, 9);
@@ -232,7 +233,8 @@ TEST(CavityOperator, AnInterfaceEdgeIsSplitWithBothOfItsSides3D) {
     for (int face = 0; face < 4; ++face)
       if (const Index f = mesh.element_face_facet(k, face); f != kNoIndex && std::count(facets.begin(), facets.end(), f) == 0) {
         const auto& vertices = mesh.facet(f);
-        if (std::count(vertices.begin(), vertices.end(), ends[0]) && std::count(vertices.begin(), vertices.end(), ends[1])) facets.push_back(f);
+        if (std::count(vertices.begin(), vertices.end(), ends[0]) && std::count(vertices.begin(), vertices.end(), ends[1]))
+          facets.push_back(f);
       }
   ASSERT_EQ(facets.size(), 2u);
   const Index middle = mesh.add_vertex(0.5 * (mesh.vertex(a) + mesh.vertex(b)));
