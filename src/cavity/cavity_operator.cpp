@@ -198,7 +198,10 @@ CavityStatus CavityOperator<D>::collect_boundary(const Mesh<D>& mesh) {
   boundary_faces_.clear();
   inner_facets_.clear();
   std::size_t removed_found = 0;
-  int ref_changes = 0;  // faces between cavity elements of different refs, each counted from both sides
+  // Faces between cavity elements of different refs, each counted from both sides; plan() has
+  // refused them already when no facet is removed.
+  int ref_changes = 0;
+  const bool refs_may_change = !removed_facets_.empty();
   boundary_face_bits_.assign(cavity_.size(), 0);
   const auto is_removed = [&](Index facet) { return std::binary_search(removed_facets_.begin(), removed_facets_.end(), facet); };
   for (std::size_t position = 0; position < cavity_.size(); ++position) {
@@ -208,7 +211,7 @@ CavityStatus CavityOperator<D>::collect_boundary(const Mesh<D>& mesh) {
       Index facet = mesh.element_face_facet(k, face);
       if (outer != kNoIndex && in_cavity(outer)) {
         // An inner facet is linked from one of its sides only: it is found once.
-        ref_changes += mesh.element_ref(outer) != mesh.element_ref(k);
+        ref_changes += refs_may_change && mesh.element_ref(outer) != mesh.element_ref(k);
         if (facet == kNoIndex) continue;
         if (!is_removed(facet) || mesh.is_p2()) return CavityStatus::kCrossesBoundary;
         const int here = mesh.element_ref(k), there = mesh.element_ref(outer);
@@ -376,7 +379,8 @@ bool CavityOperator<D>::place_inner_facets() {
   }
   return std::none_of(links_.begin(), links_.end(), [&](const Link& link) {
     if (link.new_element == kNoIndex || link.other_new_element == kNoIndex || link.inner_facet >= 0) return false;
-    return refs_of(link)[0] != refs_of(link)[1];  // two sides meeting without a facet
+    const std::array<int, 2> refs = refs_of(link);
+    return refs[0] != refs[1];  // two sides meeting without a facet
   });
 }
 
@@ -606,10 +610,9 @@ void CavityOperator<D>::commit(Mesh<D>& mesh, std::span<const Point> inner_edge_
     if (link.other_new_element != kNoIndex) {
       mesh.set_neighbor(k, link.face, slot[link.other_new_element]);
       mesh.set_neighbor(slot[link.other_new_element], link.other_face, k);
-      if (link.inner_facet >= 0) {  // linked from the side of the smaller ref, as orient_boundary_facets_outward orients it
+      if (link.inner_facet >= 0) {  // linked from one side, either: a cavity finds it from the side that links it
         const NewFacet& facet = new_facets_[static_cast<std::size_t>(link.inner_facet)];
-        const bool first = new_element_refs_[link.new_element] <= new_element_refs_[link.other_new_element];
-        mesh.add_attached_facet(facet.vertices, facet.ref, first ? k : slot[link.other_new_element], first ? link.face : link.other_face);
+        mesh.add_attached_facet(facet.vertices, facet.ref, k, link.face);
       }
       continue;
     }

@@ -10,6 +10,7 @@
 #include <map>
 #include <numbers>
 
+#include "../mesh/two_refs_mesh.hpp"
 #include "adapt/adaptation_mesh.hpp"
 #include "adapt_test_support.hpp"
 #include "mesh/measure.hpp"
@@ -260,31 +261,8 @@ TEST(AdaptationLoop, RequiredEdgesAndTrianglesAreKept) {
   expect_required_kept<3>(adapt_test::unit_mesh<3>(3));
 }
 
-// The first coordinate of element k's centroid.
-template <int D>
-double centroid_x(const Mesh<D>& mesh, Index k) {
-  double x = 0;
-  for (Index v : mesh.element(k)) x += mesh.vertex(v)[0] / (D + 1);
-  return x;
-}
-
-// The unit square or cube in two element refs, 1 for x < 0.5 and 2 past it, with the faces between
-// them as facets of ref 9: an interface inside the domain.
-template <int D>
-Mesh<D> two_refs_across_an_interface(int cells_per_side) {
-  Mesh<D> mesh = adapt_test::unit_mesh<D>(cells_per_side);
-  for (Index k = 0; k < mesh.element_count(); ++k) {
-    mesh.set_element(k, mesh.element(k), centroid_x(mesh, k) < 0.5 ? 1 : 2);
-    if (centroid_x(mesh, k) > 0.5) continue;
-    for (int face = 0; face <= D; ++face) {
-      typename Mesh<D>::Facet facet;
-      for (int i = 0; i < D; ++i) facet[i] = mesh.element(k)[face_vertices<D>(face)[i]];
-      if (std::all_of(facet.begin(), facet.end(), [&](Index v) { return mesh.vertex(v)[0] == 0.5; })) mesh.add_facet(facet, 9);
-    }
-  }
-  mesh.build_topology();
-  return mesh;
-}
+using mesh_test::centroid_x;
+using mesh_test::two_refs_across_an_interface;
 
 // Per element ref, the measure of its elements, and whether each lies on its side of x = 0.5.
 template <int D>

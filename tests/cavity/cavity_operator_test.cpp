@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <random>
 
+#include "../mesh/two_refs_mesh.hpp"
+#include "adapt/boundary_pieces.hpp"
 #include "cases/structured.hpp"
 #include "cavity/cavity_operations.hpp"
 #include "mesh/ball_and_shell.hpp"
@@ -196,32 +198,25 @@ TEST(CavityOperator, AnInterfaceFacetIsReStarredWithBothOfItsSides) {
 // A 3D interface edge split with both sides: the shell of an edge on the plane x = 1/2 between two
 // element refs, starred from its middle, the facets through it re-starred.
 TEST(CavityOperator, AnInterfaceEdgeIsSplitWithBothOfItsSides3D) {
-  Mesh<3> mesh = generate_cube(2);
-  const auto centroid_x = [&](Index k) {
-    double x = 0;
-    for (Index v : mesh.element(k)) x += mesh.vertex(v)[0] / 4;
-    return x;
-  };
-  for (Index k = 0; k < mesh.element_count(); ++k) mesh.set_element(k, mesh.element(k), centroid_x(k) < 0.5 ? 1 : 2);
-  mesh.build_topology();
-  for (Index k = 0; k < mesh.element_count(); ++k)
-    for (int face = 0; face < 4; ++face)
-      if (const Index across = mesh.neighbor(k, face);
-          across != kNoIndex && k < across && mesh.element_ref(k) != mesh.element_ref(across)) {
-        std::array<Index, 3> facet;
-        for (int i = 0; i < 3; ++i) facet[i] = mesh.element(k)[face_vertices<3>(face)[i]];
-        mesh.add_facet(facet, 9);
-      }
+  // The interface's facets turned around (normal −x): orient_boundary_facets_outward must orient
+  // them back as faces of side 1 (normal +x), as the new ones are checked below.
+  const Mesh<3> cube = mesh_test::two_refs_across_an_interface<3>(2);
+  Mesh<3> mesh;
+  for (Index v = 0; v < cube.vertex_count(); ++v) mesh.add_vertex(cube.vertex(v));
+  for (Index k = 0; k < cube.element_count(); ++k) mesh.add_element(cube.element(k), cube.element_ref(k));
+  for (Index f = 0; f < cube.facet_count(); ++f)
+    mesh.add_facet(cube.facet_ref(f) == 9 ? std::array<Index, 3>{cube.facet(f)[1], cube.facet(f)[0], cube.facet(f)[2]} : cube.facet(f),
+                   cube.facet_ref(f));
   mesh.build_topology();
   mesh.orient_boundary_facets_outward();
   const auto interface_facets = std::count(mesh.facet_refs().begin(), mesh.facet_refs().end(), 9);
   ASSERT_EQ(interface_facets, 8);  // the plane's four squares, two triangles each
-  // An edge of the interface inside it: both ends at x = 1/2, neither on the hull.
+  // An edge of the interface from the cube's centre.
   Index a = kNoIndex, b = kNoIndex;
   for (Index f = 0; f < mesh.facet_count() && a == kNoIndex; ++f) {
     if (mesh.facet_ref(f) != 9) continue;
     for (Index v : mesh.facet(f))
-      if (std::abs(mesh.vertex(v)[1] - 0.5) < 1e-12 && std::abs(mesh.vertex(v)[2] - 0.5) < 1e-12) a = v;  // the cube's centre
+      if (std::abs(mesh.vertex(v)[1] - 0.5) < 1e-12 && std::abs(mesh.vertex(v)[2] - 0.5) < 1e-12) a = v;
     for (Index v : mesh.facet(f))
       if (a != kNoIndex && v != a && b == kNoIndex) b = v;
   }
@@ -229,13 +224,7 @@ TEST(CavityOperator, AnInterfaceEdgeIsSplitWithBothOfItsSides3D) {
   std::vector<Index> shell, facets;
   collect_shell(mesh, a, b, shell);
   const Index ends[2] = {a, b};
-  for (Index k : shell)
-    for (int face = 0; face < 4; ++face)
-      if (const Index f = mesh.element_face_facet(k, face); f != kNoIndex && std::count(facets.begin(), facets.end(), f) == 0) {
-        const auto& vertices = mesh.facet(f);
-        if (std::count(vertices.begin(), vertices.end(), ends[0]) && std::count(vertices.begin(), vertices.end(), ends[1]))
-          facets.push_back(f);
-      }
+  facets_through<3>(mesh, shell, ends, facets);
   ASSERT_EQ(facets.size(), 2u);
   const Index middle = mesh.add_vertex(0.5 * (mesh.vertex(a) + mesh.vertex(b)));
   CavityOperator<3> op;
@@ -259,7 +248,8 @@ TEST(CavityOperator, AnInterfaceEdgeIsSplitWithBothOfItsSides3D) {
   }
   EXPECT_EQ(count, interface_facets + 2);
   EXPECT_NEAR(area, 1, 1e-12);
-  for (Index k = 0; k < mesh.element_count(); ++k) EXPECT_EQ(mesh.element_ref(k), centroid_x(k) < 0.5 ? 1 : 2) << "element " << k;
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    EXPECT_EQ(mesh.element_ref(k), mesh_test::centroid_x(mesh, k) < 0.5 ? 1 : 2) << "element " << k;
 }
 
 TEST(CavityOperator, BoundaryEdgesOfAPlanAreFoundByTheirVertices) {

@@ -1,0 +1,42 @@
+// A mesh with an interface inside the domain, for the tests of the operators that must adapt it.
+#pragma once
+
+#include <algorithm>
+
+#include "cases/structured.hpp"
+#include "mesh/mesh.hpp"
+
+namespace hocav::mesh_test {
+
+// The first coordinate of element k's centroid.
+template <int D>
+double centroid_x(const Mesh<D>& mesh, Index k) {
+  double x = 0;
+  for (Index v : mesh.element(k)) x += mesh.vertex(v)[0] / (D + 1);
+  return x;
+}
+
+// The structured unit square or cube (generate_square, generate_cube) in two element refs, 1 for
+// x < 0.5 and 2 past it, with the faces between them as facets of ref 9: an interface inside the
+// domain. With topology.
+template <int D>
+Mesh<D> two_refs_across_an_interface(int cells_per_side) {
+  Mesh<D> mesh;
+  if constexpr (D == 2)
+    mesh = generate_square(cells_per_side);
+  else
+    mesh = generate_cube(cells_per_side);
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    mesh.set_element(k, mesh.element(k), centroid_x(mesh, k) < 0.5 ? 1 : 2);
+    if (centroid_x(mesh, k) > 0.5) continue;
+    for (int face = 0; face <= D; ++face) {
+      typename Mesh<D>::Facet facet;
+      for (int i = 0; i < D; ++i) facet[i] = mesh.element(k)[face_vertices<D>(face)[i]];
+      if (std::all_of(facet.begin(), facet.end(), [&](Index v) { return mesh.vertex(v)[0] == 0.5; })) mesh.add_facet(facet, 9);
+    }
+  }
+  mesh.build_topology();
+  return mesh;
+}
+
+}  // namespace hocav::mesh_test
