@@ -135,7 +135,7 @@ void grow_delaunay_cavity(const Mesh<D>& mesh, std::vector<Index>& cavity, std::
     for (int face = 0; face <= D; ++face) {
       Index n = mesh.neighbor(cavity[next], face);
       if (n == kNoIndex || in_cavity.holds(n) || tested.holds(n)) continue;
-      if (mesh.element_face_facet(cavity[next], face) != kNoIndex) continue;  // stay on one side of surfaces
+      if (mesh.face_has_facet(cavity[next], face)) continue;  // stay on one side of surfaces
       if (in_circumsphere(mesh, n, x, metric))
         in_cavity.push_back(n);
       else

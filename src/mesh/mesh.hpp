@@ -164,6 +164,16 @@ class Mesh {
     if (static_cast<std::size_t>(k) >= faces_with_facet_.size() || !((faces_with_facet_[k] >> face) & 1)) return kNoIndex;
     return element_face_facets_.find(face_key(k, face));
   }
+  // Whether a facet lies on face `face` of element k, linked from k or from the element across
+  // (a facet inside the domain is linked from one of its sides only).
+  bool face_has_facet(Index k, int face) const {
+    if (element_face_facet(k, face) != kNoIndex) return true;
+    const Index across = neighbor(k, face);
+    if (across == kNoIndex || static_cast<std::size_t>(across) >= faces_with_facet_.size() || faces_with_facet_[across] == 0) return false;
+    for (int back = 0; back <= D; ++back)
+      if (adjacency_[across][back] == k) return element_face_facet(across, back) != kNoIndex;
+    return false;
+  }
 
   // Asks the memory for element k's records (vertices, ref, neighbours, facet bits, edge ids)
   // before they are read: a cavity's first touch of its elements is mostly cache misses, and

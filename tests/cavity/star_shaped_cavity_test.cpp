@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <random>
 
+#include "../mesh/two_refs_mesh.hpp"
 #include "base/small_set.hpp"
 #include "cases/structured.hpp"
 #include "cavity/cavity_operations.hpp"
@@ -100,6 +101,30 @@ TEST(StarShapedCavity, DelaunayCavitiesOfEdgeMiddlesBecomeStarShapedAndAccepted)
   EXPECT_GT(corrected, tried / 10) << tried << " cavities";
   EXPECT_LT(accepted_raw, tried - tried / 10);
   EXPECT_GE(accepted, tried - tried / 50) << "raw: " << accepted_raw << " of " << tried;
+}
+
+// The growth stops at a facet inside the domain from either of its sides, though the facet is
+// linked from one side only: from every element on the interface, the middle of its interface face
+// (inside both elements' circumspheres) grows no element across.
+TEST(StarShapedCavity, TheGrowthStopsAtAnInterfaceFromBothSides) {
+  const Mesh<3> mesh = mesh_test::two_refs_across_an_interface<3>(4);
+  std::vector<Index> cavity, read;
+  int linked_sides = 0, unlinked_sides = 0;
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (int face = 0; face < 4; ++face) {
+      const Index across = mesh.neighbor(k, face);
+      if (across == kNoIndex || mesh.element_ref(across) == mesh.element_ref(k)) continue;
+      ASSERT_TRUE(mesh.face_has_facet(k, face)) << "element " << k << " face " << face;
+      (mesh.element_face_facet(k, face) != kNoIndex ? linked_sides : unlinked_sides) += 1;
+      Vec<3> x{};
+      for (int i = 0; i < 3; ++i) x += mesh.vertex(mesh.element(k)[face_vertices<3>(face)[i]]) * (1.0 / 3);
+      cavity = {k};
+      grow_delaunay_cavity(mesh, cavity, read, x, SymMat<3>::identity());
+      EXPECT_EQ(std::count(cavity.begin(), cavity.end(), across), 0) << "element " << k << " grew across its face " << face;
+      EXPECT_TRUE(std::all_of(cavity.begin(), cavity.end(), [&](Index c) { return mesh.element_ref(c) == mesh.element_ref(k); }));
+    }
+  EXPECT_EQ(linked_sides, 32);  // the plane's 16 squares, two triangles each, seen from each side once
+  EXPECT_EQ(unlinked_sides, 32);
 }
 
 }  // namespace
