@@ -6,6 +6,7 @@
 #include <string>
 
 #include "base/error.hpp"
+#include "mesh/baffle_orientation.hpp"
 
 namespace hocav {
 
@@ -315,7 +316,7 @@ void Mesh<D>::orient_boundary_facets_outward() {
     Index k = facet_element_face_[f] / (D + 1);
     int face = static_cast<int>(facet_element_face_[f] % (D + 1));
     // An interface: as a face of the side with the smaller ref, so that its facets agree (the cavity
-    // operator's surface cavity needs them to). A baffle (one ref) keeps the file's orientation.
+    // operator's surface cavity needs them to). A baffle (one ref): below.
     if (const Index across = neighbor(k, face); across != kNoIndex) {
       if (element_refs_[k] == element_refs_[across]) continue;
       if (element_refs_[across] < element_refs_[k]) {
@@ -331,6 +332,7 @@ void Mesh<D>::orient_boundary_facets_outward() {
     const bool same = D == 2 ? first == 0 : facet[(first + 1) % D] == outward[1];
     if (!same) std::swap(facet[0], facet[1]);
   }
+  for (Index f : baffle_facets_to_turn(*this)) std::swap(facets_[f][0], facets_[f][1]);
 }
 
 template <int D>

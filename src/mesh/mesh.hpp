@@ -147,9 +147,10 @@ class Mesh {
   bool has_topology() const { return adjacency_.size() == elements_.size() && !elements_.empty(); }
   // Orders every facet on the domain's boundary (no element across its face) as that face of its
   // element: outward, the elements being positive; and every interface facet (elements of two refs
-  // across it) as a face of the side with the smaller ref. The file formats leave a facet's
-  // orientation free, and gmsh's surfaces come either way; the operators orient the facets they make
-  // the same way.
+  // across it) as a face of the side with the smaller ref; and each patch of baffle facets (one ref
+  // on both sides) like its first facet (mesh/baffle_orientation.hpp). The file formats leave a
+  // facet's orientation free, and gmsh's surfaces come either way; the operators orient the facets
+  // they make the same way.
   // Needs the topology.
   void orient_boundary_facets_outward();
   // The element across face `face` of element k, or kNoIndex on the boundary of the domain.

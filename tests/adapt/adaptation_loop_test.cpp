@@ -10,6 +10,7 @@
 #include <map>
 #include <numbers>
 
+#include "../mesh/turned_facets.hpp"
 #include "../mesh/two_refs_mesh.hpp"
 #include "adapt/adaptation_mesh.hpp"
 #include "adapt_test_support.hpp"
@@ -286,6 +287,17 @@ TEST(AdaptationLoop, AnInterfaceBetweenElementRefsIsAdaptedWithBothSides) {
   Mesh<3> cube = two_refs_across_an_interface<3>(4);
   expect_adapted<3>(cube, linear_metric<3>(0.02), 0.96, 0.75, 0.05, 4);  // the interface square's corners
   expect_refs_on_their_sides(cube);
+}
+
+// A baffle (facets inside one element ref) given with its facets either way adapts as well as the
+// interface above: its patch is oriented alike first (Mesh::orient_boundary_facets_outward).
+TEST(AdaptationLoop, ABaffleGivenEitherWayIsAdapted) {
+  // The copy keeps no Corners or Edges: the square's and the cube's corners come back by angle,
+  // with the baffle's ends.
+  Mesh<2> square = mesh_test::with_facets_turned(mesh_test::baffle_across_the_middle<2>(10), 2);
+  expect_adapted<2>(square, linear_metric<2>(0.01), 0.95, 0.85, 0.3, 4 + 2);
+  Mesh<3> cube = mesh_test::with_facets_turned(mesh_test::baffle_across_the_middle<3>(4), 2);
+  expect_adapted<3>(cube, linear_metric<3>(0.02), 0.96, 0.75, 0.05, 8 + 4);
 }
 
 TEST(AdaptationLoop, CoarseningAFineMeshInAUniformMetric) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <random>
 
+#include "../mesh/turned_facets.hpp"
 #include "../mesh/two_refs_mesh.hpp"
 #include "adapt/boundary_pieces.hpp"
 #include "cases/structured.hpp"
@@ -198,16 +199,9 @@ TEST(CavityOperator, AnInterfaceFacetIsReStarredWithBothOfItsSides) {
 // A 3D interface edge split with both sides: the shell of an edge on the plane x = 1/2 between two
 // element refs, starred from its middle, the facets through it re-starred.
 TEST(CavityOperator, AnInterfaceEdgeIsSplitWithBothOfItsSides3D) {
-  // The interface's facets turned around (normal −x): orient_boundary_facets_outward must orient
-  // them back as faces of side 1 (normal +x), as the new ones are checked below.
-  const Mesh<3> cube = mesh_test::two_refs_across_an_interface<3>(2);
-  Mesh<3> mesh;
-  for (Index v = 0; v < cube.vertex_count(); ++v) mesh.add_vertex(cube.vertex(v));
-  for (Index k = 0; k < cube.element_count(); ++k) mesh.add_element(cube.element(k), cube.element_ref(k));
-  for (Index f = 0; f < cube.facet_count(); ++f)
-    mesh.add_facet(cube.facet_ref(f) == 9 ? std::array<Index, 3>{cube.facet(f)[1], cube.facet(f)[0], cube.facet(f)[2]} : cube.facet(f),
-                   cube.facet_ref(f));
-  mesh.build_topology();
+  // Every facet turned around (the interface's normal −x): orient_boundary_facets_outward must
+  // orient the interface back as faces of side 1 (normal +x), as the new facets are checked below.
+  Mesh<3> mesh = mesh_test::with_facets_turned(mesh_test::two_refs_across_an_interface<3>(2), 1);
   mesh.orient_boundary_facets_outward();
   const auto interface_facets = std::count(mesh.facet_refs().begin(), mesh.facet_refs().end(), 9);
   ASSERT_EQ(interface_facets, 8);  // the plane's four squares, two triangles each

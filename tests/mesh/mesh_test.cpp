@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <random>
 #include <set>
 
@@ -13,6 +14,7 @@
 #include "mesh/measure.hpp"
 #include "pinched_mesh.hpp"
 #include "turned_facets.hpp"
+#include "two_refs_mesh.hpp"
 
 namespace hocav {
 namespace {
@@ -60,6 +62,44 @@ void expect_facets_oriented_outward(const Mesh<D>& mesh) {
 TEST(Mesh, BoundaryFacetsAreOrientedOutward) {
   expect_facets_oriented_outward(generate_square(3));
   expect_facets_oriented_outward(generate_cube(2));
+}
+
+// A baffle given with its facets either way is oriented like its first facet: every side (edge in
+// 3D, vertex in 2D) two of its facets share is given opposite directions by them.
+template <int D>
+void expect_baffle_oriented_alike() {
+  Mesh<D> mesh = mesh_test::with_facets_turned(mesh_test::baffle_across_the_middle<D>(4), 2);
+  std::vector<Index> baffle;
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    if (mesh.facet_ref(f) == 9) baffle.push_back(f);
+  const typename Mesh<D>::Facet first = mesh.facet(baffle.front());
+  const auto directed_sides = [&] {
+    std::map<std::pair<Index, Index>, int> sides;  // (from, to) -> how many facets give it (2D: (v, ±1))
+    for (Index f : baffle) {
+      const auto& facet = mesh.facet(f);
+      if constexpr (D == 2) {
+        ++sides[{facet[0], -1}];
+        ++sides[{facet[1], +1}];
+      } else {
+        for (int i = 0; i < 3; ++i) ++sides[{facet[i], facet[(i + 1) % 3]}];
+      }
+    }
+    return sides;
+  };
+  const auto repeated = [&] {
+    const auto sides = directed_sides();
+    return std::count_if(sides.begin(), sides.end(), [](const auto& side) { return side.second > 1; });
+  };
+  ASSERT_GT(repeated(), 0) << "the input must give some shared side one direction twice";
+  mesh.orient_boundary_facets_outward();
+  EXPECT_EQ(repeated(), 0);
+  EXPECT_EQ(mesh.facet(baffle.front()), first);
+  EXPECT_TRUE(check_consistency(mesh).empty());
+}
+
+TEST(Mesh, BafflePatchesAreOrientedAlike) {
+  expect_baffle_oriented_alike<2>();
+  expect_baffle_oriented_alike<3>();
 }
 
 TEST(Mesh, EulerCharacteristicOfTheEdgeTable) {

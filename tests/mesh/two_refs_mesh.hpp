@@ -1,4 +1,5 @@
-// A mesh with an interface inside the domain, for the tests of the operators that must adapt it.
+// A mesh with an interface or a baffle inside the domain, for the tests of the operators that must
+// adapt it.
 #pragma once
 
 #include <algorithm>
@@ -35,6 +36,15 @@ Mesh<D> two_refs_across_an_interface(int cells_per_side) {
       if (std::all_of(facet.begin(), facet.end(), [&](Index v) { return mesh.vertex(v)[0] == 0.5; })) mesh.add_facet(facet, 9);
     }
   }
+  mesh.build_topology();
+  return mesh;
+}
+
+// The same in one element ref: the plane x = 0.5 is a baffle of ref 9 (one ref on both sides).
+template <int D>
+Mesh<D> baffle_across_the_middle(int cells_per_side) {
+  Mesh<D> mesh = two_refs_across_an_interface<D>(cells_per_side);
+  for (Index k = 0; k < mesh.element_count(); ++k) mesh.set_element(k, mesh.element(k), 1);
   mesh.build_topology();
   return mesh;
 }
