@@ -289,6 +289,30 @@ TEST(AdaptationLoop, AnInterfaceBetweenElementRefsIsAdaptedWithBothSides) {
   expect_refs_on_their_sides(cube);
 }
 
+// Four element refs meeting at a point (2D) or along a line (3D): the junction is a corner or a
+// feature line, and every element keeps its quadrant's ref.
+TEST(AdaptationLoop, FourRefsMeetingAtAJunctionAreAdapted) {
+  const auto expect_quadrants = [](const auto& mesh) {
+    std::map<int, double> measure;
+    for (Index k = 0; k < mesh.element_count(); ++k) {
+      double x = 0, y = 0;
+      for (Index v : mesh.element(k)) x += mesh.vertex(v)[0], y += mesh.vertex(v)[1];
+      x /= static_cast<double>(mesh.element(k).size()), y /= static_cast<double>(mesh.element(k).size());
+      ASSERT_EQ(mesh.element_ref(k), 1 + (x > 0.5) + 2 * (y > 0.5)) << "element " << k << " at " << x << ", " << y;
+      measure[mesh.element_ref(k)] += element_measure(mesh, k);
+    }
+    for (int ref = 1; ref <= 4; ++ref) EXPECT_NEAR(measure[ref], 0.25, 1e-9) << "ref " << ref;
+  };
+  // New corners: the interfaces' four ends on the hull and the centre (2D); the two planes'
+  // crossings of the cube's edges (eight) and the junction line's two ends (3D).
+  Mesh<2> square = mesh_test::four_refs_by_quadrant<2>(10);
+  expect_adapted<2>(square, linear_metric<2>(0.01), 0.95, 0.85, 0.3, 5);
+  expect_quadrants(square);
+  Mesh<3> cube = mesh_test::four_refs_by_quadrant<3>(4);
+  expect_adapted<3>(cube, linear_metric<3>(0.02), 0.96, 0.75, 0.05, 10);
+  expect_quadrants(cube);
+}
+
 // A baffle (facets inside one element ref) given with its facets either way adapts as well as the
 // interface above: its patch is oriented alike first (Mesh::orient_boundary_facets_outward).
 TEST(AdaptationLoop, ABaffleGivenEitherWayIsAdapted) {

@@ -40,6 +40,36 @@ Mesh<D> two_refs_across_an_interface(int cells_per_side) {
   return mesh;
 }
 
+// The structured unit square or cube in four element refs by quadrant, 1 + (x > 0.5) + 2 (y > 0.5),
+// with the faces between them as facets, of ref 9 on the plane x = 0.5 and 10 on y = 0.5: four
+// interfaces meeting at the centre (2D) or along the line x = y = 0.5 (3D). With topology.
+template <int D>
+Mesh<D> four_refs_by_quadrant(int cells_per_side) {
+  Mesh<D> mesh;
+  if constexpr (D == 2)
+    mesh = generate_square(cells_per_side);
+  else
+    mesh = generate_cube(cells_per_side);
+  const auto quadrant = [&](Index k) {
+    double x = 0, y = 0;
+    for (Index v : mesh.element(k)) x += mesh.vertex(v)[0] / (D + 1), y += mesh.vertex(v)[1] / (D + 1);
+    return 1 + (x > 0.5) + 2 * (y > 0.5);
+  };
+  for (Index k = 0; k < mesh.element_count(); ++k) mesh.set_element(k, mesh.element(k), quadrant(k));
+  mesh.build_topology();
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (int face = 0; face <= D; ++face) {
+      const Index across = mesh.neighbor(k, face);
+      if (across == kNoIndex || across < k || mesh.element_ref(across) == mesh.element_ref(k)) continue;
+      typename Mesh<D>::Facet facet;
+      for (int i = 0; i < D; ++i) facet[i] = mesh.element(k)[face_vertices<D>(face)[i]];
+      const bool on_x = std::all_of(facet.begin(), facet.end(), [&](Index v) { return mesh.vertex(v)[0] == 0.5; });
+      mesh.add_facet(facet, on_x ? 9 : 10);
+    }
+  mesh.build_topology();
+  return mesh;
+}
+
 // The same in one element ref: the plane x = 0.5 is a baffle of ref 9 (one ref on both sides).
 template <int D>
 Mesh<D> baffle_across_the_middle(int cells_per_side) {
