@@ -10,8 +10,8 @@
 #include <map>
 #include <numbers>
 
+#include "../mesh/inner_facet_meshes.hpp"
 #include "../mesh/turned_facets.hpp"
-#include "../mesh/two_refs_mesh.hpp"
 #include "adapt/adaptation_mesh.hpp"
 #include "adapt_test_support.hpp"
 #include "mesh/measure.hpp"

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <random>
 
+#include "../mesh/inner_facet_meshes.hpp"
 #include "../mesh/turned_facets.hpp"
-#include "../mesh/two_refs_mesh.hpp"
 #include "adapt/boundary_pieces.hpp"
 #include "cases/structured.hpp"
 #include "cavity/cavity_operations.hpp"

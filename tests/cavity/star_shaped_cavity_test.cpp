@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <random>
 
-#include "../mesh/two_refs_mesh.hpp"
+#include "../mesh/inner_facet_meshes.hpp"
 #include "base/small_set.hpp"
 #include "cases/structured.hpp"
 #include "cavity/cavity_operations.hpp"

@@ -9,12 +9,12 @@
 
 #include "base/error.hpp"
 #include "cases/structured.hpp"
+#include "inner_facet_meshes.hpp"
 #include "mesh/ball_and_shell.hpp"
 #include "mesh/consistency.hpp"
 #include "mesh/measure.hpp"
 #include "pinched_mesh.hpp"
 #include "turned_facets.hpp"
-#include "two_refs_mesh.hpp"
 
 namespace hocav {
 namespace {
