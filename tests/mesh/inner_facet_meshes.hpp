@@ -1,5 +1,5 @@
-// A mesh with an interface or a baffle inside the domain, for the tests of the operators that must
-// adapt it.
+// Meshes with facets inside the domain (interfaces between element refs, four refs meeting at a
+// junction, a baffle), for the tests of the operators that must adapt them.
 #pragma once
 
 #include <algorithm>
