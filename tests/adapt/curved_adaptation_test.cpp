@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../mesh/inner_facet_meshes.hpp"
 #include "adapt/adaptation_driver.hpp"
 #include "adapt_test_support.hpp"
 #include "bezier/mesh_quality.hpp"
@@ -19,7 +20,8 @@ template <int D>
 struct AdaptedCase {
   Mesh<D> mesh;
   AdaptedMesh<D> adapted;
-  AdaptedCase(bool curved, int threads, int order = 2) : mesh(adapt_test::unit_mesh<D>(D == 2 ? 8 : 4)) {
+  AdaptedCase(bool curved, int threads, int order = 2) : AdaptedCase(adapt_test::unit_mesh<D>(D == 2 ? 8 : 4), curved, threads, order) {}
+  AdaptedCase(Mesh<D> start, bool curved, int threads, int order = 2) : mesh(std::move(start)) {
     AdaptationJob<D> job;
     job.analytic.emplace();
     job.analytic->name = D == 2 ? "shear-circle" : "shear-sphere";
@@ -79,6 +81,39 @@ void check_curved_loop() {
 
 TEST(CurvedAdaptation, LoopKeepsTheMeshCertifiedAndUnitInCurvedLength2D) { check_curved_loop<2>(); }
 TEST(CurvedAdaptation, LoopKeepsTheMeshCertifiedAndUnitInCurvedLength3D) { check_curved_loop<3>(); }
+
+// Four element refs by quadrant through the whole job with the curved passes: every element keeps
+// its quadrant's ref and is certified, and the interfaces' P2 nodes stay on their planes.
+template <int D>
+void expect_interfaces_kept_curved() {
+  const Mesh<D> start = mesh_test::four_refs_by_quadrant<D>(D == 2 ? 8 : 4);
+  AdaptedCase<D> quadrants(start, true, 1);
+  const Mesh<D>& mesh = quadrants.mesh;
+  ASSERT_TRUE(quadrants.adapted.report.curved_passes);
+  EXPECT_GT(mesh.element_count(), 2 * start.element_count()) << "the shear layer refines across the interfaces";
+  adapt_test::expect_closed_and_consistent(mesh);
+  expect_certified(mesh, CurvingOptions{}.jacobian_floor);
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    Vec<D> centroid{};
+    for (Index v : mesh.element(k)) centroid += mesh.vertex(v) * (1.0 / (D + 1));
+    EXPECT_EQ(mesh.element_ref(k), 1 + (centroid[0] > 0.5) + 2 * (centroid[1] > 0.5)) << "element " << k;
+  }
+  Index interface_edges = 0;
+  for (Index f = 0; f < mesh.facet_count(); ++f) {
+    if (mesh.facet_ref(f) != 9 && mesh.facet_ref(f) != 10) continue;
+    const int axis = mesh.facet_ref(f) == 9 ? 0 : 1;
+    const auto& facet = mesh.facet(f);
+    for (int i = 0; i < D; ++i, ++interface_edges) {
+      const Index e = mesh.find_edge(facet[i], facet[(i + 1) % D]);
+      ASSERT_NE(e, kNoIndex);
+      EXPECT_NEAR(mesh.edge_node(e)[axis], 0.5, 1e-12) << "facet " << f;
+    }
+  }
+  EXPECT_GT(interface_edges, 0);
+}
+
+TEST(CurvedAdaptation, InterfacesKeepTheirSidesAndPlanes2D) { expect_interfaces_kept_curved<2>(); }
+TEST(CurvedAdaptation, InterfacesKeepTheirSidesAndPlanes3D) { expect_interfaces_kept_curved<3>(); }
 
 template <int D>
 void expect_same_mesh(const Mesh<D>& one, const Mesh<D>& two) {
