@@ -231,7 +231,7 @@ Refusal gather_cavity(const Mesh<3>& mesh, const SwapCandidate<3>& candidate, st
   int face = 0;
   while (face < 3 && (mesh.element(k)[face] == a || mesh.element(k)[face] == b || mesh.element(k)[face] == c)) ++face;
   const Index other = mesh.neighbor(k, face);
-  if (other == kNoIndex || mesh.element_face_facet(k, face) != kNoIndex) return Refusal::kTopology;
+  if (other == kNoIndex || mesh.face_has_facet(k, face)) return Refusal::kTopology;  // either side may link an inner facet
   cavity.elements.assign({k, other});
   other_vertices(mesh, cavity.elements, a, b, cavity.apexes);
   std::erase(cavity.apexes, c);
