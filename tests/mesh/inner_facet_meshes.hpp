@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "cases/structured.hpp"
+#include "../metric/metric_test_support.hpp"
 #include "mesh/mesh.hpp"
 
 namespace hocav::mesh_test {
@@ -17,22 +17,25 @@ double centroid_x(const Mesh<D>& mesh, Index k) {
   return x;
 }
 
-// The structured unit square or cube (generate_square, generate_cube) in two element refs, 1 for
-// x < 0.5 and 2 past it, with the faces between them as facets of ref 9: an interface inside the
-// domain. With topology.
+// Face `face` of element k as a facet.
+template <int D>
+typename Mesh<D>::Facet element_face(const Mesh<D>& mesh, Index k, int face) {
+  typename Mesh<D>::Facet facet;
+  for (int i = 0; i < D; ++i) facet[i] = mesh.element(k)[face_vertices<D>(face)[i]];
+  return facet;
+}
+
+// The structured unit square or cube (metric_test::unit_mesh) in two element refs, 1 for x < 0.5
+// and 2 past it, with the faces between them as facets of ref 9: an interface inside the domain.
+// With topology.
 template <int D>
 Mesh<D> two_refs_across_an_interface(int cells_per_side) {
-  Mesh<D> mesh;
-  if constexpr (D == 2)
-    mesh = generate_square(cells_per_side);
-  else
-    mesh = generate_cube(cells_per_side);
+  Mesh<D> mesh = metric_test::unit_mesh<D>(cells_per_side);
   for (Index k = 0; k < mesh.element_count(); ++k) {
     mesh.set_element(k, mesh.element(k), centroid_x(mesh, k) < 0.5 ? 1 : 2);
     if (centroid_x(mesh, k) > 0.5) continue;
     for (int face = 0; face <= D; ++face) {
-      typename Mesh<D>::Facet facet;
-      for (int i = 0; i < D; ++i) facet[i] = mesh.element(k)[face_vertices<D>(face)[i]];
+      const typename Mesh<D>::Facet facet = element_face(mesh, k, face);
       if (std::all_of(facet.begin(), facet.end(), [&](Index v) { return mesh.vertex(v)[0] == 0.5; })) mesh.add_facet(facet, 9);
     }
   }
@@ -45,11 +48,7 @@ Mesh<D> two_refs_across_an_interface(int cells_per_side) {
 // interfaces meeting at the centre (2D) or along the line x = y = 0.5 (3D). With topology.
 template <int D>
 Mesh<D> four_refs_by_quadrant(int cells_per_side) {
-  Mesh<D> mesh;
-  if constexpr (D == 2)
-    mesh = generate_square(cells_per_side);
-  else
-    mesh = generate_cube(cells_per_side);
+  Mesh<D> mesh = metric_test::unit_mesh<D>(cells_per_side);
   const auto quadrant = [&](Index k) {
     double x = 0, y = 0;
     for (Index v : mesh.element(k)) x += mesh.vertex(v)[0] / (D + 1), y += mesh.vertex(v)[1] / (D + 1);
@@ -61,8 +60,7 @@ Mesh<D> four_refs_by_quadrant(int cells_per_side) {
     for (int face = 0; face <= D; ++face) {
       const Index across = mesh.neighbor(k, face);
       if (across == kNoIndex || across < k || mesh.element_ref(across) == mesh.element_ref(k)) continue;
-      typename Mesh<D>::Facet facet;
-      for (int i = 0; i < D; ++i) facet[i] = mesh.element(k)[face_vertices<D>(face)[i]];
+      const typename Mesh<D>::Facet facet = element_face(mesh, k, face);
       const bool on_x = std::all_of(facet.begin(), facet.end(), [&](Index v) { return mesh.vertex(v)[0] == 0.5; });
       mesh.add_facet(facet, on_x ? 9 : 10);
     }
