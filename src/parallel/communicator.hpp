@@ -42,6 +42,13 @@ inline std::vector<std::byte> receive_bytes(int from, long long& volume) {
 }
 void broadcast_bytes(std::vector<std::byte>& bytes);
 
+// Every process at once sends outgoing[r] to process r and gets what each sent it: the result's
+// entry r is process r's message to this one (a process's message to itself included).
+std::vector<std::vector<std::byte>> exchange_bytes(const std::vector<std::vector<std::byte>>& outgoing);
+
+// Every process's `bytes`, in rank order, on every process.
+std::vector<std::vector<std::byte>> all_gather_bytes(const std::vector<std::byte>& bytes);
+
 // Ends every process with `exit_code` (an error on one process would leave the others waiting).
 [[noreturn]] void abort_processes(int exit_code);
 
@@ -67,6 +74,15 @@ void broadcast_values(std::vector<T>& values) {
   std::vector<std::byte> bytes = bytes_of_values(values);
   broadcast_bytes(bytes);
   values = values_of_bytes<T>(bytes);
+}
+
+// Every process's `value`, in rank order, on every process.
+template <typename T>
+std::vector<T> all_gather_value(const T& value) {
+  std::vector<T> values;
+  for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(std::vector<T>{value})))
+    values.push_back(values_of_bytes<T>(bytes).at(0));
+  return values;
 }
 
 template <typename T>

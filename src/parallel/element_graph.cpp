@@ -6,10 +6,15 @@
 namespace hocav {
 namespace {
 
-// Scales the loads to integers: their sum stays below 1e9, so Scotch's sums never overflow.
-std::vector<std::int64_t> integer_loads(std::span<const double> loads) {
+double sum_of(std::span<const double> loads) {
   double total = 0;
   for (double load : loads) total += load;
+  return total;
+}
+
+}  // namespace
+
+std::vector<std::int64_t> integer_loads(std::span<const double> loads, double total) {
   const double scale = total > 0 ? std::min(1000.0, 1e9 / total) : 0;
   std::vector<std::int64_t> weights(loads.size());
   for (std::size_t k = 0; k < loads.size(); ++k) weights[k] = 1 + std::llround(loads[k] * scale);
@@ -17,16 +22,9 @@ std::vector<std::int64_t> integer_loads(std::span<const double> loads) {
 }
 
 template <int D>
-bool touches(const typename Mesh<D>::Element& element, std::span<const char> marked) {
-  return !marked.empty() && std::any_of(element.begin(), element.end(), [&](Index v) { return marked[v] != 0; });
-}
-
-}  // namespace
-
-template <int D>
 WeightedGraph element_graph(const Mesh<D>& mesh, std::span<const double> loads, std::span<const char> old_interface) {
   WeightedGraph graph;
-  graph.vertex_weights = integer_loads(loads);
+  graph.vertex_weights = integer_loads(loads, sum_of(loads));
   graph.offsets.push_back(0);
   for (Index k = 0; k < mesh.element_count(); ++k) {
     const bool near_old_interface = touches<D>(mesh.element(k), old_interface);
@@ -58,7 +56,7 @@ WeightedGraph member_graph(const Mesh<D>& mesh, std::span<const char> members, s
   } else {
     std::vector<double> member_loads;
     for (Index k : elements) member_loads.push_back(loads[k]);
-    graph.vertex_weights = integer_loads(member_loads);
+    graph.vertex_weights = integer_loads(member_loads, sum_of(member_loads));
   }
   graph.offsets.push_back(0);
   for (Index k : elements) {

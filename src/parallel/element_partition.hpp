@@ -3,6 +3,7 @@
 // heavier faces near the last interfaces, cut by Scotch into parts of balanced load.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -17,9 +18,22 @@ struct WeightedGraph {
   std::vector<std::int64_t> neighbours, vertex_weights, edge_weights;
 };
 
+// The loads as integer weights, in the same proportions: scaled so that loads summing to `total`
+// (over every process of a distributed graph) weigh less than 1e9, and Scotch's sums never overflow.
+std::vector<std::int64_t> integer_loads(std::span<const double> loads, double total);
+
+// The largest load imbalance a part may have, in Scotch's and PT-Scotch's partitions.
+constexpr double kPartImbalance = 0.05;
+
 // A face joining two elements that both touch a vertex of the last interfaces weighs this many
 // ordinary faces: the partitioner then cuts elsewhere, and the old interfaces fall inside parts.
 constexpr std::int64_t kOldInterfaceFaceWeight = 100;
+
+// Whether `element` has a vertex marked in `marked` (per vertex; none when it is empty).
+template <int D>
+bool touches(const typename Mesh<D>::Element& element, std::span<const char> marked) {
+  return !marked.empty() && std::any_of(element.begin(), element.end(), [&](Index v) { return marked[v] != 0; });
+}
 
 // The dual graph of `mesh` (with topology): element k weighs in proportion to `loads[k]` (at least
 // 1); `old_interface` (per vertex, may be empty) marks the vertices of the last interfaces.

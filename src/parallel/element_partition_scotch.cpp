@@ -16,9 +16,6 @@ namespace {
 
 static_assert(sizeof(SCOTCH_Num) == sizeof(std::int64_t), "hocav needs Scotch's int64 build (scotch-int64)");
 
-// The largest load imbalance a part may have.
-constexpr double kImbalance = 0.05;
-
 void check(int status, const char* what) {
   if (status != 0) throw Error(std::string("Scotch failed in ") + what);
 }
@@ -67,7 +64,7 @@ std::vector<int> partition_graph(const WeightedGraph& graph, int part_count, std
         "SCOTCH_graphBuild");
   check(SCOTCH_contextBindGraph(&context.context, &scotch.graph, &bound.graph), "SCOTCH_contextBindGraph");
   ScotchStrategy strategy;
-  check(SCOTCH_stratGraphMapBuild(&strategy.strategy, SCOTCH_STRATQUALITY, part_count, kImbalance), "SCOTCH_stratGraphMapBuild");
+  check(SCOTCH_stratGraphMapBuild(&strategy.strategy, SCOTCH_STRATQUALITY, part_count, kPartImbalance), "SCOTCH_stratGraphMapBuild");
   std::vector<SCOTCH_Num> scotch_parts(graph.vertex_weights.size());
   check(SCOTCH_graphPart(&bound.graph, part_count, &strategy.strategy, scotch_parts.data()), "SCOTCH_graphPart");
   for (std::size_t k = 0; k < parts.size(); ++k) parts[k] = static_cast<int>(scotch_parts[k]);

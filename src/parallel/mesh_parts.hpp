@@ -22,6 +22,9 @@ struct MeshPart {
   Mesh<D> mesh;
   // Per vertex, its id in the mesh the part came from; kNoIndex for a vertex the part made.
   std::vector<Index> global_ids;
+  // Per vertex, whether it is required wherever the interfaces run (a required vertex of the mesh,
+  // or a non-manifold place): split_mesh and migrate_part set it; empty in a part from a message.
+  std::vector<char> pinned;
 };
 
 // Splits `mesh` (with topology, compact) into `part_count` parts, element k going to part

@@ -1,0 +1,113 @@
+#include "parallel/distributed_graph.hpp"
+
+#include <numeric>
+#include <string>
+#include <unordered_map>
+
+#include "base/error.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/face_table.hpp"
+
+namespace hocav {
+namespace {
+
+// One side of an interface face, sent to the process where both sides meet: the face by its global
+// vertex ids, the element that has it (its global number), whether that element touches the last
+// interfaces, and the process it is on. The meeting process sends each side the other's record.
+template <int D>
+struct FaceSide {
+  std::int64_t element;
+  FaceKey<D> face;
+  std::int32_t process, near_old_interface;
+};
+
+template <int D>
+int meeting_process(const FaceKey<D>& face) {
+  return static_cast<int>(FaceKeyHash<D>{}(face) % static_cast<std::size_t>(process_count()));
+}
+
+template <typename T>
+std::vector<std::vector<std::byte>> as_bytes(const std::vector<std::vector<T>>& messages) {
+  std::vector<std::vector<std::byte>> bytes;
+  for (const std::vector<T>& message : messages) bytes.push_back(bytes_of_values(message));
+  return bytes;
+}
+
+// Every process's interface sides to their meeting processes and back: per face of this process's
+// interfaces (by global vertex ids), the side across it.
+template <int D>
+std::unordered_map<FaceKey<D>, FaceSide<D>, FaceKeyHash<D>> sides_across(const std::vector<FaceSide<D>>& own) {
+  std::vector<std::vector<FaceSide<D>>> outgoing(static_cast<std::size_t>(process_count()));
+  for (const FaceSide<D>& side : own) outgoing[meeting_process<D>(side.face)].push_back(side);
+  std::unordered_map<FaceKey<D>, std::vector<FaceSide<D>>, FaceKeyHash<D>> met;
+  for (const std::vector<std::byte>& bytes : exchange_bytes(as_bytes(outgoing)))
+    for (const FaceSide<D>& side : values_of_bytes<FaceSide<D>>(bytes)) met[side.face].push_back(side);
+  std::vector<std::vector<FaceSide<D>>> answers(outgoing.size());
+  for (const auto& [face, sides] : met) {
+    if (sides.size() != 2) throw Error("distributed graph: an interface face has " + std::to_string(sides.size()) + " sides, not 2");
+    answers[sides[0].process].push_back(sides[1]);
+    answers[sides[1].process].push_back(sides[0]);
+  }
+  std::unordered_map<FaceKey<D>, FaceSide<D>, FaceKeyHash<D>> across;
+  for (const std::vector<std::byte>& bytes : exchange_bytes(as_bytes(answers)))
+    for (const FaceSide<D>& side : values_of_bytes<FaceSide<D>>(bytes)) across.emplace(side.face, side);
+  return across;
+}
+
+template <int D>
+FaceKey<D> global_key(const MeshPart<D>& part, const FaceKey<D>& local) {
+  FaceKey<D> key{};
+  for (int i = 0; i < D; ++i) key[i] = part.global_ids[local[i]];
+  return sorted_key<D>(key);
+}
+
+}  // namespace
+
+template <int D>
+DistributedGraph distributed_element_graph(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> old_interface) {
+  const Mesh<D>& mesh = part.mesh;
+  if (loads.size() != static_cast<std::size_t>(mesh.element_count())) throw Error("distributed graph: one load per element");
+  DistributedGraph graph;
+  const std::vector<Index> counts = all_gather_value(mesh.element_count());
+  for (int r = 0; r < process_rank(); ++r) graph.first += counts[r];
+  double total = 0;
+  for (double sum : all_gather_value(std::accumulate(loads.begin(), loads.end(), 0.0))) total += sum;
+  graph.rows.vertex_weights = integer_loads(loads, total);
+  std::vector<char> near(static_cast<std::size_t>(mesh.element_count()));
+  for (Index k = 0; k < mesh.element_count(); ++k) near[k] = touches<D>(mesh.element(k), old_interface);
+
+  const FaceTable<D> faces = face_table<D>(mesh.elements());
+  std::vector<FaceSide<D>> own;
+  for (Index f = 0; f < mesh.facet_count(); ++f) {
+    if (mesh.facet_ref(f) != kInterfaceRef) continue;
+    const auto found = faces.find(sorted_key<D>(mesh.facet(f)));
+    if (found == faces.end() || found->second.shared())
+      throw Error("distributed graph: interface facet " + std::to_string(f + 1) + " is not on one element's face");
+    const Index k = found->second.first;
+    own.push_back({graph.first + k, global_key<D>(part, found->first), process_rank(), near[k]});
+  }
+  const auto across = sides_across(own);
+
+  graph.rows.offsets.push_back(0);
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    for (int face = 0; face <= D; ++face) {
+      const FaceKey<D> key = face_key<D>(mesh.element(k), face);
+      const FaceElements& local = faces.at(key);
+      if (local.shared()) {
+        const Index other = local.first == k ? local.second : local.first;
+        graph.rows.neighbours.push_back(graph.first + other);
+        graph.rows.edge_weights.push_back(near[k] && near[other] ? kOldInterfaceFaceWeight : 1);
+      } else if (const auto side = across.find(global_key<D>(part, key)); side != across.end()) {
+        graph.rows.neighbours.push_back(side->second.element);
+        graph.rows.edge_weights.push_back(near[k] && side->second.near_old_interface ? kOldInterfaceFaceWeight : 1);
+      }
+    }
+    graph.rows.offsets.push_back(static_cast<std::int64_t>(graph.rows.neighbours.size()));
+  }
+  return graph;
+}
+
+template DistributedGraph distributed_element_graph(const MeshPart<2>&, std::span<const double>, std::span<const char>);
+template DistributedGraph distributed_element_graph(const MeshPart<3>&, std::span<const double>, std::span<const char>);
+
+}  // namespace hocav

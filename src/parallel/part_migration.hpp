@@ -1,0 +1,25 @@
+// Migration of elements between processes, peer to peer (docs/distributed.md §Migration): every
+// process sends the elements that leave its part straight to their new process, with their vertices,
+// facets, feature lines, tags and P2 nodes, and builds its new part from what it keeps and what
+// arrives. The interfaces follow the elements; no process sees more than its own part.
+#pragma once
+
+#include <span>
+
+#include "parallel/mesh_parts.hpp"
+
+namespace hocav {
+
+// Every process at once: element k of this process's `part` goes to process destination[k] (this
+// one included). Returns the process's new part, as split_mesh makes parts: its vertices in the
+// order of their global ids; its elements by the process they come from, in rank order, each
+// process's in its part's order; the mesh's facets on its elements, then a required facet of ref
+// kInterfaceRef on each face towards another process, whose vertices are required; lines along its
+// elements' edges; P2 nodes when the parts are P2. Pinned vertices stay required, corners stay
+// corners. A facet of the mesh goes with the first element of the part that has it as a face.
+// Throws Error when `part` lacks a vertex's global id or pinned flag, a destination is no process,
+// or two processes give one vertex different points.
+template <int D>
+MeshPart<D> migrate_part(const MeshPart<D>& part, std::span<const int> destination);
+
+}  // namespace hocav

@@ -1,0 +1,253 @@
+// The peer-to-peer migration and the distributed partition (docs/distributed.md §Migration), run by
+// ctest under `mpirun -np N` (N = 2, 3, 4). Every process makes the same square and cube (the
+// fixture) and keeps its part of a first partition; from there only parts move:
+// 1. to a partition in slabs of x: each process's new part must be split_mesh's part of that
+//    partition (entity by entity, by global ids);
+// 2. back home: every element that crossed to another process twice comes back identical, and each
+//    process has its first part again;
+// 3. the distributed dual graph of the slab parts is the whole mesh's (every face, both ways, once),
+//    and PT-Scotch's partition of it is balanced; migrated by it, the parts merge into the mesh.
+// Exit code 0 when all holds on every process, 1 otherwise (with a message).
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "adapt/vertex_classes.hpp"
+#include "cases/structured.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/distributed_graph.hpp"
+#include "parallel/element_partition.hpp"
+#include "parallel/mesh_parts.hpp"
+#include "parallel/part_migration.hpp"
+
+namespace hocav {
+namespace {
+
+int rank() { return process_rank(); }
+
+bool fail(const std::string& what) {
+  std::cerr << "part migration (rank " << rank() << "): " << what << '\n';
+  return false;
+}
+
+template <std::size_t N>
+std::string ids(const std::array<Index, N>& local, const std::vector<Index>& global) {
+  std::string out;
+  for (Index v : local) out += std::to_string(global[v]) + ' ';
+  return out;
+}
+
+template <int D>
+std::string point(const Vec<D>& x) {
+  std::ostringstream out;
+  out << std::hexfloat;
+  for (int i = 0; i < D; ++i) out << x[i] << ' ';
+  return out.str();
+}
+
+// A part as sorted lines of text, entity by entity by global ids, so that two parts compare whatever
+// their local numbering and order.
+template <int D>
+std::vector<std::string> described(const MeshPart<D>& part) {
+  const Mesh<D>& mesh = part.mesh;
+  const auto flag = [](const std::vector<Index>& list, Index id) { return std::find(list.begin(), list.end(), id) != list.end(); };
+  const std::vector<Index>& required_facets = D == 2 ? mesh.required_edges() : mesh.required_triangles();
+  std::vector<std::string> lines;
+  for (Index v = 0; v < mesh.vertex_count(); ++v)
+    lines.push_back("v " + std::to_string(part.global_ids[v]) + ' ' + point<D>(mesh.vertex(v)) + std::to_string(mesh.vertex_ref(v)) +
+                    " corner " + std::to_string(flag(mesh.corners(), v)) + " required " +
+                    std::to_string(flag(mesh.required_vertices(), v)) + " pinned " + std::to_string(part.pinned.at(v)));
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    std::string line = "e " + ids(mesh.element(k), part.global_ids) + std::to_string(mesh.element_ref(k));
+    if (mesh.is_p2())
+      for (int e = 0; e < Simplex<D>::kEdges; ++e) line += " | " + point<D>(mesh.edge_node(mesh.element_edge(k, e)));
+    lines.push_back(line);
+  }
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    lines.push_back("f " + ids(mesh.facet(f), part.global_ids) + std::to_string(mesh.facet_ref(f)) + " required " +
+                    std::to_string(flag(required_facets, f)) + " ridge " + std::to_string(D == 2 && flag(mesh.ridges(), f)));
+  for (Index l = 0; l < mesh.line_count(); ++l) {
+    auto ends = mesh.line(l);
+    if (part.global_ids[ends[0]] > part.global_ids[ends[1]]) std::swap(ends[0], ends[1]);
+    lines.push_back("l " + ids(ends, part.global_ids) + std::to_string(mesh.line_ref(l)) + " ridge " +
+                    std::to_string(D == 3 && flag(mesh.ridges(), l)) + " required " + std::to_string(flag(mesh.required_edges(), l)));
+  }
+  std::sort(lines.begin(), lines.end());
+  return lines;
+}
+
+template <int D>
+bool same(const MeshPart<D>& got, const MeshPart<D>& expected, const std::string& what) {
+  const std::vector<std::string> a = described(got), b = described(expected);
+  if (a == b) return true;
+  const auto [first, second] = std::mismatch(a.begin(), a.end(), b.begin(), b.end());
+  return fail(what + ": " + std::to_string(a.size()) + " entities against " + std::to_string(b.size()) + "; first difference: '" +
+              (first == a.end() ? "(end)" : *first) + "' against '" + (second == b.end() ? "(end)" : *second) + "'");
+}
+
+template <int D>
+Vec<D> centroid(const MeshPart<D>& part, Index k) {
+  Vec<D> sum{};
+  for (Index v : part.mesh.element(k)) sum = sum + part.mesh.vertex(v);
+  return (1.0 / (D + 1)) * sum;
+}
+
+int slab(double x) { return std::clamp(static_cast<int>(std::floor(x * process_count())), 0, process_count() - 1); }
+
+template <int D>
+std::vector<int> slabs_of(const Mesh<D>& mesh) {
+  MeshPart<D> whole{mesh, {}, {}};
+  std::vector<int> out;
+  for (Index k = 0; k < mesh.element_count(); ++k) out.push_back(slab(centroid(whole, k)[0]));
+  return out;
+}
+
+template <int D>
+std::vector<int> slabs_of(const MeshPart<D>& part) {
+  std::vector<int> out;
+  for (Index k = 0; k < part.mesh.element_count(); ++k) out.push_back(slab(centroid(part, k)[0]));
+  return out;
+}
+
+// Per element of `part`: its process in `home` (per element of `mesh`), found by its global vertex ids.
+template <int D>
+std::vector<int> homes(const MeshPart<D>& part, const Mesh<D>& mesh, const std::vector<int>& home) {
+  std::map<std::array<Index, D + 1>, int> by_vertices;
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    auto key = mesh.element(k);
+    std::sort(key.begin(), key.end());
+    by_vertices[key] = home[k];
+  }
+  std::vector<int> out;
+  for (Index k = 0; k < part.mesh.element_count(); ++k) {
+    std::array<Index, D + 1> key{};
+    for (int i = 0; i <= D; ++i) key[i] = part.global_ids[part.mesh.element(k)[i]];
+    std::sort(key.begin(), key.end());
+    out.push_back(by_vertices.at(key));
+  }
+  return out;
+}
+
+// The whole graph's rows, gathered: every face of `mesh` both ways once, with the serial graph's weights.
+bool graph_is_the_meshes(const DistributedGraph& graph, const WeightedGraph& serial) {
+  const std::vector<std::int64_t> edges = all_gather_value(static_cast<std::int64_t>(graph.rows.neighbours.size()));
+  std::int64_t total = 0;
+  for (std::int64_t e : edges) total += e;
+  if (total != static_cast<std::int64_t>(serial.neighbours.size()))
+    return fail("the distributed graph has " + std::to_string(total) + " arcs, the mesh's " + std::to_string(serial.neighbours.size()));
+  // Symmetric: each arc's reverse is some process's; sent to the owner of its head.
+  std::vector<std::vector<std::array<std::int64_t, 3>>> arcs(static_cast<std::size_t>(process_count()));
+  const std::vector<std::int64_t> firsts = all_gather_value(graph.first);
+  const auto owner = [&](std::int64_t row) {
+    return static_cast<int>(std::upper_bound(firsts.begin(), firsts.end(), row) - firsts.begin()) - 1;
+  };
+  for (std::size_t i = 0; i + 1 < graph.rows.offsets.size(); ++i)
+    for (std::int64_t a = graph.rows.offsets[i]; a < graph.rows.offsets[i + 1]; ++a)
+      arcs[owner(graph.rows.neighbours[a])].push_back(
+          {graph.rows.neighbours[a], graph.first + static_cast<std::int64_t>(i), graph.rows.edge_weights[a]});
+  std::vector<std::vector<std::byte>> out;
+  for (const auto& list : arcs) out.push_back(bytes_of_values(list));
+  for (const std::vector<std::byte>& bytes : exchange_bytes(out))
+    for (const auto& [row, head, weight] : values_of_bytes<std::array<std::int64_t, 3>>(bytes)) {
+      const auto i = static_cast<std::size_t>(row - graph.first);
+      bool found = false;
+      for (std::int64_t a = graph.rows.offsets[i]; a < graph.rows.offsets[i + 1]; ++a)
+        found = found || (graph.rows.neighbours[a] == head && graph.rows.edge_weights[a] == weight);
+      if (!found) return fail("arc " + std::to_string(head) + " -> " + std::to_string(row) + " has no reverse");
+    }
+  return true;
+}
+
+template <int D>
+bool run(const Mesh<D>& mesh) {
+  const int count = process_count();
+  const std::string name = D == 2 ? "square" : "cube";
+  const std::vector<double> unit_loads(static_cast<std::size_t>(mesh.element_count()), 1.0);
+  const WeightedGraph serial = element_graph(mesh, unit_loads, {});
+  const std::vector<int> first_partition = partition_graph(serial, count);
+  const MeshPart<D> home = split_mesh(mesh, first_partition, count)[rank()];
+
+  // 1. To slabs of x, peer to peer.
+  const MeshPart<D> slabbed = migrate_part(home, slabs_of(home));
+  bool ok = same(slabbed, split_mesh(mesh, slabs_of(mesh), count)[rank()], name + " in slabs against split_mesh");
+
+  // 2. Back home: the elements that crossed twice are the ones they were.
+  const std::vector<int> back = homes(slabbed, mesh, first_partition);
+  const std::vector<int> crossed = all_gather_value(
+      static_cast<int>(std::count_if(back.begin(), back.end(), [](int p) { return p != rank(); })));
+  if (std::all_of(crossed.begin(), crossed.end(), [](int n) { return n == 0; })) ok = fail(name + ": no element crossed twice");
+  ok = same(migrate_part(slabbed, back), home, name + " back home") && ok;
+
+  // 3. The distributed graph of the slab parts, cut by PT-Scotch, and the parts it makes.
+  const DistributedGraph graph = distributed_element_graph(
+      slabbed, std::vector<double>(static_cast<std::size_t>(slabbed.mesh.element_count()), 1.0), {});
+  ok = graph_is_the_meshes(graph, serial) && ok;
+  const std::vector<int> cut = partition_distributed_graph(graph, count);
+  const MeshPart<D> balanced = migrate_part(slabbed, cut);
+  const std::vector<Index> got = all_gather_value(balanced.mesh.element_count());
+  const double mean = static_cast<double>(mesh.element_count()) / count;
+  for (int p = 0; p < count; ++p)
+    if (got[p] > 1.1 * mean + 1)
+      ok = fail(name + ": PT-Scotch's part " + std::to_string(p) + " has " + std::to_string(got[p]) + " elements of " +
+                std::to_string(mesh.element_count()));
+  {
+    // Each part against split_mesh's of the partition they make together (gathered, for the check).
+    std::vector<std::array<Index, D + 1>> keys;
+    for (Index k = 0; k < balanced.mesh.element_count(); ++k) {
+      std::array<Index, D + 1> key{};
+      for (int i = 0; i <= D; ++i) key[i] = balanced.global_ids[balanced.mesh.element(k)[i]];
+      keys.push_back(key);
+    }
+    std::vector<std::vector<std::byte>> everywhere(static_cast<std::size_t>(count), bytes_of_values(keys));
+    std::map<std::array<Index, D + 1>, int> process_of;
+    const std::vector<std::vector<std::byte>> all = exchange_bytes(everywhere);
+    for (int p = 0; p < count; ++p)
+      for (auto key : values_of_bytes<std::array<Index, D + 1>>(all[p])) {
+        std::sort(key.begin(), key.end());
+        process_of[key] = p;
+      }
+    std::vector<int> part_of;
+    for (Index k = 0; k < mesh.element_count(); ++k) {
+      auto key = mesh.element(k);
+      std::sort(key.begin(), key.end());
+      const auto found = process_of.find(key);
+      if (found == process_of.end()) return fail(name + ": an element is in no part after PT-Scotch's migration");
+      part_of.push_back(found->second);
+    }
+    ok = same(balanced, split_mesh(mesh, part_of, count)[rank()], name + " in PT-Scotch's parts against split_mesh") && ok;
+  }
+  return ok;
+}
+
+}  // namespace
+}  // namespace hocav
+
+int main(int argc, char** argv) {
+  hocav::MpiSession mpi(argc, argv);
+  if (hocav::process_count() < 2) {
+    std::cerr << "part migration: run it under mpirun with 2 or more processes\n";
+    return 1;
+  }
+  try {
+    hocav::Mesh<2> square = hocav::generate_square(12);
+    hocav::Mesh<3> cube = hocav::generate_cube(6);
+    square.build_topology();
+    cube.build_topology();
+    hocav::classify_vertices(square, 45);
+    hocav::classify_vertices(cube, 45);
+    // Some required vertices, inside and on the boundary: pinned in every part they fall in.
+    for (hocav::Index v = 0; v < square.vertex_count(); v += 7) square.required_vertices().push_back(v);
+    for (hocav::Index v = 0; v < cube.vertex_count(); v += 7) cube.required_vertices().push_back(v);
+    hocav::Mesh<3> p2_cube = cube;
+    p2_cube.make_p2();
+    const bool ok = hocav::run(square) & hocav::run(cube) & hocav::run(p2_cube);  // every process runs all three
+    const std::vector<char> all = hocav::all_gather_value(static_cast<char>(ok));
+    return std::all_of(all.begin(), all.end(), [](char each) { return each != 0; }) ? 0 : 1;
+  } catch (const std::exception& error) {
+    std::cerr << "part migration: rank " << hocav::process_rank() << ": " << error.what() << '\n';
+    hocav::abort_processes(1);
+  }
+}
