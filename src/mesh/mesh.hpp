@@ -98,6 +98,9 @@ class Mesh {
   std::span<const int> line_refs() const { return line_refs_; }
   Index add_line(const Line& vertices, int ref = 0);
   bool line_removed(Index l) const { return lines_[l][0] == kNoIndex; }
+  // Marks line l removed: a line is a tag on element edges, linked to nothing, so any caller may drop
+  // one; compact() then drops it and renumbers the tags that list lines.
+  void remove_line(Index l);
   // Whether line l is listed in ridges() (in 2D, facet l).
   bool is_ridge(Index l) const;
 
@@ -245,7 +248,6 @@ class Mesh {
   void remove_vertex(Index v);
   // Marks a facet removed, unlinking it from its element face.
   void remove_facet(Index f);
-  void remove_line(Index l);
   // A new facet on face `face` of element k, linked both ways.
   Index add_attached_facet(const Facet& vertices, int ref, Index k, int face);
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstring>
+#include <optional>
 #include <utility>
 
 #include "adapt/vertex_classes.hpp"
@@ -14,7 +14,10 @@
 #include "metric/implied_metric.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/element_partition.hpp"
+#include "parallel/part_adaptation.hpp"
 #include "parallel/part_message.hpp"
+#include "parallel/part_migration.hpp"
+#include "parallel/peer_iteration.hpp"
 
 namespace hocav {
 namespace {
@@ -22,28 +25,6 @@ namespace {
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
-
-// Adapts one part with its interfaces frozen (required facets and vertices); its global ids follow
-// the vertices through the loop as a vertex attribute (0 for a new vertex, else the id + 1).
-template <int D>
-AdaptationRun adapt_part(MeshPart<D>& part, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
-                         const AdaptationSettings& settings) {
-  if (part.mesh.element_count() == 0) return {};
-  const int id_attribute = part.mesh.add_vertex_attribute(1);
-  for (Index v = 0; v < part.mesh.vertex_count(); ++v) part.mesh.vertex_attribute(id_attribute, v)[0] = part.global_ids[v] + 1.0;
-  part.mesh.build_topology();
-  const AdaptationRun run = adapt_to_metric(part.mesh, metric, geometry, settings);
-  part.global_ids.resize(static_cast<std::size_t>(part.mesh.vertex_count()));
-  for (Index v = 0; v < part.mesh.vertex_count(); ++v)
-    part.global_ids[v] = static_cast<Index>(part.mesh.vertex_attribute(id_attribute, v)[0]) - 1;
-  return run;
-}
-
-// Every iteration's parts split no edge at an interface vertex and stop this many passes after their
-// loop's window closes: next to a frozen interface much coarser than the metric, splits toward it
-// never end, and what a part would do there a later iteration (with that interface inside a part),
-// the band or the last serial run does better (docs/distributed.md).
-constexpr int kEarlyPassesAfterWindowCloses = 2;
 
 // A whole-mesh iteration asks for sizes at most this many times finer than the mesh it starts from
 // (where the metric is finest against the input), if kDistributedIterations - 1 steps allow.
@@ -69,84 +50,6 @@ int gradual_steps(const Mesh<D>& input, const MetricField<D>& input_metric, cons
 // it asks and its frozen interfaces stay near their metric; the band and the last run adapt to the
 // target (docs/distributed.md §A gradual metric).
 double gradual_fraction(int iteration, int steps) { return std::min(1.0, static_cast<double>(iteration) / steps); }
-
-// The settings of a part's loop: the run's, with the limits above.
-AdaptationSettings part_settings(const AdaptationSettings& settings) {
-  AdaptationSettings part = settings;
-  part.passes_after_window_closes = kEarlyPassesAfterWindowCloses;
-  part.split_at_required_vertices = false;
-  return part;
-}
-
-static_assert(std::is_trivially_copyable_v<AdaptationPass>);
-
-// The passes, the caps removed, then the two flags.
-std::vector<std::byte> pack_run(const AdaptationRun& run) {
-  const std::size_t passes = run.passes.size() * sizeof(AdaptationPass);
-  std::vector<std::byte> bytes(passes + sizeof(Index) + 2);
-  if (!run.passes.empty()) std::memcpy(bytes.data(), run.passes.data(), passes);
-  std::memcpy(bytes.data() + passes, &run.caps_removed, sizeof(Index));
-  bytes[bytes.size() - 2] = std::byte{run.converged};
-  bytes[bytes.size() - 1] = std::byte{run.stopped_with_window_open};
-  return bytes;
-}
-
-AdaptationRun unpack_run(const std::vector<std::byte>& bytes) {
-  AdaptationRun run;
-  run.passes.resize((bytes.size() - 2 - sizeof(Index)) / sizeof(AdaptationPass));
-  const std::size_t passes = run.passes.size() * sizeof(AdaptationPass);
-  if (!run.passes.empty()) std::memcpy(run.passes.data(), bytes.data(), passes);
-  std::memcpy(&run.caps_removed, bytes.data() + passes, sizeof(Index));
-  run.converged = bytes[bytes.size() - 2] != std::byte{0};
-  run.stopped_with_window_open = bytes[bytes.size() - 1] != std::byte{0};
-  return run;
-}
-
-// A part's wall time and its process's peak memory, for the iteration's figures.
-struct PartFigures {
-  double seconds = 0;
-  long long peak_memory_bytes = 0;
-};
-
-// Adapts `part` (adapt_part) and says how long it took and the process's peak memory after it.
-template <int D>
-std::pair<AdaptationRun, PartFigures> adapt_part_measured(MeshPart<D>& part, const AdaptationMetric<D>& metric,
-                                                          const BoundaryGeometry<D>* geometry, const AdaptationSettings& settings) {
-  const auto start = std::chrono::steady_clock::now();
-  AdaptationRun run = adapt_part(part, metric, geometry, settings);
-  return {std::move(run), PartFigures{seconds_since(start), peak_resident_bytes()}};
-}
-
-// The parts' runs as one: pass i sums the parts' passes i (their times: the slowest part's).
-AdaptationRun combined(const std::vector<AdaptationRun>& runs) {
-  AdaptationRun out;
-  out.converged = true;
-  for (const AdaptationRun& run : runs) {
-    if (run.passes.size() > out.passes.size()) out.passes.resize(run.passes.size());
-    out.converged = out.converged && run.converged;
-    out.stopped_with_window_open = out.stopped_with_window_open || run.stopped_with_window_open;
-    out.caps_removed += run.caps_removed;
-    for (std::size_t i = 0; i < run.passes.size(); ++i) {
-      AdaptationPass& sum = out.passes[i];
-      const AdaptationPass& pass = run.passes[i];
-      sum.collapses += pass.collapses;
-      sum.splits += pass.splits;
-      sum.swaps += pass.swaps;
-      sum.moves += pass.moves;
-      sum.vertices += pass.vertices;
-      sum.elements += pass.elements;
-      sum.settled += pass.settled;
-      sum.partly_settled += pass.partly_settled;
-      sum.window_open = sum.window_open || pass.window_open;
-      sum.collapse_length_bound = std::max(sum.collapse_length_bound, pass.collapse_length_bound);
-      for (auto seconds :
-           {&AdaptationPass::seconds, &AdaptationPass::seconds_collapse, &AdaptationPass::seconds_swap, &AdaptationPass::seconds_split,
-            &AdaptationPass::seconds_smooth, &AdaptationPass::seconds_compact, &AdaptationPass::seconds_settle})
-        sum.*seconds = std::max(sum.*seconds, pass.*seconds);
-    }
-  }
-  return out;
-}
 
 // The last interfaces' vertices and their neighbours (per vertex of `mesh`): the region of the last
 // pass, which mends what the parts could not mend next to their frozen interfaces.
@@ -253,6 +156,56 @@ struct RootIteration {
   std::vector<std::byte> receive(int from) { return receive_bytes(from, figures.bytes_sent); }
 };
 
+// The whole-mesh iterations, 1 to kDistributedIterations - 1, on every process at once and peer to
+// peer (peer_iteration.hpp), from the processes' parts of the first partition; the last gathers the
+// mesh on rank 0. Each adapts to the metric its share of the way from the input's own.
+template <int D>
+struct WholeMeshIterations {
+  const AdaptationMetric<D>& metric;  // the target
+  const MetricField<D>& input_metric;
+  int steps;  // gradual_steps, rank 0's
+  const BoundaryGeometry<D>* geometry;
+  AdaptationSettings settings;  // the parts' loop's (part_settings)
+  std::int64_t partition_seed;
+
+  // Rank 0 gets the runs, the last iteration's interface vertices and (in `part`) every element;
+  // `first` holds the figures of the first partition's scatter.
+  PeerIterationResult run(MeshPart<D>& part, DistributedIteration first,
+                          const std::function<void(const DistributedIteration&)>& on_iteration) const {
+    Index next_global_id = 0;
+    for (Index most :
+         all_gather_value(part.global_ids.empty() ? Index{0} : *std::max_element(part.global_ids.begin(), part.global_ids.end()) + 1))
+      next_global_id = std::max(next_global_id, most);
+    PeerIterationResult all;
+    for (int iteration = 1; iteration < kDistributedIterations; ++iteration) {
+      const double fraction = gradual_fraction(iteration, steps);
+      const AdaptationMetric<D> iteration_metric = metric.partway_from(input_metric, fraction);
+      std::optional<AdaptationMetric<D>> next;
+      if (iteration + 1 < kDistributedIterations) next = metric.partway_from(input_metric, gradual_fraction(iteration + 1, steps));
+      DistributedIteration figures = iteration == 1 ? first : DistributedIteration{};
+      figures.iteration = iteration;
+      figures.metric_fraction = fraction;
+      const PeerIteration<D> step{iteration_metric, geometry, settings, partition_seed, next ? &*next : nullptr};
+      PeerIterationResult result = run_peer_iteration(part, next_global_id, step, figures);
+      all.run.passes.insert(all.run.passes.end(), result.run.passes.begin(), result.run.passes.end());
+      all.run.caps_removed += result.run.caps_removed;
+      all.interface_vertices = std::move(result.interface_vertices);
+      if (process_rank() == 0 && on_iteration) on_iteration(figures);
+    }
+    return all;
+  }
+};
+
+// Per vertex of the gathered `part`: whether its global id is listed in `ids`.
+template <int D>
+std::vector<char> flags_of_global_ids(const MeshPart<D>& part, const std::vector<Index>& ids) {
+  std::vector<char> flags(part.global_ids.size(), 0);
+  for (Index id : ids)
+    if (const auto at = std::lower_bound(part.global_ids.begin(), part.global_ids.end(), id); at != part.global_ids.end() && *at == id)
+      flags[static_cast<std::size_t>(at - part.global_ids.begin())] = 1;
+  return flags;
+}
+
 }  // namespace
 
 template <int D>
@@ -264,23 +217,33 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   classify_vertices(mesh, settings.feature_angle_degrees);
   // The input's own metric, where the gradual metric starts (on every rank the same field).
   const MetricField<D> input_metric(mesh, implied_metric_at_vertices(mesh));
-  const int steps = gradual_steps(mesh, input_metric, metric);
-  RootIteration<D> root{mesh, metric, geometry, part_settings(settings), partition_seed, {}, {}};
-  AdaptationRun run;
-  for (int iteration = 1; iteration <= kDistributedIterations; ++iteration) {
-    root.figures = {};
-    root.figures.iteration = iteration;
-    const auto start = std::chrono::steady_clock::now();
-    const bool band = iteration == kDistributedIterations;
-    const double fraction = gradual_fraction(iteration, steps);
-    root.metric = metric.partway_from(input_metric, fraction);
-    root.figures.metric_fraction = fraction;
-    const std::vector<int> part_of = band ? root.band_partition() : root.whole_partition();
-    const AdaptationRun step = root.run(part_of, start);
-    run.passes.insert(run.passes.end(), step.passes.begin(), step.passes.end());
-    run.caps_removed += step.caps_removed;
-    if (on_iteration) on_iteration(root.figures);
-  }
+  // The gradual metric's steps and the partitioner's seed, the same on every process.
+  std::vector<std::int64_t> shared{gradual_steps(mesh, input_metric, metric), partition_seed};
+  broadcast_values(shared);
+  const auto steps = static_cast<int>(shared[0]);
+  const WholeMeshIterations<D> whole{metric, input_metric, steps, geometry, part_settings(settings), partition_seed};
+  RootIteration<D> root{mesh, metric.partway_from(input_metric, gradual_fraction(1, steps)), geometry, whole.settings, partition_seed, {},
+                        {}};
+  // The first partition, of the whole mesh, scattered from rank 0.
+  const auto start = std::chrono::steady_clock::now();
+  DistributedIteration first;
+  const std::vector<int> part_of = root.whole_partition();
+  MeshPart<D> part = migrate_part(whole_mesh_part(std::move(mesh)), part_of, &first.bytes_sent);
+  first.seconds_partition = first.seconds = seconds_since(start);
+  const PeerIterationResult peer = whole.run(part, first, on_iteration);
+  AdaptationRun run = peer.run;
+  root.old_interface = flags_of_global_ids(part, peer.interface_vertices);
+  mesh = whole_mesh_of(std::move(part));
+  mesh.build_topology();
+  // The band, from rank 0.
+  root.figures = {};
+  root.figures.iteration = kDistributedIterations;
+  root.metric = metric.partway_from(input_metric, gradual_fraction(kDistributedIterations, steps));
+  root.figures.metric_fraction = gradual_fraction(kDistributedIterations, steps);
+  const AdaptationRun band = root.run(root.band_partition(), std::chrono::steady_clock::now());
+  run.passes.insert(run.passes.end(), band.passes.begin(), band.passes.end());
+  run.caps_removed += band.caps_removed;
+  if (on_iteration) on_iteration(root.figures);
   for (int p = 1; p < process_count(); ++p) send_bytes(p, {});  // stop
   // The band's parts kept their own interfaces frozen, where they cross the band: the serial loop,
   // from the merged mesh, tries first only the region around them, the poor elements and the edges
@@ -305,12 +268,17 @@ template <int D>
 void serve_distributed_adaptation(const Mesh<D>& input, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                                   const AdaptationSettings& settings) {
   const MetricField<D> input_metric(input, implied_metric_at_vertices(input));
+  std::vector<std::int64_t> shared;  // rank 0's gradual steps and partition seed
+  broadcast_values(shared);
+  const WholeMeshIterations<D> whole{metric, input_metric, static_cast<int>(shared.at(0)), geometry, part_settings(settings), shared.at(1)};
+  MeshPart<D> part = migrate_part(MeshPart<D>{}, {});
+  whole.run(part, {}, {});
+  // The band: the part rank 0 sends, until it says stop.
   for (;;) {
     const std::vector<double> fraction = receive_values<double>(0);
     if (fraction.size() != 1) return;  // stop
-    MeshPart<D> part = unpack_part<D>(receive_bytes(0));
-    const auto [run, figures] = adapt_part_measured(part, metric.partway_from(input_metric, fraction[0]), geometry,
-                                                    part_settings(settings));
+    part = unpack_part<D>(receive_bytes(0));
+    const auto [run, figures] = adapt_part_measured(part, metric.partway_from(input_metric, fraction[0]), geometry, whole.settings);
     send_bytes(0, pack_part(part.mesh, std::span<const Index>(part.global_ids)));
     send_bytes(0, pack_run(run));
     send_values(0, std::vector<PartFigures>{figures});

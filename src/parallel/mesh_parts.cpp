@@ -66,7 +66,7 @@ struct PartBuilder {
     for (Index v : part.global_ids) {
       local[v] = part.mesh.add_vertex(mesh.vertex(v), mesh.vertex_ref(v));
       if (tags.corner[v]) part.mesh.corners().push_back(local[v]);
-      part.pinned.push_back(static_cast<char>(tags.required_vertex[v] || non_manifold[v]));
+      part.pinned.push_back(static_cast<char>((tags.required_vertex[v] ? kPinnedByMesh : 0) | (non_manifold[v] ? kPinnedNonManifold : 0)));
       if (part.pinned.back()) part.mesh.required_vertices().push_back(local[v]);
     }
   }
@@ -234,6 +234,29 @@ bool any_p2(const std::vector<MeshPart<D>>& parts) {
 }  // namespace
 
 template <int D>
+MeshPart<D> whole_mesh_part(Mesh<D> mesh) {
+  MeshPart<D> part;
+  const std::vector<char> required = flags_of(mesh.required_vertices(), mesh.vertex_count());
+  const std::vector<char> non_manifold = flags_of(non_manifold_places(mesh).every_vertex(), mesh.vertex_count());
+  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+    part.global_ids.push_back(v);
+    part.pinned.push_back(static_cast<char>((required[v] ? kPinnedByMesh : 0) | (non_manifold[v] ? kPinnedNonManifold : 0)));
+  }
+  part.mesh = std::move(mesh);
+  return part;
+}
+
+template <int D>
+Mesh<D> whole_mesh_of(MeshPart<D> part) {
+  if (std::find(part.mesh.facet_refs().begin(), part.mesh.facet_refs().end(), kInterfaceRef) != part.mesh.facet_refs().end())
+    throw Error("a gathered mesh still has an interface facet");
+  part.mesh.required_vertices().clear();
+  for (Index v = 0; v < part.mesh.vertex_count(); ++v)
+    if (part.pinned[v] & kPinnedByMesh) part.mesh.required_vertices().push_back(v);
+  return std::move(part.mesh);
+}
+
+template <int D>
 MergedMesh<D> merge_parts(const Mesh<D>& old_mesh, const std::vector<MeshPart<D>>& parts) {
   const VertexMerge<D> vertices(old_mesh.vertex_count(), parts);
   MergedMesh<D> out;
@@ -301,6 +324,10 @@ template std::vector<char> write_back_nodes(Mesh<2>&, const std::vector<MeshPart
 template std::vector<char> write_back_nodes(Mesh<3>&, const std::vector<MeshPart<3>>&, std::vector<char>*);
 template std::vector<MeshPart<2>> split_mesh(const Mesh<2>&, std::span<const int>, int);
 template std::vector<MeshPart<3>> split_mesh(const Mesh<3>&, std::span<const int>, int);
+template MeshPart<2> whole_mesh_part(Mesh<2>);
+template MeshPart<3> whole_mesh_part(Mesh<3>);
+template Mesh<2> whole_mesh_of(MeshPart<2>);
+template Mesh<3> whole_mesh_of(MeshPart<3>);
 template MergedMesh<2> merge_parts(const Mesh<2>&, const std::vector<MeshPart<2>>&);
 template MergedMesh<3> merge_parts(const Mesh<3>&, const std::vector<MeshPart<3>>&);
 template Index interface_face_count(const std::vector<MeshPart<2>>&);

@@ -14,6 +14,10 @@ namespace hocav {
 // The ref of the interface facets in a part: no input facet may carry it (docs/distributed.md).
 constexpr int kInterfaceRef = std::numeric_limits<int>::min();
 
+// Why a vertex is required wherever the interfaces run (MeshPart::pinned, flags).
+constexpr char kPinnedByMesh = 1;       // a required vertex of the mesh
+constexpr char kPinnedNonManifold = 2;  // a non-manifold place: required in every part, not in the mesh
+
 template <int D>
 struct MeshPart {
   // P1 or P2 (as the mesh it came from), without topology. Its boundary facets are the mesh's on the part's elements plus the
@@ -22,8 +26,8 @@ struct MeshPart {
   Mesh<D> mesh;
   // Per vertex, its id in the mesh the part came from; kNoIndex for a vertex the part made.
   std::vector<Index> global_ids;
-  // Per vertex, whether it is required wherever the interfaces run (a required vertex of the mesh,
-  // or a non-manifold place): split_mesh and migrate_part set it; empty in a part from a message.
+  // Per vertex, whether it is required wherever the interfaces run, and why (kPinned* flags, 0 for
+  // neither): split_mesh, whole_mesh_part and migrate_part set it; empty in a part from a message.
   std::vector<char> pinned;
 };
 
@@ -32,6 +36,17 @@ struct MeshPart {
 // facets too; a P2 mesh gives P2 parts with the same nodes.
 template <int D>
 std::vector<MeshPart<D>> split_mesh(const Mesh<D>& mesh, std::span<const int> part_of, int part_count);
+
+// The whole mesh (with topology) as one part, for migrate_part to scatter: global ids the vertex ids,
+// pinned flags for its required vertices and non-manifold places, no interface.
+template <int D>
+MeshPart<D> whole_mesh_part(Mesh<D> mesh);
+
+// The mesh a part holds when it holds every element (migrate_part gathered it): its required
+// vertices those the mesh had (pinned by the mesh), without those pinned as non-manifold places.
+// Throws Error when the part has an interface facet left.
+template <int D>
+Mesh<D> whole_mesh_of(MeshPart<D> part);
 
 template <int D>
 struct MergedMesh {

@@ -14,8 +14,8 @@
 namespace hocav {
 namespace {
 
-// Vertex flags, and facet and line flags, in a message.
-constexpr char kCorner = 1, kPinned = 2;
+// Vertex flags (a corner, then the pinned flags shifted by one), and facet and line flags, in a message.
+constexpr char kCorner = 1;
 constexpr char kRequired = 1, kRidge = 2;
 
 template <int D>
@@ -137,7 +137,7 @@ struct Packer {
     s.vertex_ids.push_back(part.global_ids[v]);
     s.points.push_back(part.mesh.vertex(v));
     s.vertex_refs.push_back(part.mesh.vertex_ref(v));
-    s.vertex_flags.push_back(static_cast<char>((tags.corner[v] ? kCorner : 0) | (part.pinned[v] ? kPinned : 0)));
+    s.vertex_flags.push_back(static_cast<char>((tags.corner[v] ? kCorner : 0) | (part.pinned[v] << 1)));
   }
 
   void add_lines(Shipment<D>& s, int to, Index k) {
@@ -211,7 +211,7 @@ struct Unpacker {
       local.emplace(g, v);
       const char flags = arrived[s].vertex_flags[i];
       if (flags & kCorner) part.mesh.corners().push_back(v);
-      part.pinned.push_back(static_cast<char>((flags & kPinned) != 0));
+      part.pinned.push_back(static_cast<char>(flags >> 1));
     }
   }
 
@@ -285,11 +285,14 @@ struct Unpacker {
 }  // namespace
 
 template <int D>
-MeshPart<D> migrate_part(const MeshPart<D>& part, std::span<const int> destination) {
+MeshPart<D> migrate_part(const MeshPart<D>& part, std::span<const int> destination, long long* bytes_sent) {
   check_part(part, destination);
+  const std::vector<std::vector<std::byte>> outgoing = packed_shipments(part, destination);
+  if (bytes_sent)
+    for (std::size_t to = 0; to < outgoing.size(); ++to)
+      if (static_cast<int>(to) != process_rank()) *bytes_sent += static_cast<long long>(outgoing[to].size());
   std::vector<Shipment<D>> arrived;
-  for (const std::vector<std::byte>& bytes : exchange_bytes(packed_shipments(part, destination)))
-    arrived.push_back(Shipment<D>::read(bytes));
+  for (const std::vector<std::byte>& bytes : exchange_bytes(outgoing)) arrived.push_back(Shipment<D>::read(bytes));
   Unpacker<D> unpacker{arrived, {}, {}};
   unpacker.add_vertices();
   unpacker.add_elements_and_facets();
@@ -299,7 +302,7 @@ MeshPart<D> migrate_part(const MeshPart<D>& part, std::span<const int> destinati
   return std::move(unpacker.part);
 }
 
-template MeshPart<2> migrate_part(const MeshPart<2>&, std::span<const int>);
-template MeshPart<3> migrate_part(const MeshPart<3>&, std::span<const int>);
+template MeshPart<2> migrate_part(const MeshPart<2>&, std::span<const int>, long long*);
+template MeshPart<3> migrate_part(const MeshPart<3>&, std::span<const int>, long long*);
 
 }  // namespace hocav

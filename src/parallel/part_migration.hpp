@@ -18,8 +18,9 @@ namespace hocav {
 // elements' edges; P2 nodes when the parts are P2. Pinned vertices stay required, corners stay
 // corners. A facet of the mesh goes with the first element of the part that has it as a face.
 // Throws Error when `part` lacks a vertex's global id or pinned flag, a destination is no process,
-// or two processes give one vertex different points.
+// or two processes give one vertex different points. Adds the bytes it sends other processes to
+// `bytes_sent` when given.
 template <int D>
-MeshPart<D> migrate_part(const MeshPart<D>& part, std::span<const int> destination);
+MeshPart<D> migrate_part(const MeshPart<D>& part, std::span<const int> destination, long long* bytes_sent = nullptr);
 
 }  // namespace hocav

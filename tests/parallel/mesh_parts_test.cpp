@@ -11,6 +11,7 @@
 
 #include "../mesh/pinched_mesh.hpp"
 #include "adapt/vertex_classes.hpp"
+#include "base/error.hpp"
 #include "cases/structured.hpp"
 #include "mesh/consistency.hpp"
 #include "parallel/mesh_parts.hpp"
@@ -134,6 +135,38 @@ TEST(MeshParts, NonManifoldPlacesAreRequiredInEveryPart) {
     }
   }
   EXPECT_TRUE(merge_parts(mesh, parts).mesh.required_vertices().empty());
+}
+
+// The whole mesh as one part (the scatter's start, the gather's end: part_migration.hpp): pinned by
+// the mesh its required vertex, as a non-manifold place the shared edge's; back as a mesh, only the
+// mesh's required vertex is required, and everything else is the mesh's.
+TEST(MeshParts, TheWholeMeshAsAPartKeepsWhyItsVerticesArePinned) {
+  Mesh<3> mesh = mesh_test::cubes_sharing_an_edge(2);
+  mesh.build_topology();
+  mesh.required_vertices().push_back(0);
+  const MeshPart<3> part = whole_mesh_part(mesh);
+  ASSERT_EQ(part.pinned.size(), static_cast<std::size_t>(mesh.vertex_count()));
+  int non_manifold = 0;
+  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+    EXPECT_EQ(part.global_ids[v], v);
+    EXPECT_EQ((part.pinned[v] & kPinnedByMesh) != 0, v == 0);
+    if (part.pinned[v] & kPinnedNonManifold) {
+      ++non_manifold;
+      EXPECT_EQ(mesh.vertex(v)[0], 1);
+      EXPECT_EQ(mesh.vertex(v)[1], 1);
+    }
+  }
+  EXPECT_EQ(non_manifold, 3);
+  const Mesh<3> back = whole_mesh_of(part);
+  EXPECT_EQ(back.required_vertices(), std::vector<Index>{0});
+  EXPECT_TRUE(std::equal(back.vertices().begin(), back.vertices().end(), mesh.vertices().begin(), mesh.vertices().end()));
+  EXPECT_TRUE(std::equal(back.elements().begin(), back.elements().end(), mesh.elements().begin(), mesh.elements().end()));
+  EXPECT_EQ(back.facet_count(), mesh.facet_count());
+}
+
+TEST(MeshParts, AGatheredMeshWithAnInterfaceLeftIsRefused) {
+  SlicedCube cube(2);
+  EXPECT_THROW(whole_mesh_of(split_mesh(cube.mesh, cube.part_of, 2)[0]), Error);
 }
 
 TEST(PartMessage, APartComesBackUnchanged) {

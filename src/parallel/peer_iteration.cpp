@@ -1,0 +1,131 @@
+#include "parallel/peer_iteration.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+#include <unordered_set>
+
+#include "parallel/communicator.hpp"
+#include "parallel/distributed_graph.hpp"
+#include "parallel/part_adaptation.hpp"
+#include "parallel/part_migration.hpp"
+
+namespace hocav {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <typename T>
+T sum_over_processes(T value) {
+  const std::vector<T> all = all_gather_value(value);
+  return std::accumulate(all.begin(), all.end(), T{});
+}
+
+// Numbers the part's new vertices (global id kNoIndex) from next_global_id, process after process.
+template <int D>
+void number_new_vertices(MeshPart<D>& part, Index& next_global_id) {
+  const auto fresh = static_cast<Index>(std::count(part.global_ids.begin(), part.global_ids.end(), kNoIndex));
+  const std::vector<Index> counts = all_gather_value(fresh);
+  Index id = next_global_id + std::accumulate(counts.begin(), counts.begin() + process_rank(), Index{0});
+  for (Index& global : part.global_ids)
+    if (global == kNoIndex) global = id++;
+  next_global_id += std::accumulate(counts.begin(), counts.end(), Index{0});
+}
+
+// Per vertex of the part: on one of its interface facets.
+template <int D>
+std::vector<char> interface_vertex_flags(const Mesh<D>& mesh) {
+  std::vector<char> on(static_cast<std::size_t>(mesh.vertex_count()), 0);
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    if (mesh.facet_ref(f) == kInterfaceRef)
+      for (Index v : mesh.facet(f)) on[v] = 1;
+  return on;
+}
+
+// The global ids of the flagged vertices.
+template <int D>
+std::vector<Index> global_ids_of(const MeshPart<D>& part, const std::vector<char>& flagged) {
+  std::vector<Index> ids;
+  for (Index v = 0; v < part.mesh.vertex_count(); ++v)
+    if (flagged[v]) ids.push_back(part.global_ids[v]);
+  return ids;
+}
+
+// How many distinct ids all processes' `ids` hold together: each id is counted by the process it
+// hashes to.
+Index distinct_count(const std::vector<Index>& ids) {
+  std::vector<std::vector<Index>> outgoing(static_cast<std::size_t>(process_count()));
+  for (Index id : ids) outgoing[static_cast<std::size_t>(id) % outgoing.size()].push_back(id);
+  std::vector<std::vector<std::byte>> bytes;
+  for (const std::vector<Index>& message : outgoing) bytes.push_back(bytes_of_values(message));
+  std::unordered_set<Index> met;
+  for (const std::vector<std::byte>& message : exchange_bytes(bytes))
+    for (Index id : values_of_bytes<Index>(message)) met.insert(id);
+  return sum_over_processes(static_cast<Index>(met.size()));
+}
+
+// Every process's `bytes` to rank 0 (empty elsewhere).
+std::vector<std::vector<std::byte>> gathered_on_root(std::vector<std::byte> bytes) {
+  std::vector<std::vector<std::byte>> outgoing(static_cast<std::size_t>(process_count()));
+  outgoing[0] = std::move(bytes);
+  std::vector<std::vector<std::byte>> incoming = exchange_bytes(outgoing);
+  if (process_rank() != 0) incoming.clear();
+  return incoming;
+}
+
+// The merged mesh's figures from the parts: vertices (those on interfaces once), elements, interfaces.
+template <int D>
+void count_parts(const MeshPart<D>& part, const std::vector<Index>& shared, DistributedIteration& figures) {
+  figures.interface_vertices = distinct_count(shared);
+  figures.vertices = sum_over_processes(part.mesh.vertex_count() - static_cast<Index>(shared.size())) + figures.interface_vertices;
+  figures.elements = sum_over_processes(part.mesh.element_count());
+  const auto interface_facets = std::count(part.mesh.facet_refs().begin(), part.mesh.facet_refs().end(), kInterfaceRef);
+  figures.interface_faces = sum_over_processes(static_cast<Index>(interface_facets)) / 2;
+}
+
+}  // namespace
+
+template <int D>
+PeerIterationResult run_peer_iteration(MeshPart<D>& part, Index& next_global_id, const PeerIteration<D>& iteration,
+                                       DistributedIteration& figures) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto [run, own] = adapt_part_measured(part, iteration.metric, iteration.geometry, iteration.settings);
+  number_new_vertices(part, next_global_id);
+  const std::vector<char> on_interface = interface_vertex_flags(part.mesh);
+  const std::vector<Index> shared = global_ids_of(part, on_interface);
+  count_parts(part, shared, figures);
+  for (const PartFigures& each : all_gather_value(own)) {
+    figures.part_seconds.push_back(each.seconds);
+    figures.peak_memory_bytes.push_back(each.peak_memory_bytes);
+  }
+  PeerIterationResult result;
+  const std::vector<std::vector<std::byte>> runs = gathered_on_root(pack_run(run));
+  std::vector<AdaptationRun> unpacked;
+  for (const std::vector<std::byte>& bytes : runs) unpacked.push_back(unpack_run(bytes));
+  if (process_rank() == 0) result.run = combined(unpacked);
+
+  const auto moving = std::chrono::steady_clock::now();
+  long long bytes_sent = 0;
+  if (iteration.next_metric) {
+    const DistributedGraph graph = distributed_element_graph(part, expected_element_counts(part.mesh, *iteration.next_metric),
+                                                             on_interface);
+    part = migrate_part(part, partition_distributed_graph(graph, process_count(), iteration.partition_seed), &bytes_sent);
+  } else {
+    for (const std::vector<std::byte>& bytes : gathered_on_root(bytes_of_values(shared))) {
+      const std::vector<Index> ids = values_of_bytes<Index>(bytes);
+      result.interface_vertices.insert(result.interface_vertices.end(), ids.begin(), ids.end());
+    }
+    part = migrate_part(part, std::vector<int>(static_cast<std::size_t>(part.mesh.element_count()), 0), &bytes_sent);
+  }
+  figures.bytes_sent += sum_over_processes(bytes_sent);
+  figures.seconds_partition += seconds_since(moving);
+  figures.seconds += seconds_since(start);
+  return result;
+}
+
+template PeerIterationResult run_peer_iteration(MeshPart<2>&, Index&, const PeerIteration<2>&, DistributedIteration&);
+template PeerIterationResult run_peer_iteration(MeshPart<3>&, Index&, const PeerIteration<3>&, DistributedIteration&);
+
+}  // namespace hocav
