@@ -6,7 +6,7 @@
 
 #include "base/error.hpp"
 #include "parallel/communicator.hpp"
-#include "parallel/face_table.hpp"
+#include "parallel/face_key.hpp"
 
 namespace hocav {
 namespace {
@@ -54,6 +54,15 @@ std::unordered_map<FaceKey<D>, FaceSide<D>, FaceKeyHash<D>> sides_across(const s
   return across;
 }
 
+// A face's vertices, in the element's order.
+template <int D>
+FaceKey<D> face_vertices_of(const typename Mesh<D>::Element& element, int face) {
+  FaceKey<D> vertices{};
+  for (int i = 0; i < D; ++i) vertices[i] = element[face_vertices<D>(face)[i]];
+  return vertices;
+}
+
+// A face (by local vertex ids) by its sorted global vertex ids.
 template <int D>
 FaceKey<D> global_key(const MeshPart<D>& part, const FaceKey<D>& local) {
   FaceKey<D> key{};
@@ -67,6 +76,7 @@ template <int D>
 DistributedGraph distributed_element_graph(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> old_interface) {
   const Mesh<D>& mesh = part.mesh;
   if (loads.size() != static_cast<std::size_t>(mesh.element_count())) throw Error("distributed graph: one load per element");
+  if (mesh.element_count() > 0 && !mesh.has_topology()) throw Error("distributed graph: the part needs its topology");
   DistributedGraph graph;
   const std::vector<Index> counts = all_gather_value(mesh.element_count());
   for (int r = 0; r < process_rank(); ++r) graph.first += counts[r];
@@ -76,30 +86,27 @@ DistributedGraph distributed_element_graph(const MeshPart<D>& part, std::span<co
   std::vector<char> near(static_cast<std::size_t>(mesh.element_count()));
   for (Index k = 0; k < mesh.element_count(); ++k) near[k] = touches<D>(mesh.element(k), old_interface);
 
-  const FaceTable<D> faces = face_table<D>(mesh.elements());
+  // This side of each interface facet, by its element face.
+  std::vector<char> interface_face(static_cast<std::size_t>(mesh.element_count()) * (D + 1), 0);
   std::vector<FaceSide<D>> own;
   for (Index f = 0; f < mesh.facet_count(); ++f) {
     if (mesh.facet_ref(f) != kInterfaceRef) continue;
-    const auto found = faces.find(sorted_key<D>(mesh.facet(f)));
-    if (found == faces.end() || found->second.shared())
-      throw Error("distributed graph: interface facet " + std::to_string(f + 1) + " is not on one element's face");
-    const Index k = found->second.first;
-    own.push_back({graph.first + k, global_key<D>(part, found->first), process_rank(), near[k]});
+    const Index at = mesh.facet_element_face(f), k = at / (D + 1);
+    interface_face[at] = 1;
+    own.push_back({graph.first + k, global_key<D>(part, mesh.facet(f)), process_rank(), near[k]});
   }
   const auto across = sides_across(own);
 
   graph.rows.offsets.push_back(0);
   for (Index k = 0; k < mesh.element_count(); ++k) {
     for (int face = 0; face <= D; ++face) {
-      const FaceKey<D> key = face_key<D>(mesh.element(k), face);
-      const FaceElements& local = faces.at(key);
-      if (local.shared()) {
-        const Index other = local.first == k ? local.second : local.first;
+      if (const Index other = mesh.neighbor(k, face); other != kNoIndex) {
         graph.rows.neighbours.push_back(graph.first + other);
         graph.rows.edge_weights.push_back(near[k] && near[other] ? kOldInterfaceFaceWeight : 1);
-      } else if (const auto side = across.find(global_key<D>(part, key)); side != across.end()) {
-        graph.rows.neighbours.push_back(side->second.element);
-        graph.rows.edge_weights.push_back(near[k] && side->second.near_old_interface ? kOldInterfaceFaceWeight : 1);
+      } else if (interface_face[static_cast<std::size_t>(k) * (D + 1) + face]) {
+        const FaceSide<D>& side = across.at(global_key<D>(part, face_vertices_of<D>(mesh.element(k), face)));
+        graph.rows.neighbours.push_back(side.element);
+        graph.rows.edge_weights.push_back(near[k] && side.near_old_interface ? kOldInterfaceFaceWeight : 1);
       }
     }
     graph.rows.offsets.push_back(static_cast<std::int64_t>(graph.rows.neighbours.size()));

@@ -18,7 +18,7 @@ struct DistributedGraph {
   WeightedGraph rows;      // this process's elements; their neighbours by global numbers
 };
 
-// Every process at once: the rows of its part's elements, weighted as element_graph weighs them:
+// Every process at once: the rows of its part's elements (the part with its topology), weighted as element_graph weighs them:
 // `loads` per element (their sum over every process scales the weights), `old_interface` per vertex
 // of the part (may be empty). A neighbour across an interface facet is found by meeting the other
 // side's request at the process that the facet's global vertex ids hash to.

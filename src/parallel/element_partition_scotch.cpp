@@ -1,49 +1,18 @@
 // Scotch's serial graph partitioner (the int64 build of Debian's libscotch-dev); PT-Scotch, from the
 // same package, partitions the distributed graph once the mesh is read in parallel
 // (docs/distributed.md §Partitioning).
-#include <stdint.h>  // scotch.h needs int64_t and FILE
-#include <stdio.h>
-
-#include <scotch.h>
-
 #include <memory>
 
-#include "base/error.hpp"
 #include "parallel/element_partition.hpp"
+#include "parallel/scotch_support.hpp"
 
 namespace hocav {
 namespace {
 
-static_assert(sizeof(SCOTCH_Num) == sizeof(std::int64_t), "hocav needs Scotch's int64 build (scotch-int64)");
-
-void check(int status, const char* what) {
-  if (status != 0) throw Error(std::string("Scotch failed in ") + what);
-}
-
 struct ScotchGraph {
   SCOTCH_Graph graph;
-  ScotchGraph() { check(SCOTCH_graphInit(&graph), "SCOTCH_graphInit"); }
+  ScotchGraph() { check_scotch(SCOTCH_graphInit(&graph), "SCOTCH_graphInit"); }
   ~ScotchGraph() { SCOTCH_graphExit(&graph); }
-};
-
-// A context that makes Scotch deterministic (its threads otherwise race) with a fixed random seed
-// (`seed`, or Scotch's own for 0).
-struct ScotchContext {
-  SCOTCH_Context context;
-  explicit ScotchContext(std::int64_t seed) {
-    check(SCOTCH_contextInit(&context), "SCOTCH_contextInit");
-    check(SCOTCH_contextOptionSetNum(&context, SCOTCH_OPTIONNUMDETERMINISTIC, 1), "SCOTCH_contextOptionSetNum");
-    check(SCOTCH_contextOptionSetNum(&context, SCOTCH_OPTIONNUMRANDOMFIXEDSEED, 1), "SCOTCH_contextOptionSetNum");
-    if (seed != 0) SCOTCH_contextRandomSeed(&context, static_cast<SCOTCH_Num>(seed));
-    SCOTCH_contextRandomReset(&context);
-  }
-  ~ScotchContext() { SCOTCH_contextExit(&context); }
-};
-
-struct ScotchStrategy {
-  SCOTCH_Strat strategy;
-  ScotchStrategy() { check(SCOTCH_stratInit(&strategy), "SCOTCH_stratInit"); }
-  ~ScotchStrategy() { SCOTCH_stratExit(&strategy); }
 };
 
 }  // namespace
@@ -59,14 +28,14 @@ std::vector<int> partition_graph(const WeightedGraph& graph, int part_count, std
   auto* neighbours = const_cast<SCOTCH_Num*>(reinterpret_cast<const SCOTCH_Num*>(graph.neighbours.data()));
   auto* vertex_weights = const_cast<SCOTCH_Num*>(reinterpret_cast<const SCOTCH_Num*>(graph.vertex_weights.data()));
   auto* edge_weights = const_cast<SCOTCH_Num*>(reinterpret_cast<const SCOTCH_Num*>(graph.edge_weights.data()));
-  check(SCOTCH_graphBuild(&scotch.graph, 0, vertex_count, offsets, offsets + 1, vertex_weights, nullptr,
-                          static_cast<SCOTCH_Num>(graph.neighbours.size()), neighbours, edge_weights),
-        "SCOTCH_graphBuild");
-  check(SCOTCH_contextBindGraph(&context.context, &scotch.graph, &bound.graph), "SCOTCH_contextBindGraph");
+  check_scotch(SCOTCH_graphBuild(&scotch.graph, 0, vertex_count, offsets, offsets + 1, vertex_weights, nullptr,
+                                 static_cast<SCOTCH_Num>(graph.neighbours.size()), neighbours, edge_weights),
+               "SCOTCH_graphBuild");
+  check_scotch(SCOTCH_contextBindGraph(&context.context, &scotch.graph, &bound.graph), "SCOTCH_contextBindGraph");
   ScotchStrategy strategy;
-  check(SCOTCH_stratGraphMapBuild(&strategy.strategy, SCOTCH_STRATQUALITY, part_count, kPartImbalance), "SCOTCH_stratGraphMapBuild");
+  check_scotch(SCOTCH_stratGraphMapBuild(&strategy.strategy, SCOTCH_STRATQUALITY, part_count, kPartImbalance), "SCOTCH_stratGraphMapBuild");
   std::vector<SCOTCH_Num> scotch_parts(graph.vertex_weights.size());
-  check(SCOTCH_graphPart(&bound.graph, part_count, &strategy.strategy, scotch_parts.data()), "SCOTCH_graphPart");
+  check_scotch(SCOTCH_graphPart(&bound.graph, part_count, &strategy.strategy, scotch_parts.data()), "SCOTCH_graphPart");
   for (std::size_t k = 0; k < parts.size(); ++k) parts[k] = static_cast<int>(scotch_parts[k]);
   return parts;
 }

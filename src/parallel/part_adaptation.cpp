@@ -85,7 +85,7 @@ AdaptationRun adapt_part(MeshPart<D>& part, const AdaptationMetric<D>& metric, c
     part.mesh.vertex_attribute(attribute, v)[kGlobalIdColumn] = part.global_ids[v] + 1.0;
     part.mesh.vertex_attribute(attribute, v)[kPinnedColumn] = pinned ? part.pinned[v] : 0;
   }
-  part.mesh.build_topology();
+  if (!part.mesh.has_topology()) part.mesh.build_topology();  // a part from migrate_part has it
   const AdaptationRun run = adapt_to_metric(part.mesh, metric, geometry, settings);
   part.global_ids.resize(static_cast<std::size_t>(part.mesh.vertex_count()));
   part.pinned.resize(pinned ? part.global_ids.size() : 0);

@@ -3,13 +3,11 @@
 #include <algorithm>
 #include <string>
 #include <unordered_map>
-#include <unordered_set>
 
 #include "base/error.hpp"
 #include "parallel/byte_stream.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/entity_tags.hpp"
-#include "parallel/face_table.hpp"
 
 namespace hocav {
 namespace {
@@ -17,9 +15,6 @@ namespace {
 // Vertex flags (a corner, then the pinned flags shifted by one), and facet and line flags, in a message.
 constexpr char kCorner = 1;
 constexpr char kRequired = 1, kRidge = 2;
-
-template <int D>
-using FaceSet = std::unordered_set<FaceKey<D>, FaceKeyHash<D>>;
 
 // What one process sends another: its elements by global vertex ids, with per element the faces that
 // have a neighbour in the whole mesh (a bit per face), the vertices they use, the mesh's facets and
@@ -69,57 +64,56 @@ struct Shipment {
   }
 };
 
-// Builds the shipments of one process's part, one destination at a time.
+// Builds the shipments of one process's part (with its topology), one destination at a time.
 template <int D>
 struct Packer {
   const MeshPart<D>& part;
   const EntityTags<D> tags;
-  std::vector<typename Mesh<D>::Element> elements;  // by global ids
-  FaceTable<D> faces;
-  std::vector<std::vector<Index>> facets_of;  // per element: the mesh facets that go with it
+  std::vector<char> interface_face;                     // per element face: an interface facet lies on it
+  std::vector<std::pair<Index, Index>> element_facets;  // (element, facet) of the mesh's facets, sorted
   std::unordered_map<std::uint64_t, Index> line_of_edge;
   std::vector<int> vertex_stamp, line_stamp;  // the last destination that took each
 
   explicit Packer(const MeshPart<D>& p)
       : part(p),
         tags(p.mesh),
-        facets_of(static_cast<std::size_t>(p.mesh.element_count())),
+        interface_face(static_cast<std::size_t>(p.mesh.element_count()) * (D + 1), 0),
         vertex_stamp(static_cast<std::size_t>(p.mesh.vertex_count()), -1),
         line_stamp(static_cast<std::size_t>(p.mesh.line_count()), -1) {
     const Mesh<D>& mesh = part.mesh;
-    for (Index k = 0; k < mesh.element_count(); ++k) elements.push_back(mesh.element(k));
-    faces = face_table<D>(std::span<const typename Mesh<D>::Element>(elements));
     for (Index f = 0; f < mesh.facet_count(); ++f) {
-      if (mesh.facet_ref(f) == kInterfaceRef) continue;
-      const auto found = faces.find(sorted_key<D>(mesh.facet(f)));
-      if (found == faces.end()) throw Error("migrating a part: its facet " + std::to_string(f + 1) + " is no face of its elements");
-      facets_of[found->second.first].push_back(f);
+      const Index at = mesh.facet_element_face(f);
+      if (at == kNoIndex) throw Error("migrating a part: its facet " + std::to_string(f + 1) + " is no face of its elements");
+      if (mesh.facet_ref(f) == kInterfaceRef)
+        interface_face[at] = 1;
+      else
+        element_facets.emplace_back(at / (D + 1), f);
     }
+    std::sort(element_facets.begin(), element_facets.end());
     for (Index l = 0; l < mesh.line_count(); ++l) line_of_edge.emplace(Mesh<D>::edge_key(mesh.line(l)[0], mesh.line(l)[1]), l);
-    for (auto& element : elements)
-      for (Index& v : element) v = part.global_ids[v];
   }
 
   // The faces of element k that have a neighbour in the whole mesh: another element of the part, or
   // one across an interface facet.
-  char inner_faces(Index k, const FaceSet<D>& interface) const {
+  char inner_faces(Index k) const {
     char bits = 0;
-    for (int face = 0; face <= D; ++face) {
-      const FaceKey<D> key = face_key<D>(part.mesh.element(k), face);
-      if (faces.at(key).shared() || interface.contains(key)) bits = static_cast<char>(bits | (1 << face));
-    }
+    for (int face = 0; face <= D; ++face)
+      if (part.mesh.neighbor(k, face) != kNoIndex || interface_face[static_cast<std::size_t>(k) * (D + 1) + face])
+        bits = static_cast<char>(bits | (1 << face));
     return bits;
   }
 
-  Shipment<D> ship(int to, std::span<const Index> leaving, const FaceSet<D>& interface) {
+  Shipment<D> ship(int to, std::span<const Index> leaving) {
     const Mesh<D>& mesh = part.mesh;
     Shipment<D> s;
     for (Index k : leaving) {
       for (Index v : mesh.element(k)) add_vertex(s, to, v);
-      s.elements.push_back(elements[k]);
+      s.elements.push_back(global(mesh.element(k)));
       s.element_refs.push_back(mesh.element_ref(k));
-      s.inner_faces.push_back(inner_faces(k, interface));
-      for (Index f : facets_of[k]) {
+      s.inner_faces.push_back(inner_faces(k));
+      for (auto at = std::lower_bound(element_facets.begin(), element_facets.end(), std::pair{k, Index{0}});
+           at != element_facets.end() && at->first == k; ++at) {
+        const Index f = at->second;
         s.facets.push_back(global(mesh.facet(f)));
         s.facet_refs.push_back(mesh.facet_ref(f));
         s.facet_flags.push_back(static_cast<char>((tags.required_facet[f] ? kRequired : 0) | (tags.ridge_facet[f] ? kRidge : 0)));
@@ -164,6 +158,7 @@ struct Packer {
 template <int D>
 void check_part(const MeshPart<D>& part, std::span<const int> destination) {
   const auto vertices = static_cast<std::size_t>(part.mesh.vertex_count());
+  if (part.mesh.element_count() > 0 && !part.mesh.has_topology()) throw Error("migrating a part: it needs its topology");
   if (part.global_ids.size() != vertices || part.pinned.size() != vertices ||
       std::find(part.global_ids.begin(), part.global_ids.end(), kNoIndex) != part.global_ids.end())
     throw Error("migrating a part: every vertex needs its global id and pinned flag");
@@ -180,11 +175,8 @@ std::vector<std::vector<std::byte>> packed_shipments(const MeshPart<D>& part, st
   std::vector<std::vector<Index>> leaving(static_cast<std::size_t>(process_count()));
   for (std::size_t k = 0; k < destination.size(); ++k) leaving[destination[k]].push_back(static_cast<Index>(k));
   Packer<D> packer(part);
-  FaceSet<D> interface;
-  for (Index f = 0; f < part.mesh.facet_count(); ++f)
-    if (part.mesh.facet_ref(f) == kInterfaceRef) interface.insert(sorted_key<D>(part.mesh.facet(f)));
   std::vector<std::vector<std::byte>> out;
-  for (std::size_t to = 0; to < leaving.size(); ++to) out.push_back(packer.ship(static_cast<int>(to), leaving[to], interface).bytes());
+  for (std::size_t to = 0; to < leaving.size(); ++to) out.push_back(packer.ship(static_cast<int>(to), leaving[to]).bytes());
   return out;
 }
 
@@ -222,29 +214,28 @@ struct Unpacker {
     return out;
   }
 
+  // The elements, then (with the topology the elements give) the mesh's facets and a facet on each
+  // face with a neighbour in the whole mesh but none in the new part, as split_mesh makes them; the
+  // topology again, with the facets.
   void add_elements_and_facets() {
     for (const Shipment<D>& s : arrived)
       for (std::size_t k = 0; k < s.elements.size(); ++k) part.mesh.add_element(mapped(s.elements[k]), s.element_refs[k]);
+    if (part.mesh.element_count() == 0) return;
+    part.mesh.build_topology();
     for (const Shipment<D>& s : arrived)
       for (std::size_t f = 0; f < s.facets.size(); ++f) {
         const Index id = part.mesh.add_facet(mapped(s.facets[f]), s.facet_refs[f]);
         if (s.facet_flags[f] & kRequired) required_facets(part.mesh).push_back(id);
         if (s.facet_flags[f] & kRidge) part.mesh.ridges().push_back(id);
       }
-  }
-
-  // The faces with a neighbour in the whole mesh but none in the new part, as split_mesh makes them.
-  void add_interface_facets() {
-    const std::span<const typename Mesh<D>::Element> elements = part.mesh.elements();
-    const FaceTable<D> faces = face_table<D>(elements);
     std::vector<char> on_interface(part.global_ids.size(), 0);
     Index k = 0;
     for (const Shipment<D>& s : arrived)
       for (const char inner : s.inner_faces) {
         for (int face = 0; face <= D; ++face) {
-          if (!(inner & (1 << face)) || faces.at(face_key<D>(elements[k], face)).shared()) continue;
+          if (!(inner & (1 << face)) || part.mesh.neighbor(k, face) != kNoIndex) continue;
           typename Mesh<D>::Facet facet{};
-          for (int i = 0; i < D; ++i) facet[i] = elements[k][face_vertices<D>(face)[i]];
+          for (int i = 0; i < D; ++i) facet[i] = part.mesh.element(k)[face_vertices<D>(face)[i]];
           required_facets(part.mesh).push_back(part.mesh.add_facet(facet, kInterfaceRef));
           for (Index v : facet) on_interface[v] = 1;
         }
@@ -296,9 +287,9 @@ MeshPart<D> migrate_part(const MeshPart<D>& part, std::span<const int> destinati
   Unpacker<D> unpacker{arrived, {}, {}};
   unpacker.add_vertices();
   unpacker.add_elements_and_facets();
-  unpacker.add_interface_facets();
   if constexpr (D == 3) unpacker.add_lines();
   unpacker.add_nodes();
+  if (unpacker.part.mesh.element_count() > 0) unpacker.part.mesh.build_topology();
   return std::move(unpacker.part);
 }
 

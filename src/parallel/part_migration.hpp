@@ -10,14 +10,15 @@
 
 namespace hocav {
 
-// Every process at once: element k of this process's `part` goes to process destination[k] (this
-// one included). Returns the process's new part, as split_mesh makes parts: its vertices in the
+// Every process at once: element k of this process's `part` (with its topology) goes to process
+// destination[k] (this one included). Returns the process's new part, with its topology, and
+// otherwise as split_mesh makes parts: its vertices in the
 // order of their global ids; its elements by the process they come from, in rank order, each
 // process's in its part's order; the mesh's facets on its elements, then a required facet of ref
 // kInterfaceRef on each face towards another process, whose vertices are required; lines along its
 // elements' edges; P2 nodes when the parts are P2. Pinned vertices stay required, corners stay
-// corners. A facet of the mesh goes with the first element of the part that has it as a face.
-// Throws Error when `part` lacks a vertex's global id or pinned flag, a destination is no process,
+// corners. A facet of the mesh goes with the element the topology links it to.
+// Throws Error when `part` lacks its topology, a vertex's global id or pinned flag, a destination is no process,
 // or two processes give one vertex different points. Adds the bytes it sends other processes to
 // `bytes_sent` when given.
 template <int D>

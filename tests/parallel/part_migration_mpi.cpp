@@ -55,7 +55,7 @@ std::vector<std::string> described(const MeshPart<D>& part) {
   const Mesh<D>& mesh = part.mesh;
   const auto flag = [](const std::vector<Index>& list, Index id) { return std::find(list.begin(), list.end(), id) != list.end(); };
   const std::vector<Index>& required_facets = D == 2 ? mesh.required_edges() : mesh.required_triangles();
-  std::vector<std::string> lines;
+  std::vector<std::string> lines{"topology " + std::to_string(mesh.has_topology())};
   for (Index v = 0; v < mesh.vertex_count(); ++v)
     lines.push_back("v " + std::to_string(part.global_ids[v]) + ' ' + point<D>(mesh.vertex(v)) + std::to_string(mesh.vertex_ref(v)) +
                     " corner " + std::to_string(flag(mesh.corners(), v)) + " required " +
@@ -168,11 +168,14 @@ bool run(const Mesh<D>& mesh) {
   const std::vector<double> unit_loads(static_cast<std::size_t>(mesh.element_count()), 1.0);
   const WeightedGraph serial = element_graph(mesh, unit_loads, {});
   const std::vector<int> first_partition = partition_graph(serial, count);
-  const MeshPart<D> home = split_mesh(mesh, first_partition, count)[rank()];
+  MeshPart<D> home = split_mesh(mesh, first_partition, count)[rank()];
+  home.mesh.build_topology();
 
   // 1. To slabs of x, peer to peer.
   const MeshPart<D> slabbed = migrate_part(home, slabs_of(home));
-  bool ok = same(slabbed, split_mesh(mesh, slabs_of(mesh), count)[rank()], name + " in slabs against split_mesh");
+  MeshPart<D> slabs = split_mesh(mesh, slabs_of(mesh), count)[rank()];
+  slabs.mesh.build_topology();
+  bool ok = same(slabbed, slabs, name + " in slabs against split_mesh");
 
   // 2. Back home: the elements that crossed twice are the ones they were.
   const std::vector<int> back = homes(slabbed, mesh, first_partition);
@@ -217,7 +220,9 @@ bool run(const Mesh<D>& mesh) {
       if (found == process_of.end()) return fail(name + ": an element is in no part after PT-Scotch's migration");
       part_of.push_back(found->second);
     }
-    ok = same(balanced, split_mesh(mesh, part_of, count)[rank()], name + " in PT-Scotch's parts against split_mesh") && ok;
+    MeshPart<D> expected = split_mesh(mesh, part_of, count)[rank()];
+    expected.mesh.build_topology();
+    ok = same(balanced, expected, name + " in PT-Scotch's parts against split_mesh") && ok;
   }
   return ok;
 }
