@@ -9,13 +9,16 @@
 namespace hocav {
 
 struct DistributedIteration {
-  int iteration = 0;                          // 1-based
-  double metric_fraction = 1;                 // of the way from the input's own metric to the target
-  Index vertices = 0, elements = 0;           // of the merged mesh
-  Index interface_vertices = 0;               // shared by parts in the iteration
-  Index interface_faces = 0;                  // between parts, each counted once
-  long long bytes_sent = 0;                   // parts out and back, without the input's broadcast
-  double seconds = 0, seconds_partition = 0;  // the iteration, and its partitioning and split on rank 0
+  int iteration = 0;                 // 1-based
+  double metric_fraction = 1;        // of the way from the input's own metric to the target
+  Index vertices = 0, elements = 0;  // of the merged mesh
+  Index interface_vertices = 0;      // shared by parts in the iteration
+  Index interface_faces = 0;         // between parts, each counted once
+  // What the processes sent one another, without the input's broadcast: the migrations (the whole-mesh
+  // iterations), or the parts out and back (the band).
+  long long bytes_sent = 0;
+  // The iteration, and its partitioning with the migration or split (docs/usage.md).
+  double seconds = 0, seconds_partition = 0;
   // Per rank: the wall time of its part's adaptation, and its peak resident memory so far.
   std::vector<double> part_seconds;
   std::vector<long long> peak_memory_bytes;
