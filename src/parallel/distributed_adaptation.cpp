@@ -206,6 +206,28 @@ std::vector<char> flags_of_global_ids(const MeshPart<D>& part, const std::vector
   return flags;
 }
 
+// The last runs, serial on rank 0's merged mesh after the band. The band's parts kept their own
+// interfaces (`old_interface`) frozen where they cross the band: the first run tries first only
+// the region around them, the poor elements and the edges outside the unit window that the parts,
+// stopped early, left elsewhere. The second starts from what that run left (its poor elements and
+// edges outside the unit window) with its window open again: a run that closed its window early
+// cannot collapse what it made later. Their passes, in order; the second's flags.
+template <int D>
+AdaptationRun last_serial_runs(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
+                               const AdaptationSettings& settings, const std::vector<char>& old_interface) {
+  AdaptationSettings last = settings;
+  last.first_pass_vertices = around_interfaces(mesh, old_interface);
+  last.first_pass_unfinished_edges = true;
+  AdaptationRun run = adapt_to_metric(mesh, metric, geometry, last);
+  last.first_pass_vertices.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
+  const AdaptationRun again = adapt_to_metric(mesh, metric, geometry, last);
+  run.passes.insert(run.passes.end(), again.passes.begin(), again.passes.end());
+  run.converged = again.converged;
+  run.stopped_with_window_open = again.stopped_with_window_open;
+  run.caps_removed += again.caps_removed;
+  return run;
+}
+
 }  // namespace
 
 template <int D>
@@ -245,22 +267,11 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   run.caps_removed += band.caps_removed;
   if (on_iteration) on_iteration(root.figures);
   for (int p = 1; p < process_count(); ++p) send_bytes(p, {});  // stop
-  // The band's parts kept their own interfaces frozen, where they cross the band: the serial loop,
-  // from the merged mesh, tries first only the region around them, the poor elements and the edges
-  // outside the unit window that the parts, stopped early, left elsewhere.
-  AdaptationSettings last = settings;
-  last.first_pass_vertices = around_interfaces(mesh, root.old_interface);
-  last.first_pass_unfinished_edges = true;
-  const AdaptationRun mending = adapt_to_metric(mesh, metric, geometry, last);
-  run.passes.insert(run.passes.end(), mending.passes.begin(), mending.passes.end());
-  // Once more, from what that run left (its poor elements and edges outside the unit window) with
-  // its window open again: a run that closed its window early cannot collapse what it made later.
-  last.first_pass_vertices.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
-  const AdaptationRun again = adapt_to_metric(mesh, metric, geometry, last);
-  run.passes.insert(run.passes.end(), again.passes.begin(), again.passes.end());
-  run.converged = again.converged;
-  run.stopped_with_window_open = again.stopped_with_window_open;
-  run.caps_removed += mending.caps_removed + again.caps_removed;
+  const AdaptationRun last = last_serial_runs(mesh, metric, geometry, settings, root.old_interface);
+  run.passes.insert(run.passes.end(), last.passes.begin(), last.passes.end());
+  run.converged = last.converged;
+  run.stopped_with_window_open = last.stopped_with_window_open;
+  run.caps_removed += last.caps_removed;
   return run;
 }
 
