@@ -23,7 +23,6 @@ constexpr int kGlobalIdColumn = 0, kPinnedColumn = 1;
 
 // What the part's vertices and interface edges were before its loop, by global ids: its corners and
 // the feature lines on its interface edges (the whole mesh's; the loop's classification adds more).
-template <int D>
 struct TagsBefore {
   std::unordered_set<Index> corners;
   std::unordered_set<std::uint64_t> interface_lines;
@@ -45,8 +44,8 @@ std::uint64_t global_edge_key(const MeshPart<D>& part, const typename Mesh<D>::L
 }
 
 template <int D>
-TagsBefore<D> tags_before(const MeshPart<D>& part) {
-  TagsBefore<D> before;
+TagsBefore tags_before(const MeshPart<D>& part) {
+  TagsBefore before;
   for (Index v : part.mesh.corners()) before.corners.insert(part.global_ids[v]);
   const std::unordered_set<std::uint64_t> edges = interface_edges(part.mesh);
   for (Index l = 0; l < part.mesh.line_count(); ++l)
@@ -57,7 +56,7 @@ TagsBefore<D> tags_before(const MeshPart<D>& part) {
 
 // Drops the corners of old vertices and the lines on interface edges that were not there before.
 template <int D>
-void drop_interface_tags(MeshPart<D>& part, const TagsBefore<D>& before) {
+void drop_interface_tags(MeshPart<D>& part, const TagsBefore& before) {
   std::erase_if(part.mesh.corners(),
                 [&](Index v) { return part.global_ids[v] != kNoIndex && !before.corners.contains(part.global_ids[v]); });
   const std::unordered_set<std::uint64_t> edges = interface_edges(part.mesh);
@@ -78,7 +77,7 @@ template <int D>
 AdaptationRun adapt_part(MeshPart<D>& part, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                          const AdaptationSettings& settings) {
   if (part.mesh.element_count() == 0) return {};
-  const TagsBefore<D> before = tags_before(part);
+  const TagsBefore before = tags_before(part);
   const bool pinned = !part.pinned.empty();
   const int attribute = part.mesh.add_vertex_attribute(2);
   for (Index v = 0; v < part.mesh.vertex_count(); ++v) {
