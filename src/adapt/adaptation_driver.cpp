@@ -7,6 +7,7 @@
 
 #include "adapt/hausdorff_metric.hpp"
 #include "base/memory_budget.hpp"
+#include "base/stopwatch.hpp"
 #include "base/thread_pool.hpp"
 #include "geom/sym_eigen.hpp"
 #include "io/node_metrics.hpp"
@@ -16,10 +17,6 @@
 
 namespace hocav {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // On the pool's threads, in chunks that each start their back-mesh walk afresh: the same metrics for
 // any thread count.

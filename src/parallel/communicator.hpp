@@ -76,6 +76,14 @@ void broadcast_values(std::vector<T>& values) {
   values = values_of_bytes<T>(bytes);
 }
 
+// One message of values per process, as exchange_bytes takes them.
+template <typename T>
+std::vector<std::vector<std::byte>> bytes_of_messages(const std::vector<std::vector<T>>& messages) {
+  std::vector<std::vector<std::byte>> bytes;
+  for (const std::vector<T>& message : messages) bytes.push_back(bytes_of_values(message));
+  return bytes;
+}
+
 // Every process's `value`, in rank order, on every process.
 template <typename T>
 std::vector<T> all_gather_value(const T& value) {

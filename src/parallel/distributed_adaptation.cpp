@@ -9,6 +9,7 @@
 #include "adapt/vertex_classes.hpp"
 #include "base/error.hpp"
 #include "base/memory_budget.hpp"
+#include "base/stopwatch.hpp"
 #include "geom/sym_functions.hpp"
 #include "metric/gradation.hpp"
 #include "metric/implied_metric.hpp"
@@ -21,10 +22,6 @@
 
 namespace hocav {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // A whole-mesh iteration asks for sizes at most this many times finer than the mesh it starts from
 // (where the metric is finest against the input), if kDistributedIterations - 1 steps allow.

@@ -26,13 +26,6 @@ int meeting_process(const FaceKey<D>& face) {
   return static_cast<int>(FaceKeyHash<D>{}(face) % static_cast<std::size_t>(process_count()));
 }
 
-template <typename T>
-std::vector<std::vector<std::byte>> as_bytes(const std::vector<std::vector<T>>& messages) {
-  std::vector<std::vector<std::byte>> bytes;
-  for (const std::vector<T>& message : messages) bytes.push_back(bytes_of_values(message));
-  return bytes;
-}
-
 // Every process's interface sides to their meeting processes and back: per face of this process's
 // interfaces (by global vertex ids), the side across it.
 template <int D>
@@ -40,7 +33,7 @@ std::unordered_map<FaceKey<D>, FaceSide<D>, FaceKeyHash<D>> sides_across(const s
   std::vector<std::vector<FaceSide<D>>> outgoing(static_cast<std::size_t>(process_count()));
   for (const FaceSide<D>& side : own) outgoing[meeting_process<D>(side.face)].push_back(side);
   std::unordered_map<FaceKey<D>, std::vector<FaceSide<D>>, FaceKeyHash<D>> met;
-  for (const std::vector<std::byte>& bytes : exchange_bytes(as_bytes(outgoing)))
+  for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(outgoing)))
     for (const FaceSide<D>& side : values_of_bytes<FaceSide<D>>(bytes)) met[side.face].push_back(side);
   std::vector<std::vector<FaceSide<D>>> answers(outgoing.size());
   for (const auto& [face, sides] : met) {
@@ -49,7 +42,7 @@ std::unordered_map<FaceKey<D>, FaceSide<D>, FaceKeyHash<D>> sides_across(const s
     answers[sides[1].process].push_back(sides[0]);
   }
   std::unordered_map<FaceKey<D>, FaceSide<D>, FaceKeyHash<D>> across;
-  for (const std::vector<std::byte>& bytes : exchange_bytes(as_bytes(answers)))
+  for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(answers)))
     for (const FaceSide<D>& side : values_of_bytes<FaceSide<D>>(bytes)) across.emplace(side.face, side);
   return across;
 }

@@ -185,15 +185,9 @@ struct PartMerger {
     for (Index v : part.corners())
       if (parts[p].global_ids[v] == kNoIndex) out.mesh.corners().push_back(vertices.merged_ids[p][v]);
     for (Index k = 0; k < part.element_count(); ++k) out.mesh.add_element(mapped(p, part.element(k)), part.element_ref(k));
-    std::unordered_set<std::uint64_t> interface_edges;
-    for (Index f = 0; f < part.facet_count(); ++f) {
-      if (part.facet_ref(f) != kInterfaceRef) {
-        add_tagged_facet(out.mesh, mapped(p, part.facet(f)), part.facet_ref(f), tags, f);
-        continue;
-      }
-      for (int i = 0; i < D; ++i) interface_edges.insert(Mesh<D>::edge_key(part.facet(f)[i], part.facet(f)[(i + 1) % D]));
-    }
-    if constexpr (D == 3) add_lines(p, tags, interface_edges);
+    for (Index f = 0; f < part.facet_count(); ++f)
+      if (part.facet_ref(f) != kInterfaceRef) add_tagged_facet(out.mesh, mapped(p, part.facet(f)), part.facet_ref(f), tags, f);
+    if constexpr (D == 3) add_lines(p, tags, interface_edge_keys(part));
   }
 
   // A line on an interface edge that the whole mesh had not was made by the part's classification.
@@ -277,31 +271,32 @@ Index interface_face_count(const std::vector<MeshPart<D>>& parts) {
   return count / 2;
 }
 
-namespace {
-
-// The edges of a part's interface facets (by local ids); their vertices marked in `interface_vertex`
-// (by global ids).
 template <int D>
-std::unordered_set<std::uint64_t> interface_edges(const MeshPart<D>& part, std::vector<char>& interface_vertex) {
-  std::unordered_set<std::uint64_t> edges;
-  for (Index f = 0; f < part.mesh.facet_count(); ++f) {
-    if (part.mesh.facet_ref(f) != kInterfaceRef) continue;
-    const auto& facet = part.mesh.facet(f);
-    for (int i = 0; i < D; ++i) {
-      interface_vertex[part.global_ids[facet[i]]] = 1;
-      if (D == 3 || i == 0) edges.insert(Mesh<D>::edge_key(facet[i], facet[(i + 1) % D]));
-    }
-  }
-  return edges;
+std::vector<char> interface_vertex_flags(const Mesh<D>& mesh) {
+  std::vector<char> on(static_cast<std::size_t>(mesh.vertex_count()), 0);
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    if (!mesh.facet_removed(f) && mesh.facet_ref(f) == kInterfaceRef)
+      for (Index v : mesh.facet(f)) on[v] = 1;
+  return on;
 }
 
-}  // namespace
+template <int D>
+std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<D>& mesh) {
+  std::unordered_set<std::uint64_t> edges;
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    if (!mesh.facet_removed(f) && mesh.facet_ref(f) == kInterfaceRef)
+      for (int i = 0; i < (D == 3 ? 3 : 1); ++i) edges.insert(Mesh<D>::edge_key(mesh.facet(f)[i], mesh.facet(f)[(i + 1) % D]));
+  return edges;
+}
 
 template <int D>
 std::vector<char> write_back_nodes(Mesh<D>& mesh, const std::vector<MeshPart<D>>& parts, std::vector<char>* written) {
   std::vector<char> interface_vertex(static_cast<std::size_t>(mesh.vertex_count()), 0);
   for (const MeshPart<D>& part : parts) {
-    const std::unordered_set<std::uint64_t> frozen = interface_edges(part, interface_vertex);
+    const std::unordered_set<std::uint64_t> frozen = interface_edge_keys(part.mesh);
+    const std::vector<char> on_interface = interface_vertex_flags(part.mesh);
+    for (Index v = 0; v < part.mesh.vertex_count(); ++v)
+      if (on_interface[v]) interface_vertex[part.global_ids[v]] = 1;
     for (Index e = 0; e < part.mesh.edge_count(); ++e) {
       const auto& ends = part.mesh.edge_vertices(e);
       if (ends[0] == kNoIndex) continue;  // a removed edge
@@ -320,6 +315,10 @@ std::vector<char> write_back_nodes(Mesh<D>& mesh, const std::vector<MeshPart<D>>
   return interface_vertex;
 }
 
+template std::vector<char> interface_vertex_flags(const Mesh<2>&);
+template std::vector<char> interface_vertex_flags(const Mesh<3>&);
+template std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<2>&);
+template std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<3>&);
 template std::vector<char> write_back_nodes(Mesh<2>&, const std::vector<MeshPart<2>>&, std::vector<char>*);
 template std::vector<char> write_back_nodes(Mesh<3>&, const std::vector<MeshPart<3>>&, std::vector<char>*);
 template std::vector<MeshPart<2>> split_mesh(const Mesh<2>&, std::span<const int>, int);

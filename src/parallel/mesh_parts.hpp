@@ -5,6 +5,7 @@
 
 #include <limits>
 #include <span>
+#include <unordered_set>
 #include <vector>
 
 #include "mesh/mesh.hpp"
@@ -36,6 +37,14 @@ struct MeshPart {
 // facets too; a P2 mesh gives P2 parts with the same nodes.
 template <int D>
 std::vector<MeshPart<D>> split_mesh(const Mesh<D>& mesh, std::span<const int> part_of, int part_count);
+
+// Per vertex of a part's mesh: on one of its interface facets.
+template <int D>
+std::vector<char> interface_vertex_flags(const Mesh<D>& mesh);
+
+// The edges of a part's interface facets, by Mesh::edge_key of their local vertex ids.
+template <int D>
+std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<D>& mesh);
 
 // The whole mesh (with topology) as one part, for migrate_part to scatter: global ids the vertex ids,
 // pinned flags for its required vertices and non-manifold places, no interface.

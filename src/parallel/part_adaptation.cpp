@@ -7,6 +7,7 @@
 #include <unordered_set>
 
 #include "base/memory_budget.hpp"
+#include "base/stopwatch.hpp"
 
 namespace hocav {
 namespace {
@@ -28,16 +29,6 @@ struct TagsBefore {
   std::unordered_set<std::uint64_t> interface_lines;
 };
 
-// The edges of the part's interface facets, by local ids.
-template <int D>
-std::unordered_set<std::uint64_t> interface_edges(const Mesh<D>& mesh) {
-  std::unordered_set<std::uint64_t> edges;
-  for (Index f = 0; f < mesh.facet_count(); ++f)
-    if (!mesh.facet_removed(f) && mesh.facet_ref(f) == kInterfaceRef)
-      for (int i = 0; i < D; ++i) edges.insert(Mesh<D>::edge_key(mesh.facet(f)[i], mesh.facet(f)[(i + 1) % D]));
-  return edges;
-}
-
 template <int D>
 std::uint64_t global_edge_key(const MeshPart<D>& part, const typename Mesh<D>::Line& line) {
   return Mesh<D>::edge_key(part.global_ids[line[0]], part.global_ids[line[1]]);
@@ -47,7 +38,7 @@ template <int D>
 TagsBefore tags_before(const MeshPart<D>& part) {
   TagsBefore before;
   for (Index v : part.mesh.corners()) before.corners.insert(part.global_ids[v]);
-  const std::unordered_set<std::uint64_t> edges = interface_edges(part.mesh);
+  const std::unordered_set<std::uint64_t> edges = interface_edge_keys(part.mesh);
   for (Index l = 0; l < part.mesh.line_count(); ++l)
     if (edges.contains(Mesh<D>::edge_key(part.mesh.line(l)[0], part.mesh.line(l)[1])))
       before.interface_lines.insert(global_edge_key(part, part.mesh.line(l)));
@@ -59,7 +50,7 @@ template <int D>
 void drop_interface_tags(MeshPart<D>& part, const TagsBefore& before) {
   std::erase_if(part.mesh.corners(),
                 [&](Index v) { return part.global_ids[v] != kNoIndex && !before.corners.contains(part.global_ids[v]); });
-  const std::unordered_set<std::uint64_t> edges = interface_edges(part.mesh);
+  const std::unordered_set<std::uint64_t> edges = interface_edge_keys(part.mesh);
   bool dropped = false;
   for (Index l = 0; l < part.mesh.line_count(); ++l) {
     const auto& line = part.mesh.line(l);
@@ -110,8 +101,7 @@ std::pair<AdaptationRun, PartFigures> adapt_part_measured(MeshPart<D>& part, con
                                                           const BoundaryGeometry<D>* geometry, const AdaptationSettings& settings) {
   const auto start = std::chrono::steady_clock::now();
   AdaptationRun run = adapt_part(part, metric, geometry, settings);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return {std::move(run), PartFigures{seconds, peak_resident_bytes()}};
+  return {std::move(run), PartFigures{seconds_since(start), peak_resident_bytes()}};
 }
 
 static_assert(std::is_trivially_copyable_v<AdaptationPass>);

@@ -5,6 +5,7 @@
 #include <numeric>
 #include <unordered_set>
 
+#include "base/stopwatch.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_graph.hpp"
 #include "parallel/part_adaptation.hpp"
@@ -12,10 +13,6 @@
 
 namespace hocav {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 template <typename T>
 T sum_over_processes(T value) {
@@ -34,16 +31,6 @@ void number_new_vertices(MeshPart<D>& part, Index& next_global_id) {
   next_global_id += std::accumulate(counts.begin(), counts.end(), Index{0});
 }
 
-// Per vertex of the part: on one of its interface facets.
-template <int D>
-std::vector<char> interface_vertex_flags(const Mesh<D>& mesh) {
-  std::vector<char> on(static_cast<std::size_t>(mesh.vertex_count()), 0);
-  for (Index f = 0; f < mesh.facet_count(); ++f)
-    if (mesh.facet_ref(f) == kInterfaceRef)
-      for (Index v : mesh.facet(f)) on[v] = 1;
-  return on;
-}
-
 // The global ids of the flagged vertices.
 template <int D>
 std::vector<Index> global_ids_of(const MeshPart<D>& part, const std::vector<char>& flagged) {
@@ -58,10 +45,8 @@ std::vector<Index> global_ids_of(const MeshPart<D>& part, const std::vector<char
 Index distinct_count(const std::vector<Index>& ids) {
   std::vector<std::vector<Index>> outgoing(static_cast<std::size_t>(process_count()));
   for (Index id : ids) outgoing[static_cast<std::size_t>(id) % outgoing.size()].push_back(id);
-  std::vector<std::vector<std::byte>> bytes;
-  for (const std::vector<Index>& message : outgoing) bytes.push_back(bytes_of_values(message));
   std::unordered_set<Index> met;
-  for (const std::vector<std::byte>& message : exchange_bytes(bytes))
+  for (const std::vector<std::byte>& message : exchange_bytes(bytes_of_messages(outgoing)))
     for (Index id : values_of_bytes<Index>(message)) met.insert(id);
   return sum_over_processes(static_cast<Index>(met.size()));
 }

@@ -148,9 +148,7 @@ bool graph_is_the_meshes(const DistributedGraph& graph, const WeightedGraph& ser
     for (std::int64_t a = graph.rows.offsets[i]; a < graph.rows.offsets[i + 1]; ++a)
       arcs[owner(graph.rows.neighbours[a])].push_back(
           {graph.rows.neighbours[a], graph.first + static_cast<std::int64_t>(i), graph.rows.edge_weights[a]});
-  std::vector<std::vector<std::byte>> out;
-  for (const auto& list : arcs) out.push_back(bytes_of_values(list));
-  for (const std::vector<std::byte>& bytes : exchange_bytes(out))
+  for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(arcs)))
     for (const auto& [row, head, weight] : values_of_bytes<std::array<std::int64_t, 3>>(bytes)) {
       const auto i = static_cast<std::size_t>(row - graph.first);
       bool found = false;
