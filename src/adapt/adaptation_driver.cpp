@@ -144,6 +144,18 @@ void make_job_metric(AdaptationSetup<D>& out, const Mesh<D>& input, std::vector<
 }  // namespace
 
 template <int D>
+AdaptationSettings job_settings(const AdaptationJob<D>& job, double hausd) {
+  AdaptationSettings settings;
+  settings.max_passes = job.iterations;
+  settings.feature_angle_degrees = job.angle;
+  settings.hausd = hausd;
+  settings.threads = job.threads;
+  settings.progress = job.pass_progress;
+  settings.measure_output = job.measure_output;
+  return settings;
+}
+
+template <int D>
 std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job,
                                                       const std::string& name) {
   auto setup = std::make_unique<AdaptationSetup<D>>();
@@ -155,13 +167,7 @@ std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector
     const char* given = job.hausd && relative_given ? "--hausd, --hausd-relative" : job.hausd ? "--hausd" : "--hausd-relative";
     job.warn(std::string("the Hausdorff bound (") + given + ") bounds nothing without a boundary geometry (--surface none)");
   }
-  AdaptationSettings& settings = setup->settings;
-  settings.max_passes = job.iterations;
-  settings.feature_angle_degrees = job.angle;
-  settings.hausd = job.hausd.value_or(kRelativeHausd * bounding_box_diagonal(back));
-  settings.threads = job.threads;
-  settings.progress = job.pass_progress;
-  settings.measure_output = job.measure_output;
+  setup->settings = job_settings(job, job.hausd.value_or(kRelativeHausd * bounding_box_diagonal(back)));
   make_job_metric(*setup, back, std::move(metrics), job);
   const double expected = expected_element_count(back, *setup->metric);
   check_memory_fits("adapting " + name + " (the metric asks for about " + std::to_string(static_cast<long long>(expected)) + " elements)",
@@ -194,6 +200,8 @@ AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics,
   return adapted;
 }
 
+template AdaptationSettings job_settings(const AdaptationJob<2>&, double);
+template AdaptationSettings job_settings(const AdaptationJob<3>&, double);
 template void prepare_boundary(Mesh<2>&, const std::string&, const std::function<void(const std::string&)>&);
 template void prepare_boundary(Mesh<3>&, const std::string&, const std::function<void(const std::string&)>&);
 template AdaptedMesh<2> run_adaptation_job(Mesh<2>&, std::vector<SymMat<2>>, const AdaptationJob<2>&, const std::string&);

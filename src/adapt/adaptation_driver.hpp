@@ -81,9 +81,13 @@ struct AdaptationJob {
   CurvingStep<D> curve;    // empty: curve_in_metric
 };
 
-// What a job adapts with, made alike by every process of a distributed run: the input as back mesh
-// with its (graded) metric, or the analytic metric; the size bounds; the boundary geometry of the
-// input; the loop's settings.
+// The loop's settings of a job; `hausd` the Hausdorff distance (the job's, or its default from the input).
+template <int D>
+AdaptationSettings job_settings(const AdaptationJob<D>& job, double hausd);
+
+// What a job adapts with (on rank 0 of a distributed run): the input as back mesh with its (graded)
+// metric, or the analytic metric; the size bounds; the boundary geometry of the input; the loop's
+// settings.
 template <int D>
 struct AdaptationSetup {
   Mesh<D> input;  // the field's back mesh

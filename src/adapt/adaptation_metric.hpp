@@ -41,6 +41,13 @@ class AdaptationMetric {
   // result.
   AdaptationMetric partway_from(const MetricField<D>& start, double fraction) const;
 
+  // What it is made of (a distributed run remakes it on a share of the back mesh): the analytic
+  // field, if it is one; its field on the back mesh, a field's or an analytic metric's Hausdorff
+  // bound (null: none); its size bounds.
+  const std::optional<AnalyticMetricSpec>& analytic() const { return analytic_; }
+  const MetricField<D>* field() const { return field_ ? field_ : hausdorff_; }
+  SizeBounds bounds() const { return bounds_; }
+
  private:
   SymMat<D> target_at(const Vec<D>& x, Index& hint) const;
 

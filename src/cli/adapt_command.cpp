@@ -22,6 +22,7 @@
 #include "io/atomic_output.hpp"
 #include "io/node_metrics.hpp"
 #include "io/output_set.hpp"
+#include "mesh/boundary_mesh.hpp"
 #include "metric/implied_metric.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_adaptation.hpp"
@@ -150,60 +151,59 @@ void print_iteration(const DistributedIteration& figures) {
   std::cerr << line.str();
 }
 
-// With several processes (docs/distributed.md): the input and its metric to every process, and the
-// distributed loop in place of the serial one; its iterations' figures go to `iterations`.
+// The boundary of `mesh` to every process, whose geometry is made from it (the same as rank 0's):
+// no other process holds the whole mesh (docs/distributed.md §What each process holds).
 template <int D>
-void distribute(Mesh<D>& mesh, std::vector<SymMat<D>>& metrics, AdaptationJob<D>& job, const AdaptOptions& o,
-                std::vector<DistributedIteration>& iterations) {
-  mesh.forget_edges();
-  std::vector<std::byte> input = pack_part(mesh, {});
-  broadcast_bytes(input);
-  broadcast_values(metrics);
+void broadcast_boundary(const Mesh<D>& mesh) {
+  std::vector<std::byte> bytes = pack_part(boundary_mesh_of(mesh), {});
+  broadcast_bytes(bytes);
+}
+
+// With several processes (docs/distributed.md): the distributed loop in place of the serial one, the
+// input's boundary sent first; its iterations' figures go to `iterations`.
+template <int D>
+void distribute(AdaptationJob<D>& job, const AdaptOptions& o, std::vector<DistributedIteration>& iterations) {
   std::function<void(const DistributedIteration&)> on_iteration = [&iterations, quiet = o.quiet](const DistributedIteration& figures) {
     if (!quiet) print_iteration(figures);
     iterations.push_back(figures);
   };
   job.loop = [on_iteration, seed = o.partition_seed](Mesh<D>& adapted, const AdaptationMetric<D>& metric,
                                                      const BoundaryGeometry<D>* geometry, const AdaptationSettings& settings) {
+    broadcast_boundary(adapted);
     return adapt_distributed(adapted, metric, geometry, settings, seed, on_iteration);
   };
-  // The adapted mesh to every process, whose curving geometry is made from it.
   job.curve = [quiet = o.quiet](Mesh<D>& adapted, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
                                 const CurvingOptions& curving) {
-    std::vector<std::byte> bytes = pack_part(adapted, {});
-    broadcast_bytes(bytes);
+    broadcast_boundary(adapted);
     return curve_distributed(adapted, field, geometry, curving, quiet ? nullptr : print_curving_round);
   };
 }
 
-// The other processes: the same job on rank 0's input, serving its distributed loop.
+// The other processes: the same job, serving rank 0's distributed loop with the geometry of the
+// input's boundary, then (order 2) its distributed curving with the geometry of the adapted mesh's.
 template <int D>
-void serve_adaptation(const AdaptOptions& o, const std::vector<std::byte>& input) {
-  MeshPart<D> part = unpack_part<D>(input);
-  part.mesh.build_topology();
-  std::vector<SymMat<D>> metrics;
-  broadcast_values(metrics);
+void serve_adaptation(const AdaptOptions& o, const std::vector<std::byte>& input_boundary) {
   AdaptationJob<D> job = adaptation_job<D>(o);
   job.warn = {};  // rank 0 warns
   job.pass_progress = {};
-  const auto setup = set_up_adaptation(std::move(part.mesh), std::move(metrics), job, o.input);
-  serve_distributed_adaptation(setup->input, *setup->metric, setup->geometry.get(), setup->settings);
+  {
+    const auto geometry = job.geometry(unpack_part<D>(input_boundary).mesh);
+    serve_distributed_adaptation(job.analytic, geometry.get(), job_settings(job, 0));
+  }  // one CAD model open at a time, as on rank 0
   if (!job.curving) return;
-  setup->geometry.reset();  // one CAD model open at a time, as on rank 0
   std::vector<std::byte> bytes;
   broadcast_bytes(bytes);
-  const MeshPart<D> adapted = unpack_part<D>(bytes);
-  const auto geometry = job.geometry(adapted.mesh);
+  const auto geometry = job.geometry(unpack_part<D>(bytes).mesh);
   serve_distributed_curving(geometry.get(), *job.curving);
 }
 
 void serve_adaptation(const AdaptOptions& o) {
-  std::vector<std::byte> input;
-  broadcast_bytes(input);
-  if (packed_dimension(input) == 2)
-    serve_adaptation<2>(o, input);
+  std::vector<std::byte> input_boundary;
+  broadcast_bytes(input_boundary);
+  if (packed_dimension(input_boundary) == 2)
+    serve_adaptation<2>(o, input_boundary);
   else
-    serve_adaptation<3>(o, input);
+    serve_adaptation<3>(o, input_boundary);
 }
 
 template <int D>
@@ -213,7 +213,7 @@ void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, Ou
   std::vector<SymMat<D>> metrics = vertex_metrics(mesh, file, o);
   AdaptationJob<D> job = adaptation_job<D>(o);
   std::vector<DistributedIteration> iterations;
-  if (process_count() > 1) distribute(mesh, metrics, job, o, iterations);
+  if (process_count() > 1) distribute(job, o, iterations);
   std::optional<CurvingProgress> progress;  // drawn on a terminal, unless quiet
   job.before_curving = [&progress, &o](const Mesh<D>& adapted, CurvingOptions& curving) {
     progress.emplace(adapted, curving.passes, !o.quiet);

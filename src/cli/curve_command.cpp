@@ -14,6 +14,7 @@
 #include "io/atomic_output.hpp"
 #include "io/node_metrics.hpp"
 #include "io/output_set.hpp"
+#include "mesh/boundary_mesh.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_curving.hpp"
 #include "parallel/part_message.hpp"
@@ -47,33 +48,33 @@ CurvingReport curve_with_progress(Mesh<D>& mesh, const MetricField<D>& field, co
   return report;
 }
 
-// With several processes: the input to every process (their geometry is made from it), and the
-// distributed curving in place of the serial one.
+// With several processes: the input's boundary to every process (their geometry is made from it:
+// docs/distributed.md §What each process holds), and the distributed curving in place of the serial one.
 template <int D>
 CurvingReport curve_on_every_process(Mesh<D>& mesh, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
                                      const CurvingOptions& curving, bool quiet) {
-  std::vector<std::byte> input = pack_part(mesh, {});
-  broadcast_bytes(input);
+  std::vector<std::byte> boundary = pack_part(boundary_mesh_of(mesh), {});
+  broadcast_bytes(boundary);
   std::function<void(const DistributedCurvingRound&)> on_round;
   if (!quiet) on_round = print_curving_round;
   return curve_distributed(mesh, field, geometry, curving, on_round);
 }
 
-// The other processes: rank 0's input, its geometry, and the parts rank 0 sends.
+// The other processes: the geometry of rank 0's input's boundary, and the parts rank 0 sends.
 template <int D>
-void serve_curving(const CurveOptions& options, const std::vector<std::byte>& input) {
-  const MeshPart<D> whole = unpack_part<D>(input);
-  const auto geometry = make_boundary_geometry<D>(boundary_choice_named(options.surface), whole.mesh);
+void serve_curving(const CurveOptions& options, const std::vector<std::byte>& input_boundary) {
+  const MeshPart<D> boundary = unpack_part<D>(input_boundary);
+  const auto geometry = make_boundary_geometry<D>(boundary_choice_named(options.surface), boundary.mesh);
   serve_distributed_curving(geometry.get(), curving_options(options));
 }
 
 void serve_curving(const CurveOptions& options) {
-  std::vector<std::byte> input;
-  broadcast_bytes(input);
-  if (packed_dimension(input) == 2)
-    serve_curving<2>(options, input);
+  std::vector<std::byte> input_boundary;
+  broadcast_bytes(input_boundary);
+  if (packed_dimension(input_boundary) == 2)
+    serve_curving<2>(options, input_boundary);
   else
-    serve_curving<3>(options, input);
+    serve_curving<3>(options, input_boundary);
 }
 
 template <int D>

@@ -11,15 +11,19 @@ namespace hocav {
 namespace {
 
 template <int D>
+void check_positive_elements(const Mesh<D>& back) {
+  for (Index k = 0; k < back.element_count(); ++k)
+    if (!(element_measure(back, k) > 0))
+      throw Error("back mesh: element " + std::to_string(k + 1) +
+                  " has non-positive straight (P1) measure; the metric's back mesh must be a valid P1 mesh");
+}
+
+template <int D>
 std::unique_ptr<Mesh<D>> straight_copy(const Mesh<D>& mesh) {
   auto back = std::make_unique<Mesh<D>>();
   for (Index v = 0; v < mesh.vertex_count(); ++v) back->add_vertex(mesh.vertex(v), mesh.vertex_ref(v));
-  for (Index k = 0; k < mesh.element_count(); ++k) {
-    back->add_element(mesh.element(k), mesh.element_ref(k));
-    if (!(element_measure(*back, k) > 0))
-      throw Error("back mesh: element " + std::to_string(k + 1) +
-                  " has non-positive straight (P1) measure; the metric's back mesh must be a valid P1 mesh");
-  }
+  for (Index k = 0; k < mesh.element_count(); ++k) back->add_element(mesh.element(k), mesh.element_ref(k));
+  check_positive_elements(*back);
   for (Index f = 0; f < mesh.facet_count(); ++f) back->add_facet(mesh.facet(f), mesh.facet_ref(f));
   back->build_topology();
   return back;
@@ -38,20 +42,36 @@ std::vector<SymMat<D>> logarithms(const std::vector<SymMat<D>>& metrics) {
 }  // namespace
 
 template <int D>
-MetricField<D>::MetricField(const Mesh<D>& mesh, std::vector<SymMat<D>> log_metrics, bool)
-    : back_mesh_(straight_copy(mesh)), log_metrics_(std::move(log_metrics)) {
+MetricField<D>::MetricField(std::shared_ptr<const Mesh<D>> back_mesh, std::shared_ptr<const PointLocator<D>> locator,
+                            std::vector<SymMat<D>> log_metrics)
+    : back_mesh_(std::move(back_mesh)), locator_(std::move(locator)), log_metrics_(std::move(log_metrics)) {
   if (log_metrics_.size() != static_cast<std::size_t>(back_mesh_->vertex_count()))
     throw Error("metric field: " + std::to_string(log_metrics_.size()) + " metrics for " + std::to_string(back_mesh_->vertex_count()) +
                 " vertices");
-  locator_ = std::make_unique<PointLocator<D>>(*back_mesh_);
 }
 
 template <int D>
-MetricField<D>::MetricField(const Mesh<D>& mesh, const std::vector<SymMat<D>>& metrics) : MetricField(mesh, logarithms(metrics), true) {}
+MetricField<D>::MetricField(const Mesh<D>& mesh, const std::vector<SymMat<D>>& metrics)
+    : MetricField(MetricField::from_log_metrics(mesh, logarithms(metrics))) {}
 
 template <int D>
 MetricField<D> MetricField<D>::from_log_metrics(const Mesh<D>& mesh, std::vector<SymMat<D>> log_metrics) {
-  return MetricField(mesh, std::move(log_metrics), true);
+  std::shared_ptr<const Mesh<D>> back = straight_copy(mesh);
+  auto locator = std::make_shared<const PointLocator<D>>(*back);
+  return MetricField(std::move(back), std::move(locator), std::move(log_metrics));
+}
+
+template <int D>
+MetricField<D> MetricField<D>::on_back_mesh(std::shared_ptr<const Mesh<D>> back_mesh, std::vector<SymMat<D>> log_metrics) {
+  if (!back_mesh->has_topology() && back_mesh->element_count() > 0) throw Error("a metric field's shared back mesh has no topology");
+  check_positive_elements(*back_mesh);
+  auto locator = std::make_shared<const PointLocator<D>>(*back_mesh);
+  return MetricField(std::move(back_mesh), std::move(locator), std::move(log_metrics));
+}
+
+template <int D>
+MetricField<D> MetricField<D>::with_log_metrics(std::vector<SymMat<D>> log_metrics) const {
+  return MetricField(back_mesh_, locator_, std::move(log_metrics));
 }
 
 template <int D>

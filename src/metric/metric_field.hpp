@@ -23,6 +23,12 @@ class MetricField {
   MetricField(const Mesh<D>& mesh, const std::vector<SymMat<D>>& metrics);
   // The same from log-metrics (any symmetric matrices), e.g. from an analytic field.
   static MetricField from_log_metrics(const Mesh<D>& mesh, std::vector<SymMat<D>> log_metrics);
+  // The same on a mesh shared with its owner (with its topology, never modified while the field
+  // lives): no copy.
+  static MetricField on_back_mesh(std::shared_ptr<const Mesh<D>> back_mesh, std::vector<SymMat<D>> log_metrics);
+  // Another field on this one's back mesh, sharing the mesh and its locator (no copy): one log-metric
+  // per back vertex.
+  MetricField with_log_metrics(std::vector<SymMat<D>> log_metrics) const;
 
   const Mesh<D>& back_mesh() const { return *back_mesh_; }
   const PointLocator<D>& locator() const { return *locator_; }
@@ -69,14 +75,15 @@ class MetricField {
   Sample sample(const Vec<D>& x, const ElementFrame& frame, LocatorScratch& scratch) const;
 
  private:
-  MetricField(const Mesh<D>& mesh, std::vector<SymMat<D>> log_metrics, bool);
+  MetricField(std::shared_ptr<const Mesh<D>> back_mesh, std::shared_ptr<const PointLocator<D>> locator, std::vector<SymMat<D>> log_metrics);
   // Σ_i λ_i R_i over the corners of a back element.
   SymMat<D> interpolate(Index back_element, const Barycentrics<D>& lambda) const;
   std::array<SymMat<D>, D> log_metric_gradient(Index back_element, const std::array<Vec<D>, D + 1>& barycentric_gradients) const;
 
-  std::unique_ptr<Mesh<D>> back_mesh_;  // behind a pointer: the locator refers to it across moves
+  // Behind pointers: the locator refers to the mesh across moves, and fields on one back mesh share both.
+  std::shared_ptr<const Mesh<D>> back_mesh_;
+  std::shared_ptr<const PointLocator<D>> locator_;
   std::vector<SymMat<D>> log_metrics_;
-  std::unique_ptr<PointLocator<D>> locator_;
 };
 
 // The metric (not its log) at each point (sample_within), each localization starting where the

@@ -93,6 +93,14 @@ std::vector<T> all_gather_value(const T& value) {
   return values;
 }
 
+// The sum of every process's `value`, on every process.
+template <typename T>
+T sum_over_processes(const T& value) {
+  T sum{};
+  for (const T& each : all_gather_value(value)) sum += each;
+  return sum;
+}
+
 template <typename T>
 void send_values(int to, const std::vector<T>& values) {
   send_bytes(to, bytes_of_values(values));

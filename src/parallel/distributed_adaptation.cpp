@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <utility>
 
@@ -13,12 +14,14 @@
 #include "geom/sym_functions.hpp"
 #include "metric/gradation.hpp"
 #include "metric/implied_metric.hpp"
+#include "parallel/back_mesh_share.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/element_partition.hpp"
 #include "parallel/part_adaptation.hpp"
 #include "parallel/part_message.hpp"
 #include "parallel/part_migration.hpp"
 #include "parallel/peer_iteration.hpp"
+#include "parallel/share_metric.hpp"
 
 namespace hocav {
 namespace {
@@ -79,17 +82,33 @@ PartInterfaces interfaces_between(const Mesh<D>& mesh, std::span<const int> part
   return out;
 }
 
+// Collective: the metric on the back mesh around `mesh` (a part), gathered from every process's home
+// share (empty for an empty `mesh`); its bytes and time in rank 0's `figures`. Gathered afresh for
+// every part: keeping the last share, to send only what a part's region gained, cost more memory
+// than it saved in messages (docs/distributed.md §The back mesh in shares).
+template <int D>
+std::unique_ptr<ShareMetric<D>> gathered_metric(const BackMeshShare<D>& home, const MetricRecipe& recipe, const Mesh<D>& mesh,
+                                                DistributedIteration& figures) {
+  const auto start = std::chrono::steady_clock::now();
+  long long bytes = 0;
+  auto near = std::make_unique<ShareMetric<D>>(share_around(home, share_region(mesh), &bytes), recipe);
+  figures.back_mesh_bytes += sum_over_processes(bytes);
+  figures.seconds += seconds_since(start);
+  return near;
+}
+
 // One iteration on rank 0: split along a partition, send, adapt part 0, receive, merge. Part r goes
 // to rank r; the elements of part `process_count()` (the kept part) stay as they are.
 template <int D>
 struct RootIteration {
   Mesh<D>& mesh;
-  AdaptationMetric<D> metric;  // the iteration's
+  AdaptationMetric<D> metric;  // the iteration's, on the whole back mesh
   const BoundaryGeometry<D>* geometry;
   AdaptationSettings settings;  // the parts' loop's (part_settings)
   std::int64_t partition_seed;
   std::vector<char> old_interface;  // per vertex of `mesh`: on the interfaces between adapted parts
   DistributedIteration figures;
+  const BackMeshShare<D>* home = nullptr;  // rank 0's share of the back mesh, which the other parts' metrics need
 
   // The parts' metric is `metric`, figures.metric_fraction of the way (sent to the other ranks).
   AdaptationRun run(const std::vector<int>& part_of, std::chrono::steady_clock::time_point start) {
@@ -102,6 +121,7 @@ struct RootIteration {
       send(p, bytes_of_values(std::vector<double>{figures.metric_fraction}));
       send(p, pack_part(parts[p].mesh, std::span<const Index>(parts[p].global_ids)));
     }
+    gathered_metric(*home, {}, Mesh<D>{}, figures);  // rank 0 has the whole back mesh: it asks for none
     auto [run0, figures0] = adapt_part_measured(parts[0], metric, geometry, settings);
     std::vector<AdaptationRun> runs{std::move(run0)};
     note(figures0);
@@ -158,16 +178,15 @@ struct RootIteration {
 // mesh on rank 0. Each adapts to the metric its share of the way from the input's own.
 template <int D>
 struct WholeMeshIterations {
-  const AdaptationMetric<D>& metric;  // the target
-  const MetricField<D>& input_metric;
-  int steps;  // gradual_steps, rank 0's
+  MetricRecipe recipe;  // the target's
+  int steps;            // gradual_steps, rank 0's
   const BoundaryGeometry<D>* geometry;
   AdaptationSettings settings;  // the parts' loop's (part_settings)
   std::int64_t partition_seed;
 
   // Rank 0 gets the runs, the last iteration's interface vertices and (in `part`) every element;
   // `first` holds the figures of the first partition's scatter.
-  PeerIterationResult run(MeshPart<D>& part, DistributedIteration first,
+  PeerIterationResult run(MeshPart<D>& part, const BackMeshShare<D>& home, DistributedIteration first,
                           const std::function<void(const DistributedIteration&)>& on_iteration) const {
     Index next_global_id = 0;
     for (Index most :
@@ -176,12 +195,13 @@ struct WholeMeshIterations {
     PeerIterationResult all;
     for (int iteration = 1; iteration < kDistributedIterations; ++iteration) {
       const double fraction = gradual_fraction(iteration, steps);
-      const AdaptationMetric<D> iteration_metric = metric.partway_from(input_metric, fraction);
-      std::optional<AdaptationMetric<D>> next;
-      if (iteration + 1 < kDistributedIterations) next = metric.partway_from(input_metric, gradual_fraction(iteration + 1, steps));
       DistributedIteration figures = iteration == 1 ? first : DistributedIteration{};
       figures.iteration = iteration;
       figures.metric_fraction = fraction;
+      const std::unique_ptr<ShareMetric<D>> near = gathered_metric(home, recipe, part.mesh, figures);
+      const AdaptationMetric<D> iteration_metric = near->partway(fraction);
+      std::optional<AdaptationMetric<D>> next;
+      if (iteration + 1 < kDistributedIterations) next = near->partway(gradual_fraction(iteration + 1, steps));
       const PeerIteration<D> step{iteration_metric, geometry, settings, partition_seed, next ? &*next : nullptr};
       PeerIterationResult result = run_peer_iteration(part, next_global_id, step, figures);
       all.run.passes.insert(all.run.passes.end(), result.run.passes.begin(), result.run.passes.end());
@@ -227,6 +247,15 @@ AdaptationRun last_serial_runs(Mesh<D>& mesh, const AdaptationMetric<D>& metric,
 
 }  // namespace
 
+// What rank 0 made of the run that the other processes need, broadcast.
+struct RunShape {
+  SizeBounds bounds;                // the metric's size bounds
+  bool hausdorff = false;           // an analytic metric with a Hausdorff bound field
+  double hausd = 0;                 // AdaptationSettings::hausd
+  int steps = 1;                    // gradual_steps
+  std::int64_t partition_seed = 0;  // the partitioner's
+};
+
 template <int D>
 AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                                 const AdaptationSettings& settings, std::int64_t partition_seed,
@@ -234,22 +263,25 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   // The whole mesh's corners and feature lines first, as the serial loop finds them: a part sees
   // only its share of the boundary (docs/distributed.md §Parts).
   classify_vertices(mesh, settings.feature_angle_degrees);
-  // The input's own metric, where the gradual metric starts (on every rank the same field).
+  // The input's own metric, where the gradual metric starts.
   const MetricField<D> input_metric(mesh, implied_metric_at_vertices(mesh));
-  // The gradual metric's steps and the partitioner's seed, the same on every process.
-  std::vector<std::int64_t> shared{gradual_steps(mesh, input_metric, metric), partition_seed};
-  broadcast_values(shared);
-  const auto steps = static_cast<int>(shared[0]);
-  const WholeMeshIterations<D> whole{metric, input_metric, steps, geometry, part_settings(settings), partition_seed};
-  RootIteration<D> root{mesh, metric.partway_from(input_metric, gradual_fraction(1, steps)), geometry, whole.settings, partition_seed, {},
-                        {}};
-  // The first partition, of the whole mesh, scattered from rank 0.
+  const MetricRecipe recipe = recipe_of(metric);
+  std::vector<RunShape> shape{{recipe.bounds, recipe.hausdorff, settings.hausd, gradual_steps(mesh, input_metric, metric), partition_seed}};
+  broadcast_values(shape);
+  const int steps = shape[0].steps;
+  const WholeMeshIterations<D> whole{recipe, steps, geometry, part_settings(settings), partition_seed};
+  // The first partition, of the whole mesh: the parts scattered from rank 0, and with them the
+  // processes' home shares of the back mesh (the input).
   const auto start = std::chrono::steady_clock::now();
   DistributedIteration first;
+  RootIteration<D> root{mesh, metric.partway_from(input_metric, gradual_fraction(1, steps)), geometry, whole.settings, partition_seed, {},
+                        {}};
   const std::vector<int> part_of = root.whole_partition();
+  const BackMeshShare<D> home = scatter_back_mesh(mesh, part_of, share_log_metrics(metric, input_metric), &first.back_mesh_bytes);
+  root.home = &home;
   MeshPart<D> part = migrate_part(whole_mesh_part(std::move(mesh)), part_of, &first.bytes_sent);
   first.seconds_partition = first.seconds = seconds_since(start);
-  const PeerIterationResult peer = whole.run(part, first, on_iteration);
+  const PeerIterationResult peer = whole.run(part, home, first, on_iteration);
   AdaptationRun run = peer.run;
   root.old_interface = flags_of_global_ids(part, peer.interface_vertices);
   mesh = whole_mesh_of(std::move(part));
@@ -273,20 +305,24 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
 }
 
 template <int D>
-void serve_distributed_adaptation(const Mesh<D>& input, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
-                                  const AdaptationSettings& settings) {
-  const MetricField<D> input_metric(input, implied_metric_at_vertices(input));
-  std::vector<std::int64_t> shared;  // rank 0's gradual steps and partition seed
-  broadcast_values(shared);
-  const WholeMeshIterations<D> whole{metric, input_metric, static_cast<int>(shared.at(0)), geometry, part_settings(settings), shared.at(1)};
+void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>& analytic, const BoundaryGeometry<D>* geometry,
+                                  AdaptationSettings settings) {
+  std::vector<RunShape> shape;  // rank 0's
+  broadcast_values(shape);
+  settings.hausd = shape.at(0).hausd;
+  const MetricRecipe recipe{analytic, shape[0].bounds, shape[0].hausdorff};
+  const WholeMeshIterations<D> whole{recipe, shape[0].steps, geometry, part_settings(settings), shape[0].partition_seed};
+  const BackMeshShare<D> home = scatter_back_mesh(Mesh<D>{}, {}, {});
   MeshPart<D> part = migrate_part(MeshPart<D>{}, {});
-  whole.run(part, {}, {});
+  whole.run(part, home, {}, {});
   // The band: the part rank 0 sends, until it says stop.
   for (;;) {
     const std::vector<double> fraction = receive_values<double>(0);
     if (fraction.size() != 1) return;  // stop
     part = unpack_part<D>(receive_bytes(0));
-    const auto [run, figures] = adapt_part_measured(part, metric.partway_from(input_metric, fraction[0]), geometry, whole.settings);
+    DistributedIteration unused;  // (rank 0 keeps the figures)
+    const std::unique_ptr<ShareMetric<D>> near = gathered_metric(home, recipe, part.mesh, unused);
+    const auto [run, figures] = adapt_part_measured(part, near->partway(fraction[0]), geometry, whole.settings);
     send_bytes(0, pack_part(part.mesh, std::span<const Index>(part.global_ids)));
     send_bytes(0, pack_run(run));
     send_values(0, std::vector<PartFigures>{figures});
@@ -297,9 +333,7 @@ template AdaptationRun adapt_distributed(Mesh<2>&, const AdaptationMetric<2>&, c
                                          std::int64_t, const std::function<void(const DistributedIteration&)>&);
 template AdaptationRun adapt_distributed(Mesh<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*, const AdaptationSettings&,
                                          std::int64_t, const std::function<void(const DistributedIteration&)>&);
-template void serve_distributed_adaptation(const Mesh<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*,
-                                           const AdaptationSettings&);
-template void serve_distributed_adaptation(const Mesh<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*,
-                                           const AdaptationSettings&);
+template void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>&, const BoundaryGeometry<2>*, AdaptationSettings);
+template void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>&, const BoundaryGeometry<3>*, AdaptationSettings);
 
 }  // namespace hocav

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 
 #include "adapt/adaptation_loop.hpp"
 #include "parallel/distributed_iteration.hpp"
@@ -32,10 +33,13 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
                                 const AdaptationSettings& settings, std::int64_t partition_seed,
                                 const std::function<void(const DistributedIteration&)>& on_iteration);
 
-// On the other ranks: adapts the parts rank 0 sends until it says stop. `input`: rank 0's mesh as
-// adapt_distributed received it, where the iterations' gradual metric starts.
+// On the other ranks: adapts the parts rank 0 sends until it says stop, with the metric remade on
+// the shares of the back mesh around them (docs/distributed.md §The back mesh in shares) from what
+// rank 0 broadcasts (the size bounds, the Hausdorff distance) and `analytic`, the job's analytic
+// metric if it has one. `geometry` is made from the input's boundary as rank 0's; `settings` is the
+// job's but for the Hausdorff distance, which rank 0 sends.
 template <int D>
-void serve_distributed_adaptation(const Mesh<D>& input, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
-                                  const AdaptationSettings& settings);
+void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>& analytic, const BoundaryGeometry<D>* geometry,
+                                  AdaptationSettings settings);
 
 }  // namespace hocav

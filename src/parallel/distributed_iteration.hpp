@@ -17,6 +17,8 @@ struct DistributedIteration {
   // What the processes sent one another, without the input's broadcast: the migrations (the whole-mesh
   // iterations), or the parts out and back (the band).
   long long bytes_sent = 0;
+  // The shares of the metric's back mesh the processes sent one another for their parts.
+  long long back_mesh_bytes = 0;
   // The iteration, and its partitioning with the migration or split (docs/usage.md).
   double seconds = 0, seconds_partition = 0;
   // Per rank: the wall time of its part's adaptation, and its peak resident memory so far.

@@ -14,12 +14,6 @@
 namespace hocav {
 namespace {
 
-template <typename T>
-T sum_over_processes(T value) {
-  const std::vector<T> all = all_gather_value(value);
-  return std::accumulate(all.begin(), all.end(), T{});
-}
-
 // Numbers the part's new vertices (global id kNoIndex) from next_global_id, process after process.
 template <int D>
 void number_new_vertices(MeshPart<D>& part, Index& next_global_id) {

@@ -84,7 +84,10 @@ void write_distributed_iterations(JsonWriter& json, const std::vector<Distribute
     json.begin_object().member("iteration", it.iteration).member("metric_fraction", it.metric_fraction);
     json.member("vertices", it.vertices).member("elements", it.elements);
     json.member("interface_vertices", it.interface_vertices).member("interface_faces", it.interface_faces);
-    json.member("bytes_sent", it.bytes_sent).member("seconds", it.seconds).member("seconds_partition", it.seconds_partition);
+    json.member("bytes_sent", it.bytes_sent)
+        .member("back_mesh_bytes", it.back_mesh_bytes)
+        .member("seconds", it.seconds)
+        .member("seconds_partition", it.seconds_partition);
     write_per_rank(json, "part_seconds", it.part_seconds);
     write_per_rank(json, "peak_memory_bytes", it.peak_memory_bytes);
     json.end_object();

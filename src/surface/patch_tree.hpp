@@ -12,41 +12,10 @@
 #include <vector>
 
 #include "base/index.hpp"
+#include "geom/box.hpp"
 #include "geom/vec.hpp"
 
 namespace hocav {
-
-template <int D>
-struct Box {
-  Vec<D> lower, upper;
-
-  static Box empty() {
-    Box box;
-    for (int i = 0; i < D; ++i) {
-      box.lower[i] = std::numeric_limits<double>::infinity();
-      box.upper[i] = -std::numeric_limits<double>::infinity();
-    }
-    return box;
-  }
-  void add(const Vec<D>& point) {
-    for (int i = 0; i < D; ++i) {
-      lower[i] = std::min(lower[i], point[i]);
-      upper[i] = std::max(upper[i], point[i]);
-    }
-  }
-  void add(const Box& box) {
-    add(box.lower);
-    add(box.upper);
-  }
-  double distance2(const Vec<D>& x) const {
-    double sum = 0;
-    for (int i = 0; i < D; ++i) {
-      const double outside = std::max({lower[i] - x[i], x[i] - upper[i], 0.0});
-      sum += outside * outside;
-    }
-    return sum;
-  }
-};
 
 template <int D>
 class PatchTree {

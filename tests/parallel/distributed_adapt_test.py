@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """`mpirun -np N hocav adapt` (docs/distributed.md) against the serial `hocav adapt` on a small cube,
-with two metrics: h-min 0.03, and h-min 0.001 where the input is 100 times too coarse (the
-iterations then step there by a gradual metric).
+with three metrics: h-min 0.03, and h-min 0.001 where the input is 100 times too coarse (the
+iterations then step there by a gradual metric), both as .solb files, and the first as the analytic
+metric itself (2 processes only).
 
 With one process the output must be the serial one byte for byte. With 2, 3 and 4 processes
 (oversubscribed): the output is consistent and valid (`hocav stats`), keeps the input's element and
@@ -11,7 +12,8 @@ holds in 21 of 30 partitions, docs/distributed.md "Over several partitions"), an
 adapted mesh (the parts' frozen interfaces left elements of quality 0.001 before the last runs near
 them; until the twenty-seventh session the bound was half the serial minimum, which 9 of 30
 partitions missed, docs/distributed.md "Over several partitions"); its report has every
-iteration with each rank's time and peak memory. With --order 2 (curved on the parts, docs/distributed.md §Curving) the output is valid too.
+iteration with each rank's time and peak memory. With --order 2 (curved on the parts, docs/distributed.md §Curving) the output is valid too, and its
+flat faces stay flat as in the serial run.
 
 Usage: /usr/bin/python3 distributed_adapt_test.py <path-to-hocav>
 Exits 77 (skipped) when hocav was built without MPI.
@@ -71,6 +73,8 @@ def check_iterations(path, processes, fine):
         assert all(memory > 1 << 20 for memory in it["peak_memory_bytes"]), it
         assert 0 < it["interface_vertices"] < it["vertices"], it
         assert it["bytes_sent"] > 0, it
+        # Every part's metric is remade on the back mesh's share around it (docs/distributed.md).
+        assert it["back_mesh_bytes"] > 0, it
     fractions = [it["metric_fraction"] for it in iterations]
     assert fractions == sorted(fractions) and fractions[-2:] == [1, 1], fractions
     # The gradual metric (docs/distributed.md): 100 times finer than the input takes three steps,
@@ -81,10 +85,12 @@ def check_iterations(path, processes, fine):
     assert fine or abs(last - output_elements) <= 0.2 * output_elements, f"last iteration {last} elements, output {output_elements}"
 
 
-def compare_with_serial(hocav, mpirun, work, metric, fine=False):
-    """The checks of the module's docstring on the cube adapted to `metric` (a .solb in `work`); with
-    `fine`, the last iteration's mesh may be far from the output's size (check_iterations)."""
-    adapt = ["adapt", "cube.meshb", "--metric", metric, "--order", "1", "--threads", "1", "-q"]
+def compare_with_serial(hocav, mpirun, work, metric, fine=False, process_counts=(2, 3, 4)):
+    """The checks of the module's docstring on the cube adapted to `metric` (a .solb in `work`, or the
+    options of an analytic metric); with `fine`, the last iteration's mesh may be far from the
+    output's size (check_iterations)."""
+    source = ["--metric", metric] if isinstance(metric, str) else metric
+    adapt = ["adapt", "cube.meshb"] + source + ["--order", "1", "--threads", "1", "-q"]
     run([hocav] + adapt + ["-o", "serial.meshb", "--report", "serial.json"], work)
     serial = stats(hocav, "serial.meshb", work)
     serial_unit, serial_quality, serial_min, _ = report(os.path.join(work, "serial.json"))
@@ -94,7 +100,7 @@ def compare_with_serial(hocav, mpirun, work, metric, fine=False):
 
     run([hocav, "convert", "serial.meshb", "serial.mesh"], work)
     serial_ridges = ridge_length(os.path.join(work, "serial.mesh"))
-    for processes in (2, 3, 4):
+    for processes in process_counts:
         name = f"{processes}.mesh"
         run(mpirun + ["-np", str(processes), hocav] + adapt + ["-o", name, "--report", f"{processes}.json"], work)
         name = f"{metric}, {processes} processes"
@@ -132,12 +138,22 @@ def main():
         # "A small case that shows the defect"; before the gradual metric: 97.2% unit against 98.9%).
         run([hocav, "metric", "cube.meshb", "--analytic", "linear", "-o", "fine.solb"], work)
         compare_with_serial(hocav, mpirun, work, "fine.solb", fine=True)
+        # An analytic metric, evaluated exactly at every new vertex: the shares of the back mesh carry
+        # only the input's own metric, where the gradual metric starts.
+        compare_with_serial(hocav, mpirun, work, ["--analytic", "linear", "--hmin", "0.03"], process_counts=(2,))
 
-        curved = ["adapt", "cube.meshb", "--metric", "cube.solb", "--order", "2", "-q", "-o", "curved.meshb"]
-        run(mpirun + ["-np", "2", hocav] + curved, work)
+        curved = ["adapt", "cube.meshb", "--metric", "cube.solb", "--order", "2", "-q"]
+        run(mpirun + ["-np", "2", hocav] + curved + ["-o", "curved.meshb", "--report", "curved.json"], work)
         figures = stats(hocav, "curved.meshb", work)
         assert figures["order"] == "P2", figures["order"]
         check_valid(figures, "curved.meshb")
+        # The cube's faces are flat: curved on their geometry (every process's made from the boundary
+        # rank 0 sends), its elements stay straight, as the serial run's do.
+        run([hocav] + curved + ["-o", "curved_serial.meshb", "--report", "curved_serial.json"], work)
+        jacobians = [json.load(open(os.path.join(work, name)))["curving"]["normalized_jacobian"]["min"]
+                     for name in ("curved.json", "curved_serial.json")]
+        print(f"curved: normalized Jacobian min {jacobians[0]:.4f} (serial {jacobians[1]:.4f})")
+        assert jacobians[0] >= 0.99 * jacobians[1], f"curved on 2 processes: normalized Jacobian min {jacobians}"
     print("ok")
     return 0
 

@@ -17,6 +17,7 @@
 
 #include "adapt/vertex_classes.hpp"
 #include "cases/structured.hpp"
+#include "mpi_test_main.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_graph.hpp"
 #include "parallel/element_partition.hpp"
@@ -229,12 +230,7 @@ bool run(const Mesh<D>& mesh) {
 }  // namespace hocav
 
 int main(int argc, char** argv) {
-  hocav::MpiSession mpi(argc, argv);
-  if (hocav::process_count() < 2) {
-    std::cerr << "part migration: run it under mpirun with 2 or more processes\n";
-    return 1;
-  }
-  try {
+  return hocav::run_mpi_test(argc, argv, "part migration", [] {
     hocav::Mesh<2> square = hocav::generate_square(12);
     hocav::Mesh<3> cube = hocav::generate_cube(6);
     square.build_topology();
@@ -246,11 +242,6 @@ int main(int argc, char** argv) {
     for (hocav::Index v = 0; v < cube.vertex_count(); v += 7) cube.required_vertices().push_back(v);
     hocav::Mesh<3> p2_cube = cube;
     p2_cube.make_p2();
-    const bool ok = hocav::run(square) & hocav::run(cube) & hocav::run(p2_cube);  // every process runs all three
-    const std::vector<char> all = hocav::all_gather_value(static_cast<char>(ok));
-    return std::all_of(all.begin(), all.end(), [](char each) { return each != 0; }) ? 0 : 1;
-  } catch (const std::exception& error) {
-    std::cerr << "part migration: rank " << hocav::process_rank() << ": " << error.what() << '\n';
-    hocav::abort_processes(1);
-  }
+    return hocav::run(square) & hocav::run(cube) & hocav::run(p2_cube);  // every process runs all three
+  });
 }
