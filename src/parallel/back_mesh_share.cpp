@@ -206,10 +206,14 @@ template <int D>
 BackMeshShare<D> share_around(const BackMeshShare<D>& home, const ShareRegion<D>& region, long long* bytes_sent) {
   const std::vector<ShareRegion<D>> regions = all_gather_value(region);
   std::vector<Box<D>> element_boxes;
-  for (Index k = 0; k < home.mesh.element_count(); ++k) element_boxes.push_back(element_box(home.mesh, k));
+  Box<D> home_box = Box<D>::empty();
+  for (Index k = 0; k < home.mesh.element_count(); ++k) {
+    element_boxes.push_back(element_box(home.mesh, k));
+    home_box.add(element_boxes.back());
+  }
   std::vector<std::vector<std::byte>> outgoing(regions.size());
   for (std::size_t p = 0; p < regions.size(); ++p)
-    if (!regions[p].box.is_empty() && home.mesh.element_count() > 0)
+    if (!home_box.is_empty() && home_box.overlaps(regions[p].box))  // (most regions, with many processes, lie elsewhere)
       outgoing[p] = piece_of(home.mesh, std::span<const Index>(home.global_ids), home.log_metrics, [&](Index k) {
                       return regions[p].meets(element_boxes[k]);
                     }).bytes();
