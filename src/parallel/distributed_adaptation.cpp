@@ -245,8 +245,6 @@ AdaptationRun last_serial_runs(Mesh<D>& mesh, const AdaptationMetric<D>& metric,
   return run;
 }
 
-}  // namespace
-
 // What rank 0 made of the run that the other processes need, broadcast.
 struct RunShape {
   SizeBounds bounds;                // the metric's size bounds
@@ -255,6 +253,8 @@ struct RunShape {
   int steps = 1;                    // gradual_steps
   std::int64_t partition_seed = 0;  // the partitioner's
 };
+
+}  // namespace
 
 template <int D>
 AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
