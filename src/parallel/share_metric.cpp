@@ -1,22 +1,25 @@
 #include "parallel/share_metric.hpp"
 
+#include <memory>
+
 #include "base/error.hpp"
 
 namespace hocav {
 namespace {
 
-// The share's log-metrics of one field (none for an empty share: a process whose part is empty).
+// Takes the share's log-metrics of one field (none for an empty share: a process whose part is empty).
 template <int D>
-std::vector<SymMat<D>> field_of_share(const BackMeshShare<D>& share, std::size_t field) {
-  if (share.mesh.vertex_count() == 0) return {};
+std::vector<SymMat<D>> take_field(BackMeshShare<D>& share, std::size_t field) {
+  if (share.global_ids.empty()) return {};
   if (field >= share.log_metrics.size()) throw Error("a back-mesh share lacks a field of its metric");
-  return share.log_metrics[field];
+  return std::move(share.log_metrics[field]);
 }
 
+// The share's mesh as the fields' back mesh, its topology built.
 template <int D>
-BackMeshShare<D>& with_topology(BackMeshShare<D>& share) {
+std::shared_ptr<const Mesh<D>> back_mesh_of(BackMeshShare<D>& share) {
   share.mesh.build_topology();
-  return share;
+  return std::make_shared<const Mesh<D>>(std::move(share.mesh));
 }
 
 }  // namespace
@@ -41,11 +44,8 @@ std::vector<std::vector<SymMat<D>>> share_log_metrics(const AdaptationMetric<D>&
 
 template <int D>
 ShareMetric<D>::ShareMetric(BackMeshShare<D> share, MetricRecipe recipe)
-    : recipe_(std::move(recipe)),
-      share_(std::make_shared<BackMeshShare<D>>(std::move(share))),
-      start_(
-          MetricField<D>::on_back_mesh(std::shared_ptr<const Mesh<D>>(share_, &with_topology(*share_).mesh), field_of_share(*share_, 0))) {
-  if (!recipe_.analytic || recipe_.hausdorff) field_.emplace(start_.with_log_metrics(field_of_share(*share_, 1)));
+    : recipe_(std::move(recipe)), start_(MetricField<D>::on_back_mesh(back_mesh_of(share), take_field(share, 0))) {
+  if (!recipe_.analytic || recipe_.hausdorff) field_.emplace(start_.with_log_metrics(take_field(share, 1)));
 }
 
 template <int D>

@@ -2,7 +2,6 @@
 // §The back mesh in shares): the same metric as rank 0's, made from the share's fields.
 #pragma once
 
-#include <memory>
 #include <optional>
 #include <vector>
 
@@ -31,20 +30,18 @@ std::vector<std::vector<SymMat<D>>> share_log_metrics(const AdaptationMetric<D>&
 template <int D>
 class ShareMetric {
  public:
-  // `share` holds the fields share_log_metrics lists, for `recipe`; its mesh becomes the fields'
-  // back mesh (its topology built), not copied.
+  // `share` holds the fields share_log_metrics lists, for `recipe`; its mesh and log-metrics become
+  // the fields' (the mesh with its topology built), not copied.
   ShareMetric(BackMeshShare<D> share, MetricRecipe recipe);
   ShareMetric(const ShareMetric&) = delete;  // the metrics it makes point at its fields
   ShareMetric& operator=(const ShareMetric&) = delete;
 
-  const BackMeshShare<D>& share() const { return *share_; }
   // The run's metric a fraction of the way from the input's own (AdaptationMetric::partway_from);
   // it refers to this object.
   AdaptationMetric<D> partway(double fraction) const;
 
  private:
   MetricRecipe recipe_;
-  std::shared_ptr<BackMeshShare<D>> share_;  // the fields' back mesh lives in it
   MetricField<D> start_;
   std::optional<MetricField<D>> field_;  // the target's, or the analytic metric's Hausdorff bound
 };

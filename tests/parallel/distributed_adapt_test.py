@@ -73,8 +73,9 @@ def check_iterations(path, processes, fine):
         assert all(memory > 1 << 20 for memory in it["peak_memory_bytes"]), it
         assert 0 < it["interface_vertices"] < it["vertices"], it
         assert it["bytes_sent"] > 0, it
-        # Every part's metric is remade on the back mesh's share around it (docs/distributed.md).
-        assert it["back_mesh_bytes"] > 0, it
+    # Every part's metric is remade on the back mesh's share around it (docs/distributed.md): the
+    # first iteration sends the home shares at least.
+    assert iterations[0]["back_mesh_bytes"] > 0, iterations[0]
     fractions = [it["metric_fraction"] for it in iterations]
     assert fractions == sorted(fractions) and fractions[-2:] == [1, 1], fractions
     # The gradual metric (docs/distributed.md): 100 times finer than the input takes three steps,
