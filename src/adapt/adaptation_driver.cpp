@@ -156,11 +156,9 @@ AdaptationSettings job_settings(const AdaptationJob<D>& job, double hausd) {
 }
 
 template <int D>
-std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job,
+std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(const Mesh<D>& back, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job,
                                                       const std::string& name) {
   auto setup = std::make_unique<AdaptationSetup<D>>();
-  setup->input = std::move(input);
-  const Mesh<D>& back = setup->input;
   setup->geometry = job.geometry(back);
   const bool relative_given = job.hausd_relative.value_or(0) > 0;
   if ((job.hausd || relative_given) && !setup->geometry && job.warn) {
@@ -206,9 +204,9 @@ template void prepare_boundary(Mesh<2>&, const std::string&, const std::function
 template void prepare_boundary(Mesh<3>&, const std::string&, const std::function<void(const std::string&)>&);
 template AdaptedMesh<2> run_adaptation_job(Mesh<2>&, std::vector<SymMat<2>>, const AdaptationJob<2>&, const std::string&);
 template AdaptedMesh<3> run_adaptation_job(Mesh<3>&, std::vector<SymMat<3>>, const AdaptationJob<3>&, const std::string&);
-template std::unique_ptr<AdaptationSetup<2>> set_up_adaptation(Mesh<2>, std::vector<SymMat<2>>, const AdaptationJob<2>&,
+template std::unique_ptr<AdaptationSetup<2>> set_up_adaptation(const Mesh<2>&, std::vector<SymMat<2>>, const AdaptationJob<2>&,
                                                                const std::string&);
-template std::unique_ptr<AdaptationSetup<3>> set_up_adaptation(Mesh<3>, std::vector<SymMat<3>>, const AdaptationJob<3>&,
+template std::unique_ptr<AdaptationSetup<3>> set_up_adaptation(const Mesh<3>&, std::vector<SymMat<3>>, const AdaptationJob<3>&,
                                                                const std::string&);
 template AdaptedMesh<2> adapt_in_metric(Mesh<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*, const AdaptationSettings&,
                                         const AdaptationLoop<2>&);

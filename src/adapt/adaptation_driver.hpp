@@ -85,12 +85,11 @@ struct AdaptationJob {
 template <int D>
 AdaptationSettings job_settings(const AdaptationJob<D>& job, double hausd);
 
-// What a job adapts with (on rank 0 of a distributed run): the input as back mesh with its (graded)
-// metric, or the analytic metric; the size bounds; the boundary geometry of the input; the loop's
-// settings.
+// What a job adapts with (on rank 0 of a distributed run): the input's copy as back mesh with its
+// (graded) metric, or the analytic metric; the size bounds; the boundary geometry of the input; the
+// loop's settings.
 template <int D>
 struct AdaptationSetup {
-  Mesh<D> input;  // the field's back mesh
   std::optional<MetricField<D>> field;
   std::optional<MetricField<D>> hausdorff_field;  // an analytic metric's Hausdorff bound, where it is finer
   std::optional<AdaptationMetric<D>> metric;
@@ -101,10 +100,10 @@ struct AdaptationSetup {
 };
 
 // Sets up `job` on `input` (P1), `metrics` the metric at its vertices (empty with an analytic metric),
-// after checking that the memory fits (`name` names the mesh in that error). Held by pointer: the
-// metric refers to the field, the field to the input.
+// after checking that the memory fits (`name` names the mesh in that error). The setup holds what it
+// needs of `input` (the fields copy their back mesh). Held by pointer: the metric refers to the field.
 template <int D>
-std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(Mesh<D> input, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job,
+std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(const Mesh<D>& input, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job,
                                                       const std::string& name);
 
 // The input as the loop needs it: its elements positive (a mesh given all inverted is reoriented,
