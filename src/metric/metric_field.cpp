@@ -29,16 +29,6 @@ std::unique_ptr<Mesh<D>> straight_copy(const Mesh<D>& mesh) {
   return back;
 }
 
-template <int D>
-std::vector<SymMat<D>> logarithms(const std::vector<SymMat<D>>& metrics) {
-  std::vector<SymMat<D>> logs(metrics.size());
-  for (std::size_t v = 0; v < metrics.size(); ++v) {
-    if (!is_spd(metrics[v])) throw Error("metric at vertex " + std::to_string(v + 1) + " is not positive definite");
-    logs[v] = log_spd(metrics[v]);
-  }
-  return logs;
-}
-
 }  // namespace
 
 template <int D>
@@ -67,6 +57,22 @@ MetricField<D> MetricField<D>::on_back_mesh(std::shared_ptr<const Mesh<D>> back_
   check_positive_elements(*back_mesh);
   auto locator = std::make_shared<const PointLocator<D>>(*back_mesh);
   return MetricField(std::move(back_mesh), std::move(locator), std::move(log_metrics));
+}
+
+template <int D>
+std::vector<SymMat<D>> MetricField<D>::logarithms(const std::vector<SymMat<D>>& metrics) {
+  std::vector<SymMat<D>> logs(metrics.size());
+  for (std::size_t v = 0; v < metrics.size(); ++v) {
+    if (!is_spd(metrics[v])) throw Error("metric at vertex " + std::to_string(v + 1) + " is not positive definite");
+    logs[v] = log_spd(metrics[v]);
+  }
+  return logs;
+}
+
+template <int D>
+bool MetricField<D>::is_on(const Mesh<D>& mesh) const {
+  const auto same = [](auto a, auto b) { return std::equal(a.begin(), a.end(), b.begin(), b.end()); };
+  return same(back_mesh_->vertices(), mesh.vertices()) && same(back_mesh_->elements(), mesh.elements());
 }
 
 template <int D>

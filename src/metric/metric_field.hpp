@@ -29,6 +29,10 @@ class MetricField {
   // Another field on this one's back mesh, sharing the mesh and its locator (no copy): one log-metric
   // per back vertex.
   MetricField with_log_metrics(std::vector<SymMat<D>> log_metrics) const;
+  // The same from metrics (SPD; throws Error naming the vertex otherwise).
+  MetricField with_metrics(const std::vector<SymMat<D>>& metrics) const { return with_log_metrics(logarithms(metrics)); }
+  // Whether the back mesh has the vertices and elements of `mesh`, in its order (a field made from it).
+  bool is_on(const Mesh<D>& mesh) const;
 
   const Mesh<D>& back_mesh() const { return *back_mesh_; }
   const PointLocator<D>& locator() const { return *locator_; }
@@ -75,6 +79,7 @@ class MetricField {
   Sample sample(const Vec<D>& x, const ElementFrame& frame, LocatorScratch& scratch) const;
 
  private:
+  static std::vector<SymMat<D>> logarithms(const std::vector<SymMat<D>>& metrics);
   MetricField(std::shared_ptr<const Mesh<D>> back_mesh, std::shared_ptr<const PointLocator<D>> locator, std::vector<SymMat<D>> log_metrics);
   // Σ_i λ_i R_i over the corners of a back element.
   SymMat<D> interpolate(Index back_element, const Barycentrics<D>& lambda) const;

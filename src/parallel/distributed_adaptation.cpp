@@ -45,6 +45,15 @@ int gradual_steps(const Mesh<D>& input, const MetricField<D>& input_metric, cons
   return std::clamp(steps, 1, kDistributedIterations - 1);
 }
 
+// The input's own metric (docs/method.md §10), on the metric's back mesh when that is the input: rank
+// 0 then holds one copy of the input and its point locator, not two.
+template <int D>
+MetricField<D> input_metric_of(const Mesh<D>& input, const AdaptationMetric<D>& metric) {
+  const std::vector<SymMat<D>> implied = implied_metric_at_vertices(input);
+  const MetricField<D>* field = metric.field();
+  return field && field->is_on(input) ? field->with_metrics(implied) : MetricField<D>(input, implied);
+}
+
 // The share of the way from the input's own metric to the target that an iteration adapts to: the
 // whole mesh's iterations step there evenly, so that each starts at most a few times coarser than
 // it asks and its frozen interfaces stay near their metric; the band and the last run adapt to the
@@ -264,7 +273,7 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   // only its share of the boundary (docs/distributed.md §Parts).
   classify_vertices(mesh, settings.feature_angle_degrees);
   // The input's own metric, where the gradual metric starts.
-  const MetricField<D> input_metric(mesh, implied_metric_at_vertices(mesh));
+  const MetricField<D> input_metric = input_metric_of(mesh, metric);
   const MetricRecipe recipe = recipe_of(metric);
   std::vector<RunShape> shape{{recipe.bounds, recipe.hausdorff, settings.hausd, gradual_steps(mesh, input_metric, metric), partition_seed}};
   broadcast_values(shape);

@@ -123,5 +123,31 @@ TEST(MetricField, RefusesNonSpdMetricsAndWrongCounts) {
   EXPECT_THROW(MetricField<2>(mesh, metrics), Error);
 }
 
+// A field remade on another's back mesh (with_metrics) samples as one made from the mesh itself,
+// bit for bit; is_on tells the mesh it was made from from a moved copy.
+TEST(MetricField, AnotherFieldOnTheSameBackMeshSamplesAsItsOwn) {
+  const Mesh<3> mesh = generate_cube(3);
+  std::mt19937 random(5);
+  std::vector<SymMat<3>> first, second;
+  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+    first.push_back(exp_sym(random_symmetric<3>(random, 2)));
+    second.push_back(exp_sym(random_symmetric<3>(random, 2)));
+  }
+  const MetricField<3> field(mesh, first);
+  ASSERT_TRUE(field.is_on(mesh));
+  const MetricField<3> shared = field.with_metrics(second), own(mesh, second);
+  EXPECT_EQ(&shared.back_mesh(), &field.back_mesh());
+  std::uniform_real_distribution<double> coordinate(-0.05, 1.05);
+  for (int i = 0; i < 200; ++i) {
+    const Vec<3> x{coordinate(random), coordinate(random), coordinate(random)};
+    EXPECT_EQ(shared.log_metric_at(x).entries, own.log_metric_at(x).entries) << i;
+  }
+  Mesh<3> moved = mesh;
+  moved.vertex(5)[0] += 1e-9;
+  EXPECT_FALSE(field.is_on(moved));
+  second[7](0, 0) = -1;
+  EXPECT_THROW(field.with_metrics(second), Error);
+}
+
 }  // namespace
 }  // namespace hocav
