@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "base/error.hpp"
+#include "geom/box.hpp"
 
 namespace hocav {
 
@@ -28,18 +29,11 @@ namespace {
 // Each vertex's position in the Morton order of the vertices (ties by id).
 template <int D>
 std::vector<Index> vertices_in_morton_order(const Mesh<D>& mesh) {
-  Vec<D> low, high;
-  for (int d = 0; d < D; ++d) {
-    low[d] = std::numeric_limits<double>::infinity();
-    high[d] = -std::numeric_limits<double>::infinity();
-  }
-  for (const Vec<D>& x : mesh.vertices())
-    for (int d = 0; d < D; ++d) {
-      low[d] = std::min(low[d], x[d]);
-      high[d] = std::max(high[d], x[d]);
-    }
+  Box<D> box = Box<D>::empty();
+  for (const Vec<D>& x : mesh.vertices()) box.add(x);
   std::vector<std::pair<std::uint64_t, Index>> keyed(static_cast<std::size_t>(mesh.vertex_count()));
-  for (Index v = 0; v < mesh.vertex_count(); ++v) keyed[static_cast<std::size_t>(v)] = {morton_code<D>(mesh.vertex(v), low, high - low), v};
+  for (Index v = 0; v < mesh.vertex_count(); ++v)
+    keyed[static_cast<std::size_t>(v)] = {morton_code<D>(mesh.vertex(v), box.lower, box.upper - box.lower), v};
   std::sort(keyed.begin(), keyed.end());
   std::vector<Index> new_id(keyed.size());
   for (std::size_t i = 0; i < keyed.size(); ++i) new_id[static_cast<std::size_t>(keyed[i].second)] = static_cast<Index>(i);

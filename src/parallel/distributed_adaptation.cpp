@@ -16,12 +16,14 @@
 #include "metric/implied_metric.hpp"
 #include "parallel/back_mesh_share.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/distributed_graph.hpp"
 #include "parallel/element_partition.hpp"
 #include "parallel/part_adaptation.hpp"
 #include "parallel/part_message.hpp"
 #include "parallel/part_migration.hpp"
 #include "parallel/peer_iteration.hpp"
 #include "parallel/share_metric.hpp"
+#include "parallel/spatial_cut.hpp"
 
 namespace hocav {
 namespace {
@@ -106,6 +108,28 @@ std::unique_ptr<ShareMetric<D>> gathered_metric(const BackMeshShare<D>& home, co
   return near;
 }
 
+// Collective: `values` (per element of rank 0's whole mesh; empty elsewhere) to the processes, each
+// its part's under `part_of`, in the order migrate_part gives the part's elements (rank 0's).
+std::vector<double> scattered_by_part(const std::vector<double>& values, std::span<const int> part_of) {
+  std::vector<std::vector<double>> outgoing(static_cast<std::size_t>(process_count()));
+  for (std::size_t k = 0; k < part_of.size(); ++k) outgoing[static_cast<std::size_t>(part_of[k])].push_back(values[k]);
+  return values_of_bytes<double>(exchange_bytes(bytes_of_messages(outgoing)).at(0));
+}
+
+// Collective: the first partition, from the first cut's pieces (scattered from rank 0 with `loads`,
+// their elements' predicted output in the first iteration's metric): PT-Scotch cuts the pieces'
+// distributed graph, and the elements migrate. Its bytes and time in rank 0's `figures`.
+template <int D>
+void partition_first(MeshPart<D>& part, std::span<const double> loads, std::int64_t partition_seed, DistributedIteration& figures) {
+  const auto start = std::chrono::steady_clock::now();
+  const DistributedGraph graph = distributed_element_graph(part, loads, {});
+  long long bytes_sent = 0;
+  part = migrate_part(part, partition_distributed_graph(graph, process_count(), partition_seed), &bytes_sent);
+  figures.bytes_sent += sum_over_processes(bytes_sent);
+  figures.seconds_partition += seconds_since(start);
+  figures.seconds += seconds_since(start);
+}
+
 // One iteration on rank 0: split along a partition, send, adapt part 0, receive, merge. Part r goes
 // to rank r; the elements of part `process_count()` (the kept part) stay as they are.
 template <int D>
@@ -154,13 +178,6 @@ struct RootIteration {
     return combined(runs);
   }
 
-  // Every element in one of the processes' parts, of balanced predicted output; the faces near the
-  // last interfaces heavy, so that those fall inside parts.
-  std::vector<int> whole_partition() const {
-    const std::vector<double> loads = expected_element_counts(mesh, metric);
-    return partition_graph(element_graph(mesh, loads, old_interface), process_count(), partition_seed);
-  }
-
   // The elements within kInterfaceBandRings rings of the last interfaces in the processes' parts, of
   // balanced predicted output; the others in the kept part.
   std::vector<int> band_partition() const {
@@ -194,7 +211,7 @@ struct WholeMeshIterations {
   std::int64_t partition_seed;
 
   // Rank 0 gets the runs, the last iteration's interface vertices and (in `part`) every element;
-  // `first` holds the figures of the first partition's scatter.
+  // `first` holds the figures of the first cut's scatter.
   PeerIterationResult run(MeshPart<D>& part, const BackMeshShare<D>& home, DistributedIteration first,
                           const std::function<void(const DistributedIteration&)>& on_iteration) const {
     Index next_global_id = 0;
@@ -279,17 +296,18 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   broadcast_values(shape);
   const int steps = shape[0].steps;
   const WholeMeshIterations<D> whole{recipe, steps, geometry, part_settings(settings), partition_seed};
-  // The first partition, of the whole mesh: the parts scattered from rank 0, and with them the
-  // processes' home shares of the back mesh (the input).
+  // The first cut, of the whole mesh: the parts scattered from rank 0, and with them the processes'
+  // home shares of the back mesh (the input). PT-Scotch then cuts the parts' distributed graph.
   const auto start = std::chrono::steady_clock::now();
   DistributedIteration first;
-  RootIteration<D> root{mesh, metric.partway_from(input_metric, gradual_fraction(1, steps)), geometry, whole.settings, partition_seed, {},
-                        {}};
-  const std::vector<int> part_of = root.whole_partition();
+  RootIteration<D> root{mesh, metric, geometry, whole.settings, partition_seed, {}, {}};
+  const std::vector<double> loads = expected_element_counts(mesh, metric.partway_from(input_metric, gradual_fraction(1, steps)));
+  const std::vector<int> part_of = spatial_cut(mesh, loads, process_count());
   const BackMeshShare<D> home = scatter_back_mesh(mesh, part_of, share_log_metrics(metric, input_metric), &first.back_mesh_bytes);
   root.home = &home;
   MeshPart<D> part = migrate_part(whole_mesh_part(std::move(mesh)), part_of, &first.bytes_sent);
   first.seconds_partition = first.seconds = seconds_since(start);
+  partition_first(part, scattered_by_part(loads, part_of), partition_seed, first);
   const PeerIterationResult peer = whole.run(part, home, first, on_iteration);
   AdaptationRun run = peer.run;
   root.old_interface = flags_of_global_ids(part, peer.interface_vertices);
@@ -323,13 +341,14 @@ void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>& analy
   const WholeMeshIterations<D> whole{recipe, shape[0].steps, geometry, part_settings(settings), shape[0].partition_seed};
   const BackMeshShare<D> home = scatter_back_mesh(Mesh<D>{}, {}, {});
   MeshPart<D> part = migrate_part(MeshPart<D>{}, {});
+  DistributedIteration unused;  // (rank 0 keeps the figures)
+  partition_first(part, scattered_by_part({}, {}), whole.partition_seed, unused);
   whole.run(part, home, {}, {});
   // The band: the part rank 0 sends, until it says stop.
   for (;;) {
     const std::vector<double> fraction = receive_values<double>(0);
     if (fraction.size() != 1) return;  // stop
     part = unpack_part<D>(receive_bytes(0));
-    DistributedIteration unused;  // (rank 0 keeps the figures)
     const std::unique_ptr<ShareMetric<D>> near = gathered_metric(home, recipe, part.mesh, unused);
     const auto [run, figures] = adapt_part_measured(part, near->partway(fraction[0]), geometry, whole.settings);
     send_bytes(0, pack_part(part.mesh, std::span<const Index>(part.global_ids)));
