@@ -209,6 +209,9 @@ struct WholeMeshIterations {
   const BoundaryGeometry<D>* geometry;
   AdaptationSettings settings;  // the parts' loop's (part_settings)
   std::int64_t partition_seed;
+  // Rank 0's: the metric on the whole back mesh, a fraction of the way from the input's own (rank 0
+  // asks for no share: it holds the whole); empty on the other processes.
+  std::function<AdaptationMetric<D>(double)> whole_metric;
 
   // Rank 0 gets the runs, the last iteration's interface vertices and (in `part`) every element;
   // `first` holds the figures of the first cut's scatter.
@@ -224,10 +227,11 @@ struct WholeMeshIterations {
       DistributedIteration figures = iteration == 1 ? first : DistributedIteration{};
       figures.iteration = iteration;
       figures.metric_fraction = fraction;
-      const std::unique_ptr<ShareMetric<D>> near = gathered_metric(home, recipe, part.mesh, figures);
-      const AdaptationMetric<D> iteration_metric = near->partway(fraction);
+      const std::unique_ptr<ShareMetric<D>> near = gathered_metric(home, recipe, whole_metric ? Mesh<D>{} : part.mesh, figures);
+      const auto partway = [&](double to) { return whole_metric ? whole_metric(to) : near->partway(to); };
+      const AdaptationMetric<D> iteration_metric = partway(fraction);
       std::optional<AdaptationMetric<D>> next;
-      if (iteration + 1 < kDistributedIterations) next = near->partway(gradual_fraction(iteration + 1, steps));
+      if (iteration + 1 < kDistributedIterations) next = partway(gradual_fraction(iteration + 1, steps));
       const PeerIteration<D> step{iteration_metric, geometry, settings, partition_seed, next ? &*next : nullptr};
       PeerIterationResult result = run_peer_iteration(part, next_global_id, step, figures);
       all.run.passes.insert(all.run.passes.end(), result.run.passes.begin(), result.run.passes.end());
@@ -295,7 +299,9 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   std::vector<RunShape> shape{{recipe.bounds, recipe.hausdorff, settings.hausd, gradual_steps(mesh, input_metric, metric), partition_seed}};
   broadcast_values(shape);
   const int steps = shape[0].steps;
-  const WholeMeshIterations<D> whole{recipe, steps, geometry, part_settings(settings), partition_seed};
+  const WholeMeshIterations<D> whole{recipe,         steps,
+                                     geometry,       part_settings(settings),
+                                     partition_seed, [&](double fraction) { return metric.partway_from(input_metric, fraction); }};
   // The first cut, of the whole mesh: the parts scattered from rank 0, and with them the processes'
   // home shares of the back mesh (the input). PT-Scotch then cuts the parts' distributed graph.
   const auto start = std::chrono::steady_clock::now();
@@ -338,7 +344,7 @@ void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>& analy
   broadcast_values(shape);
   settings.hausd = shape.at(0).hausd;
   const MetricRecipe recipe{analytic, shape[0].bounds, shape[0].hausdorff};
-  const WholeMeshIterations<D> whole{recipe, shape[0].steps, geometry, part_settings(settings), shape[0].partition_seed};
+  const WholeMeshIterations<D> whole{recipe, shape[0].steps, geometry, part_settings(settings), shape[0].partition_seed, {}};
   const BackMeshShare<D> home = scatter_back_mesh(Mesh<D>{}, {}, {});
   MeshPart<D> part = migrate_part(MeshPart<D>{}, {});
   DistributedIteration unused;  // (rank 0 keeps the figures)
