@@ -1,6 +1,7 @@
 // The distributed P1 adaptation loop, ParMmg's scheme (docs/distributed.md §The scheme): rank 0
-// partitions the mesh by the metric's predicted output per element and scatters the parts; each
-// process adapts its part with the interfaces frozen, and PT-Scotch cuts the distributed mesh again
+// cuts the mesh along a space-filling curve and scatters the pieces, which PT-Scotch partitions by
+// the metric's predicted output per element; each process adapts its part with the interfaces
+// frozen, and PT-Scotch cuts the distributed mesh again
 // so that the old interfaces fall inside parts, the elements migrating between processes; after the
 // third time rank 0 gathers the mesh, and only a band around the last interfaces is adapted.
 #pragma once
