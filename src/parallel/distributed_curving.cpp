@@ -5,14 +5,19 @@
 #include <string>
 
 #include "base/error.hpp"
+#include "base/stopwatch.hpp"
 #include "mesh/boundary_vertices.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/element_partition.hpp"
 #include "parallel/part_measures.hpp"
 #include "parallel/part_message.hpp"
+#include "parallel/root_mesh_partition.hpp"
 
 namespace hocav {
 namespace {
+
+// PT-Scotch's seed for the first round's partition: the same mesh, the same parts.
+constexpr std::int64_t kCurvingPartitionSeed = 0;
 
 // What a part's curving sends back besides the part.
 struct PartCurving {
@@ -84,60 +89,70 @@ struct RootRound {
   const MetricField<D>& field;
   const BoundaryGeometry<D>* geometry;
   const CurvingOptions& options;
+  // The first round's parts, per element: equal element counts (curving costs about the same per
+  // element), cut without the whole mesh's graph on rank 0 (partition_from_root).
+  std::vector<int> first_partition;
   // Per vertex of `mesh`: not reinserted yet, frozen on the interfaces of every round so far (empty
   // before the first). Boundary vertices too: none is reinserted, but the band around them brings
   // their boundary edges on the old interfaces, which got no proposal, into a part that curves them
   // (without them the cubed shell on 2 processes left 56 boundary edges straight, the serial run 0).
   std::vector<char> pending;
   DistributedCurvingRound figures;
-  // The first round's parts as they came back (part 0 curved here, to measure at the end; the
-  // others for their vertices and interfaces), part 0's log-metrics, and per mesh edge whether a
-  // later round wrote its node.
-  std::vector<MeshPart<D>> first_parts;
+  // What the first round leaves for the measures: rank 0's own part, curved, with its log-metrics;
+  // every part's outline (part_measures.hpp); per mesh edge whether a later round wrote its node.
+  MeshPart<D> first_own;
   std::vector<SymMat<D>> first_log_metrics;
+  std::vector<PartOutline> first_outlines;
   std::vector<char> written_later;
 
   // A round whose curved elements are cut into `band_parts` parts (the first round: every element).
+  // Each other process's part is sent as soon as it is made, and written back as soon as it comes
+  // back: rank 0 holds one besides its own and the mesh.
   PartCurving run(int band_parts) {
     const auto start = std::chrono::steady_clock::now();
     const int count = process_count();
-    std::vector<MeshPart<D>> parts = split_mesh(mesh, part_of_elements(count, band_parts), count);
-    std::vector<Index> elements_sent;
-    for (const MeshPart<D>& part : parts) elements_sent.push_back(part.mesh.element_count());
-    figures.interface_faces = interface_face_count(parts);
-    for (int p = 1; p < count; ++p) {
-      send(p, pack_part(parts[p].mesh, std::span<const Index>(parts[p].global_ids)));
-      send(p, bytes_of_values(log_metrics_of(parts[p])));
-      send(p, bytes_of_values(region_of(parts[p])));
-    }
-    PartCurving round = curve_part(parts[0], log_metrics_of(parts[0]), region_of(parts[0]), geometry, options);
-    for (int p = 1; p < count; ++p) {
-      parts[p] = unpack_part<D>(receive(p));
-      add_part(round, values_of_bytes<PartCurving>(receive(p)).at(0));
-    }
-    for (int p = 0; p < count; ++p)
-      if (parts[p].mesh.element_count() != elements_sent[p])
-        throw Error("distributed curving: part " + std::to_string(p) + " came back with another element count");
     const bool first = pending.empty();
-    write_back(parts);
+    MeshPart<D> own;
+    std::vector<Index> elements_sent(static_cast<std::size_t>(count));
+    Index interface_facets = 0;
+    split_mesh_part_by_part<D>(mesh, part_of_elements(band_parts), count, [&](int p, MeshPart<D> part) {
+      elements_sent[p] = part.mesh.element_count();
+      interface_facets += interface_facet_count(part.mesh);
+      if (p == 0) {
+        own = std::move(part);
+        return;
+      }
+      send(p, pack_part(part.mesh, std::span<const Index>(part.global_ids)));
+      send(p, bytes_of_values(log_metrics_of(part)));
+      send(p, bytes_of_values(region_of(part)));
+    });
+    figures.interface_faces = interface_facets / 2;
+    PartCurving round = curve_part(own, log_metrics_of(own), region_of(own), geometry, options);
+    std::vector<char> on_interface(static_cast<std::size_t>(mesh.vertex_count()), 0);
+    write_back(own, 0, elements_sent[0], on_interface);
     if (first) {
-      first_log_metrics = log_metrics_of(parts[0]);
-      first_parts = std::move(parts);
-      written_later.assign(static_cast<std::size_t>(mesh.edge_count()), 0);
+      first_outlines.push_back(outline_of(own));
+      first_log_metrics = log_metrics_of(own);
+      first_own = std::move(own);
     }
+    for (int p = 1; p < count; ++p) {
+      const MeshPart<D> part = unpack_part<D>(receive(p));
+      add_part(round, values_of_bytes<PartCurving>(receive(p)).at(0));
+      write_back(part, p, elements_sent[p], on_interface);
+      if (first) first_outlines.push_back(outline_of(part));
+    }
+    update_pending(std::move(on_interface));
+    if (first) written_later.assign(static_cast<std::size_t>(mesh.edge_count()), 0);
     figures.cavities = round.counters.cavities;
-    figures.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    figures.seconds += seconds_since(start);
     return round;
   }
 
-  // The first round: every element in one of `count` parts of equal element counts (curving costs
-  // about the same per element). Later rounds: the elements near the pending vertices in `band_parts`
-  // parts so, the others in none (-1).
-  std::vector<int> part_of_elements(int count, int band_parts) const {
-    if (pending.empty()) {
-      const std::vector<double> loads(static_cast<std::size_t>(mesh.element_count()), 1.0);
-      return partition_graph(element_graph(mesh, loads, {}), count);
-    }
+  // The first round: `first_partition`. Later rounds: the elements near the pending vertices in
+  // `band_parts` parts of equal element counts (curving costs about the same per element), the
+  // others in none (-1).
+  std::vector<int> part_of_elements(int band_parts) const {
+    if (pending.empty()) return first_partition;
     std::vector<int> part_of(static_cast<std::size_t>(mesh.element_count()), -1);
     std::vector<Index> band;
     const WeightedGraph graph = member_graph(mesh, elements_near(mesh, pending, kBandRings), {}, band);
@@ -161,9 +176,18 @@ struct RootRound {
     return out;
   }
 
-  // The parts' nodes into the mesh; the vertices on this round's interfaces leave the pending ones.
-  void write_back(const std::vector<MeshPart<D>>& parts) {
-    std::vector<char> on_interface = write_back_nodes(mesh, parts, pending.empty() ? nullptr : &written_later);
+  // Part p's nodes into the mesh (it must come back with the `sent` elements); the vertices on its
+  // interfaces marked in `on_interface`.
+  void write_back(const MeshPart<D>& part, int p, Index sent, std::vector<char>& on_interface) {
+    if (part.mesh.element_count() != sent)
+      throw Error("distributed curving: part " + std::to_string(p) + " came back with another element count");
+    const std::vector<char> on_its_interfaces = write_back_nodes<D>(mesh, std::span<const MeshPart<D>>(&part, 1),
+                                                                    pending.empty() ? nullptr : &written_later);
+    for (std::size_t v = 0; v < on_interface.size(); ++v) on_interface[v] = on_interface[v] || on_its_interfaces[v];
+  }
+
+  // The vertices on this round's interfaces leave the pending ones (the first round's are the first pending).
+  void update_pending(std::vector<char> on_interface) {
     figures.interface_vertices = static_cast<Index>(std::count(on_interface.begin(), on_interface.end(), 1));
     if (pending.empty()) {
       pending = std::move(on_interface);
@@ -181,19 +205,19 @@ struct RootRound {
     for (Index e = 0; e < mesh.edge_count(); ++e)
       if (written_later[e]) written.push_back(e);
     const std::vector<bool> on_boundary = boundary_vertex_flags(mesh);
-    const auto before = interface_edges_measured_before(first_parts);
-    auto updates = node_updates_by_part(mesh, written, first_parts);
-    const auto boundary_of = [&](const MeshPart<D>& part) {
+    const auto before = interface_edges_measured_before(first_outlines);
+    auto updates = node_updates_by_part(mesh, written, first_outlines);
+    const auto boundary_of = [&](const PartOutline& part) {
       std::vector<char> out;
       for (Index g : part.global_ids) out.push_back(on_boundary[g]);
       return out;
     };
     for (int p = 1; p < process_count(); ++p) {
       send_values(p, updates[p]);
-      send_values(p, boundary_of(first_parts[p]));
+      send_values(p, boundary_of(first_outlines[p]));
       send_values(p, before[p]);
     }
-    PartMeasures all = measure_part<D>(first_parts[0], std::move(first_log_metrics), updates[0], boundary_of(first_parts[0]), before[0],
+    PartMeasures all = measure_part<D>(first_own, std::move(first_log_metrics), updates[0], boundary_of(first_outlines[0]), before[0],
                                        options.threads);
     for (int p = 1; p < process_count(); ++p) {
       const auto elements = receive_values<JacobianQuality>(p);
@@ -232,16 +256,21 @@ CurvingReport curve_distributed(Mesh<D>& mesh, const MetricField<D>& field, cons
     throw Error("curving: the metric's back mesh has " + std::to_string(field.back_mesh().vertex_count()) + " vertices, the mesh " +
                 std::to_string(mesh.vertex_count()));
   if (!mesh.has_topology()) mesh.build_topology();
+  const auto start = std::chrono::steady_clock::now();
+  long long partition_bytes = 0;
+  std::vector<int> first_partition = partition_from_root(mesh, kCurvingPartitionSeed, &partition_bytes);  // before the nodes: P1 pieces
+  const double partition_seconds = seconds_since(start);
   if (!mesh.is_p2()) mesh.make_p2();  // the parts are P2: their interface edges keep their nodes
   const Index points_before = mesh.vertex_count();
   CurvingOptions part_options = options;
   part_options.progress = {};  // rank 0's part is not the whole
-  RootRound<D> root{mesh, field, geometry, part_options, {}, {}, {}, {}, {}};
+  RootRound<D> root{mesh, field, geometry, part_options, std::move(first_partition), {}, {}, {}, {}, {}, {}};
   PartCurving total;
   for (int round = 1; round <= kDistributedCurvingRounds; ++round) {
     if (round > 1 && std::find(root.pending.begin(), root.pending.end(), 1) == root.pending.end()) break;
     root.figures = {};
     root.figures.round = round;
+    if (round == 1) root.figures.bytes_sent = partition_bytes, root.figures.seconds = partition_seconds;
     add_round(total, root.run(round < kDistributedCurvingRounds ? process_count() : 1));
     if (on_round) on_round(root.figures);
   }
@@ -261,6 +290,7 @@ CurvingReport curve_distributed(Mesh<D>& mesh, const MetricField<D>& field, cons
 
 template <int D>
 void serve_distributed_curving(const BoundaryGeometry<D>* geometry, const CurvingOptions& options) {
+  partition_from_root(Mesh<D>{}, kCurvingPartitionSeed);
   MeshPart<D> first;  // the first round's part, kept to measure the output at the end
   std::vector<SymMat<D>> first_log_metrics;
   for (bool first_round = true;; first_round = false) {

@@ -106,7 +106,8 @@ struct PartBuilder {
 }  // namespace
 
 template <int D>
-std::vector<MeshPart<D>> split_mesh(const Mesh<D>& mesh, std::span<const int> part_of, int part_count) {
+void split_mesh_part_by_part(const Mesh<D>& mesh, std::span<const int> part_of, int part_count,
+                             const std::function<void(int, MeshPart<D>)>& take) {
   std::vector<std::vector<Index>> elements(static_cast<std::size_t>(part_count)), facets(elements.size());
   for (Index k = 0; k < mesh.element_count(); ++k)
     if (part_of[k] >= 0) elements[part_of[k]].push_back(k);
@@ -118,8 +119,13 @@ std::vector<MeshPart<D>> split_mesh(const Mesh<D>& mesh, std::span<const int> pa
   std::vector<Index> line_stamp(static_cast<std::size_t>(mesh.line_count()), -1);
   const std::vector<char> non_manifold = flags_of(non_manifold_places(mesh).every_vertex(), mesh.vertex_count());
   PartBuilder<D> builder{mesh, part_of, tags, line_of_edge, local, line_stamp, non_manifold};
+  for (int p = 0; p < part_count; ++p) take(p, builder.build(p, elements[p], facets[p]));
+}
+
+template <int D>
+std::vector<MeshPart<D>> split_mesh(const Mesh<D>& mesh, std::span<const int> part_of, int part_count) {
   std::vector<MeshPart<D>> parts;
-  for (int p = 0; p < part_count; ++p) parts.push_back(builder.build(p, elements[p], facets[p]));
+  split_mesh_part_by_part<D>(mesh, part_of, part_count, [&](int, MeshPart<D> part) { parts.push_back(std::move(part)); });
   return parts;
 }
 
@@ -264,11 +270,8 @@ MergedMesh<D> merge_parts(const Mesh<D>& old_mesh, const std::vector<MeshPart<D>
 }
 
 template <int D>
-Index interface_face_count(const std::vector<MeshPart<D>>& parts) {
-  Index count = 0;
-  for (const MeshPart<D>& part : parts)
-    count += static_cast<Index>(std::count(part.mesh.facet_refs().begin(), part.mesh.facet_refs().end(), kInterfaceRef));
-  return count / 2;
+Index interface_facet_count(const Mesh<D>& part_mesh) {
+  return static_cast<Index>(std::count(part_mesh.facet_refs().begin(), part_mesh.facet_refs().end(), kInterfaceRef));
 }
 
 template <int D>
@@ -290,7 +293,7 @@ std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<D>& mesh) {
 }
 
 template <int D>
-std::vector<char> write_back_nodes(Mesh<D>& mesh, const std::vector<MeshPart<D>>& parts, std::vector<char>* written) {
+std::vector<char> write_back_nodes(Mesh<D>& mesh, std::span<const MeshPart<D>> parts, std::vector<char>* written) {
   std::vector<char> interface_vertex(static_cast<std::size_t>(mesh.vertex_count()), 0);
   for (const MeshPart<D>& part : parts) {
     const std::unordered_set<std::uint64_t> frozen = interface_edge_keys(part.mesh);
@@ -319,8 +322,10 @@ template std::vector<char> interface_vertex_flags(const Mesh<2>&);
 template std::vector<char> interface_vertex_flags(const Mesh<3>&);
 template std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<2>&);
 template std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<3>&);
-template std::vector<char> write_back_nodes(Mesh<2>&, const std::vector<MeshPart<2>>&, std::vector<char>*);
-template std::vector<char> write_back_nodes(Mesh<3>&, const std::vector<MeshPart<3>>&, std::vector<char>*);
+template std::vector<char> write_back_nodes(Mesh<2>&, std::span<const MeshPart<2>>, std::vector<char>*);
+template std::vector<char> write_back_nodes(Mesh<3>&, std::span<const MeshPart<3>>, std::vector<char>*);
+template void split_mesh_part_by_part(const Mesh<2>&, std::span<const int>, int, const std::function<void(int, MeshPart<2>)>&);
+template void split_mesh_part_by_part(const Mesh<3>&, std::span<const int>, int, const std::function<void(int, MeshPart<3>)>&);
 template std::vector<MeshPart<2>> split_mesh(const Mesh<2>&, std::span<const int>, int);
 template std::vector<MeshPart<3>> split_mesh(const Mesh<3>&, std::span<const int>, int);
 template MeshPart<2> whole_mesh_part(Mesh<2>);
@@ -329,7 +334,7 @@ template Mesh<2> whole_mesh_of(MeshPart<2>);
 template Mesh<3> whole_mesh_of(MeshPart<3>);
 template MergedMesh<2> merge_parts(const Mesh<2>&, const std::vector<MeshPart<2>>&);
 template MergedMesh<3> merge_parts(const Mesh<3>&, const std::vector<MeshPart<3>>&);
-template Index interface_face_count(const std::vector<MeshPart<2>>&);
-template Index interface_face_count(const std::vector<MeshPart<3>>&);
+template Index interface_facet_count(const Mesh<2>&);
+template Index interface_facet_count(const Mesh<3>&);
 
 }  // namespace hocav

@@ -3,6 +3,7 @@
 // facets, and the merge of the adapted parts by global vertex ids.
 #pragma once
 
+#include <functional>
 #include <limits>
 #include <span>
 #include <unordered_set>
@@ -37,6 +38,12 @@ struct MeshPart {
 // facets too; a P2 mesh gives P2 parts with the same nodes.
 template <int D>
 std::vector<MeshPart<D>> split_mesh(const Mesh<D>& mesh, std::span<const int> part_of, int part_count);
+
+// The same parts handed to `take` one at a time, in order, each built when the last is taken: a
+// caller that sends each part away holds one at once.
+template <int D>
+void split_mesh_part_by_part(const Mesh<D>& mesh, std::span<const int> part_of, int part_count,
+                             const std::function<void(int, MeshPart<D>)>& take);
 
 // Per vertex of a part's mesh: on one of its interface facets.
 template <int D>
@@ -80,10 +87,10 @@ MergedMesh<D> merge_parts(const Mesh<D>& old_mesh, const std::vector<MeshPart<D>
 // was written. Throws Error when a part has an edge the mesh lacks, or gives an interface edge
 // (frozen on both sides) a node other than the mesh's.
 template <int D>
-std::vector<char> write_back_nodes(Mesh<D>& mesh, const std::vector<MeshPart<D>>& parts, std::vector<char>* written = nullptr);
+std::vector<char> write_back_nodes(Mesh<D>& mesh, std::span<const MeshPart<D>> parts, std::vector<char>* written = nullptr);
 
-// The faces between parts, each counted once.
+// A part's interface facets: each face between two parts counts once in each.
 template <int D>
-Index interface_face_count(const std::vector<MeshPart<D>>& parts);
+Index interface_facet_count(const Mesh<D>& part_mesh);
 
 }  // namespace hocav

@@ -20,12 +20,27 @@ std::uint64_t key_of(Index a, Index b) { return Mesh<3>::edge_key(a, b); }
 }  // namespace
 
 template <int D>
+PartOutline outline_of(const MeshPart<D>& part) {
+  PartOutline outline{part.global_ids, {}};
+  std::unordered_set<std::uint64_t> seen;
+  for (Index f = 0; f < part.mesh.facet_count(); ++f) {
+    if (part.mesh.facet_ref(f) != kInterfaceRef) continue;
+    const auto& facet = part.mesh.facet(f);
+    for (int i = 0; i < (D == 3 ? 3 : 1); ++i) {
+      const Index a = part.global_ids[facet[i]], b = part.global_ids[facet[(i + 1) % D]];
+      if (seen.insert(key_of(a, b)).second) outline.interface_edges.push_back({std::min(a, b), std::max(a, b)});
+    }
+  }
+  return outline;
+}
+
+template <int D>
 std::vector<std::vector<NodeUpdate<D>>> node_updates_by_part(const Mesh<D>& mesh, std::span<const Index> written,
-                                                             const std::vector<MeshPart<D>>& parts) {
+                                                             std::span<const PartOutline> parts) {
   // The parts that hold each vertex of the mesh, as offsets into one list (a vertex on an interface
   // is in several): memory for the parts' vertices, not for parts × vertices.
   std::vector<Index> offsets(static_cast<std::size_t>(mesh.vertex_count()) + 1, 0);
-  for (const MeshPart<D>& part : parts)
+  for (const PartOutline& part : parts)
     for (Index g : part.global_ids)
       if (g != kNoIndex) ++offsets[g + 1];
   for (std::size_t v = 1; v < offsets.size(); ++v) offsets[v] += offsets[v - 1];
@@ -43,23 +58,13 @@ std::vector<std::vector<NodeUpdate<D>>> node_updates_by_part(const Mesh<D>& mesh
   return updates;
 }
 
-template <int D>
-std::vector<std::vector<std::array<Index, 2>>> interface_edges_measured_before(const std::vector<MeshPart<D>>& parts) {
+std::vector<std::vector<std::array<Index, 2>>> interface_edges_measured_before(std::span<const PartOutline> parts) {
   std::unordered_set<std::uint64_t> held;  // the interface edges of the parts before
   std::vector<std::vector<std::array<Index, 2>>> before(parts.size());
   for (std::size_t p = 0; p < parts.size(); ++p) {
-    const MeshPart<D>& part = parts[p];
-    std::unordered_set<std::uint64_t> own;
-    for (Index f = 0; f < part.mesh.facet_count(); ++f) {
-      if (part.mesh.facet_ref(f) != kInterfaceRef) continue;
-      const auto& facet = part.mesh.facet(f);
-      for (int i = 0; i < (D == 3 ? 3 : 1); ++i) {
-        const Index a = part.global_ids[facet[i]], b = part.global_ids[facet[(i + 1) % D]];
-        if (!own.insert(key_of(a, b)).second) continue;
-        if (held.contains(key_of(a, b))) before[p].push_back({std::min(a, b), std::max(a, b)});
-      }
-    }
-    held.insert(own.begin(), own.end());
+    for (const auto& [a, b] : parts[p].interface_edges)
+      if (held.contains(key_of(a, b))) before[p].push_back({a, b});
+    for (const auto& [a, b] : parts[p].interface_edges) held.insert(key_of(a, b));
   }
   return before;
 }
@@ -107,9 +112,9 @@ PartMeasures measure_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics,
 }
 
 #define HOCAV_INSTANTIATE(D)                                                                                                         \
+  template PartOutline outline_of(const MeshPart<D>&);                                                                               \
   template std::vector<std::vector<NodeUpdate<D>>> node_updates_by_part(const Mesh<D>&, std::span<const Index>,                      \
-                                                                        const std::vector<MeshPart<D>>&);                            \
-  template std::vector<std::vector<std::array<Index, 2>>> interface_edges_measured_before(const std::vector<MeshPart<D>>&);          \
+                                                                        std::span<const PartOutline>);                               \
   template PartMeasures measure_part(MeshPart<D>&, std::vector<SymMat<D>>, std::span<const NodeUpdate<D>>, const std::vector<char>&, \
                                      std::span<const std::array<Index, 2>>, int);
 HOCAV_INSTANTIATE(2)

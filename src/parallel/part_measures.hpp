@@ -20,16 +20,26 @@ struct NodeUpdate {
   Vec<D> node;
 };
 
+// What rank 0 keeps of a first-round part to measure the output, not the part: its vertices'
+// global ids, and the edges of its interface facets by their global ends (low first), each once,
+// in the order of the facets.
+struct PartOutline {
+  std::vector<Index> global_ids;
+  std::vector<std::array<Index, 2>> interface_edges;
+};
+
+template <int D>
+PartOutline outline_of(const MeshPart<D>& part);
+
 // Per part, the nodes of the `written` edges of the mesh whose ends both lie in it (its vertices'
 // global ids): what later rounds changed in that part.
 template <int D>
 std::vector<std::vector<NodeUpdate<D>>> node_updates_by_part(const Mesh<D>& mesh, std::span<const Index> written,
-                                                             const std::vector<MeshPart<D>>& parts);
+                                                             std::span<const PartOutline> parts);
 
 // Per part, the interface edges (by global ends) that an earlier part holds too: each edge's gain
 // is measured once, by the first part that holds it.
-template <int D>
-std::vector<std::vector<std::array<Index, 2>>> interface_edges_measured_before(const std::vector<MeshPart<D>>& parts);
+std::vector<std::vector<std::array<Index, 2>>> interface_edges_measured_before(std::span<const PartOutline> parts);
 
 // What a part measures: each element's Jacobians, in the part's order, and the gain of each edge
 // it measures (not both ends on the whole mesh's boundary, not measured by an earlier part). An

@@ -269,7 +269,7 @@ TEST(MeshParts, CurvedNodesAreWrittenBackByGlobalIds) {
     }
   }
   ASSERT_GT(moved, 0);
-  EXPECT_EQ(write_back_nodes(mesh, parts), expected_interface);
+  EXPECT_EQ(write_back_nodes<3>(mesh, parts), expected_interface);
   EXPECT_EQ(std::vector<Vec<3>>(mesh.edge_nodes().begin(), mesh.edge_nodes().end()),
             std::vector<Vec<3>>(expected.edge_nodes().begin(), expected.edge_nodes().end()));
   EXPECT_TRUE(std::equal(mesh.elements().begin(), mesh.elements().end(), cube.mesh.elements().begin(), cube.mesh.elements().end()));
@@ -279,10 +279,10 @@ TEST(MeshParts, CurvedNodesAreWrittenBackByGlobalIds) {
   const auto interface = std::find(part.facet_refs().begin(), part.facet_refs().end(), kInterfaceRef);
   const auto& facet = part.facet(static_cast<Index>(interface - part.facet_refs().begin()));
   part.edge_node(part.find_edge(facet[0], facet[1]))[2] += 1e-9;
-  EXPECT_THROW(write_back_nodes(mesh, changed), Error);
+  EXPECT_THROW(write_back_nodes<3>(mesh, changed), Error);
   changed = parts;
   changed[0].global_ids[changed[0].mesh.edge_vertices(0)[0]] = 0;  // an edge (0, w) the mesh lacks
-  EXPECT_THROW(write_back_nodes(mesh, changed), Error);
+  EXPECT_THROW(write_back_nodes<3>(mesh, changed), Error);
 }
 
 TEST(PartMessage, RefusesP2NodesThatDoNotFit) {

@@ -58,11 +58,13 @@ struct CurvedCube {
   // the whole field: the figures rank 0 gathers.
   PartMeasures measured_by(std::vector<MeshPart<3>>& parts, const std::vector<char>& written) const {
     const std::vector<bool> on_boundary = boundary_vertex_flags(mesh);
-    const auto before = interface_edges_measured_before(parts);
+    std::vector<PartOutline> outlines;
+    for (const MeshPart<3>& part : parts) outlines.push_back(outline_of(part));
+    const auto before = interface_edges_measured_before(outlines);
     std::vector<Index> changed;
     for (Index e = 0; e < mesh.edge_count(); ++e)
       if (written[e]) changed.push_back(e);
-    const auto updates = node_updates_by_part(mesh, changed, parts);
+    const auto updates = node_updates_by_part(mesh, changed, outlines);
     PartMeasures all;
     for (std::size_t p = 0; p < parts.size(); ++p) {
       std::vector<SymMat<3>> log_metrics;
