@@ -156,18 +156,18 @@ AdaptationSettings job_settings(const AdaptationJob<D>& job, double hausd) {
 }
 
 template <int D>
-std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(const Mesh<D>& back, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job,
+std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(const Mesh<D>& input, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job,
                                                       const std::string& name) {
   auto setup = std::make_unique<AdaptationSetup<D>>();
-  setup->geometry = job.geometry(back);
+  setup->geometry = job.geometry(input);
   const bool relative_given = job.hausd_relative.value_or(0) > 0;
   if ((job.hausd || relative_given) && !setup->geometry && job.warn) {
     const char* given = job.hausd && relative_given ? "--hausd, --hausd-relative" : job.hausd ? "--hausd" : "--hausd-relative";
     job.warn(std::string("the Hausdorff bound (") + given + ") bounds nothing without a boundary geometry (--surface none)");
   }
-  setup->settings = job_settings(job, job.hausd.value_or(kRelativeHausd * bounding_box_diagonal(back)));
-  make_job_metric(*setup, back, std::move(metrics), job);
-  const double expected = expected_element_count(back, *setup->metric);
+  setup->settings = job_settings(job, job.hausd.value_or(kRelativeHausd * bounding_box_diagonal(input)));
+  make_job_metric(*setup, input, std::move(metrics), job);
+  const double expected = expected_element_count(input, *setup->metric);
   check_memory_fits("adapting " + name + " (the metric asks for about " + std::to_string(static_cast<long long>(expected)) + " elements)",
                     expected, kAdaptationBytesPerElement);
   return setup;

@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "base/error.hpp"
-#include "geom/box.hpp"
+#include "mesh/mesh_box.hpp"
 
 namespace hocav {
 
@@ -29,8 +29,7 @@ namespace {
 // Each vertex's position in the Morton order of the vertices (ties by id).
 template <int D>
 std::vector<Index> vertices_in_morton_order(const Mesh<D>& mesh) {
-  Box<D> box = Box<D>::empty();
-  for (const Vec<D>& x : mesh.vertices()) box.add(x);
+  const Box<D> box = vertex_box(mesh);
   std::vector<std::pair<std::uint64_t, Index>> keyed(static_cast<std::size_t>(mesh.vertex_count()));
   for (Index v = 0; v < mesh.vertex_count(); ++v)
     keyed[static_cast<std::size_t>(v)] = {morton_code<D>(mesh.vertex(v), box.lower, box.upper - box.lower), v};

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "base/error.hpp"
+#include "mesh/mesh_box.hpp"
 #include "parallel/byte_stream.hpp"
 #include "parallel/communicator.hpp"
 
@@ -38,13 +39,6 @@ struct SharePiece {
     return piece;
   }
 };
-
-template <int D>
-Box<D> element_box(const Mesh<D>& mesh, Index k) {
-  Box<D> box = Box<D>::empty();
-  for (Index v : mesh.element(k)) box.add(mesh.vertex(v));
-  return box;
-}
 
 // The piece of back mesh `mesh` (vertex v's global id global_ids[v], or v when empty) made of the
 // elements k for which keep(k).
@@ -183,7 +177,7 @@ template <int D>
 ShareRegion<D> share_region(const Mesh<D>& mesh) {
   ShareRegion<D> region;
   if (mesh.element_count() == 0) return region;
-  for (const Vec<D>& x : mesh.vertices()) region.box.add(x);
+  region.box = vertex_box(mesh);
   const double margin = kShareMargin * norm(region.box.upper - region.box.lower);
   for (int i = 0; i < D; ++i) region.box.lower[i] -= margin, region.box.upper[i] += margin;
   std::array<char, ShareRegion<D>::kCells> met{};

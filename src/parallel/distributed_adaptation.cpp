@@ -16,7 +16,6 @@
 #include "metric/implied_metric.hpp"
 #include "parallel/back_mesh_share.hpp"
 #include "parallel/communicator.hpp"
-#include "parallel/distributed_graph.hpp"
 #include "parallel/element_partition.hpp"
 #include "parallel/part_adaptation.hpp"
 #include "parallel/part_message.hpp"
@@ -122,9 +121,8 @@ std::vector<double> scattered_by_part(const std::vector<double>& values, std::sp
 template <int D>
 void partition_first(MeshPart<D>& part, std::span<const double> loads, std::int64_t partition_seed, DistributedIteration& figures) {
   const auto start = std::chrono::steady_clock::now();
-  const DistributedGraph graph = distributed_element_graph(part, loads, {});
   long long bytes_sent = 0;
-  part = migrate_part(part, partition_distributed_graph(graph, process_count(), partition_seed), &bytes_sent);
+  part = repartition(part, loads, {}, partition_seed, &bytes_sent);
   figures.bytes_sent += sum_over_processes(bytes_sent);
   figures.seconds_partition += seconds_since(start);
   figures.seconds += seconds_since(start);
@@ -141,7 +139,7 @@ struct RootIteration {
   std::int64_t partition_seed;
   std::vector<char> old_interface;  // per vertex of `mesh`: on the interfaces between adapted parts
   DistributedIteration figures;
-  const BackMeshShare<D>* home = nullptr;  // rank 0's share of the back mesh, which the other parts' metrics need
+  const BackMeshShare<D>* home;  // rank 0's share of the back mesh, which the other parts' metrics need
 
   // The parts' metric is `metric`, figures.metric_fraction of the way (sent to the other ranks).
   AdaptationRun run(const std::vector<int>& part_of, std::chrono::steady_clock::time_point start) {
@@ -306,24 +304,24 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   // home shares of the back mesh (the input). PT-Scotch then cuts the parts' distributed graph.
   const auto start = std::chrono::steady_clock::now();
   DistributedIteration first;
-  RootIteration<D> root{mesh, metric, geometry, whole.settings, partition_seed, {}, {}};
   const std::vector<double> loads = expected_element_counts(mesh, metric.partway_from(input_metric, gradual_fraction(1, steps)));
   const std::vector<int> part_of = spatial_cut(mesh, loads, process_count());
   const BackMeshShare<D> home = scatter_back_mesh(mesh, part_of, share_log_metrics(metric, input_metric), &first.back_mesh_bytes);
-  root.home = &home;
   MeshPart<D> part = migrate_part(whole_mesh_part(std::move(mesh)), part_of, &first.bytes_sent);
   first.seconds_partition = first.seconds = seconds_since(start);
   partition_first(part, scattered_by_part(loads, part_of), partition_seed, first);
   const PeerIterationResult peer = whole.run(part, home, first, on_iteration);
   AdaptationRun run = peer.run;
-  root.old_interface = flags_of_global_ids(part, peer.interface_vertices);
+  std::vector<char> old_interface = flags_of_global_ids(part, peer.interface_vertices);
   mesh = whole_mesh_of(std::move(part));
   mesh.build_topology();
   // The band, from rank 0.
-  root.figures = {};
+  const double band_fraction = gradual_fraction(kDistributedIterations, steps);
+  RootIteration<D> root{
+      mesh, metric.partway_from(input_metric, band_fraction), geometry, whole.settings, partition_seed, std::move(old_interface), {},
+      &home};
   root.figures.iteration = kDistributedIterations;
-  root.metric = metric.partway_from(input_metric, gradual_fraction(kDistributedIterations, steps));
-  root.figures.metric_fraction = gradual_fraction(kDistributedIterations, steps);
+  root.figures.metric_fraction = band_fraction;
   const AdaptationRun band = root.run(root.band_partition(), std::chrono::steady_clock::now());
   run.passes.insert(run.passes.end(), band.passes.begin(), band.passes.end());
   run.caps_removed += band.caps_removed;

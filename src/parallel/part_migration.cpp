@@ -7,6 +7,7 @@
 #include "base/error.hpp"
 #include "parallel/byte_stream.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/distributed_graph.hpp"
 #include "parallel/entity_tags.hpp"
 
 namespace hocav {
@@ -293,6 +294,15 @@ MeshPart<D> migrate_part(const MeshPart<D>& part, std::span<const int> destinati
   return std::move(unpacker.part);
 }
 
+template <int D>
+MeshPart<D> repartition(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> old_interface,
+                        std::int64_t partition_seed, long long* bytes_sent) {
+  const DistributedGraph graph = distributed_element_graph(part, loads, old_interface);
+  return migrate_part(part, partition_distributed_graph(graph, process_count(), partition_seed), bytes_sent);
+}
+
+template MeshPart<2> repartition(const MeshPart<2>&, std::span<const double>, std::span<const char>, std::int64_t, long long*);
+template MeshPart<3> repartition(const MeshPart<3>&, std::span<const double>, std::span<const char>, std::int64_t, long long*);
 template MeshPart<2> migrate_part(const MeshPart<2>&, std::span<const int>, long long*);
 template MeshPart<3> migrate_part(const MeshPart<3>&, std::span<const int>, long long*);
 

@@ -4,6 +4,7 @@
 // arrives. The interfaces follow the elements; no process sees more than its own part.
 #pragma once
 
+#include <cstdint>
 #include <span>
 
 #include "parallel/mesh_parts.hpp"
@@ -23,5 +24,12 @@ namespace hocav {
 // `bytes_sent` when given.
 template <int D>
 MeshPart<D> migrate_part(const MeshPart<D>& part, std::span<const int> destination, long long* bytes_sent = nullptr);
+
+// Every process at once: the parts cut again by PT-Scotch (the distributed graph of the parts, weighed
+// by `loads` per element and heavy across faces near `old_interface` vertices, which may be empty:
+// distributed_element_graph) and the elements migrated to the new parts.
+template <int D>
+MeshPart<D> repartition(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> old_interface,
+                        std::int64_t partition_seed, long long* bytes_sent = nullptr);
 
 }  // namespace hocav

@@ -7,7 +7,6 @@
 
 #include "base/stopwatch.hpp"
 #include "parallel/communicator.hpp"
-#include "parallel/distributed_graph.hpp"
 #include "parallel/part_adaptation.hpp"
 #include "parallel/part_migration.hpp"
 
@@ -88,9 +87,8 @@ PeerIterationResult run_peer_iteration(MeshPart<D>& part, Index& next_global_id,
   const auto moving = std::chrono::steady_clock::now();
   long long bytes_sent = 0;
   if (iteration.next_metric) {
-    const DistributedGraph graph = distributed_element_graph(part, expected_element_counts(part.mesh, *iteration.next_metric),
-                                                             on_interface);
-    part = migrate_part(part, partition_distributed_graph(graph, process_count(), iteration.partition_seed), &bytes_sent);
+    part = repartition(part, expected_element_counts(part.mesh, *iteration.next_metric), on_interface, iteration.partition_seed,
+                       &bytes_sent);
   } else {
     for (const std::vector<std::byte>& bytes : gathered_on_root(bytes_of_values(shared))) {
       const std::vector<Index> ids = values_of_bytes<Index>(bytes);

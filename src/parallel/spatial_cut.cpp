@@ -5,15 +5,14 @@
 #include <numeric>
 #include <utility>
 
-#include "geom/box.hpp"
+#include "mesh/mesh_box.hpp"
 #include "mesh/spatial_order.hpp"
 
 namespace hocav {
 
 template <int D>
 std::vector<int> spatial_cut(const Mesh<D>& mesh, std::span<const double> loads, int parts) {
-  Box<D> box = Box<D>::empty();
-  for (const Vec<D>& x : mesh.vertices()) box.add(x);
+  const Box<D> box = vertex_box(mesh);
   std::vector<std::pair<std::uint64_t, Index>> order;
   order.reserve(static_cast<std::size_t>(mesh.element_count()));
   for (Index k = 0; k < mesh.element_count(); ++k) {

@@ -19,6 +19,7 @@
 #include <string>
 
 #include "cases/structured.hpp"
+#include "mesh/mesh_box.hpp"
 #include "metric/implied_metric.hpp"
 #include "mpi_test_main.hpp"
 #include "parallel/back_mesh_share.hpp"
@@ -40,13 +41,6 @@ Vec<D> centroid(const Mesh<D>& mesh, Index k) {
   Vec<D> sum{};
   for (Index v : mesh.element(k)) sum += mesh.vertex(v);
   return sum * (1.0 / (D + 1));
-}
-
-template <int D>
-Box<D> element_box(const Mesh<D>& mesh, Index k) {
-  Box<D> box = Box<D>::empty();
-  for (Index v : mesh.element(k)) box.add(mesh.vertex(v));
-  return box;
 }
 
 // An element as its sorted global vertex ids.
