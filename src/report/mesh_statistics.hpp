@@ -110,10 +110,10 @@ template <int D>
 MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> node_metrics = {}, int threads = 1);
 
 // The metric figures alone (edge lengths and qualities as above), without the checks and Jacobian
-// figures of compute_mesh_statistics: what `hocav adapt` reports on its output. Builds the mesh's
-// edge table when it has none.
+// figures of compute_mesh_statistics: what `hocav adapt` reports on its output. A P1 mesh needs no
+// edge table: its edges are found from its elements.
 template <int D>
-MetricStatistics compute_metric_statistics(Mesh<D>& mesh, std::span<const double> node_metrics, int threads = 1);
+MetricStatistics compute_metric_statistics(const Mesh<D>& mesh, std::span<const double> node_metrics, int threads = 1);
 
 // The bin of an edge length (index into MetricStatistics::histogram).
 std::size_t edge_length_bin(double length);

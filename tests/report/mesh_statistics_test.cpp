@@ -266,6 +266,30 @@ TEST(MeshStatistics, MaxAnisotropyIsTheLargestSizeRatio) {
   EXPECT_NEAR(statistics.metric->max_anisotropy, 100, 1e-9);
 }
 
+// `hocav adapt` measures its P1 output without an edge table (the edges found from the elements):
+// the same edges and figures as with the table, on a cube whose metric varies (so that the edge
+// lengths differ), and no table built.
+TEST(MeshStatistics, P1MetricFiguresNeedNoEdgeTable) {
+  Mesh<3> mesh = generate_cube(5);
+  std::vector<double> metrics;
+  for (const Vec3& x : mesh.vertices()) {
+    const double a = 25 * (1 + 3 * x[0] * x[0]), b = 25 * (1 + x[1]), c = 25 * (2 - x[2]);
+    metrics.insert(metrics.end(), {a, 0.1 * a, b, 0, 0, c});
+  }
+  const MetricStatistics without = compute_metric_statistics(mesh, metrics);
+  EXPECT_FALSE(mesh.has_edges());
+  mesh.build_edges();
+  const MetricStatistics with = compute_metric_statistics(mesh, metrics);
+  EXPECT_EQ(without.edge_count, mesh.edge_count());
+  EXPECT_EQ(without.histogram, with.histogram);
+  EXPECT_EQ(without.min, with.min);
+  EXPECT_EQ(without.max, with.max);
+  EXPECT_NEAR(without.mean, with.mean, 1e-14 * with.mean);
+  EXPECT_EQ(without.quality_min, with.quality_min);
+  EXPECT_EQ(without.quality_mean, with.quality_mean);
+  EXPECT_LT(without.min, 0.9 * without.max);
+}
+
 // With la, lb the lengths of e in the end metrics, an isotropic metric whose log varies linearly gives
 // the logarithmic mean (lb − la) / log(lb / la).
 TEST(MeshStatistics, EdgeLengthIsRiemannianWithTheLogMetricLinearAlongAStraightEdge) {
