@@ -19,7 +19,7 @@ namespace {
 // PT-Scotch's seed for the first round's partition: the same mesh, the same parts.
 constexpr std::int64_t kCurvingPartitionSeed = 0;
 
-// What a part's curving sends back besides the part.
+// What a part's curving sends back besides its nodes.
 struct PartCurving {
   P2CavityCounters counters;
   ProposalCompletion completion;
@@ -104,10 +104,11 @@ struct RootRound {
   std::vector<SymMat<D>> first_log_metrics;
   std::vector<PartOutline> first_outlines;
   std::vector<char> written_later;
+  std::vector<char> on_interface;  // per vertex of `mesh`: on an interface of the round's parts
 
   // A round whose curved elements are cut into `band_parts` parts (the first round: every element).
-  // Each other process's part is sent as soon as it is made, and written back as soon as it comes
-  // back: rank 0 holds one besides its own and the mesh.
+  // Each other process's part is sent as soon as it is made, rank 0's own made last, and each comes
+  // back as its edges' nodes, written back as they come: rank 0 holds one part besides the mesh.
   PartCurving run(int band_parts) {
     const auto start = std::chrono::steady_clock::now();
     const int count = process_count();
@@ -115,9 +116,13 @@ struct RootRound {
     MeshPart<D> own;
     std::vector<Index> elements_sent(static_cast<std::size_t>(count));
     Index interface_facets = 0;
-    split_mesh_part_by_part<D>(mesh, part_of_elements(band_parts), count, [&](int p, MeshPart<D> part) {
+    on_interface.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
+    if (first) first_outlines.resize(static_cast<std::size_t>(count));
+    split_mesh_part_by_part<D>(mesh, part_of_elements(band_parts), own_part_last(count), [&](int p, MeshPart<D> part) {
       elements_sent[p] = part.mesh.element_count();
       interface_facets += interface_facet_count(part.mesh);
+      mark_interface_vertices(part);
+      if (first) first_outlines[p] = outline_of(part);
       if (p == 0) {
         own = std::move(part);
         return;
@@ -128,20 +133,17 @@ struct RootRound {
     });
     figures.interface_faces = interface_facets / 2;
     PartCurving round = curve_part(own, log_metrics_of(own), region_of(own), geometry, options);
-    std::vector<char> on_interface(static_cast<std::size_t>(mesh.vertex_count()), 0);
-    write_back(own, 0, elements_sent[0], on_interface);
+    write_back(edge_node_records(own), {own.mesh.element_count()}, 0, elements_sent[0]);
     if (first) {
-      first_outlines.push_back(outline_of(own));
       first_log_metrics = log_metrics_of(own);
       first_own = std::move(own);
     }
     for (int p = 1; p < count; ++p) {
-      const MeshPart<D> part = unpack_part<D>(receive(p));
+      const auto nodes = values_of_bytes<EdgeNodeRecord<D>>(receive(p));
+      write_back(nodes, values_of_bytes<Index>(receive(p)), p, elements_sent[p]);
       add_part(round, values_of_bytes<PartCurving>(receive(p)).at(0));
-      write_back(part, p, elements_sent[p], on_interface);
-      if (first) first_outlines.push_back(outline_of(part));
     }
-    update_pending(std::move(on_interface));
+    update_pending();
     if (first) written_later.assign(static_cast<std::size_t>(mesh.edge_count()), 0);
     figures.cavities = round.counters.cavities;
     figures.seconds += seconds_since(start);
@@ -176,21 +178,25 @@ struct RootRound {
     return out;
   }
 
-  // Part p's nodes into the mesh (it must come back with the `sent` elements); the vertices on its
-  // interfaces marked in `on_interface`.
-  void write_back(const MeshPart<D>& part, int p, Index sent, std::vector<char>& on_interface) {
-    if (part.mesh.element_count() != sent)
+  // The vertices on the interfaces of a part of this round into `on_interface`.
+  void mark_interface_vertices(const MeshPart<D>& part) {
+    const std::vector<char> on_its_interfaces = interface_vertex_flags(part.mesh);
+    for (Index v = 0; v < part.mesh.vertex_count(); ++v)
+      if (on_its_interfaces[v]) on_interface[part.global_ids[v]] = 1;
+  }
+
+  // Part p's curved nodes into the mesh; it must come back with the `sent` elements (`elements`, one value).
+  void write_back(std::span<const EdgeNodeRecord<D>> nodes, const std::vector<Index>& elements, int p, Index sent) {
+    if (elements.size() != 1 || elements[0] != sent)
       throw Error("distributed curving: part " + std::to_string(p) + " came back with another element count");
-    const std::vector<char> on_its_interfaces = write_back_nodes<D>(mesh, std::span<const MeshPart<D>>(&part, 1),
-                                                                    pending.empty() ? nullptr : &written_later);
-    for (std::size_t v = 0; v < on_interface.size(); ++v) on_interface[v] = on_interface[v] || on_its_interfaces[v];
+    write_back_nodes<D>(mesh, nodes, pending.empty() ? nullptr : &written_later);
   }
 
   // The vertices on this round's interfaces leave the pending ones (the first round's are the first pending).
-  void update_pending(std::vector<char> on_interface) {
+  void update_pending() {
     figures.interface_vertices = static_cast<Index>(std::count(on_interface.begin(), on_interface.end(), 1));
     if (pending.empty()) {
-      pending = std::move(on_interface);
+      pending = on_interface;
       return;
     }
     for (std::size_t v = 0; v < pending.size(); ++v) {
@@ -264,7 +270,7 @@ CurvingReport curve_distributed(Mesh<D>& mesh, const MetricField<D>& field, cons
   const Index points_before = mesh.vertex_count();
   CurvingOptions part_options = options;
   part_options.progress = {};  // rank 0's part is not the whole
-  RootRound<D> root{mesh, field, geometry, part_options, std::move(first_partition), {}, {}, {}, {}, {}, {}};
+  RootRound<D> root{mesh, field, geometry, part_options, std::move(first_partition), {}, {}, {}, {}, {}, {}, {}};
   PartCurving total;
   for (int round = 1; round <= kDistributedCurvingRounds; ++round) {
     if (round > 1 && std::find(root.pending.begin(), root.pending.end(), 1) == root.pending.end()) break;
@@ -300,7 +306,8 @@ void serve_distributed_curving(const BoundaryGeometry<D>* geometry, const Curvin
     std::vector<SymMat<D>> log_metrics = receive_values<SymMat<D>>(0);
     const std::vector<char> region = receive_values<char>(0);
     const PartCurving result = curve_part(part, first_round ? log_metrics : std::move(log_metrics), region, geometry, options);
-    send_bytes(0, pack_part(part.mesh, std::span<const Index>(part.global_ids)));
+    send_values(0, edge_node_records(part));
+    send_values(0, std::vector<Index>{part.mesh.element_count()});
     send_values(0, std::vector<PartCurving>{result});
     if (first_round) {
       first = std::move(part);

@@ -1,6 +1,8 @@
 #include "parallel/mesh_parts.hpp"
 
 #include <algorithm>
+#include <numeric>
+#include <string>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -106,8 +108,9 @@ struct PartBuilder {
 }  // namespace
 
 template <int D>
-void split_mesh_part_by_part(const Mesh<D>& mesh, std::span<const int> part_of, int part_count,
+void split_mesh_part_by_part(const Mesh<D>& mesh, std::span<const int> part_of, std::span<const int> order,
                              const std::function<void(int, MeshPart<D>)>& take) {
+  const int part_count = order.empty() ? 0 : *std::max_element(order.begin(), order.end()) + 1;
   std::vector<std::vector<Index>> elements(static_cast<std::size_t>(part_count)), facets(elements.size());
   for (Index k = 0; k < mesh.element_count(); ++k)
     if (part_of[k] >= 0) elements[part_of[k]].push_back(k);
@@ -119,14 +122,23 @@ void split_mesh_part_by_part(const Mesh<D>& mesh, std::span<const int> part_of, 
   std::vector<Index> line_stamp(static_cast<std::size_t>(mesh.line_count()), -1);
   const std::vector<char> non_manifold = flags_of(non_manifold_places(mesh).every_vertex(), mesh.vertex_count());
   PartBuilder<D> builder{mesh, part_of, tags, line_of_edge, local, line_stamp, non_manifold};
-  for (int p = 0; p < part_count; ++p) take(p, builder.build(p, elements[p], facets[p]));
+  for (int p : order) take(p, builder.build(p, elements[p], facets[p]));
 }
 
 template <int D>
 std::vector<MeshPart<D>> split_mesh(const Mesh<D>& mesh, std::span<const int> part_of, int part_count) {
+  std::vector<int> order(static_cast<std::size_t>(part_count));
+  std::iota(order.begin(), order.end(), 0);
   std::vector<MeshPart<D>> parts;
-  split_mesh_part_by_part<D>(mesh, part_of, part_count, [&](int, MeshPart<D> part) { parts.push_back(std::move(part)); });
+  split_mesh_part_by_part<D>(mesh, part_of, order, [&](int, MeshPart<D> part) { parts.push_back(std::move(part)); });
   return parts;
+}
+
+std::vector<int> own_part_last(int count) {
+  std::vector<int> order(static_cast<std::size_t>(count));
+  std::iota(order.begin(), order.end(), 1);
+  if (count > 0) order.back() = 0;
+  return order;
 }
 
 namespace {
@@ -293,39 +305,49 @@ std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<D>& mesh) {
 }
 
 template <int D>
-std::vector<char> write_back_nodes(Mesh<D>& mesh, std::span<const MeshPart<D>> parts, std::vector<char>* written) {
-  std::vector<char> interface_vertex(static_cast<std::size_t>(mesh.vertex_count()), 0);
-  for (const MeshPart<D>& part : parts) {
-    const std::unordered_set<std::uint64_t> frozen = interface_edge_keys(part.mesh);
-    const std::vector<char> on_interface = interface_vertex_flags(part.mesh);
-    for (Index v = 0; v < part.mesh.vertex_count(); ++v)
-      if (on_interface[v]) interface_vertex[part.global_ids[v]] = 1;
-    for (Index e = 0; e < part.mesh.edge_count(); ++e) {
-      const auto& ends = part.mesh.edge_vertices(e);
-      if (ends[0] == kNoIndex) continue;  // a removed edge
-      const Index a = part.global_ids[ends[0]], b = part.global_ids[ends[1]], whole = mesh.find_edge(a, b);
-      if (whole == kNoIndex)
-        throw Error("distributed curving: a part has edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) +
-                    "), which the mesh lacks");
-      if (!frozen.contains(Mesh<D>::edge_key(ends[0], ends[1]))) {
-        mesh.edge_node(whole) = part.mesh.edge_node(e);
-        if (written) (*written)[whole] = 1;
-      } else if (!(part.mesh.edge_node(e) == mesh.edge_node(whole)))
-        throw Error("distributed curving: interface edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) +
-                    ") came back with another node");
+std::vector<EdgeNodeRecord<D>> edge_node_records(const MeshPart<D>& part) {
+  const std::unordered_set<std::uint64_t> frozen = interface_edge_keys(part.mesh);
+  std::vector<EdgeNodeRecord<D>> records;
+  for (Index e = 0; e < part.mesh.edge_count(); ++e) {
+    const auto& ends = part.mesh.edge_vertices(e);
+    if (ends[0] == kNoIndex) continue;  // a removed edge
+    records.push_back({{part.global_ids[ends[0]], part.global_ids[ends[1]]},
+                       part.mesh.edge_node(e),
+                       frozen.contains(Mesh<D>::edge_key(ends[0], ends[1]))});
+  }
+  return records;
+}
+
+template <int D>
+void write_back_nodes(Mesh<D>& mesh, std::span<const EdgeNodeRecord<D>> nodes, std::vector<char>* written) {
+  for (const EdgeNodeRecord<D>& record : nodes) {
+    const auto [a, b] = record.ends;
+    const Index whole = a == kNoIndex || b == kNoIndex ? kNoIndex : mesh.find_edge(a, b);
+    if (whole == kNoIndex)
+      throw Error("distributed curving: a part has edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) +
+                  "), which the mesh lacks");
+    if (!record.frozen) {
+      mesh.edge_node(whole) = record.node;
+      if (written) (*written)[whole] = 1;
+    } else if (!(record.node == mesh.edge_node(whole))) {
+      throw Error("distributed curving: interface edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) +
+                  ") came back with another node");
     }
   }
-  return interface_vertex;
 }
 
 template std::vector<char> interface_vertex_flags(const Mesh<2>&);
 template std::vector<char> interface_vertex_flags(const Mesh<3>&);
 template std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<2>&);
 template std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<3>&);
-template std::vector<char> write_back_nodes(Mesh<2>&, std::span<const MeshPart<2>>, std::vector<char>*);
-template std::vector<char> write_back_nodes(Mesh<3>&, std::span<const MeshPart<3>>, std::vector<char>*);
-template void split_mesh_part_by_part(const Mesh<2>&, std::span<const int>, int, const std::function<void(int, MeshPart<2>)>&);
-template void split_mesh_part_by_part(const Mesh<3>&, std::span<const int>, int, const std::function<void(int, MeshPart<3>)>&);
+template std::vector<EdgeNodeRecord<2>> edge_node_records(const MeshPart<2>&);
+template std::vector<EdgeNodeRecord<3>> edge_node_records(const MeshPart<3>&);
+template void write_back_nodes(Mesh<2>&, std::span<const EdgeNodeRecord<2>>, std::vector<char>*);
+template void write_back_nodes(Mesh<3>&, std::span<const EdgeNodeRecord<3>>, std::vector<char>*);
+template void split_mesh_part_by_part(const Mesh<2>&, std::span<const int>, std::span<const int>,
+                                      const std::function<void(int, MeshPart<2>)>&);
+template void split_mesh_part_by_part(const Mesh<3>&, std::span<const int>, std::span<const int>,
+                                      const std::function<void(int, MeshPart<3>)>&);
 template std::vector<MeshPart<2>> split_mesh(const Mesh<2>&, std::span<const int>, int);
 template std::vector<MeshPart<3>> split_mesh(const Mesh<3>&, std::span<const int>, int);
 template MeshPart<2> whole_mesh_part(Mesh<2>);

@@ -3,6 +3,8 @@
 // facets, and the merge of the adapted parts by global vertex ids.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <span>
@@ -39,11 +41,15 @@ struct MeshPart {
 template <int D>
 std::vector<MeshPart<D>> split_mesh(const Mesh<D>& mesh, std::span<const int> part_of, int part_count);
 
-// The same parts handed to `take` one at a time, in order, each built when the last is taken: a
-// caller that sends each part away holds one at once.
+// The same parts handed to `take` one at a time, part order[0] first, each built when the last is
+// taken: a caller that sends each part away holds one at once.
 template <int D>
-void split_mesh_part_by_part(const Mesh<D>& mesh, std::span<const int> part_of, int part_count,
+void split_mesh_part_by_part(const Mesh<D>& mesh, std::span<const int> part_of, std::span<const int> order,
                              const std::function<void(int, MeshPart<D>)>& take);
+
+// The parts 1, 2, ..., count - 1, then 0: the order in which rank 0 makes the parts it sends away,
+// then its own, so that it holds its own only once the others are gone.
+std::vector<int> own_part_last(int count);
 
 // Per vertex of a part's mesh: on one of its interface facets.
 template <int D>
@@ -80,14 +86,26 @@ struct MergedMesh {
 template <int D>
 MergedMesh<D> merge_parts(const Mesh<D>& old_mesh, const std::vector<MeshPart<D>>& parts);
 
-// Writes the P2 nodes of curved `parts` of the P2 `mesh` back into it by global vertex ids: a
-// curving changes no element, only edge nodes (each ball is re-starred from its own vertex), so the
-// mesh keeps its elements, their order and its edge table. Returns per mesh vertex whether it lies
-// on an interface facet of a part; with `written`, marks there (per mesh edge) the edges whose node
-// was written. Throws Error when a part has an edge the mesh lacks, or gives an interface edge
-// (frozen on both sides) a node other than the mesh's.
+// A curved part's edge node by the edge's ends in the mesh the part came from, and whether the edge
+// lies on one of the part's interface facets (frozen on both sides: its node comes back unchanged).
 template <int D>
-std::vector<char> write_back_nodes(Mesh<D>& mesh, std::span<const MeshPart<D>> parts, std::vector<char>* written = nullptr);
+struct EdgeNodeRecord {
+  std::array<Index, 2> ends;
+  Vec<D> node;
+  std::int32_t frozen;
+};
+
+// The edge nodes of a P2 part (with its edge table), by global ends: what a part's curving sends
+// back, a curving changing no element (each ball is re-starred from its own vertex), only nodes.
+template <int D>
+std::vector<EdgeNodeRecord<D>> edge_node_records(const MeshPart<D>& part);
+
+// Writes a curved part's `nodes` back into the P2 `mesh` it came from: the mesh keeps its elements,
+// their order and its edge table. With `written`, marks there (per mesh edge) the edges whose node
+// was written (those not frozen). Throws Error when an edge is not the mesh's, or a frozen edge
+// comes back with a node other than the mesh's.
+template <int D>
+void write_back_nodes(Mesh<D>& mesh, std::span<const EdgeNodeRecord<D>> nodes, std::vector<char>* written = nullptr);
 
 // A part's interface facets: each face between two parts counts once in each.
 template <int D>

@@ -9,14 +9,14 @@
 namespace hocav {
 namespace {
 
-// Rank 0: the Morton pieces of `mesh`, each other process's sent as soon as it is made; returns its
-// own and the cut.
+// Rank 0: the Morton pieces of `mesh`, each other process's sent as soon as it is made, its own made
+// last; returns its own and the cut.
 template <int D>
 MeshPart<D> scatter_pieces(const Mesh<D>& mesh, std::vector<int>& cut, long long& bytes_sent) {
   const std::vector<double> loads(static_cast<std::size_t>(mesh.element_count()), 1.0);
   cut = spatial_cut(mesh, loads, process_count());
   MeshPart<D> own;
-  split_mesh_part_by_part<D>(mesh, cut, process_count(), [&](int p, MeshPart<D> piece) {
+  split_mesh_part_by_part<D>(mesh, cut, own_part_last(process_count()), [&](int p, MeshPart<D> piece) {
     if (p == 0)
       own = std::move(piece);
     else

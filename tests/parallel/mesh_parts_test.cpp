@@ -239,8 +239,9 @@ TEST(MeshParts, PartsThatDisagreeOnAnInterfaceNodeAreRefused) {
 
 // Parts of the middle slab and of the last, the first slab in no part; each part moves the nodes of
 // its edges off the interfaces: written back by global ids, the mesh takes exactly those moves and
-// keeps every other node, its elements and their order. A part that gives an interface edge another
-// node, or holds an edge the mesh lacks, is refused.
+// keeps every other node, its elements and their order; the records of the interface edges are the
+// frozen ones. A part that gives an interface edge another node, or holds an edge the mesh lacks, is
+// refused.
 TEST(MeshParts, CurvedNodesAreWrittenBackByGlobalIds) {
   SlicedCube cube(3);
   Mesh<3> mesh = curved_cube(cube);
@@ -249,39 +250,38 @@ TEST(MeshParts, CurvedNodesAreWrittenBackByGlobalIds) {
   std::vector<MeshPart<3>> parts = split_mesh(mesh, part_of, 2);
   Mesh<3> expected = mesh;
   Index moved = 0;
-  std::vector<char> expected_interface(static_cast<std::size_t>(mesh.vertex_count()), 0);
+  std::vector<std::vector<EdgeNodeRecord<3>>> records;
   for (MeshPart<3>& part : parts) {
     std::set<std::pair<Index, Index>> interface;
     for (Index f = 0; f < part.mesh.facet_count(); ++f)
       if (part.mesh.facet_ref(f) == kInterfaceRef) {
         const auto& facet = part.mesh.facet(f);
-        for (int i = 0; i < 3; ++i) {
-          expected_interface[part.global_ids[facet[i]]] = 1;
-          interface.insert(std::minmax(facet[i], facet[(i + 1) % 3]));
-        }
+        for (int i = 0; i < 3; ++i) interface.insert(std::minmax(part.global_ids[facet[i]], part.global_ids[facet[(i + 1) % 3]]));
       }
     for (Index e = 0; e < part.mesh.edge_count(); ++e) {
       const auto [a, b] = part.mesh.edge_vertices(e);
-      if (interface.contains(std::minmax(a, b))) continue;
+      if (interface.contains(std::minmax(part.global_ids[a], part.global_ids[b]))) continue;
       part.mesh.edge_node(e)[0] += 1e-3;
       expected.edge_node(expected.find_edge(part.global_ids[a], part.global_ids[b]))[0] += 1e-3;
       ++moved;
     }
+    records.push_back(edge_node_records(part));
+    for (const EdgeNodeRecord<3>& record : records.back())
+      EXPECT_EQ(record.frozen != 0, interface.contains(std::minmax(record.ends[0], record.ends[1])));
   }
   ASSERT_GT(moved, 0);
-  EXPECT_EQ(write_back_nodes<3>(mesh, parts), expected_interface);
+  for (const auto& nodes : records) write_back_nodes<3>(mesh, nodes);
   EXPECT_EQ(std::vector<Vec<3>>(mesh.edge_nodes().begin(), mesh.edge_nodes().end()),
             std::vector<Vec<3>>(expected.edge_nodes().begin(), expected.edge_nodes().end()));
   EXPECT_TRUE(std::equal(mesh.elements().begin(), mesh.elements().end(), cube.mesh.elements().begin(), cube.mesh.elements().end()));
 
-  std::vector<MeshPart<3>> changed = parts;
-  Mesh<3>& part = changed[0].mesh;
-  const auto interface = std::find(part.facet_refs().begin(), part.facet_refs().end(), kInterfaceRef);
-  const auto& facet = part.facet(static_cast<Index>(interface - part.facet_refs().begin()));
-  part.edge_node(part.find_edge(facet[0], facet[1]))[2] += 1e-9;
+  std::vector<EdgeNodeRecord<3>> changed = records[0];
+  const auto frozen = std::find_if(changed.begin(), changed.end(), [](const EdgeNodeRecord<3>& record) { return record.frozen != 0; });
+  ASSERT_NE(frozen, changed.end());
+  frozen->node[2] += 1e-9;
   EXPECT_THROW(write_back_nodes<3>(mesh, changed), Error);
-  changed = parts;
-  changed[0].global_ids[changed[0].mesh.edge_vertices(0)[0]] = 0;  // an edge (0, w) the mesh lacks
+  changed = records[0];
+  changed[0].ends[0] = changed[0].ends[1] == 0 ? 1 : 0;  // an edge (0, w) the mesh lacks (vertex 0 is in slab 0)
   EXPECT_THROW(write_back_nodes<3>(mesh, changed), Error);
 }
 
