@@ -297,8 +297,10 @@ MeshPart<D> migrate_part(const MeshPart<D>& part, std::span<const int> destinati
 template <int D>
 MeshPart<D> repartition(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> old_interface,
                         std::int64_t partition_seed, long long* bytes_sent) {
-  const DistributedGraph graph = distributed_element_graph(part, loads, old_interface);
-  return migrate_part(part, partition_distributed_graph(graph, process_count(), partition_seed), bytes_sent);
+  // (The graph is a temporary: freed before the migration, which holds the old part and the new.)
+  const std::vector<int> destination = partition_distributed_graph(distributed_element_graph(part, loads, old_interface), process_count(),
+                                                                   partition_seed);
+  return migrate_part(part, destination, bytes_sent);
 }
 
 template MeshPart<2> repartition(const MeshPart<2>&, std::span<const double>, std::span<const char>, std::int64_t, long long*);
