@@ -107,14 +107,39 @@ struct RootRound {
   std::vector<char> on_interface;  // per vertex of `mesh`: on an interface of the round's parts
 
   // A round whose curved elements are cut into `band_parts` parts (the first round: every element).
-  // Each other process's part is sent as soon as it is made, rank 0's own made last, and each comes
-  // back as its edges' nodes, written back as they come: rank 0 holds one part besides the mesh.
+  // The parts come back as their edges' nodes, written back as they come.
   PartCurving run(int band_parts) {
     const auto start = std::chrono::steady_clock::now();
     const int count = process_count();
     const bool first = pending.empty();
-    MeshPart<D> own;
     std::vector<Index> elements_sent(static_cast<std::size_t>(count));
+    MeshPart<D> own = send_parts(band_parts, elements_sent);
+    PartCurving round = curve_part(own, log_metrics_of(own), region_of(own), geometry, options);
+    write_back(edge_node_records(own), {own.mesh.element_count()}, 0, elements_sent[0]);
+    if (first) {
+      first_log_metrics = log_metrics_of(own);
+      first_own = std::move(own);
+    }
+    for (int p = 1; p < count; ++p) {
+      const auto nodes = values_of_bytes<EdgeNodeRecord<D>>(receive(p));
+      write_back(nodes, values_of_bytes<Index>(receive(p)), p, elements_sent[p]);
+      add_part(round, values_of_bytes<PartCurving>(receive(p)).at(0));
+    }
+    update_pending();
+    if (first) written_later.assign(static_cast<std::size_t>(mesh.edge_count()), 0);
+    figures.cavities = round.counters.cavities;
+    figures.seconds += seconds_since(start);
+    return round;
+  }
+
+  // Makes the round's parts one at a time, and sends each other process its part as soon as it is
+  // made: rank 0 holds one part besides the mesh. Returns rank 0's own, made last; each part's
+  // element count in `elements_sent`, the vertices of the interfaces in `on_interface`, the first
+  // round's outlines.
+  MeshPart<D> send_parts(int band_parts, std::vector<Index>& elements_sent) {
+    const bool first = pending.empty();
+    const int count = process_count();
+    MeshPart<D> own;
     Index interface_facets = 0;
     on_interface.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
     if (first) first_outlines.resize(static_cast<std::size_t>(count));
@@ -132,22 +157,7 @@ struct RootRound {
       send(p, bytes_of_values(region_of(part)));
     });
     figures.interface_faces = interface_facets / 2;
-    PartCurving round = curve_part(own, log_metrics_of(own), region_of(own), geometry, options);
-    write_back(edge_node_records(own), {own.mesh.element_count()}, 0, elements_sent[0]);
-    if (first) {
-      first_log_metrics = log_metrics_of(own);
-      first_own = std::move(own);
-    }
-    for (int p = 1; p < count; ++p) {
-      const auto nodes = values_of_bytes<EdgeNodeRecord<D>>(receive(p));
-      write_back(nodes, values_of_bytes<Index>(receive(p)), p, elements_sent[p]);
-      add_part(round, values_of_bytes<PartCurving>(receive(p)).at(0));
-    }
-    update_pending();
-    if (first) written_later.assign(static_cast<std::size_t>(mesh.edge_count()), 0);
-    figures.cavities = round.counters.cavities;
-    figures.seconds += seconds_since(start);
-    return round;
+    return own;
   }
 
   // The first round: `first_partition`. Later rounds: the elements near the pending vertices in
@@ -276,7 +286,10 @@ CurvingReport curve_distributed(Mesh<D>& mesh, const MetricField<D>& field, cons
     if (round > 1 && std::find(root.pending.begin(), root.pending.end(), 1) == root.pending.end()) break;
     root.figures = {};
     root.figures.round = round;
-    if (round == 1) root.figures.bytes_sent = partition_bytes, root.figures.seconds = partition_seconds;
+    if (round == 1) {
+      root.figures.bytes_sent = partition_bytes;
+      root.figures.seconds = partition_seconds;
+    }
     add_round(total, root.run(round < kDistributedCurvingRounds ? process_count() : 1));
     if (on_round) on_round(root.figures);
   }
