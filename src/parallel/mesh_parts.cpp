@@ -110,8 +110,7 @@ struct PartBuilder {
 template <int D>
 void split_mesh_part_by_part(const Mesh<D>& mesh, std::span<const int> part_of, std::span<const int> order,
                              const std::function<void(int, MeshPart<D>)>& take) {
-  const int part_count = order.empty() ? 0 : *std::max_element(order.begin(), order.end()) + 1;
-  std::vector<std::vector<Index>> elements(static_cast<std::size_t>(part_count)), facets(elements.size());
+  std::vector<std::vector<Index>> elements(order.size()), facets(order.size());
   for (Index k = 0; k < mesh.element_count(); ++k)
     if (part_of[k] >= 0) elements[part_of[k]].push_back(k);
   for (Index f = 0; f < mesh.facet_count(); ++f)

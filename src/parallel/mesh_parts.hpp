@@ -42,7 +42,8 @@ template <int D>
 std::vector<MeshPart<D>> split_mesh(const Mesh<D>& mesh, std::span<const int> part_of, int part_count);
 
 // The same parts handed to `take` one at a time, part order[0] first, each built when the last is
-// taken: a caller that sends each part away holds one at once.
+// taken: a caller that sends each part away holds one at once. `order` holds each part of [0,
+// order.size()) once.
 template <int D>
 void split_mesh_part_by_part(const Mesh<D>& mesh, std::span<const int> part_of, std::span<const int> order,
                              const std::function<void(int, MeshPart<D>)>& take);

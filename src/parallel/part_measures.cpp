@@ -22,15 +22,12 @@ std::uint64_t key_of(Index a, Index b) { return Mesh<3>::edge_key(a, b); }
 template <int D>
 PartOutline outline_of(const MeshPart<D>& part) {
   PartOutline outline{part.global_ids, {}};
-  std::unordered_set<std::uint64_t> seen;
-  for (Index f = 0; f < part.mesh.facet_count(); ++f) {
-    if (part.mesh.facet_ref(f) != kInterfaceRef) continue;
-    const auto& facet = part.mesh.facet(f);
-    for (int i = 0; i < (D == 3 ? 3 : 1); ++i) {
-      const Index a = part.global_ids[facet[i]], b = part.global_ids[facet[(i + 1) % D]];
-      if (seen.insert(key_of(a, b)).second) outline.interface_edges.push_back({std::min(a, b), std::max(a, b)});
-    }
+  for (std::uint64_t key : interface_edge_keys(part.mesh)) {
+    // Mesh::edge_key holds the lower end in the high 32 bits.
+    const Index a = part.global_ids[static_cast<Index>(key >> 32)], b = part.global_ids[static_cast<Index>(key & 0xffffffffu)];
+    outline.interface_edges.push_back({std::min(a, b), std::max(a, b)});
   }
+  std::sort(outline.interface_edges.begin(), outline.interface_edges.end());
   return outline;
 }
 

@@ -22,7 +22,7 @@ struct NodeUpdate {
 
 // What rank 0 keeps of a first-round part to measure the output, not the part: its vertices'
 // global ids, and the edges of its interface facets by their global ends (low first), each once,
-// in the order of the facets.
+// in ascending order.
 struct PartOutline {
   std::vector<Index> global_ids;
   std::vector<std::array<Index, 2>> interface_edges;
