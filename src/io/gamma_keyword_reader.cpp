@@ -103,6 +103,11 @@ void TextKeywordReader::skip_keyword(bool warn) {
   }
 }
 
+void TextKeywordReader::skip_records(Index count, int integers, int reals) {
+  const std::int64_t tokens = static_cast<std::int64_t>(count) * (integers + reals);
+  for (std::int64_t i = 0; i < tokens; ++i) scanner_.next_real(keyword_);
+}
+
 Index TextKeywordReader::read_count() {
   std::int64_t count = scanner_.next_integer(keyword_);
   if (count < 0) fail("negative count " + std::to_string(count));
@@ -183,12 +188,15 @@ Index BinaryKeywordReader::read_count() {
 int BinaryKeywordReader::read_header_integer() { return read_word<std::int32_t>(); }
 
 void BinaryKeywordReader::expect_records(Index count, int integers, int reals) {
-  std::uint64_t record_bytes = static_cast<std::uint64_t>(integers) * (version_ >= 4 ? 8 : 4) +
-                               static_cast<std::uint64_t>(reals) * (version_ == 1 ? 4 : 8);
+  const std::uint64_t bytes = record_bytes(integers, reals);
   std::uint64_t available = block_end_ - position();
-  if (record_bytes * static_cast<std::uint64_t>(count) > available)
-    fail(block_end_ == file_size_ ? "truncated file" : "data runs past the next keyword (NextPos)",
-         static_cast<Index>(available / record_bytes));
+  if (bytes * static_cast<std::uint64_t>(count) > available)
+    fail(block_end_ == file_size_ ? "truncated file" : "data runs past the next keyword (NextPos)", static_cast<Index>(available / bytes));
+}
+
+void BinaryKeywordReader::skip_records(Index count, int integers, int reals) {
+  expect_records(count, integers, reals);
+  seek(position() + record_bytes(integers, reals) * static_cast<std::uint64_t>(count));
 }
 
 void BinaryKeywordReader::fail(std::string_view what, Index entity) const {

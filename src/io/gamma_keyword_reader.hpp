@@ -6,6 +6,9 @@
 //   read_count()           the entity count that opens a keyword's data
 //   read_header_integer()  a small integer of a keyword header (solution type codes)
 //   expect_records(...)    before reading `count` records: binary checks they fit in the block
+//   skip_records(count, integers, reals)
+//                          passes over `count` records of that many integers and reals (binary:
+//                          a seek; text: the tokens read and dropped)
 //   reserve_hint(count)    how many records to reserve once expected: all of them when the binary
 //                          block holds them, at most 2^20 for text (vectors grow past it)
 //   read_integer(entity), read_real(entity)
@@ -73,6 +76,7 @@ class TextKeywordReader : public KeywordReaderState {
   Index read_count();
   int read_header_integer();
   void expect_records(Index, int, int) {}  // text has no sizes to check ahead
+  void skip_records(Index count, int integers, int reals);
   std::size_t reserve_hint(Index count) const { return std::min(static_cast<std::size_t>(count), std::size_t{1} << 20); }
   std::int64_t read_integer(Index) { return scanner_.next_integer(keyword_); }
   double read_real(Index) { return scanner_.next_real(keyword_); }
@@ -92,6 +96,7 @@ class BinaryKeywordReader : public KeywordReaderState {
   Index read_count();
   int read_header_integer();
   void expect_records(Index count, int integers, int reals);
+  void skip_records(Index count, int integers, int reals);
   std::size_t reserve_hint(Index count) const { return static_cast<std::size_t>(count); }
   std::int64_t read_integer(Index) { return version_ >= 4 ? read_word<std::int64_t>() : read_word<std::int32_t>(); }
   double read_real(Index) { return version_ == 1 ? read_word<float>() : read_word<double>(); }
@@ -112,6 +117,9 @@ class BinaryKeywordReader : public KeywordReaderState {
       return std::bit_cast<Word>(__builtin_bswap64(std::bit_cast<std::uint64_t>(value)));
   }
   std::int64_t read_position() { return version_ >= 3 ? read_word<std::int64_t>() : read_word<std::int32_t>(); }
+  std::uint64_t record_bytes(int integers, int reals) const {
+    return static_cast<std::uint64_t>(integers) * (version_ >= 4 ? 8 : 4) + static_cast<std::uint64_t>(reals) * (version_ == 1 ? 4 : 8);
+  }
   std::uint64_t position() const { return buffer_offset_ + cursor_; }
   void seek(std::uint64_t position);
   // The next `bytes` bytes of the file; refills the buffer when needed, fails past the block's end.

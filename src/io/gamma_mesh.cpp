@@ -28,11 +28,20 @@ using gamma::SimplexKeyword;
 struct NodeTable {
   std::vector<Index> nodes;
   std::vector<int> refs;
+  Index first = 0, total = 0;  // the file id of the first entity kept; the keyword's count
+};
+
+// The run of records a reader keeps of the large keywords (vertices, elements, facets): run `index`
+// of `count` runs of consecutive records of nearly equal length; every record by default.
+struct RecordSlice {
+  int index = 0, count = 1;
+  std::pair<Index, Index> of(Index records) const { return {slice_start(records, index, count), slice_start(records, index + 1, count)}; }
 };
 
 struct MeshRecords {
-  std::vector<double> coordinates;  // `dimension` reals per file node
+  std::vector<double> coordinates;  // `dimension` reals per kept file node
   std::vector<int> node_refs;
+  Index first_node = 0, node_total = 0;       // the file id of the first node kept; the file's node count
   std::map<int, NodeTable> simplices;         // by keyword code
   std::map<int, std::vector<int>> orderings;  // by ordering keyword code: a Bézier index row per node
   std::vector<Index> corners, ridges, required_vertices, required_edges, required_triangles;
@@ -61,14 +70,18 @@ int read_ref(Reader& reader, Index entity) {
 }
 
 template <class Reader>
-void read_vertices(Reader& reader, MeshRecords& records) {
+void read_vertices(Reader& reader, MeshRecords& records, const RecordSlice& slice) {
   const int dimension = reader.dimension();
   if (dimension == 0) reader.fail("no Dimension before the vertices");
   const Index count = reader.read_count();
   reader.expect_records(count, 1, dimension);
-  records.coordinates.reserve(reader.reserve_hint(count) * dimension);
-  records.node_refs.reserve(reader.reserve_hint(count));
-  for (Index v = 0; v < count; ++v) {
+  const auto [first, last] = slice.of(count);
+  records.first_node = first;
+  records.node_total = count;
+  reader.skip_records(first, 1, dimension);
+  records.coordinates.reserve(reader.reserve_hint(last - first) * dimension);
+  records.node_refs.reserve(reader.reserve_hint(last - first));
+  for (Index v = first; v < last; ++v) {
     for (int i = 0; i < dimension; ++i) {
       double x = reader.read_real(v);
       if (!std::isfinite(x)) reader.fail("coordinate is not finite", v);
@@ -76,18 +89,24 @@ void read_vertices(Reader& reader, MeshRecords& records) {
     }
     records.node_refs.push_back(read_ref(reader, v));
   }
+  reader.skip_records(count - last, 1, dimension);
 }
 
 template <class Reader>
-void read_simplices(Reader& reader, const SimplexKeyword& keyword, NodeTable& table) {
+void read_simplices(Reader& reader, const SimplexKeyword& keyword, NodeTable& table, const RecordSlice& slice) {
   const Index count = reader.read_count();
   reader.expect_records(count, keyword.node_count + 1, 0);
-  table.nodes.reserve(reader.reserve_hint(count) * keyword.node_count);
-  table.refs.reserve(reader.reserve_hint(count));
-  for (Index k = 0; k < count; ++k) {
+  const auto [first, last] = slice.of(count);
+  table.first = first;
+  table.total = count;
+  reader.skip_records(first, keyword.node_count + 1, 0);
+  table.nodes.reserve(reader.reserve_hint(last - first) * keyword.node_count);
+  table.refs.reserve(reader.reserve_hint(last - first));
+  for (Index k = first; k < last; ++k) {
     for (int i = 0; i < keyword.node_count; ++i) table.nodes.push_back(read_id(reader, k, "vertex"));
     table.refs.push_back(read_ref(reader, k));
   }
+  reader.skip_records(count - last, keyword.node_count + 1, 0);
 }
 
 template <class Reader>
@@ -114,8 +133,10 @@ void read_ordering(Reader& reader, const SimplexKeyword& keyword, std::vector<in
     }
 }
 
+// With a slice, the vertices, elements and facets are kept in that slice's run; the feature lines
+// (3D) and the tag lists whole.
 template <class Reader>
-MeshRecords read_records(Reader& reader) {
+MeshRecords read_records(Reader& reader, const RecordSlice& slice = {}) {
   MeshRecords records;
   std::set<int> seen;
   while (reader.next_keyword()) {
@@ -131,11 +152,12 @@ MeshRecords read_records(Reader& reader) {
     }
     if (!seen.insert(code).second) reader.fail("keyword appears twice");
     if (simplex)
-      read_simplices(reader, *simplex, records.simplices[code]);
+      read_simplices(reader, *simplex, records.simplices[code],
+                     simplex->simplex_dimension + 1 >= reader.dimension() ? slice : RecordSlice{});
     else if (ordered)
       read_ordering(reader, *ordered, records.orderings[code]);
     else if (code == gamma::kVertices)
-      read_vertices(reader, records);
+      read_vertices(reader, records, slice);
     else if (code == gamma::kCorners)
       read_id_list(reader, records.corners, "vertex");
     else if (code == gamma::kRidges)
@@ -263,8 +285,8 @@ MeshFileContent build_mesh(MeshRecords&& records, const std::string& path) {
 }
 
 template <class Reader>
-std::pair<int, MeshRecords> read_file(Reader&& reader) {
-  MeshRecords records = read_records(reader);
+std::pair<int, MeshRecords> read_file(Reader&& reader, const RecordSlice& slice = {}) {
+  MeshRecords records = read_records(reader, slice);
   if (reader.dimension() == 0) throw Error(reader.path() + ": Dimension: missing");
   return {reader.dimension(), std::move(records)};
 }
@@ -349,6 +371,23 @@ void write_records(Writer& out, const Mesh<D>& mesh, const std::string& path) {
   write_ids(gamma::kRequiredTriangles, mesh.required_triangles());
 }
 
+// The entities of a P1 simplex keyword as N file vertex ids each, checked against the file's
+// vertex count.
+template <std::size_t N>
+std::vector<std::array<Index, N>> checked_entities(const NodeTable& table, Index vertex_count, int simplex_dimension,
+                                                   const std::string& path) {
+  std::vector<std::array<Index, N>> entities(table.refs.size());
+  for (std::size_t k = 0; k < entities.size(); ++k)
+    for (std::size_t i = 0; i < N; ++i) {
+      entities[k][i] = table.nodes[k * N + i];
+      if (entities[k][i] >= vertex_count)
+        throw Error(path + ": " + gamma::keyword_name(gamma::simplex_keyword(simplex_dimension, 1).code) + ": vertex " +
+                    std::to_string(entities[k][i] + 1) + " out of range, entity " +
+                    std::to_string(table.first + static_cast<Index>(k) + 1));
+    }
+  return entities;
+}
+
 }  // namespace
 
 MeshFileContent read_gamma_mesh(const std::string& path) {
@@ -356,6 +395,58 @@ MeshFileContent read_gamma_mesh(const std::string& path) {
                                                           : read_file(gamma::TextKeywordReader(path));
   return dimension == 2 ? build_mesh<2>(std::move(records), path) : build_mesh<3>(std::move(records), path);
 }
+
+Index slice_start(Index total, int index, int count) { return static_cast<Index>(static_cast<std::int64_t>(total) * index / count); }
+
+int slice_holding(Index id, Index total, int count) {
+  int run = static_cast<int>(static_cast<std::int64_t>(id) * count / std::max<Index>(total, 1));
+  while (run + 1 < count && slice_start(total, run + 1, count) <= id) ++run;
+  while (run > 0 && slice_start(total, run, count) > id) --run;
+  return run;
+}
+
+template <int D>
+GammaMeshSlice<D> read_gamma_mesh_slice(const std::string& path, int index, int count) {
+  const RecordSlice slice{index, count};
+  auto [dimension, records] = gamma::is_binary_file(path) ? read_file(gamma::BinaryKeywordReader(path), slice)
+                                                          : read_file(gamma::TextKeywordReader(path), slice);
+  if (dimension != D) throw Error(path + ": Dimension: " + std::to_string(dimension) + ", not " + std::to_string(D));
+  for (const auto& [code, table] : records.simplices)
+    if (gamma::simplex_keyword(code)->order == 2 && !table.refs.empty())
+      throw Error(path + ": " + gamma::keyword_name(code) + ": a distributed run reads P1 meshes in pieces; P2 entities are not read so");
+  GammaMeshSlice<D> out;
+  out.vertex_count = records.node_total;
+  out.first_vertex = records.first_node;
+  for (std::size_t v = 0; v < records.node_refs.size(); ++v) {
+    Vec<D> point;
+    for (int i = 0; i < D; ++i) point[i] = records.coordinates[v * D + static_cast<std::size_t>(i)];
+    out.points.push_back(point);
+  }
+  out.point_refs = std::move(records.node_refs);
+  auto take = [&]<std::size_t N>(std::vector<std::array<Index, N>>& entities, std::vector<int>& refs, Index& first, Index& total) {
+    NodeTable& table = records.simplices[gamma::simplex_keyword(static_cast<int>(N) - 1, 1).code];
+    entities = checked_entities<N>(table, out.vertex_count, static_cast<int>(N) - 1, path);
+    refs = std::move(table.refs);
+    first = table.first;
+    total = table.total;
+  };
+  take(out.elements, out.element_refs, out.first_element, out.element_count);
+  take(out.facets, out.facet_refs, out.first_facet, out.facet_count);
+  if constexpr (D == 3) {
+    Index first = 0, total = 0;
+    take(out.lines, out.line_refs, first, total);
+  }
+  if (out.element_count == 0) throw Error(path + ": no " + gamma::keyword_name(gamma::simplex_keyword(D, 1).code));
+  out.corners = std::move(records.corners);
+  out.ridges = std::move(records.ridges);
+  out.required_vertices = std::move(records.required_vertices);
+  out.required_edges = std::move(records.required_edges);
+  out.required_triangles = std::move(records.required_triangles);
+  return out;
+}
+
+template GammaMeshSlice<2> read_gamma_mesh_slice(const std::string&, int, int);
+template GammaMeshSlice<3> read_gamma_mesh_slice(const std::string&, int, int);
 
 int gamma_mesh_dimension(const std::string& path) {
   return gamma::is_binary_file(path) ? declared_dimension(gamma::BinaryKeywordReader(path))

@@ -21,17 +21,12 @@ struct FaceSide {
   std::int32_t process, near_old_interface;
 };
 
-template <int D>
-int meeting_process(const FaceKey<D>& face) {
-  return static_cast<int>(FaceKeyHash<D>{}(face) % static_cast<std::size_t>(process_count()));
-}
-
 // Every process's interface sides to their meeting processes and back: per face of this process's
 // interfaces (by global vertex ids), the side across it.
 template <int D>
 std::unordered_map<FaceKey<D>, FaceSide<D>, FaceKeyHash<D>> sides_across(const std::vector<FaceSide<D>>& own) {
   std::vector<std::vector<FaceSide<D>>> outgoing(static_cast<std::size_t>(process_count()));
-  for (const FaceSide<D>& side : own) outgoing[meeting_process<D>(side.face)].push_back(side);
+  for (const FaceSide<D>& side : own) outgoing[meeting_process<D>(side.face, process_count())].push_back(side);
   std::unordered_map<FaceKey<D>, std::vector<FaceSide<D>>, FaceKeyHash<D>> met;
   for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(outgoing)))
     for (const FaceSide<D>& side : values_of_bytes<FaceSide<D>>(bytes)) met[side.face].push_back(side);

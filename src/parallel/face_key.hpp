@@ -22,6 +22,12 @@ struct FaceKeyHash {
   }
 };
 
+// The process where the sides of a face (by its sorted global ids) meet, of `process_count`.
+template <int D>
+int meeting_process(const FaceKey<D>& key, int process_count) {
+  return static_cast<int>(FaceKeyHash<D>{}(key) % static_cast<std::size_t>(process_count));
+}
+
 template <int D>
 FaceKey<D> sorted_key(FaceKey<D> key) {
   std::sort(key.begin(), key.end());

@@ -143,6 +143,91 @@ TEST(GammaMesh, RoundTripsCubeP1) { expect_round_trips(with_varied_tags(generate
 
 TEST(GammaMesh, RoundTripsCurvedCubeP2) { expect_round_trips(curved(with_varied_tags(generate_cube(2))), "cube_p2"); }
 
+// ---- reading in slices ----
+
+// Slices 0..count-1 of every format, put end to end, are the whole file: the same points, elements,
+// facets and refs in file order, each slice starting where slice_start says; lines and tags whole.
+template <int D>
+void expect_slices_make_the_file(const Mesh<D>& mesh, const std::string& name) {
+  for (const Format& format : kFormats) {
+    const std::string path = temporary_path(name + "_slices_v" + std::to_string(format.version) + format.extension);
+    write_gamma_mesh(path, mesh, format.binary, format.version);
+    const Mesh<D> whole = std::get<Mesh<D>>(read_gamma_mesh(path).mesh);
+    for (int count : {1, 3, 7}) {
+      SCOPED_TRACE(std::string(format.extension) + " version " + std::to_string(format.version) + ", " + std::to_string(count) + " slices");
+      std::vector<Vec<D>> points;
+      std::vector<typename Mesh<D>::Element> elements;
+      std::vector<typename Mesh<D>::Facet> facets;
+      std::vector<int> refs;
+      for (int index = 0; index < count; ++index) {
+        const GammaMeshSlice<D> slice = read_gamma_mesh_slice<D>(path, index, count);
+        EXPECT_EQ(slice.vertex_count, whole.vertex_count());
+        EXPECT_EQ(slice.first_vertex, static_cast<Index>(points.size()));
+        EXPECT_EQ(slice.first_element, slice_start(whole.element_count(), index, count));
+        EXPECT_EQ(slice.first_facet, static_cast<Index>(facets.size()));
+        points.insert(points.end(), slice.points.begin(), slice.points.end());
+        elements.insert(elements.end(), slice.elements.begin(), slice.elements.end());
+        facets.insert(facets.end(), slice.facets.begin(), slice.facets.end());
+        refs.insert(refs.end(), slice.element_refs.begin(), slice.element_refs.end());
+        EXPECT_EQ(static_cast<Index>(slice.lines.size()), whole.line_count());
+        EXPECT_EQ(slice.required_vertices, whole.required_vertices());
+        EXPECT_EQ(slice.ridges, whole.ridges());
+      }
+      ASSERT_EQ(points.size(), static_cast<std::size_t>(whole.vertex_count()));
+      for (Index v = 0; v < whole.vertex_count(); ++v) EXPECT_EQ(points[v], whole.vertex(v)) << "vertex " << v;
+      ASSERT_EQ(elements.size(), static_cast<std::size_t>(whole.element_count()));
+      for (Index k = 0; k < whole.element_count(); ++k) {
+        EXPECT_EQ(elements[k], whole.element(k)) << "element " << k;
+        EXPECT_EQ(refs[k], whole.element_ref(k)) << "element " << k;
+      }
+      ASSERT_EQ(facets.size(), static_cast<std::size_t>(whole.facet_count()));
+      for (Index f = 0; f < whole.facet_count(); ++f) EXPECT_EQ(facets[f], whole.facet(f)) << "facet " << f;
+    }
+  }
+}
+
+TEST(GammaMeshSlice, SlicesOfASquarePutEndToEndAreTheFile) { expect_slices_make_the_file(with_varied_tags(generate_square(4)), "square"); }
+
+TEST(GammaMeshSlice, SlicesOfACubePutEndToEndAreTheFile) { expect_slices_make_the_file(with_varied_tags(generate_cube(3)), "cube"); }
+
+TEST(GammaMeshSlice, EachEntityIsInTheSliceThatHoldsIt) {
+  for (Index total : {0, 1, 2, 5, 100, 1001})
+    for (int count : {1, 2, 3, 7})
+      for (Index id = 0; id < total; ++id) {
+        const int slice = slice_holding(id, total, count);
+        EXPECT_LE(slice_start(total, slice, count), id) << total << " in " << count;
+        EXPECT_LT(id, slice_start(total, slice + 1, count)) << total << " in " << count;
+      }
+}
+
+TEST(GammaMeshSlice, RefusesP2OutOfRangeAndOtherDimensions) {
+  const std::string p2 = temporary_path("slice_p2.meshb");
+  write_gamma_mesh(p2, curved(generate_cube(1)), true);
+  EXPECT_THROW(
+      {
+        try {
+          read_gamma_mesh_slice<3>(p2, 0, 2);
+        } catch (const Error& error) {
+          EXPECT_NE(std::string(error.what()).find("P2: a distributed run reads P1 meshes in pieces"), std::string::npos) << error.what();
+          throw;
+        }
+      },
+      Error);
+  const std::string square = temporary_path("slice_square.mesh");
+  write_gamma_mesh(square, generate_square(2), false);
+  EXPECT_THROW(read_gamma_mesh_slice<3>(square, 0, 1), Error);
+  const std::string bad = write_file("slice_bad.mesh",
+                                     "MeshVersionFormatted 2\nDimension 2\nVertices\n3\n0 0 0\n1 0 0\n0 1 0\n"
+                                     "Triangles\n2\n1 2 3 0\n1 2 4 0\nEnd\n");
+  for (int index : {0, 1}) try {
+      read_gamma_mesh_slice<2>(bad, index, 2);
+      EXPECT_EQ(index, 0) << "slice 1 holds the triangle with vertex 4";
+    } catch (const Error& error) {
+      EXPECT_EQ(index, 1);
+      EXPECT_EQ(std::string(error.what()), bad + ": Triangles: vertex 4 out of range, entity 2");
+    }
+}
+
 TEST(GammaMesh, VersionOneKeepsOnlyFloatPrecision) {
   // The reason version 1 is compared to float precision above: a coordinate that needs a double
   // does not survive it, while it survives every later version.

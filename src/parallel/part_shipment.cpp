@@ -1,0 +1,121 @@
+#include "parallel/part_shipment.hpp"
+
+#include <algorithm>
+#include <string>
+#include <unordered_map>
+
+#include "parallel/entity_tags.hpp"
+
+namespace hocav {
+namespace {
+
+// Builds the new part from the shipments it receives (in rank order).
+template <int D>
+struct Unpacker {
+  const std::vector<Shipment<D>>& arrived;
+  MeshPart<D> part;
+  std::unordered_map<Index, Index> local;  // global vertex id -> new part's id
+
+  void add_vertices() {
+    std::unordered_map<Index, std::pair<std::size_t, std::size_t>> source;  // global id -> (shipment, index)
+    for (std::size_t s = 0; s < arrived.size(); ++s)
+      for (std::size_t i = 0; i < arrived[s].vertex_ids.size(); ++i) {
+        const auto [it, fresh] = source.emplace(arrived[s].vertex_ids[i], std::pair{s, i});
+        if (!fresh && !(arrived[it->second.first].points[it->second.second] == arrived[s].points[i]))
+          throw Error("migrating parts: two processes give vertex " + std::to_string(arrived[s].vertex_ids[i] + 1) + " different points");
+      }
+    for (const auto& [global, where] : source) part.global_ids.push_back(global);
+    std::sort(part.global_ids.begin(), part.global_ids.end());
+    for (Index g : part.global_ids) {
+      const auto [s, i] = source.at(g);
+      const Index v = part.mesh.add_vertex(arrived[s].points[i], arrived[s].vertex_refs[i]);
+      local.emplace(g, v);
+      const char flags = arrived[s].vertex_flags[i];
+      if (flags & kShippedCorner) part.mesh.corners().push_back(v);
+      part.pinned.push_back(static_cast<char>(flags >> 1));
+    }
+  }
+
+  template <std::size_t N>
+  std::array<Index, N> mapped(const std::array<Index, N>& ids) const {
+    std::array<Index, N> out{};
+    for (std::size_t i = 0; i < N; ++i) out[i] = local.at(ids[i]);
+    return out;
+  }
+
+  // The elements, then (with the topology the elements give) the mesh's facets and a facet on each
+  // face with a neighbour in the whole mesh but none in the new part, as split_mesh makes them; the
+  // topology again, with the facets.
+  void add_elements_and_facets() {
+    for (const Shipment<D>& s : arrived)
+      for (std::size_t k = 0; k < s.elements.size(); ++k) part.mesh.add_element(mapped(s.elements[k]), s.element_refs[k]);
+    if (part.mesh.element_count() == 0) return;
+    part.mesh.build_topology();
+    for (const Shipment<D>& s : arrived)
+      for (std::size_t f = 0; f < s.facets.size(); ++f) {
+        const Index id = part.mesh.add_facet(mapped(s.facets[f]), s.facet_refs[f]);
+        if (s.facet_flags[f] & kShippedRequired) required_facets(part.mesh).push_back(id);
+        if (s.facet_flags[f] & kShippedRidge) part.mesh.ridges().push_back(id);
+      }
+    std::vector<char> on_interface(part.global_ids.size(), 0);
+    Index k = 0;
+    for (const Shipment<D>& s : arrived)
+      for (const char inner : s.inner_faces) {
+        for (int face = 0; face <= D; ++face) {
+          if (!(inner & (1 << face)) || part.mesh.neighbor(k, face) != kNoIndex) continue;
+          typename Mesh<D>::Facet facet{};
+          for (int i = 0; i < D; ++i) facet[i] = part.mesh.element(k)[face_vertices<D>(face)[i]];
+          required_facets(part.mesh).push_back(part.mesh.add_facet(facet, kInterfaceRef));
+          for (Index v : facet) on_interface[v] = 1;
+        }
+        ++k;
+      }
+    for (Index v = 0; v < part.mesh.vertex_count(); ++v)
+      if (part.pinned[v]) part.mesh.required_vertices().push_back(v);
+    for (Index v = 0; v < part.mesh.vertex_count(); ++v)
+      if (on_interface[v] && !part.pinned[v]) part.mesh.required_vertices().push_back(v);
+  }
+
+  void add_lines() {
+    std::unordered_map<std::uint64_t, Index> seen;
+    for (const Shipment<D>& s : arrived)
+      for (std::size_t l = 0; l < s.lines.size(); ++l) {
+        const auto ends = mapped(s.lines[l]);
+        if (!seen.emplace(Mesh<D>::edge_key(ends[0], ends[1]), 0).second) continue;
+        const Index id = part.mesh.add_line(ends, s.line_refs[l]);
+        if (s.line_flags[l] & kShippedRidge) part.mesh.ridges().push_back(id);
+        if (s.line_flags[l] & kShippedRequired) part.mesh.required_edges().push_back(id);
+      }
+  }
+
+  void add_nodes() {
+    const bool p2 = std::any_of(arrived.begin(), arrived.end(), [](const Shipment<D>& s) { return !s.nodes.empty(); });
+    if (!p2) return;
+    part.mesh.make_p2();
+    Index k = 0;
+    for (const Shipment<D>& s : arrived) {
+      if (s.nodes.empty() && !s.elements.empty()) throw Error("migrating parts: P1 and P2 elements arrive together");
+      for (std::size_t i = 0; i < s.elements.size(); ++i, ++k)
+        for (int e = 0; e < Simplex<D>::kEdges; ++e)
+          part.mesh.edge_node(part.mesh.element_edge(k, e)) = s.nodes[i * Simplex<D>::kEdges + static_cast<std::size_t>(e)];
+    }
+  }
+};
+
+}  // namespace
+
+template <int D>
+MeshPart<D> part_of_shipments(const std::vector<Shipment<D>>& arrived) {
+  Unpacker<D> unpacker{arrived, {}, {}};
+  unpacker.add_vertices();
+  unpacker.add_elements_and_facets();
+  if constexpr (D == 3) unpacker.add_lines();
+  unpacker.add_nodes();
+  if (unpacker.part.mesh.element_count() > 0) unpacker.part.mesh.build_topology();
+  return std::move(unpacker.part);
+}
+
+template MeshPart<2> part_of_shipments(const std::vector<Shipment<2>>&);
+template MeshPart<3> part_of_shipments(const std::vector<Shipment<3>>&);
+
+}  // namespace hocav
