@@ -19,7 +19,7 @@ namespace {
 template <int D>
 void read_in_pieces(const std::string& path) {
   const auto start = std::chrono::steady_clock::now();
-  const MeshPart<D> piece = read_mesh_file_piece<D>(path);
+  const MeshPart<D> piece = read_mesh_file_piece<D>(path).part;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << "rank " << process_rank() << " of " << process_count() << ": " << seconds << " s, peak " << (peak_resident_bytes() >> 20)
             << " MiB, " << piece.mesh.element_count() << " elements, " << piece.mesh.vertex_count() << " vertices, "

@@ -7,9 +7,11 @@
 // P2 mid nodes get the analytic or interpolated field at the node, or the input's row there;
 // otherwise (and after gradation) the log-Euclidean mean of the metrics of their edge's two vertices.
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 #include "base/error.hpp"
 #include "base/memory_budget.hpp"
@@ -18,6 +20,7 @@
 #include "cli/metric_sources.hpp"
 #include "cli/number_checks.hpp"
 #include "geom/sym_functions.hpp"
+#include "io/gamma_mesh.hpp"
 #include "io/node_metrics.hpp"
 #include "io/output_set.hpp"
 #include "metric/analytic_field.hpp"
@@ -25,6 +28,10 @@
 #include "metric/gradation.hpp"
 #include "metric/hessian_metric.hpp"
 #include "metric/implied_metric.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/implied_metric_runs.hpp"
+#include "parallel/mesh_file_pieces.hpp"
+#include "parallel/solution_file_runs.hpp"
 #include "report/mesh_summary.hpp"
 
 namespace hocav {
@@ -211,12 +218,50 @@ void write_metric(const Mesh<D>& mesh, const MeshFileContent& file, const Metric
             << " (" << mesh_summary(mesh) << ")\n";
 }
 
+// Under mpirun (docs/distributed.md §Reading in pieces): each process reads its piece of the mesh,
+// computes the implied metric of its run of the file's vertices and writes it in place; no process
+// holds the whole mesh. The file is the serial command's, byte for byte. Returns the summary line.
+template <int D>
+std::string write_implied_metric_in_pieces(const MetricOptions& options) {
+  const MeshFilePiece<D> piece = read_mesh_file_piece<D>(options.mesh);
+  const VertexRunMetrics<D> run = implied_metric_by_runs(piece.part, piece.vertex_count, options.mesh);
+  write_solution_runs(options.output, rows_of_metrics(run.metrics), run.first, piece.vertex_count);
+  double complexity = 0;  // docs/method.md §10, as metric_complexity sums it
+  for (std::size_t v = 0; v < run.metrics.size(); ++v) complexity += run.measures[v] / (D + 1) * std::sqrt(determinant(run.metrics[v]));
+  std::ostringstream line;
+  line << "wrote " << options.output << ": " << piece.vertex_count << " metrics, complexity " << sum_over_processes(complexity) << " ("
+       << p1_mesh_summary(D, piece.vertex_count, piece.element_count, piece.facet_count) << ", read in " << process_count() << " pieces)\n";
+  return line.str();
+}
+
+void run_metric_in_pieces(const MetricOptions& options, Source source) {
+  if (source != Source::kImplied || options.gradation)
+    throw Error("under mpirun, hocav metric computes --implied only, without --gradation (docs/distributed.md §Reading in pieces)");
+  const std::string extension = file_extension(options.mesh);
+  if (extension != ".mesh" && extension != ".meshb")
+    throw Error(options.mesh + ": under mpirun, hocav metric reads Gamma meshes (.mesh, .meshb) in pieces, not '" + extension + "'");
+  if (file_extension(options.output) != ".solb")
+    throw Error(options.output + ": under mpirun, the metric is written as .solb (each process writes its rows in place)");
+  std::optional<OutputSet> outputs;  // rank 0's, which checks the paths and writes the file's keywords
+  if (process_rank() == 0) {
+    outputs.emplace();
+    outputs->add_input(options.mesh, "the input mesh");
+    outputs->add_output(options.output, "-o");
+  }
+  const std::string summary = gamma_mesh_dimension(options.mesh) == 2 ? write_implied_metric_in_pieces<2>(options)
+                                                                      : write_implied_metric_in_pieces<3>(options);
+  if (!outputs) return;
+  outputs->commit();
+  std::cout << summary;
+}
+
 void run_metric(const MetricOptions& options) {
   Source source = chosen_source(options);
   check_options_apply(options, source);
   std::string extension = file_extension(options.output);
   if (extension != ".sol" && extension != ".solb")
     throw Error(options.output + ": a metric is written as .sol or .solb, not '" + extension + "'");
+  if (process_count() > 1) return run_metric_in_pieces(options, source);
   OutputSet outputs;
   outputs.add_input(options.mesh, "the input mesh");
   if (source == Source::kInput) outputs.add_input(options.input, "--input");

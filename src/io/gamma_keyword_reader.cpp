@@ -49,7 +49,7 @@ void KeywordReaderState::set_dimension(Reader& reader, std::int64_t dimension) {
 }
 
 void KeywordReaderState::warn_skipped() {
-  if (!warned_.insert(keyword_).second) return;
+  if (!warnings_ || !warned_.insert(keyword_).second) return;
   const std::string where = "hocav: warning: " + path_ + ": ";
   if (warned_.size() <= kMaxSkipWarnings)
     std::cerr << where << "skipping keyword " << keyword_ << " (not used by hocav)\n";

@@ -47,6 +47,8 @@ class KeywordReaderState {
   int dimension() const { return dimension_; }  // 0 until a Dimension keyword was read
   int keyword_code() const { return keyword_code_; }
   const std::string& keyword() const { return keyword_; }
+  // No warnings from here on (a process that reads one piece of a file another also warns about).
+  void silence_warnings() { warnings_ = false; }
 
  protected:
   explicit KeywordReaderState(std::string path) : path_(std::move(path)) {}
@@ -62,6 +64,7 @@ class KeywordReaderState {
   int dimension_ = 0;
   int keyword_code_ = 0;
   std::string keyword_;  // printable ASCII, 40 bytes at most
+  bool warnings_ = true;
 
  private:
   std::set<std::string> warned_;

@@ -137,6 +137,12 @@ void BinaryKeywordWriter::finish() {
   out_.commit();
 }
 
+void BinaryKeywordWriter::leave_records() {
+  flush();
+  out_.stream().seekp(static_cast<std::streamoff>(block_end_));
+  offset_ = block_end_;
+}
+
 void BinaryKeywordWriter::put_position(std::uint64_t position) {
   if (version_ >= 3)
     put<std::int64_t>(static_cast<std::int64_t>(position));

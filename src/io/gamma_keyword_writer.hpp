@@ -5,6 +5,7 @@
 //       (the solution type codes)
 //   write_integer(v), write_real(v), end_record()
 //   finish()  writes End and renames the temporary file into place; without it nothing appears.
+//   (binary only) position(), leave_records(): where the records start, and a hole left for them
 // ASCII reals are written in the shortest form that reads back to the same double. Binary NextPos
 // values are computed from the announced sizes, so the output streams without seeking.
 #pragma once
@@ -44,6 +45,11 @@ class BinaryKeywordWriter {
   void write_real(double value);
   void end_record();
   void finish();
+  // The bytes written so far (the offset of the next).
+  std::uint64_t position() const { return offset_; }
+  // Leaves the open keyword's records unwritten, a hole in the file for other writers to fill in
+  // place (a distributed run's processes, each its rows).
+  void leave_records();
 
  private:
   template <class Word>

@@ -408,8 +408,11 @@ int slice_holding(Index id, Index total, int count) {
 template <int D>
 GammaMeshSlice<D> read_gamma_mesh_slice(const std::string& path, int index, int count) {
   const RecordSlice slice{index, count};
-  auto [dimension, records] = gamma::is_binary_file(path) ? read_file(gamma::BinaryKeywordReader(path), slice)
-                                                          : read_file(gamma::TextKeywordReader(path), slice);
+  auto read = [&](auto&& reader) {
+    if (index != 0) reader.silence_warnings();  // slice 0 warns for every slice
+    return read_file(reader, slice);
+  };
+  auto [dimension, records] = gamma::is_binary_file(path) ? read(gamma::BinaryKeywordReader(path)) : read(gamma::TextKeywordReader(path));
   if (dimension != D) throw Error(path + ": Dimension: " + std::to_string(dimension) + ", not " + std::to_string(D));
   for (const auto& [code, table] : records.simplices)
     if (gamma::simplex_keyword(code)->order == 2 && !table.refs.empty())

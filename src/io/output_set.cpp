@@ -77,6 +77,12 @@ std::string OutputSet::temporary_for(const std::string& path) {
   throw Error("internal error: output " + path + " was not declared before the work");
 }
 
+const std::string& OutputSet::written_temporary(const std::string& path) const {
+  for (const Entry& entry : entries_)
+    if (entry.is_output && entry.path == path) return entry.temporary;
+  throw Error("internal error: output " + path + " was not declared before the work");
+}
+
 void OutputSet::commit() {
   for (Entry& entry : entries_) {
     if (entry.temporary.empty()) continue;

@@ -28,6 +28,8 @@ class OutputSet {
   // A new temporary for registered output `path`, renamed onto it by commit(). Throws Error for a
   // path that was not registered (a command that forgot to declare an output).
   std::string temporary_for(const std::string& path);
+  // The temporary written for registered output `path` so far, or empty.
+  const std::string& written_temporary(const std::string& path) const;
   // Renames every temporary onto its target. Throws Error naming the first that fails.
   void commit();
 

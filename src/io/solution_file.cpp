@@ -2,6 +2,7 @@
 #include "io/solution_file.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "base/error.hpp"
 #include "io/gamma_keyword_reader.hpp"
@@ -56,14 +57,20 @@ SolutionFileContent read_solution(Reader&& reader) {
   return content;
 }
 
-template <class Writer>
-void write_solution(Writer&& out, const SolutionFileContent& content) {
-  std::vector<int> header{static_cast<int>(content.fields.size())};
+// The SolAtVertices header (the field count, then each field's type code) and the reals per row.
+std::pair<std::vector<int>, int> sol_at_vertices_header(const std::vector<SolutionField>& fields) {
+  std::vector<int> header{static_cast<int>(fields.size())};
   int reals_per_row = 0;
-  for (const SolutionField& field : content.fields) {
+  for (const SolutionField& field : fields) {
     header.push_back(static_cast<int>(field.kind));
     reals_per_row += field.components();
   }
+  return {header, reals_per_row};
+}
+
+template <class Writer>
+void write_solution(Writer&& out, const SolutionFileContent& content) {
+  const auto [header, reals_per_row] = sol_at_vertices_header(content.fields);
   out.begin_keyword(gamma::kSolAtVertices, content.count, 0, reals_per_row, header);
   for (Index row = 0; row < content.count; ++row) {
     for (const SolutionField& field : content.fields) {
@@ -127,6 +134,18 @@ void write_solution_file(const std::string& path, const SolutionFileContent& con
   else
     write_solution(gamma::TextKeywordWriter(path, gamma::resolve_version(path, gamma_version, content.count, 2), content.dimension),
                    content);
+}
+
+SolutionRowsLayout write_solution_skeleton(const std::string& path, int dimension, Index count, const std::vector<SolutionKind>& kinds) {
+  std::vector<SolutionField> fields;
+  for (SolutionKind kind : kinds) fields.push_back({kind, dimension, {}});
+  const auto [header, reals_per_row] = sol_at_vertices_header(fields);
+  gamma::BinaryKeywordWriter out(path, gamma::resolve_version(path, 0, count, 3), dimension);
+  out.begin_keyword(gamma::kSolAtVertices, count, 0, reals_per_row, header);
+  const SolutionRowsLayout layout{out.position(), static_cast<std::uint64_t>(reals_per_row) * sizeof(double)};  // version 3 or 4
+  out.leave_records();
+  out.finish();
+  return layout;
 }
 
 const SolutionField* SolutionFileContent::first_of_kind(SolutionKind kind) const {

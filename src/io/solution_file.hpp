@@ -3,6 +3,7 @@
 // (3D), i.e. the lower triangle row by row; the metric module converts to its own type.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,16 @@ SolutionFileContent read_solution_file(const std::string& path);
 // Writes a .sol/.solb file (all fields must have the same count); temporary name, then rename.
 // Binary version: 0 picks 3 (4 when counts need 64 bits).
 void write_solution_file(const std::string& path, const SolutionFileContent& content, int gamma_version = 0);
+
+// Where the rows of a binary solution file lie, for writers that fill them in place.
+struct SolutionRowsLayout {
+  std::uint64_t first_row_offset = 0;  // the byte of the first row
+  std::uint64_t row_bytes = 0;
+};
+
+// Writes the .solb at `path` (as write_solution_file does, through AtomicOutput) with fields of
+// `kinds` and `count` rows, but leaves the rows unwritten: a hole other writers fill in place.
+SolutionRowsLayout write_solution_skeleton(const std::string& path, int dimension, Index count, const std::vector<SolutionKind>& kinds);
 
 // mmg's isotropic size field: when `content` holds no symmetric-matrix field of its dimension but a
 // scalar one (SolAtVertices type 1, a size h per node), appends the metric I/h² of each size as a

@@ -21,6 +21,22 @@ namespace hocav {
 template <int D>
 SymMat<D> element_implied_metric(const SimplexPoints<D>& points);
 
+// What element k gives each of its vertices' metric: its (absolute) measure, and its metric's
+// logarithm weighted by it. Throws Error naming the element (as number `number`, 1-based) when it
+// is flat.
+template <int D>
+struct ImpliedShare {
+  double weight = 0;
+  SymMat<D> weighted_log;
+};
+
+template <int D>
+ImpliedShare<D> implied_share(const Mesh<D>& mesh, Index k, Index number);
+
+// The vertex metric of the summed shares of its elements.
+template <int D>
+SymMat<D> implied_vertex_metric(const ImpliedShare<D>& sum);
+
 // One metric per vertex, from the straight (P1) elements. Throws Error naming the element for a
 // flat element, and the vertex for a vertex that no element uses.
 template <int D>

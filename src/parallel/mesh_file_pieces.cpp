@@ -284,7 +284,7 @@ Shipment<D> run_shipment(const GammaMeshSlice<D>& slice, const std::vector<Index
 }  // namespace
 
 template <int D>
-MeshPart<D> read_mesh_file_piece(const std::string& path) {
+MeshFilePiece<D> read_mesh_file_piece(const std::string& path) {
   const GammaMeshSlice<D> slice = read_gamma_mesh_slice<D>(path, process_rank(), process_count());
   const std::vector<char> on_facet = facet_vertex_flags(slice);
   std::vector<Index> ids;
@@ -294,10 +294,11 @@ MeshPart<D> read_mesh_file_piece(const std::string& path) {
   const std::vector<VertexRecord<D>> vertices = fetched_vertices(slice, on_facet, ids);
   const RunFaces<D> faces = run_faces(slice, ids, vertices, path);
   const Met<D> met = meet(slice, faces, path);
-  return part_of_shipments(std::vector<Shipment<D>>{run_shipment(slice, ids, vertices, faces, met)});
+  return {part_of_shipments(std::vector<Shipment<D>>{run_shipment(slice, ids, vertices, faces, met)}), slice.vertex_count,
+          slice.element_count, slice.facet_count};
 }
 
-template MeshPart<2> read_mesh_file_piece(const std::string&);
-template MeshPart<3> read_mesh_file_piece(const std::string&);
+template MeshFilePiece<2> read_mesh_file_piece(const std::string&);
+template MeshFilePiece<3> read_mesh_file_piece(const std::string&);
 
 }  // namespace hocav

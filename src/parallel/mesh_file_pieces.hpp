@@ -12,7 +12,7 @@
 
 namespace hocav {
 
-// Every process at once: its part of the mesh in the Gamma file at `path` (.mesh or .meshb, P1),
+// Every process at once: its part of the mesh in the Gamma file (and the file's counts) at `path` (.mesh or .meshb, P1),
 // made of its run of the file's elements, as migrate_part would make it from the whole mesh: its
 // vertices in the order of their file ids (its global ids), its elements in file order, the file's
 // facets on them (a facet between two runs goes with the element of the smaller file id), a
@@ -22,6 +22,12 @@ namespace hocav {
 // mesh's checks are not either). Throws Error naming the file, keyword and entity when an entity
 // is out of range, a facet is no face of the elements, or a face has more than two elements.
 template <int D>
-MeshPart<D> read_mesh_file_piece(const std::string& path);
+struct MeshFilePiece {
+  MeshPart<D> part;
+  Index vertex_count = 0, element_count = 0, facet_count = 0;  // the file's
+};
+
+template <int D>
+MeshFilePiece<D> read_mesh_file_piece(const std::string& path);
 
 }  // namespace hocav

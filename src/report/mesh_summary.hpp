@@ -10,4 +10,7 @@ namespace hocav {
 template <int D>
 std::string mesh_summary(const Mesh<D>& mesh);
 
+// The same line for a P1 mesh known by its counts (a mesh read in pieces).
+std::string p1_mesh_summary(int dimension, Index vertices, Index elements, Index facets);
+
 }  // namespace hocav

@@ -4,6 +4,7 @@
 
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <limits>
 
@@ -58,6 +59,24 @@ TEST(SolutionFile, RoundTripsEveryKindOfField) {
         write_solution_file(path, content, version);
         expect_same_content(content, read_solution_file(path), version == 1 && std::string(extension) == ".solb");
       }
+}
+
+// The skeleton's hole, filled row by row at its layout's offsets, makes the file write_solution_file
+// writes of the whole (what the processes of a distributed run do, each its rows).
+TEST(SolutionFile, ASkeletonFilledInPlaceIsTheWholeFile) {
+  for (int dimension : {2, 3}) {
+    const int components = dimension * (dimension + 1) / 2;
+    SolutionField rows{SolutionKind::kSymmetricMatrix, dimension, {}};
+    for (int i = 0; i < 7 * components; ++i) rows.values.push_back(1.0 / (i + 3));
+    const std::string whole = temporary_path("whole.solb"), skeleton = temporary_path("skeleton.solb");
+    write_solution_file(whole, {dimension, 7, {rows}});
+    const SolutionRowsLayout layout = write_solution_skeleton(skeleton, dimension, 7, {SolutionKind::kSymmetricMatrix});
+    EXPECT_EQ(layout.row_bytes, static_cast<std::uint64_t>(components) * sizeof(double));
+    std::string bytes = read_file(skeleton);
+    ASSERT_EQ(bytes.size(), read_file(whole).size());
+    std::memcpy(bytes.data() + layout.first_row_offset, rows.values.data(), rows.values.size() * sizeof(double));
+    EXPECT_EQ(bytes, read_file(whole)) << dimension << "D";
+  }
 }
 
 TEST(SolutionFile, KeepsTheTypeHeader32BitInVersion4) {

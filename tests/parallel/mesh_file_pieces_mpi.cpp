@@ -94,7 +94,7 @@ bool check(const Mesh<D>& mesh, const std::string& directory) {
   const MeshPart<D> expected = expected_piece<D>(binary);
   bool ok = true;
   for (const std::string& path : {binary, text}) {
-    const MeshPart<D> piece = read_mesh_file_piece<D>(path);
+    const MeshPart<D> piece = read_mesh_file_piece<D>(path).part;
     const std::string what = name + " (" + path + ")";
     const std::string difference = part_difference(piece, expected);
     if (!difference.empty()) ok = fail(what + ": " + difference);

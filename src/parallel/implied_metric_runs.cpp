@@ -1,0 +1,147 @@
+#include "parallel/implied_metric_runs.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "base/error.hpp"
+#include "io/gamma_mesh.hpp"
+#include "metric/implied_metric.hpp"
+#include "parallel/communicator.hpp"
+
+namespace hocav {
+namespace {
+
+// A piece's sum of a vertex's element shares, sent to the vertex's process.
+template <int D>
+struct VertexSum {
+  Index vertex;         // its global id
+  std::int32_t shares;  // how many elements gave one
+  ImpliedShare<D> sum;
+};
+
+// One element's share of a vertex's metric, for a vertex whose elements lie in several pieces.
+template <int D>
+struct ElementShare {
+  Index vertex, element;  // global id, file id
+  ImpliedShare<D> share;
+};
+
+// The piece's elements' global numbers start here: the runs of elements are in rank order.
+template <int D>
+Index first_element_of(const MeshPart<D>& piece) {
+  Index first = 0;
+  const std::vector<Index> counts = all_gather_value(piece.mesh.element_count());
+  for (int r = 0; r < process_rank(); ++r) first += counts[r];
+  return first;
+}
+
+template <int D>
+ImpliedShare<D> share_of(const MeshPart<D>& piece, Index k, Index first_element, const std::string& path) {
+  try {
+    return implied_share(piece.mesh, k, first_element + k + 1);
+  } catch (const Error& error) {
+    throw Error(path + ": " + error.what());
+  }
+}
+
+template <int D>
+void add(ImpliedShare<D>& sum, const ImpliedShare<D>& share) {
+  sum.weighted_log += share.weighted_log;
+  sum.weight += share.weight;
+}
+
+// Per process, the piece's sums of the vertices that process's run holds.
+template <int D>
+std::vector<std::vector<VertexSum<D>>> piece_sums(const MeshPart<D>& piece, Index vertex_count, Index first_element,
+                                                  const std::string& path) {
+  std::vector<VertexSum<D>> sums(piece.global_ids.size());
+  for (std::size_t v = 0; v < sums.size(); ++v) sums[v] = {piece.global_ids[v], 0, {}};
+  for (Index k = 0; k < piece.mesh.element_count(); ++k) {
+    const ImpliedShare<D> share = share_of(piece, k, first_element, path);
+    for (Index v : piece.mesh.element(k)) {
+      add(sums[v].sum, share);
+      ++sums[v].shares;
+    }
+  }
+  std::vector<std::vector<VertexSum<D>>> outgoing(static_cast<std::size_t>(process_count()));
+  for (const VertexSum<D>& sum : sums) outgoing[slice_holding(sum.vertex, vertex_count, process_count())].push_back(sum);
+  return outgoing;
+}
+
+// Every process at once: the element shares of the vertices in `asked` (per process, the global ids
+// it asks this piece for), sent to the processes that asked.
+template <int D>
+std::vector<ElementShare<D>> element_shares(const MeshPart<D>& piece, const std::vector<std::vector<Index>>& asked, Index vertex_count,
+                                            Index first_element, const std::string& path) {
+  std::vector<char> wanted(piece.global_ids.size(), 0);
+  for (const std::vector<Index>& ids : asked)
+    for (Index id : ids)
+      wanted[static_cast<std::size_t>(std::lower_bound(piece.global_ids.begin(), piece.global_ids.end(), id) - piece.global_ids.begin())] =
+          1;
+  std::vector<std::vector<ElementShare<D>>> outgoing(asked.size());
+  for (Index k = 0; k < piece.mesh.element_count(); ++k) {
+    const auto& element = piece.mesh.element(k);
+    if (std::none_of(element.begin(), element.end(), [&](Index v) { return wanted[v] != 0; })) continue;
+    const ImpliedShare<D> share = share_of(piece, k, first_element, path);
+    for (Index v : element)
+      if (wanted[v]) {
+        const Index id = piece.global_ids[v];
+        outgoing[slice_holding(id, vertex_count, process_count())].push_back({id, first_element + k, share});
+      }
+  }
+  std::vector<ElementShare<D>> arrived;
+  for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(outgoing))) {
+    const std::vector<ElementShare<D>> shares = values_of_bytes<ElementShare<D>>(bytes);
+    arrived.insert(arrived.end(), shares.begin(), shares.end());
+  }
+  return arrived;
+}
+
+}  // namespace
+
+template <int D>
+VertexRunMetrics<D> implied_metric_by_runs(const MeshPart<D>& piece, Index vertex_count, const std::string& path) {
+  const int processes = process_count();
+  const Index first_element = first_element_of(piece);
+  VertexRunMetrics<D> run;
+  run.first = slice_start(vertex_count, process_rank(), processes);
+  const auto size = static_cast<std::size_t>(slice_start(vertex_count, process_rank() + 1, processes) - run.first);
+  std::vector<ImpliedShare<D>> sums(size);
+  std::vector<int> pieces(size, 0);
+  const std::vector<std::vector<std::byte>> arrived = exchange_bytes(
+      bytes_of_messages(piece_sums(piece, vertex_count, first_element, path)));
+  std::vector<std::vector<VertexSum<D>>> from(arrived.size());
+  for (std::size_t p = 0; p < arrived.size(); ++p) {
+    from[p] = values_of_bytes<VertexSum<D>>(arrived[p]);
+    for (const VertexSum<D>& sum : from[p]) {
+      sums[sum.vertex - run.first] = sum.sum;
+      ++pieces[sum.vertex - run.first];
+    }
+  }
+  // The vertices of several pieces: their shares element by element, in the file's order.
+  std::vector<std::vector<Index>> ask(from.size());
+  for (std::size_t p = 0; p < from.size(); ++p)
+    for (const VertexSum<D>& sum : from[p])
+      if (pieces[sum.vertex - run.first] > 1) ask[p].push_back(sum.vertex);
+  std::vector<std::vector<Index>> asked;
+  for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(ask))) asked.push_back(values_of_bytes<Index>(bytes));
+  std::vector<ElementShare<D>> shares = element_shares(piece, asked, vertex_count, first_element, path);
+  std::sort(shares.begin(), shares.end(), [](const ElementShare<D>& a, const ElementShare<D>& b) {
+    return a.vertex != b.vertex ? a.vertex < b.vertex : a.element < b.element;
+  });
+  for (const ElementShare<D>& share : shares) sums[share.vertex - run.first] = {};
+  for (const ElementShare<D>& share : shares) add(sums[share.vertex - run.first], share.share);
+  for (std::size_t i = 0; i < size; ++i) {
+    if (pieces[i] == 0)
+      throw Error(path + ": implied metric: vertex " + std::to_string(run.first + static_cast<Index>(i) + 1) +
+                  " belongs to no element, so it has no metric");
+    run.metrics.push_back(implied_vertex_metric(sums[i]));
+    run.measures.push_back(sums[i].weight);
+  }
+  return run;
+}
+
+template VertexRunMetrics<2> implied_metric_by_runs(const MeshPart<2>&, Index, const std::string&);
+template VertexRunMetrics<3> implied_metric_by_runs(const MeshPart<3>&, Index, const std::string&);
+
+}  // namespace hocav
