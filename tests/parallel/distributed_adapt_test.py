@@ -21,9 +21,8 @@ Exits 77 (skipped) when hocav was built without MPI.
 import json
 import os
 import sys
-import tempfile
 
-from mpi_test_support import SKIP, check_same_refs, check_valid, mpirun_or_none, run, same_bytes, stats
+from mpi_test_support import check_same_refs, check_valid, distributed_test, run, same_bytes, stats
 
 TOLERANCE = 0.01
 MIN_QUALITY = 0.05
@@ -125,39 +124,32 @@ def compare_with_serial(hocav, mpirun, work, metric, fine=False, process_counts=
         assert minimum >= MIN_QUALITY, f"{name}: min quality {minimum} (serial {serial_min})"
 
 
-def main():
-    hocav = os.path.abspath(sys.argv[1])
-    mpirun = mpirun_or_none()
-    if mpirun is None:
-        return SKIP
-    with tempfile.TemporaryDirectory() as work:
-        run([hocav, "generate", "cube", "--h", "0.1", "-o", "cube.meshb"], work)
-        run([hocav, "metric", "cube.meshb", "--analytic", "linear", "--h-min", "0.03", "-o", "cube.solb"], work)
-        compare_with_serial(hocav, mpirun, work, "cube.solb")
-        # The metric's own h-min (0.001), 100 times finer than the input: with the target in the first
-        # iteration its frozen interfaces would be far coarser than the metric (docs/distributed.md,
-        # "A small case that shows the defect"; before the gradual metric: 97.2% unit against 98.9%).
-        run([hocav, "metric", "cube.meshb", "--analytic", "linear", "-o", "fine.solb"], work)
-        compare_with_serial(hocav, mpirun, work, "fine.solb", fine=True)
-        # An analytic metric, evaluated exactly at every new vertex: the shares of the back mesh carry
-        # only the input's own metric, where the gradual metric starts.
-        compare_with_serial(hocav, mpirun, work, ["--analytic", "linear", "--hmin", "0.03"], process_counts=(2,))
+def check(hocav, mpirun, work):
+    run([hocav, "generate", "cube", "--h", "0.1", "-o", "cube.meshb"], work)
+    run([hocav, "metric", "cube.meshb", "--analytic", "linear", "--h-min", "0.03", "-o", "cube.solb"], work)
+    compare_with_serial(hocav, mpirun, work, "cube.solb")
+    # The metric's own h-min (0.001), 100 times finer than the input: with the target in the first
+    # iteration its frozen interfaces would be far coarser than the metric (docs/distributed.md,
+    # "A small case that shows the defect"; before the gradual metric: 97.2% unit against 98.9%).
+    run([hocav, "metric", "cube.meshb", "--analytic", "linear", "-o", "fine.solb"], work)
+    compare_with_serial(hocav, mpirun, work, "fine.solb", fine=True)
+    # An analytic metric, evaluated exactly at every new vertex: the shares of the back mesh carry
+    # only the input's own metric, where the gradual metric starts.
+    compare_with_serial(hocav, mpirun, work, ["--analytic", "linear", "--hmin", "0.03"], process_counts=(2,))
 
-        curved = ["adapt", "cube.meshb", "--metric", "cube.solb", "--order", "2", "-q"]
-        run(mpirun + ["-np", "2", hocav] + curved + ["-o", "curved.meshb", "--report", "curved.json"], work)
-        figures = stats(hocav, "curved.meshb", work)
-        assert figures["order"] == "P2", figures["order"]
-        check_valid(figures, "curved.meshb")
-        # The cube's faces are flat: curved on their geometry (every process's made from the boundary
-        # rank 0 sends), its elements stay straight, as the serial run's do.
-        run([hocav] + curved + ["-o", "curved_serial.meshb", "--report", "curved_serial.json"], work)
-        jacobians = [json.load(open(os.path.join(work, name)))["curving"]["normalized_jacobian"]["min"]
-                     for name in ("curved.json", "curved_serial.json")]
-        print(f"curved: normalized Jacobian min {jacobians[0]:.4f} (serial {jacobians[1]:.4f})")
-        assert jacobians[0] >= 0.99 * jacobians[1], f"curved on 2 processes: normalized Jacobian min {jacobians}"
-    print("ok")
-    return 0
+    curved = ["adapt", "cube.meshb", "--metric", "cube.solb", "--order", "2", "-q"]
+    run(mpirun + ["-np", "2", hocav] + curved + ["-o", "curved.meshb", "--report", "curved.json"], work)
+    figures = stats(hocav, "curved.meshb", work)
+    assert figures["order"] == "P2", figures["order"]
+    check_valid(figures, "curved.meshb")
+    # The cube's faces are flat: curved on their geometry (every process's made from the boundary
+    # rank 0 sends), its elements stay straight, as the serial run's do.
+    run([hocav] + curved + ["-o", "curved_serial.meshb", "--report", "curved_serial.json"], work)
+    jacobians = [json.load(open(os.path.join(work, name)))["curving"]["normalized_jacobian"]["min"]
+                 for name in ("curved.json", "curved_serial.json")]
+    print(f"curved: normalized Jacobian min {jacobians[0]:.4f} (serial {jacobians[1]:.4f})")
+    assert jacobians[0] >= 0.99 * jacobians[1], f"curved on 2 processes: normalized Jacobian min {jacobians}"
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(distributed_test(check))

@@ -21,9 +21,8 @@ import json
 import os
 import re
 import sys
-import tempfile
 
-from mpi_test_support import SKIP, check_same_refs, check_valid, completed, min_normalized_jacobian, mpirun_or_none, run, same_bytes, stats
+from mpi_test_support import check_same_refs, check_valid, completed, distributed_test, min_normalized_jacobian, run, same_bytes, stats
 
 FLOOR = 0.01
 GAIN_TOLERANCE = 0.1  # relative, of the average gain
@@ -81,59 +80,52 @@ def check_against_serial(hocav, work, name, serial, serial_report):
     return data
 
 
-def main():
-    hocav = os.path.abspath(sys.argv[1])
-    mpirun = mpirun_or_none()
-    if mpirun is None:
-        return SKIP
-    with tempfile.TemporaryDirectory() as work:
-        run([hocav, "generate", "cubed-shell-bl-inner", "--target-tets", "6000", "-o", "shell.meshb"], work)
-        run([hocav, "generate", "cubed-shell", "--target-tets", "6000", "-o", "cubed.meshb"], work)
-        run([hocav, "generate", "polar-annulus-bl-inner", "--target-triangles", "3000", "-o", "annulus.meshb"], work)
-        for case in ("shell", "cubed", "annulus"):
-            run([hocav, "metric", case + ".meshb", "--implied", "-o", case + ".solb"], work)
-            curve = ["curve", case + ".meshb", "--metric", case + ".solb", "--threads", "1", "-q"]
-            serial_name = case + "1"
-            run([hocav] + curve + ["-o", serial_name + ".meshb", "--report", serial_name + ".json"], work)
-            serial = stats(hocav, serial_name + ".meshb", work)
-            serial_report = report(work, serial_name + ".json")
-            serial_cavities = serial_report["cavities"]["tried"]
-            serial_straight = straight_boundary_edges(hocav, work, serial_name)
+def check(hocav, mpirun, work):
+    run([hocav, "generate", "cubed-shell-bl-inner", "--target-tets", "6000", "-o", "shell.meshb"], work)
+    run([hocav, "generate", "cubed-shell", "--target-tets", "6000", "-o", "cubed.meshb"], work)
+    run([hocav, "generate", "polar-annulus-bl-inner", "--target-triangles", "3000", "-o", "annulus.meshb"], work)
+    for case in ("shell", "cubed", "annulus"):
+        run([hocav, "metric", case + ".meshb", "--implied", "-o", case + ".solb"], work)
+        curve = ["curve", case + ".meshb", "--metric", case + ".solb", "--threads", "1", "-q"]
+        serial_name = case + "1"
+        run([hocav] + curve + ["-o", serial_name + ".meshb", "--report", serial_name + ".json"], work)
+        serial = stats(hocav, serial_name + ".meshb", work)
+        serial_report = report(work, serial_name + ".json")
+        serial_cavities = serial_report["cavities"]["tried"]
+        serial_straight = straight_boundary_edges(hocav, work, serial_name)
 
-            run(mpirun + ["-np", "1", hocav] + curve + ["-o", "one.meshb"], work)
-            assert same_bytes(work, "one.meshb", serial_name + ".meshb"), f"{case}: curve, mpirun -np 1: not the serial output byte for byte"
+        run(mpirun + ["-np", "1", hocav] + curve + ["-o", "one.meshb"], work)
+        assert same_bytes(work, "one.meshb", serial_name + ".meshb"), f"{case}: curve, mpirun -np 1: not the serial output byte for byte"
 
-            for processes in (2, 3):
-                name = f"{case}{processes}"
-                args = mpirun + ["-np", str(processes), hocav] + curve[:-1] + ["-o", name + ".meshb", "--report", name + ".json"]
-                found = rounds(completed(args, work).stderr)
-                assert len(found) in (2, 3), f"{name}: rounds {found}"
-                data = check_against_serial(hocav, work, name, serial, serial_report)
-                cavities = [count for count, _ in found]
-                frozen_again = [frozen for _, frozen in found[1:]]
-                straight = straight_boundary_edges(hocav, work, name)
-                print(f"{name}: cavities {' + '.join(map(str, cavities))} (serial {serial_cavities}), old interface vertices frozen "
-                      f"again {frozen_again}, {straight} straight boundary edges (serial {serial_straight})")
-                assert cavities[1] > 0, f"{name}: the second round curved nothing"
-                assert (len(found) == 3) == (frozen_again[0] > 0), f"{name}: a third round is run when the second froze vertices again"
-                assert frozen_again[-1] == 0, f"{name}: the last round froze {frozen_again[-1]} vertices again"
-                assert sum(cavities) == data["cavities"]["tried"]
-                assert sum(cavities) == serial_cavities, f"{name}: {cavities} cavities, serial {serial_cavities}"
-                assert straight <= serial_straight, f"{name}: {straight} straight boundary edges, serial {serial_straight}"
+        for processes in (2, 3):
+            name = f"{case}{processes}"
+            args = mpirun + ["-np", str(processes), hocav] + curve[:-1] + ["-o", name + ".meshb", "--report", name + ".json"]
+            found = rounds(completed(args, work).stderr)
+            assert len(found) in (2, 3), f"{name}: rounds {found}"
+            data = check_against_serial(hocav, work, name, serial, serial_report)
+            cavities = [count for count, _ in found]
+            frozen_again = [frozen for _, frozen in found[1:]]
+            straight = straight_boundary_edges(hocav, work, name)
+            print(f"{name}: cavities {' + '.join(map(str, cavities))} (serial {serial_cavities}), old interface vertices frozen "
+                  f"again {frozen_again}, {straight} straight boundary edges (serial {serial_straight})")
+            assert cavities[1] > 0, f"{name}: the second round curved nothing"
+            assert (len(found) == 3) == (frozen_again[0] > 0), f"{name}: a third round is run when the second froze vertices again"
+            assert frozen_again[-1] == 0, f"{name}: the last round froze {frozen_again[-1]} vertices again"
+            assert sum(cavities) == data["cavities"]["tried"]
+            assert sum(cavities) == serial_cavities, f"{name}: {cavities} cavities, serial {serial_cavities}"
+            assert straight <= serial_straight, f"{name}: {straight} straight boundary edges, serial {serial_straight}"
 
-        adapt = ["adapt", "shell.meshb", "--metric", "shell.solb", "--order", "2", "--threads", "1", "-q"]
-        run([hocav] + adapt + ["-o", "adapted.meshb"], work)
-        run(mpirun + ["-np", "1", hocav] + adapt + ["-o", "adapted1.meshb"], work)
-        assert same_bytes(work, "adapted1.meshb", "adapted.meshb"), "adapt --order 2, mpirun -np 1: not the serial output byte for byte"
-        run(mpirun + ["-np", "2", hocav] + adapt + ["-o", "adapted2.meshb"], work)
-        figures = stats(hocav, "adapted2.meshb", work)
-        check_valid(figures, "adapted2.meshb")
-        assert figures["order"] == "P2", figures["order"]
-        assert min_normalized_jacobian(figures) >= FLOOR, f"adapted2: min normalized Jacobian {figures['normalized Jacobian']}"
-        check_same_refs(figures, stats(hocav, "shell.meshb", work), "adapted2")
-    print("ok")
-    return 0
+    adapt = ["adapt", "shell.meshb", "--metric", "shell.solb", "--order", "2", "--threads", "1", "-q"]
+    run([hocav] + adapt + ["-o", "adapted.meshb"], work)
+    run(mpirun + ["-np", "1", hocav] + adapt + ["-o", "adapted1.meshb"], work)
+    assert same_bytes(work, "adapted1.meshb", "adapted.meshb"), "adapt --order 2, mpirun -np 1: not the serial output byte for byte"
+    run(mpirun + ["-np", "2", hocav] + adapt + ["-o", "adapted2.meshb"], work)
+    figures = stats(hocav, "adapted2.meshb", work)
+    check_valid(figures, "adapted2.meshb")
+    assert figures["order"] == "P2", figures["order"]
+    assert min_normalized_jacobian(figures) >= FLOOR, f"adapted2: min normalized Jacobian {figures['normalized Jacobian']}"
+    check_same_refs(figures, stats(hocav, "shell.meshb", work), "adapted2")
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(distributed_test(check))

@@ -3,6 +3,8 @@ as a dict, the validity checks, the refs of a mesh."""
 import os
 import re
 import subprocess
+import sys
+import tempfile
 
 SKIP = 77
 
@@ -54,3 +56,16 @@ def check_same_refs(figures, serial, name):
 def same_bytes(work, a, b):
     with open(os.path.join(work, a), "rb") as one, open(os.path.join(work, b), "rb") as other:
         return one.read() == other.read()
+
+
+def distributed_test(check):
+    """The main of a distributed test: check(hocav, mpirun, work) in a scratch folder, with the hocav
+    of the command line; SKIP when hocav has no MPI, else 0 once check returns."""
+    hocav = os.path.abspath(sys.argv[1])
+    mpirun = mpirun_or_none()
+    if mpirun is None:
+        return SKIP
+    with tempfile.TemporaryDirectory() as work:
+        check(hocav, mpirun, work)
+    print("ok")
+    return 0
