@@ -232,9 +232,9 @@ struct SortedTags {
         required_triangles(sorted(slice.required_triangles)) {}
 };
 
-// The run's own shipment: its elements with what the part needs around them.
+// The run's own shipment: its elements (moved out of `slice`) with what the part needs around them.
 template <int D>
-Shipment<D> run_shipment(const GammaMeshSlice<D>& slice, const std::vector<Index>& ids, const std::vector<VertexRecord<D>>& vertices,
+Shipment<D> run_shipment(GammaMeshSlice<D>& slice, const std::vector<Index>& ids, const std::vector<VertexRecord<D>>& vertices,
                          const RunFaces<D>& faces, const Met<D>& met) {
   const SortedTags tags(slice);
   Shipment<D> s;
@@ -248,9 +248,9 @@ Shipment<D> run_shipment(const GammaMeshSlice<D>& slice, const std::vector<Index
   std::vector<char> inner = faces.closed;
   for (std::size_t i = 0; i < faces.sent.size(); ++i)
     if (met.across[i]) inner[faces.sent_face[i]] = 1;
-  s.elements = slice.elements;
-  s.element_refs = slice.element_refs;
-  for (std::size_t k = 0; k < slice.elements.size(); ++k) {
+  s.elements = std::move(slice.elements);
+  s.element_refs = std::move(slice.element_refs);
+  for (std::size_t k = 0; k < s.elements.size(); ++k) {
     char bits = 0;
     for (int face = 0; face <= D; ++face)
       if (inner[k * (D + 1) + static_cast<std::size_t>(face)]) bits = static_cast<char>(bits | (1 << face));
@@ -266,7 +266,7 @@ Shipment<D> run_shipment(const GammaMeshSlice<D>& slice, const std::vector<Index
   }
   if constexpr (D == 3) {
     std::unordered_set<std::uint64_t> edges;
-    for (const auto& element : slice.elements)
+    for (const auto& element : s.elements)
       for (int e = 0; e < Simplex<D>::kEdges; ++e)
         edges.insert(Mesh<D>::edge_key(element[edge_vertices<D>(e)[0]], element[edge_vertices<D>(e)[1]]));
     for (std::size_t l = 0; l < slice.lines.size(); ++l) {
@@ -281,21 +281,33 @@ Shipment<D> run_shipment(const GammaMeshSlice<D>& slice, const std::vector<Index
   return s;
 }
 
-}  // namespace
-
+// Every process at once: the shipment of its own run (the slice's elements moved into it); what
+// was needed to make it is gone when it returns.
 template <int D>
-MeshFilePiece<D> read_mesh_file_piece(const std::string& path) {
-  const GammaMeshSlice<D> slice = read_gamma_mesh_slice<D>(path, process_rank(), process_count());
+Shipment<D> own_shipment(GammaMeshSlice<D>& slice, const std::string& path) {
   const std::vector<char> on_facet = facet_vertex_flags(slice);
   std::vector<Index> ids;
   for (const auto& element : slice.elements) ids.insert(ids.end(), element.begin(), element.end());
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  ids.shrink_to_fit();
   const std::vector<VertexRecord<D>> vertices = fetched_vertices(slice, on_facet, ids);
   const RunFaces<D> faces = run_faces(slice, ids, vertices, path);
   const Met<D> met = meet(slice, faces, path);
-  return {part_of_shipments(std::vector<Shipment<D>>{run_shipment(slice, ids, vertices, faces, met)}), slice.vertex_count,
-          slice.element_count, slice.facet_count};
+  return run_shipment(slice, ids, vertices, faces, met);
+}
+
+}  // namespace
+
+template <int D>
+MeshFilePiece<D> read_mesh_file_piece(const std::string& path) {
+  GammaMeshSlice<D> slice = read_gamma_mesh_slice<D>(path, process_rank(), process_count());
+  MeshFilePiece<D> piece{{}, slice.vertex_count, slice.element_count, slice.facet_count};
+  std::vector<Shipment<D>> own;
+  own.push_back(own_shipment(slice, path));
+  slice = {};
+  piece.part = part_of_shipments(own);
+  return piece;
 }
 
 template MeshFilePiece<2> read_mesh_file_piece(const std::string&);
