@@ -47,10 +47,8 @@ std::vector<Index> sorted(std::vector<Index> ids) {
   return ids;
 }
 
-template <int D>
-std::string keyword_of(int simplex_dimension) {
-  return gamma::keyword_name(gamma::simplex_keyword(simplex_dimension, 1).code);
-}
+// The name of the P1 keyword of simplices of a dimension (Tetrahedra, Triangles, Edges).
+std::string p1_keyword(int simplex_dimension) { return gamma::keyword_name(gamma::simplex_keyword(simplex_dimension, 1).code); }
 
 // Per vertex of this process's run: whether a facet of any run uses it.
 template <int D>
@@ -111,7 +109,7 @@ Mesh<D> run_mesh(const GammaMeshSlice<D>& slice, const std::vector<Index>& ids, 
   try {
     mesh.build_topology();
   } catch (const Error& error) {
-    throw Error(path + ": " + keyword_of<D>(D) + ": " + error.what() + " (elements counted from entity " +
+    throw Error(path + ": " + p1_keyword(D) + ": " + error.what() + " (elements counted from entity " +
                 std::to_string(slice.first_element + 1) + ")");
   }
   return mesh;
@@ -164,7 +162,7 @@ struct Meeting {
         sides.count += face.sides;
         sides.element = sides.count == face.sides ? face.element : std::min(sides.element, face.element);
         if (sides.count > 2)
-          throw Error(path + ": " + keyword_of<D>(D) + ": entity " + std::to_string(sides.element + 1) +
+          throw Error(path + ": " + p1_keyword(D) + ": entity " + std::to_string(sides.element + 1) +
                       " has a face two other elements have");
       }
     }
@@ -202,7 +200,7 @@ Met<D> meet(const GammaMeshSlice<D>& slice, const RunFaces<D>& faces, const std:
     for (FacetRecord<D> facet : values_of_bytes<FacetRecord<D>>(bytes)) {
       const auto sides = meeting.by_key.find(sorted_key<D>(facet.vertices));
       if (sides == meeting.by_key.end())
-        throw Error(path + ": " + keyword_of<D>(D - 1) + ": entity " + std::to_string(facet.id + 1) + " is no face of the elements");
+        throw Error(path + ": " + p1_keyword(D - 1) + ": entity " + std::to_string(facet.id + 1) + " is no face of the elements");
       facet.element = sides->second.element;
       placed[slice_holding(facet.element, slice.element_count, processes)].push_back(facet);
     }
