@@ -97,48 +97,67 @@ std::vector<ElementShare<D>> element_shares(const MeshPart<D>& piece, const std:
   return arrived;
 }
 
-}  // namespace
+// What this process's run of vertices got from the pieces: per vertex the sum of its shares and the
+// number of pieces that gave one, and per piece the vertices it gave sums for.
+template <int D>
+struct RunSums {
+  std::vector<ImpliedShare<D>> sums;
+  std::vector<int> pieces;
+  std::vector<std::vector<Index>> given;  // per process
+};
 
 template <int D>
-VertexRunMetrics<D> implied_metric_by_runs(const MeshPart<D>& piece, Index vertex_count, const std::string& path) {
-  const int processes = process_count();
-  const Index first_element = first_element_of(piece);
-  VertexRunMetrics<D> run;
-  run.first = slice_start(vertex_count, process_rank(), processes);
-  const auto size = static_cast<std::size_t>(slice_start(vertex_count, process_rank() + 1, processes) - run.first);
-  std::vector<ImpliedShare<D>> sums(size);
-  std::vector<int> pieces(size, 0);
-  const std::vector<std::vector<std::byte>> arrived = exchange_bytes(
-      bytes_of_messages(piece_sums(piece, vertex_count, first_element, path)));
-  std::vector<std::vector<VertexSum<D>>> from(arrived.size());
-  for (std::size_t p = 0; p < arrived.size(); ++p) {
-    from[p] = values_of_bytes<VertexSum<D>>(arrived[p]);
-    for (const VertexSum<D>& sum : from[p]) {
-      sums[sum.vertex - run.first] = sum.sum;
-      ++pieces[sum.vertex - run.first];
+RunSums<D> run_sums(const MeshPart<D>& piece, Index first, std::size_t size, Index vertex_count, Index first_element,
+                    const std::string& path) {
+  RunSums<D> run{std::vector<ImpliedShare<D>>(size), std::vector<int>(size, 0), {}};
+  for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(piece_sums(piece, vertex_count, first_element, path)))) {
+    run.given.emplace_back();
+    for (const VertexSum<D>& sum : values_of_bytes<VertexSum<D>>(bytes)) {
+      run.sums[sum.vertex - first] = sum.sum;
+      ++run.pieces[sum.vertex - first];
+      run.given.back().push_back(sum.vertex);
     }
   }
-  // The vertices of several pieces: their shares element by element, in the file's order.
-  std::vector<std::vector<Index>> ask(from.size());
-  for (std::size_t p = 0; p < from.size(); ++p)
-    for (const VertexSum<D>& sum : from[p])
-      if (pieces[sum.vertex - run.first] > 1) ask[p].push_back(sum.vertex);
+  return run;
+}
+
+// Every process at once: the sums of the run's vertices of several pieces made again from their
+// shares element by element, in the file's order, as the serial sum runs.
+template <int D>
+void sum_in_file_order(RunSums<D>& run, const MeshPart<D>& piece, Index first, Index vertex_count, Index first_element,
+                       const std::string& path) {
+  std::vector<std::vector<Index>> ask(run.given.size());
+  for (std::size_t p = 0; p < run.given.size(); ++p)
+    for (Index vertex : run.given[p])
+      if (run.pieces[vertex - first] > 1) ask[p].push_back(vertex);
   std::vector<std::vector<Index>> asked;
   for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(ask))) asked.push_back(values_of_bytes<Index>(bytes));
   std::vector<ElementShare<D>> shares = element_shares(piece, asked, vertex_count, first_element, path);
   std::sort(shares.begin(), shares.end(), [](const ElementShare<D>& a, const ElementShare<D>& b) {
     return a.vertex != b.vertex ? a.vertex < b.vertex : a.element < b.element;
   });
-  for (const ElementShare<D>& share : shares) sums[share.vertex - run.first] = {};
-  for (const ElementShare<D>& share : shares) add(sums[share.vertex - run.first], share.share);
+  for (const ElementShare<D>& share : shares) run.sums[share.vertex - first] = {};
+  for (const ElementShare<D>& share : shares) add(run.sums[share.vertex - first], share.share);
+}
+
+}  // namespace
+
+template <int D>
+VertexRunMetrics<D> implied_metric_by_runs(const MeshPart<D>& piece, Index vertex_count, const std::string& path) {
+  const Index first_element = first_element_of(piece);
+  VertexRunMetrics<D> out;
+  out.first = slice_start(vertex_count, process_rank(), process_count());
+  const auto size = static_cast<std::size_t>(slice_start(vertex_count, process_rank() + 1, process_count()) - out.first);
+  RunSums<D> run = run_sums(piece, out.first, size, vertex_count, first_element, path);
+  sum_in_file_order(run, piece, out.first, vertex_count, first_element, path);
   for (std::size_t i = 0; i < size; ++i) {
-    if (pieces[i] == 0)
-      throw Error(path + ": implied metric: vertex " + std::to_string(run.first + static_cast<Index>(i) + 1) +
+    if (run.pieces[i] == 0)
+      throw Error(path + ": implied metric: vertex " + std::to_string(out.first + static_cast<Index>(i) + 1) +
                   " belongs to no element, so it has no metric");
-    run.metrics.push_back(implied_vertex_metric(sums[i]));
-    run.measures.push_back(sums[i].weight);
+    out.metrics.push_back(implied_vertex_metric(run.sums[i]));
+    out.measures.push_back(run.sums[i].weight);
   }
-  return run;
+  return out;
 }
 
 template VertexRunMetrics<2> implied_metric_by_runs(const MeshPart<2>&, Index, const std::string&);
