@@ -94,6 +94,25 @@ struct RunFaces {
   std::vector<std::size_t> sent_face;  // per sent record, its element face
 };
 
+// The places of file ids in `ids` (sorted, unique): a table over their range when it is compact (a
+// run of a file in spatial order), else a binary search.
+class LocalIds {
+ public:
+  explicit LocalIds(const std::vector<Index>& ids) : ids_(ids) {
+    if (ids.empty() || static_cast<std::size_t>(ids.back() - ids.front()) >= 4 * ids.size()) return;
+    table_.assign(static_cast<std::size_t>(ids.back() - ids.front()) + 1, kNoIndex);
+    for (std::size_t i = 0; i < ids.size(); ++i) table_[static_cast<std::size_t>(ids[i] - ids.front())] = static_cast<Index>(i);
+  }
+  Index operator()(Index id) const {
+    if (!table_.empty()) return table_[static_cast<std::size_t>(id - ids_.front())];
+    return static_cast<Index>(std::lower_bound(ids_.begin(), ids_.end(), id) - ids_.begin());
+  }
+
+ private:
+  const std::vector<Index>& ids_;
+  std::vector<Index> table_;
+};
+
 // The run's elements by their vertices' places in `ids`, with their topology: which faces another
 // element of the run has.
 template <int D>
@@ -101,9 +120,10 @@ Mesh<D> run_mesh(const GammaMeshSlice<D>& slice, const std::vector<Index>& ids, 
                  const std::string& path) {
   Mesh<D> mesh;
   for (const VertexRecord<D>& vertex : vertices) mesh.add_vertex(vertex.point, vertex.ref);
+  const LocalIds local_of(ids);
   for (const auto& element : slice.elements) {
     typename Mesh<D>::Element local{};
-    for (int i = 0; i <= D; ++i) local[i] = static_cast<Index>(std::lower_bound(ids.begin(), ids.end(), element[i]) - ids.begin());
+    for (int i = 0; i <= D; ++i) local[i] = local_of(element[i]);
     mesh.add_element(local, 0);
   }
   try {
@@ -230,6 +250,28 @@ struct SortedTags {
         required_triangles(sorted(slice.required_triangles)) {}
 };
 
+// 3D: the file's lines along the edges of the run's elements (`s.elements`), with their tags. The
+// lines are few: the element edges are looked up among them, not the other way round.
+template <int D>
+void add_run_lines(Shipment<D>& s, const GammaMeshSlice<D>& slice, const SortedTags& tags) {
+  std::unordered_set<std::uint64_t> line_keys, found;
+  for (const auto& line : slice.lines) line_keys.insert(Mesh<D>::edge_key(line[0], line[1]));
+  if (line_keys.empty()) return;
+  for (const auto& element : s.elements)
+    for (int e = 0; e < Simplex<D>::kEdges; ++e)
+      if (const std::uint64_t key = Mesh<D>::edge_key(element[edge_vertices<D>(e)[0]], element[edge_vertices<D>(e)[1]]);
+          line_keys.count(key))
+        found.insert(key);
+  for (std::size_t l = 0; l < slice.lines.size(); ++l) {
+    if (!found.count(Mesh<D>::edge_key(slice.lines[l][0], slice.lines[l][1]))) continue;
+    s.lines.push_back(slice.lines[l]);
+    s.line_refs.push_back(slice.line_refs[l]);
+    const auto id = static_cast<Index>(l);
+    s.line_flags.push_back(
+        static_cast<char>((listed(tags.required_edges, id) ? kShippedRequired : 0) | (listed(tags.ridges, id) ? kShippedRidge : 0)));
+  }
+}
+
 // The run's own shipment: its elements (moved out of `slice`) with what the part needs around them.
 template <int D>
 Shipment<D> run_shipment(GammaMeshSlice<D>& slice, const std::vector<Index>& ids, const std::vector<VertexRecord<D>>& vertices,
@@ -262,20 +304,7 @@ Shipment<D> run_shipment(GammaMeshSlice<D>& slice, const std::vector<Index>& ids
     const bool ridge = D == 2 && listed(tags.ridges, facet.id);
     s.facet_flags.push_back(static_cast<char>((required ? kShippedRequired : 0) | (ridge ? kShippedRidge : 0)));
   }
-  if constexpr (D == 3) {
-    std::unordered_set<std::uint64_t> edges;
-    for (const auto& element : s.elements)
-      for (int e = 0; e < Simplex<D>::kEdges; ++e)
-        edges.insert(Mesh<D>::edge_key(element[edge_vertices<D>(e)[0]], element[edge_vertices<D>(e)[1]]));
-    for (std::size_t l = 0; l < slice.lines.size(); ++l) {
-      if (!edges.count(Mesh<D>::edge_key(slice.lines[l][0], slice.lines[l][1]))) continue;
-      s.lines.push_back(slice.lines[l]);
-      s.line_refs.push_back(slice.line_refs[l]);
-      const auto id = static_cast<Index>(l);
-      s.line_flags.push_back(
-          static_cast<char>((listed(tags.required_edges, id) ? kShippedRequired : 0) | (listed(tags.ridges, id) ? kShippedRidge : 0)));
-    }
-  }
+  if constexpr (D == 3) add_run_lines(s, slice, tags);
   return s;
 }
 

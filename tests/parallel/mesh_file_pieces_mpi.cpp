@@ -4,7 +4,8 @@
 // and .mesh. Every process then reads its piece of each file, and it must be, entity by entity by
 // global ids and with its elements in the same order, the part that migrate_part makes of the mesh
 // rank 0 reads whole when element k goes to the process whose run holds it; the binary and the
-// text file must give the same piece. Exit code 0 when all holds on every process, 1 otherwise.
+// text file must give the same piece; so again with the vertices renumbered across the file (a run's
+// elements then use ids from everywhere). Exit code 0 when all holds on every process, 1 otherwise.
 #include <unistd.h>
 #include <cstring>
 #include <filesystem>
@@ -62,6 +63,32 @@ Mesh<D> tagged_mesh(Mesh<D> mesh) {
   return mesh;
 }
 
+// The same mesh with its vertices renumbered v -> 7919 v mod n (a prime not dividing n): a run of
+// elements then uses vertex ids from all over the file.
+template <int D>
+Mesh<D> shuffled(const Mesh<D>& mesh) {
+  const Index n = mesh.vertex_count();
+  const auto moved = [n](Index v) { return static_cast<Index>(static_cast<std::int64_t>(v) * 7919 % n); };
+  std::vector<Index> old_of(static_cast<std::size_t>(n));
+  for (Index v = 0; v < n; ++v) old_of[moved(v)] = v;
+  Mesh<D> out;
+  for (Index v = 0; v < n; ++v) out.add_vertex(mesh.vertex(old_of[v]), mesh.vertex_ref(old_of[v]));
+  const auto renumbered = [&](auto ids) {
+    for (Index& v : ids) v = moved(v);
+    return ids;
+  };
+  for (Index k = 0; k < mesh.element_count(); ++k) out.add_element(renumbered(mesh.element(k)), mesh.element_ref(k));
+  for (Index f = 0; f < mesh.facet_count(); ++f) out.add_facet(renumbered(mesh.facet(f)), mesh.facet_ref(f));
+  for (Index l = 0; l < mesh.line_count(); ++l) out.add_line(renumbered(mesh.line(l)), mesh.line_ref(l));
+  for (Index v : mesh.corners()) out.corners().push_back(moved(v));
+  for (Index v : mesh.required_vertices()) out.required_vertices().push_back(moved(v));
+  out.ridges() = mesh.ridges();
+  out.required_edges() = mesh.required_edges();
+  out.required_triangles() = mesh.required_triangles();
+  out.build_topology();
+  return out;
+}
+
 // Rank 0's whole mesh read from `path`, migrated to the processes whose runs hold its elements.
 template <int D>
 MeshPart<D> expected_piece(const std::string& path) {
@@ -83,8 +110,7 @@ bool same_elements_in_order(const MeshPart<D>& got, const MeshPart<D>& expected,
 }
 
 template <int D>
-bool check(const Mesh<D>& mesh, const std::string& directory) {
-  const std::string name = D == 2 ? "square" : "cube";
+bool check(const Mesh<D>& mesh, const std::string& directory, const std::string& name) {
   const std::string binary = directory + "/" + name + ".meshb", text = directory + "/" + name + ".mesh";
   if (process_rank() == 0) {
     write_mesh_file(binary, mesh);
@@ -124,8 +150,11 @@ std::string shared_directory() {
 int main(int argc, char** argv) {
   return hocav::run_mpi_test(argc, argv, "mesh file pieces", [] {
     const std::string directory = hocav::shared_directory();
-    const bool ok = hocav::check(hocav::tagged_mesh(hocav::generate_square(12)), directory) &
-                    hocav::check(hocav::tagged_mesh(hocav::generate_cube(6)), directory);  // every process runs both
+    const hocav::Mesh<2> square = hocav::tagged_mesh(hocav::generate_square(12));
+    const hocav::Mesh<3> cube = hocav::tagged_mesh(hocav::generate_cube(6));
+    const bool ok = hocav::check(square, directory, "square") & hocav::check(cube, directory, "cube") &
+                    hocav::check(hocav::shuffled(square), directory, "shuffled-square") &
+                    hocav::check(hocav::shuffled(cube), directory, "shuffled-cube");  // every process runs all
     hocav::all_gather_value(0);
     if (hocav::process_rank() == 0) std::filesystem::remove_all(directory);
     return ok;
