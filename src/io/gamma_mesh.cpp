@@ -412,7 +412,11 @@ GammaMeshSlice<D> read_gamma_mesh_slice(const std::string& path, int index, int 
     if (index != 0) reader.silence_warnings();  // slice 0 warns for every slice
     return read_file(reader, slice);
   };
-  auto [dimension, records] = gamma::is_binary_file(path) ? read(gamma::BinaryKeywordReader(path)) : read(gamma::TextKeywordReader(path));
+  // (Not a structured binding: clang before 16 lets no lambda capture one.)
+  std::pair<int, MeshRecords> file = gamma::is_binary_file(path) ? read(gamma::BinaryKeywordReader(path))
+                                                                 : read(gamma::TextKeywordReader(path));
+  const int dimension = file.first;
+  MeshRecords& records = file.second;
   if (dimension != D) throw Error(path + ": Dimension: " + std::to_string(dimension) + ", not " + std::to_string(D));
   for (const auto& [code, table] : records.simplices)
     if (gamma::simplex_keyword(code)->order == 2 && !table.refs.empty())
