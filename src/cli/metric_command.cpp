@@ -7,7 +7,6 @@
 // P2 mid nodes get the analytic or interpolated field at the node, or the input's row there;
 // otherwise (and after gradation) the log-Euclidean mean of the metrics of their edge's two vertices.
 #include <algorithm>
-#include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -226,8 +225,9 @@ std::string write_implied_metric_in_pieces(const MetricOptions& options) {
   const MeshFilePiece<D> piece = read_mesh_file_piece<D>(options.mesh);
   const VertexRunMetrics<D> run = implied_metric_by_runs(piece.part, piece.vertex_count, options.mesh);
   write_solution_runs(options.output, rows_of_metrics(run.metrics), run.first, piece.vertex_count);
-  double complexity = 0;  // docs/method.md §10, as metric_complexity sums it
-  for (std::size_t v = 0; v < run.metrics.size(); ++v) complexity += run.measures[v] / (D + 1) * std::sqrt(determinant(run.metrics[v]));
+  std::vector<double> volumes;  // vertex_volumes' (to the last bits): each element's measure shared among its vertices
+  for (double measure : run.measures) volumes.push_back(measure / (D + 1));
+  const double complexity = metric_complexity<D>(volumes, run.metrics);
   std::ostringstream line;
   line << "wrote " << options.output << ": " << piece.vertex_count << " metrics, complexity " << sum_over_processes(complexity) << " ("
        << p1_mesh_summary(D, piece.vertex_count, piece.element_count, piece.facet_count) << ", read in " << process_count() << " pieces)\n";

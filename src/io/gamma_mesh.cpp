@@ -371,11 +371,11 @@ void write_records(Writer& out, const Mesh<D>& mesh, const std::string& path) {
   write_ids(gamma::kRequiredTriangles, mesh.required_triangles());
 }
 
-// The entities of a P1 simplex keyword as N file vertex ids each, checked against the file's
-// vertex count.
+// The entities of the P1 simplex keyword of N vertices, as file vertex ids, checked against the
+// file's vertex count.
 template <std::size_t N>
-std::vector<std::array<Index, N>> checked_entities(const NodeTable& table, Index vertex_count, int simplex_dimension,
-                                                   const std::string& path) {
+std::vector<std::array<Index, N>> checked_entities(const NodeTable& table, Index vertex_count, const std::string& path) {
+  const int simplex_dimension = static_cast<int>(N) - 1;
   std::vector<std::array<Index, N>> entities(table.refs.size());
   for (std::size_t k = 0; k < entities.size(); ++k)
     for (std::size_t i = 0; i < N; ++i) {
@@ -432,7 +432,7 @@ GammaMeshSlice<D> read_gamma_mesh_slice(const std::string& path, int index, int 
   out.point_refs = std::move(records.node_refs);
   auto take = [&]<std::size_t N>(std::vector<std::array<Index, N>>& entities, std::vector<int>& refs, Index& first, Index& total) {
     NodeTable& table = records.simplices[gamma::simplex_keyword(static_cast<int>(N) - 1, 1).code];
-    entities = checked_entities<N>(table, out.vertex_count, static_cast<int>(N) - 1, path);
+    entities = checked_entities<N>(table, out.vertex_count, path);
     refs = std::move(table.refs);
     first = table.first;
     total = table.total;

@@ -21,11 +21,16 @@ std::vector<double> vertex_volumes(const Mesh<D>& mesh) {
 }
 
 template <int D>
-double metric_complexity(const Mesh<D>& mesh, const std::vector<SymMat<D>>& metrics) {
-  std::vector<double> volumes = vertex_volumes(mesh);
+double metric_complexity(std::span<const double> volumes, std::span<const SymMat<D>> metrics) {
   double complexity = 0;
   for (std::size_t v = 0; v < volumes.size(); ++v) complexity += volumes[v] * std::sqrt(determinant(metrics[v]));
   return complexity;
+}
+
+template <int D>
+double metric_complexity(const Mesh<D>& mesh, const std::vector<SymMat<D>>& metrics) {
+  const std::vector<double> volumes = vertex_volumes(mesh);
+  return metric_complexity<D>(volumes, metrics);
 }
 
 template <int D>
@@ -63,6 +68,8 @@ std::vector<SymMat<D>> lp_metric(const Mesh<D>& mesh, const std::vector<SymMat<D
 
 template std::vector<double> vertex_volumes(const Mesh<2>&);
 template std::vector<double> vertex_volumes(const Mesh<3>&);
+template double metric_complexity<2>(std::span<const double>, std::span<const SymMat<2>>);
+template double metric_complexity<3>(std::span<const double>, std::span<const SymMat<3>>);
 template double metric_complexity(const Mesh<2>&, const std::vector<SymMat<2>>&);
 template double metric_complexity(const Mesh<3>&, const std::vector<SymMat<3>>&);
 template std::vector<SymMat<2>> lp_metric(const Mesh<2>&, const std::vector<SymMat<2>>&, const LpMetricOptions&);

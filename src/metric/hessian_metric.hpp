@@ -9,6 +9,7 @@
 // and with this rule the complexity ∫ sqrt(det M) of the result is N exactly (to round-off).
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "geom/sym_mat.hpp"
@@ -35,6 +36,11 @@ std::vector<double> vertex_volumes(const Mesh<D>& mesh);
 // constant factor of the element shape.
 template <int D>
 double metric_complexity(const Mesh<D>& mesh, const std::vector<SymMat<D>>& metrics);
+
+// The same sum for given vertex weights (vertex_volumes' of some vertices: one process's share of
+// a mesh read in pieces).
+template <int D>
+double metric_complexity(std::span<const double> volumes, std::span<const SymMat<D>> metrics);
 
 // One metric per vertex from one Hessian per vertex. Throws Error for invalid options or a mesh of
 // zero measure.

@@ -38,10 +38,7 @@ std::vector<SymMat<D>> implied_metric_at_vertices(const Mesh<D>& mesh) {
   std::vector<ImpliedShare<D>> sums(static_cast<std::size_t>(mesh.vertex_count()));
   for (Index k = 0; k < mesh.element_count(); ++k) {
     const ImpliedShare<D> share = implied_share(mesh, k, k + 1);
-    for (Index v : mesh.element(k)) {
-      sums[static_cast<std::size_t>(v)].weighted_log += share.weighted_log;
-      sums[static_cast<std::size_t>(v)].weight += share.weight;
-    }
+    for (Index v : mesh.element(k)) sums[static_cast<std::size_t>(v)] += share;
   }
   std::vector<SymMat<D>> metrics(sums.size());
   for (std::size_t v = 0; v < sums.size(); ++v) {

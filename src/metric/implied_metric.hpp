@@ -28,6 +28,13 @@ template <int D>
 struct ImpliedShare {
   double weight = 0;
   SymMat<D> weighted_log;
+
+  // A vertex's sum takes its elements' shares one by one (the order decides the last bits).
+  ImpliedShare& operator+=(const ImpliedShare& share) {
+    weighted_log += share.weighted_log;
+    weight += share.weight;
+    return *this;
+  }
 };
 
 template <int D>

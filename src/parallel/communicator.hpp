@@ -84,6 +84,23 @@ std::vector<std::vector<std::byte>> bytes_of_messages(const std::vector<std::vec
   return bytes;
 }
 
+// Every process at once: messages of values, as exchange_bytes sends them; what each process sent
+// this one, in rank order.
+template <typename T>
+std::vector<std::vector<T>> exchange_values(const std::vector<std::vector<T>>& outgoing) {
+  std::vector<std::vector<T>> arrived;
+  for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(outgoing))) arrived.push_back(values_of_bytes<T>(bytes));
+  return arrived;
+}
+
+// The same, what arrived put end to end in rank order.
+template <typename T>
+std::vector<T> exchange_values_joined(const std::vector<std::vector<T>>& outgoing) {
+  std::vector<T> joined;
+  for (const std::vector<T>& values : exchange_values(outgoing)) joined.insert(joined.end(), values.begin(), values.end());
+  return joined;
+}
+
 // Every process's `value`, in rank order, on every process.
 template <typename T>
 std::vector<T> all_gather_value(const T& value) {

@@ -28,8 +28,7 @@ std::unordered_map<FaceKey<D>, FaceSide<D>, FaceKeyHash<D>> sides_across(const s
   std::vector<std::vector<FaceSide<D>>> outgoing(static_cast<std::size_t>(process_count()));
   for (const FaceSide<D>& side : own) outgoing[meeting_process<D>(side.face, process_count())].push_back(side);
   std::unordered_map<FaceKey<D>, std::vector<FaceSide<D>>, FaceKeyHash<D>> met;
-  for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(outgoing)))
-    for (const FaceSide<D>& side : values_of_bytes<FaceSide<D>>(bytes)) met[side.face].push_back(side);
+  for (const FaceSide<D>& side : exchange_values_joined(outgoing)) met[side.face].push_back(side);
   std::vector<std::vector<FaceSide<D>>> answers(outgoing.size());
   for (const auto& [face, sides] : met) {
     if (sides.size() != 2) throw Error("distributed graph: an interface face has " + std::to_string(sides.size()) + " sides, not 2");
@@ -37,8 +36,7 @@ std::unordered_map<FaceKey<D>, FaceSide<D>, FaceKeyHash<D>> sides_across(const s
     answers[sides[1].process].push_back(sides[0]);
   }
   std::unordered_map<FaceKey<D>, FaceSide<D>, FaceKeyHash<D>> across;
-  for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(answers)))
-    for (const FaceSide<D>& side : values_of_bytes<FaceSide<D>>(bytes)) across.emplace(side.face, side);
+  for (const FaceSide<D>& side : exchange_values_joined(answers)) across.emplace(side.face, side);
   return across;
 }
 

@@ -44,12 +44,6 @@ ImpliedShare<D> share_of(const MeshPart<D>& piece, Index k, Index first_element,
   }
 }
 
-template <int D>
-void add(ImpliedShare<D>& sum, const ImpliedShare<D>& share) {
-  sum.weighted_log += share.weighted_log;
-  sum.weight += share.weight;
-}
-
 // Per process, the piece's sums of the vertices that process's run holds.
 template <int D>
 std::vector<std::vector<VertexSum<D>>> piece_sums(const MeshPart<D>& piece, Index vertex_count, Index first_element,
@@ -59,7 +53,7 @@ std::vector<std::vector<VertexSum<D>>> piece_sums(const MeshPart<D>& piece, Inde
   for (Index k = 0; k < piece.mesh.element_count(); ++k) {
     const ImpliedShare<D> share = share_of(piece, k, first_element, path);
     for (Index v : piece.mesh.element(k)) {
-      add(sums[v].sum, share);
+      sums[v].sum += share;
       ++sums[v].shares;
     }
   }
@@ -89,12 +83,7 @@ std::vector<ElementShare<D>> element_shares(const MeshPart<D>& piece, const std:
         outgoing[slice_holding(id, vertex_count, process_count())].push_back({id, first_element + k, share});
       }
   }
-  std::vector<ElementShare<D>> arrived;
-  for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(outgoing))) {
-    const std::vector<ElementShare<D>> shares = values_of_bytes<ElementShare<D>>(bytes);
-    arrived.insert(arrived.end(), shares.begin(), shares.end());
-  }
-  return arrived;
+  return exchange_values_joined(outgoing);
 }
 
 // What this process's run of vertices got from the pieces: per vertex the sum of its shares and the
@@ -110,9 +99,9 @@ template <int D>
 RunSums<D> run_sums(const MeshPart<D>& piece, Index first, std::size_t size, Index vertex_count, Index first_element,
                     const std::string& path) {
   RunSums<D> run{std::vector<ImpliedShare<D>>(size), std::vector<int>(size, 0), {}};
-  for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(piece_sums(piece, vertex_count, first_element, path)))) {
+  for (const std::vector<VertexSum<D>>& given : exchange_values(piece_sums(piece, vertex_count, first_element, path))) {
     run.given.emplace_back();
-    for (const VertexSum<D>& sum : values_of_bytes<VertexSum<D>>(bytes)) {
+    for (const VertexSum<D>& sum : given) {
       run.sums[sum.vertex - first] = sum.sum;
       ++run.pieces[sum.vertex - first];
       run.given.back().push_back(sum.vertex);
@@ -130,14 +119,12 @@ void sum_in_file_order(RunSums<D>& run, const MeshPart<D>& piece, Index first, I
   for (std::size_t p = 0; p < run.given.size(); ++p)
     for (Index vertex : run.given[p])
       if (run.pieces[vertex - first] > 1) ask[p].push_back(vertex);
-  std::vector<std::vector<Index>> asked;
-  for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(ask))) asked.push_back(values_of_bytes<Index>(bytes));
-  std::vector<ElementShare<D>> shares = element_shares(piece, asked, vertex_count, first_element, path);
+  std::vector<ElementShare<D>> shares = element_shares(piece, exchange_values(ask), vertex_count, first_element, path);
   std::sort(shares.begin(), shares.end(), [](const ElementShare<D>& a, const ElementShare<D>& b) {
     return a.vertex != b.vertex ? a.vertex < b.vertex : a.element < b.element;
   });
   for (const ElementShare<D>& share : shares) run.sums[share.vertex - first] = {};
-  for (const ElementShare<D>& share : shares) add(run.sums[share.vertex - first], share.share);
+  for (const ElementShare<D>& share : shares) run.sums[share.vertex - first] += share.share;
 }
 
 }  // namespace

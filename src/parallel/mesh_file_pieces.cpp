@@ -57,8 +57,7 @@ std::vector<char> facet_vertex_flags(const GammaMeshSlice<D>& slice) {
   for (const auto& facet : slice.facets)
     for (Index v : facet) outgoing[slice_holding(v, slice.vertex_count, process_count())].push_back(v);
   std::vector<char> flags(slice.points.size(), 0);
-  for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(outgoing)))
-    for (Index v : values_of_bytes<Index>(bytes)) flags[v - slice.first_vertex] = 1;
+  for (Index v : exchange_values_joined(outgoing)) flags[v - slice.first_vertex] = 1;
   return flags;
 }
 
@@ -69,19 +68,14 @@ std::vector<VertexRecord<D>> fetched_vertices(const GammaMeshSlice<D>& slice, co
   std::vector<std::vector<Index>> asked(static_cast<std::size_t>(process_count()));
   for (Index v : ids) asked[slice_holding(v, slice.vertex_count, process_count())].push_back(v);
   std::vector<std::vector<VertexRecord<D>>> answers;
-  for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(asked))) {
+  for (const std::vector<Index>& ids_asked : exchange_values(asked)) {
     answers.emplace_back();
-    for (Index v : values_of_bytes<Index>(bytes)) {
+    for (Index v : ids_asked) {
       const Index at = v - slice.first_vertex;
       answers.back().push_back({slice.points[at], slice.point_refs[at], on_facet[at]});
     }
   }
-  std::vector<VertexRecord<D>> vertices;  // in rank order: the order of `ids`, the runs being ascending
-  for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(answers))) {
-    const std::vector<VertexRecord<D>> records = values_of_bytes<VertexRecord<D>>(bytes);
-    vertices.insert(vertices.end(), records.begin(), records.end());
-  }
-  return vertices;
+  return exchange_values_joined(answers);  // in rank order: the order of `ids`, the runs being ascending
 }
 
 // The faces of a run's elements: which another element of the run has, and those to send where they
@@ -174,10 +168,9 @@ struct Meeting {
   std::unordered_map<FaceKey<D>, Sides, FaceKeyHash<D>> by_key;
   std::vector<std::vector<FaceRecord<D>>> arrived;  // per process
 
-  Meeting(const std::vector<std::vector<std::byte>>& messages, const std::string& path) {
-    for (const std::vector<std::byte>& bytes : messages) {
-      arrived.push_back(values_of_bytes<FaceRecord<D>>(bytes));
-      for (const FaceRecord<D>& face : arrived.back()) {
+  Meeting(std::vector<std::vector<FaceRecord<D>>> messages, const std::string& path) : arrived(std::move(messages)) {
+    for (const std::vector<FaceRecord<D>>& faces : arrived) {
+      for (const FaceRecord<D>& face : faces) {
         Sides& sides = by_key[face.key];
         sides.count += face.sides;
         sides.element = sides.count == face.sides ? face.element : std::min(sides.element, face.element);
@@ -214,26 +207,19 @@ Met<D> meet(const GammaMeshSlice<D>& slice, const RunFaces<D>& faces, const std:
   for (std::size_t f = 0; f < slice.facets.size(); ++f)
     facet_messages[meeting_process<D>(sorted_key<D>(slice.facets[f]), processes)].push_back(
         {slice.facets[f], slice.first_facet + static_cast<Index>(f), kNoIndex, slice.facet_refs[f]});
-  const Meeting<D> meeting(exchange_bytes(bytes_of_messages(face_messages)), path);
+  const Meeting<D> meeting(exchange_values(face_messages), path);
   std::vector<std::vector<FacetRecord<D>>> placed(face_messages.size());
-  for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(facet_messages)))
-    for (FacetRecord<D> facet : values_of_bytes<FacetRecord<D>>(bytes)) {
-      const auto sides = meeting.by_key.find(sorted_key<D>(facet.vertices));
-      if (sides == meeting.by_key.end())
-        throw Error(path + ": " + p1_keyword(D - 1) + ": entity " + std::to_string(facet.id + 1) + " is no face of the elements");
-      facet.element = sides->second.element;
-      placed[slice_holding(facet.element, slice.element_count, processes)].push_back(facet);
-    }
-  Met<D> met{std::vector<char>(faces.sent.size(), 0), {}};
-  const std::vector<std::vector<std::byte>> answers = exchange_bytes(bytes_of_messages(meeting.answers()));
-  for (std::size_t from = 0; from < answers.size(); ++from) {
-    const std::vector<char> across = values_of_bytes<char>(answers[from]);
-    for (std::size_t j = 0; j < across.size(); ++j) met.across[positions[from][j]] = across[j];
+  for (FacetRecord<D> facet : exchange_values_joined(facet_messages)) {
+    const auto sides = meeting.by_key.find(sorted_key<D>(facet.vertices));
+    if (sides == meeting.by_key.end())
+      throw Error(path + ": " + p1_keyword(D - 1) + ": entity " + std::to_string(facet.id + 1) + " is no face of the elements");
+    facet.element = sides->second.element;
+    placed[slice_holding(facet.element, slice.element_count, processes)].push_back(facet);
   }
-  for (const std::vector<std::byte>& bytes : exchange_bytes(bytes_of_messages(placed))) {
-    const std::vector<FacetRecord<D>> facets = values_of_bytes<FacetRecord<D>>(bytes);
-    met.facets.insert(met.facets.end(), facets.begin(), facets.end());
-  }
+  Met<D> met{std::vector<char>(faces.sent.size(), 0), exchange_values_joined(placed)};
+  const std::vector<std::vector<char>> answers = exchange_values(meeting.answers());
+  for (std::size_t from = 0; from < answers.size(); ++from)
+    for (std::size_t j = 0; j < answers[from].size(); ++j) met.across[positions[from][j]] = answers[from][j];
   std::sort(met.facets.begin(), met.facets.end(), [](const FacetRecord<D>& a, const FacetRecord<D>& b) { return a.id < b.id; });
   return met;
 }
