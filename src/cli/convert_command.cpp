@@ -2,6 +2,8 @@
 // Reads any supported mesh, writes it in the format of OUT's extension. A metric given with the
 // mesh is checked and carried to the output's node numbering; everything is validated before the
 // first byte is written, and the mesh and its metric replace their targets together or not at all.
+// Under mpirun a P1 Gamma mesh is read in pieces and written in runs (docs/distributed.md §Writing
+// in runs).
 #include <algorithm>
 #include <iostream>
 #include <memory>
@@ -10,9 +12,13 @@
 #include "base/error.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
+#include "io/gamma_mesh.hpp"
 #include "io/node_metrics.hpp"
 #include "io/output_set.hpp"
 #include "io/vtu_file.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/mesh_file_pieces.hpp"
+#include "parallel/mesh_file_runs.hpp"
 #include "report/curved_vtu.hpp"
 #include "report/mesh_summary.hpp"
 
@@ -78,6 +84,36 @@ void declare_convert_files(OutputSet& outputs, const ConvertOptions& options) {
     outputs.add_output(metric_output, "the output metric");
 }
 
+// Every process reads its piece of the mesh and writes it in runs: no process holds the whole mesh.
+// The output's vertices keep their numbers and its elements their order; its facets and feature
+// lines come part by part. Returns the summary line.
+template <int D>
+std::string convert_in_pieces(const ConvertOptions& options) {
+  const MeshFilePiece<D> piece = read_mesh_file_piece<D>(options.input);
+  const MeshFileCounts counts = write_mesh_runs(options.output, piece.part, file_extension(options.output) == ".meshb",
+                                                options.gamma_version);
+  return "wrote " + options.output + ": " + p1_mesh_summary(D, counts.vertices, counts.elements, counts.facets) + " (in " +
+         std::to_string(process_count()) + " pieces)\n";
+}
+
+void run_convert_in_pieces(const ConvertOptions& options) {
+  if (!options.metric.empty() || options.order == 2)
+    throw Error(
+        "under mpirun, hocav convert writes P1 Gamma meshes alone: no --metric, no --order 2 (docs/distributed.md §Writing in runs)");
+  for (const std::string& path : {options.input, options.output})
+    if (const std::string extension = file_extension(path); extension != ".mesh" && extension != ".meshb")
+      throw Error(path + ": under mpirun, hocav convert reads and writes Gamma meshes (.mesh, .meshb) in pieces, not '" + extension + "'");
+  std::optional<OutputSet> outputs;  // rank 0's, which checks the paths and writes the file's keywords
+  if (process_rank() == 0) {
+    outputs.emplace();
+    declare_convert_files(*outputs, options);
+  }
+  const std::string summary = gamma_mesh_dimension(options.input) == 2 ? convert_in_pieces<2>(options) : convert_in_pieces<3>(options);
+  if (!outputs) return;
+  outputs->commit();
+  std::cout << summary;
+}
+
 }  // namespace
 
 void add_convert_command(CLI::App& app) {
@@ -99,6 +135,7 @@ void add_convert_command(CLI::App& app) {
                    "version of binary .meshb/.solb output: 1-4 (default: 3, or 4 when counts need 64 bits)")
       ->check(CLI::Range(1, 4));
   command->callback([options] {
+    if (process_count() > 1) return run_convert_in_pieces(*options);
     OutputSet outputs;
     declare_convert_files(outputs, *options);
     MeshFileContent file = read_mesh_file(options->input);

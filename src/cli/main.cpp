@@ -14,11 +14,12 @@
 
 namespace {
 
-// Under mpirun with several processes only `adapt`, `curve` and `metric` (--implied) are distributed
-// (docs/distributed.md).
+// Under mpirun with several processes only `adapt`, `curve`, `metric` (--implied) and `convert` (of
+// Gamma meshes) are distributed (docs/distributed.md).
 bool runs_on_several_processes(int argc, char** argv) {
-  return argc > 1 &&
-         (std::string_view(argv[1]) == "adapt" || std::string_view(argv[1]) == "curve" || std::string_view(argv[1]) == "metric");
+  if (argc < 2) return false;
+  const std::string_view command = argv[1];
+  return command == "adapt" || command == "curve" || command == "metric" || command == "convert";
 }
 
 // The message of an error on one of several processes, before they all stop.
@@ -42,7 +43,8 @@ int main(int argc, char** argv) {
   hocav::MpiSession mpi(argc, argv);
   if (hocav::process_count() > 1 && !runs_on_several_processes(argc, argv)) {
     if (hocav::process_rank() == 0)
-      std::cerr << "hocav: only `hocav adapt`, `hocav curve` and `hocav metric --implied` run on several processes (docs/distributed.md)\n";
+      std::cerr << "hocav: only `hocav adapt`, `hocav curve`, `hocav metric --implied` and `hocav convert` run on several processes "
+                   "(docs/distributed.md)\n";
     return kFailure;
   }
   std::signal(SIGXFSZ, SIG_IGN);  // a file-size limit (ulimit -f) is a write error, reported and cleaned up, not a kill

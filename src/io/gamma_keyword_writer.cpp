@@ -34,129 +34,155 @@ int resolve_version(const std::string& path, int requested, std::int64_t largest
   return requested;
 }
 
-// ---- ASCII ----
+// ---- records ----
 
-TextKeywordWriter::TextKeywordWriter(const std::string& path, int version, int dimension) : out_(path) {
-  // Appended piece by piece: GCC 12 sees a false -Wrestrict in chains of string operator+.
-  buffer_ += keyword_name(kMeshVersionFormatted);
-  buffer_ += ' ';
-  append_number(buffer_, version);
-  end_record();
-  buffer_ += '\n';
-  buffer_ += keyword_name(kDimension);
-  buffer_ += ' ';
-  append_number(buffer_, dimension);
-  end_record();
+void TextRecords::write_integer(std::int64_t value) { append_number(bytes, value); }
+
+void TextRecords::write_real(double value) { append_number(bytes, value); }
+
+void TextRecords::end_record() {
+  if (!bytes.empty() && bytes.back() == ' ') bytes.back() = '\n';
 }
 
-void TextKeywordWriter::begin_keyword(int code, std::int64_t count, int, int, std::span<const int> header) {
-  buffer_ += '\n';
-  buffer_ += keyword_name(code);
-  buffer_ += '\n';
-  append_number(buffer_, count);
-  end_record();
-  if (header.empty()) return;
-  for (int value : header) append_number(buffer_, value);
-  end_record();
-}
-
-void TextKeywordWriter::write_integer(std::int64_t value) { append_number(buffer_, value); }
-
-void TextKeywordWriter::write_real(double value) { append_number(buffer_, value); }
-
-void TextKeywordWriter::end_record() {
-  if (!buffer_.empty() && buffer_.back() == ' ') buffer_.back() = '\n';
-  if (buffer_.size() >= kFlushBytes) flush();
-}
-
-void TextKeywordWriter::finish() {
-  buffer_ += '\n';
-  buffer_ += keyword_name(kEnd);
-  buffer_ += '\n';
-  flush();
-  out_.commit();
-}
-
-void TextKeywordWriter::flush() {
-  out_.stream().write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
-  buffer_.clear();
-}
-
-// ---- binary ----
-
-BinaryKeywordWriter::BinaryKeywordWriter(const std::string& path, int version, int dimension) : out_(path), path_(path), version_(version) {
-  put<std::int32_t>(1);  // endianness code
-  put<std::int32_t>(version);
-  put<std::int32_t>(kDimension);
-  block_end_ = offset_ + (version_ >= 3 ? 8 : 4) + 4;
-  put_position(block_end_);
-  put<std::int32_t>(dimension);
-}
-
-void BinaryKeywordWriter::begin_keyword(int code, std::int64_t count, int integers, int reals, std::span<const int> header) {
-  check_block_complete();
-  const std::uint64_t record_bytes = static_cast<std::uint64_t>(integers) * (version_ >= 4 ? 8 : 4) +
-                                     static_cast<std::uint64_t>(reals) * (version_ == 1 ? 4 : 8);
-  const std::uint64_t header_bytes = 4 + (version_ >= 3 ? 8 : 4) + (version_ >= 4 ? 8 : 4) + 4 * header.size();
-  block_end_ = offset_ + header_bytes + record_bytes * static_cast<std::uint64_t>(count);
-  if (version_ <= 2 && block_end_ > static_cast<std::uint64_t>(kInt32Max))
-    throw Error(path_ + ": " + keyword_name(code) + ": the file outgrows the 2 GiB reach of Gamma version " + std::to_string(version_) +
-                " (use version 3)");
-  put<std::int32_t>(code);
-  put_position(block_end_);
-  if (version_ >= 4)
-    put<std::int64_t>(count);
-  else
-    put<std::int32_t>(static_cast<std::int32_t>(count));
-  for (int value : header) put<std::int32_t>(value);  // solution type codes stay 32-bit in every version
-}
-
-void BinaryKeywordWriter::write_integer(std::int64_t value) {
+void BinaryRecords::write_integer(std::int64_t value) {
   if (version_ >= 4) return put<std::int64_t>(value);
   if (value > kInt32Max || value < std::numeric_limits<std::int32_t>::min())
     throw Error(path_ + ": integer " + std::to_string(value) + " does not fit Gamma version " + std::to_string(version_));
   put<std::int32_t>(static_cast<std::int32_t>(value));
 }
 
-void BinaryKeywordWriter::write_real(double value) {
+void BinaryRecords::write_real(double value) {
   if (version_ >= 2) return put<double>(value);
   auto single = static_cast<float>(value);
   if (!std::isfinite(single)) throw Error(path_ + ": value " + std::to_string(value) + " exceeds the 32-bit reals of Gamma version 1");
   put<float>(single);
 }
 
+// ---- ASCII ----
+
+TextKeywordWriter::TextKeywordWriter(const std::string& path, int version, int dimension) : out_(path) {
+  // Appended piece by piece: GCC 12 sees a false -Wrestrict in chains of string operator+.
+  std::string& text = records_.bytes;
+  text += keyword_name(kMeshVersionFormatted);
+  text += ' ';
+  append_number(text, version);
+  end_record();
+  text += '\n';
+  text += keyword_name(kDimension);
+  text += ' ';
+  append_number(text, dimension);
+  end_record();
+}
+
+void TextKeywordWriter::begin_keyword(int code, std::int64_t count, int, int, std::span<const int> header) {
+  std::string& text = records_.bytes;
+  text += '\n';
+  text += keyword_name(code);
+  text += '\n';
+  append_number(text, count);
+  end_record();
+  if (header.empty()) return;
+  for (int value : header) append_number(text, value);
+  end_record();
+}
+
+void TextKeywordWriter::write_integer(std::int64_t value) { records_.write_integer(value); }
+
+void TextKeywordWriter::write_real(double value) { records_.write_real(value); }
+
+void TextKeywordWriter::end_record() {
+  records_.end_record();
+  if (records_.bytes.size() >= kFlushBytes) flush();
+}
+
+void TextKeywordWriter::finish() {
+  records_.bytes += '\n';
+  records_.bytes += keyword_name(kEnd);
+  records_.bytes += '\n';
+  flush();
+  out_.commit();
+}
+
+void TextKeywordWriter::leave_records(std::uint64_t bytes) {
+  flush();
+  flushed_ += bytes;
+  out_.stream().seekp(static_cast<std::streamoff>(flushed_));
+}
+
+void TextKeywordWriter::flush() {
+  out_.stream().write(records_.bytes.data(), static_cast<std::streamsize>(records_.bytes.size()));
+  flushed_ += records_.bytes.size();
+  records_.bytes.clear();
+}
+
+// ---- binary ----
+
+BinaryKeywordWriter::BinaryKeywordWriter(const std::string& path, int version, int dimension) : out_(path), records_(path, version) {
+  records_.put<std::int32_t>(1);  // endianness code
+  records_.put<std::int32_t>(version);
+  records_.put<std::int32_t>(kDimension);
+  block_end_ = position() + (version >= 3 ? 8 : 4) + 4;
+  put_position(block_end_);
+  records_.put<std::int32_t>(dimension);
+}
+
+void BinaryKeywordWriter::begin_keyword(int code, std::int64_t count, int integers, int reals, std::span<const int> header) {
+  check_block_complete();
+  const int version = records_.version();
+  const std::uint64_t record_bytes = static_cast<std::uint64_t>(integers) * (version >= 4 ? 8 : 4) +
+                                     static_cast<std::uint64_t>(reals) * (version == 1 ? 4 : 8);
+  const std::uint64_t header_bytes = 4 + (version >= 3 ? 8 : 4) + (version >= 4 ? 8 : 4) + 4 * header.size();
+  block_end_ = position() + header_bytes + record_bytes * static_cast<std::uint64_t>(count);
+  if (version <= 2 && block_end_ > static_cast<std::uint64_t>(kInt32Max))
+    throw Error(records_.path() + ": " + keyword_name(code) + ": the file outgrows the 2 GiB reach of Gamma version " +
+                std::to_string(version) + " (use version 3)");
+  records_.put<std::int32_t>(code);
+  put_position(block_end_);
+  if (version >= 4)
+    records_.put<std::int64_t>(count);
+  else
+    records_.put<std::int32_t>(static_cast<std::int32_t>(count));
+  for (int value : header) records_.put<std::int32_t>(value);  // solution type codes stay 32-bit in every version
+}
+
+void BinaryKeywordWriter::write_integer(std::int64_t value) { records_.write_integer(value); }
+
+void BinaryKeywordWriter::write_real(double value) { records_.write_real(value); }
+
 void BinaryKeywordWriter::end_record() {
-  if (buffer_.size() >= kFlushBytes) flush();
+  if (records_.bytes.size() >= kFlushBytes) flush();
 }
 
 void BinaryKeywordWriter::finish() {
   check_block_complete();
-  put<std::int32_t>(kEnd);
+  records_.put<std::int32_t>(kEnd);
   put_position(0);
   flush();
   out_.commit();
 }
 
-void BinaryKeywordWriter::leave_records() {
+void BinaryKeywordWriter::leave_records(std::uint64_t bytes) {
+  if (position() + bytes != block_end_) throw std::logic_error("Gamma binary hole of a size other than announced");
   flush();
+  flushed_ = block_end_;
   out_.stream().seekp(static_cast<std::streamoff>(block_end_));
-  offset_ = block_end_;
 }
 
 void BinaryKeywordWriter::put_position(std::uint64_t position) {
-  if (version_ >= 3)
-    put<std::int64_t>(static_cast<std::int64_t>(position));
+  if (records_.version() >= 3)
+    records_.put<std::int64_t>(static_cast<std::int64_t>(position));
   else
-    put<std::int32_t>(static_cast<std::int32_t>(position));
+    records_.put<std::int32_t>(static_cast<std::int32_t>(position));
 }
 
 void BinaryKeywordWriter::check_block_complete() const {
-  if (offset_ != block_end_) throw std::logic_error("Gamma binary block written with a size other than announced");
+  if (position() != block_end_) throw std::logic_error("Gamma binary block written with a size other than announced");
 }
 
 void BinaryKeywordWriter::flush() {
-  out_.stream().write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
-  buffer_.clear();
+  out_.stream().write(records_.bytes.data(), static_cast<std::streamsize>(records_.bytes.size()));
+  flushed_ += records_.bytes.size();
+  records_.bytes.clear();
 }
 
 }  // namespace hocav::gamma

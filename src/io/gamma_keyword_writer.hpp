@@ -5,18 +5,54 @@
 //       (the solution type codes)
 //   write_integer(v), write_real(v), end_record()
 //   finish()  writes End and renames the temporary file into place; without it nothing appears.
-//   (binary only) position(), leave_records(): where the records start, and a hole left for them
+//   position(), leave_records(bytes): where the records start, and a hole left for them (other
+//       writers fill it in place: a distributed run's processes, each its records)
 // ASCII reals are written in the shortest form that reads back to the same double. Binary NextPos
-// values are computed from the announced sizes, so the output streams without seeking.
+// values are computed from the announced sizes, so the output streams without seeking. The records
+// themselves are encoded by TextRecords and BinaryRecords, which also encode them into memory.
 #pragma once
 
 #include <cstdint>
 #include <span>
 #include <string>
+#include <utility>
 
 #include "io/atomic_output.hpp"
 
 namespace hocav::gamma {
+
+// Records as a .mesh writes them (integers, then reals, separated by spaces, one record per line),
+// appended to `bytes`.
+struct TextRecords {
+  std::string bytes;
+
+  void write_integer(std::int64_t value);
+  void write_real(double value);
+  void end_record();
+};
+
+// Records as a .meshb of `version` (1-4) writes them, appended to `bytes`. Throws Error (naming
+// `path`) for a value the version cannot hold.
+class BinaryRecords {
+ public:
+  BinaryRecords(std::string path, int version) : path_(std::move(path)), version_(version) {}
+
+  std::string bytes;
+
+  void write_integer(std::int64_t value);
+  void write_real(double value);
+  void end_record() {}
+  template <class Word>
+  void put(Word value) {
+    bytes.append(reinterpret_cast<const char*>(&value), sizeof value);
+  }
+  const std::string& path() const { return path_; }
+  int version() const { return version_; }
+
+ private:
+  std::string path_;
+  int version_;
+};
 
 class TextKeywordWriter {
  public:
@@ -27,12 +63,17 @@ class TextKeywordWriter {
   void write_real(double value);
   void end_record();
   void finish();
+  // The bytes written so far (the offset of the next).
+  std::uint64_t position() const { return flushed_ + records_.bytes.size(); }
+  // Leaves `bytes` unwritten, a hole for the open keyword's records.
+  void leave_records(std::uint64_t bytes);
 
  private:
   void flush();
 
   AtomicOutput out_;
-  std::string buffer_;
+  TextRecords records_;
+  std::uint64_t flushed_ = 0;
 };
 
 class BinaryKeywordWriter {
@@ -46,26 +87,19 @@ class BinaryKeywordWriter {
   void end_record();
   void finish();
   // The bytes written so far (the offset of the next).
-  std::uint64_t position() const { return offset_; }
+  std::uint64_t position() const { return flushed_ + records_.bytes.size(); }
   // Leaves the open keyword's records unwritten, a hole in the file for other writers to fill in
-  // place (a distributed run's processes, each its rows).
-  void leave_records();
+  // place (a distributed run's processes, each its records); `bytes` must be the announced size.
+  void leave_records(std::uint64_t bytes);
 
  private:
-  template <class Word>
-  void put(Word value) {
-    buffer_.append(reinterpret_cast<const char*>(&value), sizeof value);
-    offset_ += sizeof value;
-  }
   void put_position(std::uint64_t position);
   void check_block_complete() const;
   void flush();
 
   AtomicOutput out_;
-  std::string path_;
-  int version_;
-  std::string buffer_;
-  std::uint64_t offset_ = 0;     // bytes written so far, buffered ones included
+  BinaryRecords records_;
+  std::uint64_t flushed_ = 0;    // bytes written to the file so far
   std::uint64_t block_end_ = 0;  // the NextPos announced for the open block
 };
 

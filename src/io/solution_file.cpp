@@ -143,7 +143,7 @@ SolutionRowsLayout write_solution_skeleton(const std::string& path, int dimensio
   gamma::BinaryKeywordWriter out(path, gamma::resolve_version(path, 0, count, 3), dimension);
   out.begin_keyword(gamma::kSolAtVertices, count, 0, reals_per_row, header);
   const SolutionRowsLayout layout{out.position(), static_cast<std::uint64_t>(reals_per_row) * sizeof(double)};  // version 3 or 4
-  out.leave_records();
+  out.leave_records(layout.row_bytes * static_cast<std::uint64_t>(count));
   out.finish();
   return layout;
 }

@@ -53,9 +53,33 @@ def check_same_refs(figures, serial, name):
             f"{name}: {key} {figures[key]} vs {serial[key]}"
 
 
+def refused(mpirun, hocav, work, args, output, words):
+    """`mpirun -np 2 hocav ARGS` must fail with exit 2 and `words` in its message, and leave `output` unwritten."""
+    result = subprocess.run(mpirun + ["-np", "2", hocav] + args, cwd=work, capture_output=True, text=True, check=False)
+    assert result.returncode == 2, f"{args}: exit {result.returncode}"
+    assert words in result.stderr, f"{args}: {result.stderr}"
+    assert not os.path.exists(os.path.join(work, output)), f"{args}: {output} was written"
+
+
 def same_bytes(work, a, b):
     with open(os.path.join(work, a), "rb") as one, open(os.path.join(work, b), "rb") as other:
         return one.read() == other.read()
+
+
+# Meshes the tests of reading in pieces generate, as (file, `hocav generate` arguments): a cube, a
+# layered shell (a text .mesh) and a 2D annulus, and, when hocav has gmsh, gmsh's unstructured shell
+# and annulus (in gmsh's order of elements).
+PIECES_CASES = [
+    ("cube.meshb", ["cube", "--h", "0.15"]),
+    ("layers.mesh", ["cubed-shell-bl-inner", "--target-tets", "6000"]),
+    ("annulus.meshb", ["polar-annulus-bl-inner", "--target-triangles", "2000"]),
+]
+PIECES_GMSH_CASES = [("shell.mesh", ["sphere-shell", "--h", "0.15"]), ("gmsh-annulus.meshb", ["annulus", "--h", "0.08"])]
+
+
+def pieces_cases():
+    with_gmsh = os.environ.get("HOCAV_WITH_GMSH", "0") in ("1", "ON", "TRUE")
+    return PIECES_CASES + (PIECES_GMSH_CASES if with_gmsh else [])
 
 
 def distributed_test(check):

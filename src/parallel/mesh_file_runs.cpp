@@ -1,0 +1,461 @@
+#include "parallel/mesh_file_runs.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <fstream>
+
+#include "base/error.hpp"
+#include "io/gamma_keyword_writer.hpp"
+#include "io/gamma_keywords.hpp"
+#include "io/gamma_mesh.hpp"
+#include "io/output_set.hpp"
+#include "mesh/simplex.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/entity_tags.hpp"
+#include "parallel/face_key.hpp"
+
+namespace hocav {
+namespace {
+
+constexpr char kCornerFlag = 1, kRequiredFlag = 2, kRidgeFlag = 4;
+
+// A vertex on its way to the process of its run of global ids.
+template <int D>
+struct VertexRecord {
+  Index id;
+  Vec<D> point;
+  int ref;
+  char flags;  // kCornerFlag, kRequiredFlag
+};
+
+// What that process answers: the vertex's file number (from 0), and whether another part holds it.
+struct VertexNumber {
+  Index number;
+  std::int32_t shared;
+};
+
+// An edge (P2 node) or a feature line that several parts may hold, on its way to the process its
+// ends' global ids hash to.
+template <int D>
+struct SharedEdge {
+  FaceKey<2> key;             // the sorted global ids of its ends
+  std::array<Index, 2> ends;  // a line's ends by file number, in its order
+  Vec<D> node;                // an edge's P2 node
+  Index node_number;          // a P2 line's node, by file number
+  int ref;                    // a line's
+  char flags;                 // a line's kRidgeFlag, kRequiredFlag
+};
+
+// Where an arrived record lies: its sender and its place in the sender's message.
+struct Arrival {
+  int from;
+  std::size_t at;
+};
+
+// The records that arrived, grouped by key: `order` sorted by key, rank order within a key, and
+// group g is order[starts[g], starts[g + 1]).
+struct ArrivalGroups {
+  std::vector<Arrival> order;
+  std::vector<std::size_t> starts;
+  std::size_t count() const { return starts.size() - 1; }
+};
+
+template <class Record, class KeyOf>
+ArrivalGroups grouped(const std::vector<std::vector<Record>>& arrived, KeyOf key_of) {
+  ArrivalGroups groups;
+  for (std::size_t from = 0; from < arrived.size(); ++from)
+    for (std::size_t at = 0; at < arrived[from].size(); ++at) groups.order.push_back({static_cast<int>(from), at});
+  const auto key = [&](const Arrival& a) { return key_of(arrived[static_cast<std::size_t>(a.from)][a.at]); };
+  std::stable_sort(groups.order.begin(), groups.order.end(), [&](const Arrival& a, const Arrival& b) { return key(a) < key(b); });
+  for (std::size_t i = 0; i < groups.order.size(); ++i)
+    if (i == 0 || key(groups.order[i - 1]) < key(groups.order[i])) groups.starts.push_back(i);
+  groups.starts.push_back(groups.order.size());
+  return groups;
+}
+
+// Empty answers shaped as the messages that arrived, one per record.
+template <class Answer, class Record>
+std::vector<std::vector<Answer>> answers_for(const std::vector<std::vector<Record>>& arrived) {
+  std::vector<std::vector<Answer>> answers(arrived.size());
+  for (std::size_t from = 0; from < arrived.size(); ++from) answers[from].resize(arrived[from].size());
+  return answers;
+}
+
+// The number of entities the processes before this one count, and the sum over all.
+struct Offset {
+  Index before = 0, total = 0;
+};
+
+Offset offset_of(Index count) {
+  Offset offset;
+  const std::vector<Index> counts = all_gather_value(count);
+  for (int r = 0; r < process_count(); ++r) {
+    if (r < process_rank()) offset.before += counts[static_cast<std::size_t>(r)];
+    offset.total += counts[static_cast<std::size_t>(r)];
+  }
+  return offset;
+}
+
+// One process's records of one keyword, encoded as the file's format writes them.
+class ChunkRecords {
+ public:
+  ChunkRecords(const std::string& path, bool binary, int version) : binary_(binary), binary_records_(path, version) {}
+
+  void write_integer(std::int64_t value) { binary_ ? binary_records_.write_integer(value) : text_records_.write_integer(value); }
+  void write_real(double value) { binary_ ? binary_records_.write_real(value) : text_records_.write_real(value); }
+  void end_record() {
+    text_records_.end_record();
+    ++records_;
+  }
+  std::int64_t records() const { return records_; }
+  const std::string& bytes() const { return binary_ ? binary_records_.bytes : text_records_.bytes; }
+
+ private:
+  bool binary_;
+  gamma::BinaryRecords binary_records_;
+  gamma::TextRecords text_records_;
+  std::int64_t records_ = 0;
+};
+
+// A keyword of the file: its records, rank after rank in each of its runs (the vertices' keyword
+// has two: the vertices, then a P2 file's nodes).
+struct Keyword {
+  int code, integers, reals;
+  std::vector<const ChunkRecords*> runs;
+};
+
+template <int D>
+class RunsWriter {
+ public:
+  RunsWriter(const std::string& path, const MeshPart<D>& part, bool binary) : path_(path), part_(part), mesh_(part.mesh), binary_(binary) {
+    if (part.global_ids.size() != static_cast<std::size_t>(mesh_.vertex_count()) ||
+        part.pinned.size() != static_cast<std::size_t>(mesh_.vertex_count()) || !mesh_.is_compact())
+      throw std::logic_error("write_mesh_runs: a part without global ids or pinned flags, or not compact");
+  }
+
+  MeshFileCounts write(int requested_version) {
+    number_vertices();
+    const bool p2 = sum_over_processes(static_cast<int>(mesh_.is_p2())) > 0;
+    if (p2) number_nodes();
+    version_ = gamma::resolve_version(path_, requested_version, std::int64_t{counts_.vertices} + counts_.nodes, binary_ ? 3 : 2);
+    const int order = p2 ? 2 : 1;
+    encode_vertices();
+    if (p2) encode_nodes();
+    if constexpr (D == 3) encode_lines();
+    encode_facets();
+    encode_elements();
+    std::vector<Keyword> keywords{{gamma::kVertices, 1, D, {&vertices_, &nodes_}}};
+    if constexpr (D == 3) keywords.push_back(simplex_keyword(1, order, lines_));
+    keywords.push_back(simplex_keyword(D - 1, order, facets_));
+    keywords.push_back(simplex_keyword(D, order, elements_));
+    for (const auto& [code, records] : {std::pair{gamma::kCorners, &corners_},
+                                        {gamma::kRidges, &ridges_},
+                                        {gamma::kRequiredVertices, &required_vertices_},
+                                        {gamma::kRequiredEdges, &required_edges_},
+                                        {gamma::kRequiredTriangles, &required_triangles_}})
+      keywords.push_back({code, 1, 0, {records}});
+    write_keywords(keywords);
+    return counts_;
+  }
+
+ private:
+  ChunkRecords records() const { return {path_, binary_, version_}; }
+
+  static Keyword simplex_keyword(int simplex_dimension, int order, const ChunkRecords& records) {
+    const gamma::SimplexKeyword& keyword = gamma::simplex_keyword(simplex_dimension, order);
+    return {keyword.code, keyword.node_count + 1, 0, {&records}};
+  }
+
+  // Every vertex to the process of its run of global ids, which numbers the vertices it gets in id
+  // order (after the runs before it) and answers each part its numbers.
+  void number_vertices() {
+    Index id_space = 0;
+    for (Index most :
+         all_gather_value(part_.global_ids.empty() ? Index{0} : *std::max_element(part_.global_ids.begin(), part_.global_ids.end()) + 1))
+      id_space = std::max(id_space, most);
+    const EntityTags<D> tags(mesh_);
+    std::vector<std::vector<VertexRecord<D>>> outgoing(static_cast<std::size_t>(process_count()));
+    std::vector<std::vector<Index>> sent(outgoing.size());  // the part's vertices, as sent to each process
+    for (Index v = 0; v < mesh_.vertex_count(); ++v) {
+      const auto run = static_cast<std::size_t>(slice_holding(part_.global_ids[v], id_space, process_count()));
+      const char flags = static_cast<char>((tags.corner[v] ? kCornerFlag : 0) | ((part_.pinned[v] & kPinnedByMesh) ? kRequiredFlag : 0));
+      outgoing[run].push_back({part_.global_ids[v], mesh_.vertex(v), mesh_.vertex_ref(v), flags});
+      sent[run].push_back(v);
+    }
+    const std::vector<std::vector<VertexRecord<D>>> arrived = exchange_values(outgoing);
+    const ArrivalGroups groups = grouped(arrived, [](const VertexRecord<D>& r) { return r.id; });
+    const Offset offset = offset_of(static_cast<Index>(groups.count()));
+    counts_.vertices = offset.total;
+    std::vector<std::vector<VertexNumber>> answers = answers_for<VertexNumber>(arrived);
+    for (std::size_t g = 0; g < groups.count(); ++g) {
+      const Arrival first = groups.order[groups.starts[g]];
+      VertexRecord<D> row = arrived[static_cast<std::size_t>(first.from)][first.at];
+      for (std::size_t i = groups.starts[g]; i < groups.starts[g + 1]; ++i) {
+        const VertexRecord<D>& other = arrived[static_cast<std::size_t>(groups.order[i].from)][groups.order[i].at];
+        if (!(other.point == row.point))
+          throw Error(path_ + ": vertex " + std::to_string(row.id + 1) + " has different points in two parts of the distributed mesh");
+        row.flags = static_cast<char>(row.flags | other.flags);
+        answers[static_cast<std::size_t>(groups.order[i].from)][groups.order[i].at] = {offset.before + static_cast<Index>(g),
+                                                                                       groups.starts[g + 1] - groups.starts[g] > 1};
+      }
+      vertex_rows_.push_back(row);
+    }
+    number_.assign(static_cast<std::size_t>(mesh_.vertex_count()), kNoIndex);
+    shared_.assign(number_.size(), 0);
+    const std::vector<std::vector<VertexNumber>> numbers = exchange_values(answers);
+    for (std::size_t run = 0; run < sent.size(); ++run)
+      for (std::size_t i = 0; i < sent[run].size(); ++i) {
+        number_[sent[run][i]] = numbers[run].at(i).number;
+        shared_[sent[run][i]] = static_cast<char>(numbers[run].at(i).shared);
+      }
+  }
+
+  bool shared_edge(Index a, Index b) const { return shared_[a] && shared_[b]; }
+  FaceKey<2> edge_key(Index a, Index b) const { return sorted_key<2>({part_.global_ids[a], part_.global_ids[b]}); }
+
+  // A P2 mesh's nodes: an edge with both ends shared may lie in several parts, and goes to the
+  // process its ends hash to, which numbers it once (after that process's other edges); every other
+  // edge is its part's own.
+  void number_nodes() {
+    std::vector<std::vector<SharedEdge<D>>> outgoing(static_cast<std::size_t>(process_count()));
+    std::vector<std::vector<Index>> sent(outgoing.size());
+    Index own = 0;
+    for (Index e = 0; e < mesh_.edge_count(); ++e) {
+      const auto [a, b] = mesh_.edge_vertices(e);
+      if (!shared_edge(a, b)) {
+        ++own;
+        continue;
+      }
+      const FaceKey<2> key = edge_key(a, b);
+      const auto to = static_cast<std::size_t>(meeting_process<2>(key, process_count()));
+      outgoing[to].push_back({key, {}, mesh_.edge_node(e), kNoIndex, 0, 0});
+      sent[to].push_back(e);
+    }
+    const std::vector<std::vector<SharedEdge<D>>> arrived = exchange_values(outgoing);
+    const ArrivalGroups groups = grouped(arrived, [](const SharedEdge<D>& r) { return r.key; });
+    const Offset offset = offset_of(own + static_cast<Index>(groups.count()));
+    counts_.nodes = offset.total;
+    const Index first = counts_.vertices + offset.before;  // this process's first node
+    node_number_.assign(static_cast<std::size_t>(mesh_.edge_count()), kNoIndex);
+    Index next = first;
+    for (Index e = 0; e < mesh_.edge_count(); ++e)
+      if (const auto [a, b] = mesh_.edge_vertices(e); !shared_edge(a, b)) node_number_[e] = next++;
+    std::vector<std::vector<Index>> answers = answers_for<Index>(arrived);
+    for (std::size_t g = 0; g < groups.count(); ++g) {
+      const Arrival head = groups.order[groups.starts[g]];
+      const SharedEdge<D>& edge = arrived[static_cast<std::size_t>(head.from)][head.at];
+      for (std::size_t i = groups.starts[g]; i < groups.starts[g + 1]; ++i) {
+        const SharedEdge<D>& other = arrived[static_cast<std::size_t>(groups.order[i].from)][groups.order[i].at];
+        if (!(other.node == edge.node))
+          throw Error(path_ + ": edge (" + std::to_string(edge.key[0] + 1) + ", " + std::to_string(edge.key[1] + 1) +
+                      ") has different P2 nodes in two parts of the distributed mesh");
+        answers[static_cast<std::size_t>(groups.order[i].from)][groups.order[i].at] = next;
+      }
+      shared_nodes_.push_back(edge.node);
+      ++next;
+    }
+    const std::vector<std::vector<Index>> numbers = exchange_values(answers);
+    for (std::size_t to = 0; to < sent.size(); ++to)
+      for (std::size_t i = 0; i < sent[to].size(); ++i) node_number_[sent[to][i]] = numbers[to].at(i);
+  }
+
+  void write_point(ChunkRecords& out, const Vec<D>& point, int ref) const {
+    for (int i = 0; i < D; ++i) out.write_real(point[i]);
+    out.write_integer(ref);
+    out.end_record();
+  }
+
+  void encode_vertices() {
+    vertices_ = corners_ = required_vertices_ = records();
+    for (const VertexRecord<D>& row : vertex_rows_) write_point(vertices_, row.point, row.ref);
+    Index next = offset_of(static_cast<Index>(vertex_rows_.size())).before;
+    for (const VertexRecord<D>& row : vertex_rows_) {
+      if (row.flags & kCornerFlag) write_id(corners_, next);
+      if (row.flags & kRequiredFlag) write_id(required_vertices_, next);
+      ++next;
+    }
+  }
+
+  void encode_nodes() {
+    nodes_ = records();
+    for (Index e = 0; e < mesh_.edge_count(); ++e)
+      if (const auto [a, b] = mesh_.edge_vertices(e); !shared_edge(a, b)) write_point(nodes_, mesh_.edge_node(e), 0);
+    for (const Vec<D>& node : shared_nodes_) write_point(nodes_, node, 0);
+  }
+
+  static void write_id(ChunkRecords& out, Index id) {
+    out.write_integer(std::int64_t{id} + 1);
+    out.end_record();
+  }
+
+  // An entity's record: its vertices' numbers, its edges' nodes' (P2, in the local edge order of
+  // a simplex of its dimension), its ref.
+  template <std::size_t N>
+  void write_simplex(ChunkRecords& out, const std::array<Index, N>& vertices, int ref) const {
+    for (Index v : vertices) out.write_integer(std::int64_t{number_[v]} + 1);
+    if (mesh_.is_p2())
+      for (std::size_t e = 0; e < N * (N - 1) / 2; ++e) {
+        std::array<int, 2> ends{0, 1};
+        if constexpr (N > 2) ends = edge_vertices<static_cast<int>(N) - 1>(static_cast<int>(e));
+        out.write_integer(std::int64_t{node_number_[mesh_.find_edge(vertices[ends[0]], vertices[ends[1]])]} + 1);
+      }
+    out.write_integer(ref);
+    out.end_record();
+  }
+
+  // 3D feature lines: a line with both ends shared may lie in several parts and goes to the process
+  // its ends hash to, which writes it once (the first part's, in rank order), after that process's
+  // other lines; their ridge and required tags go with them.
+  void encode_lines() {
+    const EntityTags<D> tags(mesh_);
+    lines_ = records();
+    std::vector<std::vector<SharedEdge<D>>> outgoing(static_cast<std::size_t>(process_count()));
+    std::vector<char> flags;  // per line written here, in order
+    for (Index l = 0; l < mesh_.line_count(); ++l) {
+      const auto [a, b] = mesh_.line(l);
+      const char line_flags = static_cast<char>((tags.ridge_line[l] ? kRidgeFlag : 0) | (tags.required_line[l] ? kRequiredFlag : 0));
+      if (!shared_edge(a, b)) {
+        write_simplex(lines_, mesh_.line(l), mesh_.line_ref(l));
+        flags.push_back(line_flags);
+        continue;
+      }
+      const FaceKey<2> key = edge_key(a, b);
+      const Index node = mesh_.is_p2() ? node_number_[mesh_.find_edge(a, b)] : kNoIndex;
+      outgoing[static_cast<std::size_t>(meeting_process<2>(key, process_count()))].push_back(
+          {key, {number_[a], number_[b]}, {}, node, mesh_.line_ref(l), line_flags});
+    }
+    const std::vector<std::vector<SharedEdge<D>>> arrived = exchange_values(outgoing);
+    const ArrivalGroups groups = grouped(arrived, [](const SharedEdge<D>& r) { return r.key; });
+    for (std::size_t g = 0; g < groups.count(); ++g) {
+      const Arrival head = groups.order[groups.starts[g]];
+      const SharedEdge<D>& line = arrived[static_cast<std::size_t>(head.from)][head.at];
+      for (Index end : line.ends) lines_.write_integer(std::int64_t{end} + 1);
+      if (line.node_number != kNoIndex) lines_.write_integer(std::int64_t{line.node_number} + 1);
+      lines_.write_integer(line.ref);
+      lines_.end_record();
+      flags.push_back(line.flags);
+    }
+    const Offset offset = offset_of(static_cast<Index>(flags.size()));
+    counts_.lines = offset.total;
+    write_tags(flags, offset, ridges_, required_edges_);
+  }
+
+  // The ids of the entities written here (from offset.before on) that carry each flag.
+  void write_tags(const std::vector<char>& flags, const Offset& offset, ChunkRecords& ridges, ChunkRecords& required) const {
+    ridges = required = records();
+    for (std::size_t i = 0; i < flags.size(); ++i) {
+      if (flags[i] & kRidgeFlag) write_id(ridges, offset.before + static_cast<Index>(i));
+      if (flags[i] & kRequiredFlag) write_id(required, offset.before + static_cast<Index>(i));
+    }
+  }
+
+  void encode_facets() {
+    const EntityTags<D> tags(mesh_);
+    facets_ = records();
+    std::vector<char> flags;
+    for (Index f = 0; f < mesh_.facet_count(); ++f) {
+      if (mesh_.facet_ref(f) == kInterfaceRef) continue;
+      write_simplex(facets_, mesh_.facet(f), mesh_.facet_ref(f));
+      flags.push_back(static_cast<char>((tags.ridge_facet[f] ? kRidgeFlag : 0) | (tags.required_facet[f] ? kRequiredFlag : 0)));
+    }
+    const Offset offset = offset_of(static_cast<Index>(flags.size()));
+    counts_.facets = offset.total;
+    if constexpr (D == 2) {
+      write_tags(flags, offset, ridges_, required_edges_);
+    } else {
+      ChunkRecords no_ridges = records();  // a 3D mesh's ridges are lines
+      write_tags(flags, offset, no_ridges, required_triangles_);
+    }
+  }
+
+  void encode_elements() {
+    elements_ = records();
+    for (Index k = 0; k < mesh_.element_count(); ++k) write_simplex(elements_, mesh_.element(k), mesh_.element_ref(k));
+    counts_.elements = offset_of(mesh_.element_count()).total;
+  }
+
+  void write_keywords(const std::vector<Keyword>& keywords);
+
+  const std::string& path_;
+  const MeshPart<D>& part_;
+  const Mesh<D>& mesh_;
+  bool binary_;
+  int version_ = 0;
+  MeshFileCounts counts_;
+  std::vector<Index> number_;                 // per part vertex, its file number (from 0)
+  std::vector<char> shared_;                  // per part vertex, whether another part holds it
+  std::vector<Index> node_number_;            // per part edge (P2), its node's file number (from 0)
+  std::vector<VertexRecord<D>> vertex_rows_;  // the vertices this process writes, in order
+  std::vector<Vec<D>> shared_nodes_;          // the nodes of shared edges this process writes
+  ChunkRecords vertices_ = records(), nodes_ = records(), lines_ = records(), facets_ = records(), elements_ = records();
+  ChunkRecords corners_ = records(), ridges_ = records(), required_vertices_ = records(), required_edges_ = records(),
+               required_triangles_ = records();
+};
+
+}  // namespace
+
+// Rank 0 writes the keywords with a hole of each one's records; every process then writes its runs
+// of records at their places: run j of a keyword after every process's runs before j, and after
+// the processes before it in run j.
+template <int D>
+void RunsWriter<D>::write_keywords(const std::vector<Keyword>& keywords) {
+  std::vector<std::int64_t> sizes;  // records, bytes per run of each keyword
+  for (const Keyword& keyword : keywords)
+    for (const ChunkRecords* run : keyword.runs) {
+      sizes.push_back(run->records());
+      sizes.push_back(static_cast<std::int64_t>(run->bytes().size()));
+    }
+  std::vector<std::vector<std::int64_t>> all;  // per process
+  for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(sizes))) all.push_back(values_of_bytes<std::int64_t>(bytes));
+  std::vector<std::uint64_t> starts(keywords.size(), 0);  // where each keyword's records begin
+  std::string file;
+  if (process_rank() == 0) {
+    const auto skeleton = [&](auto&& out) {
+      std::size_t slot = 0;
+      for (std::size_t i = 0; i < keywords.size(); ++i) {
+        std::int64_t records = 0, bytes = 0;
+        for (std::size_t j = 0; j < keywords[i].runs.size(); ++j, slot += 2)
+          for (const std::vector<std::int64_t>& process : all) records += process[slot], bytes += process[slot + 1];
+        if (records == 0 && keywords[i].code != gamma::kVertices) continue;
+        out.begin_keyword(keywords[i].code, records, keywords[i].integers, keywords[i].reals);
+        starts[i] = out.position();
+        out.leave_records(static_cast<std::uint64_t>(bytes));
+      }
+      out.finish();
+    };
+    if (binary_)
+      skeleton(gamma::BinaryKeywordWriter(path_, version_, D));
+    else
+      skeleton(gamma::TextKeywordWriter(path_, version_, D));
+    const OutputSet* outputs = OutputSet::active();
+    file = outputs ? outputs->written_temporary(path_) : path_;
+  }
+  broadcast_values(starts);
+  std::vector<char> name(file.begin(), file.end());
+  broadcast_values(name);
+  std::fstream out(std::string(name.begin(), name.end()), std::ios::in | std::ios::out | std::ios::binary);
+  std::size_t slot = 0;
+  for (std::size_t i = 0; i < keywords.size(); ++i) {
+    std::uint64_t at = starts[i];
+    for (std::size_t j = 0; j < keywords[i].runs.size(); ++j, slot += 2) {
+      for (int r = 0; r < process_rank(); ++r) at += static_cast<std::uint64_t>(all[static_cast<std::size_t>(r)][slot + 1]);
+      const std::string& bytes = keywords[i].runs[j]->bytes();
+      out.seekp(static_cast<std::streamoff>(at));
+      out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+      for (int r = process_rank(); r < process_count(); ++r) at += static_cast<std::uint64_t>(all[static_cast<std::size_t>(r)][slot + 1]);
+    }
+  }
+  out.close();
+  if (!out) throw Error(path_ + ": cannot write the records of rank " + std::to_string(process_rank()));
+  all_gather_value(0);  // every run is in place before rank 0 commits the file
+}
+
+template <int D>
+MeshFileCounts write_mesh_runs(const std::string& path, const MeshPart<D>& part, bool binary, int version) {
+  return RunsWriter<D>(path, part, binary).write(version);
+}
+
+template MeshFileCounts write_mesh_runs(const std::string&, const MeshPart<2>&, bool, int);
+template MeshFileCounts write_mesh_runs(const std::string&, const MeshPart<3>&, bool, int);
+
+}  // namespace hocav

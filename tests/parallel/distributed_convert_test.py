@@ -1,0 +1,99 @@
+#!/usr/bin/python3
+"""`mpirun -np N hocav convert IN OUT` (docs/distributed.md §Writing in runs): every process reads
+its piece of a P1 Gamma mesh and writes it back in runs, so that no process holds the whole mesh.
+On a cube, a layered shell (a text .mesh) and a 2D annulus, and gmsh's unstructured shell and
+annulus when hocav has gmsh, with 2, 3 and 4 processes (oversubscribed), to .mesh and .meshb: the
+output must be the serial command's mesh with its vertices in the same order and its elements in
+the same order, its facets, feature lines and tags the same sets (they come part by part), and
+meshio must read it to the same points and cells. Refused under mpirun, with exit 2, a one-line error
+and no output: --metric, --order 2, an input or an output that is no Gamma mesh.
+
+Usage: /usr/bin/python3 distributed_convert_test.py <path-to-hocav>
+Exits 77 (skipped) when hocav was built without MPI.
+"""
+import contextlib
+import io
+import os
+import sys
+
+import meshio
+import numpy
+
+from mpi_test_support import distributed_test, pieces_cases, refused, run
+
+# The keywords whose records are ids of another keyword's entities.
+TAGS_OF = {"Ridges": "Edges", "RequiredEdges": "Edges", "RequiredTriangles": "Triangles"}
+
+
+def keywords(path):
+    """A text .mesh as {keyword: [record, ...]}, each record a tuple of its words."""
+    words = open(path).read().split()
+    dimension = int(words[words.index("Dimension") + 1])
+    widths = {"Vertices": dimension + 1, "Edges": 3, "Triangles": 4, "Tetrahedra": 5}  # the tag lists: 1
+    out, i = {}, 0
+    while words[i] != "End":
+        name = words[i]
+        if name in ("MeshVersionFormatted", "Dimension"):
+            i += 2
+            continue
+        count, width = int(words[i + 1]), widths.get(name, 1)
+        out[name] = [tuple(words[i + 2 + width * k:i + 2 + width * (k + 1)]) for k in range(count)]
+        i += 2 + width * count
+    return out
+
+
+def as_sets(mesh):
+    """The facets, lines and tags as sets of records, the tags by the vertices of what they tag."""
+    sets = {name: sorted(records) for name, records in mesh.items() if name not in ("Vertices", "Tetrahedra") and name not in TAGS_OF}
+    for tag, target in TAGS_OF.items():
+        if tag in mesh:
+            sets[tag] = sorted(tuple(sorted(mesh[target][int(r[0]) - 1][:-1])) for r in mesh[tag])
+    return sets
+
+
+def same_mesh(serial, pieces, what):
+    assert list(serial) == list(pieces), f"{what}: keywords {list(pieces)} vs {list(serial)}"
+    assert pieces["Vertices"] == serial["Vertices"], f"{what}: not the serial vertices in order"
+    elements = "Tetrahedra" if "Tetrahedra" in serial else "Triangles"
+    assert pieces[elements] == serial[elements], f"{what}: not the serial elements in order"
+    if elements == "Triangles":  # 2D: the facets are the Edges
+        serial, pieces = dict(serial), dict(pieces)
+        del serial["Triangles"], pieces["Triangles"]
+    assert as_sets(pieces) == as_sets(serial), f"{what}: other facets, lines or tags"
+
+
+def same_for_meshio(serial, pieces, what):
+    with contextlib.redirect_stderr(io.StringIO()):  # its warnings about the tag keywords it skips
+        a, b = meshio.read(serial), meshio.read(pieces)
+    assert numpy.array_equal(a.points, b.points), f"{what}: meshio reads other points"
+    cells_a = {block.type: numpy.sort(block.data, axis=1) for block in a.cells}
+    cells_b = {block.type: numpy.sort(block.data, axis=1) for block in b.cells}
+    assert cells_a.keys() == cells_b.keys(), f"{what}: meshio reads other cell types"
+    for kind in cells_a:
+        assert sorted(map(tuple, cells_a[kind])) == sorted(map(tuple, cells_b[kind])), f"{what}: meshio reads other {kind}"
+
+
+def check(hocav, mpirun, work):
+    for mesh, generate in pieces_cases():
+        run([hocav, "generate"] + generate + ["-o", mesh], work)
+        run([hocav, "convert", mesh, "serial.mesh"], work)
+        serial = keywords(os.path.join(work, "serial.mesh"))
+        for processes in (2, 3, 4):
+            for output in ("pieces.mesh", "pieces.meshb"):
+                what = f"{mesh} to {output} on {processes} processes"
+                printed = run(mpirun + ["-np", str(processes), hocav, "convert", mesh, output], work)
+                assert f"(in {processes} pieces)" in printed, printed
+                if output.endswith(".meshb"):
+                    run([hocav, "convert", output, "pieces-back.mesh"], work)
+                    output = "pieces-back.mesh"
+                same_mesh(serial, keywords(os.path.join(work, output)), what)
+                same_for_meshio(os.path.join(work, "serial.mesh"), os.path.join(work, output), what)
+    refused(mpirun, hocav, work, ["convert", "cube.meshb", "out.mesh", "--metric", "m.solb"], "out.mesh", "no --metric")
+    refused(mpirun, hocav, work, ["convert", "cube.meshb", "out.mesh", "--order", "2"], "out.mesh", "no --order 2")
+    refused(mpirun, hocav, work, ["convert", "cube.meshb", "out.msh"], "out.msh", "reads and writes Gamma meshes")
+    run([hocav, "convert", "cube.meshb", "cube.msh"], work)
+    refused(mpirun, hocav, work, ["convert", "cube.msh", "out.mesh"], "out.mesh", "reads and writes Gamma meshes")
+
+
+if __name__ == "__main__":
+    sys.exit(distributed_test(check))

@@ -1,0 +1,133 @@
+// Writing a mesh file in runs (write_mesh_runs, docs/distributed.md §Writing in runs), run by ctest
+// under `mpirun -np N` (N = 2, 3, 4). Rank 0 holds a square and a cube with four materials (facets
+// between them), feature lines, corners and required vertices, edges and facets, each also P2 with
+// its nodes moved off the edges' middles, and each also with its vertices renumbered across the mesh.
+// - All on rank 0 (the other parts empty), the runs must be write_gamma_mesh's file of the part,
+//   byte for byte, as .meshb and .mesh.
+// - Scattered over the processes (element k to process (7k + k/5) mod N, so that parts touch at
+//   many vertices, edges and lines), the file read back must be the mesh entity by entity, with its
+//   vertices in order, its elements part after part in rank order, and each P2 node once.
+// Exit code 0 when all holds on every process, 1 otherwise.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <string>
+
+#include "cases/structured.hpp"
+#include "io/gamma_mesh.hpp"
+#include "io/mesh_file.hpp"
+#include "mpi_test_main.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/mesh_file_runs.hpp"
+#include "parallel/part_migration.hpp"
+#include "part_description.hpp"
+#include "tagged_meshes.hpp"
+
+namespace hocav {
+namespace {
+
+bool fail(const std::string& what) {
+  std::cerr << "mesh file runs (rank " << process_rank() << "): " << what << '\n';
+  return false;
+}
+
+std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The mesh, P2 with each node moved off its edge's middle by an amount of its own.
+template <int D>
+Mesh<D> curved(Mesh<D> mesh) {
+  mesh.make_p2();
+  for (Index e = 0; e < mesh.edge_count(); ++e) mesh.edge_node(e)[e % D] += 1e-3 * static_cast<double>(e % 7 + 1);
+  return mesh;
+}
+
+// Element k of rank 0's mesh goes to part `destination(k)`.
+template <int D>
+MeshPart<D> scattered(const Mesh<D>& mesh, int (*destination)(Index)) {
+  if (process_rank() != 0) return migrate_part(MeshPart<D>{}, {});
+  std::vector<int> part_of;
+  for (Index k = 0; k < mesh.element_count(); ++k) part_of.push_back(destination(k));
+  return migrate_part(whole_mesh_part(Mesh<D>(mesh)), part_of);
+}
+
+int to_rank_0(Index) { return 0; }
+int spread(Index k) { return static_cast<int>((7 * k + k / 5) % process_count()); }
+
+// All on rank 0: the runs are write_gamma_mesh's file of rank 0's part.
+template <int D>
+bool same_bytes_as_serial(const Mesh<D>& mesh, const std::string& directory, const std::string& name) {
+  const MeshPart<D> part = scattered(mesh, to_rank_0);
+  bool ok = true;
+  for (const bool binary : {true, false}) {
+    const std::string runs = directory + "/" + name + "-runs" + (binary ? ".meshb" : ".mesh");
+    const std::string serial = directory + "/" + name + "-serial" + (binary ? ".meshb" : ".mesh");
+    write_mesh_runs(runs, part, binary);
+    if (process_rank() != 0) continue;
+    write_gamma_mesh(serial, part.mesh, binary);
+    if (file_bytes(runs) != file_bytes(serial)) ok = fail(name + ": " + runs + " is not write_gamma_mesh's file");
+  }
+  return ok;
+}
+
+// Scattered: the file read back is the mesh, entity by entity.
+template <int D>
+bool same_mesh_read_back(const Mesh<D>& mesh, const std::string& directory, const std::string& name) {
+  const MeshPart<D> part = scattered(mesh, spread);
+  bool ok = true;
+  for (const bool binary : {true, false}) {
+    const std::string path = directory + "/" + name + "-spread" + (binary ? ".meshb" : ".mesh");
+    const MeshFileCounts counts = write_mesh_runs(path, part, binary);
+    if (process_rank() != 0) continue;
+    const MeshFileContent file = read_mesh_file(path);
+    const Mesh<D>& got = std::get<Mesh<D>>(file.mesh);
+    const std::string what = name + " (" + path + ")";
+    const std::string difference = part_difference(whole_mesh_part(Mesh<D>(got)), whole_mesh_part(Mesh<D>(mesh)));
+    if (!difference.empty()) ok = fail(what + ": " + difference);
+    for (Index v = 0; v < got.vertex_count(); ++v)
+      if (file.vertex_file_ids[v] != v) ok = fail(what + ": vertex " + std::to_string(v) + " is not in the order of its global id");
+    const Index nodes = mesh.vertex_count() + (mesh.is_p2() ? mesh.edge_count() : 0);
+    if (file.file_node_count != nodes || counts.vertices + counts.nodes != nodes || counts.elements != mesh.element_count())
+      ok = fail(what + ": " + std::to_string(file.file_node_count) + " nodes in the file, " + std::to_string(nodes) + " expected");
+    Index k = 0;
+    for (int r = 0; r < process_count(); ++r)
+      for (Index original = 0; original < mesh.element_count(); ++original)
+        if (spread(original) == r && got.element(k++) != mesh.element(original)) {
+          ok = fail(what + ": the elements are not part after part in the mesh's order");
+          r = process_count();
+          break;
+        }
+  }
+  return ok;
+}
+
+template <int D>
+bool check(const Mesh<D>& mesh, const std::string& directory, const std::string& name) {
+  return same_bytes_as_serial(mesh, directory, name) & same_mesh_read_back(mesh, directory, name);
+}
+
+}  // namespace
+}  // namespace hocav
+
+int main(int argc, char** argv) {
+  return hocav::run_mpi_test(argc, argv, "mesh file runs", [] {
+    const std::string directory = hocav::shared_directory("hocav-runs-");
+    const hocav::Mesh<2> square = hocav::tagged_mesh(hocav::generate_square(12));
+    const hocav::Mesh<3> cube = hocav::tagged_mesh(hocav::generate_cube(6));
+    bool ok = true;
+    for (const auto& [name, each] : {std::pair{"square", square}, {"shuffled-square", hocav::shuffled(square)}}) {
+      ok = hocav::check(each, directory, name) & ok;
+      ok = hocav::check(hocav::curved(each), directory, std::string(name) + "-p2") & ok;
+    }
+    for (const auto& [name, each] : {std::pair{"cube", cube}, {"shuffled-cube", hocav::shuffled(cube)}}) {
+      ok = hocav::check(each, directory, name) & ok;
+      ok = hocav::check(hocav::curved(each), directory, std::string(name) + "-p2") & ok;
+    }
+    hocav::all_gather_value(0);
+    if (hocav::process_rank() == 0) std::filesystem::remove_all(directory);
+    return ok;
+  });
+}

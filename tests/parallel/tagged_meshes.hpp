@@ -1,0 +1,88 @@
+// The meshes the MPI tests of reading and writing in pieces use: a structured square or cube with
+// four materials, feature lines, corners and required entities, and the same with its vertices
+// renumbered across the file; and a directory every process sees.
+#pragma once
+
+#include <unistd.h>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "adapt/vertex_classes.hpp"
+#include "parallel/communicator.hpp"
+
+namespace hocav {
+
+template <int D>
+Vec<D> centroid(const Mesh<D>& mesh, Index k) {
+  Vec<D> sum{};
+  for (Index v : mesh.element(k)) sum = sum + mesh.vertex(v);
+  return (1.0 / (D + 1)) * sum;
+}
+
+// The structured mesh with its tags, and four materials (cut at x = 0.5 and y = 0.4, across the runs
+// of elements and along them) with facets of ref 9 between them.
+template <int D>
+Mesh<D> tagged_mesh(Mesh<D> mesh) {
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    const Vec<D> c = centroid(mesh, k);
+    mesh.set_element(k, mesh.element(k), 1 + (c[0] < 0.5 ? 1 : 0) + (c[1] < 0.4 ? 2 : 0));
+  }
+  mesh.build_topology();
+  classify_vertices(mesh, 45);
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (int face = 0; face <= D; ++face)
+      if (const Index other = mesh.neighbor(k, face); other != kNoIndex && mesh.element_ref(other) != mesh.element_ref(k) && other > k) {
+        typename Mesh<D>::Facet facet{};
+        for (int i = 0; i < D; ++i) facet[i] = mesh.element(k)[face_vertices<D>(face)[i]];
+        mesh.add_facet(facet, 9);
+      }
+  for (Index v = 0; v < mesh.vertex_count(); v += 7) mesh.required_vertices().push_back(v);
+  std::vector<Index>& required_facets = D == 2 ? mesh.required_edges() : mesh.required_triangles();
+  for (Index f = 0; f < mesh.facet_count(); f += 5) required_facets.push_back(f);
+  if constexpr (D == 3)
+    for (Index l = 0; l < mesh.line_count(); l += 3) mesh.required_edges().push_back(l);
+  mesh.build_topology();
+  return mesh;
+}
+
+// The same mesh with its vertices renumbered v -> 7919 v mod n (a prime not dividing n): a run of
+// elements then uses vertex ids from all over the file.
+template <int D>
+Mesh<D> shuffled(const Mesh<D>& mesh) {
+  const Index n = mesh.vertex_count();
+  const auto moved = [n](Index v) { return static_cast<Index>(static_cast<std::int64_t>(v) * 7919 % n); };
+  std::vector<Index> old_of(static_cast<std::size_t>(n));
+  for (Index v = 0; v < n; ++v) old_of[moved(v)] = v;
+  Mesh<D> out;
+  for (Index v = 0; v < n; ++v) out.add_vertex(mesh.vertex(old_of[v]), mesh.vertex_ref(old_of[v]));
+  const auto renumbered = [&](auto ids) {
+    for (Index& v : ids) v = moved(v);
+    return ids;
+  };
+  for (Index k = 0; k < mesh.element_count(); ++k) out.add_element(renumbered(mesh.element(k)), mesh.element_ref(k));
+  for (Index f = 0; f < mesh.facet_count(); ++f) out.add_facet(renumbered(mesh.facet(f)), mesh.facet_ref(f));
+  for (Index l = 0; l < mesh.line_count(); ++l) out.add_line(renumbered(mesh.line(l)), mesh.line_ref(l));
+  for (Index v : mesh.corners()) out.corners().push_back(moved(v));
+  for (Index v : mesh.required_vertices()) out.required_vertices().push_back(moved(v));
+  out.ridges() = mesh.ridges();
+  out.required_edges() = mesh.required_edges();
+  out.required_triangles() = mesh.required_triangles();
+  out.build_topology();
+  return out;
+}
+
+// A directory every process sees, named by rank 0.
+inline std::string shared_directory(const std::string& prefix) {
+  std::string path = std::filesystem::temp_directory_path() / (prefix + std::to_string(getpid()));
+  std::vector<std::byte> bytes(path.size());
+  std::memcpy(bytes.data(), path.data(), path.size());
+  broadcast_bytes(bytes);
+  path.assign(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  if (process_rank() == 0) std::filesystem::create_directories(path);
+  return path;
+}
+
+}  // namespace hocav
