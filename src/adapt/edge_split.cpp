@@ -298,12 +298,10 @@ SplitSweep split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limit
   // are longer than 1, so the mesh never gets denser than the metric asks; halves of edges in
   // (√2, 2) would be, while the coarse edges around them are still to be cut. (In 2D, where a
   // split triangle makes 4 and not 8 children, it lowered the annulus's mean quality.)
-  const auto beyond_two = std::partition_point(candidates.begin(), candidates.end(), [](const EdgeCandidate& c) { return c.length > 2; });
   SplitSweep sweep;
-  sweep.coarse_phase = D == 3 &&
-                       static_cast<double>(beyond_two - candidates.begin()) > kCoarsePhaseShare * static_cast<double>(candidates.size());
-  if (sweep.coarse_phase) candidates.erase(beyond_two, candidates.end());
   OperationCount& count = sweep.count;
+  // (Before the coarse phase is judged: a distributed part's frozen interface edges, long and many
+  // next to a coarse interface, would keep it in its coarse phase.)
   if (!limits.split_at_required_vertices) {
     std::vector<char> required(static_cast<std::size_t>(am.mesh().vertex_count()), 0);
     for (Index v : am.mesh().required_vertices()) required[v] = 1;
@@ -313,6 +311,10 @@ SplitSweep split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limit
       return at_required;
     });
   }
+  const auto beyond_two = std::partition_point(candidates.begin(), candidates.end(), [](const EdgeCandidate& c) { return c.length > 2; });
+  sweep.coarse_phase = D == 3 &&
+                       static_cast<double>(beyond_two - candidates.begin()) > kCoarsePhaseShare * static_cast<double>(candidates.size());
+  if (sweep.coarse_phase) candidates.erase(beyond_two, candidates.end());
   std::vector<SplitScratch<D>> scratch(static_cast<std::size_t>(pool.thread_count()));
   std::vector<SplitPreview<D>> previews;
   SplitPreview<D> fresh;

@@ -140,13 +140,19 @@ std::string rank_range(const std::vector<T>& values, double unit) {
 }
 
 void print_iteration(const DistributedIteration& figures) {
-  const bool band = figures.iteration == kDistributedIterations;
   std::ostringstream line;  // figures to 3 digits: "metric 0.333 of the way", "0.0586 s"
-  line << std::setprecision(3) << "distributed: iteration " << figures.iteration << " of " << kDistributedIterations
-       << (band ? " (the band)" : "") << ": metric " << figures.metric_fraction << " of the way, " << process_count() << " parts, "
-       << figures.interface_faces << " interface faces, " << figures.interface_vertices << " of " << figures.vertices
-       << " vertices on the interfaces, " << figures.bytes_sent << " bytes sent, " << figures.seconds << " s (partition "
-       << figures.seconds_partition << " s; parts " << rank_range(figures.part_seconds, 1) << " s, peak memory "
+  line << std::setprecision(3);
+  if (figures.iteration > kDistributedIterations) {
+    line << "distributed: the last runs on rank 0: " << figures.region_elements << " elements near the interfaces and the poor ones, "
+         << figures.elements << " elements after them, " << figures.bytes_sent << " bytes sent, " << figures.seconds << " s (runs "
+         << figures.part_seconds.at(0) << " s, peak memory " << rank_range(figures.peak_memory_bytes, 1 << 20) << " MiB per rank)\n";
+    std::cerr << line.str();
+    return;
+  }
+  line << "distributed: iteration " << figures.iteration << " of " << kDistributedIterations << ": metric " << figures.metric_fraction
+       << " of the way, " << process_count() << " parts, " << figures.interface_faces << " interface faces, " << figures.interface_vertices
+       << " of " << figures.vertices << " vertices on the interfaces, " << figures.bytes_sent << " bytes sent, " << figures.seconds
+       << " s (partition " << figures.seconds_partition << " s; parts " << rank_range(figures.part_seconds, 1) << " s, peak memory "
        << rank_range(figures.peak_memory_bytes, 1 << 20) << " MiB per rank)\n";
   std::cerr << line.str();
 }

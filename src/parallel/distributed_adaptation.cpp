@@ -7,6 +7,7 @@
 #include <optional>
 #include <utility>
 
+#include "adapt/metric_measures.hpp"
 #include "adapt/vertex_classes.hpp"
 #include "base/error.hpp"
 #include "base/memory_budget.hpp"
@@ -18,7 +19,6 @@
 #include "parallel/communicator.hpp"
 #include "parallel/element_partition.hpp"
 #include "parallel/part_adaptation.hpp"
-#include "parallel/part_message.hpp"
 #include "parallel/part_migration.hpp"
 #include "parallel/peer_iteration.hpp"
 #include "parallel/share_metric.hpp"
@@ -57,8 +57,8 @@ MetricField<D> input_metric_of(const Mesh<D>& input, const AdaptationMetric<D>& 
 
 // The share of the way from the input's own metric to the target that an iteration adapts to: the
 // whole mesh's iterations step there evenly, so that each starts at most a few times coarser than
-// it asks and its frozen interfaces stay near their metric; the band and the last run adapt to the
-// target (docs/distributed.md §A gradual metric).
+// it asks and its frozen interfaces stay near their metric; the last iterations and the last runs
+// adapt to the target (docs/distributed.md §A gradual metric).
 double gradual_fraction(int iteration, int steps) { return std::min(1.0, static_cast<double>(iteration) / steps); }
 
 // The last interfaces' vertices and their neighbours (per vertex of `mesh`): the region of the last
@@ -71,25 +71,6 @@ std::vector<char> around_interfaces(const Mesh<D>& mesh, const std::vector<char>
     if (near[k])
       for (Index v : mesh.element(k)) region[v] = 1;
   return region;
-}
-
-// The faces between two adapted parts (those below `adapted`) of a partition, and their vertices.
-struct PartInterfaces {
-  Index faces = 0;
-  std::vector<char> vertex;  // per mesh vertex
-};
-
-template <int D>
-PartInterfaces interfaces_between(const Mesh<D>& mesh, std::span<const int> part_of, int adapted) {
-  PartInterfaces out{0, std::vector<char>(static_cast<std::size_t>(mesh.vertex_count()), 0)};
-  for (Index k = 0; k < mesh.element_count(); ++k)
-    for (int face = 0; face <= D; ++face) {
-      const Index other = mesh.neighbor(k, face);
-      if (other == kNoIndex || other < k || part_of[other] == part_of[k] || part_of[k] >= adapted || part_of[other] >= adapted) continue;
-      ++out.faces;
-      for (int i = 0; i < D; ++i) out.vertex[mesh.element(k)[face_vertices<D>(face)[i]]] = 1;
-    }
-  return out;
 }
 
 // Collective: the metric on the back mesh around `mesh` (a part), gathered from every process's home
@@ -128,78 +109,36 @@ void partition_first(MeshPart<D>& part, std::span<const double> loads, std::int6
   figures.seconds += seconds_since(start);
 }
 
-// One iteration on rank 0: split along a partition, send, adapt part 0, receive, merge. Part r goes
-// to rank r; the elements of part `process_count()` (the kept part) stay as they are.
+// Per vertex of a part: on its interfaces, or on an element of quality below kPoorQuality in
+// `metric`: where the last runs start.
 template <int D>
-struct RootIteration {
-  Mesh<D>& mesh;
-  AdaptationMetric<D> metric;  // the iteration's, on the whole back mesh
-  const BoundaryGeometry<D>* geometry;
-  AdaptationSettings settings;  // the parts' loop's (part_settings)
-  std::int64_t partition_seed;
-  std::vector<char> old_interface;  // per vertex of `mesh`: on the interfaces between adapted parts
-  DistributedIteration figures;
-  const BackMeshShare<D>* home;  // rank 0's share of the back mesh, which the other parts' metrics need
-
-  // The parts' metric is `metric`, figures.metric_fraction of the way (sent to the other ranks).
-  AdaptationRun run(const std::vector<int>& part_of, std::chrono::steady_clock::time_point start) {
-    const int count = process_count();
-    std::vector<MeshPart<D>> parts = split_mesh(mesh, part_of, count + 1);
-    const PartInterfaces interfaces = interfaces_between(mesh, part_of, count);
-    figures.seconds_partition = seconds_since(start);
-    figures.interface_faces = interfaces.faces;
-    for (int p = 1; p < count; ++p) {
-      send(p, bytes_of_values(std::vector<double>{figures.metric_fraction}));
-      send(p, pack_part(parts[p].mesh, std::span<const Index>(parts[p].global_ids)));
-    }
-    gathered_metric(*home, {}, Mesh<D>{}, figures);  // rank 0 has the whole back mesh: it asks for none
-    auto [run0, figures0] = adapt_part_measured(parts[0], metric, geometry, settings);
-    std::vector<AdaptationRun> runs{std::move(run0)};
-    note(figures0);
-    for (int p = 1; p < count; ++p) {
-      parts[p] = unpack_part<D>(receive(p));
-      runs.push_back(unpack_run(receive(p)));
-      const std::vector<PartFigures> figures_of_part = values_of_bytes<PartFigures>(receive(p));
-      if (figures_of_part.size() != 1) throw Error("a distributed adaptation message has the wrong size");
-      note(figures_of_part[0]);
-    }
-    MergedMesh<D> merged = merge_parts(mesh, parts);
-    mesh = std::move(merged.mesh);
-    mesh.build_topology();
-    old_interface.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
-    for (std::size_t v = 0; v < interfaces.vertex.size(); ++v)
-      if (interfaces.vertex[v]) old_interface[merged.old_vertex_ids[v]] = 1;
-    figures.interface_vertices = static_cast<Index>(std::count(old_interface.begin(), old_interface.end(), 1));
-    figures.vertices = mesh.vertex_count();
-    figures.elements = mesh.element_count();
-    figures.seconds = seconds_since(start);
-    return combined(runs);
+std::vector<char> last_run_seeds(const Mesh<D>& mesh, const AdaptationMetric<D>& metric) {
+  std::vector<char> seeds = interface_vertex_flags(mesh);
+  std::vector<SymMat<D>> at;
+  Index hint = kNoIndex;
+  for (Index v = 0; v < mesh.vertex_count(); ++v) at.push_back(metric.metric_at(mesh.vertex(v), hint));
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    const auto& element = mesh.element(k);
+    SimplexPoints<D> points;
+    std::array<SymMat<D>, D + 1> metrics;
+    for (int i = 0; i <= D; ++i) points[i] = mesh.vertex(element[i]), metrics[i] = at[element[i]];
+    if (mean_metric_ratio<D>(points, metrics) < kPoorQuality)
+      for (Index v : element) seeds[v] = 1;
   }
+  return seeds;
+}
 
-  // The elements within kInterfaceBandRings rings of the last interfaces in the processes' parts, of
-  // balanced predicted output; the others in the kept part.
-  std::vector<int> band_partition() const {
-    std::vector<int> part_of(static_cast<std::size_t>(mesh.element_count()), process_count());
-    std::vector<Index> band;
-    const WeightedGraph graph = member_graph(mesh, elements_near(mesh, old_interface, kInterfaceBandRings),
-                                             expected_element_counts(mesh, metric), band);
-    if (band.empty()) return part_of;
-    const std::vector<int> part_of_band = partition_graph(graph, process_count(), partition_seed);
-    for (std::size_t i = 0; i < band.size(); ++i) part_of[band[i]] = part_of_band[i];
-    return part_of;
-  }
-
-  void note(const PartFigures& part) {
-    figures.part_seconds.push_back(part.seconds);
-    figures.peak_memory_bytes.push_back(part.peak_memory_bytes);
-  }
-  void send(int to, const std::vector<std::byte>& bytes) { send_bytes(to, bytes, figures.bytes_sent); }
-  std::vector<std::byte> receive(int from) { return receive_bytes(from, figures.bytes_sent); }
+// What the whole-mesh iterations leave: on rank 0 their runs; on every process its part's seeds of
+// the last runs, and the next global id.
+struct WholeMeshResult {
+  AdaptationRun run;
+  std::vector<char> seeds;
+  Index next_global_id = 0;
 };
 
-// The whole-mesh iterations, 1 to kDistributedIterations - 1, on every process at once and peer to
-// peer (peer_iteration.hpp), from the processes' parts of the first partition; the last gathers the
-// mesh on rank 0. Each adapts to the metric its share of the way from the input's own.
+// The whole-mesh iterations, 1 to kDistributedIterations, on every process at once and peer to
+// peer (peer_iteration.hpp), from the processes' parts of the first partition; the parts of the last
+// stay where they are. Each adapts to the metric its share of the way from the input's own.
 template <int D>
 struct WholeMeshIterations {
   MetricRecipe recipe;  // the target's
@@ -211,16 +150,14 @@ struct WholeMeshIterations {
   // asks for no share: it holds the whole); empty on the other processes.
   std::function<AdaptationMetric<D>(double)> whole_metric;
 
-  // Rank 0 gets the runs, the last iteration's interface vertices and (in `part`) every element;
   // `first` holds the figures of the first cut's scatter.
-  PeerIterationResult run(MeshPart<D>& part, const BackMeshShare<D>& home, DistributedIteration first,
-                          const std::function<void(const DistributedIteration&)>& on_iteration) const {
-    Index next_global_id = 0;
+  WholeMeshResult run(MeshPart<D>& part, const BackMeshShare<D>& home, DistributedIteration first,
+                      const std::function<void(const DistributedIteration&)>& on_iteration) const {
+    WholeMeshResult all;
     for (Index most :
          all_gather_value(part.global_ids.empty() ? Index{0} : *std::max_element(part.global_ids.begin(), part.global_ids.end()) + 1))
-      next_global_id = std::max(next_global_id, most);
-    PeerIterationResult all;
-    for (int iteration = 1; iteration < kDistributedIterations; ++iteration) {
+      all.next_global_id = std::max(all.next_global_id, most);
+    for (int iteration = 1; iteration <= kDistributedIterations; ++iteration) {
       const double fraction = gradual_fraction(iteration, steps);
       DistributedIteration figures = iteration == 1 ? first : DistributedIteration{};
       figures.iteration = iteration;
@@ -229,12 +166,12 @@ struct WholeMeshIterations {
       const auto partway = [&](double to) { return whole_metric ? whole_metric(to) : near->partway(to); };
       const AdaptationMetric<D> iteration_metric = partway(fraction);
       std::optional<AdaptationMetric<D>> next;
-      if (iteration + 1 < kDistributedIterations) next = partway(gradual_fraction(iteration + 1, steps));
+      if (iteration < kDistributedIterations) next = partway(gradual_fraction(iteration + 1, steps));
       const PeerIteration<D> step{iteration_metric, geometry, settings, partition_seed, next ? &*next : nullptr};
-      PeerIterationResult result = run_peer_iteration(part, next_global_id, step, figures);
+      const PeerIterationResult result = run_peer_iteration(part, all.next_global_id, step, figures);
       all.run.passes.insert(all.run.passes.end(), result.run.passes.begin(), result.run.passes.end());
       all.run.caps_removed += result.run.caps_removed;
-      all.interface_vertices = std::move(result.interface_vertices);
+      if (iteration == kDistributedIterations) all.seeds = last_run_seeds(part.mesh, iteration_metric);
       if (process_rank() == 0 && on_iteration) on_iteration(figures);
     }
     return all;
@@ -251,25 +188,73 @@ std::vector<char> flags_of_global_ids(const MeshPart<D>& part, const std::vector
   return flags;
 }
 
-// The last runs, serial on rank 0's merged mesh after the band. The band's parts kept their own
-// interfaces (`old_interface`) frozen where they cross the band: the first run tries first only
-// the region around them, the poor elements and the edges outside the unit window that the parts,
-// stopped early, left elsewhere. The second starts from what that run left (its poor elements and
-// edges outside the unit window) with its window open again: a run that closed its window early
-// cannot collapse what it made later. Their passes, in order; the second's flags.
+// The last runs, serial on rank 0's part: the elements within kInterfaceBandRings rings of every
+// part's seeds (their interfaces, poor elements and unfinished edges). The first tries first the
+// seeds' region, the second what the first left (its poor elements and edges outside the unit
+// window) with its window open again: a run that closed its window early cannot collapse what it made
+// later. The part's border with the others' parts stays frozen. Their passes, in order; the
+// second's flags.
 template <int D>
-AdaptationRun last_serial_runs(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
-                               const AdaptationSettings& settings, const std::vector<char>& old_interface) {
+AdaptationRun last_serial_runs(MeshPart<D>& part, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
+                               const AdaptationSettings& settings, const std::vector<char>& seeds) {
   AdaptationSettings last = settings;
-  last.first_pass_vertices = around_interfaces(mesh, old_interface);
+  last.split_at_required_vertices = false;
+  last.first_pass_vertices = around_interfaces(part.mesh, seeds);
   last.first_pass_unfinished_edges = true;
-  AdaptationRun run = adapt_to_metric(mesh, metric, geometry, last);
-  last.first_pass_vertices.assign(static_cast<std::size_t>(mesh.vertex_count()), 0);
-  const AdaptationRun again = adapt_to_metric(mesh, metric, geometry, last);
+  AdaptationRun run = adapt_part_measured(part, metric, geometry, last).first;
+  last.first_pass_vertices.assign(static_cast<std::size_t>(part.mesh.vertex_count()), 0);
+  const AdaptationRun again = adapt_part_measured(part, metric, geometry, last).first;
   run.passes.insert(run.passes.end(), again.passes.begin(), again.passes.end());
   run.converged = again.converged;
   run.stopped_with_window_open = again.stopped_with_window_open;
   run.caps_removed += again.caps_removed;
+  return run;
+}
+
+// Rank 0's job in the last runs: its metric (the target on the whole back mesh), the geometry and the
+// serial loop's settings.
+template <int D>
+struct RootRuns {
+  const AdaptationMetric<D>& metric;
+  const BoundaryGeometry<D>* geometry;
+  const AdaptationSettings& settings;
+};
+
+// Collective, after the whole-mesh iterations (docs/distributed.md §The last runs): the elements
+// within kInterfaceBandRings rings of each part's `seeds` go to rank 0 (the others stay), rank 0
+// runs the last serial runs there, then every element goes to rank 0. Returns rank 0's runs; their
+// figures in rank 0's `figures`.
+template <int D>
+AdaptationRun last_runs_on_root(MeshPart<D>& part, const std::vector<char>& seeds, Index next_global_id, const RootRuns<D>* root,
+                                DistributedIteration& figures) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<char> near = elements_near(part.mesh, seeds, kInterfaceBandRings);
+  std::vector<int> destination(near.size(), process_rank());
+  for (std::size_t k = 0; k < near.size(); ++k)
+    if (near[k]) destination[k] = 0;
+  figures.region_elements = sum_over_processes(static_cast<Index>(std::count(near.begin(), near.end(), 1)));
+  std::vector<std::vector<Index>> seed_ids(static_cast<std::size_t>(process_count()));
+  for (Index v = 0; v < part.mesh.vertex_count(); ++v)
+    if (seeds[v]) seed_ids[0].push_back(part.global_ids[v]);
+  const std::vector<Index> ids = exchange_values_joined(seed_ids);
+  long long bytes_sent = 0;
+  part = migrate_part(part, destination, &bytes_sent);
+  AdaptationRun run;
+  PartFigures own{0, peak_resident_bytes()};
+  if (root) {
+    const auto runs_start = std::chrono::steady_clock::now();
+    run = last_serial_runs(part, root->metric, root->geometry, root->settings, flags_of_global_ids(part, ids));
+    own = {seconds_since(runs_start), peak_resident_bytes()};
+    for (Index& global : part.global_ids)
+      if (global == kNoIndex) global = next_global_id++;
+  }
+  for (const PartFigures& each : all_gather_value(own)) {
+    figures.part_seconds.push_back(each.seconds);
+    figures.peak_memory_bytes.push_back(each.peak_memory_bytes);
+  }
+  part = migrate_part(part, std::vector<int>(static_cast<std::size_t>(part.mesh.element_count()), 0), &bytes_sent);
+  figures.bytes_sent += sum_over_processes(bytes_sent);
+  figures.seconds = seconds_since(start);
   return run;
 }
 
@@ -310,24 +295,18 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   MeshPart<D> part = migrate_part(whole_mesh_part(std::move(mesh)), part_of, &first.bytes_sent);
   first.seconds_partition = first.seconds = seconds_since(start);
   partition_first(part, scattered_by_part(loads, part_of), partition_seed, first);
-  const PeerIterationResult peer = whole.run(part, home, first, on_iteration);
-  AdaptationRun run = peer.run;
-  std::vector<char> old_interface = flags_of_global_ids(part, peer.interface_vertices);
+  const WholeMeshResult whole_result = whole.run(part, home, first, on_iteration);
+  AdaptationRun run = whole_result.run;
+  DistributedIteration last_figures;
+  last_figures.iteration = kDistributedIterations + 1;
+  last_figures.metric_fraction = 1;
+  const RootRuns<D> root{metric, geometry, settings};
+  const AdaptationRun last = last_runs_on_root(part, whole_result.seeds, whole_result.next_global_id, &root, last_figures);
   mesh = whole_mesh_of(std::move(part));
   mesh.build_topology();
-  // The band, from rank 0.
-  const double band_fraction = gradual_fraction(kDistributedIterations, steps);
-  RootIteration<D> root{
-      mesh, metric.partway_from(input_metric, band_fraction), geometry, whole.settings, partition_seed, std::move(old_interface), {},
-      &home};
-  root.figures.iteration = kDistributedIterations;
-  root.figures.metric_fraction = band_fraction;
-  const AdaptationRun band = root.run(root.band_partition(), std::chrono::steady_clock::now());
-  run.passes.insert(run.passes.end(), band.passes.begin(), band.passes.end());
-  run.caps_removed += band.caps_removed;
-  if (on_iteration) on_iteration(root.figures);
-  for (int p = 1; p < process_count(); ++p) send_bytes(p, {});  // stop
-  const AdaptationRun last = last_serial_runs(mesh, metric, geometry, settings, root.old_interface);
+  last_figures.vertices = mesh.vertex_count();
+  last_figures.elements = mesh.element_count();
+  if (on_iteration) on_iteration(last_figures);
   run.passes.insert(run.passes.end(), last.passes.begin(), last.passes.end());
   run.converged = last.converged;
   run.stopped_with_window_open = last.stopped_with_window_open;
@@ -347,18 +326,8 @@ void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>& analy
   MeshPart<D> part = migrate_part(MeshPart<D>{}, {});
   DistributedIteration unused;  // (rank 0 keeps the figures)
   partition_first(part, scattered_by_part({}, {}), whole.partition_seed, unused);
-  whole.run(part, home, {}, {});
-  // The band: the part rank 0 sends, until it says stop.
-  for (;;) {
-    const std::vector<double> fraction = receive_values<double>(0);
-    if (fraction.size() != 1) return;  // stop
-    part = unpack_part<D>(receive_bytes(0));
-    const std::unique_ptr<ShareMetric<D>> near = gathered_metric(home, recipe, part.mesh, unused);
-    const auto [run, figures] = adapt_part_measured(part, near->partway(fraction[0]), geometry, whole.settings);
-    send_bytes(0, pack_part(part.mesh, std::span<const Index>(part.global_ids)));
-    send_bytes(0, pack_run(run));
-    send_values(0, std::vector<PartFigures>{figures});
-  }
+  const WholeMeshResult whole_result = whole.run(part, home, {}, {});
+  last_runs_on_root<D>(part, whole_result.seeds, whole_result.next_global_id, nullptr, unused);
 }
 
 template AdaptationRun adapt_distributed(Mesh<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*, const AdaptationSettings&,

@@ -2,8 +2,9 @@
 // cuts the mesh along a space-filling curve and scatters the pieces, which PT-Scotch partitions by
 // the metric's predicted output per element; each process adapts its part with the interfaces
 // frozen, and PT-Scotch cuts the distributed mesh again
-// so that the old interfaces fall inside parts, the elements migrating between processes; after the
-// third time rank 0 gathers the mesh, and only a band around the last interfaces is adapted.
+// so that the old interfaces fall inside parts, the elements migrating between processes. After the
+// fourth time the elements near the last interfaces and the poor elements go to rank 0, which runs
+// the serial loop there with the rest frozen; then rank 0 gathers the mesh.
 #pragma once
 
 #include <functional>
@@ -14,27 +15,27 @@
 
 namespace hocav {
 
-// Remeshing iterations: the first kDistributedIterations - 1 cut the whole mesh (ParMmg's scheme;
-// its default is 3 iterations), the last only a band around the last interfaces, whose own frozen
-// boundary lies in the adapted region (docs/distributed.md §The scheme).
+// Whole-mesh remeshing iterations (ParMmg's scheme; its default is 3 iterations), each partitioned
+// so that the last one's interfaces fall inside parts (docs/distributed.md §The scheme).
 constexpr int kDistributedIterations = 4;
 
-// The band of the last iteration: the elements within this many rings of the last interfaces'
-// vertices (one ring holds every element of a frozen vertex's ball; a second gives its loop room).
+// The region of the last runs: the elements within this many rings of the last interfaces' vertices
+// and of the poor elements' (one ring holds every element of a frozen vertex's ball; a second gives
+// the loop room), whose own frozen border lies in the adapted region.
 constexpr int kInterfaceBandRings = 2;
 
 // On rank 0: adapts `mesh` (P1, with topology) with every process (the others in
 // serve_distributed_adaptation), the same interface as adapt_to_metric. `mesh` is the metric's back
 // mesh, if it has one: the iterations' gradual metric starts from its own (docs/distributed.md). The mesh is compact and has
 // its topology on return; the run's passes are each iteration's, summed over the parts, then those
-// of the last serial run from the last interfaces (docs/distributed.md). `partition_seed`: the
+// of the last serial runs near the last interfaces (docs/distributed.md). `partition_seed`: the
 // partitioner's (element_partition.hpp; 0: its own).
 template <int D>
 AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                                 const AdaptationSettings& settings, std::int64_t partition_seed,
                                 const std::function<void(const DistributedIteration&)>& on_iteration);
 
-// On the other ranks: adapts the parts rank 0 sends until it says stop, with the metric remade on
+// On the other ranks: adapts their parts in the whole-mesh iterations, with the metric remade on
 // the shares of the back mesh around them (docs/distributed.md §The back mesh in shares) from what
 // rank 0 broadcasts (the size bounds, the Hausdorff distance) and `analytic`, the job's analytic
 // metric if it has one. `geometry` is made from the input's boundary as rank 0's; `settings` is the

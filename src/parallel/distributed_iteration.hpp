@@ -8,14 +8,17 @@
 
 namespace hocav {
 
+// The whole-mesh iterations are 1 to kDistributedIterations; the entry after them is the last runs
+// on rank 0 (docs/distributed.md §The last runs).
 struct DistributedIteration {
   int iteration = 0;                 // 1-based
   double metric_fraction = 1;        // of the way from the input's own metric to the target
-  Index vertices = 0, elements = 0;  // of the merged mesh
+  Index vertices = 0, elements = 0;  // of the whole mesh after it
   Index interface_vertices = 0;      // shared by parts in the iteration
   Index interface_faces = 0;         // between parts, each counted once
+  Index region_elements = 0;         // the last runs': the elements gathered on rank 0 for them
   // What the processes sent one another, without the input's broadcast: the migrations (the whole-mesh
-  // iterations), or the parts out and back (the band).
+  // iterations; the last runs' region to rank 0, then every element to rank 0).
   long long bytes_sent = 0;
   // The shares of the metric's back mesh the processes sent one another for their parts.
   long long back_mesh_bytes = 0;

@@ -140,110 +140,6 @@ std::vector<int> own_part_last(int count) {
   return order;
 }
 
-namespace {
-
-// Where each vertex of the merged mesh comes from, and each part vertex's id in it.
-template <int D>
-struct VertexMerge {
-  std::vector<std::pair<int, Index>> source;   // per merged vertex: (part, local id)
-  std::vector<std::vector<Index>> merged_ids;  // per part, per local vertex
-  std::vector<Index> old_ids;                  // per old vertex: its merged id, kNoIndex if gone
-
-  VertexMerge(Index old_count, const std::vector<MeshPart<D>>& parts) : merged_ids(parts.size()) {
-    std::vector<std::pair<int, Index>> old_source(static_cast<std::size_t>(old_count), {-1, kNoIndex});
-    for (std::size_t p = 0; p < parts.size(); ++p)
-      for (Index v = 0; v < parts[p].mesh.vertex_count(); ++v)
-        if (const Index g = parts[p].global_ids[v]; g != kNoIndex && old_source[g].first < 0) old_source[g] = {static_cast<int>(p), v};
-    old_ids.assign(old_source.size(), kNoIndex);
-    for (std::size_t g = 0; g < old_source.size(); ++g)
-      if (old_source[g].first >= 0) {
-        old_ids[g] = static_cast<Index>(source.size());
-        source.push_back(old_source[g]);
-      }
-    for (std::size_t p = 0; p < parts.size(); ++p)
-      for (Index v = 0; v < parts[p].mesh.vertex_count(); ++v) {
-        const Index g = parts[p].global_ids[v];
-        if (g == kNoIndex) source.emplace_back(static_cast<int>(p), v);
-        merged_ids[p].push_back(g == kNoIndex ? static_cast<Index>(source.size() - 1) : old_ids[g]);
-      }
-  }
-};
-
-template <int D>
-struct PartMerger {
-  const Mesh<D>& old_mesh;
-  const std::vector<MeshPart<D>>& parts;
-  const VertexMerge<D>& vertices;
-  MergedMesh<D>& out;
-  std::unordered_set<std::uint64_t> old_lines, merged_lines;
-  std::vector<Index> first_element;  // per part: the merged id of its first element
-
-  template <std::size_t N>
-  std::array<Index, N> mapped(std::size_t p, const std::array<Index, N>& ids) const {
-    std::array<Index, N> result{};
-    for (std::size_t i = 0; i < N; ++i) result[i] = vertices.merged_ids[p][ids[i]];
-    return result;
-  }
-
-  void add_vertices() {
-    for (const auto& [p, v] : vertices.source) out.mesh.add_vertex(parts[p].mesh.vertex(v), parts[p].mesh.vertex_ref(v));
-    const EntityTags<D> old_tags(old_mesh);
-    for (Index g = 0; g < old_mesh.vertex_count(); ++g) {
-      if (vertices.old_ids[g] == kNoIndex) continue;
-      if (old_tags.corner[g]) out.mesh.corners().push_back(vertices.old_ids[g]);
-      if (old_tags.required_vertex[g]) out.mesh.required_vertices().push_back(vertices.old_ids[g]);
-    }
-  }
-
-  void add_part(std::size_t p) {
-    const Mesh<D>& part = parts[p].mesh;
-    const EntityTags<D> tags(part);
-    first_element.push_back(out.mesh.element_count());
-    for (Index v : part.corners())
-      if (parts[p].global_ids[v] == kNoIndex) out.mesh.corners().push_back(vertices.merged_ids[p][v]);
-    for (Index k = 0; k < part.element_count(); ++k) out.mesh.add_element(mapped(p, part.element(k)), part.element_ref(k));
-    for (Index f = 0; f < part.facet_count(); ++f)
-      if (part.facet_ref(f) != kInterfaceRef) add_tagged_facet(out.mesh, mapped(p, part.facet(f)), part.facet_ref(f), tags, f);
-    if constexpr (D == 3) add_lines(p, tags, interface_edge_keys(part));
-  }
-
-  // A line on an interface edge that the whole mesh had not was made by the part's classification.
-  void add_lines(std::size_t p, const EntityTags<D>& tags, const std::unordered_set<std::uint64_t>& interface_edges) {
-    const Mesh<D>& part = parts[p].mesh;
-    const std::vector<Index>& global = parts[p].global_ids;
-    for (Index l = 0; l < part.line_count(); ++l) {
-      const auto& [a, b] = part.line(l);
-      if (interface_edges.contains(Mesh<D>::edge_key(a, b)) && !old_lines.contains(Mesh<D>::edge_key(global[a], global[b]))) continue;
-      const auto merged = mapped(p, part.line(l));
-      if (merged_lines.insert(Mesh<D>::edge_key(merged[0], merged[1])).second) add_tagged_line(out.mesh, merged, part.line_ref(l), tags, l);
-    }
-  }
-
-  // The parts' P2 nodes. An edge on an interface has a node on both sides, frozen there: they must
-  // be the same point, or the merged mesh would not conform.
-  void add_nodes() {
-    out.mesh.make_p2();
-    std::vector<char> placed(static_cast<std::size_t>(out.mesh.edge_count()), 0);
-    for (std::size_t p = 0; p < parts.size(); ++p)
-      for (Index k = 0; k < parts[p].mesh.element_count(); ++k)
-        for (int e = 0; e < Simplex<D>::kEdges; ++e) {
-          const Index edge = out.mesh.element_edge(first_element[p] + k, e);
-          const Vec<D>& node = parts[p].mesh.edge_node(parts[p].mesh.element_edge(k, e));
-          if (placed[edge] && !(out.mesh.edge_node(edge) == node))
-            throw Error("merging mesh parts: two parts disagree on an interface edge's node");
-          out.mesh.edge_node(edge) = node;
-          placed[edge] = 1;
-        }
-  }
-};
-
-template <int D>
-bool any_p2(const std::vector<MeshPart<D>>& parts) {
-  return std::any_of(parts.begin(), parts.end(), [](const MeshPart<D>& part) { return part.mesh.is_p2(); });
-}
-
-}  // namespace
-
 template <int D>
 MeshPart<D> whole_mesh_part(Mesh<D> mesh) {
   MeshPart<D> part;
@@ -265,19 +161,6 @@ Mesh<D> whole_mesh_of(MeshPart<D> part) {
   for (Index v = 0; v < part.mesh.vertex_count(); ++v)
     if (part.pinned[v] & kPinnedByMesh) part.mesh.required_vertices().push_back(v);
   return std::move(part.mesh);
-}
-
-template <int D>
-MergedMesh<D> merge_parts(const Mesh<D>& old_mesh, const std::vector<MeshPart<D>>& parts) {
-  const VertexMerge<D> vertices(old_mesh.vertex_count(), parts);
-  MergedMesh<D> out;
-  PartMerger<D> merger{old_mesh, parts, vertices, out, {}, {}, {}};
-  for (const auto& [a, b] : old_mesh.lines()) merger.old_lines.insert(Mesh<D>::edge_key(a, b));
-  merger.add_vertices();
-  for (std::size_t p = 0; p < parts.size(); ++p) merger.add_part(p);
-  if (any_p2(parts)) merger.add_nodes();
-  out.old_vertex_ids = vertices.old_ids;
-  return out;
 }
 
 template <int D>
@@ -353,8 +236,6 @@ template MeshPart<2> whole_mesh_part(Mesh<2>);
 template MeshPart<3> whole_mesh_part(Mesh<3>);
 template Mesh<2> whole_mesh_of(MeshPart<2>);
 template Mesh<3> whole_mesh_of(MeshPart<3>);
-template MergedMesh<2> merge_parts(const Mesh<2>&, const std::vector<MeshPart<2>>&);
-template MergedMesh<3> merge_parts(const Mesh<3>&, const std::vector<MeshPart<3>>&);
 template Index interface_facet_count(const Mesh<2>&);
 template Index interface_facet_count(const Mesh<3>&);
 

@@ -1,6 +1,6 @@
 // Parts of a mesh for the processes of a distributed adaptation (docs/distributed.md §Parts): the
 // split of a mesh along an element partition, with the faces between parts kept as required
-// facets, and the merge of the adapted parts by global vertex ids.
+// facets; the whole mesh as a part and back; a curved part's nodes written back by global ids.
 #pragma once
 
 #include <array>
@@ -70,22 +70,6 @@ MeshPart<D> whole_mesh_part(Mesh<D> mesh);
 // Throws Error when the part has an interface facet left.
 template <int D>
 Mesh<D> whole_mesh_of(MeshPart<D> part);
-
-template <int D>
-struct MergedMesh {
-  Mesh<D> mesh;                       // P1, or P2 when a part is, without topology
-  std::vector<Index> old_vertex_ids;  // per vertex of the old mesh: its id here, kNoIndex if no part kept it
-};
-
-// Merges adapted `parts` (compact) of `old_mesh`: the vertices they share by their global ids,
-// numbered first in `old_mesh`'s order, then the parts' new vertices part by part; the elements and
-// the facets part by part, without the interface facets; each feature line once. The tags of old
-// vertices (corners, required) are `old_mesh`'s: a part's classification tags its interface
-// vertices, which are no corners of the whole; feature lines on interface edges are kept only if
-// `old_mesh` had them, for the same reason. P2 parts give a P2 mesh with their nodes; throws Error
-// when two parts give an edge different nodes (an interface edge that was not frozen on both sides).
-template <int D>
-MergedMesh<D> merge_parts(const Mesh<D>& old_mesh, const std::vector<MeshPart<D>>& parts);
 
 // A curved part's edge node by the edge's ends in the mesh the part came from, and whether the edge
 // lies on one of the part's interface facets (frozen on both sides: its node comes back unchanged).

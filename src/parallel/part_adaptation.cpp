@@ -15,7 +15,7 @@ namespace {
 // Every iteration's parts split no edge at an interface vertex and stop this many passes after their
 // loop's window closes: next to a frozen interface much coarser than the metric, splits toward it
 // never end, and what a part would do there a later iteration (with that interface inside a part),
-// the band or the last serial run does better (docs/distributed.md).
+// or the last serial runs do better (docs/distributed.md).
 constexpr int kEarlyPassesAfterWindowCloses = 2;
 
 // Attribute columns of a part's vertices through its loop: 0 for a new vertex, else the global id + 1

@@ -4,6 +4,8 @@
 // pieces makes each process's own.
 #pragma once
 
+#include <functional>
+#include <span>
 #include <vector>
 
 #include "base/error.hpp"
@@ -63,6 +65,13 @@ struct Shipment {
     return s;
   }
 };
+
+// Packs every element of `part` (with its topology, global ids and pinned flags) for its destination,
+// element k for destination[k] in [0, destinations): `take` gets each destination's shipment in
+// destination order, one at a time (an empty one for a destination no element goes to).
+template <int D>
+void pack_shipments(const MeshPart<D>& part, std::span<const int> destination, int destinations,
+                    const std::function<void(int, const Shipment<D>&)>& take);
 
 // The part a process builds from the pieces it receives, in rank order: its vertices in the order of
 // their global ids, its elements piece by piece in each piece's order, the mesh's facets, then a

@@ -53,7 +53,7 @@ std::vector<std::vector<std::byte>> gathered_on_root(std::vector<std::byte> byte
   return incoming;
 }
 
-// The merged mesh's figures from the parts: vertices (those on interfaces once), elements, interfaces.
+// The whole mesh's figures from the parts: vertices (those on interfaces once), elements, interfaces.
 template <int D>
 void count_parts(const MeshPart<D>& part, const std::vector<Index>& shared, DistributedIteration& figures) {
   figures.interface_vertices = distinct_count(shared);
@@ -86,16 +86,9 @@ PeerIterationResult run_peer_iteration(MeshPart<D>& part, Index& next_global_id,
 
   const auto moving = std::chrono::steady_clock::now();
   long long bytes_sent = 0;
-  if (iteration.next_metric) {
+  if (iteration.next_metric)
     part = repartition(part, expected_element_counts(part.mesh, *iteration.next_metric), on_interface, iteration.partition_seed,
                        &bytes_sent);
-  } else {
-    for (const std::vector<std::byte>& bytes : gathered_on_root(bytes_of_values(shared))) {
-      const std::vector<Index> ids = values_of_bytes<Index>(bytes);
-      result.interface_vertices.insert(result.interface_vertices.end(), ids.begin(), ids.end());
-    }
-    part = migrate_part(part, std::vector<int>(static_cast<std::size_t>(part.mesh.element_count()), 0), &bytes_sent);
-  }
   figures.bytes_sent += sum_over_processes(bytes_sent);
   figures.seconds_partition += seconds_since(moving);
   figures.seconds += seconds_since(start);

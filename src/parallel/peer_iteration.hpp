@@ -1,8 +1,8 @@
 // The whole-mesh iterations of the distributed loop, peer to peer (docs/distributed.md §The scheme):
 // every process adapts its part and numbers its new vertices; then PT-Scotch cuts the distributed
 // dual graph again, with the faces near the iteration's interfaces heavy, and the elements migrate
-// straight between processes. No process holds more than its part until the last iteration gathers
-// the mesh on rank 0 for the band.
+// straight between processes. No process holds more than its part; the last iteration's parts stay
+// where they are, for the last runs (distributed_adaptation.hpp).
 #pragma once
 
 #include <cstdint>
@@ -21,15 +21,13 @@ struct PeerIteration {
   const AdaptationSettings& settings;  // the parts' loop's (part_settings)
   std::int64_t partition_seed;
   // The next iteration's metric, whose predicted output per element balances the next partition;
-  // null for the last whole-mesh iteration, which gathers every element on rank 0 instead.
+  // null for the last whole-mesh iteration, whose parts stay where they are.
   const AdaptationMetric<D>* next_metric;
 };
 
 // What an iteration leaves on rank 0 (empty elsewhere).
 struct PeerIterationResult {
   AdaptationRun run;  // the parts' runs, combined
-  // The global ids of the vertices on the iteration's interfaces, when it gathered the mesh.
-  std::vector<Index> interface_vertices;
 };
 
 // Every process at once: adapts `part` (with global ids and pinned flags, no topology), numbers its

@@ -1,5 +1,5 @@
-// Split and merge of mesh parts (src/parallel/mesh_parts.hpp) and their messages
-// (src/parallel/part_message.hpp), without MPI: a mesh split along a partition and merged back
+// Split and gathering of mesh parts (src/parallel/mesh_parts.hpp, part_shipment.hpp) and their messages
+// (src/parallel/part_message.hpp), without MPI: a mesh split along a partition and gathered back
 // unchanged is the same mesh; every part is a consistent mesh whose interface faces are required
 // facets; a part survives its message unchanged.
 #include <gtest/gtest.h>
@@ -16,6 +16,7 @@
 #include "mesh/consistency.hpp"
 #include "parallel/mesh_parts.hpp"
 #include "parallel/part_message.hpp"
+#include "parallel/part_shipment.hpp"
 
 namespace hocav {
 namespace {
@@ -55,13 +56,24 @@ std::set<std::vector<double>> tagged_points(const Mesh<3>& mesh, const std::vect
   return out;
 }
 
-TEST(MeshParts, SplitAndMergeGiveTheSameMesh) {
+// The parts gathered into one as migrate_part gathers them on one process: every part's shipment, in
+// order, made into one part, which is the whole mesh.
+Mesh<3> gathered(std::vector<MeshPart<3>> parts) {
+  std::vector<Shipment<3>> shipments;
+  for (MeshPart<3>& part : parts) {
+    part.mesh.build_topology();
+    const std::vector<int> to_one(static_cast<std::size_t>(part.mesh.element_count()), 0);
+    pack_shipments<3>(part, to_one, 1, [&](int, const Shipment<3>& shipment) { shipments.push_back(shipment); });
+  }
+  return whole_mesh_of(part_of_shipments(shipments));
+}
+
+TEST(MeshParts, SplitAndGatheredGiveTheSameMesh) {
   for (int parts : {1, 2, 4}) {  // slabs along the grid planes of the 4 x 4 x 4 cells
     SlicedCube cube(parts);
     const auto split = split_mesh(cube.mesh, cube.part_of, parts);
     ASSERT_EQ(split.size(), static_cast<std::size_t>(parts));
-    const MergedMesh<3> merged = merge_parts(cube.mesh, split);
-    const Mesh<3>& out = merged.mesh;
+    const Mesh<3> out = gathered(split);
     ASSERT_EQ(out.vertex_count(), cube.mesh.vertex_count());
     for (Index v = 0; v < out.vertex_count(); ++v) EXPECT_EQ(out.vertex(v), cube.mesh.vertex(v)) << v;
     EXPECT_EQ(placed(out, out.elements(), out.element_refs()), placed(cube.mesh, cube.mesh.elements(), cube.mesh.element_refs()));
@@ -71,29 +83,7 @@ TEST(MeshParts, SplitAndMergeGiveTheSameMesh) {
     EXPECT_EQ(out.ridges().size(), cube.mesh.ridges().size());
     EXPECT_TRUE(out.required_vertices().empty());
     EXPECT_TRUE(out.required_triangles().empty());
-    for (Index v = 0; v < cube.mesh.vertex_count(); ++v) EXPECT_EQ(merged.old_vertex_ids[v], v);
   }
-}
-
-TEST(MeshParts, OldVertexIdsFollowTheMergeAndMissTheVerticesOfNoPart) {
-  SlicedCube cube(4);
-  for (int& part : cube.part_of)
-    if (part == 1 || part == 2) part = -1;  // the two middle slabs in no part: the plane x = 0.5 is lost
-  const MergedMesh<3> merged = merge_parts(cube.mesh, split_mesh(cube.mesh, cube.part_of, 4));
-  ASSERT_EQ(merged.old_vertex_ids.size(), static_cast<std::size_t>(cube.mesh.vertex_count()));
-  int lost = 0;
-  for (Index v = 0; v < cube.mesh.vertex_count(); ++v) {
-    const Index id = merged.old_vertex_ids[v];
-    const bool on_lost_plane = cube.mesh.vertex(v)[0] == 0.5;
-    EXPECT_EQ(id == kNoIndex, on_lost_plane) << v;
-    if (id == kNoIndex) {
-      ++lost;
-      continue;
-    }
-    ASSERT_LT(id, merged.mesh.vertex_count());
-    EXPECT_EQ(merged.mesh.vertex(id), cube.mesh.vertex(v)) << v;
-  }
-  EXPECT_EQ(lost, 25) << "a 5 x 5 vertex plane";
 }
 
 TEST(MeshParts, PartsAreConsistentWithRequiredInterfaces) {
@@ -120,7 +110,7 @@ TEST(MeshParts, PartsAreConsistentWithRequiredInterfaces) {
 
 // Two cubes sharing an edge, a cube in each part: no interface face between them, yet each part
 // holds one side of the shared edge, so its vertices are required in both (a part's loop must
-// neither split the edge on its side nor move them); merged back, they are not required.
+// neither split the edge on its side nor move them); gathered back, they are not required.
 TEST(MeshParts, NonManifoldPlacesAreRequiredInEveryPart) {
   Mesh<3> mesh = mesh_test::cubes_sharing_an_edge(2);
   mesh.build_topology();
@@ -134,7 +124,7 @@ TEST(MeshParts, NonManifoldPlacesAreRequiredInEveryPart) {
       EXPECT_EQ(part.mesh.vertex(v)[1], 1);
     }
   }
-  EXPECT_TRUE(merge_parts(mesh, parts).mesh.required_vertices().empty());
+  EXPECT_TRUE(gathered(parts).required_vertices().empty());
 }
 
 // The whole mesh as one part (the scatter's start, the gather's end: part_migration.hpp): pinned by
@@ -200,7 +190,7 @@ Mesh<3> curved_cube(const SlicedCube& cube) {
   return mesh;
 }
 
-TEST(MeshParts, P2NodesGoThroughSplitMessagesAndMerge) {
+TEST(MeshParts, P2NodesGoThroughSplitMessagesAndGathering) {
   SlicedCube cube(3);
   const Mesh<3> mesh = curved_cube(cube);
   std::vector<MeshPart<3>> parts = split_mesh(mesh, cube.part_of, 3);
@@ -214,27 +204,15 @@ TEST(MeshParts, P2NodesGoThroughSplitMessagesAndMerge) {
     part = unpack_part<3>(bytes);
     ASSERT_TRUE(part.mesh.is_p2());
     EXPECT_EQ(pack_part(part.mesh, std::span<const Index>(part.global_ids)), bytes) << "byte for byte";
+    part.pinned.assign(part.global_ids.size(), 0);  // (a message carries none)
   }
-  const Mesh<3> merged = merge_parts(mesh, parts).mesh;
-  ASSERT_TRUE(merged.is_p2());
-  ASSERT_EQ(merged.edge_count(), mesh.edge_count());
-  for (Index e = 0; e < merged.edge_count(); ++e) {  // no new vertices: the merge keeps the mesh's vertex ids
-    const auto [a, b] = merged.edge_vertices(e);
-    EXPECT_EQ(merged.edge_node(e), mesh.edge_node(mesh.find_edge(a, b))) << a << ' ' << b;
+  const Mesh<3> whole = gathered(parts);
+  ASSERT_TRUE(whole.is_p2());
+  ASSERT_EQ(whole.edge_count(), mesh.edge_count());
+  for (Index e = 0; e < whole.edge_count(); ++e) {  // every vertex in a part: the mesh's vertex ids
+    const auto [a, b] = whole.edge_vertices(e);
+    EXPECT_EQ(whole.edge_node(e), mesh.edge_node(mesh.find_edge(a, b))) << a << ' ' << b;
   }
-}
-
-TEST(MeshParts, PartsThatDisagreeOnAnInterfaceNodeAreRefused) {
-  SlicedCube cube(2);
-  const Mesh<3> mesh = curved_cube(cube);
-  std::vector<MeshPart<3>> parts = split_mesh(mesh, cube.part_of, 2);
-  EXPECT_NO_THROW(merge_parts(mesh, parts));
-  Mesh<3>& part = parts[1].mesh;
-  const auto interface = std::find(part.facet_refs().begin(), part.facet_refs().end(), kInterfaceRef);
-  ASSERT_NE(interface, part.facet_refs().end());
-  const auto& facet = part.facet(static_cast<Index>(interface - part.facet_refs().begin()));
-  part.edge_node(part.find_edge(facet[0], facet[1]))[2] += 1e-9;
-  EXPECT_THROW(merge_parts(mesh, parts), Error);
 }
 
 // Parts of the middle slab and of the last, the first slab in no part; each part moves the nodes of
