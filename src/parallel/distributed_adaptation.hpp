@@ -35,7 +35,8 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
                                 const AdaptationSettings& settings, std::int64_t partition_seed,
                                 const std::function<void(const DistributedIteration&)>& on_iteration);
 
-// On the other ranks: adapts their parts in the whole-mesh iterations, with the metric remade on
+// On the other ranks: adapts their parts in the whole-mesh iterations, then sends rank 0 the last
+// runs' region and every element after them (adapt_distributed), with the metric remade on
 // the shares of the back mesh around them (docs/distributed.md §The back mesh in shares) from what
 // rank 0 broadcasts (the size bounds, the Hausdorff distance) and `analytic`, the job's analytic
 // metric if it has one. `geometry` is made from the input's boundary as rank 0's; `settings` is the
