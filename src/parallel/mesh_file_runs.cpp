@@ -186,6 +186,7 @@ class RunsWriter {
     const ArrivalGroups groups = grouped(arrived, [](const VertexRecord<D>& r) { return r.id; });
     const Offset offset = offset_of(static_cast<Index>(groups.count()));
     counts_.vertices = offset.total;
+    first_vertex_ = offset.before;
     std::vector<std::vector<VertexNumber>> answers = answers_for<VertexNumber>(arrived);
     for (std::size_t g = 0; g < groups.count(); ++g) {
       const Arrival first = groups.order[groups.starts[g]];
@@ -268,7 +269,7 @@ class RunsWriter {
   void encode_vertices() {
     vertices_ = corners_ = required_vertices_ = records();
     for (const VertexRecord<D>& row : vertex_rows_) write_point(vertices_, row.point, row.ref);
-    Index next = offset_of(static_cast<Index>(vertex_rows_.size())).before;
+    Index next = first_vertex_;
     for (const VertexRecord<D>& row : vertex_rows_) {
       if (row.flags & kCornerFlag) write_id(corners_, next);
       if (row.flags & kRequiredFlag) write_id(required_vertices_, next);
@@ -386,6 +387,7 @@ class RunsWriter {
   std::vector<char> shared_;                  // per part vertex, whether another part holds it
   std::vector<Index> node_number_;            // per part edge (P2), its node's file number (from 0)
   std::vector<VertexRecord<D>> vertex_rows_;  // the vertices this process writes, in order
+  Index first_vertex_ = 0;                    // the file number (from 0) of the first of them
   std::vector<Vec<D>> shared_nodes_;          // the nodes of shared edges this process writes
   ChunkRecords vertices_ = records(), nodes_ = records(), lines_ = records(), facets_ = records(), elements_ = records();
   ChunkRecords corners_ = records(), ridges_ = records(), required_vertices_ = records(), required_edges_ = records(),
