@@ -8,7 +8,6 @@
 #include "adapt/hausdorff_metric.hpp"
 #include "base/memory_budget.hpp"
 #include "base/stopwatch.hpp"
-#include "base/thread_pool.hpp"
 #include "geom/sym_eigen.hpp"
 #include "io/node_metrics.hpp"
 #include "mesh/input_check.hpp"
@@ -16,23 +15,6 @@
 #include "metric/gradation.hpp"
 
 namespace hocav {
-namespace {
-
-// On the pool's threads, in chunks that each start their back-mesh walk afresh: the same metrics for
-// any thread count.
-template <int D>
-std::vector<SymMat<D>> metrics_at_vertices(const Mesh<D>& mesh, const AdaptationMetric<D>& metric, int threads) {
-  const auto count = static_cast<std::size_t>(mesh.vertex_count());
-  std::vector<SymMat<D>> metrics(count);
-  ThreadPool pool(std::max(1, threads));
-  run_chunked(pool, count, 1024, [&](std::size_t begin, std::size_t end) {
-    Index hint = kNoIndex;
-    for (std::size_t v = begin; v < end; ++v) metrics[v] = metric.metric_at(mesh.vertex(static_cast<Index>(v)), hint);
-  });
-  return metrics;
-}
-
-}  // namespace
 
 template <int D>
 AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,

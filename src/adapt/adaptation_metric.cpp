@@ -5,6 +5,7 @@
 
 #include "adapt/hausdorff_metric.hpp"
 #include "base/error.hpp"
+#include "base/thread_pool.hpp"
 #include "geom/sym_eigen.hpp"
 #include "geom/sym_functions.hpp"
 #include "mesh/measure.hpp"
@@ -26,6 +27,7 @@ AdaptationMetric<D> AdaptationMetric<D>::partway_from(const MetricField<D>& star
     if (field && field->back_mesh().element_count() != start.back_mesh().element_count())
       throw Error("a gradual metric's start is not on the metric's back mesh");
   AdaptationMetric partway = *this;
+  if (fraction >= 1) return partway;  // the target itself, to the last bit
   partway.start_ = &start;
   partway.fraction_ = fraction;
   return partway;
@@ -79,6 +81,23 @@ template std::vector<double> expected_element_counts(const Mesh<2>&, const Adapt
 template std::vector<double> expected_element_counts(const Mesh<3>&, const AdaptationMetric<3>&);
 template double expected_element_count(const Mesh<2>&, const AdaptationMetric<2>&);
 template double expected_element_count(const Mesh<3>&, const AdaptationMetric<3>&);
+// On the pool's threads, in chunks that each start their back-mesh walk afresh: the same metrics for
+// any thread count.
+template <int D>
+std::vector<SymMat<D>> metrics_at_vertices(const Mesh<D>& mesh, const AdaptationMetric<D>& metric, int threads) {
+  const auto count = static_cast<std::size_t>(mesh.vertex_count());
+  std::vector<SymMat<D>> metrics(count);
+  ThreadPool pool(std::max(1, threads));
+  run_chunked(pool, count, 1024, [&](std::size_t begin, std::size_t end) {
+    Index hint = kNoIndex;
+    for (std::size_t v = begin; v < end; ++v) metrics[v] = metric.metric_at(mesh.vertex(static_cast<Index>(v)), hint);
+  });
+  return metrics;
+}
+
+template std::vector<SymMat<2>> metrics_at_vertices(const Mesh<2>&, const AdaptationMetric<2>&, int);
+template std::vector<SymMat<3>> metrics_at_vertices(const Mesh<3>&, const AdaptationMetric<3>&, int);
+
 template class AdaptationMetric<2>;
 template class AdaptationMetric<3>;
 

@@ -38,7 +38,7 @@ class AdaptationMetric {
   // This metric a fraction t ∈ [0, 1] of the way from `start`'s, log-Euclidean: log M_t =
   // (1 − t) log M_start + t log M (a distributed run's early iterations, docs/distributed.md §A
   // gradual metric). `start` must be on this metric's back mesh (they share hints) and outlive the
-  // result.
+  // result. A fraction of 1 gives this metric itself.
   AdaptationMetric partway_from(const MetricField<D>& start, double fraction) const;
 
   // What it is made of (a distributed run remakes it on a share of the back mesh): the analytic
@@ -69,6 +69,10 @@ std::vector<double> expected_element_counts(const Mesh<D>& input, const Adaptati
 // simplex's metric volume). For the memory check before a run.
 template <int D>
 double expected_element_count(const Mesh<D>& input, const AdaptationMetric<D>& metric);
+
+// `metric` at every vertex of `mesh`, on `threads` threads: the same for any count.
+template <int D>
+std::vector<SymMat<D>> metrics_at_vertices(const Mesh<D>& mesh, const AdaptationMetric<D>& metric, int threads);
 
 extern template class AdaptationMetric<2>;
 extern template class AdaptationMetric<3>;

@@ -6,7 +6,9 @@
 // Metric-based adaptation to a unit mesh (split, collapse, swap, smooth; boundary points on the
 // geometry), then, with --order 2, the curving of `hocav curve` in the same metric. Under
 // `mpirun -np N` (N > 1) the P1 loop and the curving are distributed (docs/distributed.md); rank 0
-// reads and writes, and runs the curved passes of --curved.
+// reads the input; a P1 Gamma output without --vtu is written in runs by the parts, any other by
+// rank 0, which also runs the curved passes of --curved.
+#include <chrono>
 #include <cstdint>
 #include <iostream>
 #include <memory>
@@ -14,6 +16,7 @@
 
 #include "adapt/adaptation_driver.hpp"
 #include "base/memory_budget.hpp"
+#include "base/stopwatch.hpp"
 #include "base/thread_pool.hpp"
 #include "cli/command_support.hpp"
 #include "cli/commands.hpp"
@@ -27,6 +30,7 @@
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_adaptation.hpp"
 #include "parallel/distributed_curving.hpp"
+#include "parallel/output_in_parts.hpp"
 #include "parallel/part_message.hpp"
 #include "report/curved_vtu.hpp"
 #include "surface/boundary_choice.hpp"
@@ -157,6 +161,14 @@ void print_iteration(const DistributedIteration& figures) {
   std::cerr << line.str();
 }
 
+// Prints each distributed iteration's figures (unless quiet) and keeps them in `iterations`.
+std::function<void(const DistributedIteration&)> iteration_printer(const AdaptOptions& o, std::vector<DistributedIteration>& iterations) {
+  return [&iterations, quiet = o.quiet](const DistributedIteration& figures) {
+    if (!quiet) print_iteration(figures);
+    iterations.push_back(figures);
+  };
+}
+
 // The boundary of `mesh` to every process, whose geometry is made from it (the same as rank 0's):
 // no other process holds the whole mesh (docs/distributed.md §What each process holds).
 template <int D>
@@ -169,10 +181,7 @@ void broadcast_boundary(const Mesh<D>& mesh) {
 // input's boundary sent first; its iterations' figures go to `iterations`.
 template <int D>
 void distribute(AdaptationJob<D>& job, const AdaptOptions& o, std::vector<DistributedIteration>& iterations) {
-  std::function<void(const DistributedIteration&)> on_iteration = [&iterations, quiet = o.quiet](const DistributedIteration& figures) {
-    if (!quiet) print_iteration(figures);
-    iterations.push_back(figures);
-  };
+  std::function<void(const DistributedIteration&)> on_iteration = iteration_printer(o, iterations);
   job.loop = [on_iteration, seed = o.partition_seed](Mesh<D>& adapted, const AdaptationMetric<D>& metric,
                                                      const BoundaryGeometry<D>* geometry, const AdaptationSettings& settings) {
     broadcast_boundary(adapted);
@@ -185,6 +194,22 @@ void distribute(AdaptationJob<D>& job, const AdaptOptions& o, std::vector<Distri
   };
 }
 
+// Whether a distributed run ends in its parts, which write the output in runs (docs/distributed.md
+// §The end in the parts): a P1 Gamma output without a .vtu; else rank 0 gathers the mesh.
+bool ends_in_parts(const AdaptOptions& o) {
+  const std::string extension = file_extension(o.output);
+  return process_count() > 1 && o.order == 1 && o.vtu.empty() && (extension == ".mesh" || extension == ".meshb");
+}
+
+// The end in the parts with `geometry` and `settings` (rank 0's or the job's), its figures to `output`.
+template <int D>
+PartsEnd<D> end_in_parts(const AdaptOptions& o, const BoundaryGeometry<D>* geometry, const AdaptationSettings& settings,
+                         std::optional<OutputInParts>& output) {
+  return [&o, geometry, &settings, &output](MeshPart<D>& part, const AdaptationMetric<D>& metric) {
+    output = finish_adaptation_in_parts(part, metric, geometry, settings, o.output, file_extension(o.output) == ".meshb");
+  };
+}
+
 // The other processes: the same job, serving rank 0's distributed loop with the geometry of the
 // input's boundary, then (order 2) its distributed curving with the geometry of the adapted mesh's.
 template <int D>
@@ -194,7 +219,10 @@ void serve_adaptation(const AdaptOptions& o, const std::vector<std::byte>& input
   job.pass_progress = {};
   {
     const auto geometry = job.geometry(unpack_part<D>(input_boundary).mesh);
-    serve_distributed_adaptation(job.analytic, geometry.get(), job_settings(job, 0));
+    const AdaptationSettings settings = job_settings(job, 0);
+    std::optional<OutputInParts> output;
+    serve_distributed_adaptation(job.analytic, geometry.get(), settings,
+                                 ends_in_parts(o) ? end_in_parts<D>(o, geometry.get(), settings, output) : PartsEnd<D>{});
   }  // one CAD model open at a time, as on rank 0
   if (!job.curving) return;
   std::vector<std::byte> bytes;
@@ -212,27 +240,9 @@ void serve_adaptation(const AdaptOptions& o) {
     serve_adaptation<3>(o, input_boundary);
 }
 
-template <int D>
-void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, OutputSet& outputs) {
-  prepare_boundary<D>(mesh, o.input, warn_on_stderr);
-  check_mesh_or_warn(mesh, o.input);  // (prepared before the parts are cut: each rank's geometry is the serial run's)
-  std::vector<SymMat<D>> metrics = vertex_metrics(mesh, file, o);
-  AdaptationJob<D> job = adaptation_job<D>(o);
-  std::vector<DistributedIteration> iterations;
-  if (process_count() > 1) distribute(job, o, iterations);
-  std::optional<CurvingProgress> progress;  // drawn on a terminal, unless quiet
-  job.before_curving = [&progress, &o](const Mesh<D>& adapted, CurvingOptions& curving) {
-    progress.emplace(adapted, curving.passes, !o.quiet);
-    progress->attach(curving);
-  };
-  AdaptedMesh<D> adapted = run_adaptation_job(mesh, std::move(metrics), job, o.input);
-  if (progress) progress->complete();
-  adapted.report.distributed_iterations = std::move(iterations);
-  const AdaptationReport& report = adapted.report;
+// The report, then the outputs committed and the summary printed.
+void finish_outputs(const AdaptOptions& o, const AdaptationReport& report, OutputSet& outputs) {
   warn_if_not_converged(o, report);
-
-  write_mesh_file(o.output, mesh);
-  if (!o.vtu.empty()) write_curved_vtu(o.vtu, mesh, *adapted.field);
   if (!o.report.empty()) {
     AtomicOutput out(o.report);
     write_adaptation_report_json(out.stream(), report);
@@ -244,6 +254,55 @@ void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, Ou
     write_adaptation_report_table(std::cout, report);
     if (report.curving) write_curving_report_table(std::cout, *report.curving);
   }
+}
+
+// Rank 0 of a run that ends in its parts (ends_in_parts): the job set up on the whole input as the
+// serial run's, the distributed loop, and the report made of what the parts measured and wrote.
+template <int D>
+void adapt_in_parts(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptOptions& o, OutputSet& outputs) {
+  const auto start = std::chrono::steady_clock::now();
+  const AdaptationJob<D> job = adaptation_job<D>(o);
+  mesh.forget_edges();
+  const auto setup = set_up_adaptation(mesh, std::move(metrics), job, o.input);
+  AdaptationReport report;
+  report.dimension = D;
+  report.input_vertices = mesh.vertex_count();
+  report.input_elements = mesh.element_count();
+  report.hausdorff_bounded_vertices = setup->hausdorff_bounded_vertices;
+  std::optional<OutputInParts> output;
+  broadcast_boundary(mesh);
+  report.run = adapt_distributed(mesh, *setup->metric, setup->geometry.get(), setup->settings, o.partition_seed,
+                                 iteration_printer(o, report.distributed_iterations),
+                                 end_in_parts<D>(o, setup->geometry.get(), setup->settings, output));
+  if (setup->geometry) report.settling = output->settling;
+  report.output_vertices = output->counts.vertices;
+  report.output_elements = output->counts.elements;
+  if (output->measures) report.measures = *output->measures;
+  report.seconds_adapt = seconds_since(start);
+  report.peak_memory_bytes = peak_resident_bytes();
+  finish_outputs(o, report, outputs);
+}
+
+template <int D>
+void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, OutputSet& outputs) {
+  prepare_boundary<D>(mesh, o.input, warn_on_stderr);
+  check_mesh_or_warn(mesh, o.input);  // (prepared before the parts are cut: each rank's geometry is the serial run's)
+  std::vector<SymMat<D>> metrics = vertex_metrics(mesh, file, o);
+  if (ends_in_parts(o)) return adapt_in_parts(mesh, std::move(metrics), o, outputs);
+  AdaptationJob<D> job = adaptation_job<D>(o);
+  std::vector<DistributedIteration> iterations;
+  if (process_count() > 1) distribute(job, o, iterations);
+  std::optional<CurvingProgress> progress;  // drawn on a terminal, unless quiet
+  job.before_curving = [&progress, &o](const Mesh<D>& adapted, CurvingOptions& curving) {
+    progress.emplace(adapted, curving.passes, !o.quiet);
+    progress->attach(curving);
+  };
+  AdaptedMesh<D> adapted = run_adaptation_job(mesh, std::move(metrics), job, o.input);
+  if (progress) progress->complete();
+  adapted.report.distributed_iterations = std::move(iterations);
+  write_mesh_file(o.output, mesh);
+  if (!o.vtu.empty()) write_curved_vtu(o.vtu, mesh, *adapted.field);
+  finish_outputs(o, adapted.report, outputs);
 }
 
 void declare_adapt_files(OutputSet& outputs, const AdaptOptions& o) {

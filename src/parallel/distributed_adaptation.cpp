@@ -19,6 +19,7 @@
 #include "parallel/communicator.hpp"
 #include "parallel/element_partition.hpp"
 #include "parallel/part_adaptation.hpp"
+#include "parallel/part_metric_statistics.hpp"
 #include "parallel/part_migration.hpp"
 #include "parallel/peer_iteration.hpp"
 #include "parallel/share_metric.hpp"
@@ -222,11 +223,11 @@ struct RootRuns {
 
 // Collective, after the whole-mesh iterations (docs/distributed.md §The last runs): the elements
 // within kInterfaceBandRings rings of each part's `seeds` go to rank 0 (the others stay), rank 0
-// runs the last serial runs there, then every element goes to rank 0. Returns rank 0's runs; their
-// figures in rank 0's `figures`.
+// runs the last serial runs there, then, when `gather`, every element goes to rank 0. Returns rank
+// 0's runs; their figures in rank 0's `figures`.
 template <int D>
 AdaptationRun last_runs_on_root(MeshPart<D>& part, const std::vector<char>& seeds, Index next_global_id, const RootRuns<D>* root,
-                                DistributedIteration& figures) {
+                                bool gather, DistributedIteration& figures) {
   const auto start = std::chrono::steady_clock::now();
   const std::vector<char> near = elements_near(part.mesh, seeds, kInterfaceBandRings);
   std::vector<int> destination(near.size(), process_rank());
@@ -252,7 +253,7 @@ AdaptationRun last_runs_on_root(MeshPart<D>& part, const std::vector<char>& seed
     figures.part_seconds.push_back(each.seconds);
     figures.peak_memory_bytes.push_back(each.peak_memory_bytes);
   }
-  part = migrate_part(part, std::vector<int>(static_cast<std::size_t>(part.mesh.element_count()), 0), &bytes_sent);
+  if (gather) part = migrate_part(part, std::vector<int>(static_cast<std::size_t>(part.mesh.element_count()), 0), &bytes_sent);
   figures.bytes_sent += sum_over_processes(bytes_sent);
   figures.seconds = seconds_since(start);
   return run;
@@ -272,7 +273,7 @@ struct RunShape {
 template <int D>
 AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                                 const AdaptationSettings& settings, std::int64_t partition_seed,
-                                const std::function<void(const DistributedIteration&)>& on_iteration) {
+                                const std::function<void(const DistributedIteration&)>& on_iteration, const PartsEnd<D>& end) {
   // The whole mesh's corners and feature lines first, as the serial loop finds them: a part sees
   // only its share of the boundary (docs/distributed.md §Parts).
   classify_vertices(mesh, settings.feature_angle_degrees);
@@ -301,12 +302,17 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   last_figures.iteration = kDistributedIterations + 1;
   last_figures.metric_fraction = 1;
   const RootRuns<D> root{metric, geometry, settings};
-  const AdaptationRun last = last_runs_on_root(part, whole_result.seeds, whole_result.next_global_id, &root, last_figures);
-  mesh = whole_mesh_of(std::move(part));
-  mesh.build_topology();
-  last_figures.vertices = mesh.vertex_count();
-  last_figures.elements = mesh.element_count();
+  const bool gather = !end;
+  const AdaptationRun last = last_runs_on_root(part, whole_result.seeds, whole_result.next_global_id, &root, gather, last_figures);
+  last_figures.vertices = distinct_vertex_count(part);
+  last_figures.elements = sum_over_processes(part.mesh.element_count());
   if (on_iteration) on_iteration(last_figures);
+  mesh = gather ? whole_mesh_of(std::move(part)) : Mesh<D>{};
+  if (gather) mesh.build_topology();
+  if (!gather) {
+    gathered_metric(home, recipe, Mesh<D>{}, last_figures);  // (rank 0 holds the whole back mesh; the others gather their shares)
+    end(part, metric);
+  }
   run.passes.insert(run.passes.end(), last.passes.begin(), last.passes.end());
   run.converged = last.converged;
   run.stopped_with_window_open = last.stopped_with_window_open;
@@ -316,7 +322,7 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
 
 template <int D>
 void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>& analytic, const BoundaryGeometry<D>* geometry,
-                                  AdaptationSettings settings) {
+                                  AdaptationSettings settings, const PartsEnd<D>& end) {
   std::vector<RunShape> shape;  // rank 0's
   broadcast_values(shape);
   settings.hausd = shape.at(0).hausd;
@@ -327,14 +333,21 @@ void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>& analy
   DistributedIteration unused;  // (rank 0 keeps the figures)
   partition_first(part, scattered_by_part({}, {}), whole.partition_seed, unused);
   const WholeMeshResult whole_result = whole.run(part, home, {}, {});
-  last_runs_on_root<D>(part, whole_result.seeds, whole_result.next_global_id, nullptr, unused);
+  last_runs_on_root<D>(part, whole_result.seeds, whole_result.next_global_id, nullptr, !end, unused);
+  distinct_vertex_count(part);  // (rank 0's figures of the last runs)
+  sum_over_processes(part.mesh.element_count());
+  if (!end) return;
+  const std::unique_ptr<ShareMetric<D>> near = gathered_metric(home, recipe, part.mesh, unused);
+  end(part, near->partway(1));
 }
 
 template AdaptationRun adapt_distributed(Mesh<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*, const AdaptationSettings&,
-                                         std::int64_t, const std::function<void(const DistributedIteration&)>&);
+                                         std::int64_t, const std::function<void(const DistributedIteration&)>&, const PartsEnd<2>&);
 template AdaptationRun adapt_distributed(Mesh<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*, const AdaptationSettings&,
-                                         std::int64_t, const std::function<void(const DistributedIteration&)>&);
-template void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>&, const BoundaryGeometry<2>*, AdaptationSettings);
-template void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>&, const BoundaryGeometry<3>*, AdaptationSettings);
+                                         std::int64_t, const std::function<void(const DistributedIteration&)>&, const PartsEnd<3>&);
+template void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>&, const BoundaryGeometry<2>*, AdaptationSettings,
+                                           const PartsEnd<2>&);
+template void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>&, const BoundaryGeometry<3>*, AdaptationSettings,
+                                           const PartsEnd<3>&);
 
 }  // namespace hocav

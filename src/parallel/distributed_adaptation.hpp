@@ -4,7 +4,8 @@
 // frozen, and PT-Scotch cuts the distributed mesh again
 // so that the old interfaces fall inside parts, the elements migrating between processes. After the
 // fourth time the elements near the last interfaces and the poor elements go to rank 0, which runs
-// the serial loop there with the rest frozen; then rank 0 gathers the mesh.
+// the serial loop there with the rest frozen; then rank 0 gathers the mesh, or every process ends
+// with its part (PartsEnd: the output settled, measured and written in runs from the parts).
 #pragma once
 
 #include <functional>
@@ -12,6 +13,7 @@
 
 #include "adapt/adaptation_loop.hpp"
 #include "parallel/distributed_iteration.hpp"
+#include "parallel/mesh_parts.hpp"
 
 namespace hocav {
 
@@ -24,25 +26,32 @@ constexpr int kDistributedIterations = 4;
 // the loop room), whose own frozen border lies in the adapted region.
 constexpr int kInterfaceBandRings = 2;
 
+// What every process does with its part at the end of the loop, in place of the gather onto rank 0
+// (docs/distributed.md §The end in the parts): its part after the last runs (compact, with topology,
+// global ids and pinned flags), and the target metric around it.
+template <int D>
+using PartsEnd = std::function<void(MeshPart<D>&, const AdaptationMetric<D>&)>;
+
 // On rank 0: adapts `mesh` (P1, with topology) with every process (the others in
 // serve_distributed_adaptation), the same interface as adapt_to_metric. `mesh` is the metric's back
 // mesh, if it has one: the iterations' gradual metric starts from its own (docs/distributed.md). The mesh is compact and has
 // its topology on return; the run's passes are each iteration's, summed over the parts, then those
 // of the last serial runs near the last interfaces (docs/distributed.md). `partition_seed`: the
-// partitioner's (element_partition.hpp; 0: its own).
+// partitioner's (element_partition.hpp; 0: its own). With `end`, every process ends with it on its
+// part and `mesh` is left empty; the last runs' figures then count the parts' vertices and elements.
 template <int D>
 AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                                 const AdaptationSettings& settings, std::int64_t partition_seed,
-                                const std::function<void(const DistributedIteration&)>& on_iteration);
+                                const std::function<void(const DistributedIteration&)>& on_iteration, const PartsEnd<D>& end = {});
 
 // On the other ranks: adapts their parts in the whole-mesh iterations, then sends rank 0 the last
 // runs' region and every element after them (adapt_distributed), with the metric remade on
 // the shares of the back mesh around them (docs/distributed.md §The back mesh in shares) from what
 // rank 0 broadcasts (the size bounds, the Hausdorff distance) and `analytic`, the job's analytic
 // metric if it has one. `geometry` is made from the input's boundary as rank 0's; `settings` is the
-// job's but for the Hausdorff distance, which rank 0 sends.
+// job's but for the Hausdorff distance, which rank 0 sends. `end` as rank 0's.
 template <int D>
 void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>& analytic, const BoundaryGeometry<D>* geometry,
-                                  AdaptationSettings settings);
+                                  AdaptationSettings settings, const PartsEnd<D>& end = {});
 
 }  // namespace hocav

@@ -104,6 +104,16 @@ std::pair<AdaptationRun, PartFigures> adapt_part_measured(MeshPart<D>& part, con
   return {std::move(run), PartFigures{seconds_since(start), peak_resident_bytes()}};
 }
 
+template <int D>
+BoundarySettling settle_part_boundary(MeshPart<D>& part, std::span<const SymMat<D>> metrics, const BoundaryGeometry<D>& geometry,
+                                      double feature_angle_degrees) {
+  if (part.mesh.element_count() == 0) return {};
+  const TagsBefore before = tags_before(part);
+  const BoundarySettling settling = settle_boundary(part.mesh, metrics, geometry, feature_angle_degrees);
+  drop_interface_tags(part, before);
+  return settling;
+}
+
 static_assert(std::is_trivially_copyable_v<AdaptationPass>);
 
 // The passes, the caps removed, then the two flags.
@@ -162,5 +172,8 @@ template std::pair<AdaptationRun, PartFigures> adapt_part_measured(MeshPart<2>&,
                                                                    const AdaptationSettings&);
 template std::pair<AdaptationRun, PartFigures> adapt_part_measured(MeshPart<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*,
                                                                    const AdaptationSettings&);
+
+template BoundarySettling settle_part_boundary(MeshPart<2>&, std::span<const SymMat<2>>, const BoundaryGeometry<2>&, double);
+template BoundarySettling settle_part_boundary(MeshPart<3>&, std::span<const SymMat<3>>, const BoundaryGeometry<3>&, double);
 
 }  // namespace hocav

@@ -5,10 +5,12 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <utility>
 #include <vector>
 
 #include "adapt/adaptation_loop.hpp"
+#include "adapt/boundary_settling.hpp"
 #include "parallel/mesh_parts.hpp"
 
 namespace hocav {
@@ -31,6 +33,13 @@ struct PartFigures {
 template <int D>
 std::pair<AdaptationRun, PartFigures> adapt_part_measured(MeshPart<D>& part, const AdaptationMetric<D>& metric,
                                                           const BoundaryGeometry<D>* geometry, const AdaptationSettings& settings);
+
+// The boundary settling after the loop (boundary_settling.hpp) on `part` (with topology), `metrics` at
+// its vertices: its interface vertices are frozen as every required vertex is, so both sides of an
+// interface stay identical; the tags the part's own classification adds are dropped as above.
+template <int D>
+BoundarySettling settle_part_boundary(MeshPart<D>& part, std::span<const SymMat<D>> metrics, const BoundaryGeometry<D>& geometry,
+                                      double feature_angle_degrees);
 
 // A run as bytes and back.
 std::vector<std::byte> pack_run(const AdaptationRun& run);

@@ -41,11 +41,10 @@ std::vector<double> values_on_threads(ThreadPool& pool, std::size_t count, const
   return values;
 }
 
-// The quality figures of the straight elements, each in the metric at its centroid.
+// The qualities of the straight elements, each in the metric at its centroid.
 template <int D>
-void add_quality_figures(const Mesh<D>& mesh, const std::vector<SymMat<D>>& vertex_logs, ThreadPool& pool, MetricStatistics& s) {
-  if (mesh.element_count() == 0) return;
-  const std::vector<double> qualities = values_on_threads(pool, static_cast<std::size_t>(mesh.element_count()), [&](std::size_t k) {
+std::vector<double> element_qualities(const Mesh<D>& mesh, const std::vector<SymMat<D>>& vertex_logs, ThreadPool& pool) {
+  return values_on_threads(pool, static_cast<std::size_t>(mesh.element_count()), [&](std::size_t k) {
     SimplexPoints<D> corners;
     std::array<SymMat<D>, D + 1> logs;
     for (int i = 0; i <= D; ++i) {
@@ -55,15 +54,6 @@ void add_quality_figures(const Mesh<D>& mesh, const std::vector<SymMat<D>>& vert
     }
     return centroid_metric_mean_ratio<D>(corners, logs);
   });
-  s.quality_min = std::numeric_limits<double>::infinity();
-  double sum = 0;
-  for (double quality : qualities) {
-    s.quality_min = std::min(s.quality_min, quality);
-    sum += quality;
-    ++s.quality_histogram[quality_bin(quality)];
-  }
-  s.quality_mean = sum / mesh.element_count();
-  s.low_quality_share = static_cast<double>(s.quality_histogram[0]) / mesh.element_count();
 }
 
 // The mesh's edges by their ends: the edge table's, in its order, when the mesh has one (a P2 mesh's
@@ -85,7 +75,7 @@ std::vector<std::array<Index, 2>> edge_ends(const Mesh<D>& mesh) {
 }
 
 template <int D>
-MetricStatistics metric_statistics(const Mesh<D>& mesh, std::span<const double> node_metrics, ThreadPool& pool) {
+MetricValues metric_values(const Mesh<D>& mesh, std::span<const double> node_metrics, ThreadPool& pool) {
   constexpr std::size_t kComponents = SymMat<D>::kEntryCount;
   const auto vertex_count = static_cast<std::size_t>(mesh.vertex_count());
   const std::size_t rows = node_metrics.size() / kComponents;
@@ -98,23 +88,19 @@ MetricStatistics metric_statistics(const Mesh<D>& mesh, std::span<const double> 
     std::copy_n(node_metrics.begin() + static_cast<std::ptrdiff_t>(row * kComponents), kComponents, metric.entries.begin());
     return log_spd(metric);
   };
-  MetricStatistics s;
+  MetricValues values;
   std::vector<SymMat<D>> vertex_logs(vertex_count);
-  const std::vector<double> anisotropies = values_on_threads(pool, vertex_count, [&](std::size_t v) {
+  values.anisotropies = values_on_threads(pool, vertex_count, [&](std::size_t v) {
     vertex_logs[v] = log_metric_of_row(v);
     // Sizes are e^{−θ/2} for the eigenvalues θ of log M.
     Vec<D> theta = sym_eigen(vertex_logs[v]).values;
     return std::exp(0.5 * (theta[D - 1] - theta[0]));
   });
-  for (double anisotropy : anisotropies) s.max_anisotropy = std::max(s.max_anisotropy, anisotropy);
-  add_quality_figures(mesh, vertex_logs, pool, s);
-
-  const std::vector<std::array<Index, 2>> ends = edge_ends(mesh);
-  s.edge_count = static_cast<Index>(ends.size());
-  if (s.edge_count == 0) return s;
-  const std::vector<double> lengths = values_on_threads(pool, ends.size(), [&](std::size_t i) {
+  values.qualities = element_qualities(mesh, vertex_logs, pool);
+  values.edges = edge_ends(mesh);
+  values.lengths = values_on_threads(pool, values.edges.size(), [&](std::size_t i) {
     const auto e = static_cast<Index>(i);  // the edge table's id, when the mesh has one
-    const auto [a, b] = ends[i];
+    const auto [a, b] = values.edges[i];
     const SymMat<D>& log_a = vertex_logs[static_cast<std::size_t>(a)];
     const SymMat<D>& log_b = vertex_logs[static_cast<std::size_t>(b)];
     EdgeLengthFunction<D> edge(mesh.vertex(a), mesh.vertex(b), log_a, log_b, high_precision_rule());
@@ -122,18 +108,7 @@ MetricStatistics metric_statistics(const Mesh<D>& mesh, std::span<const double> 
     SymMat<D> log_node = with_edge_nodes ? log_metric_of_row(vertex_count + i) : 0.5 * (log_a + log_b);
     return edge.length(node, log_node);
   });
-  s.min = std::numeric_limits<double>::infinity();
-  s.max = -s.min;
-  double sum = 0;
-  for (double length : lengths) {
-    s.min = std::min(s.min, length);
-    s.max = std::max(s.max, length);
-    sum += length;
-    ++s.histogram[edge_length_bin(length)];
-  }
-  s.mean = sum / s.edge_count;
-  s.unit_share = static_cast<double>(s.histogram[kUnitEdgeBin]) / s.edge_count;
-  return s;
+  return values;
 }
 
 template <int D>
@@ -350,10 +325,71 @@ MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> no
 template MeshStatistics compute_mesh_statistics(Mesh<2>&, std::span<const double>, int);
 template MeshStatistics compute_mesh_statistics(Mesh<3>&, std::span<const double>, int);
 
+void MetricTally::add_length(double length) {
+  ++edges;
+  length_min = std::min(length_min, length);
+  length_max = std::max(length_max, length);
+  length_sum += length;
+  ++length_histogram[edge_length_bin(length)];
+}
+
+void MetricTally::add_quality(double quality) {
+  ++elements;
+  quality_min = std::min(quality_min, quality);
+  quality_sum += quality;
+  ++quality_histogram[quality_bin(quality)];
+}
+
+void MetricTally::add(const MetricTally& other) {
+  edges += other.edges;
+  length_min = std::min(length_min, other.length_min);
+  length_max = std::max(length_max, other.length_max);
+  length_sum += other.length_sum;
+  for (std::size_t i = 0; i < length_histogram.size(); ++i) length_histogram[i] += other.length_histogram[i];
+  elements += other.elements;
+  quality_min = std::min(quality_min, other.quality_min);
+  quality_sum += other.quality_sum;
+  for (std::size_t i = 0; i < quality_histogram.size(); ++i) quality_histogram[i] += other.quality_histogram[i];
+  max_anisotropy = std::max(max_anisotropy, other.max_anisotropy);
+}
+
+MetricStatistics MetricTally::statistics() const {
+  MetricStatistics s;
+  s.max_anisotropy = max_anisotropy;
+  if (elements > 0) {
+    s.quality_min = quality_min;
+    s.quality_mean = quality_sum / elements;
+    s.quality_histogram = quality_histogram;
+    s.low_quality_share = static_cast<double>(quality_histogram[0]) / elements;
+  }
+  s.edge_count = edges;
+  if (edges > 0) {
+    s.min = length_min;
+    s.max = length_max;
+    s.mean = length_sum / edges;
+    s.histogram = length_histogram;
+    s.unit_share = static_cast<double>(length_histogram[kUnitEdgeBin]) / edges;
+  }
+  return s;
+}
+
+template <int D>
+MetricValues compute_metric_values(const Mesh<D>& mesh, std::span<const double> node_metrics, int threads) {
+  ThreadPool pool(std::max(1, threads));
+  return metric_values(mesh, node_metrics, pool);
+}
+
+template MetricValues compute_metric_values(const Mesh<2>&, std::span<const double>, int);
+template MetricValues compute_metric_values(const Mesh<3>&, std::span<const double>, int);
+
 template <int D>
 MetricStatistics compute_metric_statistics(const Mesh<D>& mesh, std::span<const double> node_metrics, int threads) {
-  ThreadPool pool(std::max(1, threads));
-  return metric_statistics(mesh, node_metrics, pool);
+  const MetricValues values = compute_metric_values(mesh, node_metrics, threads);
+  MetricTally tally;
+  for (double anisotropy : values.anisotropies) tally.max_anisotropy = std::max(tally.max_anisotropy, anisotropy);
+  for (double quality : values.qualities) tally.add_quality(quality);
+  for (double length : values.lengths) tally.add_length(length);
+  return tally.statistics();
 }
 
 template MetricStatistics compute_metric_statistics(const Mesh<2>&, std::span<const double>, int);

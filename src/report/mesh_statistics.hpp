@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <ostream>
 #include <span>
@@ -48,6 +49,33 @@ struct MetricStatistics {
   double low_quality_share = 0;  // share of elements with quality below kLowQuality
   // max over the vertices of sqrt(λmax/λmin): the ratio of the largest to the smallest size.
   double max_anisotropy = 0;
+};
+
+// The sums the metric figures follow from, in the order the values are added (the figures are then
+// the same for any thread count). The tallies of a distributed mesh's parts, each edge in one of
+// them, add up to the whole mesh's (docs/distributed.md §The end in the parts).
+struct MetricTally {
+  Index edges = 0;
+  double length_min = std::numeric_limits<double>::infinity(), length_max = -length_min, length_sum = 0;
+  std::array<Index, kEdgeLengthBinBounds.size() + 1> length_histogram{};
+  Index elements = 0;
+  double quality_min = std::numeric_limits<double>::infinity(), quality_sum = 0;
+  std::array<Index, kQualityBinBounds.size() + 1> quality_histogram{};
+  double max_anisotropy = 0;
+
+  void add_length(double length);
+  void add_quality(double quality);
+  void add(const MetricTally& other);
+  // The figures: zeros for no edges or no elements.
+  MetricStatistics statistics() const;
+};
+
+// The metric values of a mesh (see compute_mesh_statistics): per vertex its anisotropy (the ratio of
+// its largest size to its smallest), per element its quality, per edge its ends and its length.
+struct MetricValues {
+  std::vector<double> anisotropies, qualities;
+  std::vector<std::array<Index, 2>> edges;  // the edge table's in its order, else each pair an element joins once
+  std::vector<double> lengths;
 };
 
 // The per-element Jacobian figures (certified bounds, src/bezier/), binned at these bounds: bins
@@ -114,6 +142,10 @@ MeshStatistics compute_mesh_statistics(Mesh<D>& mesh, std::span<const double> no
 // edge table: its edges are found from its elements.
 template <int D>
 MetricStatistics compute_metric_statistics(const Mesh<D>& mesh, std::span<const double> node_metrics, int threads = 1);
+
+// The values the metric figures are made of, on `threads` threads (the same for any count).
+template <int D>
+MetricValues compute_metric_values(const Mesh<D>& mesh, std::span<const double> node_metrics, int threads = 1);
 
 // The bin of an edge length (index into MetricStatistics::histogram).
 std::size_t edge_length_bin(double length);

@@ -19,27 +19,10 @@ import sys
 import meshio
 import numpy
 
-from mpi_test_support import distributed_test, pieces_cases, refused, run
+from mpi_test_support import distributed_test, keywords, pieces_cases, refused, run
 
 # The keywords whose records are ids of another keyword's entities.
 TAGS_OF = {"Ridges": "Edges", "RequiredEdges": "Edges", "RequiredTriangles": "Triangles"}
-
-
-def keywords(path):
-    """A text .mesh as {keyword: [record, ...]}, each record a tuple of its words."""
-    words = open(path).read().split()
-    dimension = int(words[words.index("Dimension") + 1])
-    widths = {"Vertices": dimension + 1, "Edges": 3, "Triangles": 4, "Tetrahedra": 5}  # the tag lists: 1
-    out, i = {}, 0
-    while words[i] != "End":
-        name = words[i]
-        if name in ("MeshVersionFormatted", "Dimension"):
-            i += 2
-            continue
-        count, width = int(words[i + 1]), widths.get(name, 1)
-        out[name] = [tuple(words[i + 2 + width * k:i + 2 + width * (k + 1)]) for k in range(count)]
-        i += 2 + width * count
-    return out
 
 
 def as_sets(mesh):

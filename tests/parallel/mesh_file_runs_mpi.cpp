@@ -45,18 +45,6 @@ Mesh<D> curved(Mesh<D> mesh) {
   return mesh;
 }
 
-// Element k of rank 0's mesh goes to part `destination(k)`.
-template <int D>
-MeshPart<D> scattered(const Mesh<D>& mesh, int (*destination)(Index)) {
-  if (process_rank() != 0) return migrate_part(MeshPart<D>{}, {});
-  std::vector<int> part_of;
-  for (Index k = 0; k < mesh.element_count(); ++k) part_of.push_back(destination(k));
-  return migrate_part(whole_mesh_part(Mesh<D>(mesh)), part_of);
-}
-
-int to_rank_0(Index) { return 0; }
-int spread(Index k) { return static_cast<int>((7 * k + k / 5) % process_count()); }
-
 // All on rank 0: the runs are write_gamma_mesh's file of rank 0's part.
 template <int D>
 bool same_bytes_as_serial(const Mesh<D>& mesh, const std::string& directory, const std::string& name) {

@@ -82,6 +82,23 @@ def pieces_cases():
     return PIECES_CASES + (PIECES_GMSH_CASES if with_gmsh else [])
 
 
+def keywords(path):
+    """A text .mesh as {keyword: [record, ...]}, each record a tuple of its words."""
+    words = open(path).read().split()
+    dimension = int(words[words.index("Dimension") + 1])
+    widths = {"Vertices": dimension + 1, "Edges": 3, "Triangles": 4, "Tetrahedra": 5}  # the tag lists: 1
+    out, i = {}, 0
+    while words[i] != "End":
+        name = words[i]
+        if name in ("MeshVersionFormatted", "Dimension"):
+            i += 2
+            continue
+        count, width = int(words[i + 1]), widths.get(name, 1)
+        out[name] = [tuple(words[i + 2 + width * k:i + 2 + width * (k + 1)]) for k in range(count)]
+        i += 2 + width * count
+    return out
+
+
 def distributed_test(check):
     """The main of a distributed test: check(hocav, mpirun, work) in a scratch folder, with the hocav
     of the command line; SKIP when hocav has no MPI, else 0 once check returns."""

@@ -1,6 +1,7 @@
-// The meshes the MPI tests of reading and writing in pieces use: a structured square or cube with
-// four materials, feature lines, corners and required entities, and the same with its vertices
-// renumbered across the file; and a directory every process sees.
+// The meshes the MPI tests of reading, writing and measuring in pieces use: a structured square or
+// cube with four materials, feature lines, corners and required entities, and the same with its
+// vertices renumbered across the file; rank 0's mesh scattered over the processes; and a directory
+// every process sees.
 #pragma once
 
 #include <unistd.h>
@@ -12,6 +13,7 @@
 
 #include "adapt/vertex_classes.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/part_migration.hpp"
 
 namespace hocav {
 
@@ -73,6 +75,20 @@ Mesh<D> shuffled(const Mesh<D>& mesh) {
   out.build_topology();
   return out;
 }
+
+// Element k of rank 0's mesh goes to part `destination(k)`.
+template <int D>
+MeshPart<D> scattered(const Mesh<D>& mesh, int (*destination)(Index)) {
+  if (process_rank() != 0) return migrate_part(MeshPart<D>{}, {});
+  std::vector<int> part_of;
+  for (Index k = 0; k < mesh.element_count(); ++k) part_of.push_back(destination(k));
+  return migrate_part(whole_mesh_part(Mesh<D>(mesh)), part_of);
+}
+
+// Destinations: every element on rank 0; or spread (7k + k/5 mod N), so that parts touch at many
+// vertices, edges and lines.
+inline int to_rank_0(Index) { return 0; }
+inline int spread(Index k) { return static_cast<int>((7 * k + k / 5) % process_count()); }
 
 // A directory every process sees, named by rank 0.
 inline std::string shared_directory(const std::string& prefix) {

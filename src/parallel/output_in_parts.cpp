@@ -1,0 +1,54 @@
+#include "parallel/output_in_parts.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include "base/stopwatch.hpp"
+#include "io/node_metrics.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/part_adaptation.hpp"
+#include "parallel/part_metric_statistics.hpp"
+
+namespace hocav {
+namespace {
+
+// Every part's settling as one.
+BoundarySettling summed_over_processes(const BoundarySettling& own) {
+  BoundarySettling sum;
+  for (const BoundarySettling& each : all_gather_value(own)) {
+    sum.off_geometry += each.off_geometry;
+    sum.largest_distance = std::max(sum.largest_distance, each.largest_distance);
+    sum.settled += each.settled;
+    sum.partly += each.partly;
+    sum.blocked += each.blocked;
+    sum.largest_distance_left = std::max(sum.largest_distance_left, each.largest_distance_left);
+    sum.inner_vertices_moved += each.inner_vertices_moved;
+    sum.solver_iterations = std::max(sum.solver_iterations, each.solver_iterations);
+    sum.rounds = std::max(sum.rounds, each.rounds);
+    sum.seconds = std::max(sum.seconds, each.seconds);
+  }
+  return sum;
+}
+
+}  // namespace
+
+template <int D>
+OutputInParts finish_adaptation_in_parts(MeshPart<D>& part, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
+                                         const AdaptationSettings& settings, const std::string& path, bool binary) {
+  const auto start = std::chrono::steady_clock::now();
+  OutputInParts out;
+  if (!part.mesh.has_topology()) part.mesh.build_topology();
+  const std::vector<SymMat<D>> metrics = metrics_at_vertices(part.mesh, metric, settings.threads);
+  if (geometry) out.settling = summed_over_processes(settle_part_boundary<D>(part, metrics, *geometry, settings.feature_angle_degrees));
+  if (settings.measure_output) out.measures = distributed_metric_statistics(part, rows_of_metrics(metrics).values, settings.threads);
+  out.counts = write_mesh_runs(path, part, binary);
+  for (double seconds : all_gather_value(seconds_since(start))) out.seconds = std::max(out.seconds, seconds);
+  return out;
+}
+
+template OutputInParts finish_adaptation_in_parts(MeshPart<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*,
+                                                  const AdaptationSettings&, const std::string&, bool);
+template OutputInParts finish_adaptation_in_parts(MeshPart<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*,
+                                                  const AdaptationSettings&, const std::string&, bool);
+
+}  // namespace hocav

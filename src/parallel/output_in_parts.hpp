@@ -1,0 +1,33 @@
+// The end of a distributed adaptation in its parts, in place of the gather onto rank 0
+// (docs/distributed.md §The end in the parts): every process settles its part's boundary, measures
+// it and writes it into the output file in runs, no process holding the whole mesh.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "adapt/adaptation_loop.hpp"
+#include "adapt/boundary_settling.hpp"
+#include "parallel/mesh_file_runs.hpp"
+#include "report/mesh_statistics.hpp"
+
+namespace hocav {
+
+// What the end did, the same on every process.
+struct OutputInParts {
+  BoundarySettling settling;                 // the parts' summed (distances, iterations, rounds and time: the largest)
+  std::optional<MetricStatistics> measures;  // with settings.measure_output
+  MeshFileCounts counts;                     // of the file written
+  double seconds = 0;                        // the slowest process's
+};
+
+// Every process at once, each with its part after the loop (P1, compact, global ids, pinned flags)
+// and `metric` around it: the metric at its vertices, which they keep when the boundary settles onto
+// `geometry` (may be null; interface vertices frozen, settle_part_boundary), the output's figures in
+// it (distributed_metric_statistics), then the Gamma file `path` in runs (write_mesh_runs; .meshb
+// when `binary`).
+template <int D>
+OutputInParts finish_adaptation_in_parts(MeshPart<D>& part, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
+                                         const AdaptationSettings& settings, const std::string& path, bool binary);
+
+}  // namespace hocav

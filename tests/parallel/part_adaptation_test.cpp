@@ -1,0 +1,74 @@
+#include "parallel/part_adaptation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "../adapt/adapt_test_support.hpp"
+#include "adapt/vertex_classes.hpp"
+#include "cases/structured.hpp"
+#include "parallel/mesh_parts.hpp"
+
+namespace hocav {
+namespace {
+
+std::vector<SymMat<3>> unit_metrics(const Mesh<3>& mesh) {
+  SymMat<3> identity;
+  for (int i = 0; i < 3; ++i) identity(i, i) = 1;
+  return std::vector<SymMat<3>>(static_cast<std::size_t>(mesh.vertex_count()), identity);
+}
+
+// The settling at the end of a distributed run (docs/distributed.md §The end in the parts): each part
+// moves its boundary vertices back onto the geometry but its interface vertices, which both sides
+// keep where they are, and keeps the whole mesh's tags without adding the interfaces'.
+TEST(PartAdaptation, SettlesAPartsBoundaryButItsInterfaces) {
+  Mesh<3> mesh = generate_cube(6);
+  mesh.build_topology();
+  classify_vertices(mesh, 45);
+  // Every other vertex inside the side z = 0 is 0.01 off it (a split that could not use its point
+  // on the geometry leaves it so).
+  std::set<Index> off;
+  for (Index v = 0; v < mesh.vertex_count(); ++v) {
+    Vec3& x = mesh.vertex(v);
+    if (x[2] == 0 && x[0] > 0 && x[0] < 1 && x[1] > 0 && x[1] < 1 && std::lround(6 * (x[0] + x[1])) % 2 == 1) {
+      x[2] = 0.01;
+      off.insert(v);
+    }
+  }
+  std::vector<int> part_of;  // two halves across x = 0.5, whose interface crosses the side z = 0
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    double x = 0;
+    for (Index v : mesh.element(k)) x += mesh.vertex(v)[0];
+    part_of.push_back(x < 2 ? 0 : 1);
+  }
+  Index settled = 0;
+  std::set<Index> frozen;  // (in both parts)
+  for (MeshPart<3> part : split_mesh(mesh, part_of, 2)) {
+    const std::size_t corners = part.mesh.corners().size();
+    const Index lines = part.mesh.line_count();
+    part.mesh.build_topology();
+    const std::vector<char> on_interface = interface_vertex_flags(part.mesh);
+    const BoundarySettling settling = settle_part_boundary<3>(part, unit_metrics(part.mesh), adapt_test::unit_box_sides<3>(), 45);
+    EXPECT_EQ(settling.partly + settling.blocked, 0);
+    settled += settling.settled;
+    for (Index v = 0; v < part.mesh.vertex_count(); ++v) {
+      const Index whole = part.global_ids[v];
+      if (!off.contains(whole)) continue;
+      if (on_interface[v]) {
+        frozen.insert(whole);
+        EXPECT_EQ(part.mesh.vertex(v), mesh.vertex(whole)) << "interface vertex " << whole << " moved";
+      } else {
+        EXPECT_NEAR(part.mesh.vertex(v)[2], 0, 1e-12) << "vertex " << whole << " left off the side";
+      }
+    }
+    EXPECT_EQ(part.mesh.corners().size(), corners) << "the interfaces' corners left";
+    EXPECT_EQ(part.mesh.line_count(), lines) << "the interfaces' lines left";
+    adapt_test::expect_closed_and_consistent(part.mesh);
+  }
+  EXPECT_FALSE(frozen.empty());
+  EXPECT_EQ(settled + static_cast<Index>(frozen.size()), static_cast<Index>(off.size()));
+}
+
+}  // namespace
+}  // namespace hocav
