@@ -274,6 +274,12 @@ void adapt_in_parts(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptOp
   report.run = adapt_distributed(mesh, *setup->metric, setup->geometry.get(), setup->settings, o.partition_seed,
                                  iteration_printer(o, report.distributed_iterations),
                                  end_in_parts<D>(o, setup->geometry.get(), setup->settings, output));
+  if (!o.quiet) {
+    std::ostringstream line;
+    line << std::setprecision(3) << "distributed: the end in the parts: " << output->counts.vertices << " vertices and "
+         << output->counts.elements << " elements settled, measured and written in runs, " << output->seconds << " s\n";
+    std::cerr << line.str();
+  }
   if (setup->geometry) report.settling = output->settling;
   report.output_vertices = output->counts.vertices;
   report.output_elements = output->counts.elements;

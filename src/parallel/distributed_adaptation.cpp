@@ -168,7 +168,11 @@ struct WholeMeshIterations {
       const AdaptationMetric<D> iteration_metric = partway(fraction);
       std::optional<AdaptationMetric<D>> next;
       if (iteration < kDistributedIterations) next = partway(gradual_fraction(iteration + 1, steps));
-      const PeerIteration<D> step{iteration_metric, geometry, settings, partition_seed, next ? &*next : nullptr};
+      // The last iteration's parts stay, and no later iteration finishes what an early stop leaves far
+      // from their interfaces (the last runs take only a region): they stop as the serial loop does.
+      AdaptationSettings iteration_settings = settings;
+      if (!next) iteration_settings.passes_after_window_closes = -1;
+      const PeerIteration<D> step{iteration_metric, geometry, iteration_settings, partition_seed, next ? &*next : nullptr};
       const PeerIterationResult result = run_peer_iteration(part, all.next_global_id, step, figures);
       all.run.passes.insert(all.run.passes.end(), result.run.passes.begin(), result.run.passes.end());
       all.run.caps_removed += result.run.caps_removed;
