@@ -115,9 +115,7 @@ void partition_first(MeshPart<D>& part, std::span<const double> loads, std::int6
 template <int D>
 std::vector<char> last_run_seeds(const Mesh<D>& mesh, const AdaptationMetric<D>& metric) {
   std::vector<char> seeds = interface_vertex_flags(mesh);
-  std::vector<SymMat<D>> at;
-  Index hint = kNoIndex;
-  for (Index v = 0; v < mesh.vertex_count(); ++v) at.push_back(metric.metric_at(mesh.vertex(v), hint));
+  const std::vector<SymMat<D>> at = metrics_at_vertices(mesh, metric, 1);
   for (Index k = 0; k < mesh.element_count(); ++k) {
     const auto& element = mesh.element(k);
     SimplexPoints<D> points;
