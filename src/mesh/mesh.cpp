@@ -5,6 +5,7 @@
 #include <array>
 #include <string>
 
+#include "base/element_list.hpp"
 #include "base/error.hpp"
 #include "mesh/baffle_orientation.hpp"
 
@@ -307,6 +308,45 @@ void Mesh<D>::build_topology() {
     if (facet_element_face_[f] == kNoIndex) throw Error("boundary facet " + std::to_string(f + 1) + " is not a face of any element");
     link_face_facet(facet_element_face_[f] / (D + 1), facet_element_face_[f] % (D + 1), f);
   }
+}
+
+template <int D>
+void Mesh<D>::link_facets() {
+  std::vector<Index> ball, stack;
+  for (auto f = static_cast<Index>(facet_element_face_.size()); f < facet_count(); ++f) {
+    const Facet& facet = facets_[f];
+    Index found = facet_face_near(facet, vertex_element_.at(facet[0]), ball, stack);
+    // A vertex of a non-manifold place has balls the walk does not join: every element, then.
+    for (Index k = 0; k < element_count() && found == kNoIndex; ++k)
+      if (const int face = local_face_of<D>(elements_[k], facet.data()); face >= 0) found = k * (D + 1) + face;
+    if (found == kNoIndex) throw Error("boundary facet " + std::to_string(f + 1) + " is not a face of any element");
+    // As build_topology links it: from the smaller of the two elements across it.
+    Index k = found / (D + 1);
+    auto face = static_cast<int>(found % (D + 1));
+    if (const Index across = adjacency_[k][face]; across != kNoIndex && across < k) {
+      face = static_cast<int>(std::find(adjacency_[across].begin(), adjacency_[across].end(), k) - adjacency_[across].begin());
+      k = across;
+    }
+    facet_element_face_.push_back(k * (D + 1) + face);
+    link_face_facet(k, face, f);
+  }
+}
+
+template <int D>
+Index Mesh<D>::facet_face_near(const Facet& facet, Index start, std::vector<Index>& ball, std::vector<Index>& stack) const {
+  ball.clear();
+  ElementList seen(ball);  // (a frozen interface vertex's ball may hold thousands)
+  stack.assign(1, start);
+  while (!stack.empty()) {
+    const Index k = stack.back();
+    stack.pop_back();
+    if (k == kNoIndex || seen.holds(k)) continue;
+    seen.push_back(k);
+    if (const int face = local_face_of<D>(elements_[k], facet.data()); face >= 0) return k * (D + 1) + face;
+    for (int face = 0; face <= D; ++face)
+      if (elements_[k][face] != facet[0]) stack.push_back(adjacency_[k][face]);
+  }
+  return kNoIndex;
 }
 
 template <int D>

@@ -147,6 +147,10 @@ class Mesh {
   // Face adjacency, vertex -> element and boundary facet <-> element face. Throws Error on a face
   // shared by more than two elements or a facet that is no element face.
   void build_topology();
+  // With the topology built: links the facets added since (add_facet) to their element faces, as
+  // build_topology would, without building the adjacency again. Throws Error for a facet that is no
+  // element face.
+  void link_facets();
   bool has_topology() const { return adjacency_.size() == elements_.size() && !elements_.empty(); }
   // Orders every facet on the domain's boundary (no element across its face) as that face of its
   // element: outward, the elements being positive; and every interface facet (elements of two refs
@@ -254,6 +258,9 @@ class Mesh {
   Index insert_edge(Index a, Index b);
   // After compact(): the hashes keyed by vertex or facet ids, rebuilt from the renumbered arrays.
   void rekey_after_renumbering();
+  // The element face (element * (D + 1) + face) of `facet` among the elements around its first
+  // vertex, walked from `start` across the faces that hold that vertex; kNoIndex if none.
+  Index facet_face_near(const Facet& facet, Index start, std::vector<Index>& ball, std::vector<Index>& stack) const;
   static std::uint64_t face_key(Index k, int face) { return static_cast<std::uint64_t>(k) * (D + 1) + static_cast<std::uint64_t>(face); }
   // The element-face -> facet map and its per-element bits change together.
   void link_face_facet(Index k, int face, Index f);

@@ -136,8 +136,8 @@ struct Unpacker {
   }
 
   // The elements, then (with the topology the elements give) the mesh's facets and a facet on each
-  // face with a neighbour in the whole mesh but none in the new part, as split_mesh makes them; the
-  // topology again, with the facets.
+  // face with a neighbour in the whole mesh but none in the new part, as split_mesh makes them;
+  // part_of_shipments links them to their faces at the end.
   void add_elements_and_facets() {
     for (const Shipment<D>& s : arrived)
       for (std::size_t k = 0; k < s.elements.size(); ++k) part.mesh.add_element(mapped(s.elements[k]), s.element_refs[k]);
@@ -212,7 +212,7 @@ MeshPart<D> part_of_shipments(const std::vector<Shipment<D>>& arrived) {
   unpacker.add_elements_and_facets();
   if constexpr (D == 3) unpacker.add_lines();
   unpacker.add_nodes();
-  if (unpacker.part.mesh.element_count() > 0) unpacker.part.mesh.build_topology();
+  if (unpacker.part.mesh.element_count() > 0) unpacker.part.mesh.link_facets();
   return std::move(unpacker.part);
 }
 

@@ -59,6 +59,34 @@ void expect_facets_oriented_outward(const Mesh<D>& mesh) {
   EXPECT_TRUE(check_consistency(turned).empty());
 }
 
+// link_facets after build_topology links the facets added since as build_topology does: the same
+// element face for each (the smaller element across an inner facet), also at a non-manifold edge,
+// where the walk around a vertex sees one cube only.
+template <int D>
+void expect_linked_as_built(const Mesh<D>& built) {
+  Mesh<D> linked;
+  for (Index v = 0; v < built.vertex_count(); ++v) linked.add_vertex(built.vertex(v));
+  for (Index k = 0; k < built.element_count(); ++k) linked.add_element(built.element(k), built.element_ref(k));
+  linked.build_topology();
+  for (Index f = 0; f < built.facet_count(); ++f) linked.add_facet(built.facet(f), built.facet_ref(f));
+  linked.link_facets();
+  for (Index f = 0; f < built.facet_count(); ++f) EXPECT_EQ(linked.facet_element_face(f), built.facet_element_face(f)) << f;
+  for (Index k = 0; k < built.element_count(); ++k)
+    for (int face = 0; face <= D; ++face) EXPECT_EQ(linked.element_face_facet(k, face), built.element_face_facet(k, face)) << k;
+}
+
+TEST(Mesh, LinkFacetsLinksAsBuildTopologyDoes) {
+  expect_linked_as_built(mesh_test::four_refs_by_quadrant<3>(4));
+  expect_linked_as_built(mesh_test::four_refs_by_quadrant<2>(5));
+  Mesh<3> cubes = mesh_test::cubes_sharing_an_edge(2);
+  cubes.build_topology();
+  expect_linked_as_built(cubes);
+  Mesh<3> wrong = generate_cube(2);
+  wrong.build_topology();
+  wrong.add_facet({0, 1, 26}, 1);  // no face of any element
+  EXPECT_THROW(wrong.link_facets(), Error);
+}
+
 TEST(Mesh, BoundaryFacetsAreOrientedOutward) {
   expect_facets_oriented_outward(generate_square(3));
   expect_facets_oriented_outward(generate_cube(2));
