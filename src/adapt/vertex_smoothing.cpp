@@ -1,7 +1,9 @@
 // Vertex smoothing (docs/adaptation.md §Smoothing): an interior or surface vertex moves toward the
 // mean of the points that would make each of its edges unit (w + (v − w)/l(v, w) for each neighbour
-// w), by the whole step or half of it, when that raises the worst quality of its ball; a ball with a
-// poor element then also tries the point that makes that element regular.
+// w), by the whole step or half of it, when that raises the worst quality of its ball and keeps its
+// edges in the length window; a ball with a poor element then also tries the point that makes that
+// element regular (a surface vertex a hair from another surface may shorten its edges beyond the
+// window there).
 // A surface vertex stays on its surface (projected on the geometry, or kept in the plane of its
 // facets without one) and its facets pass the boundary test of splits and collapses. The ball keeps
 // its topology, so the move is checked by the quality itself: it is positive only for elements of
@@ -63,6 +65,16 @@ Vec<D> repair_target(const AdaptationMesh<D>& am, Index v, const typename Mesh<D
   return regular_apex<D>(face, am.mesh().vertex(v), am.metric(v));
 }
 
+// Whether element k of v's ball stands on a boundary facet of another ref than v's facet `own`, on
+// its face opposite v.
+template <int D>
+bool over_another_surface(const Mesh<D>& mesh, Index v, Index k, Index own) {
+  const auto& element = mesh.element(k);
+  const auto local = static_cast<int>(std::find(element.begin(), element.end(), v) - element.begin());
+  const Index f = mesh.element_face_facet(k, local);
+  return f != kNoIndex && mesh.facet_ref(f) != mesh.facet_ref(own);
+}
+
 template <int D>
 struct alignas(64) SmoothingScratch {  // a cache line of its own: each thread writes its own
   std::vector<Index> neighbors, places, facets;
@@ -115,16 +127,17 @@ struct SmoothingTrial {
   std::pair<double, double> old_lengths;
 };
 
-// Moves the trial's vertex to the first of `fractions` of the way to `target` that passes; false
-// (nothing moved) when none does.
+// Moves the trial's vertex to the first of `fractions` of the way to `target` that passes, its
+// edges judged against `window` (the shortest and longest lengths the window then allows, as
+// lengths_stay_in_window reads them); false (nothing moved) when none does.
 template <int D>
 bool move_toward(AdaptationMesh<D>& am, const SmoothingTrial<D>& trial, const Vec<D>& target, std::span<const double> fractions,
-                 SmoothingScratch<D>& scratch, const AdaptationLimits& limits) {
+                 std::pair<double, double> window, SmoothingScratch<D>& scratch, const AdaptationLimits& limits) {
   const Index v = trial.v;
   for (double fraction : fractions) {
     const Vec<D> along = trial.start + fraction * (target - trial.start);
     const Vec<D> x = trial.on_boundary ? on_surface(am, v, along, trial.start, scratch) : along;
-    if (!move_passes(am, v, x, am.metric_near(x, v), scratch, kSmoothingGain * trial.old_worst, trial.old_lengths, limits)) continue;
+    if (!move_passes(am, v, x, am.metric_near(x, v), scratch, kSmoothingGain * trial.old_worst, window, limits)) continue;
     const SymMat<D> start_metric = am.metric(v);
     am.move_vertex(v, x, trial.ball);
     if (trial.on_boundary && !facets_stay_close(am, scratch, limits)) {  // read on the moved mesh
@@ -160,9 +173,16 @@ bool smooth_vertex(AdaptationMesh<D>& am, Index v, std::span<const Index> ball, 
     scratch.facet_normals.clear();
     for (Index f : scratch.facets) scratch.facet_normals.push_back(area_normal<D>(am.mesh(), am.mesh().facet(f)));
   }
-  if (move_toward(am, trial, unit_edge_target(am, v, ball, scratch.places, scratch.lengths), kSmoothingSteps, scratch, limits)) return true;
-  return trial.old_worst < kRepairQuality &&
-         move_toward(am, trial, repair_target(am, v, scratch.elements.front()), kRepairSteps, scratch, limits);
+  if (move_toward(am, trial, unit_edge_target(am, v, ball, scratch.places, scratch.lengths), kSmoothingSteps, trial.old_lengths, scratch,
+                  limits))
+    return true;
+  if (!(trial.old_worst < kRepairQuality)) return false;
+  // A surface vertex a hair from another surface may make an edge shorter than its ball's shortest
+  // (the next collapse's): nothing else takes it off the feature line between them (inner vertices
+  // over a facet have the thin vertices' collapse and sink).
+  std::pair<double, double> repair_window = trial.old_lengths;
+  if (trial.on_boundary && over_another_surface(am.mesh(), v, *worst, scratch.facets.front())) repair_window.first = 0;
+  return move_toward(am, trial, repair_target(am, v, scratch.elements.front()), kRepairSteps, repair_window, scratch, limits);
 }
 
 // The vertices a sweep tries, with their balls: smoothing keeps the topology, so the balls

@@ -12,13 +12,6 @@
 namespace hocav {
 namespace {
 
-template <int D>
-bool every_element_positive(const Mesh<D>& mesh) {
-  for (Index k = 0; k < mesh.element_count(); ++k)
-    if (!(element_measure(mesh, k) > 0)) return false;
-  return true;
-}
-
 // The structured cube's inner vertex at (1/4, 1/4, 1/4) lowered to `height` above the side z = 0.
 Index lower_an_inner_vertex(Mesh<3>& mesh, double height) {
   Index v = 0;
@@ -30,7 +23,7 @@ Index lower_an_inner_vertex(Mesh<3>& mesh, double height) {
 TEST(ThinVertices, AnInnerVertexAHairAboveASideIsCollapsedOntoIt) {
   Mesh<3> mesh = adapt_test::unit_mesh<3>(4);
   const Index v = lower_an_inner_vertex(mesh, 1e-6);
-  ASSERT_TRUE(every_element_positive(mesh));
+  ASSERT_TRUE(adapt_test::every_element_positive(mesh));
   const AdaptationMetric<3> metric = adapt_test::uniform_metric<3>(0.25);  // 1e-6 is 4e-6 of the size across
   AdaptationMesh<3> am(mesh, metric, nullptr, 45);
   const OperationCount count = collapse_thin_vertices(am, AdaptationLimits{});
@@ -38,7 +31,7 @@ TEST(ThinVertices, AnInnerVertexAHairAboveASideIsCollapsedOntoIt) {
   EXPECT_TRUE(mesh.vertex_removed(v));
   mesh.compact();
   adapt_test::expect_closed_and_consistent(mesh);
-  EXPECT_TRUE(every_element_positive(mesh));
+  EXPECT_TRUE(adapt_test::every_element_positive(mesh));
 }
 
 // The structured cube in a metric 10,000 times finer along the side z = 0 than across it: the elements
@@ -60,31 +53,6 @@ TEST(ThinVertices, APoorElementsVertexWellAboveASideStays) {
   EXPECT_EQ(count.done + count.refused_total(), 0);
 }
 
-// The star of a closed boundary from one inner vertex (the last point): an element on every face of
-// `faces` (either orientation), and a facet on each, of ref 1 when all its vertices lie on the plane
-// x[D - 1] = 0 (the bottom), 2 otherwise.
-template <int D>
-Mesh<D> star_of(const std::vector<Vec<D>>& points, const std::vector<std::array<Index, D>>& faces) {
-  Mesh<D> mesh;
-  for (const Vec<D>& point : points) mesh.add_vertex(point);
-  const Index center = mesh.vertex_count() - 1;
-  for (const auto& face : faces) {
-    typename Mesh<D>::Element element{};
-    std::copy(face.begin(), face.end(), element.begin());
-    element[D] = center;
-    std::array<Vec<D>, D + 1> corners;
-    for (int i = 0; i <= D; ++i) corners[i] = mesh.vertex(element[i]);
-    if (signed_measure<D>(corners) < 0) std::swap(element[0], element[1]);
-    mesh.add_element(element, 1);
-    const bool bottom = std::all_of(face.begin(), face.end(), [&](Index v) { return mesh.vertex(v)[D - 1] == 0; });
-    typename Mesh<D>::Facet facet;  // the face opposite the center, as the elements orient it
-    for (int i = 0; i < D; ++i) facet[i] = element[face_vertices<D>(D)[i]];
-    mesh.add_facet(facet, bottom ? 1 : 2);
-  }
-  mesh.build_topology();
-  return mesh;
-}
-
 // The facets of ref 1 (the bottom), and whether each of them lies on the bottom.
 template <int D>
 std::pair<int, bool> bottom_facets(const Mesh<D>& mesh) {
@@ -104,7 +72,7 @@ std::pair<int, bool> bottom_facets(const Mesh<D>& mesh) {
 template <int D>
 void expect_sunk(Mesh<D>& mesh, Index vertices_after, int bottom_facets_after) {
   const Index thin = mesh.vertex_count() - 1;
-  ASSERT_TRUE(every_element_positive(mesh));
+  ASSERT_TRUE(adapt_test::every_element_positive(mesh));
   const AdaptationMetric<D> metric = adapt_test::uniform_metric<D>(1);
   AdaptationMesh<D> am(mesh, metric, nullptr, 45);
   const OperationCount count = collapse_thin_vertices(am, AdaptationLimits{});
@@ -112,7 +80,7 @@ void expect_sunk(Mesh<D>& mesh, Index vertices_after, int bottom_facets_after) {
   EXPECT_TRUE(mesh.vertex_removed(thin));
   mesh.compact();
   adapt_test::expect_closed_and_consistent(mesh);
-  EXPECT_TRUE(every_element_positive(mesh));
+  EXPECT_TRUE(adapt_test::every_element_positive(mesh));
   EXPECT_EQ(mesh.vertex_count(), vertices_after);
   EXPECT_EQ(bottom_facets(mesh), std::make_pair(bottom_facets_after, true));
 }
@@ -138,7 +106,7 @@ TEST(ThinVertices, AVertexOverSeveralFacetsSinksOntoThem3D) {
     faces.push_back({p, q, q + top});
     faces.push_back({p, q + top, p + top});
   }
-  Mesh<3> mesh = star_of<3>(points, faces);
+  Mesh<3> mesh = adapt_test::star_of<3>(points, faces);
   ASSERT_EQ(bottom_facets(mesh), std::make_pair(4, true));
   // The bottom becomes the fan of its rim of six edges from the foot, every facet still of ref 1.
   expect_sunk<3>(mesh, 13, 6);
@@ -151,7 +119,7 @@ TEST(ThinVertices, AVertexOverSeveralFacetsSinksOntoThem3D) {
 TEST(ThinVertices, AVertexThatNoCollapseRemovesSinksOntoTheEdgeBelow2D) {
   const std::vector<Vec2> points{Vec2{{1, 0}},    Vec2{{2, 0}},      Vec2{{2, 1}}, Vec2{{1.55, 0.5}}, Vec2{{1.55, 1}},
                                  Vec2{{1.45, 1}}, Vec2{{1.45, 0.5}}, Vec2{{1, 1}}, Vec2{{1.5, 1e-6}}};
-  Mesh<2> mesh = star_of<2>(points, {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 6}, {6, 7}, {7, 0}});
+  Mesh<2> mesh = adapt_test::star_of<2>(points, {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 6}, {6, 7}, {7, 0}});
   expect_sunk<2>(mesh, 9, 2);
 }
 
