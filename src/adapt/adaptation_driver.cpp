@@ -17,13 +17,20 @@
 namespace hocav {
 
 template <int D>
+AdaptationReport report_of_input(const Mesh<D>& input) {
+  AdaptationReport report;
+  report.dimension = D;
+  report.input_vertices = input.vertex_count();
+  report.input_elements = input.element_count();
+  return report;
+}
+
+template <int D>
 AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                                const AdaptationSettings& settings, const AdaptationLoop<D>& loop) {
   AdaptedMesh<D> out;
   AdaptationReport& report = out.report;
-  report.dimension = D;
-  report.input_vertices = mesh.vertex_count();
-  report.input_elements = mesh.element_count();
+  report = report_of_input(mesh);
   auto start = std::chrono::steady_clock::now();
   report.run = loop ? loop(mesh, metric, geometry, settings) : adapt_to_metric(mesh, metric, geometry, settings);
   // The metric at the adapted vertices, which keep it when the boundary settles (it moves with the mesh).
@@ -187,6 +194,8 @@ template std::unique_ptr<AdaptationSetup<2>> set_up_adaptation(const Mesh<2>&, s
                                                                const std::string&);
 template std::unique_ptr<AdaptationSetup<3>> set_up_adaptation(const Mesh<3>&, std::vector<SymMat<3>>, const AdaptationJob<3>&,
                                                                const std::string&);
+template AdaptationReport report_of_input(const Mesh<2>&);
+template AdaptationReport report_of_input(const Mesh<3>&);
 template AdaptedMesh<2> adapt_in_metric(Mesh<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*, const AdaptationSettings&,
                                         const AdaptationLoop<2>&);
 template AdaptedMesh<3> adapt_in_metric(Mesh<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*, const AdaptationSettings&,

@@ -28,6 +28,10 @@ template <int D>
 using AdaptationLoop =
     std::function<AdaptationRun(Mesh<D>&, const AdaptationMetric<D>&, const BoundaryGeometry<D>*, const AdaptationSettings&)>;
 
+// The report of an adaptation of `input`, before it runs: the dimension and the input's counts.
+template <int D>
+AdaptationReport report_of_input(const Mesh<D>& input);
+
 // Adapts `mesh` (P1, compact) to `metric` with `loop` (empty: adapt_to_metric), new boundary points on
 // `geometry` (may be null). Fills the report's figures from the input's and output's counts, and its
 // peak memory.

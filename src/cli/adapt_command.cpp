@@ -207,6 +207,7 @@ PartsEnd<D> end_in_parts(const AdaptOptions& o, const BoundaryGeometry<D>* geome
                          std::optional<OutputInParts>& output) {
   return [&o, geometry, &settings, &output](MeshPart<D>& part, const AdaptationMetric<D>& metric) {
     output = finish_adaptation_in_parts(part, metric, geometry, settings, o.output, file_extension(o.output) == ".meshb");
+    return output->counts;
   };
 }
 
@@ -260,17 +261,14 @@ void finish_outputs(const AdaptOptions& o, const AdaptationReport& report, Outpu
 // serial run's, the distributed loop, and the report made of what the parts measured and wrote.
 template <int D>
 void adapt_in_parts(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptOptions& o, OutputSet& outputs) {
-  const auto start = std::chrono::steady_clock::now();
   const AdaptationJob<D> job = adaptation_job<D>(o);
   mesh.forget_edges();
   const auto setup = set_up_adaptation(mesh, std::move(metrics), job, o.input);
-  AdaptationReport report;
-  report.dimension = D;
-  report.input_vertices = mesh.vertex_count();
-  report.input_elements = mesh.element_count();
+  AdaptationReport report = report_of_input(mesh);
   report.hausdorff_bounded_vertices = setup->hausdorff_bounded_vertices;
   std::optional<OutputInParts> output;
   broadcast_boundary(mesh);
+  const auto start = std::chrono::steady_clock::now();  // after the set-up, as the serial run's
   report.run = adapt_distributed(mesh, *setup->metric, setup->geometry.get(), setup->settings, o.partition_seed,
                                  iteration_printer(o, report.distributed_iterations),
                                  end_in_parts<D>(o, setup->geometry.get(), setup->settings, output));

@@ -315,8 +315,10 @@ void Mesh<D>::link_facets() {
   std::vector<Index> ball, stack;
   for (auto f = static_cast<Index>(facet_element_face_.size()); f < facet_count(); ++f) {
     const Facet& facet = facets_[f];
-    Index found = facet_face_near(facet, vertex_element_.at(facet[0]), ball, stack);
-    // A vertex of a non-manifold place has balls the walk does not join: every element, then.
+    // A vertex of a non-manifold place has balls the walk does not join: the facet's other vertices,
+    // then every element.
+    Index found = kNoIndex;
+    for (int i = 0; i < D && found == kNoIndex; ++i) found = facet_face_near(facet, facet[i], ball, stack);
     for (Index k = 0; k < element_count() && found == kNoIndex; ++k)
       if (const int face = local_face_of<D>(elements_[k], facet.data()); face >= 0) found = k * (D + 1) + face;
     if (found == kNoIndex) throw Error("boundary facet " + std::to_string(f + 1) + " is not a face of any element");
@@ -333,10 +335,10 @@ void Mesh<D>::link_facets() {
 }
 
 template <int D>
-Index Mesh<D>::facet_face_near(const Facet& facet, Index start, std::vector<Index>& ball, std::vector<Index>& stack) const {
+Index Mesh<D>::facet_face_near(const Facet& facet, Index center, std::vector<Index>& ball, std::vector<Index>& stack) const {
   ball.clear();
   ElementList seen(ball);  // (a frozen interface vertex's ball may hold thousands)
-  stack.assign(1, start);
+  stack.assign(1, vertex_element_.at(center));
   while (!stack.empty()) {
     const Index k = stack.back();
     stack.pop_back();
@@ -344,7 +346,7 @@ Index Mesh<D>::facet_face_near(const Facet& facet, Index start, std::vector<Inde
     seen.push_back(k);
     if (const int face = local_face_of<D>(elements_[k], facet.data()); face >= 0) return k * (D + 1) + face;
     for (int face = 0; face <= D; ++face)
-      if (elements_[k][face] != facet[0]) stack.push_back(adjacency_[k][face]);
+      if (elements_[k][face] != center) stack.push_back(adjacency_[k][face]);
   }
   return kNoIndex;
 }

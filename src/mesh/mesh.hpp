@@ -258,9 +258,9 @@ class Mesh {
   Index insert_edge(Index a, Index b);
   // After compact(): the hashes keyed by vertex or facet ids, rebuilt from the renumbered arrays.
   void rekey_after_renumbering();
-  // The element face (element * (D + 1) + face) of `facet` among the elements around its first
-  // vertex, walked from `start` across the faces that hold that vertex; kNoIndex if none.
-  Index facet_face_near(const Facet& facet, Index start, std::vector<Index>& ball, std::vector<Index>& stack) const;
+  // The element face (element * (D + 1) + face) of `facet` among the elements around its vertex
+  // `center`, walked from that vertex's element across the faces that hold it; kNoIndex if none.
+  Index facet_face_near(const Facet& facet, Index center, std::vector<Index>& ball, std::vector<Index>& stack) const;
   static std::uint64_t face_key(Index k, int face) { return static_cast<std::uint64_t>(k) * (D + 1) + static_cast<std::uint64_t>(face); }
   // The element-face -> facet map and its per-element bits change together.
   void link_face_facet(Index k, int face, Index f);

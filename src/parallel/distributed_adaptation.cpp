@@ -19,7 +19,6 @@
 #include "parallel/communicator.hpp"
 #include "parallel/element_partition.hpp"
 #include "parallel/part_adaptation.hpp"
-#include "parallel/part_metric_statistics.hpp"
 #include "parallel/part_migration.hpp"
 #include "parallel/peer_iteration.hpp"
 #include "parallel/share_metric.hpp"
@@ -306,15 +305,19 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   const RootRuns<D> root{metric, geometry, settings};
   const bool gather = !end;
   const AdaptationRun last = last_runs_on_root(part, whole_result.seeds, whole_result.next_global_id, &root, gather, last_figures);
-  last_figures.vertices = distinct_vertex_count(part);
-  last_figures.elements = sum_over_processes(part.mesh.element_count());
-  if (on_iteration) on_iteration(last_figures);
-  mesh = gather ? whole_mesh_of(std::move(part)) : Mesh<D>{};
-  if (gather) mesh.build_topology();
-  if (!gather) {
+  if (gather) {
+    mesh = whole_mesh_of(std::move(part));
+    mesh.build_topology();
+    last_figures.vertices = mesh.vertex_count();
+    last_figures.elements = mesh.element_count();
+  } else {
+    mesh = Mesh<D>{};
     gathered_metric(home, recipe, Mesh<D>{}, last_figures);  // (rank 0 holds the whole back mesh; the others gather their shares)
-    end(part, metric);
+    const MeshFileCounts written = end(part, metric);
+    last_figures.vertices = written.vertices;
+    last_figures.elements = written.elements;
   }
+  if (on_iteration) on_iteration(last_figures);
   run.passes.insert(run.passes.end(), last.passes.begin(), last.passes.end());
   run.converged = last.converged;
   run.stopped_with_window_open = last.stopped_with_window_open;
@@ -336,8 +339,6 @@ void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>& analy
   partition_first(part, scattered_by_part({}, {}), whole.partition_seed, unused);
   const WholeMeshResult whole_result = whole.run(part, home, {}, {});
   last_runs_on_root<D>(part, whole_result.seeds, whole_result.next_global_id, nullptr, !end, unused);
-  distinct_vertex_count(part);  // (rank 0's figures of the last runs)
-  sum_over_processes(part.mesh.element_count());
   if (!end) return;
   const std::unique_ptr<ShareMetric<D>> near = gathered_metric(home, recipe, part.mesh, unused);
   end(part, near->partway(1));

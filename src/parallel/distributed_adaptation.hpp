@@ -13,6 +13,7 @@
 
 #include "adapt/adaptation_loop.hpp"
 #include "parallel/distributed_iteration.hpp"
+#include "parallel/mesh_file_runs.hpp"
 #include "parallel/mesh_parts.hpp"
 
 namespace hocav {
@@ -28,9 +29,9 @@ constexpr int kInterfaceBandRings = 2;
 
 // What every process does with its part at the end of the loop, in place of the gather onto rank 0
 // (docs/distributed.md §The end in the parts): its part after the last runs (compact, with topology,
-// global ids and pinned flags), and the target metric around it.
+// global ids and pinned flags), and the target metric around it; it returns what it wrote.
 template <int D>
-using PartsEnd = std::function<void(MeshPart<D>&, const AdaptationMetric<D>&)>;
+using PartsEnd = std::function<MeshFileCounts(MeshPart<D>&, const AdaptationMetric<D>&)>;
 
 // On rank 0: adapts `mesh` (P1, with topology) with every process (the others in
 // serve_distributed_adaptation), the same interface as adapt_to_metric. `mesh` is the metric's back
@@ -38,7 +39,7 @@ using PartsEnd = std::function<void(MeshPart<D>&, const AdaptationMetric<D>&)>;
 // its topology on return; the run's passes are each iteration's, summed over the parts, then those
 // of the last serial runs near the last interfaces (docs/distributed.md). `partition_seed`: the
 // partitioner's (element_partition.hpp; 0: its own). With `end`, every process ends with it on its
-// part and `mesh` is left empty; the last runs' figures then count the parts' vertices and elements.
+// part and `mesh` is left empty; the last runs' figures then count what it wrote.
 template <int D>
 AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                                 const AdaptationSettings& settings, std::int64_t partition_seed,

@@ -60,29 +60,7 @@ MetricStatistics distributed_metric_statistics(const MeshPart<D>& part, std::spa
   return whole.statistics();
 }
 
-template <int D>
-Index distinct_vertex_count(const MeshPart<D>& part) {
-  const std::vector<char> shared = maybe_shared(part);
-  Index own = 0;
-  std::vector<std::vector<Index>> outgoing(static_cast<std::size_t>(process_count()));
-  for (Index v = 0; v < part.mesh.vertex_count(); ++v) {
-    if (!shared[v]) {
-      ++own;
-      continue;
-    }
-    const FaceKey<1> key{part.global_ids[v]};
-    outgoing[static_cast<std::size_t>(meeting_process<1>(key, process_count()))].push_back(part.global_ids[v]);
-  }
-  std::vector<Index> arrived = exchange_values_joined(outgoing);
-  std::sort(arrived.begin(), arrived.end());
-  own += static_cast<Index>(std::unique(arrived.begin(), arrived.end()) - arrived.begin());
-  return sum_over_processes(own);
-}
-
 template MetricStatistics distributed_metric_statistics(const MeshPart<2>&, std::span<const double>, int);
 template MetricStatistics distributed_metric_statistics(const MeshPart<3>&, std::span<const double>, int);
-
-template Index distinct_vertex_count(const MeshPart<2>&);
-template Index distinct_vertex_count(const MeshPart<3>&);
 
 }  // namespace hocav

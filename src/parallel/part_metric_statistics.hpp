@@ -1,6 +1,6 @@
 // The figures of a distributed mesh's output (`hocav adapt`'s edge lengths and qualities,
-// mesh_statistics.hpp, and its vertex count) measured in its parts, no process holding the whole
-// (docs/distributed.md §The end in the parts): each element by its part, each edge and vertex once.
+// mesh_statistics.hpp) measured in its parts, no process holding the whole (docs/distributed.md §The
+// end in the parts): each element by its part, each edge once.
 #pragma once
 
 #include <span>
@@ -18,10 +18,5 @@ namespace hocav {
 // sums in another order.
 template <int D>
 MetricStatistics distributed_metric_statistics(const MeshPart<D>& part, std::span<const double> vertex_metrics, int threads);
-
-// Every process at once, each with its part (global ids, pinned flags): the number of distinct
-// vertices of the whole mesh (a vertex several parts hold counted once), on every process.
-template <int D>
-Index distinct_vertex_count(const MeshPart<D>& part);
 
 }  // namespace hocav

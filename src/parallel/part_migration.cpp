@@ -52,8 +52,7 @@ template <int D>
 MeshPart<D> repartition(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> old_interface,
                         std::int64_t partition_seed, long long* bytes_sent) {
   // (The graph is a temporary: freed before the migration, which holds the old part and the new.)
-  const std::vector<int> destination = partition_distributed_graph(distributed_element_graph(part, loads, old_interface), process_count(),
-                                                                   partition_seed);
+  const std::vector<int> destination = partition_distributed_part(part, loads, old_interface, partition_seed);
   return migrate_part(part, destination, bytes_sent);
 }
 

@@ -47,7 +47,7 @@ std::vector<int> partition_from_root(const Mesh<D>& mesh, std::int64_t seed, lon
   MeshPart<D> piece = process_rank() == 0 ? scatter_pieces(mesh, cut, sent) : unpack_part<D>(receive_bytes(0));
   piece.mesh.build_topology();
   const std::vector<double> loads(static_cast<std::size_t>(piece.mesh.element_count()), 1.0);
-  const std::vector<int> parts = partition_distributed_graph(distributed_element_graph(piece, loads, {}), process_count(), seed);
+  const std::vector<int> parts = partition_distributed_part(piece, loads, {}, seed);
   if (bytes_sent) *bytes_sent += sent;
   if (process_rank() != 0) {
     send_values(0, parts);

@@ -6,12 +6,15 @@
 // 2. back home: every element that crossed to another process twice comes back identical, and each
 //    process has its first part again;
 // 3. the distributed dual graph of the slab parts is the whole mesh's (every face, both ways, once),
-//    and PT-Scotch's partition of it is balanced; migrated by it, the parts merge into the mesh.
+//    and PT-Scotch's partition of it is balanced; migrated by it, the parts merge into the mesh;
+// 4. the graph of groups of neighbouring elements is symmetric, its arcs weigh the faces between
+//    groups, it has at most half as many rows, and the partition of the elements by it is balanced.
 // Exit code 0 when all holds on every process, 1 otherwise (with a message).
 #include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <numeric>
 #include <string>
 
 #include "adapt/vertex_classes.hpp"
@@ -84,13 +87,15 @@ std::vector<int> homes(const MeshPart<D>& part, const Mesh<D>& mesh, const std::
 }
 
 // The whole graph's rows, gathered: every face of `mesh` both ways once, with the serial graph's weights.
-bool graph_is_the_meshes(const DistributedGraph& graph, const WeightedGraph& serial) {
-  const std::vector<std::int64_t> edges = all_gather_value(static_cast<std::int64_t>(graph.rows.neighbours.size()));
+// Every process's sum of `value`.
+std::int64_t summed(std::int64_t value) {
   std::int64_t total = 0;
-  for (std::int64_t e : edges) total += e;
-  if (total != static_cast<std::int64_t>(serial.neighbours.size()))
-    return fail("the distributed graph has " + std::to_string(total) + " arcs, the mesh's " + std::to_string(serial.neighbours.size()));
-  // Symmetric: each arc's reverse is some process's; sent to the owner of its head.
+  for (std::int64_t each : all_gather_value(value)) total += each;
+  return total;
+}
+
+// Whether each arc's reverse, with the same weight, is some process's: sent to the owner of its head.
+bool graph_is_symmetric(const DistributedGraph& graph) {
   std::vector<std::vector<std::array<std::int64_t, 3>>> arcs(static_cast<std::size_t>(process_count()));
   const std::vector<std::int64_t> firsts = all_gather_value(graph.first);
   const auto owner = [&](std::int64_t row) {
@@ -109,6 +114,42 @@ bool graph_is_the_meshes(const DistributedGraph& graph, const WeightedGraph& ser
       if (!found) return fail("arc " + std::to_string(head) + " -> " + std::to_string(row) + " has no reverse");
     }
   return true;
+}
+
+bool graph_is_the_meshes(const DistributedGraph& graph, const WeightedGraph& serial) {
+  const std::int64_t total = summed(static_cast<std::int64_t>(graph.rows.neighbours.size()));
+  if (total != static_cast<std::int64_t>(serial.neighbours.size()))
+    return fail("the distributed graph has " + std::to_string(total) + " arcs, the mesh's " + std::to_string(serial.neighbours.size()));
+  return graph_is_symmetric(graph);
+}
+
+// The graph of `part`'s groups of neighbouring elements (unit loads, no old interface): symmetric,
+// its arcs' weights summing to the faces between groups (both ways) that the element graph
+// `elements` has, at most half as many rows as elements; the elements' partition by it balanced.
+template <int D>
+bool grouped_graph_holds(const MeshPart<D>& part, const DistributedGraph& elements, Index element_count, const std::string& name) {
+  const std::vector<double> loads(static_cast<std::size_t>(part.mesh.element_count()), 1.0);
+  const ElementGroups groups = neighbouring_element_groups(part.mesh);
+  const DistributedGraph graph = distributed_element_graph(part, loads, {}, groups);
+  bool ok = graph_is_symmetric(graph);
+  std::int64_t between = 0;  // the element graph's arcs between groups: faces, each way, all of weight 1
+  for (std::size_t k = 0; k + 1 < elements.rows.offsets.size(); ++k)
+    for (std::int64_t a = elements.rows.offsets[k]; a < elements.rows.offsets[k + 1]; ++a) {
+      const std::int64_t other = elements.rows.neighbours[a] - elements.first;
+      between += other < 0 || other >= static_cast<std::int64_t>(groups.group_of.size()) || groups.group_of[other] != groups.group_of[k];
+    }
+  const std::int64_t weight = summed(std::accumulate(graph.rows.edge_weights.begin(), graph.rows.edge_weights.end(), std::int64_t{0}));
+  if (weight != summed(between))
+    ok = fail(name + ": the grouped graph's arcs weigh " + std::to_string(weight) + ", the faces between groups are " +
+              std::to_string(summed(between)));
+  if (2 * summed(static_cast<std::int64_t>(groups.count)) > element_count) ok = fail(name + ": the groups are not coarser");
+  const std::vector<int> cut = partition_distributed_part(part, loads, {}, 0);
+  const std::vector<Index> got = all_gather_value(migrate_part(part, cut).mesh.element_count());
+  const double mean = static_cast<double>(element_count) / process_count();
+  for (int p = 0; p < process_count(); ++p)
+    if (got[p] > 1.1 * mean + 1)
+      ok = fail(name + ": the grouped partition's part " + std::to_string(p) + " has " + std::to_string(got[p]) + " elements");
+  return ok;
 }
 
 template <int D>
@@ -135,9 +176,11 @@ bool run(const Mesh<D>& mesh) {
   ok = same(migrate_part(slabbed, back), home, name + " back home") && ok;
 
   // 3. The distributed graph of the slab parts, cut by PT-Scotch, and the parts it makes.
-  const DistributedGraph graph = distributed_element_graph(
-      slabbed, std::vector<double>(static_cast<std::size_t>(slabbed.mesh.element_count()), 1.0), {});
+  const DistributedGraph graph = distributed_element_graph(slabbed,
+                                                           std::vector<double>(static_cast<std::size_t>(slabbed.mesh.element_count()), 1.0),
+                                                           {}, single_element_groups(slabbed.mesh.element_count()));
   ok = graph_is_the_meshes(graph, serial) && ok;
+  ok = grouped_graph_holds(slabbed, graph, mesh.element_count(), name) && ok;
   const std::vector<int> cut = partition_distributed_graph(graph, count);
   const MeshPart<D> balanced = migrate_part(slabbed, cut);
   const std::vector<Index> got = all_gather_value(balanced.mesh.element_count());
