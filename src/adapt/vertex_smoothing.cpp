@@ -69,9 +69,7 @@ Vec<D> repair_target(const AdaptationMesh<D>& am, Index v, const typename Mesh<D
 // its face opposite v.
 template <int D>
 bool over_another_surface(const Mesh<D>& mesh, Index v, Index k, Index own) {
-  const auto& element = mesh.element(k);
-  const auto local = static_cast<int>(std::find(element.begin(), element.end(), v) - element.begin());
-  const Index f = mesh.element_face_facet(k, local);
+  const Index f = mesh.element_face_facet(k, local_vertex(mesh, k, v));
   return f != kNoIndex && mesh.facet_ref(f) != mesh.facet_ref(own);
 }
 
