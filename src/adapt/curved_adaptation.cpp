@@ -385,13 +385,13 @@ CurvedAdaptationRun adapt_curved(Mesh<D>& mesh, const MetricField<D>& field, con
 }
 
 template <int D>
-CurvedMeasures measure_curved(Mesh<D>& mesh, const MetricField<D>& field, int threads) {
+CurvedMeasures measure_curved(Mesh<D>& mesh, const MetricField<D>& field, int threads, std::span<const char> skipped) {
   const P2Operations<D> operations(mesh, field, nullptr, {});
   ThreadPool pool(std::max(1, threads));
   // Each measure on the pool's threads, then the sums in order: the same figures for any count.
   const std::vector<double> lengths = scan_in_chunks<double>(pool, mesh.edge_count(), [&](Index e, std::vector<double>& out) {
     const auto& ends = mesh.edge_vertices(e);
-    if (ends[0] != kNoIndex) out.push_back(operations.edge_length(ends[0], ends[1]));
+    if (ends[0] != kNoIndex && (skipped.empty() || !skipped[e])) out.push_back(operations.edge_length(ends[0], ends[1]));
   });
   const std::vector<double> qualities = scan_in_chunks<double>(
       pool, mesh.element_count(), [&](Index k, std::vector<double>& out) { out.push_back(operations.quality(k)); });
@@ -412,13 +412,30 @@ CurvedMeasures measure_curved(Mesh<D>& mesh, const MetricField<D>& field, int th
     measures.quality_min = std::min(measures.quality_min, quality);
     measures.quality_mean += quality;
   }
+  measures.element_count = mesh.element_count();
   measures.quality_mean /= static_cast<double>(std::max<Index>(1, mesh.element_count()));
   return measures;
 }
 
+CurvedMeasures merge_curved_measures(const CurvedMeasures& a, const CurvedMeasures& b) {
+  CurvedMeasures sum;
+  sum.edge_count = a.edge_count + b.edge_count;
+  sum.element_count = a.element_count + b.element_count;
+  const auto weighted = [](double x, Index m, double y, Index n) {
+    return m + n == 0 ? 0.0 : (x * double(m) + y * double(n)) / double(m + n);
+  };
+  sum.length_min = std::min(a.length_min, b.length_min);
+  sum.length_max = std::max(a.length_max, b.length_max);
+  sum.length_mean = weighted(a.length_mean, a.edge_count, b.length_mean, b.edge_count);
+  sum.unit_share = weighted(a.unit_share, a.edge_count, b.unit_share, b.edge_count);
+  sum.quality_min = std::min(a.quality_min, b.quality_min);
+  sum.quality_mean = weighted(a.quality_mean, a.element_count, b.quality_mean, b.element_count);
+  return sum;
+}
+
 template CurvedAdaptationRun adapt_curved(Mesh<2>&, const MetricField<2>&, const P2CavityOptions&, int, int, const CurvedPassGeometry<2>&);
 template CurvedAdaptationRun adapt_curved(Mesh<3>&, const MetricField<3>&, const P2CavityOptions&, int, int, const CurvedPassGeometry<3>&);
-template CurvedMeasures measure_curved(Mesh<2>&, const MetricField<2>&, int);
-template CurvedMeasures measure_curved(Mesh<3>&, const MetricField<3>&, int);
+template CurvedMeasures measure_curved(Mesh<2>&, const MetricField<2>&, int, std::span<const char>);
+template CurvedMeasures measure_curved(Mesh<3>&, const MetricField<3>&, int, std::span<const char>);
 
 }  // namespace hocav

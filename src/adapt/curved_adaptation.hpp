@@ -10,6 +10,8 @@
 // of inner vertices.
 #pragma once
 
+#include <span>
+
 #include <vector>
 
 #include "cavity/p2_cavity_operator.hpp"
@@ -47,7 +49,7 @@ struct CurvedAdaptationRun {
 // The curved mesh in its metric: edge lengths of the curved edges and the curved mean ratio
 // (docs/curving.md §Curved quality) of the elements.
 struct CurvedMeasures {
-  Index edge_count = 0;
+  Index edge_count = 0, element_count = 0;
   double length_min = 0, length_mean = 0, length_max = 0;
   double unit_share = 0;  // share of edges with curved length in [1/√2, √2]
   double quality_min = 0, quality_mean = 0;
@@ -69,8 +71,12 @@ template <int D>
 CurvedAdaptationRun adapt_curved(Mesh<D>& mesh, const MetricField<D>& field, const P2CavityOptions& options, int max_passes,
                                  int threads = 1, const CurvedPassGeometry<D>& geometry = {});
 
-// Measured on `threads` threads; the same figures for any count.
+// Measured on `threads` threads; the same figures for any count. With `skipped` (per edge), the
+// edges flagged are not counted (a distributed part's interface edges that another part counts).
 template <int D>
-CurvedMeasures measure_curved(Mesh<D>& mesh, const MetricField<D>& field, int threads = 1);
+CurvedMeasures measure_curved(Mesh<D>& mesh, const MetricField<D>& field, int threads = 1, std::span<const char> skipped = {});
+
+// The measures of two meshes' elements and edges together (the parts of a distributed mesh).
+CurvedMeasures merge_curved_measures(const CurvedMeasures& a, const CurvedMeasures& b);
 
 }  // namespace hocav

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "base/thread_pool.hpp"
 #include "bezier/p2_element.hpp"
@@ -50,6 +51,23 @@ ValueSummary summarize_values(std::span<const double> values, int bin_count, dou
   }
   summary.average = sum / double(values.size());
   return summary;
+}
+
+ValueSummary merge_summaries(const ValueSummary& a, const ValueSummary& b) {
+  if (b.count == 0) return a;
+  if (a.count == 0) return b;
+  if (a.histogram.size() != b.histogram.size() || a.histogram_lower != b.histogram_lower || a.histogram_upper != b.histogram_upper)
+    throw std::logic_error("merge_summaries: summaries with other bins");
+  ValueSummary sum = a;
+  sum.count = a.count + b.count;
+  sum.min = std::min(a.min, b.min);
+  sum.max = std::max(a.max, b.max);
+  sum.average = (a.average * double(a.count) + b.average * double(b.count)) / double(sum.count);
+  sum.invalid_count += b.invalid_count;
+  for (std::size_t i = 0; i < sum.histogram.size(); ++i) sum.histogram[i] += b.histogram[i];
+  sum.below += b.below;
+  sum.above += b.above;
+  return sum;
 }
 
 MeshJacobianSummary summarize_jacobian_quality(std::span<const JacobianQuality> qualities, int bin_count) {

@@ -30,6 +30,10 @@ struct ValueSummary {
 
 ValueSummary summarize_values(std::span<const double> values, int bin_count, double histogram_lower, double histogram_upper);
 
+// The summary of two sets of values together, summarized apart with the same bins (the average to
+// rounding: a distributed mesh's parts summarize their own elements).
+ValueSummary merge_summaries(const ValueSummary& a, const ValueSummary& b);
+
 struct MeshJacobianSummary {
   ValueSummary min_normalized_jacobian;  // histogram over [0, 1]; curved elements may exceed 1
   ValueSummary scaled_jacobian;          // histogram over [0, 1]

@@ -6,8 +6,8 @@
 // Metric-based adaptation to a unit mesh (split, collapse, swap, smooth; boundary points on the
 // geometry), then, with --order 2, the curving of `hocav curve` in the same metric. Under
 // `mpirun -np N` (N > 1) the P1 loop and the curving are distributed (docs/distributed.md); rank 0
-// reads the input; a P1 Gamma output without --vtu is written in runs by the parts, any other by
-// rank 0, which also runs the curved passes of --curved.
+// reads the input; a Gamma output without --vtu or --curved is curved and written in runs by the
+// parts, any other by rank 0, which also runs the curved passes of --curved.
 #include <chrono>
 #include <cstdint>
 #include <iostream>
@@ -194,21 +194,39 @@ void distribute(AdaptationJob<D>& job, const AdaptOptions& o, std::vector<Distri
   };
 }
 
-// Whether a distributed run ends in its parts, which write the output in runs (docs/distributed.md
-// §The end in the parts): a P1 Gamma output without a .vtu; else rank 0 gathers the mesh.
+// Whether a distributed run ends in its parts, which curve it (--order 2) and write the output in
+// runs (docs/distributed.md §The end in the parts): a Gamma output without a .vtu or --curved; else
+// rank 0 gathers the mesh.
 bool ends_in_parts(const AdaptOptions& o) {
   const std::string extension = file_extension(o.output);
-  return process_count() > 1 && o.order == 1 && o.vtu.empty() && (extension == ".mesh" || extension == ".meshb");
+  return process_count() > 1 && !o.curved && o.vtu.empty() && (extension == ".mesh" || extension == ".meshb");
+}
+
+// With --order 2, the parts' curving: the geometry of the adapted boundary as the serial run makes
+// it, but a CAD model's, which is the adaptation's own `geometry` (one gmsh model is open at a time;
+// the adapted mesh keeps the input's refs, which match it to the model).
+template <int D>
+std::optional<PartsCurvingStep<D>> parts_curving(const AdaptOptions& o, const AdaptationJob<D>& job, const BoundaryGeometry<D>* geometry) {
+  if (!job.curving) return std::nullopt;
+  PartsCurvingStep<D> step;
+  if (boundary_choice_named(o.surface).kind == BoundaryKind::kCad)
+    step.geometry = [geometry](const Mesh<D>&) { return std::shared_ptr<const BoundaryGeometry<D>>(std::shared_ptr<void>(), geometry); };
+  else
+    step.geometry = [make = job.geometry](const Mesh<D>& boundary) { return std::shared_ptr<const BoundaryGeometry<D>>(make(boundary)); };
+  step.options = *job.curving;
+  return step;
 }
 
 // The end in the parts with `geometry` and `settings` (rank 0's or the job's), its figures to `output`.
 template <int D>
-PartsEnd<D> end_in_parts(const AdaptOptions& o, const BoundaryGeometry<D>* geometry, const AdaptationSettings& settings,
-                         std::optional<OutputInParts>& output) {
-  return [&o, geometry, &settings, &output](MeshPart<D>& part, const AdaptationMetric<D>& metric) {
-    output = finish_adaptation_in_parts(part, metric, geometry, settings, o.output, file_extension(o.output) == ".meshb");
-    return output->counts;
-  };
+PartsEnd<D> end_in_parts(const AdaptOptions& o, const AdaptationJob<D>& job, const BoundaryGeometry<D>* geometry,
+                         const AdaptationSettings& settings, std::optional<OutputInParts>& output) {
+  return
+      [&o, geometry, &settings, &output, curving = parts_curving(o, job, geometry)](MeshPart<D>& part, const AdaptationMetric<D>& metric) {
+        output = finish_adaptation_in_parts(part, metric, geometry, settings, o.output, file_extension(o.output) == ".meshb",
+                                            curving ? &*curving : nullptr);
+        return output->counts;
+      };
 }
 
 // The other processes: the same job, serving rank 0's distributed loop with the geometry of the
@@ -223,9 +241,9 @@ void serve_adaptation(const AdaptOptions& o, const std::vector<std::byte>& input
     const AdaptationSettings settings = job_settings(job, 0);
     std::optional<OutputInParts> output;
     serve_distributed_adaptation(job.analytic, geometry.get(), settings,
-                                 ends_in_parts(o) ? end_in_parts<D>(o, geometry.get(), settings, output) : PartsEnd<D>{});
+                                 ends_in_parts(o) ? end_in_parts<D>(o, job, geometry.get(), settings, output) : PartsEnd<D>{});
   }  // one CAD model open at a time, as on rank 0
-  if (!job.curving) return;
+  if (!job.curving || ends_in_parts(o)) return;
   std::vector<std::byte> bytes;
   broadcast_bytes(bytes);
   const auto geometry = job.geometry(unpack_part<D>(bytes).mesh);
@@ -258,7 +276,8 @@ void finish_outputs(const AdaptOptions& o, const AdaptationReport& report, Outpu
 }
 
 // Rank 0 of a run that ends in its parts (ends_in_parts): the job set up on the whole input as the
-// serial run's, the distributed loop, and the report made of what the parts measured and wrote.
+// serial run's, the distributed loop, and the report made of what the parts measured, curved and
+// wrote.
 template <int D>
 void adapt_in_parts(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptOptions& o, OutputSet& outputs) {
   const AdaptationJob<D> job = adaptation_job<D>(o);
@@ -271,18 +290,26 @@ void adapt_in_parts(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptOp
   const auto start = std::chrono::steady_clock::now();  // after the set-up, as the serial run's
   report.run = adapt_distributed(mesh, *setup->metric, setup->geometry.get(), setup->settings, o.partition_seed,
                                  iteration_printer(o, report.distributed_iterations),
-                                 end_in_parts<D>(o, setup->geometry.get(), setup->settings, output));
+                                 end_in_parts<D>(o, job, setup->geometry.get(), setup->settings, output));
+  if (!o.quiet && output->curving)
+    for (const DistributedCurvingRound& round : output->curving->rounds) print_curving_round(round);
   if (!o.quiet) {
     std::ostringstream line;
     line << std::setprecision(3) << "distributed: the end in the parts: " << output->counts.vertices << " vertices and "
-         << output->counts.elements << " elements settled, measured and written in runs, " << output->seconds << " s\n";
+         << output->counts.elements << " elements settled, measured, " << (output->curving ? "curved, " : "") << "written in runs, "
+         << output->seconds << " s\n";
     std::cerr << line.str();
   }
   if (setup->geometry) report.settling = output->settling;
   report.output_vertices = output->counts.vertices;
   report.output_elements = output->counts.elements;
   if (output->measures) report.measures = *output->measures;
-  report.seconds_adapt = seconds_since(start);
+  report.seconds_adapt = seconds_since(start) - output->seconds_curve;
+  if (output->curving) {
+    report.curving = output->curving->report;
+    report.curved_measures = output->curving->curved;
+    report.seconds_curve = output->seconds_curve;
+  }
   report.peak_memory_bytes = peak_resident_bytes();
   finish_outputs(o, report, outputs);
 }

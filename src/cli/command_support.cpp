@@ -26,7 +26,7 @@ void CurvingProgress::complete() {
 }
 
 void print_curving_round(const DistributedCurvingRound& figures) {
-  std::cerr << "distributed: round " << figures.round << " of " << kDistributedCurvingRounds << ": " << process_count() << " parts, "
+  std::cerr << "distributed: round " << figures.round << " of " << figures.rounds << ": " << process_count() << " parts, "
             << figures.interface_faces << " interface faces, " << figures.interface_vertices << " vertices on the interfaces, "
             << figures.cavities << " cavities";
   if (figures.round > 1) std::cerr << ", " << figures.old_interface_vertices_frozen_again << " old interface vertices frozen again";

@@ -9,6 +9,7 @@
 #include "mesh/boundary_vertices.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/element_partition.hpp"
+#include "parallel/part_curving.hpp"
 #include "parallel/part_measures.hpp"
 #include "parallel/part_message.hpp"
 #include "parallel/root_mesh_partition.hpp"
@@ -18,68 +19,6 @@ namespace {
 
 // PT-Scotch's seed for the first round's partition: the same mesh, the same parts.
 constexpr std::int64_t kCurvingPartitionSeed = 0;
-
-// What a part's curving sends back besides its nodes.
-struct PartCurving {
-  P2CavityCounters counters;
-  ProposalCompletion completion;
-  double seconds = 0;
-  long long proposals_left = 0;
-};
-static_assert(std::is_trivially_copyable_v<PartCurving>);
-
-// Curves one part in its own metric field (the part's vertices carry the whole field's
-// log-metrics): its interface vertices lie on boundary facets, so they are not reinserted, and the
-// interface edges get no proposal; with a `region` (round 2) only the region is curved.
-template <int D>
-PartCurving curve_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics, const std::vector<char>& region,
-                       const BoundaryGeometry<D>* geometry, const CurvingOptions& options) {
-  if (part.mesh.element_count() == 0) return {};
-  part.mesh.build_topology();
-  const MetricField<D> field = MetricField<D>::from_log_metrics(part.mesh, std::move(log_metrics));
-  ReinsertionOptions reinsertion = reinsertion_options(options);
-  reinsertion.region = region;
-  const ProposalScope scope{kInterfaceRef, region, part.global_ids};
-  // (Rank 0 measures the whole mesh: the part's own measures would be thrown away.)
-  const CurvingWork work = curve_unmeasured(part.mesh, field, geometry, reinsertion, scope);
-  return {work.result.counters, work.completion, work.result.seconds, work.proposals_left};
-}
-
-void add_completion(ProposalCompletion& sum, const ProposalCompletion& part) {
-  sum.placed += part.placed;
-  sum.already_placed += part.already_placed;
-  sum.pulled_back += part.pulled_back;
-  sum.blocked += part.blocked;
-  sum.absent += part.absent;
-  sum.bends += part.bends;
-  sum.volume_nodes_bent += part.volume_nodes_bent;
-  sum.largest_gap = std::max(sum.largest_gap, part.largest_gap);
-  sum.elements_certified += part.elements_certified;
-  sum.sweeps = std::max(sum.sweeps, part.sweeps);
-  sum.seconds = std::max(sum.seconds, part.seconds);
-}
-
-// The parts of a round as one: counts summed, times the slowest part's.
-void add_part(PartCurving& round, const PartCurving& part) {
-  round.counters += part.counters;
-  add_completion(round.completion, part.completion);
-  round.seconds = std::max(round.seconds, part.seconds);
-  round.proposals_left += part.proposals_left;
-}
-
-// The rounds as one: counts and times summed.
-void add_round(PartCurving& total, const PartCurving& round) {
-  const double seconds = total.seconds + round.seconds, completion_seconds = total.completion.seconds + round.completion.seconds;
-  add_part(total, round);
-  total.seconds = seconds;
-  total.completion.seconds = completion_seconds;
-}
-
-// Later rounds reinsert the vertices still pending only (those every round so far froze on its
-// interfaces): they partition, send and write back the elements within this many rings of them (a
-// vertex's cavity is its ball, and a correction bends the edges around it, one ring further); the
-// rest of the mesh is in no part.
-constexpr int kBandRings = 2;
 
 // One round on rank 0: partition, send, curve part 0, receive, write the parts' nodes back (a
 // curving changes no element: write_back_nodes).
@@ -114,7 +53,7 @@ struct RootRound {
     const bool first = pending.empty();
     std::vector<Index> elements_sent(static_cast<std::size_t>(count));
     MeshPart<D> own = send_parts(band_parts, elements_sent);
-    PartCurving round = curve_part(own, log_metrics_of(own), region_of(own), geometry, options);
+    PartCurving round = curve_part(own, log_metrics_of(own), region_of(own), own.global_ids, geometry, options);
     write_back(edge_node_records(own), {own.mesh.element_count()}, 0, elements_sent[0]);
     if (first) {
       first_log_metrics = log_metrics_of(own);
@@ -318,7 +257,8 @@ void serve_distributed_curving(const BoundaryGeometry<D>* geometry, const Curvin
     MeshPart<D> part = unpack_part<D>(bytes);
     std::vector<SymMat<D>> log_metrics = receive_values<SymMat<D>>(0);
     const std::vector<char> region = receive_values<char>(0);
-    const PartCurving result = curve_part(part, first_round ? log_metrics : std::move(log_metrics), region, geometry, options);
+    const PartCurving result = curve_part(part, first_round ? log_metrics : std::move(log_metrics), region, part.global_ids, geometry,
+                                          options);
     send_values(0, edge_node_records(part));
     send_values(0, std::vector<Index>{part.mesh.element_count()});
     send_values(0, std::vector<PartCurving>{result});

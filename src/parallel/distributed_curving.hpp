@@ -17,9 +17,10 @@ namespace hocav {
 constexpr int kDistributedCurvingRounds = 3;
 
 struct DistributedCurvingRound {
-  int round = 0;                 // 1-based
-  Index interface_faces = 0;     // between parts, each counted once
-  Index interface_vertices = 0;  // shared by parts in the round
+  int round = 0;                           // 1-based
+  int rounds = kDistributedCurvingRounds;  // at most
+  Index interface_faces = 0;               // between parts, each counted once
+  Index interface_vertices = 0;            // shared by parts in the round
   // Rounds 2 and 3: the vertices pending (on the interfaces of every round before) that lie on this
   // round's too (not reinserted).
   Index old_interface_vertices_frozen_again = 0;

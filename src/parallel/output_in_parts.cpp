@@ -5,12 +5,20 @@
 
 #include "base/stopwatch.hpp"
 #include "io/node_metrics.hpp"
+#include "parallel/boundary_of_parts.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/part_adaptation.hpp"
 #include "parallel/part_metric_statistics.hpp"
 
 namespace hocav {
 namespace {
+
+// The largest of every process's `seconds`.
+double slowest(double seconds) {
+  double largest = seconds;
+  for (double each : all_gather_value(seconds)) largest = std::max(largest, each);
+  return largest;
+}
 
 // Every part's settling as one.
 BoundarySettling summed_over_processes(const BoundarySettling& own) {
@@ -30,25 +38,50 @@ BoundarySettling summed_over_processes(const BoundarySettling& own) {
   return sum;
 }
 
+// The parts curved, in the geometry of the adapted boundary.
+template <int D>
+CurvingInParts curved_parts(MeshPart<D>& part, const std::vector<SymMat<D>>& metrics, const PartsCurvingStep<D>& step, bool measure) {
+  long long bytes = 0;
+  const MeshPart<D> boundary = boundary_of_parts(part, &bytes);
+  const std::shared_ptr<const BoundaryGeometry<D>> geometry = step.geometry ? step.geometry(boundary.mesh) : nullptr;
+  CurvingInParts curving = curve_in_parts(part, metrics, boundary, geometry.get(), step.options, measure);
+  curving.rounds[0].bytes_sent += sum_over_processes(bytes);
+  return curving;
+}
+
+// The curving's figures that the file's counts give.
+void count_curved_output(CurvingReport& report, const MeshFileCounts& counts) {
+  report.elements = counts.elements;
+  report.points_before = counts.vertices;
+  report.points_after = counts.vertices + counts.nodes;
+}
+
 }  // namespace
 
 template <int D>
 OutputInParts finish_adaptation_in_parts(MeshPart<D>& part, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
-                                         const AdaptationSettings& settings, const std::string& path, bool binary) {
+                                         const AdaptationSettings& settings, const std::string& path, bool binary,
+                                         const PartsCurvingStep<D>* curving) {
   const auto start = std::chrono::steady_clock::now();
   OutputInParts out;
   if (!part.mesh.has_topology()) part.mesh.build_topology();
   const std::vector<SymMat<D>> metrics = metrics_at_vertices(part.mesh, metric, settings.threads);
   if (geometry) out.settling = summed_over_processes(settle_part_boundary<D>(part, metrics, *geometry, settings.feature_angle_degrees));
   if (settings.measure_output) out.measures = distributed_metric_statistics(part, rows_of_metrics(metrics).values, settings.threads);
+  if (curving) {
+    const auto curving_start = std::chrono::steady_clock::now();
+    out.curving = curved_parts(part, metrics, *curving, settings.measure_output);
+    out.seconds_curve = slowest(seconds_since(curving_start));
+  }
   out.counts = write_mesh_runs(path, part, binary);
-  for (double seconds : all_gather_value(seconds_since(start))) out.seconds = std::max(out.seconds, seconds);
+  if (out.curving) count_curved_output(out.curving->report, out.counts);
+  out.seconds = slowest(seconds_since(start));
   return out;
 }
 
 template OutputInParts finish_adaptation_in_parts(MeshPart<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*,
-                                                  const AdaptationSettings&, const std::string&, bool);
+                                                  const AdaptationSettings&, const std::string&, bool, const PartsCurvingStep<2>*);
 template OutputInParts finish_adaptation_in_parts(MeshPart<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*,
-                                                  const AdaptationSettings&, const std::string&, bool);
+                                                  const AdaptationSettings&, const std::string&, bool, const PartsCurvingStep<3>*);
 
 }  // namespace hocav

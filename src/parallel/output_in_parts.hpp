@@ -1,13 +1,17 @@
 // The end of a distributed adaptation in its parts, in place of the gather onto rank 0
 // (docs/distributed.md §The end in the parts): every process settles its part's boundary, measures
-// it and writes it into the output file in runs, no process holding the whole mesh.
+// it, curves it (--order 2) and writes it into the output file in runs, no process holding the whole
+// mesh.
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "adapt/adaptation_loop.hpp"
 #include "adapt/boundary_settling.hpp"
+#include "parallel/curving_in_parts.hpp"
 #include "parallel/mesh_file_runs.hpp"
 #include "report/mesh_statistics.hpp"
 
@@ -17,17 +21,31 @@ namespace hocav {
 struct OutputInParts {
   BoundarySettling settling;                 // the parts' summed (distances, iterations, rounds and time: the largest)
   std::optional<MetricStatistics> measures;  // with settings.measure_output
+  std::optional<CurvingInParts> curving;     // with a curving step; its report's counts the file's
   MeshFileCounts counts;                     // of the file written
   double seconds = 0;                        // the slowest process's
+  double seconds_curve = 0;                  // the curving's part of it
+};
+
+// The curving of the output in the parts (--order 2, docs/distributed.md §Curving in the parts).
+template <int D>
+struct PartsCurvingStep {
+  // The geometry of the adapted boundary (boundary_of_parts), as the serial run makes it of the
+  // adapted mesh; null for none. Shared: it may be the adaptation's own (a CAD model, of which one
+  // is open at a time).
+  std::function<std::shared_ptr<const BoundaryGeometry<D>>(const Mesh<D>& boundary)> geometry;
+  CurvingOptions options;
 };
 
 // Every process at once, each with its part after the loop (P1, compact, global ids, pinned flags)
 // and `metric` around it: the metric at its vertices, which they keep when the boundary settles onto
 // `geometry` (may be null; interface vertices frozen, settle_part_boundary), the output's figures in
-// it (distributed_metric_statistics), then the Gamma file `path` in runs (write_mesh_runs; .meshb
-// when `binary`).
+// it (distributed_metric_statistics), with `curving` the parts curved (curve_in_parts; their curved
+// measures with settings.measure_output), then the Gamma file `path` in runs (write_mesh_runs; .meshb
+// when `binary`; P2 when curved).
 template <int D>
 OutputInParts finish_adaptation_in_parts(MeshPart<D>& part, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
-                                         const AdaptationSettings& settings, const std::string& path, bool binary);
+                                         const AdaptationSettings& settings, const std::string& path, bool binary,
+                                         const PartsCurvingStep<D>* curving = nullptr);
 
 }  // namespace hocav

@@ -67,10 +67,9 @@ std::vector<std::vector<std::array<Index, 2>>> interface_edges_measured_before(s
 }
 
 template <int D>
-PartMeasures measure_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics, std::span<const NodeUpdate<D>> updates,
-                          const std::vector<char>& on_boundary, std::span<const std::array<Index, 2>> measured_before, int threads) {
+void apply_node_updates(MeshPart<D>& part, std::span<const NodeUpdate<D>> updates) {
   Mesh<D>& mesh = part.mesh;
-  if (mesh.element_count() == 0) return {};
+  if (updates.empty()) return;
   std::unordered_map<Index, Index> local;
   for (Index v = 0; v < mesh.vertex_count(); ++v)
     if (part.global_ids[v] != kNoIndex) local.emplace(part.global_ids[v], v);
@@ -82,6 +81,14 @@ PartMeasures measure_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics,
     const Index a = local_of(update.ends[0]), b = local_of(update.ends[1]);
     if (const Index e = a == kNoIndex || b == kNoIndex ? kNoIndex : mesh.find_edge(a, b); e != kNoIndex) mesh.edge_node(e) = update.node;
   }
+}
+
+template <int D>
+PartMeasures measure_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics, std::span<const NodeUpdate<D>> updates,
+                          const std::vector<char>& on_boundary, std::span<const std::array<Index, 2>> measured_before, int threads) {
+  Mesh<D>& mesh = part.mesh;
+  if (mesh.element_count() == 0) return {};
+  apply_node_updates(part, updates);
   std::unordered_set<std::uint64_t> skipped;
   for (const auto& [a, b] : measured_before) skipped.insert(key_of(a, b));
   std::vector<Index> edges;  // the edges this part measures, in order
@@ -100,9 +107,10 @@ PartMeasures measure_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics,
   });
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const auto& [a, b] = mesh.edge_vertices(edges[i]);
-    if (!gains[i].sampled_inside)
+    if (!gains[i].sampled_inside) {
       measures.deferred.push_back({part.global_ids[a], part.global_ids[b]});
-    else
+      measures.deferred_in_part.push_back(gains[i].value);
+    } else
       measures.gains.push_back(gains[i].value);
   }
   return measures;
@@ -112,6 +120,7 @@ PartMeasures measure_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics,
   template PartOutline outline_of(const MeshPart<D>&);                                                                               \
   template std::vector<std::vector<NodeUpdate<D>>> node_updates_by_part(const Mesh<D>&, std::span<const Index>,                      \
                                                                         std::span<const PartOutline>);                               \
+  template void apply_node_updates(MeshPart<D>&, std::span<const NodeUpdate<D>>);                                                    \
   template PartMeasures measure_part(MeshPart<D>&, std::vector<SymMat<D>>, std::span<const NodeUpdate<D>>, const std::vector<char>&, \
                                      std::span<const std::array<Index, 2>>, int);
 HOCAV_INSTANTIATE(2)

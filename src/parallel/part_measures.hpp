@@ -37,6 +37,11 @@ template <int D>
 std::vector<std::vector<NodeUpdate<D>>> node_updates_by_part(const Mesh<D>& mesh, std::span<const Index> written,
                                                              std::span<const PartOutline> parts);
 
+// Writes each update's node into the part's edge with those global ends; an update whose edge the
+// part lacks is passed over.
+template <int D>
+void apply_node_updates(MeshPart<D>& part, std::span<const NodeUpdate<D>> updates);
+
 // Per part, the interface edges (by global ends) that an earlier part holds too: each edge's gain
 // is measured once, by the first part that holds it.
 std::vector<std::vector<std::array<Index, 2>>> interface_edges_measured_before(std::span<const PartOutline> parts);
@@ -50,6 +55,7 @@ struct PartMeasures {
   std::vector<JacobianQuality> elements;
   std::vector<double> gains;
   std::vector<std::array<Index, 2>> deferred;
+  std::vector<double> deferred_in_part;  // per deferred edge, its gain in the part's own field
 };
 
 // Measures a curved part (P2, with its topology) in the field of its own vertices' log-metrics,

@@ -138,11 +138,11 @@ struct Unpacker {
   // The elements, then (with the topology the elements give) the mesh's facets and a facet on each
   // face with a neighbour in the whole mesh but none in the new part, as split_mesh makes them;
   // part_of_shipments links them to their faces at the end.
+  // Pieces without elements (a boundary's) give the facets alone, and their pinned vertices required.
   void add_elements_and_facets() {
     for (const Shipment<D>& s : arrived)
       for (std::size_t k = 0; k < s.elements.size(); ++k) part.mesh.add_element(mapped(s.elements[k]), s.element_refs[k]);
-    if (part.mesh.element_count() == 0) return;
-    part.mesh.build_topology();
+    if (part.mesh.element_count() > 0) part.mesh.build_topology();
     for (const Shipment<D>& s : arrived)
       for (std::size_t f = 0; f < s.facets.size(); ++f) {
         const Index id = part.mesh.add_facet(mapped(s.facets[f]), s.facet_refs[f]);
@@ -197,6 +197,11 @@ struct Unpacker {
 }  // namespace
 
 template <int D>
+Shipment<D> shipment_of(const MeshPart<D>& part, std::span<const Index> elements) {
+  return Packer<D>(part).ship(0, elements);
+}
+
+template <int D>
 void pack_shipments(const MeshPart<D>& part, std::span<const int> destination, int destinations,
                     const std::function<void(int, const Shipment<D>&)>& take) {
   std::vector<std::vector<Index>> leaving(static_cast<std::size_t>(destinations));
@@ -218,6 +223,8 @@ MeshPart<D> part_of_shipments(const std::vector<Shipment<D>>& arrived) {
 
 template void pack_shipments(const MeshPart<2>&, std::span<const int>, int, const std::function<void(int, const Shipment<2>&)>&);
 template void pack_shipments(const MeshPart<3>&, std::span<const int>, int, const std::function<void(int, const Shipment<3>&)>&);
+template Shipment<2> shipment_of(const MeshPart<2>&, std::span<const Index>);
+template Shipment<3> shipment_of(const MeshPart<3>&, std::span<const Index>);
 template MeshPart<2> part_of_shipments(const std::vector<Shipment<2>>&);
 template MeshPart<3> part_of_shipments(const std::vector<Shipment<3>>&);
 

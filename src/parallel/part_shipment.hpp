@@ -73,12 +73,18 @@ template <int D>
 void pack_shipments(const MeshPart<D>& part, std::span<const int> destination, int destinations,
                     const std::function<void(int, const Shipment<D>&)>& take);
 
+// The shipment of `elements` of `part` (with its topology, global ids and pinned flags), as
+// pack_shipments makes one: the part itself is left as it is (a copy of some of its elements).
+template <int D>
+Shipment<D> shipment_of(const MeshPart<D>& part, std::span<const Index> elements);
+
 // The part a process builds from the pieces it receives, in rank order: its vertices in the order of
 // their global ids, its elements piece by piece in each piece's order, the mesh's facets, then a
 // required facet of ref kInterfaceRef on each face with a neighbour in the whole mesh but none in
 // the part (its vertices required), the lines once each, P2 nodes when the pieces carry them, and
-// its topology. Throws Error when two pieces give one vertex different points, or P1 and P2
-// elements arrive together.
+// its topology. Pieces without elements (a boundary's: boundary_of_parts.hpp) give their vertices,
+// facets and lines, no topology. Throws Error when two pieces give one vertex different points, or
+// P1 and P2 elements arrive together.
 template <int D>
 MeshPart<D> part_of_shipments(const std::vector<Shipment<D>>& arrived);
 

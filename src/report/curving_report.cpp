@@ -78,7 +78,14 @@ CurvingReport make_curving_report(const Mesh<D>& mesh, const MetricField<D>& fie
 }
 
 template <int D>
-CurvingReport curving_run_report(const MetricField<D>& field, Index points_before, const ReinsertionResult& result,
+double anisotropy_of(const SymMat<D>& log_metric) {
+  const auto eigen = sym_eigen(log_metric);
+  // Sizes are e^(−θ/2): their ratio is e^((θmax − θmin)/2).
+  return std::exp(0.5 * (eigen.values[D - 1] - eigen.values[0]));
+}
+
+template <int D>
+CurvingReport curving_run_report(double max_anisotropy, Index points_before, const ReinsertionResult& result,
                                  Index boundary_proposals_left) {
   CurvingReport report;
   report.dimension = D;
@@ -87,13 +94,16 @@ CurvingReport curving_run_report(const MetricField<D>& field, Index points_befor
   report.counters = result.counters;
   report.edges_optimized_per_second = result.seconds > 0 ? static_cast<double>(result.counters.edges_optimized) / result.seconds : 0;
   report.boundary_proposals_left = boundary_proposals_left;
-
-  for (Index v = 0; v < field.back_mesh().vertex_count(); ++v) {
-    auto eigen = sym_eigen(field.vertex_log_metric(v));
-    // Sizes are e^(−θ/2): their ratio is e^((θmax − θmin)/2).
-    report.max_anisotropy = std::max(report.max_anisotropy, std::exp(0.5 * (eigen.values[D - 1] - eigen.values[0])));
-  }
+  report.max_anisotropy = max_anisotropy;
   return report;
+}
+
+template <int D>
+CurvingReport curving_run_report(const MetricField<D>& field, Index points_before, const ReinsertionResult& result,
+                                 Index boundary_proposals_left) {
+  double largest = 0;
+  for (Index v = 0; v < field.back_mesh().vertex_count(); ++v) largest = std::max(largest, anisotropy_of(field.vertex_log_metric(v)));
+  return curving_run_report<D>(largest, points_before, result, boundary_proposals_left);
 }
 
 template <int D>
@@ -205,6 +215,10 @@ template EdgeGain edge_gain(const Mesh<2>&, const MetricField<2>&, Index);
 template EdgeGain edge_gain(const Mesh<3>&, const MetricField<3>&, Index);
 template void summarize_curved_output(CurvingReport&, const Mesh<2>&, std::span<const JacobianQuality>, std::span<const double>);
 template void summarize_curved_output(CurvingReport&, const Mesh<3>&, std::span<const JacobianQuality>, std::span<const double>);
+template double anisotropy_of(const SymMat<2>&);
+template double anisotropy_of(const SymMat<3>&);
+template CurvingReport curving_run_report<2>(double, Index, const ReinsertionResult&, Index);
+template CurvingReport curving_run_report<3>(double, Index, const ReinsertionResult&, Index);
 template CurvingReport curving_run_report(const MetricField<2>&, Index, const ReinsertionResult&, Index);
 template CurvingReport curving_run_report(const MetricField<3>&, Index, const ReinsertionResult&, Index);
 template void measure_curved_output(CurvingReport&, const Mesh<2>&, const MetricField<2>&, int);

@@ -61,6 +61,14 @@ void summarize_curved_output(CurvingReport& report, const Mesh<D>& mesh, std::sp
 template <int D>
 CurvingReport curving_run_report(const MetricField<D>& field, Index points_before, const ReinsertionResult& result,
                                  Index boundary_proposals_left);
+// The same with the metric's largest anisotropy given (a distributed curving's, over its parts).
+template <int D>
+CurvingReport curving_run_report(double max_anisotropy, Index points_before, const ReinsertionResult& result,
+                                 Index boundary_proposals_left);
+
+// The ratio of the largest to the smallest size of a metric, from its logarithm.
+template <int D>
+double anisotropy_of(const SymMat<D>& log_metric);
 
 // Measures the output (Jacobians, gains) and gathers the run's figures.
 template <int D>

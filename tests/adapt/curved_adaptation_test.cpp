@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "../mesh/inner_facet_meshes.hpp"
 #include "adapt/adaptation_driver.hpp"
 #include "adapt_test_support.hpp"
@@ -73,6 +75,23 @@ void check_curved_loop() {
   EXPECT_EQ(threaded.unit_share, measured.unit_share);
   EXPECT_EQ(threaded.quality_min, measured.quality_min);
   EXPECT_EQ(threaded.quality_mean, measured.quality_mean);
+  // Every edge skipped: the elements alone; the two merged give the whole again (a distributed
+  // mesh's parts, curving_in_parts.hpp).
+  const CurvedMeasures elements_only = measure_curved(curved.mesh, *curved.adapted.field, 1,
+                                                      std::vector<char>(static_cast<std::size_t>(curved.mesh.edge_count()), 1));
+  EXPECT_EQ(elements_only.edge_count, 0);
+  EXPECT_EQ(elements_only.element_count, curved.mesh.element_count());
+  CurvedMeasures edges_only = measured;
+  edges_only.element_count = 0;
+  edges_only.quality_min = INFINITY;
+  const CurvedMeasures merged = merge_curved_measures(elements_only, edges_only);
+  EXPECT_EQ(merged.edge_count, measured.edge_count);
+  EXPECT_EQ(merged.length_min, measured.length_min);
+  EXPECT_EQ(merged.length_max, measured.length_max);
+  EXPECT_DOUBLE_EQ(merged.length_mean, measured.length_mean);
+  EXPECT_DOUBLE_EQ(merged.unit_share, measured.unit_share);
+  EXPECT_EQ(merged.quality_min, measured.quality_min);
+  EXPECT_DOUBLE_EQ(merged.quality_mean, measured.quality_mean);
   EXPECT_GE(measured.unit_share, plain.adapted.report.curved_measures->unit_share);
   // No operation makes an element worse than the worst it replaces or the mesh's worst.
   EXPECT_GE(measured.quality_min, plain.adapted.report.curved_measures->quality_min);

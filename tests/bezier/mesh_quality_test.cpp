@@ -70,5 +70,27 @@ TEST(BezierMeshQuality, SummaryOfValues) {
   EXPECT_EQ(summarize_values({}, 4, 0.0, 1.0).count, 0);
 }
 
+// Two sets summarized apart and merged: the summary of both (a distributed mesh's parts).
+TEST(BezierMeshQuality, MergedSummariesAreTheSummaryOfBoth) {
+  const std::vector<double> first{-0.5, 0.0, 0.05, 0.5}, second{0.95, 1.0, 3.0, 0.31, 0.32};
+  std::vector<double> both = first;
+  both.insert(both.end(), second.begin(), second.end());
+  const ValueSummary whole = summarize_values(both, 10, 0.0, 1.0);
+  const ValueSummary merged = merge_summaries(summarize_values(first, 10, 0.0, 1.0), summarize_values(second, 10, 0.0, 1.0));
+  EXPECT_EQ(merged.count, whole.count);
+  EXPECT_EQ(merged.min, whole.min);
+  EXPECT_EQ(merged.max, whole.max);
+  EXPECT_NEAR(merged.average, whole.average, 1e-15);
+  EXPECT_EQ(merged.invalid_count, whole.invalid_count);
+  EXPECT_EQ(merged.below, whole.below);
+  EXPECT_EQ(merged.above, whole.above);
+  EXPECT_EQ(merged.histogram, whole.histogram);
+  // An empty side changes nothing, on either side.
+  const ValueSummary none = summarize_values({}, 10, 0.0, 1.0);
+  EXPECT_EQ(merge_summaries(none, whole).histogram, whole.histogram);
+  EXPECT_EQ(merge_summaries(whole, none).min, whole.min);
+  EXPECT_THROW(merge_summaries(whole, summarize_values(first, 4, 0.0, 1.0)), std::logic_error);
+}
+
 }  // namespace
 }  // namespace hocav
