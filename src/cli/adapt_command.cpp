@@ -297,7 +297,9 @@ void adapt_in_parts(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptOp
     std::ostringstream line;
     line << std::setprecision(3) << "distributed: the end in the parts: " << output->counts.vertices << " vertices and "
          << output->counts.elements << " elements settled, measured, " << (output->curving ? "curved, " : "") << "written in runs, "
-         << output->seconds << " s\n";
+         << output->seconds << " s";
+    if (output->curving) line << " (" << output->curving->deferred_gains_in_parts << " edge gains measured past a part's border)";
+    line << '\n';
     std::cerr << line.str();
   }
   if (setup->geometry) report.settling = output->settling;

@@ -15,7 +15,7 @@
 
 namespace hocav {
 
-// What the curving did, the same on every process.
+// What the curving did, the same on every process (but the rounds' vertex counts: rank 0's).
 struct CurvingInParts {
   // As a serial curving's, but the counts of the output (elements, points before and after),
   // which the file's writing gives.
