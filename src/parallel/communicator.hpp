@@ -2,6 +2,7 @@
 // mpirun, one process otherwise or when built without MPI (the CMake option HOCAV_WITH_MPI).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstring>
 #include <type_traits>
@@ -116,6 +117,14 @@ T sum_over_processes(const T& value) {
   T sum{};
   for (const T& each : all_gather_value(value)) sum += each;
   return sum;
+}
+
+// The largest of every process's `value`, on every process.
+template <typename T>
+T max_over_processes(const T& value) {
+  T largest = value;
+  for (const T& each : all_gather_value(value)) largest = std::max(largest, each);
+  return largest;
 }
 
 template <typename T>

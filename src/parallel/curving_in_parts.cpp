@@ -151,13 +151,6 @@ MeshJacobianSummary merged_over_processes(const MeshJacobianSummary& own) {
   return all;
 }
 
-// Collective: the largest of every process's `value`.
-double largest_over_processes(double value) {
-  double largest = value;
-  for (double each : all_gather_value(value)) largest = std::max(largest, each);
-  return largest;
-}
-
 // The run on every process: its part, its log-metrics, and rank 0's band.
 template <int D>
 struct PartsRun {
@@ -182,7 +175,7 @@ struct PartsRun {
     figures.rounds = 2;
     figures.interface_faces = sum_over_processes(interface_facet_count(part.mesh)) / 2;
     figures.cavities = round.counters.cavities;
-    figures.seconds = largest_over_processes(seconds_since(start));
+    figures.seconds = max_over_processes(seconds_since(start));
     return round;
   }
 
@@ -220,7 +213,7 @@ struct PartsRun {
     figures.bytes_sent = sum_over_processes(bytes) + static_cast<long long>(updates.size() * sizeof(NodeUpdate<D>)) * (process_count() - 1);
     std::vector<PartCurving> shared{round};
     broadcast_values(shared);
-    figures.seconds = largest_over_processes(seconds_since(start));
+    figures.seconds = max_over_processes(seconds_since(start));
     return shared.at(0);
   }
 
@@ -316,7 +309,7 @@ CurvingInParts curve_in_parts(MeshPart<D>& part, const std::vector<SymMat<D>>& m
   result.vertices_reinserted = static_cast<Index>(total.counters.cavities);
   double anisotropy = 0;
   for (const SymMat<D>& log_metric : run.log_metrics) anisotropy = std::max(anisotropy, anisotropy_of(log_metric));
-  run.out.report = curving_run_report<D>(largest_over_processes(anisotropy), 0, result, static_cast<Index>(total.proposals_left));
+  run.out.report = curving_run_report<D>(max_over_processes(anisotropy), 0, result, static_cast<Index>(total.proposals_left));
   run.out.report.boundary_completion = total.completion;
   run.out.report.threads = options.threads;
   run.measure(held_below);

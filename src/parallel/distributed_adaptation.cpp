@@ -152,9 +152,8 @@ struct WholeMeshIterations {
   WholeMeshResult run(MeshPart<D>& part, const BackMeshShare<D>& home, DistributedIteration first,
                       const std::function<void(const DistributedIteration&)>& on_iteration) const {
     WholeMeshResult all;
-    for (Index most :
-         all_gather_value(part.global_ids.empty() ? Index{0} : *std::max_element(part.global_ids.begin(), part.global_ids.end()) + 1))
-      all.next_global_id = std::max(all.next_global_id, most);
+    all.next_global_id = max_over_processes(
+        part.global_ids.empty() ? Index{0} : *std::max_element(part.global_ids.begin(), part.global_ids.end()) + 1);
     for (int iteration = 1; iteration <= kDistributedIterations; ++iteration) {
       const double fraction = gradual_fraction(iteration, steps);
       DistributedIteration figures = iteration == 1 ? first : DistributedIteration{};

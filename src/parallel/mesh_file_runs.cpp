@@ -169,10 +169,8 @@ class RunsWriter {
   // Every vertex to the process of its run of global ids, which numbers the vertices it gets in id
   // order (after the runs before it) and answers each part its numbers.
   void number_vertices() {
-    Index id_space = 0;
-    for (Index most :
-         all_gather_value(part_.global_ids.empty() ? Index{0} : *std::max_element(part_.global_ids.begin(), part_.global_ids.end()) + 1))
-      id_space = std::max(id_space, most);
+    const Index id_space = max_over_processes(
+        part_.global_ids.empty() ? Index{0} : *std::max_element(part_.global_ids.begin(), part_.global_ids.end()) + 1);
     const EntityTags<D> tags(mesh_);
     std::vector<std::vector<VertexRecord<D>>> outgoing(static_cast<std::size_t>(process_count()));
     std::vector<std::vector<Index>> sent(outgoing.size());  // the part's vertices, as sent to each process

@@ -13,13 +13,6 @@
 namespace hocav {
 namespace {
 
-// The largest of every process's `seconds`.
-double slowest(double seconds) {
-  double largest = seconds;
-  for (double each : all_gather_value(seconds)) largest = std::max(largest, each);
-  return largest;
-}
-
 // Every part's settling as one.
 BoundarySettling summed_over_processes(const BoundarySettling& own) {
   BoundarySettling sum;
@@ -71,11 +64,11 @@ OutputInParts finish_adaptation_in_parts(MeshPart<D>& part, const AdaptationMetr
   if (curving) {
     const auto curving_start = std::chrono::steady_clock::now();
     out.curving = curved_parts(part, metrics, *curving, settings.measure_output);
-    out.seconds_curve = slowest(seconds_since(curving_start));
+    out.seconds_curve = max_over_processes(seconds_since(curving_start));
   }
   out.counts = write_mesh_runs(path, part, binary);
   if (out.curving) count_curved_output(out.curving->report, out.counts);
-  out.seconds = slowest(seconds_since(start));
+  out.seconds = max_over_processes(seconds_since(start));
   return out;
 }
 
