@@ -25,16 +25,6 @@ namespace {
 
 using EdgeEnds = std::array<Index, 2>;
 
-std::uint64_t key_of(const EdgeEnds& ends) { return Mesh<3>::edge_key(ends[0], ends[1]); }
-
-// The global ids of `part`'s vertices, to their local ids.
-template <int D>
-std::unordered_map<Index, Index> local_ids(const MeshPart<D>& part) {
-  std::unordered_map<Index, Index> local;
-  for (Index v = 0; v < part.mesh.vertex_count(); ++v) local.emplace(part.global_ids[v], v);
-  return local;
-}
-
 // Collective: the part's interface edges (by global ends, low first) that a part of a lower rank
 // holds too. Each is measured once, by the lowest rank that holds it; the holders meet where the
 // edge's ends hash to.
@@ -59,7 +49,8 @@ std::vector<EdgeEnds> interface_edges_held_below(const MeshPart<D>& part) {
 }
 
 // The elements near the interfaces, copied onto rank 0 from every part, with per vertex its
-// log-metric and whether it lies on a first-round interface (pending: to reinsert).
+// log-metric (until the band's field takes them) and whether it lies on a first-round interface
+// (pending: to reinsert).
 template <int D>
 struct Band {
   MeshPart<D> part;
@@ -67,17 +58,17 @@ struct Band {
   std::vector<char> pending;
 };
 
-// A process's message to rank 0: the shipment of its `elements`, then its vertices' log-metrics and
-// pending flags in the shipment's order.
+// A process's message to rank 0: the shipment of its `elements`, then its vertices' log-metrics (in
+// `field`, on the part's mesh) and pending flags in the shipment's order.
 template <int D>
-std::vector<std::byte> band_message(const MeshPart<D>& part, std::span<const Index> elements, const std::vector<SymMat<D>>& log_metrics,
+std::vector<std::byte> band_message(const MeshPart<D>& part, std::span<const Index> elements, const MetricField<D>& field,
                                     const std::vector<char>& pending) {
   const Shipment<D> shipment = shipment_of(part, elements);
-  const std::unordered_map<Index, Index> local = local_ids(part);
+  const std::unordered_map<Index, Index> local = local_ids_of(part);
   std::vector<SymMat<D>> logs;
   std::vector<char> flags;
   for (Index g : shipment.vertex_ids) {
-    logs.push_back(log_metrics[local.at(g)]);
+    logs.push_back(field.vertex_log_metric(local.at(g)));
     flags.push_back(pending[local.at(g)]);
   }
   ByteWriter out;
@@ -97,12 +88,12 @@ Band<D> band_of_messages(const std::vector<std::vector<std::byte>>& messages) {
     flags.push_back(in.take<char>());
   }
   Band<D> band{part_of_shipments(arrived), {}, {}};
-  const std::vector<Index>& ids = band.part.global_ids;  // sorted
-  band.log_metrics.resize(ids.size());
-  band.pending.assign(ids.size(), 0);
+  const std::unordered_map<Index, Index> local = local_ids_of(band.part);
+  band.log_metrics.resize(band.part.global_ids.size());
+  band.pending.assign(band.part.global_ids.size(), 0);
   for (std::size_t s = 0; s < arrived.size(); ++s)
     for (std::size_t i = 0; i < arrived[s].vertex_ids.size(); ++i) {
-      const auto v = static_cast<std::size_t>(std::lower_bound(ids.begin(), ids.end(), arrived[s].vertex_ids[i]) - ids.begin());
+      const Index v = local.at(arrived[s].vertex_ids[i]);
       band.log_metrics[v] = logs[s].at(i);
       band.pending[v] = static_cast<char>(band.pending[v] | flags[s].at(i));
     }
@@ -151,23 +142,24 @@ MeshJacobianSummary merged_over_processes(const MeshJacobianSummary& own) {
   return all;
 }
 
-// The run on every process: its part, its log-metrics, and rank 0's band.
+// The run on every process: its part, its vertices' metric field, and rank 0's band with its own.
 template <int D>
 struct PartsRun {
   MeshPart<D>& part;
-  std::vector<SymMat<D>> log_metrics;
+  const MetricField<D>& field;  // on the part's mesh, whose vertices and elements the curving keeps
   const MeshPart<D>& boundary;
   const BoundaryGeometry<D>* geometry;
   const CurvingOptions& options;
   CurvingInParts out;
   std::vector<Index> band_elements;  // the part's elements in the band
   std::optional<Band<D>> band;       // rank 0's
+  std::optional<MetricField<D>> band_field;
 
   // Round 1: every part with its interfaces frozen.
   PartCurving curve_parts() {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<Index> geometry_ids = boundary_indices(part, boundary.global_ids);
-    const PartCurving own = curve_part(part, log_metrics, {}, geometry_ids, geometry, options);
+    const PartCurving own = curve_part(part, field, {}, geometry_ids, geometry, options);
     PartCurving round;
     for (const PartCurving& each : all_gather_value(own)) add_part(round, each);
     DistributedCurvingRound& figures = out.rounds[0];
@@ -190,7 +182,7 @@ struct PartsRun {
     for (Index k = 0; k < part.mesh.element_count(); ++k)
       if (near[k]) band_elements.push_back(k);
     std::vector<std::vector<std::byte>> outgoing(static_cast<std::size_t>(process_count()));
-    outgoing[0] = band_message(part, band_elements, log_metrics, pending);
+    outgoing[0] = band_message(part, band_elements, field, pending);
     const long long bytes = process_rank() == 0 ? 0 : static_cast<long long>(outgoing[0].size());
     const std::vector<std::vector<std::byte>> arrived = exchange_bytes(outgoing);
     PartCurving round;
@@ -202,8 +194,8 @@ struct PartsRun {
       const std::vector<char> border = interface_vertex_flags(band->part.mesh);
       for (std::size_t v = 0; v < border.size(); ++v) figures.old_interface_vertices_frozen_again += border[v] && band->pending[v];
       figures.interface_vertices = static_cast<Index>(std::count(border.begin(), border.end(), 1));
-      round = curve_part(band->part, band->log_metrics, band->pending, boundary_indices(band->part, boundary.global_ids), geometry,
-                         options);
+      band_field = MetricField<D>::from_log_metrics(band->part.mesh, std::move(band->log_metrics));
+      round = curve_part(band->part, *band_field, band->pending, boundary_indices(band->part, boundary.global_ids), geometry, options);
       for (const EdgeNodeRecord<D>& record : edge_node_records(band->part))
         if (!record.frozen) updates.push_back({record.ends, record.node});
     }
@@ -224,30 +216,28 @@ struct PartsRun {
     const std::vector<bool> on_boundary_mesh = boundary_vertex_flags(boundary.mesh);
     std::vector<char> on_boundary;
     for (Index id : boundary_indices(part, boundary.global_ids)) on_boundary.push_back(id != kNoIndex && on_boundary_mesh[id]);
-    const PartMeasures measures = measure_part(part, log_metrics, {}, on_boundary, held_below, options.threads);
+    const PartMeasures measures = measure_part(part, field, {}, on_boundary, held_below, options.threads);
     GainTally gains;
     for (double gain : measures.gains) gains.add(gain);
     std::unordered_set<std::uint64_t> band_edges;
     for (Index k : band_elements)
       for (int e = 0; e < Simplex<D>::kEdges; ++e) {
         const auto& ends = part.mesh.edge_vertices(part.mesh.element_edge(k, e));
-        band_edges.insert(key_of({part.global_ids[ends[0]], part.global_ids[ends[1]]}));
+        band_edges.insert(global_edge_key({part.global_ids[ends[0]], part.global_ids[ends[1]]}));
       }
     std::vector<std::vector<EdgeEnds>> to_band(static_cast<std::size_t>(process_count()));
     Index in_part = 0;
     for (std::size_t i = 0; i < measures.deferred.size(); ++i)
-      if (band_edges.contains(key_of(measures.deferred[i])))
+      if (band_edges.contains(global_edge_key(measures.deferred[i])))
         to_band[0].push_back(measures.deferred[i]);
       else
         gains.add(measures.deferred_in_part[i]), ++in_part;
     out.deferred_gains_in_parts = sum_over_processes(in_part);
     const std::vector<EdgeEnds> deferred = exchange_values_joined(to_band);
     if (band && !deferred.empty()) {
-      const MetricField<D> field = MetricField<D>::from_log_metrics(band->part.mesh, band->log_metrics);
-      const std::vector<Index>& ids = band->part.global_ids;
-      const auto local = [&](Index g) { return static_cast<Index>(std::lower_bound(ids.begin(), ids.end(), g) - ids.begin()); };
+      const std::unordered_map<Index, Index> local = local_ids_of(band->part);
       for (const EdgeEnds& ends : deferred)
-        gains.add(edge_gain(band->part.mesh, field, band->part.mesh.find_edge(local(ends[0]), local(ends[1]))).value);
+        gains.add(edge_gain(band->part.mesh, *band_field, band->part.mesh.find_edge(local.at(ends[0]), local.at(ends[1]))).value);
     }
     GainTally all;
     for (const GainTally& each : all_gather_value(gains)) {
@@ -265,15 +255,14 @@ struct PartsRun {
   // The curved lengths and qualities (CurvedMeasures), every edge once.
   void measure_curved_output(const std::vector<EdgeEnds>& held_below) {
     std::unordered_set<std::uint64_t> skipped_keys;
-    for (const EdgeEnds& ends : held_below) skipped_keys.insert(key_of(ends));
+    for (const EdgeEnds& ends : held_below) skipped_keys.insert(global_edge_key(ends));
     std::vector<char> skipped(static_cast<std::size_t>(part.mesh.edge_count()), 0);
     for (Index e = 0; e < part.mesh.edge_count(); ++e) {
       const auto& ends = part.mesh.edge_vertices(e);
-      skipped[e] = ends[0] != kNoIndex && skipped_keys.contains(key_of({part.global_ids[ends[0]], part.global_ids[ends[1]]}));
+      skipped[e] = ends[0] != kNoIndex && skipped_keys.contains(global_edge_key({part.global_ids[ends[0]], part.global_ids[ends[1]]}));
     }
     CurvedMeasures own;
     if (part.mesh.element_count() > 0) {
-      const MetricField<D> field = MetricField<D>::from_log_metrics(part.mesh, log_metrics);
       own = measure_curved(part.mesh, field, options.threads, skipped);
     } else {
       own.length_min = own.quality_min = INFINITY;
@@ -297,7 +286,8 @@ CurvingInParts curve_in_parts(MeshPart<D>& part, const std::vector<SymMat<D>>& m
   if (!part.mesh.is_p2()) part.mesh.make_p2();  // interface edges keep their straight nodes on both sides
   std::vector<SymMat<D>> log_metrics;
   for (const SymMat<D>& metric : metrics) log_metrics.push_back(log_spd(metric));
-  PartsRun<D> run{part, std::move(log_metrics), boundary, geometry, options, {}, {}, {}};
+  const MetricField<D> field = MetricField<D>::from_log_metrics(part.mesh, std::move(log_metrics));
+  PartsRun<D> run{part, field, boundary, geometry, options, {}, {}, {}, {}};
   PartCurving total;
   add_round(total, run.curve_parts());
   add_round(total, run.curve_band());
@@ -308,7 +298,7 @@ CurvingInParts curve_in_parts(MeshPart<D>& part, const std::vector<SymMat<D>>& m
   result.seconds = total.seconds;
   result.vertices_reinserted = static_cast<Index>(total.counters.cavities);
   double anisotropy = 0;
-  for (const SymMat<D>& log_metric : run.log_metrics) anisotropy = std::max(anisotropy, anisotropy_of(log_metric));
+  for (Index v = 0; v < part.mesh.vertex_count(); ++v) anisotropy = std::max(anisotropy, anisotropy_of(field.vertex_log_metric(v)));
   run.out.report = curving_run_report<D>(max_over_processes(anisotropy), 0, result, static_cast<Index>(total.proposals_left));
   run.out.report.boundary_completion = total.completion;
   run.out.report.threads = options.threads;

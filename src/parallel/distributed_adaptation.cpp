@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <unordered_map>
 #include <utility>
 
 #include "adapt/metric_measures.hpp"
@@ -183,9 +184,9 @@ struct WholeMeshIterations {
 template <int D>
 std::vector<char> flags_of_global_ids(const MeshPart<D>& part, const std::vector<Index>& ids) {
   std::vector<char> flags(part.global_ids.size(), 0);
+  const std::unordered_map<Index, Index> local = local_ids_of(part);
   for (Index id : ids)
-    if (const auto at = std::lower_bound(part.global_ids.begin(), part.global_ids.end(), id); at != part.global_ids.end() && *at == id)
-      flags[static_cast<std::size_t>(at - part.global_ids.begin())] = 1;
+    if (const auto found = local.find(id); found != local.end()) flags[found->second] = 1;
   return flags;
 }
 

@@ -53,7 +53,7 @@ struct RootRound {
     const bool first = pending.empty();
     std::vector<Index> elements_sent(static_cast<std::size_t>(count));
     MeshPart<D> own = send_parts(band_parts, elements_sent);
-    PartCurving round = curve_part(own, log_metrics_of(own), region_of(own), own.global_ids, geometry, options);
+    PartCurving round = curve_part(own, field_of(own), region_of(own), own.global_ids, geometry, options);
     write_back(edge_node_records(own), {own.mesh.element_count()}, 0, elements_sent[0]);
     if (first) {
       first_log_metrics = log_metrics_of(own);
@@ -112,6 +112,8 @@ struct RootRound {
     for (std::size_t i = 0; i < band.size(); ++i) part_of[band[i]] = part_of_band[i];
     return part_of;
   }
+
+  MetricField<D> field_of(const MeshPart<D>& part) const { return MetricField<D>::from_log_metrics(part.mesh, log_metrics_of(part)); }
 
   std::vector<SymMat<D>> log_metrics_of(const MeshPart<D>& part) const {
     std::vector<SymMat<D>> out;
@@ -172,8 +174,8 @@ struct RootRound {
       send_values(p, boundary_of(first_outlines[p]));
       send_values(p, before[p]);
     }
-    PartMeasures all = measure_part<D>(first_own, std::move(first_log_metrics), updates[0], boundary_of(first_outlines[0]), before[0],
-                                       options.threads);
+    PartMeasures all = measure_part<D>(first_own, MetricField<D>::from_log_metrics(first_own.mesh, std::move(first_log_metrics)),
+                                       updates[0], boundary_of(first_outlines[0]), before[0], options.threads);
     for (int p = 1; p < process_count(); ++p) {
       const auto elements = receive_values<JacobianQuality>(p);
       const auto gains = receive_values<double>(p);
@@ -196,7 +198,8 @@ void measure_first_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics, i
   const auto updates = receive_values<NodeUpdate<D>>(0);
   const auto on_boundary = receive_values<char>(0);
   const auto before = receive_values<std::array<Index, 2>>(0);
-  const PartMeasures measures = measure_part<D>(part, std::move(log_metrics), updates, on_boundary, before, threads);
+  const PartMeasures measures = measure_part<D>(part, MetricField<D>::from_log_metrics(part.mesh, std::move(log_metrics)), updates,
+                                                on_boundary, before, threads);
   send_values(0, measures.elements);
   send_values(0, measures.gains);
   send_values(0, measures.deferred);
@@ -257,8 +260,8 @@ void serve_distributed_curving(const BoundaryGeometry<D>* geometry, const Curvin
     MeshPart<D> part = unpack_part<D>(bytes);
     std::vector<SymMat<D>> log_metrics = receive_values<SymMat<D>>(0);
     const std::vector<char> region = receive_values<char>(0);
-    const PartCurving result = curve_part(part, first_round ? log_metrics : std::move(log_metrics), region, part.global_ids, geometry,
-                                          options);
+    const MetricField<D> field = MetricField<D>::from_log_metrics(part.mesh, first_round ? log_metrics : std::move(log_metrics));
+    const PartCurving result = curve_part(part, field, region, part.global_ids, geometry, options);
     send_values(0, edge_node_records(part));
     send_values(0, std::vector<Index>{part.mesh.element_count()});
     send_values(0, std::vector<PartCurving>{result});

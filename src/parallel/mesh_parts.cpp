@@ -108,6 +108,14 @@ struct PartBuilder {
 }  // namespace
 
 template <int D>
+std::unordered_map<Index, Index> local_ids_of(const MeshPart<D>& part) {
+  std::unordered_map<Index, Index> local;
+  for (Index v = 0; v < part.mesh.vertex_count(); ++v)
+    if (part.global_ids[v] != kNoIndex) local.emplace(part.global_ids[v], v);
+  return local;
+}
+
+template <int D>
 void split_mesh_part_by_part(const Mesh<D>& mesh, std::span<const int> part_of, std::span<const int> order,
                              const std::function<void(int, MeshPart<D>)>& take) {
   std::vector<std::vector<Index>> elements(order.size()), facets(order.size());
@@ -220,6 +228,8 @@ void write_back_nodes(Mesh<D>& mesh, std::span<const EdgeNodeRecord<D>> nodes, s
 
 template std::vector<char> interface_vertex_flags(const Mesh<2>&);
 template std::vector<char> interface_vertex_flags(const Mesh<3>&);
+template std::unordered_map<Index, Index> local_ids_of(const MeshPart<2>&);
+template std::unordered_map<Index, Index> local_ids_of(const MeshPart<3>&);
 template std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<2>&);
 template std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<3>&);
 template std::vector<EdgeNodeRecord<2>> edge_node_records(const MeshPart<2>&);

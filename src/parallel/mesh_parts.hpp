@@ -8,6 +8,7 @@
 #include <functional>
 #include <limits>
 #include <span>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -34,6 +35,10 @@ struct MeshPart {
   // neither): split_mesh, whole_mesh_part and migrate_part set it; empty in a part from a message.
   std::vector<char> pinned;
 };
+
+// Per global id of a part's vertices, the vertex's local id (a vertex the part made has none).
+template <int D>
+std::unordered_map<Index, Index> local_ids_of(const MeshPart<D>& part);
 
 // Splits `mesh` (with topology, compact) into `part_count` parts, element k going to part
 // `part_of[k]` (to none when negative). A part's vertices keep the mesh's order, its elements and

@@ -22,11 +22,10 @@ void add_completion(ProposalCompletion& sum, const ProposalCompletion& part) {
 }  // namespace
 
 template <int D>
-PartCurving curve_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics, const std::vector<char>& region,
-                       std::span<const Index> geometry_ids, const BoundaryGeometry<D>* geometry, const CurvingOptions& options) {
+PartCurving curve_part(MeshPart<D>& part, const MetricField<D>& field, const std::vector<char>& region, std::span<const Index> geometry_ids,
+                       const BoundaryGeometry<D>* geometry, const CurvingOptions& options) {
   if (part.mesh.element_count() == 0) return {};
   if (!part.mesh.has_topology()) part.mesh.build_topology();
-  const MetricField<D> field = MetricField<D>::from_log_metrics(part.mesh, std::move(log_metrics));
   ReinsertionOptions reinsertion = reinsertion_options(options);
   reinsertion.region = region;
   const ProposalScope scope{kInterfaceRef, region, geometry_ids};
@@ -48,9 +47,9 @@ void add_round(PartCurving& total, const PartCurving& round) {
   total.completion.seconds = completion_seconds;
 }
 
-template PartCurving curve_part(MeshPart<2>&, std::vector<SymMat<2>>, const std::vector<char>&, std::span<const Index>,
+template PartCurving curve_part(MeshPart<2>&, const MetricField<2>&, const std::vector<char>&, std::span<const Index>,
                                 const BoundaryGeometry<2>*, const CurvingOptions&);
-template PartCurving curve_part(MeshPart<3>&, std::vector<SymMat<3>>, const std::vector<char>&, std::span<const Index>,
+template PartCurving curve_part(MeshPart<3>&, const MetricField<3>&, const std::vector<char>&, std::span<const Index>,
                                 const BoundaryGeometry<3>*, const CurvingOptions&);
 
 }  // namespace hocav

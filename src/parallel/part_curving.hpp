@@ -26,14 +26,14 @@ struct PartCurving {
 };
 static_assert(std::is_trivially_copyable_v<PartCurving>);
 
-// Curves one part in the field of its vertices' log-metrics (unmeasured: the whole mesh's figures
-// are measured apart): its interface vertices lie on boundary facets, so they are not reinserted,
+// Curves one part in `field`, made of its vertices' log-metrics on its mesh (unmeasured: the whole
+// mesh's figures are measured apart): its interface vertices lie on boundary facets, so they are not reinserted,
 // and the interface edges get no proposal; with a `region` (per vertex) only the region's vertices
 // are reinserted and only edges with both ends in it get a proposal. `geometry_ids`: per vertex,
 // its id in the mesh the geometry was made from (ProposalScope).
 template <int D>
-PartCurving curve_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics, const std::vector<char>& region,
-                       std::span<const Index> geometry_ids, const BoundaryGeometry<D>* geometry, const CurvingOptions& options);
+PartCurving curve_part(MeshPart<D>& part, const MetricField<D>& field, const std::vector<char>& region, std::span<const Index> geometry_ids,
+                       const BoundaryGeometry<D>* geometry, const CurvingOptions& options);
 
 // The parts of a round as one: counts summed, times the slowest part's.
 void add_part(PartCurving& round, const PartCurving& part);

@@ -6,7 +6,6 @@
 
 #include "base/thread_pool.hpp"
 #include "bezier/mesh_quality.hpp"
-#include "metric/metric_field.hpp"
 #include "report/curving_report.hpp"
 
 namespace hocav {
@@ -14,8 +13,6 @@ namespace {
 
 // Edges measured per task of the pool.
 constexpr std::size_t kMeasuredChunk = 1024;
-
-std::uint64_t key_of(Index a, Index b) { return Mesh<3>::edge_key(a, b); }
 
 }  // namespace
 
@@ -60,8 +57,8 @@ std::vector<std::vector<std::array<Index, 2>>> interface_edges_measured_before(s
   std::vector<std::vector<std::array<Index, 2>>> before(parts.size());
   for (std::size_t p = 0; p < parts.size(); ++p) {
     for (const auto& [a, b] : parts[p].interface_edges)
-      if (held.contains(key_of(a, b))) before[p].push_back({a, b});
-    for (const auto& [a, b] : parts[p].interface_edges) held.insert(key_of(a, b));
+      if (held.contains(global_edge_key({a, b}))) before[p].push_back({a, b});
+    for (const auto& [a, b] : parts[p].interface_edges) held.insert(global_edge_key({a, b}));
   }
   return before;
 }
@@ -70,9 +67,7 @@ template <int D>
 void apply_node_updates(MeshPart<D>& part, std::span<const NodeUpdate<D>> updates) {
   Mesh<D>& mesh = part.mesh;
   if (updates.empty()) return;
-  std::unordered_map<Index, Index> local;
-  for (Index v = 0; v < mesh.vertex_count(); ++v)
-    if (part.global_ids[v] != kNoIndex) local.emplace(part.global_ids[v], v);
+  const std::unordered_map<Index, Index> local = local_ids_of(part);
   const auto local_of = [&](Index g) {
     const auto found = local.find(g);
     return found == local.end() ? kNoIndex : found->second;
@@ -84,20 +79,19 @@ void apply_node_updates(MeshPart<D>& part, std::span<const NodeUpdate<D>> update
 }
 
 template <int D>
-PartMeasures measure_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics, std::span<const NodeUpdate<D>> updates,
+PartMeasures measure_part(MeshPart<D>& part, const MetricField<D>& field, std::span<const NodeUpdate<D>> updates,
                           const std::vector<char>& on_boundary, std::span<const std::array<Index, 2>> measured_before, int threads) {
   Mesh<D>& mesh = part.mesh;
   if (mesh.element_count() == 0) return {};
   apply_node_updates(part, updates);
   std::unordered_set<std::uint64_t> skipped;
-  for (const auto& [a, b] : measured_before) skipped.insert(key_of(a, b));
+  for (const auto& [a, b] : measured_before) skipped.insert(global_edge_key({a, b}));
   std::vector<Index> edges;  // the edges this part measures, in order
   for (Index e = 0; e < mesh.edge_count(); ++e) {
     const auto& [a, b] = mesh.edge_vertices(e);
     if (a == kNoIndex || (on_boundary[a] && on_boundary[b])) continue;
-    if (!skipped.contains(key_of(part.global_ids[a], part.global_ids[b]))) edges.push_back(e);
+    if (!skipped.contains(global_edge_key({part.global_ids[a], part.global_ids[b]}))) edges.push_back(e);
   }
-  const MetricField<D> field = MetricField<D>::from_log_metrics(mesh, std::move(log_metrics));
   PartMeasures measures;
   measures.elements = mesh_jacobian_quality(mesh, kReportedRefinement, threads);
   std::vector<EdgeGain> gains(edges.size());
@@ -116,12 +110,12 @@ PartMeasures measure_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics,
   return measures;
 }
 
-#define HOCAV_INSTANTIATE(D)                                                                                                         \
-  template PartOutline outline_of(const MeshPart<D>&);                                                                               \
-  template std::vector<std::vector<NodeUpdate<D>>> node_updates_by_part(const Mesh<D>&, std::span<const Index>,                      \
-                                                                        std::span<const PartOutline>);                               \
-  template void apply_node_updates(MeshPart<D>&, std::span<const NodeUpdate<D>>);                                                    \
-  template PartMeasures measure_part(MeshPart<D>&, std::vector<SymMat<D>>, std::span<const NodeUpdate<D>>, const std::vector<char>&, \
+#define HOCAV_INSTANTIATE(D)                                                                                                        \
+  template PartOutline outline_of(const MeshPart<D>&);                                                                              \
+  template std::vector<std::vector<NodeUpdate<D>>> node_updates_by_part(const Mesh<D>&, std::span<const Index>,                     \
+                                                                        std::span<const PartOutline>);                              \
+  template void apply_node_updates(MeshPart<D>&, std::span<const NodeUpdate<D>>);                                                   \
+  template PartMeasures measure_part(MeshPart<D>&, const MetricField<D>&, std::span<const NodeUpdate<D>>, const std::vector<char>&, \
                                      std::span<const std::array<Index, 2>>, int);
 HOCAV_INSTANTIATE(2)
 HOCAV_INSTANTIATE(3)

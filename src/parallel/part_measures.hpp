@@ -4,11 +4,13 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <span>
 #include <vector>
 
 #include "bezier/jacobian_bounds.hpp"
 #include "geom/sym_mat.hpp"
+#include "metric/metric_field.hpp"
 #include "parallel/mesh_parts.hpp"
 
 namespace hocav {
@@ -19,6 +21,9 @@ struct NodeUpdate {
   std::array<Index, 2> ends;
   Vec<D> node;
 };
+
+// An edge's key by its ends' global ids, in either order.
+inline std::uint64_t global_edge_key(const std::array<Index, 2>& ends) { return Mesh<3>::edge_key(ends[0], ends[1]); }
 
 // What rank 0 keeps of a first-round part to measure the output, not the part: its vertices'
 // global ids, and the edges of its interface facets by their global ends (low first), each once,
@@ -58,11 +63,11 @@ struct PartMeasures {
   std::vector<double> deferred_in_part;  // per deferred edge, its gain in the part's own field
 };
 
-// Measures a curved part (P2, with its topology) in the field of its own vertices' log-metrics,
-// after writing `updates` into its nodes. `on_boundary`: per part vertex, whether it lies on the
+// Measures a curved part (P2, with its topology) in `field`, made of its own vertices' log-metrics
+// on its mesh, after writing `updates` into its nodes. `on_boundary`: per part vertex, whether it lies on the
 // whole mesh's boundary.
 template <int D>
-PartMeasures measure_part(MeshPart<D>& part, std::vector<SymMat<D>> log_metrics, std::span<const NodeUpdate<D>> updates,
+PartMeasures measure_part(MeshPart<D>& part, const MetricField<D>& field, std::span<const NodeUpdate<D>> updates,
                           const std::vector<char>& on_boundary, std::span<const std::array<Index, 2>> measured_before, int threads);
 
 }  // namespace hocav

@@ -73,7 +73,8 @@ struct CurvedCube {
         log_metrics.push_back(field->vertex_log_metric(g));
         boundary.push_back(on_boundary[g]);
       }
-      const PartMeasures part = measure_part<3>(parts[p], log_metrics, updates[p], boundary, before[p], 2);
+      const PartMeasures part = measure_part<3>(parts[p], MetricField<3>::from_log_metrics(parts[p].mesh, log_metrics), updates[p],
+                                                boundary, before[p], 2);
       all.elements.insert(all.elements.end(), part.elements.begin(), part.elements.end());
       all.gains.insert(all.gains.end(), part.gains.begin(), part.gains.end());
       all.deferred.insert(all.deferred.end(), part.deferred.begin(), part.deferred.end());
