@@ -2,7 +2,9 @@
 //                [--threads N] [--quadrature RULE] [--report R.json] [--vtu V.vtu]
 // The paper's algorithm: propose boundary curvature, then reinsert every volume vertex with the P2
 // cavity operator, and write the curved P2 mesh with the Table-1 figures. Under `mpirun -np N`
-// (N > 1) the curving is distributed (docs/distributed.md §Curving); rank 0 reads and writes.
+// (N > 1) the curving is distributed: rank 0 reads the input and scatters it, the parts curve
+// themselves and write a Gamma output in runs (docs/distributed.md §Curving in the parts); for a
+// .vtu or another format, rank 0 gathers the curved mesh and writes it (§Curving).
 #include <iostream>
 #include <memory>
 
@@ -16,8 +18,10 @@
 #include "io/output_set.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/curving_in_parts.hpp"
 #include "parallel/distributed_curving.hpp"
 #include "parallel/part_message.hpp"
+#include "parallel/root_mesh_scatter.hpp"
 #include "report/curved_vtu.hpp"
 #include "report/curving_report.hpp"
 #include "surface/boundary_choice.hpp"
@@ -48,6 +52,25 @@ CurvingReport curve_with_progress(Mesh<D>& mesh, const MetricField<D>& field, co
   return report;
 }
 
+// Whether a distributed curving ends in its parts, which write the output in runs: a Gamma output
+// without a .vtu; else rank 0 gathers the curved mesh.
+bool curves_in_parts(const CurveOptions& options) { return process_count() > 1 && options.vtu.empty() && is_gamma_path(options.output); }
+
+// Every process: rank 0's `mesh` and `metrics` (the others' empty) scattered, curved in the parts
+// on the geometry of their boundary, and written in runs (docs/distributed.md §Curving in the parts).
+template <int D>
+CurvingInParts curve_scattered(Mesh<D> mesh, std::vector<SymMat<D>> metrics, const CurveOptions& options) {
+  ScatteredPart<D> scattered = scatter_from_root(std::move(mesh), std::move(metrics), kCurvingPartitionSeed);
+  const PartsGeometryMaker<D> geometry = [choice = boundary_choice_named(options.surface)](const Mesh<D>& boundary) {
+    return std::shared_ptr<const BoundaryGeometry<D>>(make_boundary_geometry<D>(choice, boundary));
+  };
+  CurvingInParts curving = curve_in_parts(scattered.part, scattered.metrics, geometry, curving_options(options), false);
+  curving.rounds[0].bytes_sent += sum_over_processes(scattered.bytes_sent);
+  curving.rounds[0].seconds += scattered.seconds;
+  count_curved_output(curving.report, write_mesh_runs(options.output, scattered.part, file_extension(options.output) == ".meshb"));
+  return curving;
+}
+
 // With several processes: the input's boundary to every process (their geometry is made from it:
 // docs/distributed.md §What each process holds), and the distributed curving in place of the serial one.
 template <int D>
@@ -69,6 +92,15 @@ void serve_curving(const CurveOptions& options, const std::vector<std::byte>& in
 }
 
 void serve_curving(const CurveOptions& options) {
+  if (curves_in_parts(options)) {
+    std::vector<int> dimension;
+    broadcast_values(dimension);
+    if (dimension.at(0) == 2)
+      curve_scattered<2>({}, {}, options);
+    else
+      curve_scattered<3>({}, {}, options);
+    return;
+  }
   std::vector<std::byte> input_boundary;
   broadcast_bytes(input_boundary);
   if (packed_dimension(input_boundary) == 2)
@@ -77,20 +109,8 @@ void serve_curving(const CurveOptions& options) {
     serve_curving<3>(options, input_boundary);
 }
 
-template <int D>
-void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& options, OutputSet& outputs) {
-  // (Before the parts are cut; a boundary face without a facet would stay straight.)
-  prepare_input_mesh(mesh, options.input, warn_on_stderr);
-  check_mesh_or_warn(mesh, options.input);
-  check_memory_fits("curving " + options.input, mesh.element_count(), kCurvingBytesPerElement);
-  const MetricField<D> field(mesh, metrics_of_rows<D>(read_metric_for_mesh(options.metric, file, false)));
-  const auto geometry = make_boundary_geometry<D>(boundary_choice_named(options.surface), mesh);
-  const CurvingOptions curving = curving_options(options);
-  const CurvingReport report = process_count() > 1 ? curve_on_every_process(mesh, field, geometry.get(), curving, options.quiet)
-                                                   : curve_with_progress(mesh, field, geometry.get(), curving, options.quiet);
-
-  write_mesh_file(options.output, mesh);
-  if (!options.vtu.empty()) write_curved_vtu(options.vtu, mesh, field);
+// The report, then the outputs committed and the summary printed.
+void finish_outputs(const CurveOptions& options, const CurvingReport& report, OutputSet& outputs) {
   if (!options.report.empty()) {
     AtomicOutput out(options.report);
     write_curving_report_json(out.stream(), report);
@@ -101,6 +121,37 @@ void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& optio
     std::cout << "curved " << options.input << " -> " << options.output << '\n';
     write_curving_report_table(std::cout, report);
   }
+}
+
+// Rank 0 of a curving in the parts (curves_in_parts): the input set up as the serial run's, then
+// scattered; the report made of what the parts curved and wrote.
+template <int D>
+void curve_on_rank_0_of_parts(Mesh<D> mesh, std::vector<SymMat<D>> metrics, const CurveOptions& options, OutputSet& outputs) {
+  std::vector<int> dimension{D};
+  broadcast_values(dimension);
+  const CurvingInParts curving = curve_scattered(std::move(mesh), std::move(metrics), options);
+  if (!options.quiet)
+    for (const DistributedCurvingRound& round : curving.rounds) print_curving_round(round);
+  finish_outputs(options, curving.report, outputs);
+}
+
+template <int D>
+void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& options, OutputSet& outputs) {
+  // (Before the parts are cut; a boundary face without a facet would stay straight.)
+  prepare_input_mesh(mesh, options.input, warn_on_stderr);
+  check_mesh_or_warn(mesh, options.input);
+  check_memory_fits("curving " + options.input, mesh.element_count(), kCurvingBytesPerElement);
+  std::vector<SymMat<D>> metrics = metrics_of_rows<D>(read_metric_for_mesh(options.metric, file, false));
+  if (curves_in_parts(options)) return curve_on_rank_0_of_parts(std::move(mesh), std::move(metrics), options, outputs);
+  const MetricField<D> field(mesh, metrics);
+  const auto geometry = make_boundary_geometry<D>(boundary_choice_named(options.surface), mesh);
+  const CurvingOptions curving = curving_options(options);
+  const CurvingReport report = process_count() > 1 ? curve_on_every_process(mesh, field, geometry.get(), curving, options.quiet)
+                                                   : curve_with_progress(mesh, field, geometry.get(), curving, options.quiet);
+
+  write_mesh_file(options.output, mesh);
+  if (!options.vtu.empty()) write_curved_vtu(options.vtu, mesh, field);
+  finish_outputs(options, report, outputs);
 }
 
 void declare_curve_files(OutputSet& outputs, const CurveOptions& options) {

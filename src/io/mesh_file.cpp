@@ -19,16 +19,21 @@ std::string file_extension(const std::string& path) {
   return extension;
 }
 
+bool is_gamma_path(const std::string& path) {
+  const std::string extension = file_extension(path);
+  return extension == ".mesh" || extension == ".meshb";
+}
+
 MeshFileContent read_mesh_file(const std::string& path) {
   std::string extension = file_extension(path);
-  if (extension == ".mesh" || extension == ".meshb") return read_gamma_mesh(path);
+  if (is_gamma_path(path)) return read_gamma_mesh(path);
   if (extension == ".msh") return read_gmsh_msh(path);
   throw Error(path + ": unknown mesh format '" + extension + "' (readable: .mesh .meshb .msh)");
 }
 
 int mesh_file_dimension(const std::string& path) {
   std::string extension = file_extension(path);
-  if (extension == ".mesh" || extension == ".meshb") return gamma_mesh_dimension(path);
+  if (is_gamma_path(path)) return gamma_mesh_dimension(path);
   if (extension == ".msh") return gmsh_msh_dimension(path);
   throw Error(path + ": unknown mesh format '" + extension + "' (readable: .mesh .meshb .msh)");
 }

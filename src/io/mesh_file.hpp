@@ -54,4 +54,7 @@ int mesh_file_dimension(const std::string& path);
 // The file's lower-case extension including the dot (".meshb"), or "" when there is none.
 std::string file_extension(const std::string& path);
 
+// Whether `path` names a Gamma file (.mesh or .meshb), which a distributed mesh can be written to in runs.
+bool is_gamma_path(const std::string& path);
+
 }  // namespace hocav

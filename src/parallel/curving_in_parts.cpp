@@ -280,16 +280,20 @@ struct PartsRun {
 }  // namespace
 
 template <int D>
-CurvingInParts curve_in_parts(MeshPart<D>& part, const std::vector<SymMat<D>>& metrics, const MeshPart<D>& boundary,
-                              const BoundaryGeometry<D>* geometry, const CurvingOptions& options, bool measure_curved) {
+CurvingInParts curve_in_parts(MeshPart<D>& part, const std::vector<SymMat<D>>& metrics, const PartsGeometryMaker<D>& make_geometry,
+                              const CurvingOptions& options, bool measure_curved) {
+  long long boundary_bytes = 0;
+  const MeshPart<D> boundary = boundary_of_parts(part, &boundary_bytes);
+  const std::shared_ptr<const BoundaryGeometry<D>> geometry = make_geometry ? make_geometry(boundary.mesh) : nullptr;
   if (!part.mesh.has_topology()) part.mesh.build_topology();
   if (!part.mesh.is_p2()) part.mesh.make_p2();  // interface edges keep their straight nodes on both sides
   std::vector<SymMat<D>> log_metrics;
   for (const SymMat<D>& metric : metrics) log_metrics.push_back(log_spd(metric));
   const MetricField<D> field = MetricField<D>::from_log_metrics(part.mesh, std::move(log_metrics));
-  PartsRun<D> run{part, field, boundary, geometry, options, {}, {}, {}, {}};
+  PartsRun<D> run{part, field, boundary, geometry.get(), options, {}, {}, {}, {}};
   PartCurving total;
   add_round(total, run.curve_parts());
+  run.out.rounds[0].bytes_sent += sum_over_processes(boundary_bytes);
   add_round(total, run.curve_band());
   check_curved_consistency(part.mesh);
   const std::vector<EdgeEnds> held_below = interface_edges_held_below(part);
@@ -307,9 +311,15 @@ CurvingInParts curve_in_parts(MeshPart<D>& part, const std::vector<SymMat<D>>& m
   return std::move(run.out);
 }
 
-template CurvingInParts curve_in_parts(MeshPart<2>&, const std::vector<SymMat<2>>&, const MeshPart<2>&, const BoundaryGeometry<2>*,
-                                       const CurvingOptions&, bool);
-template CurvingInParts curve_in_parts(MeshPart<3>&, const std::vector<SymMat<3>>&, const MeshPart<3>&, const BoundaryGeometry<3>*,
-                                       const CurvingOptions&, bool);
+void count_curved_output(CurvingReport& report, const MeshFileCounts& counts) {
+  report.elements = counts.elements;
+  report.points_before = counts.vertices;
+  report.points_after = counts.vertices + counts.nodes;
+}
+
+template CurvingInParts curve_in_parts(MeshPart<2>&, const std::vector<SymMat<2>>&, const PartsGeometryMaker<2>&, const CurvingOptions&,
+                                       bool);
+template CurvingInParts curve_in_parts(MeshPart<3>&, const std::vector<SymMat<3>>&, const PartsGeometryMaker<3>&, const CurvingOptions&,
+                                       bool);
 
 }  // namespace hocav

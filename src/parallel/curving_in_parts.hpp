@@ -6,11 +6,14 @@
 #pragma once
 
 #include <array>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "adapt/curved_adaptation.hpp"
 #include "parallel/distributed_curving.hpp"
+#include "parallel/mesh_file_runs.hpp"
 #include "parallel/mesh_parts.hpp"
 
 namespace hocav {
@@ -25,13 +28,22 @@ struct CurvingInParts {
   Index deferred_gains_in_parts = 0;                // edge gains measured in a part's own field past its border
 };
 
-// Every process at once, each with its part of the adapted mesh (P1, compact, global ids, pinned
-// flags) and the metric at its vertices: the part becomes P2 and curved. `boundary` is the whole
-// mesh's (boundary_of_parts) and `geometry` is made of it (may be null). The second round
-// reinserts the first round's interface vertices, on the elements within kBandRings rings of them,
-// in one part on rank 0, which sends every process the nodes of the edges it did not freeze.
+// The geometry the curving makes of the boundary gathered from the parts (boundary_of_parts), null
+// for none. Shared: it may be one the caller holds (a CAD model, of which one is open at a time).
 template <int D>
-CurvingInParts curve_in_parts(MeshPart<D>& part, const std::vector<SymMat<D>>& metrics, const MeshPart<D>& boundary,
-                              const BoundaryGeometry<D>* geometry, const CurvingOptions& options, bool measure_curved);
+using PartsGeometryMaker = std::function<std::shared_ptr<const BoundaryGeometry<D>>(const Mesh<D>& boundary)>;
+
+// Every process at once, each with its part of a mesh (P1 or P2, compact, global ids, pinned flags)
+// and the metric at its vertices: the part becomes P2 and curved, on the geometry `make_geometry`
+// makes of the whole mesh's boundary, gathered from the parts (its bytes in the first round's). The
+// second round reinserts the first round's interface vertices, on the elements within kBandRings
+// rings of them, in one part on rank 0, which sends every process the nodes of the edges it did not
+// freeze.
+template <int D>
+CurvingInParts curve_in_parts(MeshPart<D>& part, const std::vector<SymMat<D>>& metrics, const PartsGeometryMaker<D>& make_geometry,
+                              const CurvingOptions& options, bool measure_curved);
+
+// The report's counts (elements, points before and after) those of the file the parts wrote.
+void count_curved_output(CurvingReport& report, const MeshFileCounts& counts);
 
 }  // namespace hocav

@@ -17,9 +17,6 @@
 namespace hocav {
 namespace {
 
-// PT-Scotch's seed for the first round's partition: the same mesh, the same parts.
-constexpr std::int64_t kCurvingPartitionSeed = 0;
-
 // One round on rank 0: partition, send, curve part 0, receive, write the parts' nodes back (a
 // curving changes no element: write_back_nodes).
 template <int D>

@@ -5,6 +5,7 @@
 // is curved by one process only, in the second round.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 
 #include "adapt/curving_run.hpp"
@@ -15,6 +16,9 @@ namespace hocav {
 // near them cut into as many parts; the third those the second froze again, near them in one part
 // (rank 0's). A round with nothing pending is not run.
 constexpr int kDistributedCurvingRounds = 3;
+
+// PT-Scotch's seed for a curving's first partition: the same mesh, the same parts.
+constexpr std::int64_t kCurvingPartitionSeed = 0;
 
 struct DistributedCurvingRound {
   int round = 0;                           // 1-based

@@ -5,7 +5,6 @@
 
 #include "base/stopwatch.hpp"
 #include "io/node_metrics.hpp"
-#include "parallel/boundary_of_parts.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/part_adaptation.hpp"
 #include "parallel/part_metric_statistics.hpp"
@@ -31,24 +30,6 @@ BoundarySettling summed_over_processes(const BoundarySettling& own) {
   return sum;
 }
 
-// The parts curved, in the geometry of the adapted boundary.
-template <int D>
-CurvingInParts curved_parts(MeshPart<D>& part, const std::vector<SymMat<D>>& metrics, const PartsCurvingStep<D>& step, bool measure) {
-  long long bytes = 0;
-  const MeshPart<D> boundary = boundary_of_parts(part, &bytes);
-  const std::shared_ptr<const BoundaryGeometry<D>> geometry = step.geometry ? step.geometry(boundary.mesh) : nullptr;
-  CurvingInParts curving = curve_in_parts(part, metrics, boundary, geometry.get(), step.options, measure);
-  curving.rounds[0].bytes_sent += sum_over_processes(bytes);
-  return curving;
-}
-
-// The curving's figures that the file's counts give.
-void count_curved_output(CurvingReport& report, const MeshFileCounts& counts) {
-  report.elements = counts.elements;
-  report.points_before = counts.vertices;
-  report.points_after = counts.vertices + counts.nodes;
-}
-
 }  // namespace
 
 template <int D>
@@ -63,7 +44,7 @@ OutputInParts finish_adaptation_in_parts(MeshPart<D>& part, const AdaptationMetr
   if (settings.measure_output) out.measures = distributed_metric_statistics(part, rows_of_metrics(metrics).values, settings.threads);
   if (curving) {
     const auto curving_start = std::chrono::steady_clock::now();
-    out.curving = curved_parts(part, metrics, *curving, settings.measure_output);
+    out.curving = curve_in_parts(part, metrics, curving->geometry, curving->options, settings.measure_output);
     out.seconds_curve = max_over_processes(seconds_since(curving_start));
   }
   out.counts = write_mesh_runs(path, part, binary);

@@ -33,7 +33,7 @@ struct PartsCurvingStep {
   // The geometry of the adapted boundary (boundary_of_parts), as the serial run makes it of the
   // adapted mesh; null for none. Shared: it may be the adaptation's own (a CAD model, of which one
   // is open at a time).
-  std::function<std::shared_ptr<const BoundaryGeometry<D>>(const Mesh<D>& boundary)> geometry;
+  PartsGeometryMaker<D> geometry;
   CurvingOptions options;
 };
 

@@ -5,14 +5,17 @@ with a boundary layer, which the partitions cut between layers, and one without,
 across the spheres (interfaces meet the boundary); and on a 2D annulus with a boundary layer.
 
 With one process the output must be the serial one byte for byte. With 2 and 3 processes
-(oversubscribed): the output is consistent, P2, certified (every element's min normalized Jacobian
-above the floor, as `hocav stats` measures it), has the serial run's vertices, elements and refs;
-its gain and mean normalized Jacobian lie near the serial run's; the second round curved the first
-round's interfaces, a third (in one part) the vertices the second froze again, if any, and the
-rounds together reinserted each volume vertex once (the serial run's count of cavities); no more
-boundary edges are left straight than in the serial run (an interface edge on the boundary gets its
-proposal in a later round). The merge refuses parts that give an interface edge two different nodes, so a finished run
-has every interface edge's node from the one rank that curved it.
+(oversubscribed) the parts curve themselves and write the file in runs (§Curving in the parts), and
+with a .vtu rank 0 gathers the curved mesh (§Curving; once per case, on 2 processes): the output is
+consistent, P2, certified (every element's min normalized Jacobian above the floor, as `hocav stats`
+measures it), has the serial run's P1 mesh (its vertices in their order, the same elements and
+facets) and refs; its gain and mean normalized Jacobian lie near the serial run's; the second round
+curved the first round's interfaces, a third (gathered, in one part) the vertices the second froze
+again, if any, and the rounds together reinserted each volume vertex once (the serial run's count of
+cavities); no more boundary edges are left straight than in the serial run (an interface edge on the
+boundary gets its proposal in a later round). The merge and the writing in runs refuse parts that
+give an interface edge two different nodes, so a finished run has every interface edge's node from
+the one rank that curved it.
 
 Usage: /usr/bin/python3 distributed_curve_test.py <path-to-hocav>
 Exits 77 (skipped) when hocav was built without MPI.
@@ -22,7 +25,8 @@ import os
 import re
 import sys
 
-from mpi_test_support import check_same_refs, check_valid, completed, distributed_test, min_normalized_jacobian, run, same_bytes, stats
+from mpi_test_support import (check_same_refs, check_valid, completed, distributed_test, keywords, min_normalized_jacobian, run, same_bytes,
+                              stats)
 
 FLOOR = 0.01
 GAIN_TOLERANCE = 0.1  # relative, of the average gain
@@ -55,9 +59,20 @@ def straight_boundary_edges(hocav, work, name):
     return sum(1 for gap in edges.values() if gap < 1e-12)
 
 
+def p1_mesh(hocav, work, name):
+    """A P2 .meshb's P1 mesh: its vertices in order, and its elements and facets (vertex ids, ref) as
+    sets (the parts write theirs part by part)."""
+    run([hocav, "convert", name + ".meshb", name + ".p1.mesh", "--order", "1"], work)
+    mesh = keywords(os.path.join(work, name + ".p1.mesh"))
+    out = {"Vertices": mesh["Vertices"]}
+    for key in ("Tetrahedra", "Triangles", "Edges"):
+        out[key] = sorted((tuple(sorted(r[:-1])), r[-1]) for r in mesh.get(key, []))
+    return out
+
+
 def rounds(stderr):
     """(cavities, old interface vertices frozen again) per round, from the `distributed: round` lines."""
-    found = re.findall(r"distributed: round (\d) of 3: .*? (\d+) cavities(?:, (\d+) old interface vertices frozen again)?", stderr)
+    found = re.findall(r"distributed: round (\d) of [23]: .*? (\d+) cavities(?:, (\d+) old interface vertices frozen again)?", stderr)
     return [(int(cavities), int(frozen or 0)) for _, cavities, frozen in found]
 
 
@@ -97,12 +112,15 @@ def check(hocav, mpirun, work):
         run(mpirun + ["-np", "1", hocav] + curve + ["-o", "one.meshb"], work)
         assert same_bytes(work, "one.meshb", serial_name + ".meshb"), f"{case}: curve, mpirun -np 1: not the serial output byte for byte"
 
-        for processes in (2, 3):
-            name = f"{case}{processes}"
+        serial_p1 = p1_mesh(hocav, work, serial_name)
+
+        for processes, gathered in ((2, False), (3, False), (2, True)):
+            name = f"{case}{processes}{'gathered' if gathered else ''}"
             args = mpirun + ["-np", str(processes), hocav] + curve[:-1] + ["-o", name + ".meshb", "--report", name + ".json"]
-            found = rounds(completed(args, work).stderr)
-            assert len(found) in (2, 3), f"{name}: rounds {found}"
+            found = rounds(completed(args + (["--vtu", name + ".vtu"] if gathered else []), work).stderr)
+            assert len(found) in ((2, 3) if gathered else (2,)), f"{name}: rounds {found}"
             data = check_against_serial(hocav, work, name, serial, serial_report)
+            assert p1_mesh(hocav, work, name) == serial_p1, f"{name}: not the serial run's P1 mesh"
             cavities = [count for count, _ in found]
             frozen_again = [frozen for _, frozen in found[1:]]
             straight = straight_boundary_edges(hocav, work, name)
