@@ -197,7 +197,7 @@ void distribute(AdaptationJob<D>& job, const AdaptOptions& o, std::vector<Distri
 // Whether a distributed run ends in its parts, which curve it (--order 2) and write the output in
 // runs (docs/distributed.md §The end in the parts): a Gamma output without a .vtu or --curved; else
 // rank 0 gathers the mesh.
-bool ends_in_parts(const AdaptOptions& o) { return process_count() > 1 && !o.curved && o.vtu.empty() && is_gamma_path(o.output); }
+bool ends_in_parts(const AdaptOptions& o) { return !o.curved && writes_output_in_runs(o.output, o.vtu); }
 
 // With --order 2, the parts' curving: the geometry of the adapted boundary as the serial run makes
 // it, but a CAD model's, which is the adaptation's own `geometry` (one gmsh model is open at a time;

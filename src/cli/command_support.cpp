@@ -1,5 +1,6 @@
 #include "cli/command_support.hpp"
 
+#include "io/mesh_file.hpp"
 #include "parallel/communicator.hpp"
 
 namespace hocav {
@@ -23,6 +24,10 @@ void CurvingProgress::attach(CurvingOptions& options) {
 
 void CurvingProgress::complete() {
   if (line_) line_->complete();
+}
+
+bool writes_output_in_runs(const std::string& output, const std::string& vtu) {
+  return process_count() > 1 && vtu.empty() && is_gamma_path(output);
 }
 
 void print_curving_round(const DistributedCurvingRound& figures) {

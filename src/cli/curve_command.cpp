@@ -7,6 +7,7 @@
 // .vtu or another format, rank 0 gathers the curved mesh and writes it (§Curving).
 #include <iostream>
 #include <memory>
+#include <utility>
 
 #include "base/memory_budget.hpp"
 #include "base/thread_pool.hpp"
@@ -54,7 +55,7 @@ CurvingReport curve_with_progress(Mesh<D>& mesh, const MetricField<D>& field, co
 
 // Whether a distributed curving ends in its parts, which write the output in runs: a Gamma output
 // without a .vtu; else rank 0 gathers the curved mesh.
-bool curves_in_parts(const CurveOptions& options) { return process_count() > 1 && options.vtu.empty() && is_gamma_path(options.output); }
+bool curves_in_parts(const CurveOptions& options) { return writes_output_in_runs(options.output, options.vtu); }
 
 // Every process: rank 0's `mesh` and `metrics` (the others' empty) scattered, curved in the parts
 // on the geometry of their boundary, and written in runs (docs/distributed.md §Curving in the parts).
@@ -64,7 +65,7 @@ CurvingInParts curve_scattered(Mesh<D> mesh, std::vector<SymMat<D>> metrics, con
   const PartsGeometryMaker<D> geometry = [choice = boundary_choice_named(options.surface)](const Mesh<D>& boundary) {
     return std::shared_ptr<const BoundaryGeometry<D>>(make_boundary_geometry<D>(choice, boundary));
   };
-  CurvingInParts curving = curve_in_parts(scattered.part, scattered.metrics, geometry, curving_options(options), false);
+  CurvingInParts curving = curve_in_parts(scattered.part, std::move(scattered.metrics), geometry, curving_options(options), false);
   curving.rounds[0].bytes_sent += sum_over_processes(scattered.bytes_sent);
   curving.rounds[0].seconds += scattered.seconds;
   count_curved_output(curving.report, write_mesh_runs(options.output, scattered.part, file_extension(options.output) == ".meshb"));
@@ -143,7 +144,7 @@ void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& optio
   check_memory_fits("curving " + options.input, mesh.element_count(), kCurvingBytesPerElement);
   std::vector<SymMat<D>> metrics = metrics_of_rows<D>(read_metric_for_mesh(options.metric, file, false));
   if (curves_in_parts(options)) return curve_on_rank_0_of_parts(std::move(mesh), std::move(metrics), options, outputs);
-  const MetricField<D> field(mesh, metrics);
+  const MetricField<D> field(mesh, std::exchange(metrics, {}));  // (the field keeps their logarithms)
   const auto geometry = make_boundary_geometry<D>(boundary_choice_named(options.surface), mesh);
   const CurvingOptions curving = curving_options(options);
   const CurvingReport report = process_count() > 1 ? curve_on_every_process(mesh, field, geometry.get(), curving, options.quiet)

@@ -280,16 +280,15 @@ struct PartsRun {
 }  // namespace
 
 template <int D>
-CurvingInParts curve_in_parts(MeshPart<D>& part, const std::vector<SymMat<D>>& metrics, const PartsGeometryMaker<D>& make_geometry,
+CurvingInParts curve_in_parts(MeshPart<D>& part, std::vector<SymMat<D>> metrics, const PartsGeometryMaker<D>& make_geometry,
                               const CurvingOptions& options, bool measure_curved) {
   long long boundary_bytes = 0;
   const MeshPart<D> boundary = boundary_of_parts(part, &boundary_bytes);
   const std::shared_ptr<const BoundaryGeometry<D>> geometry = make_geometry ? make_geometry(boundary.mesh) : nullptr;
   if (!part.mesh.has_topology()) part.mesh.build_topology();
-  if (!part.mesh.is_p2()) part.mesh.make_p2();  // interface edges keep their straight nodes on both sides
-  std::vector<SymMat<D>> log_metrics;
-  for (const SymMat<D>& metric : metrics) log_metrics.push_back(log_spd(metric));
-  const MetricField<D> field = MetricField<D>::from_log_metrics(part.mesh, std::move(log_metrics));
+  if (!part.mesh.is_p2()) part.mesh.make_p2();                 // interface edges keep their straight nodes on both sides
+  for (SymMat<D>& metric : metrics) metric = log_spd(metric);  // in place: no second copy
+  const MetricField<D> field = MetricField<D>::from_log_metrics(part.mesh, std::move(metrics));
   PartsRun<D> run{part, field, boundary, geometry.get(), options, {}, {}, {}, {}};
   PartCurving total;
   add_round(total, run.curve_parts());
@@ -317,9 +316,7 @@ void count_curved_output(CurvingReport& report, const MeshFileCounts& counts) {
   report.points_after = counts.vertices + counts.nodes;
 }
 
-template CurvingInParts curve_in_parts(MeshPart<2>&, const std::vector<SymMat<2>>&, const PartsGeometryMaker<2>&, const CurvingOptions&,
-                                       bool);
-template CurvingInParts curve_in_parts(MeshPart<3>&, const std::vector<SymMat<3>>&, const PartsGeometryMaker<3>&, const CurvingOptions&,
-                                       bool);
+template CurvingInParts curve_in_parts(MeshPart<2>&, std::vector<SymMat<2>>, const PartsGeometryMaker<2>&, const CurvingOptions&, bool);
+template CurvingInParts curve_in_parts(MeshPart<3>&, std::vector<SymMat<3>>, const PartsGeometryMaker<3>&, const CurvingOptions&, bool);
 
 }  // namespace hocav

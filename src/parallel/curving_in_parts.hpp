@@ -40,7 +40,7 @@ using PartsGeometryMaker = std::function<std::shared_ptr<const BoundaryGeometry<
 // rings of them, in one part on rank 0, which sends every process the nodes of the edges it did not
 // freeze.
 template <int D>
-CurvingInParts curve_in_parts(MeshPart<D>& part, const std::vector<SymMat<D>>& metrics, const PartsGeometryMaker<D>& make_geometry,
+CurvingInParts curve_in_parts(MeshPart<D>& part, std::vector<SymMat<D>> metrics, const PartsGeometryMaker<D>& make_geometry,
                               const CurvingOptions& options, bool measure_curved);
 
 // The report's counts (elements, points before and after) those of the file the parts wrote.

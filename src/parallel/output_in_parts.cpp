@@ -39,12 +39,12 @@ OutputInParts finish_adaptation_in_parts(MeshPart<D>& part, const AdaptationMetr
   const auto start = std::chrono::steady_clock::now();
   OutputInParts out;
   if (!part.mesh.has_topology()) part.mesh.build_topology();
-  const std::vector<SymMat<D>> metrics = metrics_at_vertices(part.mesh, metric, settings.threads);
+  std::vector<SymMat<D>> metrics = metrics_at_vertices(part.mesh, metric, settings.threads);
   if (geometry) out.settling = summed_over_processes(settle_part_boundary<D>(part, metrics, *geometry, settings.feature_angle_degrees));
   if (settings.measure_output) out.measures = distributed_metric_statistics(part, rows_of_metrics(metrics).values, settings.threads);
   if (curving) {
     const auto curving_start = std::chrono::steady_clock::now();
-    out.curving = curve_in_parts(part, metrics, curving->geometry, curving->options, settings.measure_output);
+    out.curving = curve_in_parts(part, std::move(metrics), curving->geometry, curving->options, settings.measure_output);
     out.seconds_curve = max_over_processes(seconds_since(curving_start));
   }
   out.counts = write_mesh_runs(path, part, binary);
