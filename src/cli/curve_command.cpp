@@ -2,9 +2,10 @@
 //                [--threads N] [--quadrature RULE] [--report R.json] [--vtu V.vtu]
 // The paper's algorithm: propose boundary curvature, then reinsert every volume vertex with the P2
 // cavity operator, and write the curved P2 mesh with the Table-1 figures. Under `mpirun -np N`
-// (N > 1) the curving is distributed: rank 0 reads the input and scatters it, the parts curve
-// themselves and write a Gamma output in runs (docs/distributed.md §Curving in the parts); for a
-// .vtu or another format, rank 0 gathers the curved mesh and writes it (§Curving).
+// (N > 1) the curving is distributed: every process reads its piece of a P1 Gamma input (else rank 0
+// reads the input and scatters it), the parts curve themselves and write a Gamma output in runs
+// (docs/distributed.md §Curving from pieces, §Curving in the parts); for a .vtu or another format,
+// rank 0 reads the input, gathers the curved mesh and writes it (§Curving).
 #include <iostream>
 #include <memory>
 #include <utility>
@@ -15,13 +16,17 @@
 #include "cli/commands.hpp"
 #include "cli/number_checks.hpp"
 #include "io/atomic_output.hpp"
+#include "io/gamma_mesh.hpp"
 #include "io/node_metrics.hpp"
 #include "io/output_set.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/curving_in_parts.hpp"
 #include "parallel/distributed_curving.hpp"
+#include "parallel/mesh_file_pieces.hpp"
 #include "parallel/part_message.hpp"
+#include "parallel/piece_input_check.hpp"
+#include "parallel/pieces_into_parts.hpp"
 #include "parallel/root_mesh_scatter.hpp"
 #include "report/curved_vtu.hpp"
 #include "report/curving_report.hpp"
@@ -57,11 +62,17 @@ CurvingReport curve_with_progress(Mesh<D>& mesh, const MetricField<D>& field, co
 // without a .vtu; else rank 0 gathers the curved mesh.
 bool curves_in_parts(const CurveOptions& options) { return writes_output_in_runs(options.output, options.vtu); }
 
-// Every process: rank 0's `mesh` and `metrics` (the others' empty) scattered, curved in the parts
-// on the geometry of their boundary, and written in runs (docs/distributed.md §Curving in the parts).
+// Whether a distributed curving in the parts reads its input in pieces, no process holding the
+// whole (docs/distributed.md §Curving from pieces): a P1 Gamma file. Else rank 0 reads it and
+// scatters it.
+bool reads_input_in_pieces(const CurveOptions& options) {
+  return is_gamma_path(options.input) && !gamma_mesh_has_p2_keyword(options.input);
+}
+
+// Every process: its part curved on the geometry of the parts' boundary, and written in runs
+// (docs/distributed.md §Curving in the parts).
 template <int D>
-CurvingInParts curve_scattered(Mesh<D> mesh, std::vector<SymMat<D>> metrics, const CurveOptions& options) {
-  ScatteredPart<D> scattered = scatter_from_root(std::move(mesh), std::move(metrics), kCurvingPartitionSeed);
+CurvingInParts curve_parts(ScatteredPart<D> scattered, const CurveOptions& options) {
   const PartsGeometryMaker<D> geometry = [choice = boundary_choice_named(options.surface)](const Mesh<D>& boundary) {
     return std::shared_ptr<const BoundaryGeometry<D>>(make_boundary_geometry<D>(choice, boundary));
   };
@@ -70,6 +81,25 @@ CurvingInParts curve_scattered(Mesh<D> mesh, std::vector<SymMat<D>> metrics, con
   curving.rounds[0].seconds += scattered.seconds;
   count_curved_output(curving.report, write_mesh_runs(options.output, scattered.part, file_extension(options.output) == ".meshb"));
   return curving;
+}
+
+// Every process: its piece of the input and its run of the metric's rows read, the pieces prepared
+// and checked as the serial run prepares and checks the whole, cut into parts and curved.
+template <int D>
+CurvingInParts curve_from_pieces(const CurveOptions& options) {
+  MeshFilePiece<D> piece = read_mesh_file_piece<D>(options.input);
+  prepare_input_piece(piece, options.input, warn_on_stderr);
+  check_memory_fits("curving " + options.input + " in " + std::to_string(process_count()) + " parts",
+                    static_cast<double>(piece.element_count) / process_count(), kCurvingBytesPerElement);
+  return curve_parts(parts_of_pieces(std::move(piece), options.metric, kCurvingPartitionSeed), options);
+}
+
+// Every process of a curving in the parts: from pieces, or from what rank 0 scatters (`mesh` and
+// `metrics`, empty on the other processes).
+template <int D>
+CurvingInParts curve_in_parts_from(bool pieces, Mesh<D> mesh, std::vector<SymMat<D>> metrics, const CurveOptions& options) {
+  if (pieces) return curve_from_pieces<D>(options);
+  return curve_parts(scatter_from_root(std::move(mesh), std::move(metrics), kCurvingPartitionSeed), options);
 }
 
 // With several processes: the input's boundary to every process (their geometry is made from it:
@@ -94,12 +124,12 @@ void serve_curving(const CurveOptions& options, const std::vector<std::byte>& in
 
 void serve_curving(const CurveOptions& options) {
   if (curves_in_parts(options)) {
-    std::vector<int> dimension;
-    broadcast_values(dimension);
-    if (dimension.at(0) == 2)
-      curve_scattered<2>({}, {}, options);
+    std::vector<int> plan;  // the dimension, and whether the input is read in pieces
+    broadcast_values(plan);
+    if (plan.at(0) == 2)
+      curve_in_parts_from<2>(plan.at(1) != 0, {}, {}, options);
     else
-      curve_scattered<3>({}, {}, options);
+      curve_in_parts_from<3>(plan.at(1) != 0, {}, {}, options);
     return;
   }
   std::vector<std::byte> input_boundary;
@@ -124,13 +154,14 @@ void finish_outputs(const CurveOptions& options, const CurvingReport& report, Ou
   }
 }
 
-// Rank 0 of a curving in the parts (curves_in_parts): the input set up as the serial run's, then
-// scattered; the report made of what the parts curved and wrote.
+// Rank 0 of a curving in the parts (curves_in_parts): the plan (the dimension, whether from pieces)
+// to every process, then its share of the curving from pieces or from its set-up `mesh` and
+// `metrics`; the report made of what the parts curved and wrote.
 template <int D>
-void curve_on_rank_0_of_parts(Mesh<D> mesh, std::vector<SymMat<D>> metrics, const CurveOptions& options, OutputSet& outputs) {
-  std::vector<int> dimension{D};
-  broadcast_values(dimension);
-  const CurvingInParts curving = curve_scattered(std::move(mesh), std::move(metrics), options);
+void curve_on_rank_0_of_parts(bool pieces, Mesh<D> mesh, std::vector<SymMat<D>> metrics, const CurveOptions& options, OutputSet& outputs) {
+  std::vector<int> plan{D, pieces ? 1 : 0};
+  broadcast_values(plan);
+  const CurvingInParts curving = curve_in_parts_from(pieces, std::move(mesh), std::move(metrics), options);
   if (!options.quiet)
     for (const DistributedCurvingRound& round : curving.rounds) print_curving_round(round);
   finish_outputs(options, curving.report, outputs);
@@ -143,7 +174,7 @@ void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& optio
   check_mesh_or_warn(mesh, options.input);
   check_memory_fits("curving " + options.input, mesh.element_count(), kCurvingBytesPerElement);
   std::vector<SymMat<D>> metrics = metrics_of_rows<D>(read_metric_for_mesh(options.metric, file, false));
-  if (curves_in_parts(options)) return curve_on_rank_0_of_parts(std::move(mesh), std::move(metrics), options, outputs);
+  if (curves_in_parts(options)) return curve_on_rank_0_of_parts(false, std::move(mesh), std::move(metrics), options, outputs);
   const MetricField<D> field(mesh, std::exchange(metrics, {}));  // (the field keeps their logarithms)
   const auto geometry = make_boundary_geometry<D>(boundary_choice_named(options.surface), mesh);
   const CurvingOptions curving = curving_options(options);
@@ -204,6 +235,10 @@ void add_curve_command(CLI::App& app) {
     if (process_rank() != 0) return serve_curving(*options);
     OutputSet outputs;
     declare_curve_files(outputs, *options);
+    if (curves_in_parts(*options) && reads_input_in_pieces(*options)) {
+      if (gamma_mesh_dimension(options->input) == 2) return curve_on_rank_0_of_parts<2>(true, {}, {}, *options, outputs);
+      return curve_on_rank_0_of_parts<3>(true, {}, {}, *options, outputs);
+    }
     MeshFileContent file = read_mesh_file(options->input);
     std::visit([&](auto& mesh) { curve(mesh, file, *options, outputs); }, file.mesh);
   });

@@ -300,6 +300,16 @@ int declared_dimension(Reader&& reader) {
   return reader.dimension();
 }
 
+template <class Reader>
+bool has_p2_keyword(Reader&& reader) {
+  while (reader.next_keyword()) {
+    const SimplexKeyword* simplex = gamma::simplex_keyword(reader.keyword_code());
+    if (simplex && simplex->order == 2) return true;
+    reader.skip_keyword(false);
+  }
+  return false;
+}
+
 // ---- writing (Writer: gamma::TextKeywordWriter or gamma::BinaryKeywordWriter) ----
 
 std::array<int, 2> local_edge(int simplex_dimension, int edge) {
@@ -458,6 +468,10 @@ template GammaMeshSlice<3> read_gamma_mesh_slice(const std::string&, int, int);
 int gamma_mesh_dimension(const std::string& path) {
   return gamma::is_binary_file(path) ? declared_dimension(gamma::BinaryKeywordReader(path))
                                      : declared_dimension(gamma::TextKeywordReader(path));
+}
+
+bool gamma_mesh_has_p2_keyword(const std::string& path) {
+  return gamma::is_binary_file(path) ? has_p2_keyword(gamma::BinaryKeywordReader(path)) : has_p2_keyword(gamma::TextKeywordReader(path));
 }
 
 template <int D>

@@ -52,4 +52,8 @@ GammaMeshSlice<D> read_gamma_mesh_slice(const std::string& path, int index, int 
 // The Dimension a .mesh/.meshb file declares.
 int gamma_mesh_dimension(const std::string& path);
 
+// Whether a .mesh/.meshb file has a P2 element or facet keyword (a .meshb's records are skipped, a
+// .mesh's read through): a file read_gamma_mesh_slice refuses.
+bool gamma_mesh_has_p2_keyword(const std::string& path);
+
 }  // namespace hocav

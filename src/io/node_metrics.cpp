@@ -24,6 +24,13 @@ SolutionField read_metric_for_mesh(const std::string& metric_path, const MeshFil
   return rows;
 }
 
+SolutionField read_metric_run(const std::string& metric_path, int dimension, Index vertex_count, const SolutionRowRun& run) {
+  SolutionFileContent content = read_solution_file_run(metric_path, run);
+  const Index first = run.first_of(content.count);
+  add_metric_of_sizes(content, metric_path, first);
+  return checked_metric_field(content, metric_path, dimension, vertex_count, first);
+}
+
 std::vector<double> read_scalar_for_mesh(const std::string& solution_path, const MeshFileContent& mesh_file) {
   SolutionFileContent content = read_solution_file(solution_path);
   if (content.dimension != dimension_of(mesh_file.mesh))

@@ -8,6 +8,7 @@
 #include "io/gamma_keyword_reader.hpp"
 #include "io/gamma_keyword_writer.hpp"
 #include "io/gamma_keywords.hpp"
+#include "io/gamma_mesh.hpp"
 #include "io/mesh_file.hpp"
 
 namespace hocav {
@@ -15,8 +16,9 @@ namespace {
 
 constexpr int kMaxFields = 1000;  // libMeshb's limit on the types of one keyword
 
+// Rows [first, last) of the file's are kept (all of them by default); content.count is the file's.
 template <class Reader>
-void read_sol_at_vertices(Reader& reader, SolutionFileContent& content) {
+void read_sol_at_vertices(Reader& reader, SolutionFileContent& content, const SolutionRowRun& run) {
   if (reader.dimension() == 0) reader.fail("no Dimension before the solution");
   content.dimension = reader.dimension();
   content.count = reader.read_count();
@@ -30,18 +32,21 @@ void read_sol_at_vertices(Reader& reader, SolutionFileContent& content) {
     reals_per_row += field.components();
   }
   reader.expect_records(content.count, 0, reals_per_row);
-  for (SolutionField& field : content.fields) field.values.reserve(reader.reserve_hint(content.count) * field.components());
-  for (Index row = 0; row < content.count; ++row)
+  const Index first = run.first_of(content.count), last = run.first_of(content.count, 1);
+  for (SolutionField& field : content.fields) field.values.reserve(reader.reserve_hint(last - first) * field.components());
+  reader.skip_records(first, 0, reals_per_row);
+  for (Index row = first; row < last; ++row)
     for (SolutionField& field : content.fields)
       for (int c = 0; c < field.components(); ++c) {
         double value = reader.read_real(row);
         if (!std::isfinite(value)) reader.fail("value is not finite", row);
         field.values.push_back(value);
       }
+  reader.skip_records(content.count - last, 0, reals_per_row);
 }
 
 template <class Reader>
-SolutionFileContent read_solution(Reader&& reader) {
+SolutionFileContent read_solution(Reader&& reader, const SolutionRowRun& run = {}) {
   SolutionFileContent content;
   bool found = false;
   while (reader.next_keyword()) {
@@ -51,7 +56,7 @@ SolutionFileContent read_solution(Reader&& reader) {
     }
     if (found) reader.fail("keyword appears twice");
     found = true;
-    read_sol_at_vertices(reader, content);
+    read_sol_at_vertices(reader, content, run);
   }
   if (!found) throw Error(reader.path() + ": SolAtVertices: missing");
   return content;
@@ -112,8 +117,15 @@ int SolutionField::components() const {
 
 Index SolutionField::count() const { return static_cast<Index>(values.size() / static_cast<std::size_t>(components())); }
 
+Index SolutionRowRun::first_of(Index rows, int later) const { return slice_start(rows, index + later, count); }
+
 SolutionFileContent read_solution_file(const std::string& path) {
   return gamma::is_binary_file(path) ? read_solution(gamma::BinaryKeywordReader(path)) : read_solution(gamma::TextKeywordReader(path));
+}
+
+SolutionFileContent read_solution_file_run(const std::string& path, const SolutionRowRun& run) {
+  return gamma::is_binary_file(path) ? read_solution(gamma::BinaryKeywordReader(path), run)
+                                     : read_solution(gamma::TextKeywordReader(path), run);
 }
 
 void write_solution_file(const std::string& path, const SolutionFileContent& content, int gamma_version) {
@@ -154,7 +166,7 @@ const SolutionField* SolutionFileContent::first_of_kind(SolutionKind kind) const
   return nullptr;
 }
 
-void add_metric_of_sizes(SolutionFileContent& content, const std::string& path) {
+void add_metric_of_sizes(SolutionFileContent& content, const std::string& path, Index first_row) {
   const SolutionField* sizes = content.first_of_kind(SolutionKind::kScalar);
   if (content.first_of_kind(SolutionKind::kSymmetricMatrix) || !sizes) return;
   const int d = content.dimension;
@@ -162,7 +174,7 @@ void add_metric_of_sizes(SolutionFileContent& content, const std::string& path) 
   metric.values.reserve(sizes->values.size() * static_cast<std::size_t>(d * (d + 1) / 2));
   for (std::size_t vertex = 0; vertex < sizes->values.size(); ++vertex) {
     const double h = sizes->values[vertex];
-    const std::string where = " at vertex " + std::to_string(vertex + 1);
+    const std::string where = " at vertex " + std::to_string(static_cast<long long>(first_row) + static_cast<long long>(vertex) + 1);
     if (!std::isfinite(h)) throw Error(path + ": SolAtVertices: size" + where + " is not finite");
     if (!(h > 0)) throw Error(path + ": SolAtVertices: size" + where + " is not positive");
     for (int row = 0; row < d; ++row)  // the lower triangle row by row: the diagonal ends each row
@@ -171,20 +183,20 @@ void add_metric_of_sizes(SolutionFileContent& content, const std::string& path) 
   content.fields.push_back(std::move(metric));
 }
 
-const SolutionField& checked_metric_field(const SolutionFileContent& content, const std::string& path, int dimension,
-                                          Index file_node_count) {
+const SolutionField& checked_metric_field(const SolutionFileContent& content, const std::string& path, int dimension, Index file_node_count,
+                                          Index first_row) {
   if (content.dimension != dimension)
     throw Error(path + ": Dimension: the solution is " + std::to_string(content.dimension) + "D but the mesh is " +
                 std::to_string(dimension) + "D");
   const SolutionField* metric = content.first_of_kind(SolutionKind::kSymmetricMatrix);
   if (!metric) throw Error(path + ": SolAtVertices: no symmetric-matrix field (type 3), so no metric");
-  if (metric->count() != file_node_count)
-    throw Error(path + ": SolAtVertices: " + std::to_string(metric->count()) + " metrics for a mesh of " + std::to_string(file_node_count) +
+  if (content.count != file_node_count)
+    throw Error(path + ": SolAtVertices: " + std::to_string(content.count) + " metrics for a mesh of " + std::to_string(file_node_count) +
                 " nodes");
   const auto components = static_cast<std::size_t>(metric->components());
-  for (Index vertex = 0; vertex < file_node_count; ++vertex) {
+  for (Index vertex = 0; vertex < metric->count(); ++vertex) {
     const double* m = &metric->values[vertex * components];
-    const std::string where = " at vertex " + std::to_string(static_cast<long long>(vertex) + 1);
+    const std::string where = " at vertex " + std::to_string(static_cast<long long>(first_row) + static_cast<long long>(vertex) + 1);
     for (std::size_t c = 0; c < components; ++c)
       if (!std::isfinite(m[c])) throw Error(path + ": SolAtVertices: metric" + where + " is not finite");
     if (!is_positive_definite(m, dimension)) throw Error(path + ": SolAtVertices: metric" + where + " is not positive definite");

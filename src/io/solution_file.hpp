@@ -34,6 +34,16 @@ struct SolutionFileContent {
 // Reads a .sol/.solb file. Throws Error naming file, keyword and line/entity on malformed input.
 SolutionFileContent read_solution_file(const std::string& path);
 
+// Run `index` of `count` runs of a file's rows, cut as a mesh file's entities are (slice_start).
+struct SolutionRowRun {
+  int index = 0, count = 1;
+  Index first_of(Index rows, int later = 0) const;  // the first row of run index + later
+};
+
+// The rows of `run` only (a .solb is positioned past the others; a .sol is read through): the
+// content's count stays the file's; its fields hold rows run.first_of(count) onwards.
+SolutionFileContent read_solution_file_run(const std::string& path, const SolutionRowRun& run);
+
 // Writes a .sol/.solb file (all fields must have the same count); temporary name, then rename.
 // Binary version: 0 picks 3 (4 when counts need 64 bits).
 void write_solution_file(const std::string& path, const SolutionFileContent& content, int gamma_version = 0);
@@ -51,13 +61,14 @@ SolutionRowsLayout write_solution_skeleton(const std::string& path, int dimensio
 // mmg's isotropic size field: when `content` holds no symmetric-matrix field of its dimension but a
 // scalar one (SolAtVertices type 1, a size h per node), appends the metric I/h² of each size as a
 // symmetric-matrix field. Throws Error "<file>: SolAtVertices: size at vertex N is not positive"
-// (or not finite).
-void add_metric_of_sizes(SolutionFileContent& content, const std::string& path);
+// (or not finite). The fields' first row is file row `first_row` (a run's).
+void add_metric_of_sizes(SolutionFileContent& content, const std::string& path, Index first_row = 0);
 
 // Checks a metric field against the mesh it goes with: a symmetric-matrix field of the mesh's
 // dimension, one row per file node, every matrix finite and positive definite. Throws Error
-// "<file>: SolAtVertices: <what> at vertex N" otherwise. Returns the field.
-const SolutionField& checked_metric_field(const SolutionFileContent& content, const std::string& path, int dimension,
-                                          Index file_node_count);
+// "<file>: SolAtVertices: <what> at vertex N" otherwise. Returns the field. For a run's content
+// (read_solution_file_run), the file's count is checked and the rows are file rows from `first_row`.
+const SolutionField& checked_metric_field(const SolutionFileContent& content, const std::string& path, int dimension, Index file_node_count,
+                                          Index first_row = 0);
 
 }  // namespace hocav

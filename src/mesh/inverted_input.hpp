@@ -16,4 +16,10 @@ namespace hocav {
 template <int D>
 std::string reorient_inverted_mesh(Mesh<D>& mesh, const std::string& name);
 
+// Its two halves, for a mesh read in pieces (whose processes decide together): two vertices of every
+// element swapped, and the warning for an input of `element_count` elements.
+template <int D>
+void reorient_every_element(Mesh<D>& mesh);
+std::string inverted_input_warning(const std::string& name, long long element_count);
+
 }  // namespace hocav

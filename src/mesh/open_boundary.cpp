@@ -23,7 +23,10 @@ Index add_facets_on_open_faces(Mesh<D>& mesh, int ref) {
 
 template <int D>
 std::string close_open_boundary(Mesh<D>& mesh, const std::string& name) {
-  const Index added = add_facets_on_open_faces(mesh, 0);
+  return open_boundary_warning(name, add_facets_on_open_faces(mesh, 0));
+}
+
+std::string open_boundary_warning(const std::string& name, long long added) {
   if (added == 0) return "";
   return name + ": " + std::to_string(added) + " boundary faces had no facet: facets of ref 0 made for them";
 }

@@ -19,4 +19,7 @@ Index add_facets_on_open_faces(Mesh<D>& mesh, int ref);
 template <int D>
 std::string close_open_boundary(Mesh<D>& mesh, const std::string& name);
 
+// That warning for `added` facets made ("" for none); a mesh read in pieces sums them first.
+std::string open_boundary_warning(const std::string& name, long long added);
+
 }  // namespace hocav

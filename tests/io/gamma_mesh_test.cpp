@@ -200,6 +200,22 @@ TEST(GammaMeshSlice, EachEntityIsInTheSliceThatHoldsIt) {
       }
 }
 
+// What a distributed curving asks before it reads a file in pieces: whether read_gamma_mesh_slice
+// would refuse it for its P2 entities.
+TEST(GammaMeshSlice, TellsAP2FileFromAP1File) {
+  for (bool binary : {true, false}) {
+    const std::string extension = binary ? ".meshb" : ".mesh";
+    const std::string p1 = temporary_path("order_p1" + extension), p2 = temporary_path("order_p2" + extension),
+                      square = temporary_path("order_square_p2" + extension);
+    write_gamma_mesh(p1, with_varied_tags(generate_cube(2)), binary);
+    write_gamma_mesh(p2, curved(generate_cube(1)), binary);
+    write_gamma_mesh(square, curved(generate_square(2)), binary);
+    EXPECT_FALSE(gamma_mesh_has_p2_keyword(p1)) << extension;
+    EXPECT_TRUE(gamma_mesh_has_p2_keyword(p2)) << extension;
+    EXPECT_TRUE(gamma_mesh_has_p2_keyword(square)) << extension;
+  }
+}
+
 TEST(GammaMeshSlice, RefusesP2OutOfRangeAndOtherDimensions) {
   const std::string p2 = temporary_path("slice_p2.meshb");
   write_gamma_mesh(p2, curved(generate_cube(1)), true);

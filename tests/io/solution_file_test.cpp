@@ -61,6 +61,31 @@ TEST(SolutionFile, RoundTripsEveryKindOfField) {
       }
 }
 
+// The runs of a file's rows (what each process of a distributed run reads) put end to end are the
+// file's rows, each run's content counting the file's rows.
+TEST(SolutionFile, RunsOfRowsPutEndToEndAreTheFile) {
+  for (const char* extension : {".sol", ".solb"}) {
+    const SolutionFileContent whole = every_kind_of_field(3, 10);
+    const std::string path = temporary_path(std::string("runs") + extension);
+    write_solution_file(path, whole);
+    for (int count : {1, 2, 3, 4, 11}) {
+      SolutionFileContent joined{3, whole.count, {}};
+      for (const SolutionField& field : whole.fields) joined.fields.push_back({field.kind, 3, {}});
+      for (int index = 0; index < count; ++index) {
+        const SolutionFileContent run = read_solution_file_run(path, {index, count});
+        EXPECT_EQ(run.count, whole.count);
+        ASSERT_EQ(run.fields.size(), whole.fields.size());
+        for (std::size_t f = 0; f < whole.fields.size(); ++f) {
+          EXPECT_EQ(run.fields[f].count(), slice_start(whole.count, index + 1, count) - slice_start(whole.count, index, count));
+          joined.fields[f].values.insert(joined.fields[f].values.end(), run.fields[f].values.begin(), run.fields[f].values.end());
+        }
+      }
+      SCOPED_TRACE(std::string(extension) + " in " + std::to_string(count) + " runs");
+      expect_same_content(whole, joined, false);
+    }
+  }
+}
+
 // The skeleton's hole, filled row by row at its layout's offsets, makes the file write_solution_file
 // writes of the whole (what the processes of a distributed run do, each its rows).
 TEST(SolutionFile, ASkeletonFilledInPlaceIsTheWholeFile) {
@@ -176,6 +201,13 @@ TEST(SolutionFile, ChecksMetricsAgainstTheirMesh) {
   EXPECT_NE(counts.find(" 7 "), std::string::npos) << counts;
   EXPECT_EQ(error_of([&] { checked_metric_field(definite, "m.sol", 2, 1); }), "m.sol: Dimension: the solution is 3D but the mesh is 2D");
 
+  // A run's rows (read_solution_file_run): named by their file row; the file's count is checked.
+  SolutionFileContent run_of_file = metric_field(2, {1, 0, 1, 1, 2, 1});
+  run_of_file.count = 9;
+  EXPECT_EQ(error_of([&] { checked_metric_field(run_of_file, "m.sol", 2, 9, 5); }),
+            "m.sol: SolAtVertices: metric at vertex 7 is not positive definite");
+  EXPECT_NE(error_of([&] { checked_metric_field(run_of_file, "m.sol", 2, 2, 5); }).find(" 9 "), std::string::npos);
+
   SolutionFileContent scalar_first = every_kind_of_field(2, 3);
   scalar_first.fields.erase(scalar_first.fields.begin() + 1);  // no symmetric matrix left
   EXPECT_NE(error_of([&] { checked_metric_field(scalar_first, "m.sol", 2, 3); }).find("no symmetric-matrix field"), std::string::npos);
@@ -199,6 +231,7 @@ TEST(SolutionFile, ReadsAnIsotropicSizeFieldAsAMetric) {
 
   SolutionFileContent zero{2, 3, {{SolutionKind::kScalar, 2, {0.1, 0.2, 0}}}};
   EXPECT_EQ(error_of([&] { add_metric_of_sizes(zero, "h.sol"); }), "h.sol: SolAtVertices: size at vertex 3 is not positive");
+  EXPECT_EQ(error_of([&] { add_metric_of_sizes(zero, "h.sol", 40); }), "h.sol: SolAtVertices: size at vertex 43 is not positive");
   SolutionFileContent infinite{2, 1, {{SolutionKind::kScalar, 2, {std::numeric_limits<double>::infinity()}}}};
   EXPECT_EQ(error_of([&] { add_metric_of_sizes(infinite, "h.sol"); }), "h.sol: SolAtVertices: size at vertex 1 is not finite");
 }

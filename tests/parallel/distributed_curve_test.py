@@ -5,8 +5,10 @@ with a boundary layer, which the partitions cut between layers, and one without,
 across the spheres (interfaces meet the boundary); and on a 2D annulus with a boundary layer.
 
 With one process the output must be the serial one byte for byte. With 2 and 3 processes
-(oversubscribed) the parts curve themselves and write the file in runs (§Curving in the parts), and
-with a .vtu rank 0 gathers the curved mesh (§Curving; once per case, on 2 processes): the output is
+(oversubscribed) every process reads its piece of the .meshb input and of its metric, and the parts
+curve themselves and write the file in runs (§Curving from pieces, §Curving in the parts); from a
+.msh input rank 0 reads the whole and scatters it (on 2 processes); with a .vtu rank 0 gathers the
+curved mesh (§Curving; once per case, on 2 processes): the output is
 consistent, P2, certified (every element's min normalized Jacobian above the floor, as `hocav stats`
 measures it), has the serial run's P1 mesh (its vertices in their order, the same elements and
 facets) and refs; its gain and mean normalized Jacobian lie near the serial run's; the second round
@@ -17,16 +19,21 @@ boundary gets its proposal in a later round). The merge and the writing in runs 
 give an interface edge two different nodes, so a finished run has every interface edge's node from
 the one rank that curved it.
 
+Bad input read in pieces is refused as the serial command refuses it (exit 2, its message, no
+output), though another process than rank 0 read the bad entity: an inverted element, a metric row
+that is not positive definite.
+
 Usage: /usr/bin/python3 distributed_curve_test.py <path-to-hocav>
 Exits 77 (skipped) when hocav was built without MPI.
 """
 import json
 import os
 import re
+import subprocess
 import sys
 
-from mpi_test_support import (check_same_refs, check_valid, completed, distributed_test, keywords, min_normalized_jacobian, run, same_bytes,
-                              stats)
+from mpi_test_support import (check_same_refs, check_valid, completed, distributed_test, keywords, min_normalized_jacobian, refused, run,
+                              same_bytes, stats)
 
 FLOOR = 0.01
 GAIN_TOLERANCE = 0.1  # relative, of the average gain
@@ -95,6 +102,43 @@ def check_against_serial(hocav, work, name, serial, serial_report):
     return data
 
 
+def serial_error(hocav, work, args):
+    """The message of a serial command that must fail with exit 2."""
+    result = subprocess.run([hocav] + args, cwd=work, capture_output=True, text=True, check=False)
+    assert result.returncode == 2, f"{args}: exit {result.returncode}"
+    return result.stderr.strip()
+
+
+def check_refusals(hocav, mpirun, work):
+    """The last element of the cubed shell inverted, then the last metric row made indefinite: both in
+    the last process's run, refused as the serial run refuses them."""
+    run([hocav, "convert", "cubed.meshb", "bad.mesh"], work)
+    mesh = keywords(os.path.join(work, "bad.mesh"))
+    last = mesh["Tetrahedra"][-1]
+    with open(os.path.join(work, "bad.mesh")) as file:
+        text = file.read()
+    with open(os.path.join(work, "bad.mesh"), "w") as file:
+        file.write(text.replace(" ".join(last), " ".join((last[1], last[0]) + last[2:])))
+    run([hocav, "metric", "cubed.meshb", "--implied", "-o", "bad.sol"], work)
+    serial = serial_error(hocav, work, ["curve", "bad.mesh", "--metric", "bad.sol", "-o", "x.meshb"])
+    element = re.search(r"element (\d+) has non-positive P1 measure", serial)
+    assert element and int(element.group(1)) == len(mesh["Tetrahedra"]), serial
+    refused(mpirun, hocav, work, ["curve", "bad.mesh", "--metric", "bad.sol", "-o", "x.meshb"], "x.meshb",
+            f"bad.mesh: inconsistent mesh: element {element.group(1)} has non-positive P1 measure")
+
+    with open(os.path.join(work, "bad.sol")) as file:
+        lines = file.read().rstrip().split("\n")
+    row = [i for i, line in enumerate(lines) if len(line.split()) == 6][-1]
+    lines[row] = "1 0 1 0 0 -1"
+    with open(os.path.join(work, "bad.sol"), "w") as file:
+        file.write("\n".join(lines) + "\n")
+    serial = serial_error(hocav, work, ["curve", "cubed.meshb", "--metric", "bad.sol", "-o", "x.meshb"])
+    words = serial.removeprefix("hocav: ")
+    assert "is not positive definite" in words, serial
+    refused(mpirun, hocav, work, ["curve", "cubed.meshb", "--metric", "bad.sol", "-o", "x.meshb"], "x.meshb", words)
+    print(f"refused in pieces as serially: {words}")
+
+
 def check(hocav, mpirun, work):
     run([hocav, "generate", "cubed-shell-bl-inner", "--target-tets", "6000", "-o", "shell.meshb"], work)
     run([hocav, "generate", "cubed-shell", "--target-tets", "6000", "-o", "cubed.meshb"], work)
@@ -114,11 +158,13 @@ def check(hocav, mpirun, work):
 
         serial_p1 = p1_mesh(hocav, work, serial_name)
 
-        for processes, gathered in ((2, False), (3, False), (2, True)):
-            name = f"{case}{processes}{'gathered' if gathered else ''}"
-            args = mpirun + ["-np", str(processes), hocav] + curve[:-1] + ["-o", name + ".meshb", "--report", name + ".json"]
-            found = rounds(completed(args + (["--vtu", name + ".vtu"] if gathered else []), work).stderr)
-            assert len(found) in ((2, 3) if gathered else (2,)), f"{name}: rounds {found}"
+        run([hocav, "convert", case + ".meshb", case + ".msh"], work)  # (the same vertices, in the same order)
+        for processes, scheme in ((2, ""), (3, ""), (2, "scattered"), (2, "gathered")):
+            name = f"{case}{processes}{scheme}"
+            given = curve[:-1] if scheme != "scattered" else ["curve", case + ".msh"] + curve[2:-1]
+            args = mpirun + ["-np", str(processes), hocav] + given + ["-o", name + ".meshb", "--report", name + ".json"]
+            found = rounds(completed(args + (["--vtu", name + ".vtu"] if scheme == "gathered" else []), work).stderr)
+            assert len(found) in ((2, 3) if scheme == "gathered" else (2,)), f"{name}: rounds {found}"
             data = check_against_serial(hocav, work, name, serial, serial_report)
             assert p1_mesh(hocav, work, name) == serial_p1, f"{name}: not the serial run's P1 mesh"
             cavities = [count for count, _ in found]
@@ -132,6 +178,8 @@ def check(hocav, mpirun, work):
             assert sum(cavities) == data["cavities"]["tried"]
             assert sum(cavities) == serial_cavities, f"{name}: {cavities} cavities, serial {serial_cavities}"
             assert straight <= serial_straight, f"{name}: {straight} straight boundary edges, serial {serial_straight}"
+
+    check_refusals(hocav, mpirun, work)
 
     adapt = ["adapt", "shell.meshb", "--metric", "shell.solb", "--order", "2", "--threads", "1", "-q"]
     run([hocav] + adapt + ["-o", "adapted.meshb"], work)

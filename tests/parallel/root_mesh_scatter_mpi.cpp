@@ -8,45 +8,15 @@
 //    vertex, or in another order, differs);
 // 3. a P2 mesh gives P2 parts with the mesh's nodes.
 // Exit code 0 when all holds on every process, 1 otherwise (with a message).
-#include <algorithm>
-#include <array>
-#include <iostream>
-#include <set>
 #include <string>
 
 #include "cases/structured.hpp"
 #include "mpi_test_main.hpp"
 #include "parallel/communicator.hpp"
-#include "parallel/root_mesh_scatter.hpp"
+#include "scattered_part_checks.hpp"
 
 namespace hocav {
 namespace {
-
-bool fail(const std::string& what) {
-  std::cerr << "scatter from rank 0 (rank " << process_rank() << "): " << what << '\n';
-  return false;
-}
-
-// A metric that names its vertex.
-template <int D>
-SymMat<D> metric_of(Index vertex) {
-  Vec<D> diagonal{};
-  for (int i = 0; i < D; ++i) diagonal[i] = 1.0 + static_cast<double>(vertex) + 0.25 * i;
-  return SymMat<D>::from_diagonal(diagonal);
-}
-
-// The elements by their sorted global vertex ids.
-template <int D>
-std::vector<std::array<Index, D + 1>> elements_by_ids(const Mesh<D>& mesh, const std::vector<Index>& ids) {
-  std::vector<std::array<Index, D + 1>> out;
-  for (Index k = 0; k < mesh.element_count(); ++k) {
-    std::array<Index, D + 1> element;
-    for (int i = 0; i <= D; ++i) element[i] = ids.empty() ? mesh.element(k)[i] : ids[mesh.element(k)[i]];
-    std::sort(element.begin(), element.end());
-    out.push_back(element);
-  }
-  return out;
-}
 
 template <int D>
 bool check(Mesh<D> mesh, bool p2) {
@@ -56,33 +26,7 @@ bool check(Mesh<D> mesh, bool p2) {
   std::vector<SymMat<D>> metrics;
   for (Index v = 0; v < mesh.vertex_count(); ++v) metrics.push_back(metric_of<D>(v));
   const ScatteredPart<D> scattered = scatter_from_root(root ? mesh : Mesh<D>{}, root ? metrics : std::vector<SymMat<D>>{}, 7);
-  const MeshPart<D>& part = scattered.part;
-  // (Every collective call before the first check: a process that fails returns early.)
-  std::vector<std::array<Index, D + 1>> gathered;
-  for (const auto& each : exchange_values(std::vector<std::vector<std::array<Index, D + 1>>>(static_cast<std::size_t>(process_count()),
-                                                                                             elements_by_ids(part.mesh, part.global_ids))))
-    gathered.insert(gathered.end(), each.begin(), each.end());
-  std::sort(gathered.begin(), gathered.end());
-  if (part.mesh.element_count() == 0) return fail(name + ": an empty part");
-  if (part.mesh.is_p2() != p2) return fail(name + ": the part's order is not the mesh's");
-  if (scattered.metrics.size() != static_cast<std::size_t>(part.mesh.vertex_count())) return fail(name + ": not a metric per vertex");
-  for (Index v = 0; v < part.mesh.vertex_count(); ++v) {
-    const Index g = part.global_ids[v];
-    if (g < 0 || g >= mesh.vertex_count() || part.mesh.vertex(v) != mesh.vertex(g)) return fail(name + ": a vertex not the mesh's");
-    if (scattered.metrics[v].entries != metric_of<D>(g).entries) return fail(name + ": a vertex with another vertex's metric");
-  }
-  if (p2)
-    for (Index e = 0; e < part.mesh.edge_count(); ++e) {
-      const auto& ends = part.mesh.edge_vertices(e);
-      if (ends[0] == kNoIndex) continue;
-      const Index whole = mesh.find_edge(part.global_ids[ends[0]], part.global_ids[ends[1]]);
-      if (whole == kNoIndex || part.mesh.edge_node(e) != mesh.edge_node(whole)) return fail(name + ": an edge node not the mesh's");
-    }
-  std::vector<std::array<Index, D + 1>> whole = elements_by_ids(mesh, {});
-  std::sort(whole.begin(), whole.end());
-  if (gathered != whole) return fail(name + ": the parts' elements are not the mesh's, each once");
-  std::cerr << name << ": part of " << part.mesh.element_count() << " elements on rank " << process_rank() << '\n';
-  return true;
+  return check_scattered_part(mesh, scattered, name);
 }
 
 }  // namespace

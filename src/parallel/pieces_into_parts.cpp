@@ -1,0 +1,34 @@
+#include "parallel/pieces_into_parts.hpp"
+
+#include <chrono>
+
+#include "base/stopwatch.hpp"
+#include "io/gamma_mesh.hpp"
+#include "io/node_metrics.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/distributed_graph.hpp"
+#include "parallel/metrics_by_global_id.hpp"
+#include "parallel/part_migration.hpp"
+
+namespace hocav {
+
+template <int D>
+ScatteredPart<D> parts_of_pieces(MeshFilePiece<D> piece, const std::string& metric_path, std::int64_t seed) {
+  const auto start = std::chrono::steady_clock::now();
+  const SolutionRowRun run{process_rank(), process_count()};
+  const Index held_first = run.first_of(piece.vertex_count);
+  const std::vector<SymMat<D>> held = metrics_of_rows<D>(read_metric_run(metric_path, D, piece.vertex_count, run));
+  ScatteredPart<D> out;
+  const std::vector<double> loads(static_cast<std::size_t>(piece.part.mesh.element_count()), 1.0);
+  const std::vector<int> part_of = partition_distributed_part(piece.part, loads, {}, seed);
+  out.part = migrate_part(piece.part, part_of, &out.bytes_sent);
+  piece = {};
+  out.metrics = metrics_by_global_id<D>(out.part.global_ids, held_first, held, out.bytes_sent);
+  out.seconds = max_over_processes(seconds_since(start));
+  return out;
+}
+
+template ScatteredPart<2> parts_of_pieces(MeshFilePiece<2>, const std::string&, std::int64_t);
+template ScatteredPart<3> parts_of_pieces(MeshFilePiece<3>, const std::string&, std::int64_t);
+
+}  // namespace hocav

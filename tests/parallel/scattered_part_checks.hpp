@@ -1,0 +1,79 @@
+// Checks of a mesh cut into parts with its metrics (a ScatteredPart: from rank 0, or from a file
+// read in pieces), shared by the MPI tests of both: every element of the mesh in exactly one part,
+// each part vertex the mesh vertex's point with its own metric (metric_of names its vertex), and a
+// P2 part's nodes the mesh's.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "parallel/communicator.hpp"
+#include "parallel/root_mesh_scatter.hpp"
+
+namespace hocav {
+
+inline bool fail_scattered(const std::string& what) {
+  std::cerr << "parts (rank " << process_rank() << "): " << what << '\n';
+  return false;
+}
+
+// A metric that names its vertex.
+template <int D>
+SymMat<D> metric_of(Index vertex) {
+  Vec<D> diagonal{};
+  for (int i = 0; i < D; ++i) diagonal[i] = 1.0 + static_cast<double>(vertex) + 0.25 * i;
+  return SymMat<D>::from_diagonal(diagonal);
+}
+
+// The elements by their sorted global vertex ids (`ids` empty: the mesh's own).
+template <int D>
+std::vector<std::array<Index, D + 1>> elements_by_ids(const Mesh<D>& mesh, const std::vector<Index>& ids) {
+  std::vector<std::array<Index, D + 1>> out;
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    std::array<Index, D + 1> element;
+    for (int i = 0; i <= D; ++i) element[i] = ids.empty() ? mesh.element(k)[i] : ids[mesh.element(k)[i]];
+    std::sort(element.begin(), element.end());
+    out.push_back(element);
+  }
+  return out;
+}
+
+// Collective (every process calls it, with the same `mesh`, before any early return): whether
+// `scattered` is a part of `mesh` as the file header says, `name` in each message.
+template <int D>
+bool check_scattered_part(const Mesh<D>& mesh, const ScatteredPart<D>& scattered, const std::string& name) {
+  const MeshPart<D>& part = scattered.part;
+  std::vector<std::array<Index, D + 1>> gathered;
+  for (const auto& each : exchange_values(std::vector<std::vector<std::array<Index, D + 1>>>(static_cast<std::size_t>(process_count()),
+                                                                                             elements_by_ids(part.mesh, part.global_ids))))
+    gathered.insert(gathered.end(), each.begin(), each.end());
+  std::sort(gathered.begin(), gathered.end());
+  if (part.mesh.element_count() == 0) return fail_scattered(name + ": an empty part");
+  if (part.mesh.is_p2() != mesh.is_p2()) return fail_scattered(name + ": the part's order is not the mesh's");
+  if (scattered.metrics.size() != static_cast<std::size_t>(part.mesh.vertex_count()))
+    return fail_scattered(name + ": not a metric per vertex");
+  for (Index v = 0; v < part.mesh.vertex_count(); ++v) {
+    const Index g = part.global_ids[v];
+    if (g < 0 || g >= mesh.vertex_count() || part.mesh.vertex(v) != mesh.vertex(g))
+      return fail_scattered(name + ": a vertex not the mesh's");
+    if (scattered.metrics[v].entries != metric_of<D>(g).entries) return fail_scattered(name + ": a vertex with another vertex's metric");
+  }
+  if (mesh.is_p2())
+    for (Index e = 0; e < part.mesh.edge_count(); ++e) {
+      const auto& ends = part.mesh.edge_vertices(e);
+      if (ends[0] == kNoIndex) continue;
+      const Index whole = mesh.find_edge(part.global_ids[ends[0]], part.global_ids[ends[1]]);
+      if (whole == kNoIndex || part.mesh.edge_node(e) != mesh.edge_node(whole))
+        return fail_scattered(name + ": an edge node not the mesh's");
+    }
+  std::vector<std::array<Index, D + 1>> whole = elements_by_ids(mesh, {});
+  std::sort(whole.begin(), whole.end());
+  if (gathered != whole) return fail_scattered(name + ": the parts' elements are not the mesh's, each once");
+  std::cerr << name << ": part of " << part.mesh.element_count() << " elements on rank " << process_rank() << '\n';
+  return true;
+}
+
+}  // namespace hocav
