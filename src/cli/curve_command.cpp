@@ -69,8 +69,8 @@ bool reads_input_in_pieces(const CurveOptions& options) {
   return is_gamma_path(options.input) && !gamma_mesh_has_p2_keyword(options.input);
 }
 
-// Every process: its part curved on the geometry of the parts' boundary, and written in runs
-// (docs/distributed.md §Curving in the parts).
+// Every process: its part curved on the geometry of the parts' boundary, and written in runs with
+// the input's elements in their order (docs/distributed.md §Curving in the parts).
 template <int D>
 CurvingInParts curve_parts(ScatteredPart<D> scattered, const CurveOptions& options) {
   const PartsGeometryMaker<D> geometry = [choice = boundary_choice_named(options.surface)](const Mesh<D>& boundary) {
@@ -79,7 +79,8 @@ CurvingInParts curve_parts(ScatteredPart<D> scattered, const CurveOptions& optio
   CurvingInParts curving = curve_in_parts(scattered.part, std::move(scattered.metrics), geometry, curving_options(options), false);
   curving.rounds[0].bytes_sent += sum_over_processes(scattered.bytes_sent);
   curving.rounds[0].seconds += scattered.seconds;
-  count_curved_output(curving.report, write_mesh_runs(options.output, scattered.part, file_extension(options.output) == ".meshb"));
+  count_curved_output(curving.report, write_mesh_runs(options.output, scattered.part, file_extension(options.output) == ".meshb", 0,
+                                                      scattered.element_ids));  // (the curving keeps the part's elements in order)
   return curving;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <fstream>
+#include <numeric>
 
 #include "base/error.hpp"
 #include "io/gamma_keyword_writer.hpp"
@@ -18,6 +19,8 @@ namespace hocav {
 namespace {
 
 constexpr char kCornerFlag = 1, kRequiredFlag = 2, kRidgeFlag = 4;
+// The places of an element order sent at once (docs/distributed.md §Writing in runs).
+constexpr Index kElementWindow = Index{1} << 16;
 
 // A vertex on its way to the process of its run of global ids.
 template <int D>
@@ -44,6 +47,14 @@ struct SharedEdge {
   Index node_number;          // a P2 line's node, by file number
   int ref;                    // a line's
   char flags;                 // a line's kRidgeFlag, kRequiredFlag
+};
+
+// An element on its way to the process of its run of places in the file (an element order's).
+template <int D>
+struct ElementRow {
+  Index place;
+  int ref;
+  std::array<Index, D + 1 + Simplex<D>::kEdges> numbers;  // its vertices' file numbers, then its nodes' (P2)
 };
 
 // Where an arrived record lies: its sender and its place in the sender's message.
@@ -127,10 +138,13 @@ struct Keyword {
 template <int D>
 class RunsWriter {
  public:
-  RunsWriter(const std::string& path, const MeshPart<D>& part, bool binary) : path_(path), part_(part), mesh_(part.mesh), binary_(binary) {
+  RunsWriter(const std::string& path, const MeshPart<D>& part, bool binary, std::span<const Index> element_order)
+      : path_(path), part_(part), mesh_(part.mesh), binary_(binary), element_order_(element_order) {
     if (part.global_ids.size() != static_cast<std::size_t>(mesh_.vertex_count()) ||
         part.pinned.size() != static_cast<std::size_t>(mesh_.vertex_count()) || !mesh_.is_compact())
       throw std::logic_error("write_mesh_runs: a part without global ids or pinned flags, or not compact");
+    if (!element_order.empty() && element_order.size() != static_cast<std::size_t>(mesh_.element_count()))
+      throw std::logic_error("write_mesh_runs: an element order that is not one place per element");
   }
 
   MeshFileCounts write(int requested_version) {
@@ -143,11 +157,15 @@ class RunsWriter {
     if (p2) encode_nodes();
     if constexpr (D == 3) encode_lines();
     encode_facets();
-    encode_elements();
+    if (sum_over_processes(static_cast<int>(!element_order_.empty())) > 0)
+      encode_elements_in_order();
+    else
+      encode_elements();
     std::vector<Keyword> keywords{{gamma::kVertices, 1, D, {&vertices_, &nodes_}}};
     if constexpr (D == 3) keywords.push_back(simplex_keyword(1, order, lines_));
     keywords.push_back(simplex_keyword(D - 1, order, facets_));
-    keywords.push_back(simplex_keyword(D, order, elements_));
+    keywords.push_back(simplex_keyword(D, order, element_runs_.front()));
+    for (std::size_t run = 1; run < element_runs_.size(); ++run) keywords.back().runs.push_back(&element_runs_[run]);
     for (const auto& [code, records] : {std::pair{gamma::kCorners, &corners_},
                                         {gamma::kRidges, &ridges_},
                                         {gamma::kRequiredVertices, &required_vertices_},
@@ -287,19 +305,34 @@ class RunsWriter {
     out.end_record();
   }
 
-  // An entity's record: its vertices' numbers, its edges' nodes' (P2, in the local edge order of
-  // a simplex of its dimension), its ref.
+  // An entity's file numbers (from 0): its vertices', then its edges' nodes' (P2, in the local edge
+  // order of a simplex of its dimension; kNoIndex for P1).
   template <std::size_t N>
-  void write_simplex(ChunkRecords& out, const std::array<Index, N>& vertices, int ref) const {
-    for (Index v : vertices) out.write_integer(std::int64_t{number_[v]} + 1);
+  std::array<Index, N + N*(N - 1) / 2> simplex_numbers(const std::array<Index, N>& vertices) const {
+    std::array<Index, N + N*(N - 1) / 2> numbers;
+    numbers.fill(kNoIndex);
+    for (std::size_t i = 0; i < N; ++i) numbers[i] = number_[vertices[i]];
     if (mesh_.is_p2())
       for (std::size_t e = 0; e < N * (N - 1) / 2; ++e) {
         std::array<int, 2> ends{0, 1};
         if constexpr (N > 2) ends = edge_vertices<static_cast<int>(N) - 1>(static_cast<int>(e));
-        out.write_integer(std::int64_t{node_number_[mesh_.find_edge(vertices[ends[0]], vertices[ends[1]])]} + 1);
+        numbers[N + e] = node_number_[mesh_.find_edge(vertices[ends[0]], vertices[ends[1]])];
       }
+    return numbers;
+  }
+
+  // An entity's record: its file numbers (those of its nodes when P2) and its ref.
+  template <std::size_t M>
+  static void write_numbers(ChunkRecords& out, const std::array<Index, M>& numbers, int ref) {
+    for (Index number : numbers)
+      if (number != kNoIndex) out.write_integer(std::int64_t{number} + 1);
     out.write_integer(ref);
     out.end_record();
+  }
+
+  template <std::size_t N>
+  void write_simplex(ChunkRecords& out, const std::array<Index, N>& vertices, int ref) const {
+    write_numbers(out, simplex_numbers(vertices), ref);
   }
 
   // 3D feature lines: a line with both ends shared may lie in several parts and goes to the process
@@ -368,9 +401,47 @@ class RunsWriter {
   }
 
   void encode_elements() {
-    elements_ = records();
-    for (Index k = 0; k < mesh_.element_count(); ++k) write_simplex(elements_, mesh_.element(k), mesh_.element_ref(k));
+    element_runs_.assign(1, records());
+    for (Index k = 0; k < mesh_.element_count(); ++k) write_simplex(element_runs_[0], mesh_.element(k), mesh_.element_ref(k));
     counts_.elements = offset_of(mesh_.element_count()).total;
+  }
+
+  // The elements in element_order_, window after window of kElementWindow places (the messages'
+  // memory bounded by a window's): each element's numbers to the process of its run of the
+  // window's places, which writes that run in place order.
+  void encode_elements_in_order() {
+    const Offset offset = offset_of(mesh_.element_count());
+    counts_.elements = offset.total;
+    std::vector<Index> by_place(static_cast<std::size_t>(mesh_.element_count()));
+    std::iota(by_place.begin(), by_place.end(), Index{0});
+    std::sort(by_place.begin(), by_place.end(), [&](Index a, Index b) { return element_order_[a] < element_order_[b]; });
+    if (!by_place.empty() && (element_order_[by_place.front()] < 0 || element_order_[by_place.back()] >= offset.total))
+      throw Error(path_ + ": the element order is no permutation of the elements");
+    const int windows = static_cast<int>(std::max<Index>(1, (offset.total + kElementWindow - 1) / kElementWindow));
+    element_runs_.assign(static_cast<std::size_t>(windows), records());
+    std::size_t next = 0;
+    for (int w = 0; w < windows; ++w) {
+      const Index begin = slice_start(offset.total, w, windows), size = slice_start(offset.total, w + 1, windows) - begin;
+      std::vector<std::vector<ElementRow<D>>> outgoing(static_cast<std::size_t>(process_count()));
+      for (; next < by_place.size() && element_order_[by_place[next]] < begin + size; ++next) {
+        const Index k = by_place[next], place = element_order_[k] - begin;
+        outgoing[static_cast<std::size_t>(slice_holding(place, size, process_count()))].push_back(
+            {place, mesh_.element_ref(k), simplex_numbers(mesh_.element(k))});
+      }
+      encode_window(exchange_values_joined(outgoing), size, element_runs_[static_cast<std::size_t>(w)]);
+    }
+  }
+
+  // This process's run of a window of `size` places: its rows, each place once.
+  void encode_window(std::vector<ElementRow<D>> rows, Index size, ChunkRecords& out) const {
+    std::sort(rows.begin(), rows.end(), [](const ElementRow<D>& a, const ElementRow<D>& b) { return a.place < b.place; });
+    const Index first = slice_start(size, process_rank(), process_count());
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      if (rows[i].place != first + static_cast<Index>(i)) throw Error(path_ + ": the element order is no permutation of the elements");
+      write_numbers(out, rows[i].numbers, rows[i].ref);
+    }
+    if (static_cast<Index>(rows.size()) != slice_start(size, process_rank() + 1, process_count()) - first)
+      throw Error(path_ + ": the element order is no permutation of the elements");
   }
 
   void write_keywords(const std::vector<Keyword>& keywords);
@@ -379,6 +450,7 @@ class RunsWriter {
   const MeshPart<D>& part_;
   const Mesh<D>& mesh_;
   bool binary_;
+  std::span<const Index> element_order_;
   int version_ = 0;
   MeshFileCounts counts_;
   std::vector<Index> number_;                 // per part vertex, its file number (from 0)
@@ -387,7 +459,8 @@ class RunsWriter {
   std::vector<VertexRecord<D>> vertex_rows_;  // the vertices this process writes, in order
   Index first_vertex_ = 0;                    // the file number (from 0) of the first of them
   std::vector<Vec<D>> shared_nodes_;          // the nodes of shared edges this process writes
-  ChunkRecords vertices_ = records(), nodes_ = records(), lines_ = records(), facets_ = records(), elements_ = records();
+  ChunkRecords vertices_ = records(), nodes_ = records(), lines_ = records(), facets_ = records();
+  std::vector<ChunkRecords> element_runs_;  // the elements' records: one run, or one per window of an element order
   ChunkRecords corners_ = records(), ridges_ = records(), required_vertices_ = records(), required_edges_ = records(),
                required_triangles_ = records();
 };
@@ -451,11 +524,12 @@ void RunsWriter<D>::write_keywords(const std::vector<Keyword>& keywords) {
 }
 
 template <int D>
-MeshFileCounts write_mesh_runs(const std::string& path, const MeshPart<D>& part, bool binary, int version) {
-  return RunsWriter<D>(path, part, binary).write(version);
+MeshFileCounts write_mesh_runs(const std::string& path, const MeshPart<D>& part, bool binary, int version,
+                               std::span<const Index> element_order) {
+  return RunsWriter<D>(path, part, binary, element_order).write(version);
 }
 
-template MeshFileCounts write_mesh_runs(const std::string&, const MeshPart<2>&, bool, int);
-template MeshFileCounts write_mesh_runs(const std::string&, const MeshPart<3>&, bool, int);
+template MeshFileCounts write_mesh_runs(const std::string&, const MeshPart<2>&, bool, int, std::span<const Index>);
+template MeshFileCounts write_mesh_runs(const std::string&, const MeshPart<3>&, bool, int, std::span<const Index>);
 
 }  // namespace hocav

@@ -5,6 +5,7 @@
 // writes where the file's layout puts its records.
 #pragma once
 
+#include <span>
 #include <string>
 
 #include "parallel/mesh_parts.hpp"
@@ -24,15 +25,19 @@ struct MeshFileCounts {
 // - the vertices in the order of their global ids, numbered from 1 without gaps; a P2 mesh's nodes
 //   after them, those of each process's edges in its edge table's order, rank after rank, with the
 //   edges several parts hold written once;
-// - the feature lines (3D) once each, each part's facets, the elements part by part in rank order;
+// - the feature lines (3D) once each, each part's facets, the elements part by part in rank order
+//   or, when `element_order` is given (per element of the part, its place among the file's
+//   elements: together a permutation of the places, such as an input's element ids), in that order,
+//   each element written by the process of its run of places;
 // - the corners, the ridges, the vertices required by the mesh (kPinnedByMesh, not the interfaces'),
 //   and the required edges and triangles.
 // One process holding a whole mesh (whole_mesh_part, the others empty) writes write_gamma_mesh's file
 // byte for byte when the mesh's tag lists are in increasing order. Rank 0 writes the keywords with
 // holes for the records (the output's temporary in the command's OutputSet), then every process
 // writes its records in place. Throws Error when two parts give a vertex different points or an
-// edge different nodes, or the file cannot be written.
+// edge different nodes, the places are no permutation, or the file cannot be written.
 template <int D>
-MeshFileCounts write_mesh_runs(const std::string& path, const MeshPart<D>& part, bool binary, int version = 0);
+MeshFileCounts write_mesh_runs(const std::string& path, const MeshPart<D>& part, bool binary, int version = 0,
+                               std::span<const Index> element_order = {});
 
 }  // namespace hocav

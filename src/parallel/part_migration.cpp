@@ -48,6 +48,13 @@ MeshPart<D> migrate_part(const MeshPart<D>& part, std::span<const int> destinati
   return part_of_shipments(arrived);
 }
 
+std::vector<Index> migrated_element_values(std::span<const Index> values, std::span<const int> destination) {
+  if (values.size() != destination.size()) throw Error("migrated element values: not one value per element");
+  std::vector<std::vector<Index>> outgoing(static_cast<std::size_t>(process_count()));
+  for (std::size_t k = 0; k < values.size(); ++k) outgoing.at(static_cast<std::size_t>(destination[k])).push_back(values[k]);
+  return exchange_values_joined(outgoing);  // (migrate_part's order: by source in rank order, each source's in its order)
+}
+
 template <int D>
 MeshPart<D> repartition(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> old_interface,
                         std::int64_t partition_seed, long long* bytes_sent) {

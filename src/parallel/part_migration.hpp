@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "parallel/mesh_parts.hpp"
 
@@ -24,6 +25,11 @@ namespace hocav {
 // `bytes_sent` when given.
 template <int D>
 MeshPart<D> migrate_part(const MeshPart<D>& part, std::span<const int> destination, long long* bytes_sent = nullptr);
+
+// Every process at once, with the `destination` of a migrate_part call: per element of the part that
+// migration makes, in its order, the value `values` gives the element here (per element of `part`),
+// such as its place in an input's element order.
+std::vector<Index> migrated_element_values(std::span<const Index> values, std::span<const int> destination);
 
 // Every process at once: the parts cut again by PT-Scotch (the distributed graph of the parts, weighed
 // by `loads` per element and heavy across faces near `old_interface` vertices, which may be empty:

@@ -1,6 +1,7 @@
 #include "parallel/pieces_into_parts.hpp"
 
 #include <chrono>
+#include <numeric>
 
 #include "base/stopwatch.hpp"
 #include "io/gamma_mesh.hpp"
@@ -21,6 +22,9 @@ ScatteredPart<D> parts_of_pieces(MeshFilePiece<D> piece, const std::string& metr
   ScatteredPart<D> out;
   const std::vector<double> loads(static_cast<std::size_t>(piece.part.mesh.element_count()), 1.0);
   const std::vector<int> part_of = partition_distributed_part(piece.part, loads, {}, seed);
+  std::vector<Index> element_ids(part_of.size());
+  std::iota(element_ids.begin(), element_ids.end(), slice_start(piece.element_count, process_rank(), process_count()));
+  out.element_ids = migrated_element_values(element_ids, part_of);
   out.part = migrate_part(piece.part, part_of, &out.bytes_sent);
   piece = {};
   out.metrics = metrics_by_global_id<D>(out.part.global_ids, held_first, held, out.bytes_sent);

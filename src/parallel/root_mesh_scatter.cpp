@@ -1,6 +1,7 @@
 #include "parallel/root_mesh_scatter.hpp"
 
 #include <chrono>
+#include <numeric>
 
 #include "base/stopwatch.hpp"
 #include "parallel/communicator.hpp"
@@ -16,6 +17,9 @@ ScatteredPart<D> scatter_from_root(Mesh<D> mesh, std::vector<SymMat<D>> metrics,
   ScatteredPart<D> out;
   if (process_rank() == 0 && !mesh.has_topology()) mesh.build_topology();
   const std::vector<int> part_of = partition_from_root(mesh, seed, &out.bytes_sent);
+  std::vector<Index> element_ids(part_of.size());
+  std::iota(element_ids.begin(), element_ids.end(), Index{0});
+  out.element_ids = migrated_element_values(element_ids, part_of);
   out.part = migrate_part(process_rank() == 0 ? whole_mesh_part(std::move(mesh)) : MeshPart<D>{}, part_of, &out.bytes_sent);
   out.metrics = metrics_by_global_id<D>(out.part.global_ids, 0, metrics, out.bytes_sent);
   out.seconds = max_over_processes(seconds_since(start));

@@ -16,6 +16,7 @@ template <int D>
 struct ScatteredPart {
   MeshPart<D> part;                // as migrate_part makes it: global ids the mesh's vertex ids, pinned flags
   std::vector<SymMat<D>> metrics;  // per vertex of the part
+  std::vector<Index> element_ids;  // per element of the part, its id in the mesh (its place in the input's element order)
   long long bytes_sent = 0;        // by this process
   double seconds = 0;              // the slowest process's
 };

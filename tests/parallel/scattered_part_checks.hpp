@@ -1,7 +1,7 @@
 // Checks of a mesh cut into parts with its metrics (a ScatteredPart: from rank 0, or from a file
 // read in pieces), shared by the MPI tests of both: every element of the mesh in exactly one part,
-// each part vertex the mesh vertex's point with its own metric (metric_of names its vertex), and a
-// P2 part's nodes the mesh's.
+// each part vertex the mesh vertex's point with its own metric (metric_of names its vertex), each
+// part element's id that of the mesh element with its vertices, and a P2 part's nodes the mesh's.
 #pragma once
 
 #include <algorithm>
@@ -60,6 +60,14 @@ bool check_scattered_part(const Mesh<D>& mesh, const ScatteredPart<D>& scattered
     if (g < 0 || g >= mesh.vertex_count() || part.mesh.vertex(v) != mesh.vertex(g))
       return fail_scattered(name + ": a vertex not the mesh's");
     if (scattered.metrics[v].entries != metric_of<D>(g).entries) return fail_scattered(name + ": a vertex with another vertex's metric");
+  }
+  if (scattered.element_ids.size() != static_cast<std::size_t>(part.mesh.element_count()))
+    return fail_scattered(name + ": not an element id per element");
+  const std::vector<std::array<Index, D + 1>> own = elements_by_ids(part.mesh, part.global_ids), all = elements_by_ids(mesh, {});
+  for (std::size_t k = 0; k < own.size(); ++k) {
+    const Index id = scattered.element_ids[k];
+    if (id < 0 || id >= mesh.element_count() || own[k] != all[static_cast<std::size_t>(id)])
+      return fail_scattered(name + ": an element whose id is another element's");
   }
   if (mesh.is_p2())
     for (Index e = 0; e < part.mesh.edge_count(); ++e) {
