@@ -2,11 +2,13 @@
 // 2 any error (bad option, bad input file, failed output), with a one-line message on stderr.
 #include <CLI/CLI.hpp>
 
+#include <chrono>
 #include <csignal>
 #include <iostream>
 #include <new>
 #include <string>
 #include <string_view>
+#include <thread>
 
 #include "base/error.hpp"
 #include "cli/commands.hpp"
@@ -29,10 +31,14 @@ int fail(const std::string& message) {
     std::cerr << message << '\n';
     return kFailure;
   }
-  if (hocav::process_rank() == 0)
+  if (hocav::process_rank() == 0) {
     std::cerr << message << '\n';
-  else
+  } else {
+    // An error every process meets (a missing or malformed input that each reads a piece of) is said
+    // once, by rank 0, whose abort ends this process while it waits.
+    std::this_thread::sleep_for(std::chrono::seconds(1));
     std::cerr << "(rank " << hocav::process_rank() << ") " << message << '\n';
+  }
   hocav::abort_processes(kFailure);
 }
 
