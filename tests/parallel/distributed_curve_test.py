@@ -21,7 +21,8 @@ the one rank that curved it.
 
 Bad input read in pieces is refused as the serial command refuses it (exit 2, its message, no
 output), though another process than rank 0 read the bad entity: an inverted element, a metric row
-that is not positive definite.
+that is not positive definite; a missing metric file, which every process fails to read, is said
+once.
 
 Usage: /usr/bin/python3 distributed_curve_test.py <path-to-hocav>
 Exits 77 (skipped) when hocav was built without MPI.
@@ -139,6 +140,12 @@ def check_refusals(hocav, mpirun, work):
     assert "is not positive definite" in words, serial
     refused(mpirun, hocav, work, ["curve", "cubed.meshb", "--metric", "bad.sol", "-o", "x.meshb"], "x.meshb", words)
     print(f"refused in pieces as serially: {words}")
+
+    # A metric file every process fails to read: said once (by rank 0), not once per process.
+    result = subprocess.run(mpirun + ["-np", "3", hocav, "curve", "cubed.meshb", "--metric", "missing.solb", "-o", "x.meshb"], cwd=work,
+                            capture_output=True, text=True, check=False)
+    said = [line for line in result.stderr.splitlines() if "missing.solb" in line]
+    assert result.returncode == 2 and len(said) == 1, f"a missing metric: exit {result.returncode}, said {said}"
 
 
 def check(hocav, mpirun, work):
