@@ -48,10 +48,13 @@ MeshPart<D> migrate_part(const MeshPart<D>& part, std::span<const int> destinati
   return part_of_shipments(arrived);
 }
 
-std::vector<Index> migrated_element_values(std::span<const Index> values, std::span<const int> destination) {
+std::vector<Index> migrated_element_values(std::span<const Index> values, std::span<const int> destination, long long* bytes_sent) {
   if (values.size() != destination.size()) throw Error("migrated element values: not one value per element");
   std::vector<std::vector<Index>> outgoing(static_cast<std::size_t>(process_count()));
   for (std::size_t k = 0; k < values.size(); ++k) outgoing.at(static_cast<std::size_t>(destination[k])).push_back(values[k]);
+  if (bytes_sent)
+    for (std::size_t to = 0; to < outgoing.size(); ++to)
+      if (static_cast<int>(to) != process_rank()) *bytes_sent += static_cast<long long>(outgoing[to].size() * sizeof(Index));
   return exchange_values_joined(outgoing);  // (migrate_part's order: by source in rank order, each source's in its order)
 }
 

@@ -28,8 +28,10 @@ MeshPart<D> migrate_part(const MeshPart<D>& part, std::span<const int> destinati
 
 // Every process at once, with the `destination` of a migrate_part call: per element of the part that
 // migration makes, in its order, the value `values` gives the element here (per element of `part`),
-// such as its place in an input's element order.
-std::vector<Index> migrated_element_values(std::span<const Index> values, std::span<const int> destination);
+// such as its place in an input's element order. Adds the bytes it sends other processes to
+// `bytes_sent` when given.
+std::vector<Index> migrated_element_values(std::span<const Index> values, std::span<const int> destination,
+                                           long long* bytes_sent = nullptr);
 
 // Every process at once: the parts cut again by PT-Scotch (the distributed graph of the parts, weighed
 // by `loads` per element and heavy across faces near `old_interface` vertices, which may be empty:

@@ -19,7 +19,7 @@ ScatteredPart<D> scatter_from_root(Mesh<D> mesh, std::vector<SymMat<D>> metrics,
   const std::vector<int> part_of = partition_from_root(mesh, seed, &out.bytes_sent);
   std::vector<Index> element_ids(part_of.size());
   std::iota(element_ids.begin(), element_ids.end(), Index{0});
-  out.element_ids = migrated_element_values(element_ids, part_of);
+  out.element_ids = migrated_element_values(element_ids, part_of, &out.bytes_sent);
   out.part = migrate_part(process_rank() == 0 ? whole_mesh_part(std::move(mesh)) : MeshPart<D>{}, part_of, &out.bytes_sent);
   out.metrics = metrics_by_global_id<D>(out.part.global_ids, 0, metrics, out.bytes_sent);
   out.seconds = max_over_processes(seconds_since(start));
