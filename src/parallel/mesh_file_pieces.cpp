@@ -294,10 +294,10 @@ Shipment<D> run_shipment(GammaMeshSlice<D>& slice, const std::vector<Index>& ids
   return s;
 }
 
-// Every process at once: the shipment of its own run (the slice's elements moved into it); what
-// was needed to make it is gone when it returns.
+// Every process at once: the shipment of its own run (the slice's elements moved into it), and the
+// file ids of its facets in `facet_ids`; what was needed to make it is gone when it returns.
 template <int D>
-Shipment<D> own_shipment(GammaMeshSlice<D>& slice, const std::string& path) {
+Shipment<D> own_shipment(GammaMeshSlice<D>& slice, const std::string& path, std::vector<Index>& facet_ids) {
   const std::vector<char> on_facet = facet_vertex_flags(slice);
   std::vector<Index> ids;
   for (const auto& element : slice.elements) ids.insert(ids.end(), element.begin(), element.end());
@@ -307,6 +307,7 @@ Shipment<D> own_shipment(GammaMeshSlice<D>& slice, const std::string& path) {
   const std::vector<VertexRecord<D>> vertices = fetched_vertices(slice, on_facet, ids);
   const RunFaces<D> faces = run_faces(slice, ids, vertices, path);
   const Met<D> met = meet(slice, faces, path);
+  for (const FacetRecord<D>& facet : met.facets) facet_ids.push_back(facet.id);
   return run_shipment(slice, ids, vertices, faces, met);
 }
 
@@ -315,11 +316,12 @@ Shipment<D> own_shipment(GammaMeshSlice<D>& slice, const std::string& path) {
 template <int D>
 MeshFilePiece<D> read_mesh_file_piece(const std::string& path) {
   GammaMeshSlice<D> slice = read_gamma_mesh_slice<D>(path, process_rank(), process_count());
-  MeshFilePiece<D> piece{{}, slice.vertex_count, slice.element_count, slice.facet_count};
+  MeshFilePiece<D> piece{{}, slice.vertex_count, slice.element_count, slice.facet_count, {}};
   std::vector<Shipment<D>> own;
-  own.push_back(own_shipment(slice, path));
+  own.push_back(own_shipment(slice, path, piece.facet_ids));
   slice = {};
   piece.part = part_of_shipments(own);
+  piece.facet_ids.resize(static_cast<std::size_t>(piece.part.mesh.facet_count()), kNoIndex);  // the interface facets come after
   return piece;
 }
 

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "parallel/mesh_parts.hpp"
 
@@ -25,6 +26,7 @@ template <int D>
 struct MeshFilePiece {
   MeshPart<D> part;
   Index vertex_count = 0, element_count = 0, facet_count = 0;  // the file's
+  std::vector<Index> facet_ids;                                // per facet of the part, its file id (kNoIndex: an interface facet)
 };
 
 template <int D>

@@ -49,12 +49,13 @@ struct SharedEdge {
   char flags;                 // a line's kRidgeFlag, kRequiredFlag
 };
 
-// An element on its way to the process of its run of places in the file (an element order's).
-template <int D>
-struct ElementRow {
+// An element or facet on its way to the process of its run of places in the file (an order's).
+template <std::size_t M>
+struct PlacedRow {
   Index place;
   int ref;
-  std::array<Index, D + 1 + Simplex<D>::kEdges> numbers;  // its vertices' file numbers, then its nodes' (P2)
+  char flags;                    // a facet's kRidgeFlag, kRequiredFlag
+  std::array<Index, M> numbers;  // its vertices' file numbers, then its nodes' (P2)
 };
 
 // Where an arrived record lies: its sender and its place in the sender's message.
@@ -138,8 +139,9 @@ struct Keyword {
 template <int D>
 class RunsWriter {
  public:
-  RunsWriter(const std::string& path, const MeshPart<D>& part, bool binary, std::span<const Index> element_order)
-      : path_(path), part_(part), mesh_(part.mesh), binary_(binary), element_order_(element_order) {
+  RunsWriter(const std::string& path, const MeshPart<D>& part, bool binary, std::span<const Index> element_order,
+             std::span<const Index> facet_order)
+      : path_(path), part_(part), mesh_(part.mesh), binary_(binary), element_order_(element_order), facet_order_(facet_order) {
     if (part.global_ids.size() != static_cast<std::size_t>(mesh_.vertex_count()) ||
         part.pinned.size() != static_cast<std::size_t>(mesh_.vertex_count()) || !mesh_.is_compact())
       throw std::logic_error("write_mesh_runs: a part without global ids or pinned flags, or not compact");
@@ -157,10 +159,7 @@ class RunsWriter {
     if (p2) encode_nodes();
     if constexpr (D == 3) encode_lines();
     encode_facets();
-    if (sum_over_processes(static_cast<int>(!element_order_.empty())) > 0)
-      encode_elements_in_order();
-    else
-      encode_elements();
+    encode_elements();
     std::vector<Keyword> keywords{{gamma::kVertices, 1, D, {&vertices_, &nodes_}}};
     if constexpr (D == 3) keywords.push_back(simplex_keyword(1, order, lines_));
     keywords.push_back(simplex_keyword(D - 1, order, facets_));
@@ -381,67 +380,97 @@ class RunsWriter {
     }
   }
 
+  char facet_flags(const EntityTags<D>& tags, Index f) const {
+    return static_cast<char>((tags.ridge_facet[f] ? kRidgeFlag : 0) | (tags.required_facet[f] ? kRequiredFlag : 0));
+  }
+
+  // The facets part by part, or in facet_order_ (in one window: a process's run of places is then
+  // contiguous, and so are the tags it writes).
   void encode_facets() {
     const EntityTags<D> tags(mesh_);
-    facets_ = records();
-    std::vector<char> flags;
-    for (Index f = 0; f < mesh_.facet_count(); ++f) {
-      if (mesh_.facet_ref(f) == kInterfaceRef) continue;
-      write_simplex(facets_, mesh_.facet(f), mesh_.facet_ref(f));
-      flags.push_back(static_cast<char>((tags.ridge_facet[f] ? kRidgeFlag : 0) | (tags.required_facet[f] ? kRequiredFlag : 0)));
-    }
-    const Offset offset = offset_of(static_cast<Index>(flags.size()));
+    std::vector<Index> written;  // the part's facets but the interfaces'
+    for (Index f = 0; f < mesh_.facet_count(); ++f)
+      if (mesh_.facet_ref(f) != kInterfaceRef) written.push_back(f);
+    const Offset offset = offset_of(static_cast<Index>(written.size()));
     counts_.facets = offset.total;
+    std::vector<char> flags;
+    const bool ordered = sum_over_processes(static_cast<int>(!facet_order_.empty())) > 0;
+    if (ordered) {
+      if (facet_order_.size() != written.size()) throw std::logic_error("write_mesh_runs: a facet order that is not one place per facet");
+      facets_ = std::move(
+          encode_in_order<D + D*(D - 1) / 2>(facet_order_, offset.total, std::max<Index>(offset.total, 1), flags, [&](std::size_t i) {
+            const Index f = written[i];
+            return PlacedRow<D + D*(D - 1) / 2>{0, mesh_.facet_ref(f), facet_flags(tags, f), simplex_numbers(mesh_.facet(f))};
+          }).front());
+    } else {
+      facets_ = records();
+      for (Index f : written) {
+        write_simplex(facets_, mesh_.facet(f), mesh_.facet_ref(f));
+        flags.push_back(facet_flags(tags, f));
+      }
+    }
+    const Offset tagged = ordered ? Offset{slice_start(offset.total, process_rank(), process_count()), offset.total} : offset;
     if constexpr (D == 2) {
-      write_tags(flags, offset, ridges_, required_edges_);
+      write_tags(flags, tagged, ridges_, required_edges_);
     } else {
       ChunkRecords no_ridges = records();  // a 3D mesh's ridges are lines
-      write_tags(flags, offset, no_ridges, required_triangles_);
+      write_tags(flags, tagged, no_ridges, required_triangles_);
     }
   }
 
+  // The elements part by part, or in element_order_, window after window of kElementWindow places.
   void encode_elements() {
-    element_runs_.assign(1, records());
-    for (Index k = 0; k < mesh_.element_count(); ++k) write_simplex(element_runs_[0], mesh_.element(k), mesh_.element_ref(k));
-    counts_.elements = offset_of(mesh_.element_count()).total;
-  }
-
-  // The elements in element_order_, window after window of kElementWindow places (the messages'
-  // memory bounded by a window's): each element's numbers to the process of its run of the
-  // window's places, which writes that run in place order.
-  void encode_elements_in_order() {
     const Offset offset = offset_of(mesh_.element_count());
     counts_.elements = offset.total;
-    std::vector<Index> by_place(static_cast<std::size_t>(mesh_.element_count()));
-    std::iota(by_place.begin(), by_place.end(), Index{0});
-    std::sort(by_place.begin(), by_place.end(), [&](Index a, Index b) { return element_order_[a] < element_order_[b]; });
-    if (!by_place.empty() && (element_order_[by_place.front()] < 0 || element_order_[by_place.back()] >= offset.total))
-      throw Error(path_ + ": the element order is no permutation of the elements");
-    const int windows = static_cast<int>(std::max<Index>(1, (offset.total + kElementWindow - 1) / kElementWindow));
-    element_runs_.assign(static_cast<std::size_t>(windows), records());
-    std::size_t next = 0;
-    for (int w = 0; w < windows; ++w) {
-      const Index begin = slice_start(offset.total, w, windows), size = slice_start(offset.total, w + 1, windows) - begin;
-      std::vector<std::vector<ElementRow<D>>> outgoing(static_cast<std::size_t>(process_count()));
-      for (; next < by_place.size() && element_order_[by_place[next]] < begin + size; ++next) {
-        const Index k = by_place[next], place = element_order_[k] - begin;
-        outgoing[static_cast<std::size_t>(slice_holding(place, size, process_count()))].push_back(
-            {place, mesh_.element_ref(k), simplex_numbers(mesh_.element(k))});
-      }
-      encode_window(exchange_values_joined(outgoing), size, element_runs_[static_cast<std::size_t>(w)]);
+    if (sum_over_processes(static_cast<int>(!element_order_.empty())) > 0) {
+      std::vector<char> no_flags;
+      element_runs_ = encode_in_order<D + 1 + Simplex<D>::kEdges>(
+          element_order_, offset.total, kElementWindow, no_flags, [&](std::size_t k) {
+            const auto element = static_cast<Index>(k);
+            return PlacedRow<D + 1 + Simplex<D>::kEdges>{0, mesh_.element_ref(element), 0, simplex_numbers(mesh_.element(element))};
+          });
+      return;
     }
+    element_runs_.assign(1, records());
+    for (Index k = 0; k < mesh_.element_count(); ++k) write_simplex(element_runs_[0], mesh_.element(k), mesh_.element_ref(k));
   }
 
-  // This process's run of a window of `size` places: its rows, each place once.
-  void encode_window(std::vector<ElementRow<D>> rows, Index size, ChunkRecords& out) const {
-    std::sort(rows.begin(), rows.end(), [](const ElementRow<D>& a, const ElementRow<D>& b) { return a.place < b.place; });
-    const Index first = slice_start(size, process_rank(), process_count());
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-      if (rows[i].place != first + static_cast<Index>(i)) throw Error(path_ + ": the element order is no permutation of the elements");
-      write_numbers(out, rows[i].numbers, rows[i].ref);
+  // Entities in the order of their places among the file's `total` (`order`: per entity, together a
+  // permutation of the places), window after window of `window` places so that the messages never
+  // hold more than a window's rows: each entity's row (row_of(i), its place set here) goes to the
+  // process of its run of the window's places, which sorts its run, refuses a place missing or
+  // given twice, and encodes it. Returns the runs, one per window; appends the rows' flags, in the
+  // order written, to `flags`.
+  template <std::size_t M, typename RowOf>
+  std::vector<ChunkRecords> encode_in_order(std::span<const Index> order, Index total, Index window, std::vector<char>& flags,
+                                            RowOf row_of) const {
+    const auto refused = [&] { return Error(path_ + ": the order of the entities written is no permutation of them"); };
+    std::vector<std::size_t> by_place(order.size());
+    std::iota(by_place.begin(), by_place.end(), std::size_t{0});
+    std::sort(by_place.begin(), by_place.end(), [&](std::size_t a, std::size_t b) { return order[a] < order[b]; });
+    if (!by_place.empty() && (order[by_place.front()] < 0 || order[by_place.back()] >= total)) throw refused();
+    const int windows = static_cast<int>(std::max<Index>(1, (total + window - 1) / window));
+    std::vector<ChunkRecords> runs(static_cast<std::size_t>(windows), records());
+    std::size_t next = 0;
+    for (int w = 0; w < windows; ++w) {
+      const Index begin = slice_start(total, w, windows), size = slice_start(total, w + 1, windows) - begin;
+      std::vector<std::vector<PlacedRow<M>>> outgoing(static_cast<std::size_t>(process_count()));
+      for (; next < by_place.size() && order[by_place[next]] < begin + size; ++next) {
+        PlacedRow<M> row = row_of(by_place[next]);
+        row.place = order[by_place[next]] - begin;
+        outgoing[static_cast<std::size_t>(slice_holding(row.place, size, process_count()))].push_back(row);
+      }
+      std::vector<PlacedRow<M>> rows = exchange_values_joined(outgoing);
+      std::sort(rows.begin(), rows.end(), [](const PlacedRow<M>& a, const PlacedRow<M>& b) { return a.place < b.place; });
+      const Index first = slice_start(size, process_rank(), process_count());
+      if (static_cast<Index>(rows.size()) != slice_start(size, process_rank() + 1, process_count()) - first) throw refused();
+      for (std::size_t i = 0; i < rows.size(); ++i) {
+        if (rows[i].place != first + static_cast<Index>(i)) throw refused();
+        write_numbers(runs[static_cast<std::size_t>(w)], rows[i].numbers, rows[i].ref);
+        flags.push_back(rows[i].flags);
+      }
     }
-    if (static_cast<Index>(rows.size()) != slice_start(size, process_rank() + 1, process_count()) - first)
-      throw Error(path_ + ": the element order is no permutation of the elements");
+    return runs;
   }
 
   void write_keywords(const std::vector<Keyword>& keywords);
@@ -450,7 +479,7 @@ class RunsWriter {
   const MeshPart<D>& part_;
   const Mesh<D>& mesh_;
   bool binary_;
-  std::span<const Index> element_order_;
+  std::span<const Index> element_order_, facet_order_;
   int version_ = 0;
   MeshFileCounts counts_;
   std::vector<Index> number_;                 // per part vertex, its file number (from 0)
@@ -525,11 +554,11 @@ void RunsWriter<D>::write_keywords(const std::vector<Keyword>& keywords) {
 
 template <int D>
 MeshFileCounts write_mesh_runs(const std::string& path, const MeshPart<D>& part, bool binary, int version,
-                               std::span<const Index> element_order) {
-  return RunsWriter<D>(path, part, binary, element_order).write(version);
+                               std::span<const Index> element_order, std::span<const Index> facet_order) {
+  return RunsWriter<D>(path, part, binary, element_order, facet_order).write(version);
 }
 
-template MeshFileCounts write_mesh_runs(const std::string&, const MeshPart<2>&, bool, int, std::span<const Index>);
-template MeshFileCounts write_mesh_runs(const std::string&, const MeshPart<3>&, bool, int, std::span<const Index>);
+template MeshFileCounts write_mesh_runs(const std::string&, const MeshPart<2>&, bool, int, std::span<const Index>, std::span<const Index>);
+template MeshFileCounts write_mesh_runs(const std::string&, const MeshPart<3>&, bool, int, std::span<const Index>, std::span<const Index>);
 
 }  // namespace hocav

@@ -25,10 +25,11 @@ struct MeshFileCounts {
 // - the vertices in the order of their global ids, numbered from 1 without gaps; a P2 mesh's nodes
 //   after them, those of each process's edges in its edge table's order, rank after rank, with the
 //   edges several parts hold written once;
-// - the feature lines (3D) once each, each part's facets, the elements part by part in rank order
-//   or, when `element_order` is given (per element of the part, its place among the file's
-//   elements: together a permutation of the places, such as an input's element ids), in that order,
-//   each element written by the process of its run of places;
+// - the feature lines (3D) once each; the facets (but the interfaces') and the elements part by
+//   part in rank order or, when `facet_order` or `element_order` is given (per facet of the part
+//   but its interface facets, in order, or per element: its place among the file's, together a
+//   permutation of the places, such as an input's ids), in that order, each entity written by the
+//   process of its run of places;
 // - the corners, the ridges, the vertices required by the mesh (kPinnedByMesh, not the interfaces'),
 //   and the required edges and triangles.
 // One process holding a whole mesh (whole_mesh_part, the others empty) writes write_gamma_mesh's file
@@ -38,6 +39,6 @@ struct MeshFileCounts {
 // edge different nodes, the places are no permutation, or the file cannot be written.
 template <int D>
 MeshFileCounts write_mesh_runs(const std::string& path, const MeshPart<D>& part, bool binary, int version = 0,
-                               std::span<const Index> element_order = {});
+                               std::span<const Index> element_order = {}, std::span<const Index> facet_order = {});
 
 }  // namespace hocav

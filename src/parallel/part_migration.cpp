@@ -48,15 +48,41 @@ MeshPart<D> migrate_part(const MeshPart<D>& part, std::span<const int> destinati
   return part_of_shipments(arrived);
 }
 
+namespace {
+
+// `outgoing` sent, what arrives joined in rank order (migrate_part's order: by source, each source's
+// in its order); the bytes sent to other processes added to `bytes_sent` when given.
+std::vector<Index> exchanged_values(const std::vector<std::vector<Index>>& outgoing, long long* bytes_sent) {
+  if (bytes_sent)
+    for (std::size_t to = 0; to < outgoing.size(); ++to)
+      if (static_cast<int>(to) != process_rank()) *bytes_sent += static_cast<long long>(outgoing[to].size() * sizeof(Index));
+  return exchange_values_joined(outgoing);
+}
+
+}  // namespace
+
 std::vector<Index> migrated_element_values(std::span<const Index> values, std::span<const int> destination, long long* bytes_sent) {
   if (values.size() != destination.size()) throw Error("migrated element values: not one value per element");
   std::vector<std::vector<Index>> outgoing(static_cast<std::size_t>(process_count()));
   for (std::size_t k = 0; k < values.size(); ++k) outgoing.at(static_cast<std::size_t>(destination[k])).push_back(values[k]);
-  if (bytes_sent)
-    for (std::size_t to = 0; to < outgoing.size(); ++to)
-      if (static_cast<int>(to) != process_rank()) *bytes_sent += static_cast<long long>(outgoing[to].size() * sizeof(Index));
-  return exchange_values_joined(outgoing);  // (migrate_part's order: by source in rank order, each source's in its order)
+  return exchanged_values(outgoing, bytes_sent);
 }
+
+template <int D>
+std::vector<Index> migrated_facet_values(const MeshPart<D>& part, std::span<const Index> values, std::span<const int> destination,
+                                         long long* bytes_sent) {
+  if (values.size() != static_cast<std::size_t>(part.mesh.facet_count()) ||
+      destination.size() != static_cast<std::size_t>(part.mesh.element_count()))
+    throw Error("migrated facet values: not one value per facet, or not one destination per element");
+  std::vector<std::vector<Index>> outgoing(static_cast<std::size_t>(process_count()));
+  for (const auto& [element, facet] : facets_by_element(part.mesh))  // (the order pack_shipments ships them in)
+    outgoing.at(static_cast<std::size_t>(destination[static_cast<std::size_t>(element)]))
+        .push_back(values[static_cast<std::size_t>(facet)]);
+  return exchanged_values(outgoing, bytes_sent);
+}
+
+template std::vector<Index> migrated_facet_values(const MeshPart<2>&, std::span<const Index>, std::span<const int>, long long*);
+template std::vector<Index> migrated_facet_values(const MeshPart<3>&, std::span<const Index>, std::span<const int>, long long*);
 
 template <int D>
 MeshPart<D> repartition(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> old_interface,

@@ -33,6 +33,13 @@ MeshPart<D> migrate_part(const MeshPart<D>& part, std::span<const int> destinati
 std::vector<Index> migrated_element_values(std::span<const Index> values, std::span<const int> destination,
                                            long long* bytes_sent = nullptr);
 
+// The same for the facets (interface facets left out): per facet of the part that migration makes
+// but its interface facets, which come after the others, in its order, the value `values` gives the
+// facet here (per facet of `part`; those of interface facets unused).
+template <int D>
+std::vector<Index> migrated_facet_values(const MeshPart<D>& part, std::span<const Index> values, std::span<const int> destination,
+                                         long long* bytes_sent = nullptr);
+
 // Every process at once: the parts cut again by PT-Scotch (the distributed graph of the parts, weighed
 // by `loads` per element and heavy across faces near `old_interface` vertices, which may be empty:
 // distributed_element_graph) and the elements migrated to the new parts.

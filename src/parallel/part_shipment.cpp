@@ -26,15 +26,9 @@ struct Packer {
         vertex_stamp(static_cast<std::size_t>(p.mesh.vertex_count()), -1),
         line_stamp(static_cast<std::size_t>(p.mesh.line_count()), -1) {
     const Mesh<D>& mesh = part.mesh;
-    for (Index f = 0; f < mesh.facet_count(); ++f) {
-      const Index at = mesh.facet_element_face(f);
-      if (at == kNoIndex) throw Error("migrating a part: its facet " + std::to_string(f + 1) + " is no face of its elements");
-      if (mesh.facet_ref(f) == kInterfaceRef)
-        interface_face[at] = 1;
-      else
-        element_facets.emplace_back(at / (D + 1), f);
-    }
-    std::sort(element_facets.begin(), element_facets.end());
+    element_facets = facets_by_element(mesh);
+    for (Index f = 0; f < mesh.facet_count(); ++f)
+      if (mesh.facet_ref(f) == kInterfaceRef) interface_face[mesh.facet_element_face(f)] = 1;
     for (Index l = 0; l < mesh.line_count(); ++l) line_of_edge.emplace(Mesh<D>::edge_key(mesh.line(l)[0], mesh.line(l)[1]), l);
   }
 
@@ -202,6 +196,18 @@ Shipment<D> shipment_of(const MeshPart<D>& part, std::span<const Index> elements
 }
 
 template <int D>
+std::vector<std::pair<Index, Index>> facets_by_element(const Mesh<D>& mesh) {
+  std::vector<std::pair<Index, Index>> out;
+  for (Index f = 0; f < mesh.facet_count(); ++f) {
+    const Index at = mesh.facet_element_face(f);
+    if (at == kNoIndex) throw Error("migrating a part: its facet " + std::to_string(f + 1) + " is no face of its elements");
+    if (mesh.facet_ref(f) != kInterfaceRef) out.emplace_back(at / (D + 1), f);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+template <int D>
 void pack_shipments(const MeshPart<D>& part, std::span<const int> destination, int destinations,
                     const std::function<void(int, const Shipment<D>&)>& take) {
   std::vector<std::vector<Index>> leaving(static_cast<std::size_t>(destinations));
@@ -221,6 +227,8 @@ MeshPart<D> part_of_shipments(const std::vector<Shipment<D>>& arrived) {
   return std::move(unpacker.part);
 }
 
+template std::vector<std::pair<Index, Index>> facets_by_element(const Mesh<2>&);
+template std::vector<std::pair<Index, Index>> facets_by_element(const Mesh<3>&);
 template void pack_shipments(const MeshPart<2>&, std::span<const int>, int, const std::function<void(int, const Shipment<2>&)>&);
 template void pack_shipments(const MeshPart<3>&, std::span<const int>, int, const std::function<void(int, const Shipment<3>&)>&);
 template Shipment<2> shipment_of(const MeshPart<2>&, std::span<const Index>);

@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "base/error.hpp"
@@ -65,6 +66,12 @@ struct Shipment {
     return s;
   }
 };
+
+// The mesh's facets but the interfaces' (ref kInterfaceRef) as (element, facet) pairs, sorted: the
+// order in which pack_shipments ships them (element by element). Throws Error for a facet that is
+// no face of the elements.
+template <int D>
+std::vector<std::pair<Index, Index>> facets_by_element(const Mesh<D>& mesh);
 
 // Packs every element of `part` (with its topology, global ids and pinned flags) for its destination,
 // element k for destination[k] in [0, destinations): `take` gets each destination's shipment in

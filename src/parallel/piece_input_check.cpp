@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <numeric>
 
 #include "base/error.hpp"
 #include "io/gamma_mesh.hpp"
@@ -46,8 +47,13 @@ void prepare_input_piece(MeshFilePiece<D>& piece, const std::string& path, const
   } else {
     refuse_first_bad_element(mesh, bad, slice_start(piece.element_count, process_rank(), process_count()), path);
   }
-  const long long added = sum_over_processes(static_cast<long long>(add_facets_on_open_faces(mesh, 0)));
-  if (say && added > 0) warn(open_boundary_warning(path, added));
+  const Index own_added = add_facets_on_open_faces(mesh, 0);
+  const std::vector<Index> added = all_gather_value(own_added);
+  // (Their file ids: after the file's facets, rank after rank, as the serial preparation appends them.)
+  Index next = piece.facet_count + std::accumulate(added.begin(), added.begin() + process_rank(), Index{0});
+  for (Index i = 0; i < own_added; ++i) piece.facet_ids.push_back(next++);
+  const long long total = std::accumulate(added.begin(), added.end(), 0LL);
+  if (say && total > 0) warn(open_boundary_warning(path, total));
 }
 
 template void prepare_input_piece(MeshFilePiece<2>&, const std::string&, const std::function<void(const std::string&)>&);

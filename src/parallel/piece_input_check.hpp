@@ -14,7 +14,8 @@ namespace hocav {
 // is negatively oriented, every piece is reoriented; else an element of non-positive measure is
 // refused: Error naming the file and the first such element's file id, thrown by the process that
 // read it (the others wait in the next collective call, which the error's abort ends). The faces of
-// the domain's boundary without a facet get one of ref 0. Each change is said once, by rank 0,
+// the domain's boundary without a facet get one of ref 0, with the file ids the serial preparation
+// gives them (after the file's facets, in element order). Each change is said once, by rank 0,
 // through `warn` (may be empty), with the whole file's counts. What the whole mesh's check also
 // finds (non-manifold places, overlaps) is not looked for.
 template <int D>

@@ -25,6 +25,7 @@ ScatteredPart<D> parts_of_pieces(MeshFilePiece<D> piece, const std::string& metr
   std::vector<Index> element_ids(part_of.size());
   std::iota(element_ids.begin(), element_ids.end(), slice_start(piece.element_count, process_rank(), process_count()));
   out.element_ids = migrated_element_values(element_ids, part_of, &out.bytes_sent);
+  out.facet_ids = migrated_facet_values(piece.part, piece.facet_ids, part_of, &out.bytes_sent);
   out.part = migrate_part(piece.part, part_of, &out.bytes_sent);
   piece = {};
   out.metrics = metrics_by_global_id<D>(out.part.global_ids, held_first, held, out.bytes_sent);

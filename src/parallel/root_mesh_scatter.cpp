@@ -20,7 +20,13 @@ ScatteredPart<D> scatter_from_root(Mesh<D> mesh, std::vector<SymMat<D>> metrics,
   std::vector<Index> element_ids(part_of.size());
   std::iota(element_ids.begin(), element_ids.end(), Index{0});
   out.element_ids = migrated_element_values(element_ids, part_of, &out.bytes_sent);
-  out.part = migrate_part(process_rank() == 0 ? whole_mesh_part(std::move(mesh)) : MeshPart<D>{}, part_of, &out.bytes_sent);
+  {  // (rank 0's whole mesh freed once its elements have left)
+    const MeshPart<D> whole = process_rank() == 0 ? whole_mesh_part(std::move(mesh)) : MeshPart<D>{};
+    std::vector<Index> facet_ids(static_cast<std::size_t>(whole.mesh.facet_count()));
+    std::iota(facet_ids.begin(), facet_ids.end(), Index{0});
+    out.facet_ids = migrated_facet_values(whole, facet_ids, part_of, &out.bytes_sent);
+    out.part = migrate_part(whole, part_of, &out.bytes_sent);
+  }
   out.metrics = metrics_by_global_id<D>(out.part.global_ids, 0, metrics, out.bytes_sent);
   out.seconds = max_over_processes(seconds_since(start));
   return out;

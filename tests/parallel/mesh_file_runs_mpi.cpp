@@ -7,8 +7,9 @@
 // - Scattered over the processes (element k to process (7k + k/5) mod N, so that parts touch at
 //   many vertices, edges and lines), the file read back must be the mesh entity by entity, with its
 //   vertices in order, its elements part after part in rank order, and each P2 node once; given
-//   each element's id in the mesh as the element order, the file's elements are the mesh's in order
-//   (also for a cube of more elements than a window of that order's messages).
+//   each element's and facet's id in the mesh as the orders, the file's elements and facets are the
+//   mesh's in order, with its facet tags (also for a cube of more elements than a window of that
+//   order's messages).
 // Exit code 0 when all holds on every process, 1 otherwise.
 #include <filesystem>
 #include <fstream>
@@ -21,6 +22,7 @@
 #include "io/mesh_file.hpp"
 #include "mpi_test_main.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/entity_tags.hpp"
 #include "parallel/mesh_file_runs.hpp"
 #include "parallel/part_migration.hpp"
 #include "part_description.hpp"
@@ -94,26 +96,38 @@ bool same_mesh_read_back(const Mesh<D>& mesh, const std::string& directory, cons
   return ok;
 }
 
-// Scattered, written with the mesh's element order (each element's id carried through the
-// migration): the file's elements are the mesh's, in the mesh's order.
+// Scattered, written with the mesh's element and facet orders (each element's and facet's id
+// carried through the migration): the file's elements and facets are the mesh's, in the mesh's
+// order, with the mesh's facet tags.
 template <int D>
-bool elements_in_mesh_order(const Mesh<D>& mesh, const std::string& directory, const std::string& name) {
+bool entities_in_mesh_order(const Mesh<D>& mesh, const std::string& directory, const std::string& name) {
   std::vector<int> destination;
-  std::vector<Index> ids;
-  if (process_rank() == 0)
-    for (Index k = 0; k < mesh.element_count(); ++k) destination.push_back(spread(k)), ids.push_back(k);
-  const std::vector<Index> element_order = migrated_element_values(ids, destination);
-  const MeshPart<D> part = scattered(mesh, spread);
+  std::vector<Index> element_ids, facet_ids;
+  MeshPart<D> whole;
+  if (process_rank() == 0) {
+    for (Index k = 0; k < mesh.element_count(); ++k) destination.push_back(spread(k)), element_ids.push_back(k);
+    for (Index f = 0; f < mesh.facet_count(); ++f) facet_ids.push_back(f);
+    whole = whole_mesh_part(Mesh<D>(mesh));
+  }
+  const std::vector<Index> element_order = migrated_element_values(element_ids, destination);
+  const std::vector<Index> facet_order = migrated_facet_values(whole, facet_ids, destination);
+  const MeshPart<D> part = migrate_part(whole, destination);
   bool ok = true;
   for (const bool binary : {true, false}) {
     const std::string path = directory + "/" + name + "-ordered" + (binary ? ".meshb" : ".mesh");
-    write_mesh_runs(path, part, binary, 0, element_order);
+    write_mesh_runs(path, part, binary, 0, element_order, facet_order);
     if (process_rank() != 0) continue;
     const Mesh<D> got = std::get<Mesh<D>>(read_mesh_file(path).mesh);
-    if (got.element_count() != mesh.element_count()) ok = fail(name + " (" + path + "): not the mesh's element count");
+    const std::string what = name + " (" + path + ")";
+    if (got.element_count() != mesh.element_count() || got.facet_count() != mesh.facet_count()) ok = fail(what + ": not the mesh's counts");
     for (Index k = 0; ok && k < got.element_count(); ++k)
       if (got.element(k) != mesh.element(k) || got.element_ref(k) != mesh.element_ref(k))
-        ok = fail(name + " (" + path + "): element " + std::to_string(k + 1) + " is not the mesh's");
+        ok = fail(what + ": element " + std::to_string(k + 1) + " is not the mesh's");
+    for (Index f = 0; ok && f < got.facet_count(); ++f)
+      if (got.facet(f) != mesh.facet(f) || got.facet_ref(f) != mesh.facet_ref(f))
+        ok = fail(what + ": facet " + std::to_string(f + 1) + " is not the mesh's");
+    if (ok && (required_facets(got) != required_facets(mesh) || got.ridges() != mesh.ridges()))
+      ok = fail(what + ": the facets' tags are not the mesh's");
   }
   return ok;
 }
@@ -121,7 +135,7 @@ bool elements_in_mesh_order(const Mesh<D>& mesh, const std::string& directory, c
 template <int D>
 bool check(const Mesh<D>& mesh, const std::string& directory, const std::string& name) {
   return same_bytes_as_serial(mesh, directory, name) & same_mesh_read_back(mesh, directory, name) &
-         elements_in_mesh_order(mesh, directory, name);
+         entities_in_mesh_order(mesh, directory, name);
 }
 
 }  // namespace
@@ -142,7 +156,7 @@ int main(int argc, char** argv) {
       ok = hocav::check(hocav::curved(each), directory, std::string(name) + "-p2") & ok;
     }
     // More elements than a window of an element order's messages (65,536): written window by window.
-    ok = hocav::elements_in_mesh_order(hocav::generate_cube(24), directory, "large-cube") & ok;
+    ok = hocav::entities_in_mesh_order(hocav::generate_cube(24), directory, "large-cube") & ok;
     hocav::all_gather_value(0);
     if (hocav::process_rank() == 0) std::filesystem::remove_all(directory);
     return ok;

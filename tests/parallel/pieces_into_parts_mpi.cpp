@@ -7,7 +7,9 @@
 //    point and its own metric, the metric rows read by other processes);
 // 2. a file with every element inverted is reoriented (every part's elements positive) and a file
 //    without its boundary facets gets them, each said once by rank 0 in the words, and with the
-//    counts, of the serial preparation of the whole mesh (prepare_input_mesh), nothing by the others.
+//    counts, of the serial preparation of the whole mesh (prepare_input_mesh), nothing by the others;
+//    the parts are those of the serially prepared mesh, their facet ids those the serial
+//    preparation gives the facets it makes.
 // Exit code 0 when all holds on every process, 1 otherwise (with a message).
 #include <filesystem>
 #include <iostream>
@@ -87,11 +89,12 @@ bool check_preparation(const Mesh<D>& defective, const std::string& directory, c
   write_case(defective, mesh_path, metric_path);
   std::vector<std::string> said, expected;
   const ScatteredPart<D> parts = parts_of_files<D>(mesh_path, metric_path, said);
-  if (process_rank() == 0) {
-    Mesh<D> whole = std::get<Mesh<D>>(read_mesh_file(mesh_path).mesh);
-    prepare_input_mesh(whole, mesh_path, [&](const std::string& warning) { expected.push_back(warning); });
-    if (expected.empty()) return fail_scattered(name + ": the serial preparation says nothing: not a defective case");
-  }
+  Mesh<D> whole = std::get<Mesh<D>>(read_mesh_file(mesh_path).mesh);  // (on every process: a small case)
+  prepare_input_mesh(whole, mesh_path, [&](const std::string& warning) {
+    if (process_rank() == 0) expected.push_back(warning);
+  });
+  if (!check_scattered_part(whole, parts, name)) return false;
+  if (process_rank() == 0 && expected.empty()) return fail_scattered(name + ": the serial preparation says nothing: not a defective case");
   for (Index k = 0; k < parts.part.mesh.element_count(); ++k)
     if (!(element_measure(parts.part.mesh, k) > 0)) return fail_scattered(name + ": an element of non-positive measure in a part");
   if (said != expected) {

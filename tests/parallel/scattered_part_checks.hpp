@@ -1,7 +1,8 @@
 // Checks of a mesh cut into parts with its metrics (a ScatteredPart: from rank 0, or from a file
 // read in pieces), shared by the MPI tests of both: every element of the mesh in exactly one part,
 // each part vertex the mesh vertex's point with its own metric (metric_of names its vertex), each
-// part element's id that of the mesh element with its vertices, and a P2 part's nodes the mesh's.
+// part element's id that of the mesh element with its vertices (and each facet's), and a P2 part's
+// nodes the mesh's.
 #pragma once
 
 #include <algorithm>
@@ -41,6 +42,15 @@ std::vector<std::array<Index, D + 1>> elements_by_ids(const Mesh<D>& mesh, const
   return out;
 }
 
+// A facet by its sorted global vertex ids (`ids` empty: the mesh's own).
+template <std::size_t N>
+std::array<Index, N> facet_by_ids(std::array<Index, N> facet, const std::vector<Index>& ids) {
+  if (!ids.empty())
+    for (Index& v : facet) v = ids[static_cast<std::size_t>(v)];
+  std::sort(facet.begin(), facet.end());
+  return facet;
+}
+
 // Collective (every process calls it, with the same `mesh`, before any early return): whether
 // `scattered` is a part of `mesh` as the file header says, `name` in each message.
 template <int D>
@@ -51,6 +61,7 @@ bool check_scattered_part(const Mesh<D>& mesh, const ScatteredPart<D>& scattered
                                                                                              elements_by_ids(part.mesh, part.global_ids))))
     gathered.insert(gathered.end(), each.begin(), each.end());
   std::sort(gathered.begin(), gathered.end());
+  const Index facet_ids_everywhere = sum_over_processes(static_cast<Index>(scattered.facet_ids.size()));
   if (part.mesh.element_count() == 0) return fail_scattered(name + ": an empty part");
   if (part.mesh.is_p2() != mesh.is_p2()) return fail_scattered(name + ": the part's order is not the mesh's");
   if (scattered.metrics.size() != static_cast<std::size_t>(part.mesh.vertex_count()))
@@ -69,6 +80,18 @@ bool check_scattered_part(const Mesh<D>& mesh, const ScatteredPart<D>& scattered
     if (id < 0 || id >= mesh.element_count() || own[k] != all[static_cast<std::size_t>(id)])
       return fail_scattered(name + ": an element whose id is another element's");
   }
+  for (std::size_t i = 0; i < scattered.facet_ids.size(); ++i) {  // (the part's facets but the interfaces', which come last)
+    const auto f = static_cast<Index>(i);
+    const Index id = scattered.facet_ids[i];
+    if (f >= part.mesh.facet_count() || part.mesh.facet_ref(f) == kInterfaceRef || id < 0 || id >= mesh.facet_count() ||
+        part.mesh.facet_ref(f) != mesh.facet_ref(id) ||
+        facet_by_ids(part.mesh.facet(f), part.global_ids) != facet_by_ids(mesh.facet(id), {}))
+      return fail_scattered(name + ": a facet whose id is another facet's");
+  }
+  Index own_facets = 0;
+  for (Index f = 0; f < part.mesh.facet_count(); ++f) own_facets += part.mesh.facet_ref(f) != kInterfaceRef;
+  if (facet_ids_everywhere != mesh.facet_count() || own_facets != static_cast<Index>(scattered.facet_ids.size()))
+    return fail_scattered(name + ": not a facet id per facet");
   if (mesh.is_p2())
     for (Index e = 0; e < part.mesh.edge_count(); ++e) {
       const auto& ends = part.mesh.edge_vertices(e);
