@@ -46,7 +46,7 @@ void read_sol_at_vertices(Reader& reader, SolutionFileContent& content, const So
 }
 
 template <class Reader>
-SolutionFileContent read_solution(Reader&& reader, const SolutionRowRun& run = {}) {
+SolutionFileContent read_solution(Reader&& reader, const SolutionRowRun& run) {
   SolutionFileContent content;
   bool found = false;
   while (reader.next_keyword()) {
@@ -119,9 +119,7 @@ Index SolutionField::count() const { return static_cast<Index>(values.size() / s
 
 Index SolutionRowRun::first_of(Index rows, int later) const { return slice_start(rows, index + later, count); }
 
-SolutionFileContent read_solution_file(const std::string& path) {
-  return gamma::is_binary_file(path) ? read_solution(gamma::BinaryKeywordReader(path)) : read_solution(gamma::TextKeywordReader(path));
-}
+SolutionFileContent read_solution_file(const std::string& path) { return read_solution_file_run(path, {}); }  // (one run: the whole)
 
 SolutionFileContent read_solution_file_run(const std::string& path, const SolutionRowRun& run) {
   return gamma::is_binary_file(path) ? read_solution(gamma::BinaryKeywordReader(path), run)
