@@ -141,6 +141,8 @@ std::vector<char> first_pass_region(const AdaptationMesh<D>& am, std::vector<cha
 
 }  // namespace
 
+bool changed_little(const AdaptationPass& pass) { return changes(pass) <= kConvergedChange * pass.vertices; }
+
 template <int D>
 AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                               const AdaptationSettings& settings) {
@@ -160,7 +162,7 @@ AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, 
     AdaptationPass& last = run.passes.back();
     last.window_open = window_open(limits);
     last.collapse_length_bound = limits.collapse_new_length;
-    run.converged = changes(last) <= kConvergedChange * last.vertices && !settling_progressed(run.passes);
+    run.converged = changed_little(last) && !settling_progressed(run.passes);
     if (!window_open(limits)) ++closed_passes;
     if (stalled(run.passes)) limits.collapse_new_length = limits.split_length;
     if (settings.progress) settings.progress(pass, settings.max_passes);

@@ -72,6 +72,11 @@ struct AdaptationRun {
   Index caps_removed = 0;  // after the last pass (remove_boundary_caps)
 };
 
+// Whether `pass` split and collapsed so few edges (fewer than 0.25% of its vertices) that the loop
+// stops after it, unless the boundary's settling still got further in it (docs/adaptation.md §The
+// loop, "Stopping").
+bool changed_little(const AdaptationPass& pass);
+
 // Adapts `mesh` (P1, with its topology) to `metric`; new boundary vertices go on `geometry` (none:
 // on the straight boundary). The mesh is compact on return.
 template <int D>

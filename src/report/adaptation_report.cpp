@@ -65,7 +65,12 @@ std::string non_convergence_summary(const AdaptationReport& report) {
   text << "not converged after " << report.run.passes.size() << " passes (the last split " << last.splits.done << " and collapsed "
        << last.collapses.done << " edges";
   if (report.measures.edge_count > 0) text << "; " << static_cast<int>(1000 * report.measures.unit_share) / 10.0 << "% of edges unit";
-  text << "); raise --iterations, or check that the metric asks for sizes the geometry allows";
+  text << ")";
+  if (changed_little(last))  // then only the settling kept the loop going
+    text << ": few enough to stop, but the boundary's settling was still getting further (" << last.settled
+         << " vertices put on the geometry, " << last.partly_settled << " left part of the way); raise --iterations to let it finish";
+  else
+    text << "; raise --iterations, or check that the metric asks for sizes the geometry allows";
   return text.str();
 }
 
