@@ -85,13 +85,16 @@ void declare_convert_files(OutputSet& outputs, const ConvertOptions& options) {
 }
 
 // Every process reads its piece of the mesh and writes it in runs: no process holds the whole mesh.
-// The output's vertices keep their numbers and its elements their order; its facets and feature
-// lines come part by part. Returns the summary line.
+// The output's vertices keep their numbers, and its elements (part after part), facets and feature
+// lines their order. Returns the summary line.
 template <int D>
 std::string convert_in_pieces(const ConvertOptions& options) {
   const MeshFilePiece<D> piece = read_mesh_file_piece<D>(options.input);
-  const MeshFileCounts counts = write_mesh_runs(options.output, piece.part, file_extension(options.output) == ".meshb",
-                                                options.gamma_version);
+  const auto file_facets = static_cast<std::size_t>(std::find(piece.facet_ids.begin(), piece.facet_ids.end(), kNoIndex) -
+                                                    piece.facet_ids.begin());
+  const MeshFileCounts counts = write_mesh_runs(
+      options.output, piece.part, file_extension(options.output) == ".meshb", options.gamma_version,
+      {{}, std::span(piece.facet_ids).first(file_facets), piece.line_ids});  // (the interface facets come last)
   return "wrote " + options.output + ": " + p1_mesh_summary(D, counts.vertices, counts.elements, counts.facets) + " (in " +
          std::to_string(process_count()) + " pieces)\n";
 }

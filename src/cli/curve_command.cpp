@@ -70,7 +70,7 @@ bool reads_input_in_pieces(const CurveOptions& options) {
 }
 
 // Every process: its part curved on the geometry of the parts' boundary, and written in runs with
-// the input's elements and facets in their order (docs/distributed.md §Curving in the parts).
+// the input's elements, facets and feature lines in their order (docs/distributed.md §Curving in the parts).
 template <int D>
 CurvingInParts curve_parts(ScatteredPart<D> scattered, const CurveOptions& options) {
   const PartsGeometryMaker<D> geometry = [choice = boundary_choice_named(options.surface)](const Mesh<D>& boundary) {
@@ -79,9 +79,9 @@ CurvingInParts curve_parts(ScatteredPart<D> scattered, const CurveOptions& optio
   CurvingInParts curving = curve_in_parts(scattered.part, std::move(scattered.metrics), geometry, curving_options(options), false);
   curving.rounds[0].bytes_sent += sum_over_processes(scattered.bytes_sent);
   curving.rounds[0].seconds += scattered.seconds;
-  // (The curving keeps the part's elements and facets in their order.)
+  // (The curving keeps the part's elements, facets and lines in their order.)
   count_curved_output(curving.report, write_mesh_runs(options.output, scattered.part, file_extension(options.output) == ".meshb", 0,
-                                                      scattered.element_ids, scattered.facet_ids));
+                                                      {scattered.element_ids, scattered.facet_ids, scattered.line_ids}));
   return curving;
 }
 

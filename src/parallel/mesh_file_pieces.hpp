@@ -27,6 +27,7 @@ struct MeshFilePiece {
   MeshPart<D> part;
   Index vertex_count = 0, element_count = 0, facet_count = 0;  // the file's
   std::vector<Index> facet_ids;                                // per facet of the part, its file id (kNoIndex: an interface facet)
+  std::vector<Index> line_ids;                                 // per feature line of the part (3D), its file id
 };
 
 template <int D>

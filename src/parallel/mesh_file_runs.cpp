@@ -37,25 +37,26 @@ struct VertexNumber {
   std::int32_t shared;
 };
 
-// An edge (P2 node) or a feature line that several parts may hold, on its way to the process its
-// ends' global ids hash to.
-template <int D>
-struct SharedEdge {
-  FaceKey<2> key;             // the sorted global ids of its ends
-  std::array<Index, 2> ends;  // a line's ends by file number, in its order
-  Vec<D> node;                // an edge's P2 node
-  Index node_number;          // a P2 line's node, by file number
-  int ref;                    // a line's
-  char flags;                 // a line's kRidgeFlag, kRequiredFlag
-};
-
-// An element or facet on its way to the process of its run of places in the file (an order's).
+// An element, facet or line on its way to the process of its run of places in the file (an
+// order's).
 template <std::size_t M>
 struct PlacedRow {
   Index place;
   int ref;
-  char flags;                    // a facet's kRidgeFlag, kRequiredFlag
-  std::array<Index, M> numbers;  // its vertices' file numbers, then its nodes' (P2)
+  char flags;                    // a facet's or line's kRidgeFlag, kRequiredFlag
+  std::array<Index, M> numbers;  // its vertices' file numbers, then its nodes' (P2; kNoIndex for P1)
+};
+
+// A line's row: its ends' file numbers in its order, then its P2 node's.
+using LineRow = PlacedRow<3>;
+
+// An edge (P2 node) or a feature line that several parts may hold, on its way to the process its
+// ends' global ids hash to.
+template <int D>
+struct SharedEdge {
+  FaceKey<2> key;  // the sorted global ids of its ends
+  Vec<D> node;     // an edge's P2 node
+  LineRow line;    // a line's row (its place kNoIndex without a line order)
 };
 
 // Where an arrived record lies: its sender and its place in the sender's message.
@@ -139,13 +140,18 @@ struct Keyword {
 template <int D>
 class RunsWriter {
  public:
-  RunsWriter(const std::string& path, const MeshPart<D>& part, bool binary, std::span<const Index> element_order,
-             std::span<const Index> facet_order)
-      : path_(path), part_(part), mesh_(part.mesh), binary_(binary), element_order_(element_order), facet_order_(facet_order) {
+  RunsWriter(const std::string& path, const MeshPart<D>& part, bool binary, const EntityOrders& orders)
+      : path_(path),
+        part_(part),
+        mesh_(part.mesh),
+        binary_(binary),
+        element_order_(orders.elements),
+        facet_order_(orders.facets),
+        line_order_(orders.lines) {
     if (part.global_ids.size() != static_cast<std::size_t>(mesh_.vertex_count()) ||
         part.pinned.size() != static_cast<std::size_t>(mesh_.vertex_count()) || !mesh_.is_compact())
       throw std::logic_error("write_mesh_runs: a part without global ids or pinned flags, or not compact");
-    if (!element_order.empty() && element_order.size() != static_cast<std::size_t>(mesh_.element_count()))
+    if (!element_order_.empty() && element_order_.size() != static_cast<std::size_t>(mesh_.element_count()))
       throw std::logic_error("write_mesh_runs: an element order that is not one place per element");
   }
 
@@ -244,7 +250,7 @@ class RunsWriter {
       }
       const FaceKey<2> key = edge_key(a, b);
       const auto to = static_cast<std::size_t>(meeting_process<2>(key, process_count()));
-      outgoing[to].push_back({key, {}, mesh_.edge_node(e), kNoIndex, 0, 0});
+      outgoing[to].push_back({key, mesh_.edge_node(e), {}});
       sent[to].push_back(e);
     }
     const std::vector<std::vector<SharedEdge<D>>> arrived = exchange_values(outgoing);
@@ -335,39 +341,52 @@ class RunsWriter {
   }
 
   // 3D feature lines: a line with both ends shared may lie in several parts and goes to the process
-  // its ends hash to, which writes it once (the first part's, in rank order), after that process's
-  // other lines; their ridge and required tags go with them.
+  // its ends hash to, which keeps it once (the first part's, in rank order); every other line is its
+  // part's own. Without a line order each process writes its own lines, then those it kept; with
+  // one (per line of the part, its place), each line goes on to the process of its run of places.
+  // Their ridge and required tags go with them.
   void encode_lines() {
     const EntityTags<D> tags(mesh_);
-    lines_ = records();
+    const bool ordered = sum_over_processes(static_cast<int>(!line_order_.empty())) > 0;
+    if (ordered && line_order_.size() != static_cast<std::size_t>(mesh_.line_count()))
+      throw std::logic_error("write_mesh_runs: a line order that is not one place per line");
+    std::vector<LineRow> rows;  // the lines this process writes or places
     std::vector<std::vector<SharedEdge<D>>> outgoing(static_cast<std::size_t>(process_count()));
-    std::vector<char> flags;  // per line written here, in order
     for (Index l = 0; l < mesh_.line_count(); ++l) {
       const auto [a, b] = mesh_.line(l);
-      const char line_flags = static_cast<char>((tags.ridge_line[l] ? kRidgeFlag : 0) | (tags.required_line[l] ? kRequiredFlag : 0));
+      const char flags = static_cast<char>((tags.ridge_line[l] ? kRidgeFlag : 0) | (tags.required_line[l] ? kRequiredFlag : 0));
+      const LineRow row{ordered ? line_order_[static_cast<std::size_t>(l)] : kNoIndex, mesh_.line_ref(l), flags,
+                        simplex_numbers(mesh_.line(l))};
       if (!shared_edge(a, b)) {
-        write_simplex(lines_, mesh_.line(l), mesh_.line_ref(l));
-        flags.push_back(line_flags);
+        rows.push_back(row);
         continue;
       }
       const FaceKey<2> key = edge_key(a, b);
-      const Index node = mesh_.is_p2() ? node_number_[mesh_.find_edge(a, b)] : kNoIndex;
-      outgoing[static_cast<std::size_t>(meeting_process<2>(key, process_count()))].push_back(
-          {key, {number_[a], number_[b]}, {}, node, mesh_.line_ref(l), line_flags});
+      outgoing[static_cast<std::size_t>(meeting_process<2>(key, process_count()))].push_back({key, {}, row});
     }
     const std::vector<std::vector<SharedEdge<D>>> arrived = exchange_values(outgoing);
     const ArrivalGroups groups = grouped(arrived, [](const SharedEdge<D>& r) { return r.key; });
     for (std::size_t g = 0; g < groups.count(); ++g) {
       const Arrival head = groups.order[groups.starts[g]];
-      const SharedEdge<D>& line = arrived[static_cast<std::size_t>(head.from)][head.at];
-      for (Index end : line.ends) lines_.write_integer(std::int64_t{end} + 1);
-      if (line.node_number != kNoIndex) lines_.write_integer(std::int64_t{line.node_number} + 1);
-      lines_.write_integer(line.ref);
-      lines_.end_record();
-      flags.push_back(line.flags);
+      rows.push_back(arrived[static_cast<std::size_t>(head.from)][head.at].line);
     }
-    const Offset offset = offset_of(static_cast<Index>(flags.size()));
+    const Offset offset = offset_of(static_cast<Index>(rows.size()));
     counts_.lines = offset.total;
+    std::vector<char> flags;  // per line written here, in order
+    if (ordered) {
+      std::vector<Index> places;
+      for (const LineRow& row : rows) places.push_back(row.place);
+      lines_ = std::move(encode_in_order<3>(places, offset.total, std::max<Index>(offset.total, 1), flags, [&](std::size_t i) {
+                           return rows[i];
+                         }).front());
+      write_tags(flags, {slice_start(offset.total, process_rank(), process_count()), offset.total}, ridges_, required_edges_);
+      return;
+    }
+    lines_ = records();
+    for (const LineRow& row : rows) {
+      write_numbers(lines_, row.numbers, row.ref);
+      flags.push_back(row.flags);
+    }
     write_tags(flags, offset, ridges_, required_edges_);
   }
 
@@ -479,7 +498,7 @@ class RunsWriter {
   const MeshPart<D>& part_;
   const Mesh<D>& mesh_;
   bool binary_;
-  std::span<const Index> element_order_, facet_order_;
+  std::span<const Index> element_order_, facet_order_, line_order_;
   int version_ = 0;
   MeshFileCounts counts_;
   std::vector<Index> number_;                 // per part vertex, its file number (from 0)
@@ -553,12 +572,11 @@ void RunsWriter<D>::write_keywords(const std::vector<Keyword>& keywords) {
 }
 
 template <int D>
-MeshFileCounts write_mesh_runs(const std::string& path, const MeshPart<D>& part, bool binary, int version,
-                               std::span<const Index> element_order, std::span<const Index> facet_order) {
-  return RunsWriter<D>(path, part, binary, element_order, facet_order).write(version);
+MeshFileCounts write_mesh_runs(const std::string& path, const MeshPart<D>& part, bool binary, int version, const EntityOrders& orders) {
+  return RunsWriter<D>(path, part, binary, orders).write(version);
 }
 
-template MeshFileCounts write_mesh_runs(const std::string&, const MeshPart<2>&, bool, int, std::span<const Index>, std::span<const Index>);
-template MeshFileCounts write_mesh_runs(const std::string&, const MeshPart<3>&, bool, int, std::span<const Index>, std::span<const Index>);
+template MeshFileCounts write_mesh_runs(const std::string&, const MeshPart<2>&, bool, int, const EntityOrders&);
+template MeshFileCounts write_mesh_runs(const std::string&, const MeshPart<3>&, bool, int, const EntityOrders&);
 
 }  // namespace hocav

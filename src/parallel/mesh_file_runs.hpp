@@ -17,6 +17,14 @@ struct MeshFileCounts {
   Index vertices = 0, nodes = 0, elements = 0, facets = 0, lines = 0;  // nodes: a P2 file's, beyond its vertices
 };
 
+// The order in which a mesh file written in runs puts a part's entities: per element, per facet of
+// the part but its interface facets (in order), per feature line, its place among the file's; over
+// every part, each a permutation of the places (a line several parts hold has one place), such as
+// an input's ids. Empty: part after part.
+struct EntityOrders {
+  std::span<const Index> elements, facets, lines;
+};
+
 // Every process at once: the Gamma file at `path` (.meshb when `binary`, else .mesh; `version` as
 // write_gamma_mesh takes it) of the distributed mesh whose parts the processes hold. Each part is
 // compact, P1 or P2 as every other, with global vertex ids (MeshPart::global_ids) and pinned flags;
@@ -25,11 +33,9 @@ struct MeshFileCounts {
 // - the vertices in the order of their global ids, numbered from 1 without gaps; a P2 mesh's nodes
 //   after them, those of each process's edges in its edge table's order, rank after rank, with the
 //   edges several parts hold written once;
-// - the feature lines (3D) once each; the facets (but the interfaces') and the elements part by
-//   part in rank order or, when `facet_order` or `element_order` is given (per facet of the part
-//   but its interface facets, in order, or per element: its place among the file's, together a
-//   permutation of the places, such as an input's ids), in that order, each entity written by the
-//   process of its run of places;
+// - the feature lines (3D) once each, the facets (but the interfaces') and the elements part by
+//   part in rank order, or each kind in its order when `orders` gives one, each entity then written
+//   by the process of its run of places;
 // - the corners, the ridges, the vertices required by the mesh (kPinnedByMesh, not the interfaces'),
 //   and the required edges and triangles.
 // One process holding a whole mesh (whole_mesh_part, the others empty) writes write_gamma_mesh's file
@@ -39,6 +45,6 @@ struct MeshFileCounts {
 // edge different nodes, the places are no permutation, or the file cannot be written.
 template <int D>
 MeshFileCounts write_mesh_runs(const std::string& path, const MeshPart<D>& part, bool binary, int version = 0,
-                               std::span<const Index> element_order = {}, std::span<const Index> facet_order = {});
+                               const EntityOrders& orders = {});
 
 }  // namespace hocav

@@ -8,6 +8,7 @@
 #include "io/node_metrics.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_graph.hpp"
+#include "parallel/line_ids_by_ends.hpp"
 #include "parallel/metrics_by_global_id.hpp"
 #include "parallel/part_migration.hpp"
 
@@ -26,8 +27,10 @@ ScatteredPart<D> parts_of_pieces(MeshFilePiece<D> piece, const std::string& metr
   std::iota(element_ids.begin(), element_ids.end(), slice_start(piece.element_count, process_rank(), process_count()));
   out.element_ids = migrated_element_values(element_ids, part_of, &out.bytes_sent);
   out.facet_ids = migrated_facet_values(piece.part, piece.facet_ids, part_of, &out.bytes_sent);
+  const std::vector<KnownLine> known = known_lines(piece.part, piece.line_ids);
   out.part = migrate_part(piece.part, part_of, &out.bytes_sent);
   piece = {};
+  out.line_ids = line_ids_by_ends(out.part, known);
   out.metrics = metrics_by_global_id<D>(out.part.global_ids, held_first, held, out.bytes_sent);
   out.seconds = max_over_processes(seconds_since(start));
   return out;

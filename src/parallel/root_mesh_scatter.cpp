@@ -5,6 +5,7 @@
 
 #include "base/stopwatch.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/line_ids_by_ends.hpp"
 #include "parallel/metrics_by_global_id.hpp"
 #include "parallel/part_migration.hpp"
 #include "parallel/root_mesh_partition.hpp"
@@ -25,7 +26,11 @@ ScatteredPart<D> scatter_from_root(Mesh<D> mesh, std::vector<SymMat<D>> metrics,
     std::vector<Index> facet_ids(static_cast<std::size_t>(whole.mesh.facet_count()));
     std::iota(facet_ids.begin(), facet_ids.end(), Index{0});
     out.facet_ids = migrated_facet_values(whole, facet_ids, part_of, &out.bytes_sent);
+    std::vector<Index> line_ids(static_cast<std::size_t>(whole.mesh.line_count()));
+    std::iota(line_ids.begin(), line_ids.end(), Index{0});
+    const std::vector<KnownLine> known = known_lines(whole, line_ids);
     out.part = migrate_part(whole, part_of, &out.bytes_sent);
+    out.line_ids = line_ids_by_ends(out.part, known);
   }
   out.metrics = metrics_by_global_id<D>(out.part.global_ids, 0, metrics, out.bytes_sent);
   out.seconds = max_over_processes(seconds_since(start));

@@ -18,6 +18,7 @@ struct ScatteredPart {
   std::vector<SymMat<D>> metrics;  // per vertex of the part
   std::vector<Index> element_ids;  // per element of the part, its id in the mesh (its place in the input's element order)
   std::vector<Index> facet_ids;    // per facet of the part but the interface facets (which come last), its id in the mesh
+  std::vector<Index> line_ids;     // per feature line of the part (3D), its id in the mesh
   long long bytes_sent = 0;        // by this process
   double seconds = 0;              // the slowest process's
 };

@@ -10,7 +10,7 @@ curve themselves and write the file in runs (§Curving from pieces, §Curving in
 .msh input rank 0 reads the whole and scatters it (on 2 processes); with a .vtu rank 0 gathers the
 curved mesh (§Curving; once per case, on 2 processes): the output is
 consistent, P2, certified (every element's min normalized Jacobian above the floor, as `hocav stats`
-measures it), has the serial run's P1 mesh (its vertices, elements and facets in their order) and
+measures it), has the serial run's P1 mesh (its vertices, elements, facets and feature lines in their order) and
 refs; its gain and mean normalized Jacobian lie near the serial run's; the second round
 curved the first round's interfaces, a third (gathered, in one part) the vertices the second froze
 again, if any, and the rounds together reinserted each volume vertex once (the serial run's count of
@@ -68,8 +68,8 @@ def straight_boundary_edges(hocav, work, name):
 
 
 def p1_mesh(hocav, work, name):
-    """A P2 .meshb's P1 mesh: its vertices, and its elements and facets (vertex ids as a set, ref), in
-    order."""
+    """A P2 .meshb's P1 mesh: its vertices, and its elements, facets and (3D) feature lines (vertex ids
+    as a set, ref), in order."""
     run([hocav, "convert", name + ".meshb", name + ".p1.mesh", "--order", "1"], work)
     mesh = keywords(os.path.join(work, name + ".p1.mesh"))
     out = {"Vertices": mesh["Vertices"]}

@@ -7,14 +7,15 @@
 // - Scattered over the processes (element k to process (7k + k/5) mod N, so that parts touch at
 //   many vertices, edges and lines), the file read back must be the mesh entity by entity, with its
 //   vertices in order, its elements part after part in rank order, and each P2 node once; given
-//   each element's and facet's id in the mesh as the orders, the file's elements and facets are the
-//   mesh's in order, with its facet tags (also for a cube of more elements than a window of that
-//   order's messages).
+//   each element's, facet's and line's id in the mesh as the orders (the lines' found by their ends
+//   after the migration), the file's elements, facets and lines are the mesh's in order, with their
+//   tags (also for a cube of more elements than a window of that order's messages).
 // Exit code 0 when all holds on every process, 1 otherwise.
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <numeric>
 #include <string>
 
 #include "cases/structured.hpp"
@@ -23,6 +24,7 @@
 #include "mpi_test_main.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/entity_tags.hpp"
+#include "parallel/line_ids_by_ends.hpp"
 #include "parallel/mesh_file_runs.hpp"
 #include "parallel/part_migration.hpp"
 #include "part_description.hpp"
@@ -96,9 +98,9 @@ bool same_mesh_read_back(const Mesh<D>& mesh, const std::string& directory, cons
   return ok;
 }
 
-// Scattered, written with the mesh's element and facet orders (each element's and facet's id
-// carried through the migration): the file's elements and facets are the mesh's, in the mesh's
-// order, with the mesh's facet tags.
+// Scattered, written with the mesh's element, facet and line orders (each element's and facet's id
+// carried through the migration, each line's found by its ends): the file's elements, facets and
+// lines are the mesh's, in the mesh's order, with the mesh's tags.
 template <int D>
 bool entities_in_mesh_order(const Mesh<D>& mesh, const std::string& directory, const std::string& name) {
   std::vector<int> destination;
@@ -111,11 +113,15 @@ bool entities_in_mesh_order(const Mesh<D>& mesh, const std::string& directory, c
   }
   const std::vector<Index> element_order = migrated_element_values(element_ids, destination);
   const std::vector<Index> facet_order = migrated_facet_values(whole, facet_ids, destination);
+  std::vector<Index> line_ids(static_cast<std::size_t>(whole.mesh.line_count()));
+  std::iota(line_ids.begin(), line_ids.end(), Index{0});
+  const std::vector<KnownLine> known = known_lines(whole, line_ids);
   const MeshPart<D> part = migrate_part(whole, destination);
+  const std::vector<Index> line_order = line_ids_by_ends(part, known);
   bool ok = true;
   for (const bool binary : {true, false}) {
     const std::string path = directory + "/" + name + "-ordered" + (binary ? ".meshb" : ".mesh");
-    write_mesh_runs(path, part, binary, 0, element_order, facet_order);
+    write_mesh_runs(path, part, binary, 0, {element_order, facet_order, line_order});
     if (process_rank() != 0) continue;
     const Mesh<D> got = std::get<Mesh<D>>(read_mesh_file(path).mesh);
     const std::string what = name + " (" + path + ")";
@@ -128,6 +134,11 @@ bool entities_in_mesh_order(const Mesh<D>& mesh, const std::string& directory, c
         ok = fail(what + ": facet " + std::to_string(f + 1) + " is not the mesh's");
     if (ok && (required_facets(got) != required_facets(mesh) || got.ridges() != mesh.ridges()))
       ok = fail(what + ": the facets' tags are not the mesh's");
+    if (got.line_count() != mesh.line_count()) ok = fail(what + ": not the mesh's lines");
+    for (Index l = 0; ok && l < got.line_count(); ++l)
+      if (got.line(l) != mesh.line(l) || got.line_ref(l) != mesh.line_ref(l))
+        ok = fail(what + ": line " + std::to_string(l + 1) + " is not the mesh's");
+    if (ok && got.required_edges() != mesh.required_edges()) ok = fail(what + ": the lines' tags are not the mesh's");
   }
   return ok;
 }

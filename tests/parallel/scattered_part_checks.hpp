@@ -1,8 +1,8 @@
 // Checks of a mesh cut into parts with its metrics (a ScatteredPart: from rank 0, or from a file
 // read in pieces), shared by the MPI tests of both: every element of the mesh in exactly one part,
 // each part vertex the mesh vertex's point with its own metric (metric_of names its vertex), each
-// part element's id that of the mesh element with its vertices (and each facet's), and a P2 part's
-// nodes the mesh's.
+// part element's id that of the mesh element with its vertices (and each facet's and feature
+// line's), and a P2 part's nodes the mesh's.
 #pragma once
 
 #include <algorithm>
@@ -92,6 +92,14 @@ bool check_scattered_part(const Mesh<D>& mesh, const ScatteredPart<D>& scattered
   for (Index f = 0; f < part.mesh.facet_count(); ++f) own_facets += part.mesh.facet_ref(f) != kInterfaceRef;
   if (facet_ids_everywhere != mesh.facet_count() || own_facets != static_cast<Index>(scattered.facet_ids.size()))
     return fail_scattered(name + ": not a facet id per facet");
+  if (scattered.line_ids.size() != static_cast<std::size_t>(part.mesh.line_count()))
+    return fail_scattered(name + ": not a line id per line");
+  for (Index l = 0; l < part.mesh.line_count(); ++l) {
+    const Index id = scattered.line_ids[static_cast<std::size_t>(l)];
+    if (id < 0 || id >= mesh.line_count() || part.mesh.line_ref(l) != mesh.line_ref(id) ||
+        facet_by_ids(part.mesh.line(l), part.global_ids) != facet_by_ids(mesh.line(id), {}))
+      return fail_scattered(name + ": a line whose id is another line's");
+  }
   if (mesh.is_p2())
     for (Index e = 0; e < part.mesh.edge_count(); ++e) {
       const auto& ends = part.mesh.edge_vertices(e);
