@@ -33,11 +33,6 @@ struct NodeTable {
 
 // The run of records a reader keeps of the large keywords (vertices, elements, facets): run `index`
 // of `count` runs of consecutive records of nearly equal length; every record by default.
-struct RecordSlice {
-  int index = 0, count = 1;
-  std::pair<Index, Index> of(Index records) const { return {slice_start(records, index, count), slice_start(records, index + 1, count)}; }
-};
-
 struct MeshRecords {
   std::vector<double> coordinates;  // `dimension` reals per kept file node
   std::vector<int> node_refs;
@@ -70,7 +65,7 @@ int read_ref(Reader& reader, Index entity) {
 }
 
 template <class Reader>
-void read_vertices(Reader& reader, MeshRecords& records, const RecordSlice& slice) {
+void read_vertices(Reader& reader, MeshRecords& records, const RecordRun& slice) {
   const int dimension = reader.dimension();
   if (dimension == 0) reader.fail("no Dimension before the vertices");
   const Index count = reader.read_count();
@@ -93,7 +88,7 @@ void read_vertices(Reader& reader, MeshRecords& records, const RecordSlice& slic
 }
 
 template <class Reader>
-void read_simplices(Reader& reader, const SimplexKeyword& keyword, NodeTable& table, const RecordSlice& slice) {
+void read_simplices(Reader& reader, const SimplexKeyword& keyword, NodeTable& table, const RecordRun& slice) {
   const Index count = reader.read_count();
   reader.expect_records(count, keyword.node_count + 1, 0);
   const auto [first, last] = slice.of(count);
@@ -136,7 +131,7 @@ void read_ordering(Reader& reader, const SimplexKeyword& keyword, std::vector<in
 // With a slice, the vertices, elements and facets are kept in that slice's run; the feature lines
 // (3D) and the tag lists whole.
 template <class Reader>
-MeshRecords read_records(Reader& reader, const RecordSlice& slice = {}) {
+MeshRecords read_records(Reader& reader, const RecordRun& slice = {}) {
   MeshRecords records;
   std::set<int> seen;
   while (reader.next_keyword()) {
@@ -152,8 +147,7 @@ MeshRecords read_records(Reader& reader, const RecordSlice& slice = {}) {
     }
     if (!seen.insert(code).second) reader.fail("keyword appears twice");
     if (simplex)
-      read_simplices(reader, *simplex, records.simplices[code],
-                     simplex->simplex_dimension + 1 >= reader.dimension() ? slice : RecordSlice{});
+      read_simplices(reader, *simplex, records.simplices[code], simplex->simplex_dimension + 1 >= reader.dimension() ? slice : RecordRun{});
     else if (ordered)
       read_ordering(reader, *ordered, records.orderings[code]);
     else if (code == gamma::kVertices)
@@ -285,7 +279,7 @@ MeshFileContent build_mesh(MeshRecords&& records, const std::string& path) {
 }
 
 template <class Reader>
-std::pair<int, MeshRecords> read_file(Reader&& reader, const RecordSlice& slice = {}) {
+std::pair<int, MeshRecords> read_file(Reader&& reader, const RecordRun& slice = {}) {
   MeshRecords records = read_records(reader, slice);
   if (reader.dimension() == 0) throw Error(reader.path() + ": Dimension: missing");
   return {reader.dimension(), std::move(records)};
@@ -406,18 +400,9 @@ MeshFileContent read_gamma_mesh(const std::string& path) {
   return dimension == 2 ? build_mesh<2>(std::move(records), path) : build_mesh<3>(std::move(records), path);
 }
 
-Index slice_start(Index total, int index, int count) { return static_cast<Index>(static_cast<std::int64_t>(total) * index / count); }
-
-int slice_holding(Index id, Index total, int count) {
-  int run = static_cast<int>(static_cast<std::int64_t>(id) * count / std::max<Index>(total, 1));
-  while (run + 1 < count && slice_start(total, run + 1, count) <= id) ++run;
-  while (run > 0 && slice_start(total, run, count) > id) --run;
-  return run;
-}
-
 template <int D>
 GammaMeshSlice<D> read_gamma_mesh_slice(const std::string& path, int index, int count) {
-  const RecordSlice slice{index, count};
+  const RecordRun slice{index, count};
   auto read = [&](auto&& reader) {
     if (index != 0) reader.silence_warnings();  // slice 0 warns for every slice
     return read_file(reader, slice);

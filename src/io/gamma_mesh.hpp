@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "io/mesh_file.hpp"
+#include "io/record_run.hpp"
 
 namespace hocav {
 
@@ -38,11 +39,6 @@ struct GammaMeshSlice {
   // facets in 2D, the lines in 3D); RequiredTriangles: ids of 3D facets.
   std::vector<Index> corners, ridges, required_vertices, required_edges, required_triangles;
 };
-
-// The first entity of run `index` of `count` runs of `total` entities, and the run that holds
-// entity `id`.
-Index slice_start(Index total, int index, int count);
-int slice_holding(Index id, Index total, int count);
 
 // Throws Error on a file of another Dimension, with P2 entities, or with an entity whose vertex is
 // out of range (naming the file, the keyword and the entity).

@@ -24,9 +24,9 @@ SolutionField read_metric_for_mesh(const std::string& metric_path, const MeshFil
   return rows;
 }
 
-SolutionField read_metric_run(const std::string& metric_path, int dimension, Index vertex_count, const SolutionRowRun& run) {
+SolutionField read_metric_run(const std::string& metric_path, int dimension, Index vertex_count, const RecordRun& run) {
   SolutionFileContent content = read_solution_file_run(metric_path, run);
-  const Index first = run.first_of(content.count);
+  const Index first = run.of(content.count).first;
   add_metric_of_sizes(content, metric_path, first);
   return checked_metric_field(content, metric_path, dimension, vertex_count, first);
 }

@@ -19,8 +19,8 @@ SolutionField read_metric_for_mesh(const std::string& metric_path, const MeshFil
 
 // The metric rows of `run` of the file given with a P1 Gamma mesh file of `dimension` and
 // `vertex_count` vertices (a mesh read in pieces), checked as read_metric_for_mesh checks the whole:
-// the file's rows from run.first_of(vertex_count), which are those vertices' metrics.
-SolutionField read_metric_run(const std::string& metric_path, int dimension, Index vertex_count, const SolutionRowRun& run);
+// the file's rows from run.of(vertex_count).first, which are those vertices' metrics.
+SolutionField read_metric_run(const std::string& metric_path, int dimension, Index vertex_count, const RecordRun& run);
 
 // The scalar field of a solution file given with a mesh file (the first scalar field, one finite
 // value per file node), at the mesh's vertices.

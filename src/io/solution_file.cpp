@@ -18,7 +18,7 @@ constexpr int kMaxFields = 1000;  // libMeshb's limit on the types of one keywor
 
 // Rows [first, last) of the file's are kept (all of them by default); content.count is the file's.
 template <class Reader>
-void read_sol_at_vertices(Reader& reader, SolutionFileContent& content, const SolutionRowRun& run) {
+void read_sol_at_vertices(Reader& reader, SolutionFileContent& content, const RecordRun& run) {
   if (reader.dimension() == 0) reader.fail("no Dimension before the solution");
   content.dimension = reader.dimension();
   content.count = reader.read_count();
@@ -32,7 +32,7 @@ void read_sol_at_vertices(Reader& reader, SolutionFileContent& content, const So
     reals_per_row += field.components();
   }
   reader.expect_records(content.count, 0, reals_per_row);
-  const Index first = run.first_of(content.count), last = run.first_of(content.count, 1);
+  const auto [first, last] = run.of(content.count);
   for (SolutionField& field : content.fields) field.values.reserve(reader.reserve_hint(last - first) * field.components());
   reader.skip_records(first, 0, reals_per_row);
   for (Index row = first; row < last; ++row)
@@ -46,7 +46,7 @@ void read_sol_at_vertices(Reader& reader, SolutionFileContent& content, const So
 }
 
 template <class Reader>
-SolutionFileContent read_solution(Reader&& reader, const SolutionRowRun& run) {
+SolutionFileContent read_solution(Reader&& reader, const RecordRun& run) {
   SolutionFileContent content;
   bool found = false;
   while (reader.next_keyword()) {
@@ -117,11 +117,9 @@ int SolutionField::components() const {
 
 Index SolutionField::count() const { return static_cast<Index>(values.size() / static_cast<std::size_t>(components())); }
 
-Index SolutionRowRun::first_of(Index rows, int later) const { return slice_start(rows, index + later, count); }
-
 SolutionFileContent read_solution_file(const std::string& path) { return read_solution_file_run(path, {}); }  // (one run: the whole)
 
-SolutionFileContent read_solution_file_run(const std::string& path, const SolutionRowRun& run) {
+SolutionFileContent read_solution_file_run(const std::string& path, const RecordRun& run) {
   return gamma::is_binary_file(path) ? read_solution(gamma::BinaryKeywordReader(path), run)
                                      : read_solution(gamma::TextKeywordReader(path), run);
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "base/index.hpp"
+#include "io/record_run.hpp"
 
 namespace hocav {
 
@@ -34,15 +35,10 @@ struct SolutionFileContent {
 // Reads a .sol/.solb file. Throws Error naming file, keyword and line/entity on malformed input.
 SolutionFileContent read_solution_file(const std::string& path);
 
-// Run `index` of `count` runs of a file's rows, cut as a mesh file's entities are (slice_start).
-struct SolutionRowRun {
-  int index = 0, count = 1;
-  Index first_of(Index rows, int later = 0) const;  // the first row of run index + later
-};
-
-// The rows of `run` only (a .solb is positioned past the others; a .sol is read through): the
-// content's count stays the file's; its fields hold rows run.first_of(count) onwards.
-SolutionFileContent read_solution_file_run(const std::string& path, const SolutionRowRun& run);
+// The rows of `run` only (a run of the file's rows, cut as a mesh file's entities are; a .solb is
+// positioned past the others, a .sol read through): the content's count stays the file's; its
+// fields hold rows run.of(count).first onwards.
+SolutionFileContent read_solution_file_run(const std::string& path, const RecordRun& run);
 
 // Writes a .sol/.solb file (all fields must have the same count); temporary name, then rename.
 // Binary version: 0 picks 3 (4 when counts need 64 bits).

@@ -5,6 +5,7 @@
 
 #include "base/error.hpp"
 #include "io/gamma_mesh.hpp"
+#include "io/record_run.hpp"
 #include "metric/implied_metric.hpp"
 #include "parallel/communicator.hpp"
 

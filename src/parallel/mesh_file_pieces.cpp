@@ -8,6 +8,7 @@
 #include "base/error.hpp"
 #include "io/gamma_keywords.hpp"
 #include "io/gamma_mesh.hpp"
+#include "io/record_run.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/face_key.hpp"
 #include "parallel/part_shipment.hpp"

@@ -10,6 +10,7 @@
 #include "io/gamma_keywords.hpp"
 #include "io/gamma_mesh.hpp"
 #include "io/output_set.hpp"
+#include "io/record_run.hpp"
 #include "mesh/simplex.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/entity_tags.hpp"

@@ -6,6 +6,7 @@
 
 #include "base/error.hpp"
 #include "io/gamma_mesh.hpp"
+#include "io/record_run.hpp"
 #include "mesh/inverted_input.hpp"
 #include "mesh/measure.hpp"
 #include "mesh/open_boundary.hpp"

@@ -6,6 +6,7 @@
 #include "base/stopwatch.hpp"
 #include "io/gamma_mesh.hpp"
 #include "io/node_metrics.hpp"
+#include "io/record_run.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_graph.hpp"
 #include "parallel/line_ids_by_ends.hpp"
@@ -17,8 +18,8 @@ namespace hocav {
 template <int D>
 ScatteredPart<D> parts_of_pieces(MeshFilePiece<D> piece, const std::string& metric_path, std::int64_t seed) {
   const auto start = std::chrono::steady_clock::now();
-  const SolutionRowRun run{process_rank(), process_count()};
-  const Index held_first = run.first_of(piece.vertex_count);
+  const RecordRun run{process_rank(), process_count()};
+  const Index held_first = run.of(piece.vertex_count).first;
   const std::vector<SymMat<D>> held = metrics_of_rows<D>(read_metric_run(metric_path, D, piece.vertex_count, run));
   ScatteredPart<D> out;
   const std::vector<double> loads(static_cast<std::size_t>(piece.part.mesh.element_count()), 1.0);
