@@ -392,6 +392,18 @@ std::vector<std::array<Index, N>> checked_entities(const NodeTable& table, Index
   return entities;
 }
 
+// Throws Error naming the first element of the run (the file's from `first`) that repeats a vertex,
+// in the words of the whole file's reader (mesh_assembly.cpp).
+template <std::size_t N>
+void refuse_repeated_vertices(const std::vector<std::array<Index, N>>& elements, Index first, const std::string& path) {
+  for (std::size_t k = 0; k < elements.size(); ++k)
+    for (std::size_t i = 0; i < N; ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (elements[k][i] == elements[k][j])
+          throw Error(path + ": " + gamma::keyword_name(gamma::simplex_keyword(static_cast<int>(N) - 1, 1).code) +
+                      ": repeats a vertex in element " + std::to_string(first + static_cast<Index>(k) + 1));
+}
+
 }  // namespace
 
 MeshFileContent read_gamma_mesh(const std::string& path) {
@@ -433,6 +445,7 @@ GammaMeshSlice<D> read_gamma_mesh_slice(const std::string& path, int index, int 
     total = table.total;
   };
   take(out.elements, out.element_refs, out.first_element, out.element_count);
+  refuse_repeated_vertices(out.elements, out.first_element, path);
   take(out.facets, out.facet_refs, out.first_facet, out.facet_count);
   if constexpr (D == 3) {
     Index first = 0, total = 0;

@@ -40,8 +40,9 @@ struct GammaMeshSlice {
   std::vector<Index> corners, ridges, required_vertices, required_edges, required_triangles;
 };
 
-// Throws Error on a file of another Dimension, with P2 entities, or with an entity whose vertex is
-// out of range (naming the file, the keyword and the entity).
+// Throws Error on a file of another Dimension, with P2 entities, with an entity whose vertex is out
+// of range, or with an element of the run that repeats a vertex (naming the file, the keyword and
+// the entity, as read_gamma_mesh does).
 template <int D>
 GammaMeshSlice<D> read_gamma_mesh_slice(const std::string& path, int index, int count);
 

@@ -37,7 +37,7 @@ void prepare_input_piece(MeshFilePiece<D>& piece, const std::string& path, const
   long long inverted = 0;
   Index bad = kNoIndex;
   for (Index k = 0; k < mesh.element_count(); ++k) {
-    const double measure = element_measure(mesh, k);  // 0 for an element that repeats a vertex
+    const double measure = element_measure(mesh, k);
     if (measure < 0) ++inverted;
     if (!(measure > 0) && bad == kNoIndex) bad = k;
   }

@@ -244,6 +244,28 @@ TEST(GammaMeshSlice, RefusesP2OutOfRangeAndOtherDimensions) {
     }
 }
 
+// An element that repeats a vertex: refused by the slice that holds it in the whole file reader's
+// words, and by no other.
+TEST(GammaMeshSlice, RefusesAnElementThatRepeatsAVertexAsTheWholeFileReaderDoes) {
+  const std::string bad = write_file("slice_repeats.mesh",
+                                     "MeshVersionFormatted 2\nDimension 2\nVertices\n4\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n"
+                                     "Triangles\n3\n1 2 3 0\n2 4 3 0\n2 4 2 0\nEnd\n");
+  std::string whole;
+  try {
+    read_gamma_mesh(bad);
+  } catch (const Error& error) {
+    whole = error.what();
+  }
+  EXPECT_EQ(whole, bad + ": Triangles: repeats a vertex in element 3");
+  for (int index : {0, 1, 2}) try {
+      read_gamma_mesh_slice<2>(bad, index, 3);
+      EXPECT_NE(index, 2) << "slice 2 holds triangle 3";
+    } catch (const Error& error) {
+      EXPECT_EQ(index, 2);
+      EXPECT_EQ(std::string(error.what()), whole);
+    }
+}
+
 TEST(GammaMesh, VersionOneKeepsOnlyFloatPrecision) {
   // The reason version 1 is compared to float precision above: a coordinate that needs a double
   // does not survive it, while it survives every later version.

@@ -111,8 +111,8 @@ def serial_error(hocav, work, args):
 
 
 def check_refusals(hocav, mpirun, work):
-    """The last element of the cubed shell inverted, then the last metric row made indefinite: both in
-    the last process's run, refused as the serial run refuses them."""
+    """The last element of the cubed shell inverted, then repeating a vertex, then the last metric row
+    made indefinite: each in the last process's run, refused as the serial run refuses it."""
     run([hocav, "convert", "cubed.meshb", "bad.mesh"], work)
     mesh = keywords(os.path.join(work, "bad.mesh"))
     last = mesh["Tetrahedra"][-1]
@@ -126,6 +126,13 @@ def check_refusals(hocav, mpirun, work):
     assert element and int(element.group(1)) == len(mesh["Tetrahedra"]), serial
     refused(mpirun, hocav, work, ["curve", "bad.mesh", "--metric", "bad.sol", "-o", "x.meshb"], "x.meshb",
             f"bad.mesh: inconsistent mesh: element {element.group(1)} has non-positive P1 measure")
+
+    with open(os.path.join(work, "bad.mesh"), "w") as file:  # the last element's first vertex repeated
+        file.write(text.replace(" ".join(last), " ".join((last[0], last[0]) + last[2:])))
+    serial = serial_error(hocav, work, ["curve", "bad.mesh", "--metric", "bad.sol", "-o", "x.meshb"])
+    words = serial.removeprefix("hocav: ")
+    assert words == f"bad.mesh: Tetrahedra: repeats a vertex in element {len(mesh['Tetrahedra'])}", serial
+    refused(mpirun, hocav, work, ["curve", "bad.mesh", "--metric", "bad.sol", "-o", "x.meshb"], "x.meshb", words)
 
     with open(os.path.join(work, "bad.sol")) as file:
         lines = file.read().rstrip().split("\n")
