@@ -18,6 +18,7 @@
 #include "io/gamma_keyword_writer.hpp"
 #include "io/gamma_keywords.hpp"
 #include "io/mesh_assembly.hpp"
+#include "mesh/simplex.hpp"
 
 namespace hocav {
 namespace {
@@ -397,11 +398,9 @@ std::vector<std::array<Index, N>> checked_entities(const NodeTable& table, Index
 template <std::size_t N>
 void refuse_repeated_vertices(const std::vector<std::array<Index, N>>& elements, Index first, const std::string& path) {
   for (std::size_t k = 0; k < elements.size(); ++k)
-    for (std::size_t i = 0; i < N; ++i)
-      for (std::size_t j = 0; j < i; ++j)
-        if (elements[k][i] == elements[k][j])
-          throw Error(path + ": " + gamma::keyword_name(gamma::simplex_keyword(static_cast<int>(N) - 1, 1).code) +
-                      ": repeats a vertex in element " + std::to_string(first + static_cast<Index>(k) + 1));
+    if (repeats_a_vertex(elements[k]))
+      throw Error(path + ": " + gamma::keyword_name(gamma::simplex_keyword(static_cast<int>(N) - 1, 1).code) +
+                  ": repeats a vertex in element " + std::to_string(first + static_cast<Index>(k) + 1));
 }
 
 }  // namespace

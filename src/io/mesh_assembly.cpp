@@ -3,6 +3,7 @@
 #include <string>
 
 #include "base/error.hpp"
+#include "mesh/simplex.hpp"
 
 namespace hocav {
 namespace {
@@ -37,9 +38,7 @@ class Assembler {
     for (std::size_t k = 0; k * element_size < raw_.element_nodes.size(); ++k) {
       typename Mesh<D>::Element element;
       for (int i = 0; i <= D; ++i) element[i] = vertex_of(raw_.element_nodes[k * element_size + i], raw_.element_keyword, k);
-      for (int i = 0; i <= D; ++i)
-        for (int j = 0; j < i; ++j)
-          if (element[i] == element[j]) fail(raw_.element_keyword, "repeats a vertex in element", k);
+      if (repeats_a_vertex(element)) fail(raw_.element_keyword, "repeats a vertex in element", k);
       mesh.add_element(element, raw_.element_refs[k]);
     }
     for (std::size_t f = 0; f * facet_size < raw_.facet_nodes.size(); ++f) {

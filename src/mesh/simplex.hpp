@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 
 namespace hocav {
 
@@ -41,6 +42,15 @@ constexpr const auto& face_vertices(int face) {
 template <int D>
 constexpr const std::array<int, 2>& edge_vertices(int edge) {
   return Simplex<D>::kEdgeLocalVertices[static_cast<std::size_t>(edge)];
+}
+
+// Whether an entity's vertex list names a vertex twice.
+template <typename Id, std::size_t N>
+bool repeats_a_vertex(const std::array<Id, N>& vertices) {
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (vertices[i] == vertices[j]) return true;
+  return false;
 }
 
 }  // namespace hocav

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include "base/error.hpp"
 #include "parallel/communicator.hpp"
@@ -26,28 +27,35 @@ std::vector<KnownLine> known_lines(const MeshPart<D>& part, const std::vector<In
 }
 
 template <int D>
-std::vector<Index> line_ids_by_ends(const MeshPart<D>& part, const std::vector<KnownLine>& known) {
-  std::vector<KnownLine> every;
-  for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(known))) {
-    const std::vector<KnownLine> from = values_of_bytes<KnownLine>(bytes);
-    every.insert(every.end(), from.begin(), from.end());
-  }
+std::vector<Index> line_ids_among(const MeshPart<D>& part, std::vector<KnownLine> lines) {
   const auto by_ends = [](const KnownLine& x, const KnownLine& y) { return x.ends < y.ends; };
-  std::sort(every.begin(), every.end(), by_ends);
+  std::sort(lines.begin(), lines.end(), by_ends);
   std::vector<Index> ids;
   for (Index l = 0; l < part.mesh.line_count(); ++l) {
     const KnownLine wanted{ends_of(part, l), kNoIndex};
-    const auto found = std::lower_bound(every.begin(), every.end(), wanted, by_ends);
-    if (found == every.end() || found->ends != wanted.ends)
-      throw Error("line ids: no process knows the line of vertices " + std::to_string(wanted.ends[0] + 1) + " and " +
+    const auto found = std::lower_bound(lines.begin(), lines.end(), wanted, by_ends);
+    if (found == lines.end() || found->ends != wanted.ends)
+      throw Error("line ids: no known line joins vertices " + std::to_string(wanted.ends[0] + 1) + " and " +
                   std::to_string(wanted.ends[1] + 1));
     ids.push_back(found->id);
   }
   return ids;
 }
 
+template <int D>
+std::vector<Index> line_ids_by_ends(const MeshPart<D>& part, const std::vector<KnownLine>& known) {
+  std::vector<KnownLine> every;
+  for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(known))) {
+    const std::vector<KnownLine> from = values_of_bytes<KnownLine>(bytes);
+    every.insert(every.end(), from.begin(), from.end());
+  }
+  return line_ids_among(part, std::move(every));
+}
+
 template std::vector<KnownLine> known_lines(const MeshPart<2>&, const std::vector<Index>&);
 template std::vector<KnownLine> known_lines(const MeshPart<3>&, const std::vector<Index>&);
+template std::vector<Index> line_ids_among(const MeshPart<2>&, std::vector<KnownLine>);
+template std::vector<Index> line_ids_among(const MeshPart<3>&, std::vector<KnownLine>);
 template std::vector<Index> line_ids_by_ends(const MeshPart<2>&, const std::vector<KnownLine>&);
 template std::vector<Index> line_ids_by_ends(const MeshPart<3>&, const std::vector<KnownLine>&);
 

@@ -21,10 +21,14 @@ struct KnownLine {
 template <int D>
 std::vector<KnownLine> known_lines(const MeshPart<D>& part, const std::vector<Index>& ids);
 
+// Per line of `part`, its id among `lines` (in any order). Throws Error for a line they do not hold.
+template <int D>
+std::vector<Index> line_ids_among(const MeshPart<D>& part, std::vector<KnownLine> lines);
+
 // Every process at once, each with the lines whose ids it knows (a piece's, or rank 0's whole
 // mesh's; a line may be known to several): per line of `part`, its id. Every process gathers every
 // known line, which is no more than reading a file in pieces holds (every process reads the file's
-// whole list of lines). Throws Error for a line of the part that no process knows.
+// whole list of lines). Throws Error as line_ids_among does.
 template <int D>
 std::vector<Index> line_ids_by_ends(const MeshPart<D>& part, const std::vector<KnownLine>& known);
 

@@ -11,6 +11,7 @@
 #include "io/record_run.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/face_key.hpp"
+#include "parallel/line_ids_by_ends.hpp"
 #include "parallel/part_shipment.hpp"
 
 namespace hocav {
@@ -312,25 +313,13 @@ Shipment<D> own_shipment(GammaMeshSlice<D>& slice, const std::string& path, std:
   return run_shipment(slice, ids, vertices, faces, met);
 }
 
-// The file's lines (3D) by the key of their ends' file ids: the slice holds the whole list.
+// The file's lines (3D), each by its ends' file ids (the global ids of a piece's vertices) and its
+// file id: the slice holds the whole list.
 template <int D>
-std::unordered_map<std::uint64_t, Index> line_ids_by_key(const GammaMeshSlice<D>& slice) {
-  std::unordered_map<std::uint64_t, Index> ids;
-  for (std::size_t l = 0; l < slice.lines.size(); ++l)
-    ids.emplace(Mesh<D>::edge_key(slice.lines[l][0], slice.lines[l][1]), static_cast<Index>(l));
-  return ids;
-}
-
-// The file ids of the part's lines.
-template <int D>
-std::vector<Index> file_line_ids(const MeshPart<D>& part, const std::unordered_map<std::uint64_t, Index>& ids_by_key) {
-  std::vector<Index> ids;
-  for (Index l = 0; l < part.mesh.line_count(); ++l) {
-    const auto [a, b] = part.mesh.line(l);
-    ids.push_back(
-        ids_by_key.at(Mesh<D>::edge_key(part.global_ids[static_cast<std::size_t>(a)], part.global_ids[static_cast<std::size_t>(b)])));
-  }
-  return ids;
+std::vector<KnownLine> file_lines(const GammaMeshSlice<D>& slice) {
+  std::vector<KnownLine> lines;
+  for (std::size_t l = 0; l < slice.lines.size(); ++l) lines.push_back({sorted_key<2>(slice.lines[l]), static_cast<Index>(l)});
+  return lines;
 }
 
 }  // namespace
@@ -341,10 +330,10 @@ MeshFilePiece<D> read_mesh_file_piece(const std::string& path) {
   MeshFilePiece<D> piece{{}, slice.vertex_count, slice.element_count, slice.facet_count, {}, {}};
   std::vector<Shipment<D>> own;
   own.push_back(own_shipment(slice, path, piece.facet_ids));
-  const std::unordered_map<std::uint64_t, Index> line_ids = line_ids_by_key(slice);
+  std::vector<KnownLine> lines = file_lines(slice);
   slice = {};
   piece.part = part_of_shipments(own);
-  piece.line_ids = file_line_ids(piece.part, line_ids);
+  piece.line_ids = line_ids_among(piece.part, std::move(lines));
   piece.facet_ids.resize(static_cast<std::size_t>(piece.part.mesh.facet_count()), kNoIndex);  // the interface facets come after
   return piece;
 }
