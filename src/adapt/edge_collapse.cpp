@@ -122,8 +122,8 @@ OperationCount collapse_short_edges(AdaptationMesh<D>& am, const AdaptationLimit
     const std::span<const EdgeCandidate> chunk = std::span(candidates).subspan(start, std::min(kCollapseChunk, candidates.size() - start));
     const int chunk_clock = am.tick();
     pretests.resize(chunk.size());
-    run_strided(pool, chunk.size(), 1,
-                [&](std::size_t worker, std::size_t i) { pretests[i] = pretest_both_ways(am, chunk[i], limits, scratch[worker]); });
+    run_in_blocks(pool, chunk.size(), 1,
+                  [&](std::size_t worker, std::size_t i) { pretests[i] = pretest_both_ways(am, chunk[i], limits, scratch[worker]); });
     for (std::size_t i = 0; i < chunk.size(); ++i) {
       const EdgeCandidate& c = chunk[i];
       if (mesh.vertex_removed(c.a) || mesh.vertex_removed(c.b) || am.edge_length(c.a, c.b) >= limits.collapse_length) continue;

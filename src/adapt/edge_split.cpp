@@ -323,7 +323,7 @@ SplitSweep split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limit
   for (std::size_t start = 0; start < candidates.size(); start += chunk_size) {
     const std::span<const EdgeCandidate> chunk = std::span(candidates).subspan(start, std::min(chunk_size, candidates.size() - start));
     previews.resize(chunk.size());
-    run_strided(pool, chunk.size(), 2, [&](std::size_t worker, std::size_t i) {
+    run_in_blocks(pool, chunk.size(), 2, [&](std::size_t worker, std::size_t i) {
       preview_split(am, chunk[i].a, chunk[i].b, limits, SplitPurpose::kLength, previews[i], scratch[worker]);
     });
     for (std::size_t i = 0; i < chunk.size(); ++i) {

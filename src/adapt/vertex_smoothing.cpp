@@ -237,7 +237,7 @@ std::vector<Index> smooth_round(AdaptationMesh<D>& am, const SmoothingCandidates
   for (const std::vector<Index>& batch : batches.batches()) {
     am.tick();  // a refusal in this batch comes after the moves of the earlier ones
     moved.assign(batch.size(), 0);
-    run_strided(pool, batch.size(), kSmallestThreadedBatch, [&](std::size_t worker, std::size_t n) {
+    run_in_blocks(pool, batch.size(), kSmallestThreadedBatch, [&](std::size_t worker, std::size_t n) {
       const auto i = static_cast<std::size_t>(batch[n]);
       moved[n] = smooth_vertex(am, candidates.vertices[i], candidates.ball(i), scratch[worker], limits);
     });

@@ -43,19 +43,25 @@ class ThreadPool {
 // The default thread count of every command (and of the Python module): every core the machine has.
 inline int every_core() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
 
-// Calls work(worker, i) for every i in [0, count): worker w of the pool's threads takes i = w, w + W,
-// … (so each worker may keep its own scratch), or the calling thread alone takes them all (worker 0)
-// when there are fewer than `serial_below`, where waking the threads would cost more than it saves.
+// Calls work(worker, i) for every i in [0, count): each of the pool's workers w takes blocks of
+// kBlock consecutive items as it comes free (so each worker may keep its own scratch, and the
+// threads write no cache line in turn), or the calling thread alone takes them all (worker 0) when
+// there are fewer than `serial_below`, where waking the threads would cost more than it saves. The
+// calling thread starts at once, and a woken thread takes what is left (docs/adaptation.md
+// §Threads: a fixed share per thread waited for the thread that woke last). Which worker takes an
+// item varies from run to run: work(worker, i) must give the same result whatever the worker.
 template <typename Work>
-void run_strided(ThreadPool& pool, std::size_t count, std::size_t serial_below, const Work& work) {
-  const std::size_t workers = count < serial_below ? 1 : static_cast<std::size_t>(pool.thread_count());
-  const auto run_worker = [&](std::size_t worker) {
-    for (std::size_t i = worker; i < count; i += workers) work(worker, i);
-  };
-  if (workers == 1)
-    run_worker(0);
-  else
-    pool.run(workers, run_worker);
+void run_in_blocks(ThreadPool& pool, std::size_t count, std::size_t serial_below, const Work& work) {
+  constexpr std::size_t kBlock = 16;
+  if (count < serial_below || pool.thread_count() == 1) {
+    for (std::size_t i = 0; i < count; ++i) work(0, i);
+    return;
+  }
+  std::atomic<std::size_t> next{0};
+  pool.run(static_cast<std::size_t>(pool.thread_count()), [&](std::size_t worker) {
+    for (std::size_t begin = next.fetch_add(kBlock); begin < count; begin = next.fetch_add(kBlock))
+      for (std::size_t i = begin; i < std::min(count, begin + kBlock); ++i) work(worker, i);
+  });
 }
 
 // Calls work(begin, end) for consecutive ranges of `chunk` indices covering [0, count) on the pool's
