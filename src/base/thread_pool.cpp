@@ -29,13 +29,16 @@ void ThreadPool::run(std::size_t count, const std::function<void(std::size_t)>& 
     work_ = &work;
     count_ = count;
     next_ = 0;
-    busy_ = static_cast<int>(workers_.size());
+    open_ = true;
     ++generation_;
   }
   wake_.notify_all();
   work_on_current_loop();
+  // Every item is taken: a worker that has not joined yet stays out, so the caller waits only for
+  // the items the joined ones are still on, not for a late thread to wake.
   std::unique_lock lock(mutex_);
-  done_.wait(lock, [this] { return busy_ == 0; });
+  open_ = false;
+  done_.wait(lock, [this] { return joined_ == 0; });
 }
 
 void ThreadPool::worker() {
@@ -46,11 +49,13 @@ void ThreadPool::worker() {
       wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
       if (stopping_) return;
       seen = generation_;
+      if (!open_) continue;  // the caller took every item before this thread woke
+      ++joined_;
     }
     work_on_current_loop();
     {
       std::lock_guard lock(mutex_);
-      --busy_;
+      --joined_;
     }
     done_.notify_one();
   }

@@ -1,6 +1,8 @@
 // A fixed set of worker threads for parallel loops: run(count, work) calls work(i) for every i in
 // [0, count) across the pool and the calling thread, and returns when all are done. Indices are
-// handed out one at a time, so uneven items balance themselves.
+// handed out one at a time, so uneven items balance themselves. The calling thread starts at once;
+// a worker joins when it wakes, unless the caller has taken every item by then (a sleeping thread
+// wakes tens of microseconds late on these machines: docs/adaptation.md §Threads).
 #pragma once
 
 #include <algorithm>
@@ -36,7 +38,8 @@ class ThreadPool {
   std::size_t count_ = 0;
   std::atomic<std::size_t> next_{0};
   std::size_t generation_ = 0;
-  int busy_ = 0;
+  bool open_ = false;  // the current loop still takes workers
+  int joined_ = 0;     // workers in the current loop
   bool stopping_ = false;
 };
 

@@ -43,5 +43,17 @@ TEST(RunInBlocks, AWorkersItemsRunOneAtATime) {
   EXPECT_EQ(overlaps.load(), 0);
 }
 
+// Many short loops in a row, most over before a sleeping worker wakes: each returns with all its
+// items done, and a late worker never runs an item of a loop that has returned.
+TEST(ThreadPool, ShortLoopsReturnWithEveryItemDone) {
+  ThreadPool pool(3);
+  std::vector<int> done(3, 0);
+  for (int loop = 1; loop <= 20000; ++loop) {
+    const std::size_t count = static_cast<std::size_t>(loop % 3) + 1;
+    pool.run(count, [&](std::size_t i) { done[i] = loop; });
+    for (std::size_t i = 0; i < count; ++i) ASSERT_EQ(done[i], loop) << "loop " << loop << ", item " << i;
+  }
+}
+
 }  // namespace
 }  // namespace hocav
