@@ -48,9 +48,9 @@ inline int every_core() { return static_cast<int>(std::max(1u, std::thread::hard
 
 // Calls work(worker, i) for every i in [0, count): each of the pool's workers w takes blocks of
 // kBlock consecutive items as it comes free (so each worker may keep its own scratch, and the
-// threads write no cache line in turn), or the calling thread alone takes them all (worker 0) when
-// there are fewer than `serial_below`, where waking the threads would cost more than it saves. The
-// calling thread starts at once, and a woken thread takes what is left (docs/adaptation.md
+// threads seldom write the same cache line), or the calling thread alone takes them all (worker 0)
+// when there are fewer than `serial_below`, where waking the threads would cost more than it saves.
+// The calling thread starts at once, and a woken thread takes what is left (docs/adaptation.md
 // §Threads: a fixed share per thread waited for the thread that woke last). Which worker takes an
 // item varies from run to run: work(worker, i) must give the same result whatever the worker.
 template <typename Work>
