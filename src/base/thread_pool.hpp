@@ -1,8 +1,8 @@
 // A fixed set of worker threads for parallel loops: run(count, work) calls work(i) for every i in
 // [0, count) across the pool and the calling thread, and returns when all are done. Indices are
 // handed out one at a time, so uneven items balance themselves. The calling thread starts at once;
-// a worker joins when it wakes, unless the caller has taken every item by then (a sleeping thread
-// wakes tens of microseconds late on these machines: docs/adaptation.md §Threads).
+// a worker joins when it wakes, unless the caller has taken every item by then (waking a sleeping
+// thread cost about 20 us on these machines: docs/adaptation.md §Threads).
 #pragma once
 
 #include <algorithm>
