@@ -70,21 +70,8 @@ void adapt_curved_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const CurvingOpti
 
 namespace {
 
-// Sizes below this share of the input's bounding-box diagonal are never asked for: elements that
-// small lose the digits their orientation and volume tests need, and the loop could not converge.
+// The size floor's share of the input's diagonal (bounds_above_floor).
 constexpr double kSmallestRelativeSize = 1e-6;
-
-// The smallest size the metric asks at the input's vertices.
-template <int D>
-double smallest_size_at_vertices(const Mesh<D>& input, const AdaptationMetric<D>& metric) {
-  double largest_eigenvalue = 0;
-  Index hint = kNoIndex;
-  for (const Vec<D>& x : input.vertices()) {
-    const SymEigen<D> eigen = spd_eigen(metric.metric_at(x, hint));
-    for (int k = 0; k < D; ++k) largest_eigenvalue = std::max(largest_eigenvalue, eigen.values[k]);
-  }
-  return 1 / std::sqrt(largest_eigenvalue);
-}
 
 template <int D>
 AdaptationMetric<D> metric_within(const AdaptationSetup<D>& out, const AdaptationJob<D>& job, const SizeBounds& bounds) {
@@ -111,10 +98,29 @@ void make_job_metric(AdaptationSetup<D>& out, const Mesh<D>& input, std::vector<
     if (job.gradation) grade_metrics(input, metrics, {*job.gradation});
     out.field.emplace(input, metrics);
   }
+  const double smallest = smallest_size_at_vertices(input, metric_within(out, job, job.bounds));
+  const SizeBounds bounds = bounds_above_floor(job, smallest, bounding_box_diagonal(input));
+  out.metric.emplace(metric_within(out, job, bounds));
+}
+
+}  // namespace
+
+template <int D>
+double smallest_size_at_vertices(const Mesh<D>& input, const AdaptationMetric<D>& metric) {
+  double largest_eigenvalue = 0;
+  Index hint = kNoIndex;
+  for (const Vec<D>& x : input.vertices()) {
+    const SymEigen<D> eigen = spd_eigen(metric.metric_at(x, hint));
+    for (int k = 0; k < D; ++k) largest_eigenvalue = std::max(largest_eigenvalue, eigen.values[k]);
+  }
+  return 1 / std::sqrt(largest_eigenvalue);
+}
+
+template <int D>
+SizeBounds bounds_above_floor(const AdaptationJob<D>& job, double smallest_asked, double diagonal) {
   SizeBounds bounds = job.bounds;
-  const double floor = kSmallestRelativeSize * bounding_box_diagonal(input);
-  const double smallest = std::min(bounds.h_min > 0 ? bounds.h_min : 1e300,
-                                   smallest_size_at_vertices(input, metric_within(out, job, bounds)));
+  const double floor = kSmallestRelativeSize * diagonal;
+  const double smallest = std::min(bounds.h_min > 0 ? bounds.h_min : 1e300, smallest_asked);
   if (smallest < floor) {
     if (job.warn) {
       std::ostringstream warning;
@@ -124,10 +130,17 @@ void make_job_metric(AdaptationSetup<D>& out, const Mesh<D>& input, std::vector<
     }
     bounds.h_min = std::min(floor, bounds.h_max);
   }
-  out.metric.emplace(metric_within(out, job, bounds));
+  return bounds;
 }
 
-}  // namespace
+template <int D>
+void warn_if_hausdorff_bounds_nothing(const AdaptationJob<D>& job, bool has_geometry) {
+  const bool relative_given = job.hausd_relative.value_or(0) > 0;
+  if ((job.hausd || relative_given) && !has_geometry && job.warn) {
+    const char* given = job.hausd && relative_given ? "--hausd, --hausd-relative" : job.hausd ? "--hausd" : "--hausd-relative";
+    job.warn(std::string("the Hausdorff bound (") + given + ") bounds nothing without a boundary geometry (--surface none)");
+  }
+}
 
 template <int D>
 AdaptationSettings job_settings(const AdaptationJob<D>& job, double hausd) {
@@ -146,11 +159,7 @@ std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(const Mesh<D>& input, std:
                                                       const std::string& name) {
   auto setup = std::make_unique<AdaptationSetup<D>>();
   setup->geometry = job.geometry(input);
-  const bool relative_given = job.hausd_relative.value_or(0) > 0;
-  if ((job.hausd || relative_given) && !setup->geometry && job.warn) {
-    const char* given = job.hausd && relative_given ? "--hausd, --hausd-relative" : job.hausd ? "--hausd" : "--hausd-relative";
-    job.warn(std::string("the Hausdorff bound (") + given + ") bounds nothing without a boundary geometry (--surface none)");
-  }
+  warn_if_hausdorff_bounds_nothing(job, setup->geometry != nullptr);
   setup->settings = job_settings(job, job.hausd.value_or(kRelativeHausd * bounding_box_diagonal(input)));
   make_job_metric(*setup, input, std::move(metrics), job);
   const double expected = expected_element_count(input, *setup->metric);
@@ -184,6 +193,12 @@ AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics,
   return adapted;
 }
 
+template double smallest_size_at_vertices(const Mesh<2>&, const AdaptationMetric<2>&);
+template double smallest_size_at_vertices(const Mesh<3>&, const AdaptationMetric<3>&);
+template SizeBounds bounds_above_floor(const AdaptationJob<2>&, double, double);
+template SizeBounds bounds_above_floor(const AdaptationJob<3>&, double, double);
+template void warn_if_hausdorff_bounds_nothing(const AdaptationJob<2>&, bool);
+template void warn_if_hausdorff_bounds_nothing(const AdaptationJob<3>&, bool);
 template AdaptationSettings job_settings(const AdaptationJob<2>&, double);
 template AdaptationSettings job_settings(const AdaptationJob<3>&, double);
 template void prepare_boundary(Mesh<2>&, const std::string&, const std::function<void(const std::string&)>&);

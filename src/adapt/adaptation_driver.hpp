@@ -85,6 +85,20 @@ struct AdaptationJob {
   CurvingStep<D> curve;    // empty: curve_in_metric
 };
 
+// The smallest size `metric` asks at the vertices of `input`.
+template <int D>
+double smallest_size_at_vertices(const Mesh<D>& input, const AdaptationMetric<D>& metric);
+
+// The job's size bounds, h_min raised to 1e-6 of the input's bounding-box `diagonal` when the
+// metric asks for sizes down to `smallest_asked` below it (said through job.warn): elements that
+// small lose the digits their orientation and volume tests need, and the loop could not converge.
+template <int D>
+SizeBounds bounds_above_floor(const AdaptationJob<D>& job, double smallest_asked, double diagonal);
+
+// Says through job.warn that a Hausdorff bound the job gives bounds nothing without a geometry.
+template <int D>
+void warn_if_hausdorff_bounds_nothing(const AdaptationJob<D>& job, bool has_geometry);
+
 // The loop's settings of a job; `hausd` the Hausdorff distance (the job's, or its default from the input).
 template <int D>
 AdaptationSettings job_settings(const AdaptationJob<D>& job, double hausd);

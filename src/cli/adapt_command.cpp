@@ -5,9 +5,10 @@
 //                [--vtu V.vtu]
 // Metric-based adaptation to a unit mesh (split, collapse, swap, smooth; boundary points on the
 // geometry), then, with --order 2, the curving of `hocav curve` in the same metric. Under
-// `mpirun -np N` (N > 1) the P1 loop and the curving are distributed (docs/distributed.md); rank 0
-// reads the input; a Gamma output without --vtu or --curved is curved and written in runs by the
-// parts, any other by rank 0, which also runs the curved passes of --curved.
+// `mpirun -np N` (N > 1) the P1 loop and the curving are distributed (docs/distributed.md); every
+// process reads its piece of the input when adapts_from_pieces says so, else rank 0 reads it; a
+// Gamma output without --vtu or --curved is curved and written in runs by the parts, any other by
+// rank 0, which also runs the curved passes of --curved.
 #include <chrono>
 #include <cstdint>
 #include <iostream>
@@ -23,15 +24,18 @@
 #include "cli/metric_sources.hpp"
 #include "cli/number_checks.hpp"
 #include "io/atomic_output.hpp"
+#include "io/gamma_mesh.hpp"
 #include "io/node_metrics.hpp"
 #include "io/output_set.hpp"
 #include "mesh/boundary_mesh.hpp"
 #include "metric/implied_metric.hpp"
+#include "parallel/adaptation_from_pieces.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_adaptation.hpp"
 #include "parallel/distributed_curving.hpp"
 #include "parallel/output_in_parts.hpp"
 #include "parallel/part_message.hpp"
+#include "parallel/piece_input_check.hpp"
 #include "report/curved_vtu.hpp"
 #include "surface/boundary_choice.hpp"
 
@@ -247,15 +251,6 @@ void serve_adaptation(const AdaptOptions& o, const std::vector<std::byte>& input
   serve_distributed_curving(geometry.get(), *job.curving);
 }
 
-void serve_adaptation(const AdaptOptions& o) {
-  std::vector<std::byte> input_boundary;
-  broadcast_bytes(input_boundary);
-  if (packed_dimension(input_boundary) == 2)
-    serve_adaptation<2>(o, input_boundary);
-  else
-    serve_adaptation<3>(o, input_boundary);
-}
-
 // The report, then the outputs committed and the summary printed.
 void finish_outputs(const AdaptOptions& o, const AdaptationReport& report, OutputSet& outputs) {
   warn_if_not_converged(o, report);
@@ -270,6 +265,36 @@ void finish_outputs(const AdaptOptions& o, const AdaptationReport& report, Outpu
     write_adaptation_report_table(std::cout, report);
     if (report.curving) write_curving_report_table(std::cout, *report.curving);
   }
+}
+
+// Rank 0 of a run that ends in its parts: the report made of what the parts measured, curved and
+// wrote (`output`; their boundary settled when `has_geometry`), the adaptation timed from `start`,
+// then the outputs committed.
+void finish_in_parts(AdaptationReport& report, const OutputInParts& output, bool has_geometry, std::chrono::steady_clock::time_point start,
+                     const AdaptOptions& o, OutputSet& outputs) {
+  if (!o.quiet && output.curving)
+    for (const DistributedCurvingRound& round : output.curving->rounds) print_curving_round(round);
+  if (!o.quiet) {
+    std::ostringstream line;
+    line << std::setprecision(3) << "distributed: the end in the parts: " << output.counts.vertices << " vertices and "
+         << output.counts.elements << " elements settled, measured, " << (output.curving ? "curved, " : "") << "written in runs, "
+         << output.seconds << " s";
+    if (output.curving) line << " (" << output.curving->deferred_gains_in_parts << " edge gains measured past a part's border)";
+    line << '\n';
+    std::cerr << line.str();
+  }
+  if (has_geometry) report.settling = output.settling;
+  report.output_vertices = output.counts.vertices;
+  report.output_elements = output.counts.elements;
+  if (output.measures) report.measures = *output.measures;
+  report.seconds_adapt = seconds_since(start) - output.seconds_curve;
+  if (output.curving) {
+    report.curving = output.curving->report;
+    report.curved_measures = output.curving->curved;
+    report.seconds_curve = output.seconds_curve;
+  }
+  report.peak_memory_bytes = peak_resident_bytes();
+  finish_outputs(o, report, outputs);
 }
 
 // Rank 0 of a run that ends in its parts (ends_in_parts): the job set up on the whole input as the
@@ -288,29 +313,52 @@ void adapt_in_parts(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptOp
   report.run = adapt_distributed(mesh, *setup->metric, setup->geometry.get(), setup->settings, o.partition_seed,
                                  iteration_printer(o, report.distributed_iterations),
                                  end_in_parts<D>(o, job, setup->geometry.get(), setup->settings, output));
-  if (!o.quiet && output->curving)
-    for (const DistributedCurvingRound& round : output->curving->rounds) print_curving_round(round);
-  if (!o.quiet) {
-    std::ostringstream line;
-    line << std::setprecision(3) << "distributed: the end in the parts: " << output->counts.vertices << " vertices and "
-         << output->counts.elements << " elements settled, measured, " << (output->curving ? "curved, " : "") << "written in runs, "
-         << output->seconds << " s";
-    if (output->curving) line << " (" << output->curving->deferred_gains_in_parts << " edge gains measured past a part's border)";
-    line << '\n';
-    std::cerr << line.str();
-  }
-  if (setup->geometry) report.settling = output->settling;
-  report.output_vertices = output->counts.vertices;
-  report.output_elements = output->counts.elements;
-  if (output->measures) report.measures = *output->measures;
-  report.seconds_adapt = seconds_since(start) - output->seconds_curve;
-  if (output->curving) {
-    report.curving = output->curving->report;
-    report.curved_measures = output->curving->curved;
-    report.seconds_curve = output->seconds_curve;
-  }
-  report.peak_memory_bytes = peak_resident_bytes();
-  finish_outputs(o, report, outputs);
+  finish_in_parts(report, *output, setup->geometry != nullptr, start, o, outputs);
+}
+
+// Whether a distributed run reads its input in pieces, no process holding the whole
+// (docs/distributed.md §Adapting from pieces): one that ends in its parts, from a P1 Gamma file and a
+// metric file, without --hgrad and with --surface none (the set-up of a gradation or a geometry from
+// pieces is not built). Else rank 0 reads the whole input and sets the run up.
+bool adapts_from_pieces(const AdaptOptions& o) {
+  return process_count() > 1 && ends_in_parts(o) && !o.metric.empty() && !o.gradation && o.surface == "none" && is_gamma_path(o.input) &&
+         !gamma_mesh_has_p2_keyword(o.input);
+}
+
+// Every process of a run from pieces: its piece read and prepared, the run set up on the pieces
+// together, the distributed loop, and on rank 0 (`outputs` given) the report.
+template <int D>
+void adapt_from_pieces(const AdaptOptions& o, OutputSet* outputs) {
+  AdaptationJob<D> job = adaptation_job<D>(o);
+  if (!outputs) job.warn = {}, job.pass_progress = {};  // (rank 0 says them)
+  MeshFilePiece<D> piece = read_mesh_file_piece<D>(o.input);
+  prepare_input_piece(piece, o.input, job.warn);
+  AdaptationReport report;
+  report.input_read_in_pieces = true;
+  report.dimension = D;
+  report.input_vertices = piece.vertex_count;
+  report.input_elements = piece.element_count;
+  PieceSetup<D> setup = set_up_piece(std::move(piece), o.input, o.metric, job);
+  std::optional<OutputInParts> output;
+  const auto start = std::chrono::steady_clock::now();  // after the set-up, as the serial run's
+  report.run = adapt_distributed_from_pieces<D>(std::move(setup.start), nullptr, setup.settings, o.partition_seed,
+                                                iteration_printer(o, report.distributed_iterations),
+                                                end_in_parts<D>(o, job, nullptr, setup.settings, output));
+  if (outputs) finish_in_parts(report, *output, false, start, o, *outputs);
+}
+
+// The other processes: a run from pieces, or rank 0's distributed run from its input.
+void serve_adaptation(const AdaptOptions& o) {
+  std::vector<int> plan;  // rank 0's: the dimension of a run from pieces, 0 for a run from its input
+  broadcast_values(plan);
+  if (plan.at(0) == 2) return adapt_from_pieces<2>(o, nullptr);
+  if (plan.at(0) == 3) return adapt_from_pieces<3>(o, nullptr);
+  std::vector<std::byte> input_boundary;
+  broadcast_bytes(input_boundary);
+  if (packed_dimension(input_boundary) == 2)
+    serve_adaptation<2>(o, input_boundary);
+  else
+    serve_adaptation<3>(o, input_boundary);
 }
 
 template <int D>
@@ -424,6 +472,12 @@ void add_adapt_command(CLI::App& app) {
     if (process_rank() != 0) return serve_adaptation(*o);
     OutputSet outputs;
     declare_adapt_files(outputs, *o);
+    if (process_count() > 1) {
+      std::vector<int> plan{adapts_from_pieces(*o) ? gamma_mesh_dimension(o->input) : 0};
+      broadcast_values(plan);
+      if (plan[0] == 2) return adapt_from_pieces<2>(*o, &outputs);
+      if (plan[0] == 3) return adapt_from_pieces<3>(*o, &outputs);
+    }
     MeshFileContent file = read_mesh_file(o->input);
     std::visit([&](auto& mesh) { adapt(mesh, file, *o, outputs); }, file.mesh);
   });

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <memory>
 #include <optional>
 #include <unordered_map>
@@ -10,15 +9,13 @@
 
 #include "adapt/metric_measures.hpp"
 #include "adapt/vertex_classes.hpp"
-#include "base/error.hpp"
 #include "base/memory_budget.hpp"
 #include "base/stopwatch.hpp"
-#include "geom/sym_functions.hpp"
-#include "metric/gradation.hpp"
 #include "metric/implied_metric.hpp"
 #include "parallel/back_mesh_share.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/element_partition.hpp"
+#include "parallel/gradual_metric.hpp"
 #include "parallel/part_adaptation.hpp"
 #include "parallel/part_migration.hpp"
 #include "parallel/peer_iteration.hpp"
@@ -28,25 +25,6 @@
 namespace hocav {
 namespace {
 
-// A whole-mesh iteration asks for sizes at most this many times finer than the mesh it starts from
-// (where the metric is finest against the input), if kDistributedIterations - 1 steps allow.
-constexpr double kGradualRefinement = 5;
-
-// The whole-mesh iterations that step from the input's own metric to the target: enough for the
-// largest ratio of the input's sizes to the target's, at the input's vertices, to take steps of at
-// most kGradualRefinement, and at most kDistributedIterations - 1.
-template <int D>
-int gradual_steps(const Mesh<D>& input, const MetricField<D>& input_metric, const AdaptationMetric<D>& metric) {
-  double ratio = 1;
-  Index hint = kNoIndex;
-  for (Index v = 0; v < input.vertex_count(); ++v) {
-    const SymMat<D> own = exp_sym(input_metric.vertex_log_metric(v));
-    ratio = std::max(ratio, std::sqrt(largest_relative_eigenvalue(metric.metric_at(input.vertex(v), hint), own)));
-  }
-  const int steps = static_cast<int>(std::ceil(std::log(ratio) / std::log(kGradualRefinement) - 1e-9));
-  return std::clamp(steps, 1, kDistributedIterations - 1);
-}
-
 // The input's own metric (docs/method.md §10), on the metric's back mesh when that is the input: rank
 // 0 then holds one copy of the input and its point locator, not two.
 template <int D>
@@ -55,12 +33,6 @@ MetricField<D> input_metric_of(const Mesh<D>& input, const AdaptationMetric<D>& 
   const MetricField<D>* field = metric.field();
   return field && field->is_on(input) ? field->with_metrics(implied) : MetricField<D>(input, implied);
 }
-
-// The share of the way from the input's own metric to the target that an iteration adapts to: the
-// whole mesh's iterations step there evenly, so that each starts at most a few times coarser than
-// it asks and its frozen interfaces stay near their metric; the last iterations and the last runs
-// adapt to the target (docs/distributed.md §A gradual metric).
-double gradual_fraction(int iteration, int steps) { return std::min(1.0, static_cast<double>(iteration) / steps); }
 
 // The last interfaces' vertices and their neighbours (per vertex of `mesh`): the region of the last
 // pass, which mends what the parts could not mend next to their frozen interfaces.
@@ -146,8 +118,12 @@ struct WholeMeshIterations {
   AdaptationSettings settings;  // the parts' loop's (part_settings)
   std::int64_t partition_seed;
   // Rank 0's: the metric on the whole back mesh, a fraction of the way from the input's own (rank 0
-  // asks for no share: it holds the whole); empty on the other processes.
+  // asks for no share: it holds the whole); empty on the other processes, and on every process of
+  // a run from pieces.
   std::function<AdaptationMetric<D>(double)> whole_metric;
+  // A run from pieces: no process holds the whole back mesh, so rank 0 gathers its metric for the
+  // last runs from the shares too.
+  bool shares_only = false;
 
   // `first` holds the figures of the first cut's scatter.
   WholeMeshResult run(MeshPart<D>& part, const BackMeshShare<D>& home, DistributedIteration first,
@@ -213,40 +189,46 @@ AdaptationRun last_serial_runs(MeshPart<D>& part, const AdaptationMetric<D>& met
   return run;
 }
 
-// Rank 0's job in the last runs: its metric (the target on the whole back mesh), the geometry and the
-// serial loop's settings.
+// Rank 0's job in the last runs: its metric (the target on the whole back mesh; null in a run from
+// pieces, where it is gathered around the region from the shares), the geometry and the serial
+// loop's settings.
 template <int D>
 struct RootRuns {
-  const AdaptationMetric<D>& metric;
+  const AdaptationMetric<D>* metric;
   const BoundaryGeometry<D>* geometry;
   const AdaptationSettings& settings;
 };
 
 // Collective, after the whole-mesh iterations (docs/distributed.md §The last runs): the elements
-// within kInterfaceBandRings rings of each part's `seeds` go to rank 0 (the others stay), rank 0
-// runs the last serial runs there, then, when `gather`, every element goes to rank 0. Returns rank
-// 0's runs; their figures in rank 0's `figures`.
+// within kInterfaceBandRings rings of each part's seeds (`whole`'s) go to rank 0 (the others stay),
+// rank 0 runs the last serial runs there, then, when `gather`, every element goes to rank 0.
+// Returns rank 0's runs; their figures in rank 0's `figures`.
 template <int D>
-AdaptationRun last_runs_on_root(MeshPart<D>& part, const std::vector<char>& seeds, Index next_global_id, const RootRuns<D>* root,
-                                bool gather, DistributedIteration& figures) {
+AdaptationRun last_runs_on_root(MeshPart<D>& part, const WholeMeshResult& whole, const RootRuns<D>* root,
+                                const WholeMeshIterations<D>& iterations, const BackMeshShare<D>& home, bool gather,
+                                DistributedIteration& figures) {
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<char> near = elements_near(part.mesh, seeds, kInterfaceBandRings);
+  const std::vector<char> near = elements_near(part.mesh, whole.seeds, kInterfaceBandRings);
   std::vector<int> destination(near.size(), process_rank());
   for (std::size_t k = 0; k < near.size(); ++k)
     if (near[k]) destination[k] = 0;
   figures.region_elements = sum_over_processes(static_cast<Index>(std::count(near.begin(), near.end(), 1)));
   std::vector<std::vector<Index>> seed_ids(static_cast<std::size_t>(process_count()));
   for (Index v = 0; v < part.mesh.vertex_count(); ++v)
-    if (seeds[v]) seed_ids[0].push_back(part.global_ids[v]);
+    if (whole.seeds[v]) seed_ids[0].push_back(part.global_ids[v]);
   const std::vector<Index> ids = exchange_values_joined(seed_ids);
   long long bytes_sent = 0;
   part = migrate_part(part, destination, &bytes_sent);
+  std::unique_ptr<ShareMetric<D>> region_metric;  // rank 0's, in a run from pieces
+  if (iterations.shares_only) region_metric = gathered_metric(home, iterations.recipe, root ? part.mesh : Mesh<D>{}, figures);
   AdaptationRun run;
   PartFigures own{0, peak_resident_bytes()};
   if (root) {
     const auto runs_start = std::chrono::steady_clock::now();
-    run = last_serial_runs(part, root->metric, root->geometry, root->settings, flags_of_global_ids(part, ids));
+    const AdaptationMetric<D> metric = region_metric ? region_metric->partway(1) : *root->metric;
+    run = last_serial_runs(part, metric, root->geometry, root->settings, flags_of_global_ids(part, ids));
     own = {seconds_since(runs_start), peak_resident_bytes()};
+    Index next_global_id = whole.next_global_id;
     for (Index& global : part.global_ids)
       if (global == kNoIndex) global = next_global_id++;
   }
@@ -257,6 +239,34 @@ AdaptationRun last_runs_on_root(MeshPart<D>& part, const std::vector<char>& seed
   if (gather) part = migrate_part(part, std::vector<int>(static_cast<std::size_t>(part.mesh.element_count()), 0), &bytes_sent);
   figures.bytes_sent += sum_over_processes(bytes_sent);
   figures.seconds = seconds_since(start);
+  return run;
+}
+
+// The figures of the last runs, before them.
+DistributedIteration last_runs_figures() {
+  DistributedIteration figures;
+  figures.iteration = kDistributedIterations + 1;
+  figures.metric_fraction = 1;
+  return figures;
+}
+
+// Collective: `end` on every process's part, with the target gathered around it from the shares;
+// what it wrote in `figures`.
+template <int D>
+void end_in_every_part(MeshPart<D>& part, const BackMeshShare<D>& home, const MetricRecipe& recipe, const PartsEnd<D>& end,
+                       DistributedIteration& figures) {
+  const std::unique_ptr<ShareMetric<D>> near = gathered_metric(home, recipe, part.mesh, figures);
+  const MeshFileCounts written = end(part, near->partway(1));
+  figures.vertices = written.vertices;
+  figures.elements = written.elements;
+}
+
+// The whole-mesh iterations' runs, then the last runs'.
+AdaptationRun joined_runs(AdaptationRun run, const AdaptationRun& last) {
+  run.passes.insert(run.passes.end(), last.passes.begin(), last.passes.end());
+  run.converged = last.converged;
+  run.stopped_with_window_open = last.stopped_with_window_open;
+  run.caps_removed += last.caps_removed;
   return run;
 }
 
@@ -281,7 +291,8 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   // The input's own metric, where the gradual metric starts.
   const MetricField<D> input_metric = input_metric_of(mesh, metric);
   const MetricRecipe recipe = recipe_of(metric);
-  std::vector<RunShape> shape{{recipe.bounds, recipe.hausdorff, settings.hausd, gradual_steps(mesh, input_metric, metric), partition_seed}};
+  std::vector<RunShape> shape{{recipe.bounds, recipe.hausdorff, settings.hausd,
+                               gradual_steps(mesh, input_metric, metric, kDistributedIterations - 1), partition_seed}};
   broadcast_values(shape);
   const int steps = shape[0].steps;
   const WholeMeshIterations<D> whole{recipe,         steps,
@@ -298,13 +309,10 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   first.seconds_partition = first.seconds = seconds_since(start);
   partition_first(part, scattered_by_part(loads, part_of), partition_seed, first);
   const WholeMeshResult whole_result = whole.run(part, home, first, on_iteration);
-  AdaptationRun run = whole_result.run;
-  DistributedIteration last_figures;
-  last_figures.iteration = kDistributedIterations + 1;
-  last_figures.metric_fraction = 1;
-  const RootRuns<D> root{metric, geometry, settings};
+  DistributedIteration last_figures = last_runs_figures();
+  const RootRuns<D> root{&metric, geometry, settings};
   const bool gather = !end;
-  const AdaptationRun last = last_runs_on_root(part, whole_result.seeds, whole_result.next_global_id, &root, gather, last_figures);
+  const AdaptationRun last = last_runs_on_root(part, whole_result, &root, whole, home, gather, last_figures);
   if (gather) {
     mesh = whole_mesh_of(std::move(part));
     mesh.build_topology();
@@ -318,11 +326,7 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
     last_figures.elements = written.elements;
   }
   if (on_iteration) on_iteration(last_figures);
-  run.passes.insert(run.passes.end(), last.passes.begin(), last.passes.end());
-  run.converged = last.converged;
-  run.stopped_with_window_open = last.stopped_with_window_open;
-  run.caps_removed += last.caps_removed;
-  return run;
+  return joined_runs(whole_result.run, last);
 }
 
 template <int D>
@@ -338,10 +342,27 @@ void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>& analy
   DistributedIteration unused;  // (rank 0 keeps the figures)
   partition_first(part, scattered_by_part({}, {}), whole.partition_seed, unused);
   const WholeMeshResult whole_result = whole.run(part, home, {}, {});
-  last_runs_on_root<D>(part, whole_result.seeds, whole_result.next_global_id, nullptr, !end, unused);
-  if (!end) return;
-  const std::unique_ptr<ShareMetric<D>> near = gathered_metric(home, recipe, part.mesh, unused);
-  end(part, near->partway(1));
+  last_runs_on_root<D>(part, whole_result, nullptr, whole, home, !end, unused);
+  if (end) end_in_every_part(part, home, recipe, end, unused);
+}
+
+template <int D>
+AdaptationRun adapt_distributed_from_pieces(PiecesStart<D> start, const BoundaryGeometry<D>* geometry, const AdaptationSettings& settings,
+                                            std::int64_t partition_seed,
+                                            const std::function<void(const DistributedIteration&)>& on_iteration, const PartsEnd<D>& end) {
+  const WholeMeshIterations<D> whole{start.recipe, start.steps, geometry, part_settings(settings), partition_seed, {}, true};
+  DistributedIteration first;
+  MeshPart<D>& part = start.part;
+  partition_first(part, start.loads, partition_seed, first);
+  start.loads = {};
+  const WholeMeshResult whole_result = whole.run(part, start.home, first, on_iteration);
+  DistributedIteration last_figures = last_runs_figures();
+  const RootRuns<D> root{nullptr, geometry, settings};
+  const AdaptationRun last = last_runs_on_root(part, whole_result, process_rank() == 0 ? &root : nullptr, whole, start.home, false,
+                                               last_figures);
+  end_in_every_part(part, start.home, whole.recipe, end, last_figures);
+  if (process_rank() == 0 && on_iteration) on_iteration(last_figures);
+  return joined_runs(whole_result.run, last);
 }
 
 template AdaptationRun adapt_distributed(Mesh<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*, const AdaptationSettings&,
@@ -352,5 +373,9 @@ template void serve_distributed_adaptation(const std::optional<AnalyticMetricSpe
                                            const PartsEnd<2>&);
 template void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>&, const BoundaryGeometry<3>*, AdaptationSettings,
                                            const PartsEnd<3>&);
+template AdaptationRun adapt_distributed_from_pieces(PiecesStart<2>, const BoundaryGeometry<2>*, const AdaptationSettings&, std::int64_t,
+                                                     const std::function<void(const DistributedIteration&)>&, const PartsEnd<2>&);
+template AdaptationRun adapt_distributed_from_pieces(PiecesStart<3>, const BoundaryGeometry<3>*, const AdaptationSettings&, std::int64_t,
+                                                     const std::function<void(const DistributedIteration&)>&, const PartsEnd<3>&);
 
 }  // namespace hocav

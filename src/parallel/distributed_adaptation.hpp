@@ -12,9 +12,11 @@
 #include <optional>
 
 #include "adapt/adaptation_loop.hpp"
+#include "parallel/back_mesh_share.hpp"
 #include "parallel/distributed_iteration.hpp"
 #include "parallel/mesh_file_runs.hpp"
 #include "parallel/mesh_parts.hpp"
+#include "parallel/share_metric.hpp"
 
 namespace hocav {
 
@@ -54,5 +56,28 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
 template <int D>
 void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>& analytic, const BoundaryGeometry<D>* geometry,
                                   AdaptationSettings settings, const PartsEnd<D>& end = {});
+
+// What every process starts a run from pieces with (docs/distributed.md §Adapting from pieces): its
+// piece of the input (read in pieces, prepared and classified; global ids the file's), its
+// elements' predicted output in the first iteration's metric, its piece as its home share of the
+// back mesh; the metric's recipe and the gradual steps, the same on every process.
+template <int D>
+struct PiecesStart {
+  MeshPart<D> part;
+  std::vector<double> loads;
+  BackMeshShare<D> home;
+  MetricRecipe recipe;
+  int steps = 1;
+};
+
+// Every process at once: adapts the pieces of `start` as adapt_distributed adapts rank 0's whole
+// mesh, no process holding the whole mesh or back mesh. The first partition is PT-Scotch's cut of
+// the pieces by their loads; rank 0's last runs take their metric from the shares as the parts do;
+// every process ends with `end` on its part. The run's figures (passes summed over the parts) on
+// rank 0.
+template <int D>
+AdaptationRun adapt_distributed_from_pieces(PiecesStart<D> start, const BoundaryGeometry<D>* geometry, const AdaptationSettings& settings,
+                                            std::int64_t partition_seed,
+                                            const std::function<void(const DistributedIteration&)>& on_iteration, const PartsEnd<D>& end);
 
 }  // namespace hocav

@@ -168,7 +168,10 @@ void write_adaptation_report_json(std::ostream& out, const AdaptationReport& rep
   }
   if (report.curved_passes) write_curved_passes(json, *report.curved_passes);
   if (report.curved_measures) write_curved_measures(json, *report.curved_measures);
-  if (!report.distributed_iterations.empty()) write_distributed_iterations(json, report.distributed_iterations);
+  if (!report.distributed_iterations.empty()) {
+    write_distributed_iterations(json, report.distributed_iterations);
+    json.member("input_read_in_pieces", report.input_read_in_pieces);
+  }
   json.end_object();
   out << '\n';
 }

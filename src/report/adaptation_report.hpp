@@ -34,8 +34,10 @@ struct AdaptationReport {
   std::optional<CurvedAdaptationRun> curved_passes;  // `adapt --curved` (docs/adaptation.md §Curved passes)
   // With curving: the output's curved edge lengths and curved quality in the metric.
   std::optional<CurvedMeasures> curved_measures;
-  // Under mpirun (docs/distributed.md): each iteration of the distributed loop.
+  // Under mpirun (docs/distributed.md): each iteration of the distributed loop, and whether every
+  // process read its piece of the input (§Adapting from pieces) rather than rank 0 the whole.
   std::vector<DistributedIteration> distributed_iterations;
+  bool input_read_in_pieces = false;
 };
 
 void write_adaptation_report_json(std::ostream& out, const AdaptationReport& report);

@@ -24,18 +24,19 @@ import os
 import re
 import sys
 
-from mpi_test_support import check_same_refs, check_valid, distributed_test, keywords, run, same_bytes, stats
+from mpi_test_support import check_same_refs, check_valid, distributed_test, keywords, refused, run, same_bytes, stats
 
 TOLERANCE = 0.01
 MIN_QUALITY = 0.05
 
 
 def ridge_length(path):
-    """The total length of the ridge lines of a 3D .mesh file (its Edges listed in Ridges)."""
+    """The total length of the ridge lines of a .mesh file (its Edges listed in Ridges; none in 2D)."""
     with open(path) as file:
         tokens = file.read().split()
     sections, i = {}, 0
-    widths = {"Vertices": 4, "Edges": 3, "Ridges": 1}
+    dimension = int(tokens[tokens.index("Dimension") + 1])
+    widths = {"Vertices": dimension + 1, "Edges": 3, "Ridges": 1}
     while i < len(tokens):
         if tokens[i] in widths:
             count, width = int(tokens[i + 1]), widths[tokens[i]]
@@ -43,7 +44,7 @@ def ridge_length(path):
             i += 2 + count * width
         else:
             i += 1
-    points = [[float(x) for x in row[:3]] for row in sections["Vertices"]]
+    points = [[float(x) for x in row[:dimension]] for row in sections["Vertices"]]
     total = 0.0
     for (ridge,) in sections.get("Ridges", []):
         a, b = (points[int(v) - 1] for v in sections["Edges"][int(ridge) - 1][:2])
@@ -98,11 +99,12 @@ def check_iterations(path, processes):
     assert abs(last - output_elements) <= 0.2 * output_elements, f"last iteration {last} elements, output {output_elements}"
 
 
-def compare_with_serial(hocav, mpirun, work, metric, process_counts=(2, 3, 4)):
-    """The checks of the module's docstring on the cube adapted to `metric` (a .solb in `work`, or the
-    options of an analytic metric)."""
+def compare_with_serial(hocav, mpirun, work, metric, process_counts=(2, 3, 4), mesh="cube.meshb", options=(), pieces=False):
+    """The checks of the module's docstring on `mesh` adapted to `metric` (a .solb in `work`, or the
+    options of an analytic metric) with `options`; the input read in pieces by every process, or by
+    rank 0 (`pieces`)."""
     source = ["--metric", metric] if isinstance(metric, str) else metric
-    adapt = ["adapt", "cube.meshb"] + source + ["--order", "1", "--threads", "1", "-q"]
+    adapt = ["adapt", mesh] + source + ["--order", "1", "--threads", "1", "-q"] + list(options)
     run([hocav] + adapt + ["-o", "serial.meshb", "--report", "serial.json"], work)
     serial = stats(hocav, "serial.meshb", work)
     serial_unit, serial_quality, serial_min, _ = report(os.path.join(work, "serial.json"))
@@ -124,6 +126,8 @@ def compare_with_serial(hocav, mpirun, work, metric, process_counts=(2, 3, 4)):
         assert abs(ridges - serial_ridges) <= 1e-9 * serial_ridges, f"{name}: ridge lines {ridges} long, serial {serial_ridges}"
         check_same_refs(figures, serial, name)
         unit, quality, minimum, below = report(os.path.join(work, f"{processes}.json"))
+        read_in_pieces = json.load(open(os.path.join(work, f"{processes}.json")))["input_read_in_pieces"]
+        assert read_in_pieces == pieces, f"{name}: input read in pieces: {read_in_pieces}"
         check_iterations(os.path.join(work, f"{processes}.json"), processes)
         print(f"{name}: unit {unit:.4f} (serial {serial_unit:.4f}), mean quality {quality:.4f} "
               f"(serial {serial_quality:.4f}), min quality {minimum:.4f} (serial {serial_min:.4f}), below 0.1 {below:.5f}")
@@ -170,6 +174,41 @@ def check_end_in_parts(hocav, mpirun, work):
             assert abs(got - value) <= 1e-12 * max(1, abs(value)), f"{group} {key}: {got} in the parts, {value} gathered"
 
 
+def untagged_copy(work, source, target):
+    """`source` (a text .mesh) written to `target` without its corners, feature lines and required
+    vertices: what the adaptation's classification finds from the boundary's shape alone."""
+    lines, kept, i = open(os.path.join(work, source)).read().splitlines(), [], 0
+    while i < len(lines):
+        if lines[i].strip() in ("Corners", "Ridges", "Edges", "RequiredVertices", "RequiredEdges"):
+            i += 2 + int(lines[i + 1])
+            continue
+        kept.append(lines[i])
+        i += 1
+    open(os.path.join(work, target), "w").write("\n".join(kept) + "\n")
+
+
+def check_from_pieces(hocav, mpirun, work):
+    """With a metric file, no --hgrad and --surface none, every process reads its piece of the input
+    (docs/distributed.md §Adapting from pieces) and the run is set up on the pieces together: on the
+    cube without its tags, whose corners and ridges the classification finds across the pieces (with
+    the metric 100 times finer than the input too: the gradual metric's steps from the pieces), and
+    on a square, the checks of the module's docstring against the serial run; with a geometry, rank
+    0 reads the input whole;
+    a metric file that does not fit the mesh is refused as the serial run refuses it."""
+    run([hocav, "convert", "cube.meshb", "cube.mesh"], work)
+    untagged_copy(work, "cube.mesh", "bare.mesh")
+    assert "Corners" not in keywords(os.path.join(work, "bare.mesh"))
+    compare_with_serial(hocav, mpirun, work, "cube.solb", mesh="bare.mesh", options=["--surface", "none"], pieces=True)
+    compare_with_serial(hocav, mpirun, work, "fine.solb", process_counts=(3,), mesh="bare.mesh", options=["--surface", "none"], pieces=True)
+    compare_with_serial(hocav, mpirun, work, "cube.solb", process_counts=(2,), mesh="bare.mesh", options=["--surface", "p3"])
+    run([hocav, "generate", "square", "--h", "0.1", "-o", "square.meshb"], work)
+    run([hocav, "metric", "square.meshb", "--analytic", "linear", "-o", "square.solb"], work)
+    compare_with_serial(hocav, mpirun, work, "square.solb", process_counts=(3,), mesh="square.meshb", options=["--surface", "none"],
+                        pieces=True)
+    refused(mpirun, hocav, work, ["adapt", "cube.meshb", "--metric", "square.solb", "--surface", "none", "-o", "refused.meshb"],
+            "refused.meshb", "square.solb: Dimension: the solution is 2D but the mesh is 3D")
+
+
 def check(hocav, mpirun, work):
     run([hocav, "generate", "cube", "--h", "0.1", "-o", "cube.meshb"], work)
     run([hocav, "metric", "cube.meshb", "--analytic", "linear", "--h-min", "0.03", "-o", "cube.solb"], work)
@@ -180,6 +219,7 @@ def check(hocav, mpirun, work):
     # "A small case that shows the defect"; before the gradual metric: 97.2% unit against 98.9%).
     run([hocav, "metric", "cube.meshb", "--analytic", "linear", "-o", "fine.solb"], work)
     compare_with_serial(hocav, mpirun, work, "fine.solb")
+    check_from_pieces(hocav, mpirun, work)
     # An analytic metric, evaluated exactly at every new vertex: the shares of the back mesh carry
     # only the input's own metric, where the gradual metric starts.
     compare_with_serial(hocav, mpirun, work, ["--analytic", "linear", "--hmin", "0.03"], process_counts=(2,))

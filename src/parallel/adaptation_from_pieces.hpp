@@ -1,0 +1,33 @@
+// The set-up of a distributed adaptation that starts from pieces of its input (docs/distributed.md
+// §Adapting from pieces): every process reads its piece of the mesh file and its run of the metric
+// file's rows, and what set_up_adaptation makes of the whole input (the corners and feature lines,
+// the size floor, the memory check, the loop's settings) is made of the pieces together. No process
+// holds the whole mesh.
+#pragma once
+
+#include <string>
+
+#include "adapt/adaptation_driver.hpp"
+#include "parallel/distributed_adaptation.hpp"
+#include "parallel/mesh_file_pieces.hpp"
+
+namespace hocav {
+
+// What a process adapts its piece with: its start (the metric's fields made on the piece, used,
+// and dropped) and the loop's settings.
+template <int D>
+struct PieceSetup {
+  PiecesStart<D> start;
+  AdaptationSettings settings;
+};
+
+// Every process at once, with its piece of the mesh at `input` (read and prepared:
+// piece_input_check.hpp) and the path of the metric file (a metric or mmg's sizes per file vertex,
+// each row checked by the process that reads it). `job` as `hocav adapt` makes it: its metric a
+// given one, without gradation or geometry (the set-up of those from pieces is not built); its
+// warnings, said once (give `warn` on rank 0 only), are the serial run's. Throws Error as the
+// serial set-up does (a metric asking for more than the memory holds).
+template <int D>
+PieceSetup<D> set_up_piece(MeshFilePiece<D> piece, const std::string& input, const std::string& metric_path, const AdaptationJob<D>& job);
+
+}  // namespace hocav
