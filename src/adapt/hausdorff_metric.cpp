@@ -17,10 +17,6 @@
 namespace hocav {
 namespace {
 
-// The bound spreads inside at mmg's default gradation (-hgrad 1.3): the metric between the boundary
-// and the back mesh's inner vertices, interpolated, then keeps it.
-constexpr double kHausdorffGradation = 1.3;
-
 // A boundary edge of the back mesh: its ends, a ref of its facets, whether it lies on a feature line
 // (3D), and its sag: from the chord's middle to the geometry.
 template <int D>
@@ -204,7 +200,7 @@ std::vector<SymMat<D>> hausdorff_metrics(const Mesh<D>& mesh, const BoundaryGeom
   const std::vector<std::vector<Index>> at = edges_at_vertices(classified, edges);
   const double diagonal = bounding_box_diagonal(mesh);
   const double floor = 1 / (diagonal * diagonal);
-  std::vector<SymMat<D>> metrics(static_cast<std::size_t>(mesh.vertex_count()), isotropic<D>(floor));
+  std::vector<SymMat<D>> metrics(static_cast<std::size_t>(mesh.vertex_count()), unbounded_metric<D>(diagonal));
   bool finer = false;  // than `given` somewhere
   for (Index v = 0; v < mesh.vertex_count(); ++v) {
     const std::vector<Index>& around = at[static_cast<std::size_t>(v)];
@@ -225,6 +221,11 @@ std::vector<SymMat<D>> hausdorff_metrics(const Mesh<D>& mesh, const BoundaryGeom
   }
   if (finer) grade_metrics(mesh, metrics, {kHausdorffGradation});  // (a whole-mesh sweep: 1 s at a million elements)
   return metrics;
+}
+
+template <int D>
+SymMat<D> unbounded_metric(double diagonal) {
+  return isotropic<D>(1 / (diagonal * diagonal));
 }
 
 template <int D>
@@ -253,5 +254,8 @@ template SymMat<2> within_bound(const SymMat<2>&, const SymMat<2>&);
 template SymMat<3> within_bound(const SymMat<3>&, const SymMat<3>&);
 template Index bound_metrics_by_hausdorff(const Mesh<2>&, std::vector<SymMat<2>>&, const BoundaryGeometry<2>&, const HausdorffBound&);
 template Index bound_metrics_by_hausdorff(const Mesh<3>&, std::vector<SymMat<3>>&, const BoundaryGeometry<3>&, const HausdorffBound&);
+
+template SymMat<2> unbounded_metric(double);
+template SymMat<3> unbounded_metric(double);
 
 }  // namespace hocav

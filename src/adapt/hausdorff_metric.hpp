@@ -27,6 +27,14 @@ struct HausdorffBound {
 // edge's node would fold the first layer's elements (docs/adaptation.md §The Hausdorff bound).
 constexpr double kCurvedRelativeHausd = 1.0;
 
+// The bound spreads inside at mmg's default gradation (-hgrad 1.3): the metric between the boundary
+// and the back mesh's inner vertices, interpolated, then keeps it.
+constexpr double kHausdorffGradation = 1.3;
+
+// The bound where it asks for nothing: sizes of the mesh's bounding-box `diagonal`.
+template <int D>
+SymMat<D> unbounded_metric(double diagonal);
+
 // The bound at every vertex of `mesh` (P1, with its boundary facets), `given` the metric at its
 // vertices: at the boundary vertices where the geometry's curvature asks for smaller sizes than
 // `given`, those sizes, graded into the domain; sizes of the domain's diagonal elsewhere, which ask

@@ -318,20 +318,23 @@ void adapt_in_parts(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptOp
 
 // Whether a distributed run reads its input in pieces, no process holding the whole
 // (docs/distributed.md §Adapting from pieces): one that ends in its parts, from a P1 Gamma file and a
-// metric file, without --hgrad and with --surface none (the set-up of a gradation or a geometry from
-// pieces is not built). Else rank 0 reads the whole input and sets the run up.
+// metric file, its geometry the P3 surrogate or none (a CAD model's set-up from pieces is not
+// built). Else rank 0 reads the whole input and sets the run up.
 bool adapts_from_pieces(const AdaptOptions& o) {
-  return process_count() > 1 && ends_in_parts(o) && !o.metric.empty() && !o.gradation && o.surface == "none" && is_gamma_path(o.input) &&
-         !gamma_mesh_has_p2_keyword(o.input);
+  return process_count() > 1 && ends_in_parts(o) && !o.metric.empty() && boundary_choice_named(o.surface).kind != BoundaryKind::kCad &&
+         is_gamma_path(o.input) && !gamma_mesh_has_p2_keyword(o.input);
 }
 
 // Every process of a run from pieces: its piece read and prepared, the run set up on the pieces
-// together, the distributed loop, and on rank 0 (`outputs` given) the report.
+// together, the distributed loop, and on rank 0 (`outputs` given) the report. False, with nothing
+// done but the reading, when the input has facets inside the domain (pieces_have_inner_facets):
+// rank 0 then reads it whole.
 template <int D>
-void adapt_from_pieces(const AdaptOptions& o, OutputSet* outputs) {
+bool adapt_from_pieces(const AdaptOptions& o, OutputSet* outputs) {
   AdaptationJob<D> job = adaptation_job<D>(o);
   if (!outputs) job.warn = {}, job.pass_progress = {};  // (rank 0 says them)
   MeshFilePiece<D> piece = read_mesh_file_piece<D>(o.input);
+  if (pieces_have_inner_facets(piece.part)) return false;
   prepare_input_piece(piece, o.input, job.warn);
   AdaptationReport report;
   report.input_read_in_pieces = true;
@@ -339,20 +342,23 @@ void adapt_from_pieces(const AdaptOptions& o, OutputSet* outputs) {
   report.input_vertices = piece.vertex_count;
   report.input_elements = piece.element_count;
   PieceSetup<D> setup = set_up_piece(std::move(piece), o.input, o.metric, job);
+  report.hausdorff_bounded_vertices = setup.hausdorff_bounded_vertices;
   std::optional<OutputInParts> output;
+  const BoundaryGeometry<D>* geometry = setup.geometry.get();
   const auto start = std::chrono::steady_clock::now();  // after the set-up, as the serial run's
-  report.run = adapt_distributed_from_pieces<D>(std::move(setup.start), nullptr, setup.settings, o.partition_seed,
+  report.run = adapt_distributed_from_pieces<D>(std::move(setup.start), geometry, setup.settings, o.partition_seed,
                                                 iteration_printer(o, report.distributed_iterations),
-                                                end_in_parts<D>(o, job, nullptr, setup.settings, output));
-  if (outputs) finish_in_parts(report, *output, false, start, o, *outputs);
+                                                end_in_parts<D>(o, job, geometry, setup.settings, output));
+  if (outputs) finish_in_parts(report, *output, geometry != nullptr, start, o, *outputs);
+  return true;
 }
 
 // The other processes: a run from pieces, or rank 0's distributed run from its input.
 void serve_adaptation(const AdaptOptions& o) {
   std::vector<int> plan;  // rank 0's: the dimension of a run from pieces, 0 for a run from its input
   broadcast_values(plan);
-  if (plan.at(0) == 2) return adapt_from_pieces<2>(o, nullptr);
-  if (plan.at(0) == 3) return adapt_from_pieces<3>(o, nullptr);
+  if (plan.at(0) == 2 && adapt_from_pieces<2>(o, nullptr)) return;
+  if (plan.at(0) == 3 && adapt_from_pieces<3>(o, nullptr)) return;
   std::vector<std::byte> input_boundary;
   broadcast_bytes(input_boundary);
   if (packed_dimension(input_boundary) == 2)
@@ -475,8 +481,8 @@ void add_adapt_command(CLI::App& app) {
     if (process_count() > 1) {
       std::vector<int> plan{adapts_from_pieces(*o) ? gamma_mesh_dimension(o->input) : 0};
       broadcast_values(plan);
-      if (plan[0] == 2) return adapt_from_pieces<2>(*o, &outputs);
-      if (plan[0] == 3) return adapt_from_pieces<3>(*o, &outputs);
+      if (plan[0] == 2 && adapt_from_pieces<2>(*o, &outputs)) return;
+      if (plan[0] == 3 && adapt_from_pieces<3>(*o, &outputs)) return;
     }
     MeshFileContent file = read_mesh_file(o->input);
     std::visit([&](auto& mesh) { adapt(mesh, file, *o, outputs); }, file.mesh);

@@ -1,11 +1,17 @@
 #include "parallel/adaptation_from_pieces.hpp"
 
+#include <span>
+#include <unordered_set>
+
+#include "adapt/hausdorff_metric.hpp"
 #include "base/error.hpp"
 #include "base/memory_budget.hpp"
 #include "geom/box.hpp"
 #include "io/node_metrics.hpp"
 #include "io/record_run.hpp"
+#include "parallel/boundary_of_parts.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/distributed_gradation.hpp"
 #include "parallel/gradual_metric.hpp"
 #include "parallel/implied_metric_runs.hpp"
 #include "parallel/metrics_by_global_id.hpp"
@@ -24,14 +30,24 @@ double whole_diagonal(const Mesh<D>& piece) {
   return whole.is_empty() ? 0 : norm(whole.upper - whole.lower);
 }
 
-// The piece's vertices' metrics from the metric file, each row read by the process whose run holds it.
+// This process's run of the metric file's rows.
 template <int D>
-std::vector<SymMat<D>> given_metrics(const MeshFilePiece<D>& piece, const std::string& metric_path) {
-  const RecordRun run{process_rank(), process_count()};
-  long long bytes_sent = 0;
-  const std::vector<SymMat<D>> held = metrics_of_rows<D>(read_metric_run(metric_path, D, piece.vertex_count, run));
-  return metrics_by_global_id<D>(piece.part.global_ids, run.of(piece.vertex_count).first, held, bytes_sent);
-}
+struct MetricRows {
+  Index first = 0;              // the file id of its first vertex
+  std::vector<SymMat<D>> held;  // per vertex of the run
+
+  MetricRows(const std::string& metric_path, Index vertex_count) {
+    const RecordRun run{process_rank(), process_count()};
+    first = run.of(vertex_count).first;
+    held = metrics_of_rows<D>(read_metric_run(metric_path, D, vertex_count, run));
+  }
+
+  // Collective: the metrics of the vertices of global ids `ids`, each asked of the process whose run holds it.
+  std::vector<SymMat<D>> of(std::span<const Index> ids) const {
+    long long bytes_sent = 0;
+    return metrics_by_global_id<D>(ids, first, held, bytes_sent);
+  }
+};
 
 // The piece's vertices' implied metrics, bit for bit the whole mesh's.
 template <int D>
@@ -53,20 +69,64 @@ BackMeshShare<D> home_of_piece(const MeshPart<D>& piece, const AdaptationMetric<
   return home;
 }
 
+// Collective: how many distinct vertices `ids` (global ids, a vertex listed by each process that
+// holds it) name over every process.
+Index distinct_count(const std::vector<Index>& ids) {
+  std::vector<std::vector<Index>> outgoing(static_cast<std::size_t>(process_count()));
+  for (Index id : ids) outgoing[static_cast<std::size_t>(id % process_count())].push_back(id);
+  const std::vector<Index> arrived = exchange_values_joined(outgoing);
+  return sum_over_processes(static_cast<Index>(std::unordered_set<Index>(arrived.begin(), arrived.end()).size()));
+}
+
+// Collective: the Hausdorff bound on the piece's `metrics`, as bound_metrics_by_hausdorff bounds the
+// whole mesh's: the bound at the boundary's vertices from the whole `boundary` every process holds
+// (`boundary_given` the metrics there), graded into the pieces (grade_piece_metrics). Returns how
+// many of the whole mesh's vertices it changed.
+template <int D>
+Index bound_piece_metrics(const MeshPart<D>& piece, const MeshPart<D>& boundary, const std::vector<SymMat<D>>& boundary_given,
+                          const BoundaryGeometry<D>& geometry, const HausdorffBound& bound, double diagonal,
+                          std::vector<SymMat<D>>& metrics) {
+  const std::vector<SymMat<D>> at_boundary = hausdorff_metrics<D>(boundary.mesh, geometry, bound, boundary_given);
+  std::vector<SymMat<D>> bounds(metrics.size(), unbounded_metric<D>(diagonal));
+  const std::vector<Index> places = boundary_indices(piece, boundary.global_ids);
+  for (std::size_t v = 0; v < places.size(); ++v)
+    if (places[v] != kNoIndex) bounds[v] = at_boundary[static_cast<std::size_t>(places[v])];
+  bool finer = false;  // than the given metric, somewhere on the boundary (the same on every process)
+  for (std::size_t b = 0; b < at_boundary.size(); ++b) finer |= within_bound(boundary_given[b], at_boundary[b]) != boundary_given[b];
+  if (finer) grade_piece_metrics(piece, bounds, {kHausdorffGradation});
+  std::vector<Index> changed;
+  for (std::size_t v = 0; v < metrics.size(); ++v) {
+    const SymMat<D> within = within_bound(metrics[v], bounds[v]);
+    if (within != metrics[v]) changed.push_back(piece.global_ids[v]);
+    metrics[v] = within;
+  }
+  return distinct_count(changed);
+}
+
 }  // namespace
 
 template <int D>
 PieceSetup<D> set_up_piece(MeshFilePiece<D> piece, const std::string& input, const std::string& metric_path, const AdaptationJob<D>& job) {
-  if (job.analytic || job.gradation) throw Error("adapting from pieces takes a metric file, without --hgrad");
+  if (job.analytic) throw Error("adapting from pieces takes a metric file");
   Mesh<D>& mesh = piece.part.mesh;
   if (!mesh.has_topology()) mesh.build_topology();
   mesh.orient_boundary_facets_outward();
-  classify_piece_vertices(piece.part, job.angle);
-  warn_if_hausdorff_bounds_nothing(job, false);
-  const double diagonal = whole_diagonal(mesh);
+  const MeshPart<D> boundary = boundary_of_parts(piece.part);
   PieceSetup<D> setup;
+  setup.geometry = job.geometry(boundary.mesh);  // (of the input's boundary, before the classification tags it)
+  classify_piece_vertices(piece.part, boundary, job.angle);
+  warn_if_hausdorff_bounds_nothing(job, setup.geometry != nullptr);
+  const double diagonal = whole_diagonal(mesh);
   setup.settings = job_settings(job, job.hausd.value_or(kRelativeHausd * diagonal));
-  const MetricField<D> field(mesh, given_metrics(piece, metric_path));
+  const MetricRows<D> rows(metric_path, piece.vertex_count);
+  std::vector<SymMat<D>> given = rows.of(piece.part.global_ids);
+  if (setup.geometry) {
+    const HausdorffBound bound{setup.settings.hausd, job.angle, job.hausd_relative.value_or(job.curving ? kCurvedRelativeHausd : 0)};
+    setup.hausdorff_bounded_vertices = bound_piece_metrics(piece.part, boundary, rows.of(boundary.global_ids), *setup.geometry, bound,
+                                                           diagonal, given);
+  }
+  if (job.gradation) grade_piece_metrics(piece.part, given, {*job.gradation});
+  const MetricField<D> field(mesh, given);
   const MetricField<D> input_metric = field.with_metrics(implied_metrics(piece, input));
   const double smallest = -max_over_processes(-smallest_size_at_vertices(mesh, AdaptationMetric<D>(field, job.bounds)));
   const AdaptationMetric<D> metric(field, bounds_above_floor(job, smallest, diagonal));

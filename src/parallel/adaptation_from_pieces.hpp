@@ -5,6 +5,7 @@
 // holds the whole mesh.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "adapt/adaptation_driver.hpp"
@@ -14,19 +15,23 @@
 namespace hocav {
 
 // What a process adapts its piece with: its start (the metric's fields made on the piece, used,
-// and dropped) and the loop's settings.
+// and dropped), the geometry of the input's boundary (null for none), the loop's settings.
 template <int D>
 struct PieceSetup {
   PiecesStart<D> start;
+  std::unique_ptr<BoundaryGeometry<D>> geometry;
   AdaptationSettings settings;
+  Index hausdorff_bounded_vertices = 0;  // the whole mesh's vertices whose metric the Hausdorff bound made finer
 };
 
 // Every process at once, with its piece of the mesh at `input` (read and prepared:
 // piece_input_check.hpp) and the path of the metric file (a metric or mmg's sizes per file vertex,
-// each row checked by the process that reads it). `job` as `hocav adapt` makes it: its metric a
-// given one, without gradation or geometry (the set-up of those from pieces is not built); its
-// warnings, said once (give `warn` on rank 0 only), are the serial run's. Throws Error as the
-// serial set-up does (a metric asking for more than the memory holds).
+// each row checked by the process that reads it). `job` as `hocav adapt` makes it, its metric a
+// given one; its geometry is made of the whole boundary, which every process gathers
+// (boundary_of_parts); the Hausdorff bound and the gradation are graded across the pieces
+// (grade_piece_metrics), not the serial metric to the last bits. Its warnings, said once (give
+// `warn` on rank 0 only), are the serial run's. Throws Error as the serial set-up does (a metric
+// asking for more than the memory holds).
 template <int D>
 PieceSetup<D> set_up_piece(MeshFilePiece<D> piece, const std::string& input, const std::string& metric_path, const AdaptationJob<D>& job);
 

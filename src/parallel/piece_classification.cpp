@@ -3,7 +3,6 @@
 #include <unordered_set>
 
 #include "adapt/vertex_classes.hpp"
-#include "parallel/boundary_of_parts.hpp"
 
 namespace hocav {
 namespace {
@@ -65,12 +64,11 @@ void add_found_features(MeshPart<D>& piece, const FoundFeatures& found) {
 }  // namespace
 
 template <int D>
-void classify_piece_vertices(MeshPart<D>& piece, double feature_angle_degrees) {
-  MeshPart<D> boundary = boundary_of_parts(piece);
+void classify_piece_vertices(MeshPart<D>& piece, MeshPart<D> boundary, double feature_angle_degrees) {
   add_found_features(piece, classify_boundary(boundary, feature_angle_degrees));
 }
 
-template void classify_piece_vertices(MeshPart<2>&, double);
-template void classify_piece_vertices(MeshPart<3>&, double);
+template void classify_piece_vertices(MeshPart<2>&, MeshPart<2>, double);
+template void classify_piece_vertices(MeshPart<3>&, MeshPart<3>, double);
 
 }  // namespace hocav

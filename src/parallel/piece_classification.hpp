@@ -7,12 +7,12 @@
 
 namespace hocav {
 
-// Every process at once, each with its piece (prepared, its facets ordered outward). Gathers the
-// whole boundary on every process (boundary_of_parts), classifies it there as classify_vertices
-// classifies the whole mesh, and adds to each piece the corners it holds and the feature lines
-// along its elements' edges, so the parts carry them. The non-manifold places are not looked for
-// (nor are they by the pieces' check, piece_input_check.hpp).
+// Each process with its piece (prepared, its facets ordered outward) and the whole boundary of the
+// pieces (boundary_of_parts, the same on every process): classifies a copy of the boundary as
+// classify_vertices classifies the whole mesh, and adds to the piece the corners it holds and the
+// feature lines along its elements' edges, so the parts carry them. The non-manifold places are
+// not looked for (nor are they by the pieces' check, piece_input_check.hpp).
 template <int D>
-void classify_piece_vertices(MeshPart<D>& piece, double feature_angle_degrees);
+void classify_piece_vertices(MeshPart<D>& piece, MeshPart<D> boundary, double feature_angle_degrees);
 
 }  // namespace hocav
