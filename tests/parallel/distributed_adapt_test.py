@@ -218,7 +218,8 @@ def check_from_pieces(hocav, mpirun, work):
     metric 100 times finer than the input too: the gradual metric's steps from the pieces, and with
     --hgrad, graded across the pieces), and on a square, the checks of the module's docstring against
     the serial run; with two materials and facets between them, rank 0 reads the input whole; a
-    metric file that does not fit the mesh is refused as the serial run refuses it."""
+    metric file that does not fit the mesh is refused as the serial run refuses it; with gmsh, a CAD
+    model serves a run from pieces (check_cad_from_pieces)."""
     run([hocav, "convert", "cube.meshb", "cube.mesh"], work)
     untagged_copy(work, "cube.mesh", "bare.mesh")
     assert "Corners" not in keywords(os.path.join(work, "bare.mesh"))
@@ -233,6 +234,35 @@ def check_from_pieces(hocav, mpirun, work):
                         pieces=True)
     refused(mpirun, hocav, work, ["adapt", "cube.meshb", "--metric", "square.solb", "--surface", "none", "-o", "refused.meshb"],
             "refused.meshb", "square.solb: Dimension: the solution is 2D but the mesh is 3D")
+    if os.environ.get("HOCAV_WITH_GMSH", "0") in ("1", "ON", "TRUE"):
+        check_cad_from_pieces(hocav, mpirun, work)
+    else:
+        print("the CAD case skipped: hocav was built without gmsh")
+
+
+def check_cad_from_pieces(hocav, mpirun, work):
+    """An annulus and its CAD model (circles of radii 0.5 and 1) from pieces on 3 processes, curved
+    (--order 2) in the parts: valid, every boundary vertex and P2 node on its circle, the unit share
+    and mean quality at least 99% of the serial run's."""
+    run([hocav, "generate", "annulus", "--h", "0.2", "-o", "annulus.meshb", "--cad-out", "annulus.step"], work)
+    run([hocav, "metric", "annulus.meshb", "--analytic", "uniform", "--h", "0.08", "-o", "annulus.solb"], work)
+    adapt = ["adapt", "annulus.meshb", "--metric", "annulus.solb", "--surface", "cad:annulus.step", "--threads", "1", "-q"]
+    run([hocav] + adapt + ["-o", "cad_serial.meshb", "--report", "cad_serial.json"], work)
+    run(mpirun + ["-np", "3", hocav] + adapt + ["-o", "cad.meshb", "--report", "cad.json"], work)
+    reports = [json.load(open(os.path.join(work, name))) for name in ("cad.json", "cad_serial.json")]
+    assert reports[0]["input_read_in_pieces"], "the CAD case: not read in pieces"
+    check_valid(stats(hocav, "cad.meshb", work), "the CAD case")
+    run([hocav, "convert", "cad.meshb", "cad.mesh"], work)
+    mesh = keywords(os.path.join(work, "cad.mesh"))
+    points = [(float(record[0]), float(record[1])) for record in mesh["Vertices"]]
+    radii = [(points[int(v) - 1][0] ** 2 + points[int(v) - 1][1] ** 2) ** 0.5 for record in mesh["EdgesP2"] for v in record[:3]]
+    off = max(min(abs(r - 0.5), abs(r - 1)) for r in radii)
+    print(f"the CAD case: {len(radii)} boundary points, farthest {off:.2e} off their circle; unit "
+          f"{reports[0]['edge_length']['unit_share']:.4f} (serial {reports[1]['edge_length']['unit_share']:.4f}), mean quality "
+          f"{reports[0]['quality']['mean']:.4f} ({reports[1]['quality']['mean']:.4f})")
+    assert off <= 1e-9, f"the CAD case: a boundary point {off} off its circle"
+    for group, key in (("edge_length", "unit_share"), ("quality", "mean")):
+        assert reports[0][group][key] >= (1 - TOLERANCE) * reports[1][group][key], f"the CAD case: {group} {key}"
 
 
 def check(hocav, mpirun, work):

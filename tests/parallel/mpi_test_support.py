@@ -86,7 +86,8 @@ def keywords(path):
     """A text .mesh as {keyword: [record, ...]}, each record a tuple of its words."""
     words = open(path).read().split()
     dimension = int(words[words.index("Dimension") + 1])
-    widths = {"Vertices": dimension + 1, "Edges": 3, "Triangles": 4, "Tetrahedra": 5}  # the tag lists: 1
+    widths = {"Vertices": dimension + 1, "Edges": 3, "Triangles": 4, "Tetrahedra": 5, "EdgesP2": 4, "TrianglesP2": 7,
+              "TetrahedraP2": 11}  # the tag lists: 1
     out, i = {}, 0
     while words[i] != "End":
         name = words[i]
