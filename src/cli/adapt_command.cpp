@@ -318,9 +318,11 @@ void adapt_in_parts(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptOp
 
 // Whether a distributed run reads its input in pieces, no process holding the whole
 // (docs/distributed.md §Adapting from pieces): one that ends in its parts, from a P1 Gamma file and a
-// metric file. Else rank 0 reads the whole input and sets the run up.
+// metric file, an analytic metric or the implied one. Else rank 0 reads the whole input and sets the
+// run up.
 bool adapts_from_pieces(const AdaptOptions& o) {
-  return process_count() > 1 && ends_in_parts(o) && !o.metric.empty() && is_gamma_path(o.input) && !gamma_mesh_has_p2_keyword(o.input);
+  return process_count() > 1 && ends_in_parts(o) && (!o.metric.empty() || !o.analytic.empty() || o.implied) && is_gamma_path(o.input) &&
+         !gamma_mesh_has_p2_keyword(o.input);
 }
 
 // Every process of a run from pieces: its piece read and prepared, the run set up on the pieces

@@ -4,11 +4,11 @@
 #include <unordered_set>
 
 #include "adapt/hausdorff_metric.hpp"
-#include "base/error.hpp"
 #include "base/memory_budget.hpp"
 #include "geom/box.hpp"
 #include "io/node_metrics.hpp"
 #include "io/record_run.hpp"
+#include "metric/analytic_metric.hpp"
 #include "parallel/boundary_of_parts.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_gradation.hpp"
@@ -36,6 +36,7 @@ struct MetricRows {
   Index first = 0;              // the file id of its first vertex
   std::vector<SymMat<D>> held;  // per vertex of the run
 
+  MetricRows(Index run_first, std::vector<SymMat<D>> run) : first(run_first), held(std::move(run)) {}
   MetricRows(const std::string& metric_path, Index vertex_count) {
     const RecordRun run{process_rank(), process_count()};
     first = run.of(vertex_count).first;
@@ -48,14 +49,6 @@ struct MetricRows {
     return metrics_by_global_id<D>(ids, first, held, bytes_sent);
   }
 };
-
-// The piece's vertices' implied metrics, bit for bit the whole mesh's.
-template <int D>
-std::vector<SymMat<D>> implied_metrics(const MeshFilePiece<D>& piece, const std::string& input) {
-  const VertexRunMetrics<D> run = implied_metric_by_runs(piece.part, piece.vertex_count, input);
-  long long bytes_sent = 0;
-  return metrics_by_global_id<D>(piece.part.global_ids, run.first, run.metrics, bytes_sent);
-}
 
 // The piece as its home share of the back mesh: its elements and vertices, and per field
 // (share_log_metrics) the log-metric at each vertex.
@@ -78,36 +71,94 @@ Index distinct_count(const std::vector<Index>& ids) {
   return sum_over_processes(static_cast<Index>(std::unordered_set<Index>(arrived.begin(), arrived.end()).size()));
 }
 
-// Collective: the Hausdorff bound on the piece's `metrics`, as bound_metrics_by_hausdorff bounds the
-// whole mesh's: the bound at the boundary's vertices from the whole `boundary` every process holds
-// (`boundary_given` the metrics there), graded into the pieces (grade_piece_metrics). Returns how
-// many of the whole mesh's vertices it changed.
+// Collective: the Hausdorff bound at the piece's vertices, as hausdorff_metrics makes it on the whole
+// mesh: at the boundary's vertices from the whole `boundary` every process holds (`boundary_given`
+// the given metrics there), graded into the pieces (grade_piece_metrics).
 template <int D>
-Index bound_piece_metrics(const MeshPart<D>& piece, const MeshPart<D>& boundary, const std::vector<SymMat<D>>& boundary_given,
-                          const BoundaryGeometry<D>& geometry, const HausdorffBound& bound, double diagonal,
-                          std::vector<SymMat<D>>& metrics) {
+std::vector<SymMat<D>> piece_hausdorff_bounds(const MeshPart<D>& piece, const MeshPart<D>& boundary,
+                                              const std::vector<SymMat<D>>& boundary_given, const BoundaryGeometry<D>& geometry,
+                                              const HausdorffBound& bound, double diagonal) {
   const std::vector<SymMat<D>> at_boundary = hausdorff_metrics<D>(boundary.mesh, geometry, bound, boundary_given);
-  std::vector<SymMat<D>> bounds(metrics.size(), unbounded_metric<D>(diagonal));
+  std::vector<SymMat<D>> bounds(piece.global_ids.size(), unbounded_metric<D>(diagonal));
   const std::vector<Index> places = boundary_indices(piece, boundary.global_ids);
   for (std::size_t v = 0; v < places.size(); ++v)
     if (places[v] != kNoIndex) bounds[v] = at_boundary[static_cast<std::size_t>(places[v])];
   bool finer = false;  // than the given metric, somewhere on the boundary (the same on every process)
   for (std::size_t b = 0; b < at_boundary.size(); ++b) finer |= within_bound(boundary_given[b], at_boundary[b]) != boundary_given[b];
   if (finer) grade_piece_metrics(piece, bounds, {kHausdorffGradation});
+  return bounds;
+}
+
+// Collective: how many of the whole mesh's vertices `bounds` makes finer than `given` (per piece vertex).
+template <int D>
+Index bounded_vertex_count(const MeshPart<D>& piece, const std::vector<SymMat<D>>& given, const std::vector<SymMat<D>>& bounds) {
   std::vector<Index> changed;
-  for (std::size_t v = 0; v < metrics.size(); ++v) {
-    const SymMat<D> within = within_bound(metrics[v], bounds[v]);
-    if (within != metrics[v]) changed.push_back(piece.global_ids[v]);
-    metrics[v] = within;
-  }
+  for (std::size_t v = 0; v < given.size(); ++v)
+    if (within_bound(given[v], bounds[v]) != given[v]) changed.push_back(piece.global_ids[v]);
   return distinct_count(changed);
+}
+
+// The metric on a piece before its size bounds: a field of the given metric (a file's rows or the
+// implied metric), or the analytic metric with the field of its Hausdorff bound where it has one;
+// and the input's own metric.
+template <int D>
+struct PieceMetric {
+  std::optional<MetricField<D>> field;
+  std::optional<MetricField<D>> input_metric;
+  Index hausdorff_bounded_vertices = 0;
+
+  AdaptationMetric<D> within(const AdaptationJob<D>& job, const SizeBounds& bounds) const {
+    if (job.analytic) return AdaptationMetric<D>(*job.analytic, bounds, field ? &*field : nullptr);
+    return AdaptationMetric<D>(*field, bounds);
+  }
+};
+
+// What a piece's metric is made of.
+template <int D>
+struct PieceMetricInputs {
+  const MeshPart<D>& boundary;
+  const BoundaryGeometry<D>* geometry;
+  HausdorffBound bound;
+  double diagonal;
+  std::string metric_path;  // empty: the analytic metric, or else the implied one
+  std::string input;        // the mesh file's path
+};
+
+// Collective: the piece's metric as make_job_metric makes the whole's: the Hausdorff bound, then
+// the gradation.
+template <int D>
+PieceMetric<D> piece_metric(const MeshFilePiece<D>& piece, const AdaptationJob<D>& job, const PieceMetricInputs<D>& in) {
+  const Mesh<D>& mesh = piece.part.mesh;
+  VertexRunMetrics<D> implied = implied_metric_by_runs(piece.part, piece.vertex_count, in.input);  // (bit for bit the whole mesh's)
+  const MetricRows<D> own_rows(implied.first, std::move(implied.metrics));
+  std::optional<MetricRows<D>> file_rows;
+  if (!in.metric_path.empty()) file_rows.emplace(in.metric_path, piece.vertex_count);
+  const MetricRows<D>& rows = file_rows ? *file_rows : own_rows;
+  std::vector<SymMat<D>> given = job.analytic ? analytic_metric_at_vertices(*job.analytic, mesh) : rows.of(piece.part.global_ids);
+  PieceMetric<D> out;
+  if (in.geometry) {
+    const std::vector<SymMat<D>> at_boundary = job.analytic ? analytic_metric_at_vertices(*job.analytic, in.boundary.mesh)
+                                                            : rows.of(in.boundary.global_ids);
+    const std::vector<SymMat<D>> bounds = piece_hausdorff_bounds(piece.part, in.boundary, at_boundary, *in.geometry, in.bound, in.diagonal);
+    out.hausdorff_bounded_vertices = bounded_vertex_count(piece.part, given, bounds);
+    if (job.analytic && out.hausdorff_bounded_vertices > 0) out.field.emplace(mesh, bounds);
+    if (!job.analytic)
+      for (std::size_t v = 0; v < given.size(); ++v) given[v] = within_bound(given[v], bounds[v]);
+  }
+  if (job.gradation) grade_piece_metrics(piece.part, given, {*job.gradation});
+  if (!job.analytic) out.field.emplace(mesh, given);
+  const std::vector<SymMat<D>> own = own_rows.of(piece.part.global_ids);
+  if (out.field)
+    out.input_metric.emplace(out.field->with_metrics(own));
+  else
+    out.input_metric.emplace(mesh, own);
+  return out;
 }
 
 }  // namespace
 
 template <int D>
 PieceSetup<D> set_up_piece(MeshFilePiece<D> piece, const std::string& input, const std::string& metric_path, const AdaptationJob<D>& job) {
-  if (job.analytic) throw Error("adapting from pieces takes a metric file");
   Mesh<D>& mesh = piece.part.mesh;
   if (!mesh.has_topology()) mesh.build_topology();
   mesh.orient_boundary_facets_outward();
@@ -118,21 +169,15 @@ PieceSetup<D> set_up_piece(MeshFilePiece<D> piece, const std::string& input, con
   warn_if_hausdorff_bounds_nothing(job, setup.geometry != nullptr);
   const double diagonal = whole_diagonal(mesh);
   setup.settings = job_settings(job, job.hausd.value_or(kRelativeHausd * diagonal));
-  const MetricRows<D> rows(metric_path, piece.vertex_count);
-  std::vector<SymMat<D>> given = rows.of(piece.part.global_ids);
-  if (setup.geometry) {
-    const HausdorffBound bound{setup.settings.hausd, job.angle, job.hausd_relative.value_or(job.curving ? kCurvedRelativeHausd : 0)};
-    setup.hausdorff_bounded_vertices = bound_piece_metrics(piece.part, boundary, rows.of(boundary.global_ids), *setup.geometry, bound,
-                                                           diagonal, given);
-  }
-  if (job.gradation) grade_piece_metrics(piece.part, given, {*job.gradation});
-  const MetricField<D> field(mesh, given);
-  const MetricField<D> input_metric = field.with_metrics(implied_metrics(piece, input));
-  const double smallest = -max_over_processes(-smallest_size_at_vertices(mesh, AdaptationMetric<D>(field, job.bounds)));
-  const AdaptationMetric<D> metric(field, bounds_above_floor(job, smallest, diagonal));
+  const HausdorffBound bound{setup.settings.hausd, job.angle, job.hausd_relative.value_or(job.curving ? kCurvedRelativeHausd : 0)};
+  const PieceMetric<D> given = piece_metric(piece, job, {boundary, setup.geometry.get(), bound, diagonal, metric_path, input});
+  setup.hausdorff_bounded_vertices = given.hausdorff_bounded_vertices;
+  const double smallest = -max_over_processes(-smallest_size_at_vertices(mesh, given.within(job, job.bounds)));
+  const AdaptationMetric<D> metric = given.within(job, bounds_above_floor(job, smallest, diagonal));
   const double expected = sum_over_processes(expected_element_count(mesh, metric));
   check_memory_fits("adapting " + input + " (the metric asks for about " + std::to_string(static_cast<long long>(expected)) + " elements)",
                     expected, kAdaptationBytesPerElement);
+  const MetricField<D>& input_metric = *given.input_metric;
   PiecesStart<D>& start = setup.start;
   start.steps = max_over_processes(gradual_steps(mesh, input_metric, metric, kDistributedIterations - 1));
   start.loads = expected_element_counts(mesh, metric.partway_from(input_metric, gradual_fraction(1, start.steps)));

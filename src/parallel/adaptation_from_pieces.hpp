@@ -26,12 +26,12 @@ struct PieceSetup {
 
 // Every process at once, with its piece of the mesh at `input` (read and prepared:
 // piece_input_check.hpp) and the path of the metric file (a metric or mmg's sizes per file vertex,
-// each row checked by the process that reads it). `job` as `hocav adapt` makes it, its metric a
-// given one; its geometry is made of the whole boundary, which every process gathers
-// (boundary_of_parts); the Hausdorff bound and the gradation are graded across the pieces
-// (grade_piece_metrics), not the serial metric to the last bits. Its warnings, said once (give
-// `warn` on rank 0 only), are the serial run's. Throws Error as the serial set-up does (a metric
-// asking for more than the memory holds).
+// each row checked by the process that reads it; empty: the job's analytic metric, or else the
+// input's implied metric). `job` as `hocav adapt` makes it; its geometry is made of the whole
+// boundary, which every process gathers (boundary_of_parts); the Hausdorff bound and the gradation
+// are graded across the pieces (grade_piece_metrics), not the serial metric to the last bits. Its
+// warnings, said once (give `warn` on rank 0 only), are the serial run's. Throws Error as the
+// serial set-up does (a metric asking for more than the memory holds).
 template <int D>
 PieceSetup<D> set_up_piece(MeshFilePiece<D> piece, const std::string& input, const std::string& metric_path, const AdaptationJob<D>& job);
 
