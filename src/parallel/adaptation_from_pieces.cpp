@@ -30,7 +30,8 @@ double whole_diagonal(const Mesh<D>& piece) {
   return whole.is_empty() ? 0 : norm(whole.upper - whole.lower);
 }
 
-// This process's run of the metric file's rows.
+// This process's run of a metric given per file vertex: the metric file's rows, or the implied
+// metric's run.
 template <int D>
 struct MetricRows {
   Index first = 0;              // the file id of its first vertex
