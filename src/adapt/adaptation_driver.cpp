@@ -91,7 +91,7 @@ void bound_analytic_metric(AdaptationSetup<D>& out, const Mesh<D>& input, const 
 
 template <int D>
 void make_job_metric(AdaptationSetup<D>& out, const Mesh<D>& input, std::vector<SymMat<D>> metrics, const AdaptationJob<D>& job) {
-  const HausdorffBound bound{out.settings.hausd, job.angle, job.hausd_relative.value_or(job.curving ? kCurvedRelativeHausd : 0)};
+  const HausdorffBound bound = hausdorff_bound_of(job, out.settings.hausd);
   if (job.analytic && out.geometry) bound_analytic_metric(out, input, *job.analytic, bound);
   if (!job.analytic) {
     if (out.geometry) out.hausdorff_bounded_vertices = bound_metrics_by_hausdorff(input, metrics, *out.geometry, bound);
@@ -143,6 +143,17 @@ void warn_if_hausdorff_bounds_nothing(const AdaptationJob<D>& job, bool has_geom
 }
 
 template <int D>
+HausdorffBound hausdorff_bound_of(const AdaptationJob<D>& job, double hausd) {
+  return {hausd, job.angle, job.hausd_relative.value_or(job.curving ? kCurvedRelativeHausd : 0)};
+}
+
+void check_adaptation_fits(const std::string& name, double expected_elements) {
+  check_memory_fits(
+      "adapting " + name + " (the metric asks for about " + std::to_string(static_cast<long long>(expected_elements)) + " elements)",
+      expected_elements, kAdaptationBytesPerElement);
+}
+
+template <int D>
 AdaptationSettings job_settings(const AdaptationJob<D>& job, double hausd) {
   AdaptationSettings settings;
   settings.max_passes = job.iterations;
@@ -162,9 +173,7 @@ std::unique_ptr<AdaptationSetup<D>> set_up_adaptation(const Mesh<D>& input, std:
   warn_if_hausdorff_bounds_nothing(job, setup->geometry != nullptr);
   setup->settings = job_settings(job, job.hausd.value_or(kRelativeHausd * bounding_box_diagonal(input)));
   make_job_metric(*setup, input, std::move(metrics), job);
-  const double expected = expected_element_count(input, *setup->metric);
-  check_memory_fits("adapting " + name + " (the metric asks for about " + std::to_string(static_cast<long long>(expected)) + " elements)",
-                    expected, kAdaptationBytesPerElement);
+  check_adaptation_fits(name, expected_element_count(input, *setup->metric));
   return setup;
 }
 
@@ -199,6 +208,8 @@ template SizeBounds bounds_above_floor(const AdaptationJob<2>&, double, double);
 template SizeBounds bounds_above_floor(const AdaptationJob<3>&, double, double);
 template void warn_if_hausdorff_bounds_nothing(const AdaptationJob<2>&, bool);
 template void warn_if_hausdorff_bounds_nothing(const AdaptationJob<3>&, bool);
+template HausdorffBound hausdorff_bound_of(const AdaptationJob<2>&, double);
+template HausdorffBound hausdorff_bound_of(const AdaptationJob<3>&, double);
 template AdaptationSettings job_settings(const AdaptationJob<2>&, double);
 template AdaptationSettings job_settings(const AdaptationJob<3>&, double);
 template void prepare_boundary(Mesh<2>&, const std::string&, const std::function<void(const std::string&)>&);

@@ -11,6 +11,7 @@
 #include "adapt/adaptation_loop.hpp"
 #include "adapt/curved_adaptation.hpp"
 #include "adapt/curving_run.hpp"
+#include "adapt/hausdorff_metric.hpp"
 #include "report/adaptation_report.hpp"
 
 namespace hocav {
@@ -98,6 +99,15 @@ SizeBounds bounds_above_floor(const AdaptationJob<D>& job, double smallest_asked
 // Says through job.warn that a Hausdorff bound the job gives bounds nothing without a geometry.
 template <int D>
 void warn_if_hausdorff_bounds_nothing(const AdaptationJob<D>& job, bool has_geometry);
+
+// The job's Hausdorff bound with distance `hausd` (the settings'): its relative bound, by default
+// kCurvedRelativeHausd with curving and none without.
+template <int D>
+HausdorffBound hausdorff_bound_of(const AdaptationJob<D>& job, double hausd);
+
+// Refuses (Error naming the mesh `name`) an adaptation whose metric asks for more elements than
+// the memory holds.
+void check_adaptation_fits(const std::string& name, double expected_elements);
 
 // The loop's settings of a job; `hausd` the Hausdorff distance (the job's, or its default from the input).
 template <int D>

@@ -4,7 +4,6 @@
 #include <unordered_set>
 
 #include "adapt/hausdorff_metric.hpp"
-#include "base/memory_budget.hpp"
 #include "geom/box.hpp"
 #include "io/node_metrics.hpp"
 #include "io/record_run.hpp"
@@ -170,14 +169,12 @@ PieceSetup<D> set_up_piece(MeshFilePiece<D> piece, const std::string& input, con
   warn_if_hausdorff_bounds_nothing(job, setup.geometry != nullptr);
   const double diagonal = whole_diagonal(mesh);
   setup.settings = job_settings(job, job.hausd.value_or(kRelativeHausd * diagonal));
-  const HausdorffBound bound{setup.settings.hausd, job.angle, job.hausd_relative.value_or(job.curving ? kCurvedRelativeHausd : 0)};
+  const HausdorffBound bound = hausdorff_bound_of(job, setup.settings.hausd);
   const PieceMetric<D> given = piece_metric(piece, job, {boundary, setup.geometry.get(), bound, diagonal, metric_path, input});
   setup.hausdorff_bounded_vertices = given.hausdorff_bounded_vertices;
   const double smallest = -max_over_processes(-smallest_size_at_vertices(mesh, given.within(job, job.bounds)));
   const AdaptationMetric<D> metric = given.within(job, bounds_above_floor(job, smallest, diagonal));
-  const double expected = sum_over_processes(expected_element_count(mesh, metric));
-  check_memory_fits("adapting " + input + " (the metric asks for about " + std::to_string(static_cast<long long>(expected)) + " elements)",
-                    expected, kAdaptationBytesPerElement);
+  check_adaptation_fits(input, sum_over_processes(expected_element_count(mesh, metric)));
   const MetricField<D>& input_metric = *given.input_metric;
   PiecesStart<D>& start = setup.start;
   start.steps = max_over_processes(gradual_steps(mesh, input_metric, metric, kDistributedIterations - 1));
