@@ -7,6 +7,7 @@
 
 #include "adapt/adaptation_mesh.hpp"
 #include "adapt/boundary_settling.hpp"
+#include "adapt/vertex_classes.hpp"
 #include "base/error.hpp"
 #include "mesh/spatial_order.hpp"
 
@@ -146,7 +147,7 @@ bool changed_little(const AdaptationPass& pass) { return changes(pass) <= kConve
 template <int D>
 AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                               const AdaptationSettings& settings) {
-  AdaptationMesh<D> am(mesh, metric, geometry, settings.feature_angle_degrees);
+  AdaptationMesh<D> am(mesh, metric, geometry, settings.ridges_from_shape ? settings.feature_angle_degrees : kRidgesFromTagsOnly);
   AdaptationLimits limits;
   ThreadPool pool(std::max(1, settings.threads));
   if (!settings.first_pass_vertices.empty())

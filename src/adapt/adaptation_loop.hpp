@@ -29,6 +29,11 @@ struct AdaptationSettings {
   // False: no edge with a required vertex is split. A distributed part's interface is required, and
   // splits toward an interface coarser than the metric would never end (docs/distributed.md).
   bool split_at_required_vertices = true;
+  // False: the loop's classification takes its ridges from the mesh's tags and refs only, not from
+  // its shape (kRidgesFromTagsOnly). A distributed part's loop: the whole mesh's shape was classified
+  // once, as the serial loop classifies it, and a crease a part passes through on its way (a facet
+  // far from the surface, mended later) must not become a feature line (docs/distributed.md).
+  bool ridges_from_shape = true;
   // Not empty: per vertex of the input (compact), whether the first pass tries it; it also tries
   // the vertices of every element of quality below kPoorQuality, and later passes what changed, as
   // always. The distributed loop's last run near the interfaces its parts kept frozen, and around

@@ -10,6 +10,10 @@
 
 namespace hocav {
 
+// A feature angle no two facets' normals exceed: classify_vertices then takes its ridges from the
+// mesh's tags, its ref changes and its open or non-manifold sides only.
+constexpr double kRidgesFromTagsOnly = 180;
+
 // Classifies the vertices of a mesh with topology. Ridges found from the shape are added to the
 // mesh as tagged feature lines (3D) or corners (2D ridge vertices), and vertices where the feature
 // lines do not continue (3D: ends and junctions) as corners, so the output carries them. So are the

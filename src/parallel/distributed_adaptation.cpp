@@ -177,6 +177,7 @@ AdaptationRun last_serial_runs(MeshPart<D>& part, const AdaptationMetric<D>& met
                                const AdaptationSettings& settings, const std::vector<char>& seeds) {
   AdaptationSettings last = settings;
   last.split_at_required_vertices = false;
+  last.ridges_from_shape = false;
   last.first_pass_vertices = around_interfaces(part.mesh, seeds);
   last.first_pass_unfinished_edges = true;
   AdaptationRun run = adapt_part_measured(part, metric, geometry, last).first;

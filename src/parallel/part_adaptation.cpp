@@ -93,6 +93,7 @@ AdaptationSettings part_settings(const AdaptationSettings& settings) {
   AdaptationSettings part = settings;
   part.passes_after_window_closes = kEarlyPassesAfterWindowCloses;
   part.split_at_required_vertices = false;
+  part.ridges_from_shape = false;
   return part;
 }
 

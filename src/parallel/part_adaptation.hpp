@@ -17,7 +17,7 @@ namespace hocav {
 
 // The settings of a part's loop: the run's, splitting no edge at an interface vertex and stopping
 // two passes after the loop's window closes (docs/distributed.md §Frozen interfaces coarser than the
-// metric).
+// metric), its ridges from the tags the whole mesh's classification made (§Parts).
 AdaptationSettings part_settings(const AdaptationSettings& settings);
 
 // A part's wall time and its process's peak memory, for the iteration's figures.
