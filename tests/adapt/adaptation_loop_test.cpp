@@ -334,6 +334,33 @@ TEST(AdaptationLoop, CoarseningAFineMeshInAUniformMetric) {
   EXPECT_LT(mesh.element_count(), before / 4);
 }
 
+// The unit cube with one facet ref and no tags: its edges are ridges of its shape only.
+Mesh<3> untagged_one_ref_cube(int cells_per_side) {
+  const Mesh<3> cube = adapt_test::unit_mesh<3>(cells_per_side);
+  Mesh<3> mesh;
+  for (const auto& point : cube.vertices()) mesh.add_vertex(point);
+  for (Index k = 0; k < cube.element_count(); ++k) mesh.add_element(cube.element(k), 1);
+  for (Index f = 0; f < cube.facet_count(); ++f) mesh.add_facet(cube.facet(f), 1);
+  mesh.build_topology();
+  return mesh;
+}
+
+// A loop told to take its ridges from the tags only (a distributed part's) finds none in the shape;
+// the default finds the cube's twelve edges and eight corners.
+TEST(AdaptationLoop, RidgesComeFromTheShapeUnlessTheTagsAloneAreAsked) {
+  const AdaptationMetric<3> metric = adapt_test::uniform_metric<3>(0.25);
+  Mesh<3> from_shape = untagged_one_ref_cube(3), from_tags = untagged_one_ref_cube(3);
+  adapt_to_metric<3>(from_shape, metric, nullptr, {});
+  AdaptationSettings tags_only;
+  tags_only.ridges_from_shape = false;
+  adapt_to_metric<3>(from_tags, metric, nullptr, tags_only);
+  adapt_test::expect_closed_and_consistent(from_tags);
+  EXPECT_EQ(from_shape.corners().size(), 8U);
+  EXPECT_GE(from_shape.line_count(), 12);
+  EXPECT_EQ(from_tags.corners().size(), 0U);
+  EXPECT_EQ(from_tags.line_count(), 0);
+}
+
 TEST(AdaptationLoop, SizeBoundsClampTheMetric) {
   AnalyticMetricSpec spec;
   spec.name = "uniform";
