@@ -175,9 +175,8 @@ std::vector<char> flags_of_global_ids(const MeshPart<D>& part, const std::vector
 template <int D>
 AdaptationRun last_serial_runs(MeshPart<D>& part, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                                const AdaptationSettings& settings, const std::vector<char>& seeds) {
-  AdaptationSettings last = settings;
-  last.split_at_required_vertices = false;
-  last.ridges_from_shape = false;
+  AdaptationSettings last = part_settings(settings);  // a part's loop, the last word: no early stop
+  last.passes_after_window_closes = -1;
   last.first_pass_vertices = around_interfaces(part.mesh, seeds);
   last.first_pass_unfinished_edges = true;
   AdaptationRun run = adapt_part_measured(part, metric, geometry, last).first;
