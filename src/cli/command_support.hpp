@@ -40,8 +40,8 @@ class CurvingProgress {
 };
 
 // Whether a distributed run (several processes) writes `output` in runs from its parts: a Gamma file
-// without a .vtu beside it (`vtu` empty), which would need the whole mesh on rank 0.
-bool writes_output_in_runs(const std::string& output, const std::string& vtu);
+// (its .vtu, if any, is written in runs too).
+bool writes_output_in_runs(const std::string& output);
 
 // A round of a distributed curving (docs/distributed.md §Curving) on stderr.
 void print_curving_round(const DistributedCurvingRound& figures);

@@ -2,8 +2,8 @@
 // Reads any supported mesh, writes it in the format of OUT's extension. A metric given with the
 // mesh is checked and carried to the output's node numbering; everything is validated before the
 // first byte is written, and the mesh and its metric replace their targets together or not at all.
-// Under mpirun a P1 Gamma mesh is read in pieces and written in runs (docs/distributed.md §Writing
-// in runs).
+// Under mpirun a P1 Gamma mesh is read in pieces and written in runs, as a Gamma mesh or a .vtu
+// (docs/distributed.md §Writing in runs, §A .vtu in runs).
 #include <algorithm>
 #include <iostream>
 #include <memory>
@@ -19,6 +19,7 @@
 #include "parallel/communicator.hpp"
 #include "parallel/mesh_file_pieces.hpp"
 #include "parallel/mesh_file_runs.hpp"
+#include "parallel/vtu_file_runs.hpp"
 #include "report/curved_vtu.hpp"
 #include "report/mesh_summary.hpp"
 
@@ -90,6 +91,11 @@ void declare_convert_files(OutputSet& outputs, const ConvertOptions& options) {
 template <int D>
 std::string convert_in_pieces(const ConvertOptions& options) {
   const MeshFilePiece<D> piece = read_mesh_file_piece<D>(options.input);
+  if (file_extension(options.output) == ".vtu") {  // (docs/distributed.md §A .vtu in runs)
+    write_vtu_runs(options.output, piece.part.mesh, {{}, jacobian_cell_fields(piece.part.mesh)});
+    return "wrote " + options.output + ": " + std::to_string(sum_over_processes(piece.part.mesh.element_count())) + " elements (in " +
+           std::to_string(process_count()) + " pieces, a vertex of several once in each)\n";
+  }
   const auto file_facets = static_cast<std::size_t>(std::find(piece.facet_ids.begin(), piece.facet_ids.end(), kNoIndex) -
                                                     piece.facet_ids.begin());
   const MeshFileCounts counts = write_mesh_runs(
@@ -103,9 +109,11 @@ void run_convert_in_pieces(const ConvertOptions& options) {
   if (!options.metric.empty() || options.order == 2)
     throw Error(
         "under mpirun, hocav convert writes P1 Gamma meshes alone: no --metric, no --order 2 (docs/distributed.md §Writing in runs)");
-  for (const std::string& path : {options.input, options.output})
-    if (const std::string extension = file_extension(path); extension != ".mesh" && extension != ".meshb")
-      throw Error(path + ": under mpirun, hocav convert reads and writes Gamma meshes (.mesh, .meshb) in pieces, not '" + extension + "'");
+  if (const std::string extension = file_extension(options.input); extension != ".mesh" && extension != ".meshb")
+    throw Error(options.input + ": under mpirun, hocav convert reads Gamma meshes (.mesh, .meshb) in pieces, not '" + extension + "'");
+  if (const std::string extension = file_extension(options.output); extension != ".mesh" && extension != ".meshb" && extension != ".vtu")
+    throw Error(options.output + ": under mpirun, hocav convert writes Gamma meshes (.mesh, .meshb) or a .vtu in runs, not '" + extension +
+                "'");
   std::optional<OutputSet> outputs;  // rank 0's, which checks the paths and writes the file's keywords
   if (process_rank() == 0) {
     outputs.emplace();

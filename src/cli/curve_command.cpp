@@ -4,10 +4,11 @@
 // cavity operator, and write the curved P2 mesh with the Table-1 figures. Under `mpirun -np N`
 // (N > 1) the curving is distributed: every process reads its piece of a P1 Gamma input (else rank 0
 // reads the input and scatters it), the parts curve themselves and write a Gamma output in runs
-// (docs/distributed.md §Curving from pieces, §Curving in the parts); for a .vtu or another format,
-// rank 0 reads the input, gathers the curved mesh and writes it (§Curving).
+// (docs/distributed.md §Curving from pieces, §Curving in the parts), and a .vtu beside it (§A .vtu
+// in runs); for another format, rank 0 reads the input, gathers the curved mesh and writes it (§Curving).
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <utility>
 
 #include "base/memory_budget.hpp"
@@ -28,6 +29,7 @@
 #include "parallel/piece_input_check.hpp"
 #include "parallel/pieces_into_parts.hpp"
 #include "parallel/root_mesh_scatter.hpp"
+#include "parallel/vtu_file_runs.hpp"
 #include "report/curved_vtu.hpp"
 #include "report/curving_report.hpp"
 #include "surface/boundary_choice.hpp"
@@ -58,9 +60,9 @@ CurvingReport curve_with_progress(Mesh<D>& mesh, const MetricField<D>& field, co
   return report;
 }
 
-// Whether a distributed curving ends in its parts, which write the output in runs: a Gamma output
-// without a .vtu; else rank 0 gathers the curved mesh.
-bool curves_in_parts(const CurveOptions& options) { return writes_output_in_runs(options.output, options.vtu); }
+// Whether a distributed curving ends in its parts, which write the output (and its .vtu) in runs: a
+// Gamma output; else rank 0 gathers the curved mesh.
+bool curves_in_parts(const CurveOptions& options) { return writes_output_in_runs(options.output); }
 
 // Whether a distributed curving in the parts reads its input in pieces, no process holding the
 // whole (docs/distributed.md §Curving from pieces): a P1 Gamma file. Else rank 0 reads it and
@@ -76,12 +78,17 @@ CurvingInParts curve_parts(ScatteredPart<D> scattered, const CurveOptions& optio
   const PartsGeometryMaker<D> geometry = [choice = boundary_choice_named(options.surface)](const Mesh<D>& boundary) {
     return std::shared_ptr<const BoundaryGeometry<D>>(make_boundary_geometry<D>(choice, boundary));
   };
+  // As the serial run's: the metric field of the input.
+  const std::optional<MetricField<D>> field = options.vtu.empty()
+                                                  ? std::nullopt
+                                                  : std::optional<MetricField<D>>(std::in_place, scattered.part.mesh, scattered.metrics);
   CurvingInParts curving = curve_in_parts(scattered.part, std::move(scattered.metrics), geometry, curving_options(options), false);
   curving.rounds[0].bytes_sent += sum_over_processes(scattered.bytes_sent);
   curving.rounds[0].seconds += scattered.seconds;
   // (The curving keeps the part's elements, facets and lines in their order.)
   count_curved_output(curving.report, write_mesh_runs(options.output, scattered.part, file_extension(options.output) == ".meshb", 0,
                                                       {scattered.element_ids, scattered.facet_ids, scattered.line_ids}));
+  if (field) write_vtu_runs(options.vtu, scattered.part.mesh, curved_vtu_data(scattered.part.mesh, *field));
   return curving;
 }
 

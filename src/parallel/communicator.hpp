@@ -8,6 +8,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "base/index.hpp"
+
 namespace hocav {
 
 // Starts MPI when the process was launched by mpirun (its environment says so) and ends it when
@@ -109,6 +111,21 @@ std::vector<T> all_gather_value(const T& value) {
   for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(std::vector<T>{value})))
     values.push_back(values_of_bytes<T>(bytes).at(0));
   return values;
+}
+
+// The number of entities the processes before this one count, and the sum over all, of every
+// process's `count`.
+struct CountOffset {
+  Index before = 0, total = 0;
+};
+inline CountOffset offset_over_processes(Index count) {
+  CountOffset offset;
+  const std::vector<Index> counts = all_gather_value(count);
+  for (int r = 0; r < process_count(); ++r) {
+    if (r < process_rank()) offset.before += counts[static_cast<std::size_t>(r)];
+    offset.total += counts[static_cast<std::size_t>(r)];
+  }
+  return offset;
 }
 
 // The sum of every process's `value`, on every process.

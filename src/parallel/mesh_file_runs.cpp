@@ -9,12 +9,12 @@
 #include "io/gamma_keyword_writer.hpp"
 #include "io/gamma_keywords.hpp"
 #include "io/gamma_mesh.hpp"
-#include "io/output_set.hpp"
 #include "io/record_run.hpp"
 #include "mesh/simplex.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/entity_tags.hpp"
 #include "parallel/face_key.hpp"
+#include "parallel/file_in_runs.hpp"
 
 namespace hocav {
 namespace {
@@ -93,21 +93,6 @@ std::vector<std::vector<Answer>> answers_for(const std::vector<std::vector<Recor
   std::vector<std::vector<Answer>> answers(arrived.size());
   for (std::size_t from = 0; from < arrived.size(); ++from) answers[from].resize(arrived[from].size());
   return answers;
-}
-
-// The number of entities the processes before this one count, and the sum over all.
-struct Offset {
-  Index before = 0, total = 0;
-};
-
-Offset offset_of(Index count) {
-  Offset offset;
-  const std::vector<Index> counts = all_gather_value(count);
-  for (int r = 0; r < process_count(); ++r) {
-    if (r < process_rank()) offset.before += counts[static_cast<std::size_t>(r)];
-    offset.total += counts[static_cast<std::size_t>(r)];
-  }
-  return offset;
 }
 
 // One process's records of one keyword, encoded as the file's format writes them.
@@ -206,7 +191,7 @@ class RunsWriter {
     }
     const std::vector<std::vector<VertexRecord<D>>> arrived = exchange_values(outgoing);
     const ArrivalGroups groups = grouped(arrived, [](const VertexRecord<D>& r) { return r.id; });
-    const Offset offset = offset_of(static_cast<Index>(groups.count()));
+    const CountOffset offset = offset_over_processes(static_cast<Index>(groups.count()));
     counts_.vertices = offset.total;
     first_vertex_ = offset.before;
     std::vector<std::vector<VertexNumber>> answers = answers_for<VertexNumber>(arrived);
@@ -256,7 +241,7 @@ class RunsWriter {
     }
     const std::vector<std::vector<SharedEdge<D>>> arrived = exchange_values(outgoing);
     const ArrivalGroups groups = grouped(arrived, [](const SharedEdge<D>& r) { return r.key; });
-    const Offset offset = offset_of(own + static_cast<Index>(groups.count()));
+    const CountOffset offset = offset_over_processes(own + static_cast<Index>(groups.count()));
     counts_.nodes = offset.total;
     const Index first = counts_.vertices + offset.before;  // this process's first node
     node_number_.assign(static_cast<std::size_t>(mesh_.edge_count()), kNoIndex);
@@ -371,7 +356,7 @@ class RunsWriter {
       const Arrival head = groups.order[groups.starts[g]];
       rows.push_back(arrived[static_cast<std::size_t>(head.from)][head.at].line);
     }
-    const Offset offset = offset_of(static_cast<Index>(rows.size()));
+    const CountOffset offset = offset_over_processes(static_cast<Index>(rows.size()));
     counts_.lines = offset.total;
     std::vector<char> flags;  // per line written here, in order
     if (ordered) {
@@ -392,7 +377,7 @@ class RunsWriter {
   }
 
   // The ids of the entities written here (from offset.before on) that carry each flag.
-  void write_tags(const std::vector<char>& flags, const Offset& offset, ChunkRecords& ridges, ChunkRecords& required) const {
+  void write_tags(const std::vector<char>& flags, const CountOffset& offset, ChunkRecords& ridges, ChunkRecords& required) const {
     ridges = required = records();
     for (std::size_t i = 0; i < flags.size(); ++i) {
       if (flags[i] & kRidgeFlag) write_id(ridges, offset.before + static_cast<Index>(i));
@@ -411,7 +396,7 @@ class RunsWriter {
     std::vector<Index> written;  // the part's facets but the interfaces'
     for (Index f = 0; f < mesh_.facet_count(); ++f)
       if (mesh_.facet_ref(f) != kInterfaceRef) written.push_back(f);
-    const Offset offset = offset_of(static_cast<Index>(written.size()));
+    const CountOffset offset = offset_over_processes(static_cast<Index>(written.size()));
     counts_.facets = offset.total;
     std::vector<char> flags;
     const bool ordered = sum_over_processes(static_cast<int>(!facet_order_.empty())) > 0;
@@ -429,7 +414,7 @@ class RunsWriter {
         flags.push_back(facet_flags(tags, f));
       }
     }
-    const Offset tagged = ordered ? Offset{slice_start(offset.total, process_rank(), process_count()), offset.total} : offset;
+    const CountOffset tagged = ordered ? CountOffset{slice_start(offset.total, process_rank(), process_count()), offset.total} : offset;
     if constexpr (D == 2) {
       write_tags(flags, tagged, ridges_, required_edges_);
     } else {
@@ -440,7 +425,7 @@ class RunsWriter {
 
   // The elements part by part, or in element_order_, window after window of kElementWindow places.
   void encode_elements() {
-    const Offset offset = offset_of(mesh_.element_count());
+    const CountOffset offset = offset_over_processes(mesh_.element_count());
     counts_.elements = offset.total;
     if (sum_over_processes(static_cast<int>(!element_order_.empty())) > 0) {
       std::vector<char> no_flags;
@@ -530,7 +515,6 @@ void RunsWriter<D>::write_keywords(const std::vector<Keyword>& keywords) {
   std::vector<std::vector<std::int64_t>> all;  // per process
   for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(sizes))) all.push_back(values_of_bytes<std::int64_t>(bytes));
   std::vector<std::uint64_t> starts(keywords.size(), 0);  // where each keyword's records begin
-  std::string file;
   if (process_rank() == 0) {
     const auto skeleton = [&](auto&& out) {
       std::size_t slot = 0;
@@ -549,13 +533,9 @@ void RunsWriter<D>::write_keywords(const std::vector<Keyword>& keywords) {
       skeleton(gamma::BinaryKeywordWriter(path_, version_, D));
     else
       skeleton(gamma::TextKeywordWriter(path_, version_, D));
-    const OutputSet* outputs = OutputSet::active();
-    file = outputs ? outputs->written_temporary(path_) : path_;
   }
   broadcast_values(starts);
-  std::vector<char> name(file.begin(), file.end());
-  broadcast_values(name);
-  std::fstream out(std::string(name.begin(), name.end()), std::ios::in | std::ios::out | std::ios::binary);
+  std::fstream out(file_begun_on_rank_0(path_), std::ios::in | std::ios::out | std::ios::binary);
   std::size_t slot = 0;
   for (std::size_t i = 0; i < keywords.size(); ++i) {
     std::uint64_t at = starts[i];

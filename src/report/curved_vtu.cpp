@@ -46,17 +46,24 @@ std::vector<VtuField> jacobian_cell_fields(const Mesh<D>& mesh) {
 }
 
 template <int D>
-void write_curved_vtu(const std::string& path, const Mesh<D>& mesh, const MetricField<D>& field) {
+VtuData curved_vtu_data(const Mesh<D>& mesh, const MetricField<D>& field) {
   VtuData data;
   data.point_fields.push_back(metric_tensor_field<D>(metric_at_nodes(mesh, field)));
   data.cell_fields = jacobian_cell_fields(mesh);
-  write_vtu(path, mesh, data);
+  return data;
+}
+
+template <int D>
+void write_curved_vtu(const std::string& path, const Mesh<D>& mesh, const MetricField<D>& field) {
+  write_vtu(path, mesh, curved_vtu_data(mesh, field));
 }
 
 template VtuField metric_tensor_field<2>(const SolutionField&);
 template VtuField metric_tensor_field<3>(const SolutionField&);
 template std::vector<VtuField> jacobian_cell_fields(const Mesh<2>&);
 template std::vector<VtuField> jacobian_cell_fields(const Mesh<3>&);
+template VtuData curved_vtu_data(const Mesh<2>&, const MetricField<2>&);
+template VtuData curved_vtu_data(const Mesh<3>&, const MetricField<3>&);
 template void write_curved_vtu(const std::string&, const Mesh<2>&, const MetricField<2>&);
 template void write_curved_vtu(const std::string&, const Mesh<3>&, const MetricField<3>&);
 

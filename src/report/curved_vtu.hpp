@@ -21,7 +21,12 @@ VtuField metric_tensor_field(const SolutionField& metric);
 template <int D>
 std::vector<VtuField> jacobian_cell_fields(const Mesh<D>& mesh);
 
-// The curved mesh as a .vtu: the metric at every node (sampled from `field`) and jacobian_cell_fields.
+// The data of a curved mesh's .vtu: the metric at every node (sampled from `field`) and
+// jacobian_cell_fields.
+template <int D>
+VtuData curved_vtu_data(const Mesh<D>& mesh, const MetricField<D>& field);
+
+// The curved mesh as a .vtu with curved_vtu_data.
 template <int D>
 void write_curved_vtu(const std::string& path, const Mesh<D>& mesh, const MetricField<D>& field);
 

@@ -14,7 +14,8 @@ them; until the twenty-seventh session the bound was half the serial minimum, wh
 partitions missed, docs/distributed.md "Over several partitions"); its report has every
 iteration with each rank's time and peak memory. With --order 2 (curved in the parts, docs/distributed.md §Curving in the parts) the output is valid too, and its
 flat faces stay flat as in the serial run; on a shell with curved walls it is the P1 mesh that rank 0
-would gather, curved and measured as rank 0 would within a few per cent.
+would gather, curved and measured as rank 0 would within a few per cent. A .vtu beside a Gamma
+output is written in runs by the parts and holds the output's cells.
 
 Usage: /usr/bin/python3 distributed_adapt_test.py <path-to-hocav>
 Exits 77 (skipped) when hocav was built without MPI.
@@ -24,7 +25,7 @@ import os
 import re
 import sys
 
-from mpi_test_support import check_same_refs, check_valid, distributed_test, keywords, refused, run, same_bytes, stats
+from mpi_test_support import check_same_refs, check_valid, check_vtu_in_runs, distributed_test, keywords, refused, run, same_bytes, stats
 
 TOLERANCE = 0.01
 MIN_QUALITY = 0.05
@@ -156,17 +157,21 @@ def entities_by_points(path):
 
 
 def check_end_in_parts(hocav, mpirun, work):
-    """A P1 Gamma output without --vtu is written in runs by the parts, measured there
-    (docs/distributed.md §The end in the parts); with --vtu rank 0 gathers the mesh as before. The
-    same partitions give the same mesh either way, and the same figures to rounding (both from rank 0's
-    whole input, a .msh: a Gamma input read in pieces is cut otherwise)."""
+    """A P1 Gamma output is written in runs by the parts, measured there (docs/distributed.md §The
+    end in the parts), and so is its .vtu (§A .vtu in runs); another format (.msh) rank 0 gathers as
+    before. The same partitions give the same mesh either way (but the Ridges keyword, which a .msh
+    does not carry), and the same figures to rounding (both from rank 0's whole input, a .msh: a
+    Gamma input read in pieces is cut otherwise)."""
     run([hocav, "convert", "cube.meshb", "cube.msh"], work)
     adapt = mpirun + ["-np", "2", hocav, "adapt", "cube.msh", "--metric", "cube.solb", "--order", "1", "--threads", "1", "-q"]
-    run(adapt + ["-o", "parts.mesh", "--report", "parts.json"], work)
-    run(adapt + ["-o", "gathered.mesh", "--vtu", "gathered.vtu", "--report", "gathered.json"], work)
+    run(adapt + ["-o", "parts.mesh", "--vtu", "parts.vtu", "--report", "parts.json"], work)
+    check_vtu_in_runs(hocav, work, "parts.vtu", "parts.mesh", "the end in the parts")
+    run(adapt + ["-o", "gathered.msh", "--report", "gathered.json"], work)
+    run([hocav, "convert", "gathered.msh", "gathered.mesh"], work)
     parts, gathered = (entities_by_points(os.path.join(work, name)) for name in ("parts.mesh", "gathered.mesh"))
     for name in parts:
-        assert parts[name] == gathered[name], f"the end in the parts: other {name} than the gathered mesh's"
+        if name != "Ridges":
+            assert parts[name] == gathered[name], f"the end in the parts: other {name} than the gathered mesh's"
     reports = [json.load(open(os.path.join(work, name))) for name in ("parts.json", "gathered.json")]
     for key in ("output_vertices", "output_elements"):
         assert reports[0][key] == reports[1][key], f"{key}: {reports[0][key]} in the parts, {reports[1][key]} gathered"
@@ -323,22 +328,25 @@ def check_curving_in_parts(hocav, mpirun, work):
     """--order 2 ends in the parts too (docs/distributed.md §Curving in the parts): they curve
     themselves, rank 0 the band near their interfaces, and they write the P2 file in runs. On a
     shell with curved walls and a boundary-layer metric, on 2 and 3 processes: the same P1 mesh as
-    when rank 0 gathers it (--vtu) and curves it in its rounds, valid, its report's Jacobians those
-    `hocav stats` measures on the file (every element once), its counts the file's, and its gains and
-    curved measures near the gathered run's."""
+    when rank 0 gathers it (a .msh output) and curves it in its rounds, valid, its report's Jacobians
+    those `hocav stats` measures on the file (every element once), its counts the file's, and its
+    gains and curved measures near the gathered run's; its .vtu, written in runs too, holds its
+    cells."""
     run([hocav, "generate", "sphere-shell", "--h", "0.2", "-o", "shell.meshb"], work)
     run([hocav, "metric", "shell.meshb", "--surface", "0.04,0.2", "--gradation", "1.5", "-o", "shell.solb"], work)
     run([hocav, "convert", "shell.meshb", "shell.msh"], work)  # (both runs from rank 0's input: the same parts)
     for processes in (2, 3):
         adapt = mpirun + ["-np", str(processes), hocav, "adapt", "shell.msh", "--metric", "shell.solb", "--threads", "1", "-q"]
-        run(adapt + ["-o", "shell_parts.meshb", "--report", "shell_parts.json"], work)
-        run(adapt + ["-o", "shell_gathered.meshb", "--vtu", "shell_gathered.vtu", "--report", "shell_gathered.json"], work)
+        run(adapt + ["-o", "shell_parts.meshb", "--vtu", "shell_parts.vtu", "--report", "shell_parts.json"], work)
+        check_vtu_in_runs(hocav, work, "shell_parts.vtu", "shell_parts.meshb", f"curving in the parts, {processes} processes")
+        run(adapt + ["-o", "shell_gathered.msh", "--report", "shell_gathered.json"], work)
+        run([hocav, "convert", "shell_gathered.msh", "shell_gathered.meshb"], work)
         name = f"curving in the parts, {processes} processes"
         parts, gathered = (p1_entities(hocav, work, f) for f in ("shell_parts.meshb", "shell_gathered.meshb"))
         # (Not the corners: the gathered mesh's last settling classifies it whole and makes the ends
         # of the feature lines that this coarse sphere's 45-degree angle finds corners, the parts'
         # do not; the same with --order 1.)
-        for key in ("Tetrahedra", "Triangles", "Edges", "Ridges"):
+        for key in ("Tetrahedra", "Triangles", "Edges"):  # (a .msh carries no Ridges keyword)
             assert parts[key] == gathered[key], f"{name}: other {key} than the gathered mesh's"
         figures = stats(hocav, "shell_parts.meshb", work)
         check_valid(figures, name)

@@ -1,11 +1,14 @@
 #!/usr/bin/python3
-"""`mpirun -np N hocav convert IN OUT` (docs/distributed.md §Writing in runs): every process reads
-its piece of a P1 Gamma mesh and writes it back in runs, so that no process holds the whole mesh.
+"""`mpirun -np N hocav convert IN OUT` (docs/distributed.md §Writing in runs, §A .vtu in runs):
+every process reads its piece of a P1 Gamma mesh and writes it back in runs, so that no process
+holds the whole mesh.
 On a cube, a layered shell (a text .mesh) and a 2D annulus, and gmsh's unstructured shell and
 annulus when hocav has gmsh, with 2, 3 and 4 processes (oversubscribed), to .mesh and .meshb: the
 output must be the serial command's mesh, every keyword's records in the same order (vertices,
-elements, facets, feature lines and tags), and meshio must read it to the same points and cells. Refused under mpirun, with exit 2, a one-line error
-and no output: --metric, --order 2, an input or an output that is no Gamma mesh.
+elements, facets, feature lines and tags), and meshio must read it to the same points and cells;
+to .vtu, meshio must read the serial .vtu's cells (with their refs and Jacobians). Refused under
+mpirun, with exit 2, a one-line error and no output: --metric, --order 2, an input that is no Gamma
+mesh, an output that is neither a Gamma mesh nor a .vtu.
 
 Usage: /usr/bin/python3 distributed_convert_test.py <path-to-hocav>
 Exits 77 (skipped) when hocav was built without MPI.
@@ -18,7 +21,7 @@ import sys
 import meshio
 import numpy
 
-from mpi_test_support import distributed_test, keywords, pieces_cases, refused, run
+from mpi_test_support import check_vtu_in_runs, distributed_test, keywords, pieces_cases, refused, run
 
 def same_mesh(serial, pieces, what):
     assert list(serial) == list(pieces), f"{what}: keywords {list(pieces)} vs {list(serial)}"
@@ -52,11 +55,14 @@ def check(hocav, mpirun, work):
                     output = "pieces-back.mesh"
                 same_mesh(serial, keywords(os.path.join(work, output)), what)
                 same_for_meshio(os.path.join(work, "serial.mesh"), os.path.join(work, output), what)
+            printed = run(mpirun + ["-np", str(processes), hocav, "convert", mesh, "pieces.vtu"], work)
+            assert f"(in {processes} pieces" in printed, printed
+            check_vtu_in_runs(hocav, work, "pieces.vtu", mesh, f"{mesh} to .vtu on {processes} processes", metric=False)
     refused(mpirun, hocav, work, ["convert", "cube.meshb", "out.mesh", "--metric", "m.solb"], "out.mesh", "no --metric")
     refused(mpirun, hocav, work, ["convert", "cube.meshb", "out.mesh", "--order", "2"], "out.mesh", "no --order 2")
-    refused(mpirun, hocav, work, ["convert", "cube.meshb", "out.msh"], "out.msh", "reads and writes Gamma meshes")
+    refused(mpirun, hocav, work, ["convert", "cube.meshb", "out.msh"], "out.msh", "writes Gamma meshes (.mesh, .meshb) or a .vtu")
     run([hocav, "convert", "cube.meshb", "cube.msh"], work)
-    refused(mpirun, hocav, work, ["convert", "cube.msh", "out.mesh"], "out.mesh", "reads and writes Gamma meshes")
+    refused(mpirun, hocav, work, ["convert", "cube.msh", "out.mesh"], "out.mesh", "reads Gamma meshes")
 
 
 if __name__ == "__main__":

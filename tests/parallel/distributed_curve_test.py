@@ -7,8 +7,9 @@ across the spheres (interfaces meet the boundary); and on a 2D annulus with a bo
 With one process the output must be the serial one byte for byte. With 2 and 3 processes
 (oversubscribed) every process reads its piece of the .meshb input and of its metric, and the parts
 curve themselves and write the file in runs (§Curving from pieces, §Curving in the parts); from a
-.msh input rank 0 reads the whole and scatters it (on 2 processes); with a .vtu rank 0 gathers the
-curved mesh (§Curving; once per case, on 2 processes): the output is
+.msh input rank 0 reads the whole and scatters it (on 2 processes); to a .msh output rank 0 gathers
+the curved mesh (§Curving; once per case, on 2 processes); on 3 processes a .vtu is written in runs
+beside the output and holds its cells (§A .vtu in runs). The output is
 consistent, P2, certified (every element's min normalized Jacobian above the floor, as `hocav stats`
 measures it), has the serial run's P1 mesh (its vertices, elements, facets and feature lines in their order) and
 refs; its gain and mean normalized Jacobian lie near the serial run's; the second round
@@ -33,8 +34,8 @@ import re
 import subprocess
 import sys
 
-from mpi_test_support import (check_same_refs, check_valid, completed, distributed_test, keywords, min_normalized_jacobian, refused, run,
-                              same_bytes, stats)
+from mpi_test_support import (check_same_refs, check_valid, check_vtu_in_runs, completed, distributed_test, keywords, min_normalized_jacobian,
+                              refused, run, same_bytes, stats)
 
 FLOOR = 0.01
 GAIN_TOLERANCE = 0.1  # relative, of the average gain
@@ -176,8 +177,13 @@ def check(hocav, mpirun, work):
         for processes, scheme in ((2, ""), (3, ""), (2, "scattered"), (2, "gathered")):
             name = f"{case}{processes}{scheme}"
             given = curve[:-1] if scheme != "scattered" else ["curve", case + ".msh"] + curve[2:-1]
-            args = mpirun + ["-np", str(processes), hocav] + given + ["-o", name + ".meshb", "--report", name + ".json"]
-            found = rounds(completed(args + (["--vtu", name + ".vtu"] if scheme == "gathered" else []), work).stderr)
+            output = name + (".msh" if scheme == "gathered" else ".meshb")
+            args = mpirun + ["-np", str(processes), hocav] + given + ["-o", output, "--report", name + ".json"]
+            found = rounds(completed(args + (["--vtu", name + ".vtu"] if processes == 3 else []), work).stderr)
+            if scheme == "gathered":
+                run([hocav, "convert", output, name + ".meshb"], work)
+            if processes == 3:
+                check_vtu_in_runs(hocav, work, name + ".vtu", name + ".meshb", name)
             assert len(found) in ((2, 3) if scheme == "gathered" else (2,)), f"{name}: rounds {found}"
             data = check_against_serial(hocav, work, name, serial, serial_report)
             assert p1_mesh(hocav, work, name) == serial_p1, f"{name}: not the serial run's P1 mesh"

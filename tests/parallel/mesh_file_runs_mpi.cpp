@@ -38,19 +38,6 @@ bool fail(const std::string& what) {
   return false;
 }
 
-std::string file_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-// The mesh, P2 with each node moved off its edge's middle by an amount of its own.
-template <int D>
-Mesh<D> curved(Mesh<D> mesh) {
-  mesh.make_p2();
-  for (Index e = 0; e < mesh.edge_count(); ++e) mesh.edge_node(e)[e % D] += 1e-3 * static_cast<double>(e % 7 + 1);
-  return mesh;
-}
-
 // All on rank 0: the runs are write_gamma_mesh's file of rank 0's part.
 template <int D>
 bool same_bytes_as_serial(const Mesh<D>& mesh, const std::string& directory, const std::string& name) {

@@ -1,5 +1,7 @@
 """What the distributed tests share (docs/distributed.md): running hocav and mpirun, `hocav stats`
-as a dict, the validity checks, the refs of a mesh."""
+as a dict, the validity checks, the refs of a mesh, a .vtu written in runs."""
+import contextlib
+import io
 import os
 import re
 import subprocess
@@ -59,6 +61,29 @@ def refused(mpirun, hocav, work, args, output, words):
     assert result.returncode == 2, f"{args}: exit {result.returncode}"
     assert words in result.stderr, f"{args}: {result.stderr}"
     assert not os.path.exists(os.path.join(work, output)), f"{args}: {output} was written"
+
+
+def check_vtu_in_runs(hocav, work, vtu, mesh, what, metric=True):
+    """A .vtu that the parts wrote in runs (docs/distributed.md §A .vtu in runs) against `mesh`, the
+    run's Gamma output: meshio reads the same cells as in `hocav convert`'s .vtu of it (each by its
+    points' coordinates, with its ref and min normalized Jacobian), at least as many points (a vertex
+    of several parts is a point of each), and with `metric` a metric at every point."""
+    import meshio  # (only here: the other distributed tests run without it)
+    import numpy
+    run([hocav, "convert", mesh, "expected-of-runs.vtu"], work)
+    with contextlib.redirect_stderr(io.StringIO()):
+        expected, got = (meshio.read(os.path.join(work, name)) for name in ("expected-of-runs.vtu", vtu))
+
+    def cells(grid):
+        (block,) = grid.cells
+        jacobians = numpy.round(grid.cell_data["min_normalized_jacobian"][0], 9)
+        return sorted((tuple(grid.points[c].ravel()), int(r), j) for c, r, j in zip(block.data, grid.cell_data["ref"][0], jacobians))
+
+    assert cells(got) == cells(expected), f"{what}: {vtu} holds other cells than {mesh}"
+    assert len(got.points) >= len(expected.points), f"{what}: {len(got.points)} points, {mesh} {len(expected.points)}"
+    if metric:
+        rows = got.point_data["metric"]
+        assert rows.shape == (len(got.points), 9) and (rows[:, 0] > 0).all(), f"{what}: no metric at every point of {vtu}"
 
 
 def same_bytes(work, a, b):

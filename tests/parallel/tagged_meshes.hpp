@@ -1,13 +1,15 @@
 // The meshes the MPI tests of reading, writing and measuring in pieces use: a structured square or
-// cube with four materials, feature lines, corners and required entities, and the same with its
-// vertices renumbered across the file; rank 0's mesh scattered over the processes; and a directory
-// every process sees.
+// cube with four materials, feature lines, corners and required entities, the same with its
+// vertices renumbered across the file, and P2 with its nodes off the edges' middles; rank 0's mesh
+// scattered over the processes; a directory every process sees; a file's bytes.
 #pragma once
 
 #include <unistd.h>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -74,6 +76,20 @@ Mesh<D> shuffled(const Mesh<D>& mesh) {
   out.required_triangles() = mesh.required_triangles();
   out.build_topology();
   return out;
+}
+
+// The mesh, P2 with each node moved off its edge's middle by an amount of its own.
+template <int D>
+Mesh<D> curved(Mesh<D> mesh) {
+  mesh.make_p2();
+  for (Index e = 0; e < mesh.edge_count(); ++e) mesh.edge_node(e)[e % D] += 1e-3 * static_cast<double>(e % 7 + 1);
+  return mesh;
+}
+
+// A file's bytes, to compare two files.
+inline std::string file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 // Element k of rank 0's mesh goes to part `destination(k)`.
