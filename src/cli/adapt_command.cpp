@@ -318,11 +318,11 @@ void adapt_in_parts(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptOp
 
 // Whether a distributed run reads its input in pieces, no process holding the whole
 // (docs/distributed.md §Adapting from pieces): one that ends in its parts, from a P1 Gamma file and a
-// metric file, an analytic metric or the implied one. Else rank 0 reads the whole input and sets the
-// run up.
+// metric file, an analytic metric, the surface metric or the implied one. Else rank 0 reads the whole
+// input and sets the run up.
 bool adapts_from_pieces(const AdaptOptions& o) {
-  return process_count() > 1 && ends_in_parts(o) && (!o.metric.empty() || !o.analytic.empty() || o.implied) && is_gamma_path(o.input) &&
-         !gamma_mesh_has_p2_keyword(o.input);
+  return process_count() > 1 && ends_in_parts(o) && (!o.metric.empty() || !o.analytic.empty() || !o.surface_sizes.empty() || o.implied) &&
+         is_gamma_path(o.input) && !gamma_mesh_has_p2_keyword(o.input);
 }
 
 // Every process of a run from pieces: its piece read and prepared, the run set up on the pieces
@@ -341,7 +341,9 @@ bool adapt_from_pieces(const AdaptOptions& o, OutputSet* outputs) {
   report.dimension = D;
   report.input_vertices = piece.vertex_count;
   report.input_elements = piece.element_count;
-  PieceSetup<D> setup = set_up_piece(std::move(piece), o.input, o.metric, job);
+  PieceMetricSource source{o.metric, std::nullopt, o.h_max};
+  if (!o.surface_sizes.empty()) source.surface_sizes = {o.surface_sizes[0], o.surface_sizes[1]};
+  PieceSetup<D> setup = set_up_piece(std::move(piece), o.input, source, job);
   report.hausdorff_bounded_vertices = setup.hausdorff_bounded_vertices;
   std::optional<OutputInParts> output;
   const BoundaryGeometry<D>* geometry = setup.geometry.get();

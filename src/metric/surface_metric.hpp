@@ -32,4 +32,9 @@ std::vector<Vec<D>> boundary_vertex_normals(const Mesh<D>& mesh);
 template <int D>
 std::vector<SymMat<D>> surface_metric_at_vertices(const Mesh<D>& mesh, const SurfaceSizes& sizes);
 
+// The same at the vertices of a mesh's boundary alone (no elements, its facets oriented outward as
+// Mesh::orient_boundary_facets_outward leaves them; docs/distributed.md §Adapting from pieces).
+template <int D>
+std::vector<SymMat<D>> surface_metric_at_boundary(const Mesh<D>& boundary, const SurfaceSizes& sizes);
+
 }  // namespace hocav

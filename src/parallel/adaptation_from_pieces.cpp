@@ -8,6 +8,7 @@
 #include "io/node_metrics.hpp"
 #include "io/record_run.hpp"
 #include "metric/analytic_metric.hpp"
+#include "metric/surface_metric.hpp"
 #include "parallel/boundary_of_parts.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_gradation.hpp"
@@ -120,9 +121,39 @@ struct PieceMetricInputs {
   const BoundaryGeometry<D>* geometry;
   HausdorffBound bound;
   double diagonal;
-  std::string metric_path;  // empty: the analytic metric, or else the implied one
-  std::string input;        // the mesh file's path
+  std::string metric_path;              // a metric file, or else (empty):
+  std::optional<SurfaceSizes> surface;  // the surface metric, or else the analytic metric, or else the implied one
+  std::string input;                    // the mesh file's path
 };
+
+// The given metric, before its bounds, at the piece's vertices and (with a geometry, or the surface
+// metric) at the whole boundary's.
+template <int D>
+struct GivenMetric {
+  std::vector<SymMat<D>> at_piece, at_boundary;
+};
+
+// Collective: the given metric: the analytic metric, or the surface metric (made of the whole
+// boundary: its vertices' normals sum the facets of every piece), or the rows of a metric file or
+// of the implied metric.
+template <int D>
+GivenMetric<D> given_metric(const MeshPart<D>& piece, const AdaptationJob<D>& job, const PieceMetricInputs<D>& in,
+                            const MetricRows<D>& rows) {
+  GivenMetric<D> out;
+  if (job.analytic) {
+    out.at_piece = analytic_metric_at_vertices(*job.analytic, piece.mesh);
+    if (in.geometry) out.at_boundary = analytic_metric_at_vertices(*job.analytic, in.boundary.mesh);
+  } else if (in.surface) {
+    out.at_boundary = surface_metric_at_boundary(in.boundary.mesh, *in.surface);
+    const SymMat<D> interior = (1 / (in.surface->interior * in.surface->interior)) * SymMat<D>::identity();
+    for (Index b : boundary_indices(piece, in.boundary.global_ids))
+      out.at_piece.push_back(b == kNoIndex ? interior : out.at_boundary[static_cast<std::size_t>(b)]);
+  } else {
+    out.at_piece = rows.of(piece.global_ids);
+    if (in.geometry) out.at_boundary = rows.of(in.boundary.global_ids);
+  }
+  return out;
+}
 
 // Collective: the piece's metric as make_job_metric makes the whole's: the Hausdorff bound, then
 // the gradation.
@@ -133,12 +164,11 @@ PieceMetric<D> piece_metric(const MeshFilePiece<D>& piece, const AdaptationJob<D
   const MetricRows<D> own_rows(implied.first, std::move(implied.metrics));
   std::optional<MetricRows<D>> file_rows;
   if (!in.metric_path.empty()) file_rows.emplace(in.metric_path, piece.vertex_count);
-  const MetricRows<D>& rows = file_rows ? *file_rows : own_rows;
-  std::vector<SymMat<D>> given = job.analytic ? analytic_metric_at_vertices(*job.analytic, mesh) : rows.of(piece.part.global_ids);
+  GivenMetric<D> given_there = given_metric(piece.part, job, in, file_rows ? *file_rows : own_rows);
+  std::vector<SymMat<D>>& given = given_there.at_piece;
   PieceMetric<D> out;
   if (in.geometry) {
-    const std::vector<SymMat<D>> at_boundary = job.analytic ? analytic_metric_at_vertices(*job.analytic, in.boundary.mesh)
-                                                            : rows.of(in.boundary.global_ids);
+    const std::vector<SymMat<D>>& at_boundary = given_there.at_boundary;
     const std::vector<SymMat<D>> bounds = piece_hausdorff_bounds(piece.part, in.boundary, at_boundary, *in.geometry, in.bound, in.diagonal);
     out.hausdorff_bounded_vertices = bounded_vertex_count(piece.part, given, bounds);
     if (job.analytic && out.hausdorff_bounded_vertices > 0) out.field.emplace(mesh, bounds);
@@ -158,7 +188,7 @@ PieceMetric<D> piece_metric(const MeshFilePiece<D>& piece, const AdaptationJob<D
 }  // namespace
 
 template <int D>
-PieceSetup<D> set_up_piece(MeshFilePiece<D> piece, const std::string& input, const std::string& metric_path, const AdaptationJob<D>& job) {
+PieceSetup<D> set_up_piece(MeshFilePiece<D> piece, const std::string& input, const PieceMetricSource& source, const AdaptationJob<D>& job) {
   Mesh<D>& mesh = piece.part.mesh;
   if (!mesh.has_topology()) mesh.build_topology();
   mesh.orient_boundary_facets_outward();
@@ -170,7 +200,10 @@ PieceSetup<D> set_up_piece(MeshFilePiece<D> piece, const std::string& input, con
   const double diagonal = whole_diagonal(mesh);
   setup.settings = job_settings(job, job.hausd.value_or(kRelativeHausd * diagonal));
   const HausdorffBound bound = hausdorff_bound_of(job, setup.settings.hausd);
-  const PieceMetric<D> given = piece_metric(piece, job, {boundary, setup.geometry.get(), bound, diagonal, metric_path, input});
+  std::optional<SurfaceSizes> surface;
+  if (source.surface_sizes) surface = SurfaceSizes{(*source.surface_sizes)[0], (*source.surface_sizes)[1], source.h_max.value_or(diagonal)};
+  const PieceMetric<D> given = piece_metric(piece, job,
+                                            {boundary, setup.geometry.get(), bound, diagonal, source.metric_path, surface, input});
   setup.hausdorff_bounded_vertices = given.hausdorff_bounded_vertices;
   const double smallest = -max_over_processes(-smallest_size_at_vertices(mesh, given.within(job, job.bounds)));
   const AdaptationMetric<D> metric = given.within(job, bounds_above_floor(job, smallest, diagonal));
@@ -185,7 +218,7 @@ PieceSetup<D> set_up_piece(MeshFilePiece<D> piece, const std::string& input, con
   return setup;
 }
 
-template PieceSetup<2> set_up_piece(MeshFilePiece<2>, const std::string&, const std::string&, const AdaptationJob<2>&);
-template PieceSetup<3> set_up_piece(MeshFilePiece<3>, const std::string&, const std::string&, const AdaptationJob<3>&);
+template PieceSetup<2> set_up_piece(MeshFilePiece<2>, const std::string&, const PieceMetricSource&, const AdaptationJob<2>&);
+template PieceSetup<3> set_up_piece(MeshFilePiece<3>, const std::string&, const PieceMetricSource&, const AdaptationJob<3>&);
 
 }  // namespace hocav

@@ -6,6 +6,7 @@
 
 #include "../mesh/turned_facets.hpp"
 #include "base/error.hpp"
+#include "mesh/boundary_mesh.hpp"
 #include "metric_test_support.hpp"
 
 namespace hocav {
@@ -82,6 +83,33 @@ TEST(SurfaceMetric, OpposedFacetsLeaveTheSmallSizeInEveryDirection) {
   EXPECT_EQ(boundary_vertex_normals(mesh)[0], Vec2{});
   EXPECT_EQ(metrics[0], 4 * SymMat2::identity());
   expect_near(boundary_vertex_normals(mesh)[1], Vec2{{-std::sqrt(0.5), -std::sqrt(0.5)}});
+}
+
+// The metric from the boundary alone (its facets oriented outward) against the mesh's, vertex by
+// vertex; the number of vertices where they differ by more than rounding.
+template <int D>
+int boundary_metric_differences(Mesh<D> mesh, bool oriented) {
+  if (oriented) mesh.orient_boundary_facets_outward();
+  const SurfaceSizes sizes{0.01, 0.2, 3};
+  const std::vector<SymMat<D>> whole = surface_metric_at_vertices(mesh, sizes);
+  const std::vector<SymMat<D>> boundary = surface_metric_at_boundary(boundary_mesh_of(mesh), sizes);
+  EXPECT_EQ(boundary.size(), whole.size());
+  int differences = 0;
+  for (std::size_t v = 0; v < whole.size(); ++v)
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < D; ++j)
+        if (std::abs(boundary[v](i, j) - whole[v](i, j)) > 1e-9 * (1 + std::abs(whole[v](i, j)))) {
+          ++differences;
+          i = j = D;
+        }
+  return differences;
+}
+
+TEST(SurfaceMetric, TheBoundaryAloneGivesTheMeshsMetricOnceItsFacetsFaceOutward) {
+  EXPECT_EQ(boundary_metric_differences(mesh_test::with_facets_turned(generate_square(5), 3), true), 0);
+  EXPECT_EQ(boundary_metric_differences(mesh_test::with_facets_turned(generate_cube(3), 3), true), 0);
+  // Facets that face either way cancel in the sums of the boundary alone.
+  EXPECT_GT(boundary_metric_differences(mesh_test::with_facets_turned(generate_cube(3), 3), false), 0);
 }
 
 TEST(SurfaceMetric, RefusesNonPositiveSizes) {
