@@ -134,7 +134,7 @@ def main():
         if mpirun:
             check_shell(work, display, mpirun)
         else:
-            print("the .vtu in runs: skipped, hocav was built without MPI")
+            print("SKIPPED: the .vtu in runs: hocav was built without MPI (HOCAV_WITH_MPI off)")
     print("1 passed, 0 failed")
 
 
