@@ -52,7 +52,7 @@ std::vector<SymMat<D>> metrics_of_normals(const Mesh<D>& mesh, const std::vector
   std::vector<SymMat<D>> metrics(normals.size());
   for (std::size_t v = 0; v < metrics.size(); ++v) {
     if (!on_boundary[v])
-      metrics[v] = (1 / (sizes.interior * sizes.interior)) * SymMat<D>::identity();
+      metrics[v] = surface_interior_metric<D>(sizes);
     else if (normals[v] == Vec<D>{})
       metrics[v] = normal * SymMat<D>::identity();
     else

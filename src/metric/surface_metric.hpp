@@ -28,6 +28,12 @@ struct SurfaceSizes {
 template <int D>
 std::vector<Vec<D>> boundary_vertex_normals(const Mesh<D>& mesh);
 
+// The metric of a vertex on no boundary facet: the isotropic size sizes.interior.
+template <int D>
+SymMat<D> surface_interior_metric(const SurfaceSizes& sizes) {
+  return (1 / (sizes.interior * sizes.interior)) * SymMat<D>::identity();
+}
+
 // One metric per vertex. Throws Error for a non-positive size or a mesh without its topology.
 template <int D>
 std::vector<SymMat<D>> surface_metric_at_vertices(const Mesh<D>& mesh, const SurfaceSizes& sizes);

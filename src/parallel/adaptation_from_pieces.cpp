@@ -145,7 +145,7 @@ GivenMetric<D> given_metric(const MeshPart<D>& piece, const AdaptationJob<D>& jo
     if (in.geometry) out.at_boundary = analytic_metric_at_vertices(*job.analytic, in.boundary.mesh);
   } else if (in.surface) {
     out.at_boundary = surface_metric_at_boundary(in.boundary.mesh, *in.surface);
-    const SymMat<D> interior = (1 / (in.surface->interior * in.surface->interior)) * SymMat<D>::identity();
+    const SymMat<D> interior = surface_interior_metric<D>(*in.surface);
     for (Index b : boundary_indices(piece, in.boundary.global_ids))
       out.at_piece.push_back(b == kNoIndex ? interior : out.at_boundary[static_cast<std::size_t>(b)]);
   } else {
