@@ -90,19 +90,22 @@ std::string metric_source_name(const AdaptOptions& o) {
   return o.implied ? "--implied" : "--surface-sizes";
 }
 
+// The Lp metric of --hessian FIELD --complexity N [--norm P] (sizes bounded by --hmin, --hmax).
+HessianSource hessian_source(const AdaptOptions& o) {
+  HessianSource source;
+  source.field = o.hessian;
+  source.complexity = *o.complexity;
+  source.norm = o.norm;
+  source.h_min = o.h_min;
+  source.h_max = o.h_max;
+  return source;
+}
+
 // The metric at the input's vertices (none for an analytic metric, evaluated at every vertex).
 template <int D>
 std::vector<SymMat<D>> vertex_metrics(const Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o) {
   if (!o.metric.empty()) return metrics_of_rows<D>(read_metric_for_mesh(o.metric, file, false));
-  if (!o.hessian.empty()) {
-    HessianSource source;
-    source.field = o.hessian;
-    source.complexity = *o.complexity;
-    source.norm = o.norm;
-    source.h_min = o.h_min;
-    source.h_max = o.h_max;
-    return hessian_source_metrics(mesh, file, source);
-  }
+  if (!o.hessian.empty()) return hessian_source_metrics(mesh, file, hessian_source(o));
   if (!o.surface_sizes.empty()) return surface_source_metrics(mesh, o.surface_sizes[0], o.surface_sizes[1], o.h_max);
   if (o.implied) return implied_metric_at_vertices(mesh);
   return {};
@@ -317,12 +320,10 @@ void adapt_in_parts(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptOp
 }
 
 // Whether a distributed run reads its input in pieces, no process holding the whole
-// (docs/distributed.md §Adapting from pieces): one that ends in its parts, from a P1 Gamma file and a
-// metric file, an analytic metric, the surface metric or the implied one. Else rank 0 reads the whole
-// input and sets the run up.
+// (docs/distributed.md §Adapting from pieces): one that ends in its parts, from a P1 Gamma file,
+// whatever its metric source. Else rank 0 reads the whole input and sets the run up.
 bool adapts_from_pieces(const AdaptOptions& o) {
-  return process_count() > 1 && ends_in_parts(o) && (!o.metric.empty() || !o.analytic.empty() || !o.surface_sizes.empty() || o.implied) &&
-         is_gamma_path(o.input) && !gamma_mesh_has_p2_keyword(o.input);
+  return process_count() > 1 && ends_in_parts(o) && is_gamma_path(o.input) && !gamma_mesh_has_p2_keyword(o.input);
 }
 
 // Every process of a run from pieces: its piece read and prepared, the run set up on the pieces
@@ -341,7 +342,8 @@ bool adapt_from_pieces(const AdaptOptions& o, OutputSet* outputs) {
   report.dimension = D;
   report.input_vertices = piece.vertex_count;
   report.input_elements = piece.element_count;
-  PieceMetricSource source{o.metric, std::nullopt, o.h_max};
+  PieceMetricSource source{o.metric, std::nullopt, std::nullopt, o.h_max};
+  if (!o.hessian.empty()) source.hessian = hessian_source(o);
   if (!o.surface_sizes.empty()) source.surface_sizes = {o.surface_sizes[0], o.surface_sizes[1]};
   PieceSetup<D> setup = set_up_piece(std::move(piece), o.input, source, job);
   report.hausdorff_bounded_vertices = setup.hausdorff_bounded_vertices;

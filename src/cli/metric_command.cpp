@@ -28,6 +28,7 @@
 #include "metric/hessian_metric.hpp"
 #include "metric/implied_metric.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/hessian_metric_runs.hpp"
 #include "parallel/implied_metric_runs.hpp"
 #include "parallel/mesh_file_pieces.hpp"
 #include "parallel/solution_file_runs.hpp"
@@ -218,12 +219,16 @@ void write_metric(const Mesh<D>& mesh, const MeshFileContent& file, const Metric
 }
 
 // Under mpirun (docs/distributed.md §Reading in pieces): each process reads its piece of the mesh,
-// computes the implied metric of its run of the file's vertices and writes it in place; no process
-// holds the whole mesh. The file is the serial command's, byte for byte. Returns the summary line.
+// computes the implied metric (the serial command's file byte for byte) or the Hessian's Lp metric
+// (its scale's sum over the processes may change the last bits) of its run of the file's vertices
+// and writes it in place; no process holds the whole mesh. Returns the summary line.
 template <int D>
-std::string write_implied_metric_in_pieces(const MetricOptions& options) {
+std::string write_metric_in_pieces(const MetricOptions& options, Source source) {
   const MeshFilePiece<D> piece = read_mesh_file_piece<D>(options.mesh);
-  const VertexRunMetrics<D> run = implied_metric_by_runs(piece.part, piece.vertex_count, options.mesh);
+  const VertexRunMetrics<D> run = source == Source::kImplied
+                                      ? implied_metric_by_runs(piece.part, piece.vertex_count, options.mesh)
+                                      : hessian_metric_by_runs(piece.part, piece.vertex_count, hessian_source<D>(options),
+                                                               whole_diagonal(piece.part.mesh), options.mesh);
   write_solution_runs(options.output, rows_of_metrics(run.metrics), run.first, piece.vertex_count);
   std::vector<double> volumes;  // vertex_volumes' (to the last bits): each element's measure shared among its vertices
   for (double measure : run.measures) volumes.push_back(measure / (D + 1));
@@ -235,8 +240,9 @@ std::string write_implied_metric_in_pieces(const MetricOptions& options) {
 }
 
 void run_metric_in_pieces(const MetricOptions& options, Source source) {
-  if (source != Source::kImplied || options.gradation)
-    throw Error("under mpirun, hocav metric computes --implied only, without --gradation (docs/distributed.md §Reading in pieces)");
+  if ((source != Source::kImplied && source != Source::kHessian) || options.gradation)
+    throw Error(
+        "under mpirun, hocav metric computes --implied or --hessian only, without --gradation (docs/distributed.md §Reading in pieces)");
   const std::string extension = file_extension(options.mesh);
   if (extension != ".mesh" && extension != ".meshb")
     throw Error(options.mesh + ": under mpirun, hocav metric reads Gamma meshes (.mesh, .meshb) in pieces, not '" + extension + "'");
@@ -246,10 +252,11 @@ void run_metric_in_pieces(const MetricOptions& options, Source source) {
   if (process_rank() == 0) {
     outputs.emplace();
     outputs->add_input(options.mesh, "the input mesh");
+    if (source == Source::kHessian && !is_analytic_field(options.hessian)) outputs->add_input(options.hessian, "--hessian");
     outputs->add_output(options.output, "-o");
   }
-  const std::string summary = gamma_mesh_dimension(options.mesh) == 2 ? write_implied_metric_in_pieces<2>(options)
-                                                                      : write_implied_metric_in_pieces<3>(options);
+  const std::string summary = gamma_mesh_dimension(options.mesh) == 2 ? write_metric_in_pieces<2>(options, source)
+                                                                      : write_metric_in_pieces<3>(options, source);
   if (!outputs) return;
   outputs->commit();
   std::cout << summary;

@@ -12,18 +12,12 @@ template <int D>
 std::vector<SymMat<D>> hessian_source_metrics(const Mesh<D>& mesh, const MeshFileContent& file, const HessianSource& source) {
   std::vector<SymMat<D>> hessians;
   if (is_analytic_field(source.field)) {
-    AnalyticFieldSpec shape = source.shape;
-    shape.name = source.field.substr(std::string(kAnalyticFieldPrefix).size());
+    const AnalyticFieldSpec shape = analytic_field_of(source);
     for (const auto& x : mesh.vertices()) hessians.push_back(analytic_field_hessian<D>(shape, x));
   } else {
     hessians = recover_hessians(mesh, read_scalar_for_mesh(source.field, file));
   }
-  LpMetricOptions lp;
-  lp.complexity = source.complexity;
-  lp.norm = source.norm.value_or(lp.norm);
-  lp.h_max = source.h_max.value_or(bounding_box_diagonal(mesh));
-  lp.h_min = source.h_min.value_or(kHessianSizeRange * lp.h_max);
-  return lp_metric(mesh, hessians, lp);
+  return lp_metric(mesh, hessians, lp_options_of(source, bounding_box_diagonal(mesh)));
 }
 
 template <int D>

@@ -3,29 +3,16 @@
 #pragma once
 
 #include <optional>
-#include <string>
 #include <vector>
 
 #include "geom/sym_mat.hpp"
 #include "io/mesh_file.hpp"
 #include "mesh/mesh.hpp"
-#include "metric/analytic_field.hpp"
+#include "metric/hessian_source.hpp"
 
 namespace hocav {
 
-// The Lp metric of a scalar field's Hessian (docs/metrics.md): the field at the file's nodes
-// (FIELD.sol/.solb, its Hessian recovered), or analytic:NAME (its Hessian exact).
-struct HessianSource {
-  std::string field;
-  AnalyticFieldSpec shape;  // of analytic:NAME (its name is taken from `field`)
-  double complexity = 0;
-  std::optional<double> norm;
-  std::optional<double> h_min, h_max;  // default: kHessianSizeRange × h_max, the bounding-box diagonal
-};
-
-inline constexpr const char* kAnalyticFieldPrefix = "analytic:";
-inline bool is_analytic_field(const std::string& field) { return field.starts_with(kAnalyticFieldPrefix); }
-
+// The Lp metric of the source's field at the mesh's vertices (the file's field read at its nodes).
 template <int D>
 std::vector<SymMat<D>> hessian_source_metrics(const Mesh<D>& mesh, const MeshFileContent& file, const HessianSource& source);
 

@@ -31,24 +31,45 @@ SolutionField read_metric_run(const std::string& metric_path, int dimension, Ind
   return checked_metric_field(content, metric_path, dimension, vertex_count, first);
 }
 
-std::vector<double> read_scalar_for_mesh(const std::string& solution_path, const MeshFileContent& mesh_file) {
-  SolutionFileContent content = read_solution_file(solution_path);
-  if (content.dimension != dimension_of(mesh_file.mesh))
-    throw Error(solution_path + ": Dimension: the solution is " + std::to_string(content.dimension) + "D but the mesh is " +
-                std::to_string(dimension_of(mesh_file.mesh)) + "D");
+namespace {
+
+// The first scalar field of `content` (of a mesh of `dimension` and `node_count` nodes), checked:
+// one value per node.
+const SolutionField& checked_scalar_field(const SolutionFileContent& content, const std::string& path, int dimension, Index node_count) {
+  if (content.dimension != dimension)
+    throw Error(path + ": Dimension: the solution is " + std::to_string(content.dimension) + "D but the mesh is " +
+                std::to_string(dimension) + "D");
   const SolutionField* scalar = content.first_of_kind(SolutionKind::kScalar);
-  if (!scalar) throw Error(solution_path + ": SolAtVertices: no scalar field (type 1)");
-  if (scalar->count() != mesh_file.file_node_count)
-    throw Error(solution_path + ": SolAtVertices: " + std::to_string(scalar->count()) + " values for a mesh of " +
-                std::to_string(mesh_file.file_node_count) + " nodes");
+  if (!scalar) throw Error(path + ": SolAtVertices: no scalar field (type 1)");
+  if (content.count != node_count)
+    throw Error(path + ": SolAtVertices: " + std::to_string(content.count) + " values for a mesh of " + std::to_string(node_count) +
+                " nodes");
+  return *scalar;
+}
+
+double finite_value(const SolutionField& scalar, Index row, Index first_row, const std::string& path) {
+  const double value = scalar.values[static_cast<std::size_t>(row - first_row)];
+  if (!std::isfinite(value)) throw Error(path + ": SolAtVertices: value at node " + std::to_string(row + 1) + " is not finite");
+  return value;
+}
+
+}  // namespace
+
+std::vector<double> read_scalar_for_mesh(const std::string& solution_path, const MeshFileContent& mesh_file) {
+  const SolutionFileContent content = read_solution_file(solution_path);
+  const SolutionField& scalar = checked_scalar_field(content, solution_path, dimension_of(mesh_file.mesh), mesh_file.file_node_count);
   std::vector<double> values;
   values.reserve(mesh_file.vertex_file_ids.size());
-  for (Index file_node : mesh_file.vertex_file_ids) {
-    double value = scalar->values[static_cast<std::size_t>(file_node)];
-    if (!std::isfinite(value))
-      throw Error(solution_path + ": SolAtVertices: value at node " + std::to_string(file_node + 1) + " is not finite");
-    values.push_back(value);
-  }
+  for (Index file_node : mesh_file.vertex_file_ids) values.push_back(finite_value(scalar, file_node, 0, solution_path));
+  return values;
+}
+
+std::vector<double> read_scalar_run(const std::string& solution_path, int dimension, Index vertex_count, const RecordRun& run) {
+  const SolutionFileContent content = read_solution_file_run(solution_path, run);
+  const SolutionField& scalar = checked_scalar_field(content, solution_path, dimension, vertex_count);
+  const auto [first, last] = run.of(vertex_count);
+  std::vector<double> values;
+  for (Index row = first; row < last; ++row) values.push_back(finite_value(scalar, row, first, solution_path));
   return values;
 }
 

@@ -26,6 +26,11 @@ SolutionField read_metric_run(const std::string& metric_path, int dimension, Ind
 // value per file node), at the mesh's vertices.
 std::vector<double> read_scalar_for_mesh(const std::string& solution_path, const MeshFileContent& mesh_file);
 
+// The scalar field's values of `run` of the file given with a P1 Gamma mesh file of `dimension` and
+// `vertex_count` vertices (a mesh read in pieces), checked as read_scalar_for_mesh checks the whole:
+// the values of the file's vertices from run.of(vertex_count).first.
+std::vector<double> read_scalar_run(const std::string& solution_path, int dimension, Index vertex_count, const RecordRun& run);
+
 // Metric rows in .sol order and the matrices they hold, both ways.
 template <int D>
 std::vector<SymMat<D>> metrics_of_rows(const SolutionField& rows);

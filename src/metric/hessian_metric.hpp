@@ -42,6 +42,24 @@ double metric_complexity(const Mesh<D>& mesh, const std::vector<SymMat<D>>& metr
 template <int D>
 double metric_complexity(std::span<const double> volumes, std::span<const SymMat<D>> metrics);
 
+// Throws Error for invalid options.
+void check_lp_options(const LpMetricOptions& options);
+
+// A vertex's Lp metric before its scale D_N, and its density det(|H|)^{p/(2p+d)}; the whole metric is
+// D_N times the first, D_N from the integral of the second (lp_scale). Throws Error naming vertex
+// `vertex_number` for a Hessian that is not finite.
+template <int D>
+struct LpVertex {
+  SymMat<D> metric;
+  double density = 0;
+};
+template <int D>
+LpVertex<D> lp_vertex(const SymMat<D>& hessian, const LpMetricOptions& options, Index vertex_number);
+
+// D_N from the density's integral over the mesh; throws Error for a mesh of no volume.
+template <int D>
+double lp_scale(const LpMetricOptions& options, double density_integral);
+
 // One metric per vertex from one Hessian per vertex. Throws Error for invalid options or a mesh of
 // zero measure.
 template <int D>

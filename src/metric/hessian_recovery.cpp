@@ -1,6 +1,7 @@
 #include "metric/hessian_recovery.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -9,8 +10,6 @@
 
 namespace hocav {
 namespace {
-
-constexpr int kMaxRings = 3;
 
 // min |A x − b| for a full-rank m×n A (column-major, m ≥ n), by Householder QR with the columns
 // scaled to unit length first. Returns false when a column is (numerically) dependent on the others.
@@ -79,51 +78,65 @@ void collect_rings(const VertexGraph& graph, Index v, int rings, std::vector<Ind
 }  // namespace
 
 template <int D>
-std::vector<SymMat<D>> recover_hessians(const Mesh<D>& mesh, std::span<const double> vertex_values) {
+std::optional<SymMat<D>> fit_hessian(const Vec<D>& point, double value, std::span<const Vec<D>> stencil_points,
+                                     std::span<const double> stencil_values) {
   constexpr int kUnknowns = D + SymMat<D>::kEntryCount;  // g, then H
+  const int rows = static_cast<int>(stencil_points.size());
+  if (rows < kUnknowns) return std::nullopt;
+  // Offsets scaled by the stencil's radius, so every column is of order one.
+  double radius = 0;
+  for (const Vec<D>& x : stencil_points) radius = std::max(radius, norm(x - point));
+  if (!(radius > 0)) return std::nullopt;
+  std::vector<double> matrix(static_cast<std::size_t>(rows * kUnknowns), 0.0), right(static_cast<std::size_t>(rows));
+  for (int row = 0; row < rows; ++row) {
+    Vec<D> d = (1 / radius) * (stencil_points[static_cast<std::size_t>(row)] - point);
+    auto entry = [&](int column) -> double& { return matrix[static_cast<std::size_t>(column * rows + row)]; };
+    for (int i = 0; i < D; ++i) entry(i) = d[i];
+    // ½ dᵀHd = Σ_i ½ H_ii d_i² + Σ_{i>j} H_ij d_i d_j, columns in the SymMat entry order.
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j <= i; ++j) entry(D + SymMat<D>::index(i, j)) = (i == j ? 0.5 : 1.0) * d[i] * d[j];
+    right[static_cast<std::size_t>(row)] = stencil_values[static_cast<std::size_t>(row)] - value;
+  }
+  std::array<double, kUnknowns> solution{};
+  if (!solve_least_squares(matrix, right, rows, kUnknowns, solution)) return std::nullopt;
+  SymMat<D> hessian;
+  for (int e = 0; e < SymMat<D>::kEntryCount; ++e)
+    hessian.entries[static_cast<std::size_t>(e)] = solution[static_cast<std::size_t>(D + e)] / (radius * radius);
+  return hessian;
+}
+
+template <int D>
+std::vector<SymMat<D>> recover_hessians(const Mesh<D>& mesh, std::span<const double> vertex_values) {
   if (vertex_values.size() != static_cast<std::size_t>(mesh.vertex_count()))
     throw Error("hessian recovery: " + std::to_string(vertex_values.size()) + " values for " + std::to_string(mesh.vertex_count()) +
                 " vertices");
   const VertexGraph graph = vertex_graph(mesh);
   std::vector<SymMat<D>> hessians(vertex_values.size());
   std::vector<Index> stencil, mark(vertex_values.size(), kNoIndex);
-  std::vector<double> matrix, right;
-  std::array<double, kUnknowns> solution{};
+  std::vector<Vec<D>> points;
+  std::vector<double> values;
   for (Index v = 0; v < mesh.vertex_count(); ++v) {
-    bool solved = false;
-    for (int rings = 1; rings <= kMaxRings && !solved; ++rings) {
+    std::optional<SymMat<D>> fitted;
+    for (int rings = 1; rings <= kHessianMaxRings && !fitted; ++rings) {
       collect_rings(graph, v, rings, stencil, mark);
-      const int rows = static_cast<int>(stencil.size());
-      if (rows < kUnknowns) continue;
-      // Offsets scaled by the stencil's radius, so every column is of order one.
-      double radius = 0;
-      for (Index u : stencil) radius = std::max(radius, norm(mesh.vertex(u) - mesh.vertex(v)));
-      if (!(radius > 0)) continue;
-      matrix.assign(static_cast<std::size_t>(rows * kUnknowns), 0.0);
-      right.resize(static_cast<std::size_t>(rows));
-      for (int row = 0; row < rows; ++row) {
-        Index u = stencil[static_cast<std::size_t>(row)];
-        Vec<D> d = (1 / radius) * (mesh.vertex(u) - mesh.vertex(v));
-        auto entry = [&](int column) -> double& { return matrix[static_cast<std::size_t>(column * rows + row)]; };
-        for (int i = 0; i < D; ++i) entry(i) = d[i];
-        // ½ dᵀHd = Σ_i ½ H_ii d_i² + Σ_{i>j} H_ij d_i d_j, columns in the SymMat entry order.
-        for (int i = 0; i < D; ++i)
-          for (int j = 0; j <= i; ++j) entry(D + SymMat<D>::index(i, j)) = (i == j ? 0.5 : 1.0) * d[i] * d[j];
-        right[static_cast<std::size_t>(row)] = vertex_values[static_cast<std::size_t>(u)] - vertex_values[static_cast<std::size_t>(v)];
+      points.clear();
+      values.clear();
+      for (Index u : stencil) {
+        points.push_back(mesh.vertex(u));
+        values.push_back(vertex_values[static_cast<std::size_t>(u)]);
       }
-      solved = solve_least_squares(matrix, right, rows, kUnknowns, solution);
-      if (solved)
-        for (int e = 0; e < SymMat<D>::kEntryCount; ++e)
-          hessians[static_cast<std::size_t>(v)].entries[static_cast<std::size_t>(e)] = solution[static_cast<std::size_t>(D + e)] /
-                                                                                       (radius * radius);
+      fitted = fit_hessian<D>(mesh.vertex(v), vertex_values[static_cast<std::size_t>(v)], points, values);
     }
-    if (!solved)
-      throw Error("hessian recovery: the neighbours of vertex " + std::to_string(v + 1) + " within " + std::to_string(kMaxRings) +
+    if (!fitted)
+      throw Error("hessian recovery: the neighbours of vertex " + std::to_string(v + 1) + " within " + std::to_string(kHessianMaxRings) +
                   " edges do not determine a quadratic");
+    hessians[static_cast<std::size_t>(v)] = *fitted;
   }
   return hessians;
 }
 
+template std::optional<SymMat<2>> fit_hessian(const Vec<2>&, double, std::span<const Vec<2>>, std::span<const double>);
+template std::optional<SymMat<3>> fit_hessian(const Vec<3>&, double, std::span<const Vec<3>>, std::span<const double>);
 template std::vector<SymMat<2>> recover_hessians(const Mesh<2>&, std::span<const double>);
 template std::vector<SymMat<3>> recover_hessians(const Mesh<3>&, std::span<const double>);
 

@@ -9,6 +9,7 @@
 // system, so stretched neighbourhoods stay well conditioned.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -16,6 +17,16 @@
 #include "mesh/mesh.hpp"
 
 namespace hocav {
+
+// The rings a vertex's stencil may grow to.
+constexpr int kHessianMaxRings = 3;
+
+// The fit at a point of `value` on its stencil, the points and values of its neighbours in the
+// order the rings list them (the least squares above); nothing when they are too few or lie too flat
+// to determine a quadratic.
+template <int D>
+std::optional<SymMat<D>> fit_hessian(const Vec<D>& point, double value, std::span<const Vec<D>> stencil_points,
+                                     std::span<const double> stencil_values);
 
 // One Hessian per vertex from one value per vertex. Throws Error naming the vertex whose 3-ring
 // cannot determine a quadratic (e.g. a mesh of one element), or for a wrong number of values.

@@ -4,7 +4,6 @@
 #include <unordered_set>
 
 #include "adapt/hausdorff_metric.hpp"
-#include "geom/box.hpp"
 #include "io/node_metrics.hpp"
 #include "io/record_run.hpp"
 #include "metric/analytic_metric.hpp"
@@ -13,22 +12,13 @@
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_gradation.hpp"
 #include "parallel/gradual_metric.hpp"
+#include "parallel/hessian_metric_runs.hpp"
 #include "parallel/implied_metric_runs.hpp"
 #include "parallel/metrics_by_global_id.hpp"
 #include "parallel/piece_classification.hpp"
 
 namespace hocav {
 namespace {
-
-// The diagonal of the whole mesh's bounding box, from every piece's.
-template <int D>
-double whole_diagonal(const Mesh<D>& piece) {
-  Box<D> own = Box<D>::empty();
-  for (const Vec<D>& x : piece.vertices()) own.add(x);
-  Box<D> whole = Box<D>::empty();
-  for (const Box<D>& each : all_gather_value(own)) whole.add(each);
-  return whole.is_empty() ? 0 : norm(whole.upper - whole.lower);
-}
 
 // This process's run of a metric given per file vertex: the metric file's rows, or the implied
 // metric's run.
@@ -121,9 +111,10 @@ struct PieceMetricInputs {
   const BoundaryGeometry<D>* geometry;
   HausdorffBound bound;
   double diagonal;
-  std::string metric_path;              // a metric file, or else (empty):
-  std::optional<SurfaceSizes> surface;  // the surface metric, or else the analytic metric, or else the implied one
-  std::string input;                    // the mesh file's path
+  std::string metric_path;               // a metric file, or else (empty):
+  std::optional<HessianSource> hessian;  // a Hessian's metric, or else
+  std::optional<SurfaceSizes> surface;   // the surface metric, or else the analytic metric, or else the implied one
+  std::string input;                     // the mesh file's path
 };
 
 // The given metric, before its bounds, at the piece's vertices and (with a geometry, or the surface
@@ -164,6 +155,10 @@ PieceMetric<D> piece_metric(const MeshFilePiece<D>& piece, const AdaptationJob<D
   const MetricRows<D> own_rows(implied.first, std::move(implied.metrics));
   std::optional<MetricRows<D>> file_rows;
   if (!in.metric_path.empty()) file_rows.emplace(in.metric_path, piece.vertex_count);
+  if (in.hessian) {
+    VertexRunMetrics<D> lp = hessian_metric_by_runs(piece.part, piece.vertex_count, *in.hessian, in.diagonal, in.input);
+    file_rows.emplace(lp.first, std::move(lp.metrics));
+  }
   GivenMetric<D> given_there = given_metric(piece.part, job, in, file_rows ? *file_rows : own_rows);
   std::vector<SymMat<D>>& given = given_there.at_piece;
   PieceMetric<D> out;
@@ -202,8 +197,8 @@ PieceSetup<D> set_up_piece(MeshFilePiece<D> piece, const std::string& input, con
   const HausdorffBound bound = hausdorff_bound_of(job, setup.settings.hausd);
   std::optional<SurfaceSizes> surface;
   if (source.surface_sizes) surface = SurfaceSizes{(*source.surface_sizes)[0], (*source.surface_sizes)[1], source.h_max.value_or(diagonal)};
-  const PieceMetric<D> given = piece_metric(piece, job,
-                                            {boundary, setup.geometry.get(), bound, diagonal, source.metric_path, surface, input});
+  const PieceMetric<D> given = piece_metric(
+      piece, job, {boundary, setup.geometry.get(), bound, diagonal, source.metric_path, source.hessian, surface, input});
   setup.hausdorff_bounded_vertices = given.hausdorff_bounded_vertices;
   const double smallest = -max_over_processes(-smallest_size_at_vertices(mesh, given.within(job, job.bounds)));
   const AdaptationMetric<D> metric = given.within(job, bounds_above_floor(job, smallest, diagonal));

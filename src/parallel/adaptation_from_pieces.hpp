@@ -11,6 +11,7 @@
 #include <string>
 
 #include "adapt/adaptation_driver.hpp"
+#include "metric/hessian_source.hpp"
 #include "parallel/distributed_adaptation.hpp"
 #include "parallel/mesh_file_pieces.hpp"
 
@@ -27,11 +28,13 @@ struct PieceSetup {
 };
 
 // Where a run from pieces takes its metric: a metric file (`metric_path`: a metric or mmg's sizes per
-// file vertex, each row checked by the process that reads it), or else the surface metric of
-// `hocav adapt --surface-sizes HN,HT` (its interior size `h_max`, or else the whole mesh's
-// bounding-box diagonal), or else the job's analytic metric, or else the input's implied metric.
+// file vertex, each row checked by the process that reads it), or else the Lp metric of a field's
+// Hessian (`hessian`: hessian_metric_by_runs), or else the surface metric of `hocav adapt
+// --surface-sizes HN,HT` (its interior size `h_max`, or else the whole mesh's bounding-box
+// diagonal), or else the job's analytic metric, or else the input's implied metric.
 struct PieceMetricSource {
   std::string metric_path;
+  std::optional<HessianSource> hessian;
   std::optional<std::array<double, 2>> surface_sizes;
   std::optional<double> h_max;
 };

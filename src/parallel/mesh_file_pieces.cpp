@@ -6,6 +6,7 @@
 #include <unordered_set>
 
 #include "base/error.hpp"
+#include "geom/box.hpp"
 #include "io/gamma_keywords.hpp"
 #include "io/gamma_mesh.hpp"
 #include "io/record_run.hpp"
@@ -338,6 +339,17 @@ MeshFilePiece<D> read_mesh_file_piece(const std::string& path) {
   return piece;
 }
 
+template <int D>
+double whole_diagonal(const Mesh<D>& piece) {
+  Box<D> own = Box<D>::empty();
+  for (const Vec<D>& x : piece.vertices()) own.add(x);
+  Box<D> whole = Box<D>::empty();
+  for (const Box<D>& each : all_gather_value(own)) whole.add(each);
+  return whole.is_empty() ? 0 : norm(whole.upper - whole.lower);
+}
+
+template double whole_diagonal(const Mesh<2>&);
+template double whole_diagonal(const Mesh<3>&);
 template MeshFilePiece<2> read_mesh_file_piece(const std::string&);
 template MeshFilePiece<3> read_mesh_file_piece(const std::string&);
 

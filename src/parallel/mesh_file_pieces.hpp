@@ -33,4 +33,8 @@ struct MeshFilePiece {
 template <int D>
 MeshFilePiece<D> read_mesh_file_piece(const std::string& path);
 
+// Every process at once: the diagonal of the whole mesh's bounding box, from every piece's.
+template <int D>
+double whole_diagonal(const Mesh<D>& piece);
+
 }  // namespace hocav

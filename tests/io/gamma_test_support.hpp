@@ -1,4 +1,4 @@
-// Helpers of the Gamma mesh and solution tests: scratch files, and a builder of binary files
+// Helpers of the Gamma mesh and solution tests: scratch files, error messages, and a builder of binary files
 // written independently of hocav's writer (it patches NextPos after the fact, the writer computes it
 // ahead), so the tests can check the layout against docs/formats.md ("Binary layout") byte by byte.
 #pragma once
@@ -10,13 +10,26 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "base/error.hpp"
+
 namespace hocav::testing_support {
 
 inline std::string temporary_path(const std::string& name) { return ::testing::TempDir() + "hocav_gamma_" + name; }
+
+// The message of the Error `action` throws, or "no error".
+inline std::string error_of(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const Error& error) {
+    return error.what();
+  }
+  return "no error";
+}
 
 inline std::string write_file(const std::string& name, const std::string& bytes) {
   std::string path = temporary_path(name);

@@ -16,6 +16,7 @@
 namespace hocav {
 namespace {
 
+using testing_support::error_of;
 using testing_support::GammaBinaryBuilder;
 using testing_support::read_file;
 using testing_support::temporary_path;
@@ -160,15 +161,6 @@ TEST(SolutionFile, ReadsTheThirdPartyMetricsAsPositiveDefinite) {
 }
 
 // ---- checks of a metric against its mesh ----
-
-std::string error_of(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const Error& error) {
-    return error.what();
-  }
-  return "no error";
-}
 
 SolutionFileContent metric_field(int dimension, std::vector<double> values) {
   SolutionFileContent content{dimension, 0, {}};

@@ -25,7 +25,7 @@ import os
 import re
 import sys
 
-from mpi_test_support import check_same_refs, check_valid, check_vtu_in_runs, distributed_test, keywords, refused, run, same_bytes, stats
+from mpi_test_support import check_same_refs, check_valid, check_vtu_in_runs, distributed_test, keywords, refused, run, same_bytes, stats, write_field
 
 TOLERANCE = 0.01
 MIN_QUALITY = 0.05
@@ -231,7 +231,8 @@ def check_from_pieces(hocav, mpirun, work):
     shell, an analytic metric from pieces with a Hausdorff bound that refines the walls: the same
     vertices bounded as in the serial run, and the checks above; the implied metric on the cube and on
     the shell with that bound (no feature line the serial run has not); the surface metric
-    (--surface-sizes, its normals from the whole boundary) on the shell. With gmsh, a CAD
+    (--surface-sizes, its normals from the whole boundary) on the shell; the Lp metric of a field's
+    Hessian (--hessian FIELD.sol, each process reading its run of the field) on the cube. With gmsh, a CAD
     model serves a run from pieces (check_cad_from_pieces)."""
     run([hocav, "convert", "cube.meshb", "cube.mesh"], work)
     untagged_copy(work, "cube.mesh", "bare.mesh")
@@ -263,6 +264,10 @@ def check_from_pieces(hocav, mpirun, work):
     compare_with_serial(hocav, mpirun, work, ["--implied"], process_counts=(2, 3), mesh="shell3.meshb", options=["--hausd", "0.002"],
                         pieces=True)
     compare_with_serial(hocav, mpirun, work, ["--surface-sizes", "0.02,0.1", "--hgrad", "1.5"], process_counts=(2, 3), mesh="shell3.meshb",
+                        pieces=True, cube_steps=False)
+    # The Lp metric of a field's Hessian, recovered from the field file's runs (hessian_metric_by_runs).
+    write_field(work, "bare.mesh", hocav, "field.sol")
+    compare_with_serial(hocav, mpirun, work, ["--hessian", "field.sol", "--complexity", "4000"], process_counts=(2, 3), mesh="bare.mesh",
                         pieces=True, cube_steps=False)
     if os.environ.get("HOCAV_WITH_GMSH", "0") in ("1", "ON", "TRUE"):
         check_cad_from_pieces(hocav, mpirun, work)

@@ -2,6 +2,7 @@
 as a dict, the validity checks, the refs of a mesh, a .vtu written in runs."""
 import contextlib
 import io
+import math
 import os
 import re
 import subprocess
@@ -123,6 +124,17 @@ def keywords(path):
         out[name] = [tuple(words[i + 2 + width * k:i + 2 + width * (k + 1)]) for k in range(count)]
         i += 2 + width * count
     return out
+
+
+def write_field(work, mesh, hocav, name):
+    """A smooth step across a sphere (circle) plus a product of coordinates at the mesh's vertices,
+    as a text .sol."""
+    run([hocav, "convert", mesh, "field_mesh.mesh"], work)
+    points = [[float(x) for x in record[:-1]] for record in keywords(os.path.join(work, "field_mesh.mesh"))["Vertices"]]
+    values = [math.tanh((math.dist(x, [0.2] * len(x)) - 0.5) / 0.1) + x[0] * x[1] for x in points]
+    with open(os.path.join(work, name), "w") as file:
+        file.write(f"MeshVersionFormatted 2\nDimension {len(points[0])}\nSolAtVertices\n{len(values)}\n1 1\n")
+        file.write("\n".join(repr(v) for v in values) + "\nEnd\n")
 
 
 def distributed_test(check):
