@@ -25,10 +25,6 @@ struct PieceVertex {
   double measure;
 };
 
-struct Edge {
-  Index from, to;  // global ids
-};
-
 // A vertex's point and field value, as a stencil reads them.
 template <int D>
 struct Sample {
@@ -62,21 +58,66 @@ struct RunGraph {
 
 int holder_of(Index id, Index vertex_count) { return slice_holding(id, vertex_count, process_count()); }
 
-// Collective: the run's points, measures and neighbours from every piece (each edge once per piece).
+// Per process, the piece's vertex graph's rows (id, count, neighbours' ids) of the vertices of that
+// process's run.
 template <int D>
-RunGraph<D> run_graph(const MeshPart<D>& piece, Index vertex_count) {
-  const auto processes = static_cast<std::size_t>(process_count());
-  std::vector<double> measure(piece.global_ids.size(), 0.0);
-  for (Index k = 0; k < piece.mesh.element_count(); ++k)
-    for (Index v : piece.mesh.element(k)) measure[static_cast<std::size_t>(v)] += std::abs(element_measure(piece.mesh, k));
-  std::vector<std::vector<PieceVertex<D>>> vertices(processes);
-  std::vector<std::vector<Edge>> edges(processes);
+std::vector<std::vector<Index>> piece_rows(const MeshPart<D>& piece, Index vertex_count) {
+  std::vector<std::vector<Index>> rows(static_cast<std::size_t>(process_count()));
   const VertexGraph graph = vertex_graph(piece.mesh);
   for (Index v = 0; v < piece.mesh.vertex_count(); ++v) {
     const Index id = piece.global_ids[static_cast<std::size_t>(v)];
-    const auto to = static_cast<std::size_t>(holder_of(id, vertex_count));
-    vertices[to].push_back({id, piece.mesh.vertex(v), measure[static_cast<std::size_t>(v)]});
-    for (Index u : graph.neighbors_of(v)) edges[to].push_back({id, piece.global_ids[static_cast<std::size_t>(u)]});
+    std::vector<Index>& row = rows[static_cast<std::size_t>(holder_of(id, vertex_count))];
+    row.push_back(id);
+    row.push_back(static_cast<Index>(graph.neighbors_of(v).size()));
+    for (Index u : graph.neighbors_of(v)) row.push_back(piece.global_ids[static_cast<std::size_t>(u)]);
+  }
+  return rows;
+}
+
+// Collective: the run's rows of the whole mesh's vertex graph: the pieces' rows of each vertex
+// merged, ascending, each neighbour once.
+template <int D>
+Lists run_neighbours(const MeshPart<D>& piece, Index vertex_count, Index first, std::size_t size) {
+  std::vector<Index> arrived = exchange_values_joined(piece_rows(piece, vertex_count));
+  Lists lists;
+  lists.offsets.assign(size + 1, 0);  // first each vertex's rows joined, then merged in place
+  for (std::size_t at = 0; at < arrived.size(); at += static_cast<std::size_t>(arrived[at + 1]) + 2)
+    lists.offsets[static_cast<std::size_t>(arrived[at] - first) + 1] += arrived[at + 1];
+  for (std::size_t i = 0; i < size; ++i) lists.offsets[i + 1] += lists.offsets[i];
+  std::vector<Index>& joined = lists.entries;
+  joined.resize(static_cast<std::size_t>(lists.offsets[size]));
+  std::vector<Index> filled(lists.offsets.begin(), lists.offsets.end() - 1);
+  for (std::size_t at = 0; at < arrived.size(); at += static_cast<std::size_t>(arrived[at + 1]) + 2) {
+    const auto vertex = static_cast<std::size_t>(arrived[at] - first);
+    for (Index k = 0; k < arrived[at + 1]; ++k)
+      joined[static_cast<std::size_t>(filled[vertex]++)] = arrived[at + 2 + static_cast<std::size_t>(k)];
+  }
+  arrived = {};
+  Index kept = 0;
+  for (std::size_t i = 0; i < size; ++i) {
+    Index* begin = joined.data() + lists.offsets[i];
+    Index* end = joined.data() + lists.offsets[i + 1];
+    std::sort(begin, end);
+    end = std::unique(begin, end);
+    lists.offsets[i] = kept;  // (offsets[i + 1] is read before it is overwritten)
+    kept = static_cast<Index>(std::copy(begin, end, joined.data() + kept) - joined.data());
+  }
+  lists.offsets[size] = kept;
+  joined.resize(static_cast<std::size_t>(kept));
+  return lists;
+}
+
+// Collective: the run's points, measures and neighbours from every piece.
+template <int D>
+RunGraph<D> run_graph(const MeshPart<D>& piece, Index vertex_count) {
+  std::vector<double> measure(piece.global_ids.size(), 0.0);
+  for (Index k = 0; k < piece.mesh.element_count(); ++k)
+    for (Index v : piece.mesh.element(k)) measure[static_cast<std::size_t>(v)] += std::abs(element_measure(piece.mesh, k));
+  std::vector<std::vector<PieceVertex<D>>> vertices(static_cast<std::size_t>(process_count()));
+  for (Index v = 0; v < piece.mesh.vertex_count(); ++v) {
+    const Index id = piece.global_ids[static_cast<std::size_t>(v)];
+    vertices[static_cast<std::size_t>(holder_of(id, vertex_count))].push_back(
+        {id, piece.mesh.vertex(v), measure[static_cast<std::size_t>(v)]});
   }
   RunGraph<D> run;
   run.first = slice_start(vertex_count, process_rank(), process_count());
@@ -90,14 +131,7 @@ RunGraph<D> run_graph(const MeshPart<D>& piece, Index vertex_count) {
     run.measures[i] += vertex.measure;
     run.used[i] = 1;
   }
-  std::vector<Edge> arrived = exchange_values_joined(edges);
-  std::sort(arrived.begin(), arrived.end(), [](const Edge& a, const Edge& b) { return a.from != b.from ? a.from < b.from : a.to < b.to; });
-  arrived.erase(std::unique(arrived.begin(), arrived.end(), [](const Edge& a, const Edge& b) { return a.from == b.from && a.to == b.to; }),
-                arrived.end());
-  run.neighbours.offsets.assign(size + 1, 0);
-  for (const Edge& edge : arrived) ++run.neighbours.offsets[static_cast<std::size_t>(edge.from - run.first) + 1];
-  for (std::size_t i = 0; i < size; ++i) run.neighbours.offsets[i + 1] += run.neighbours.offsets[i];
-  for (const Edge& edge : arrived) run.neighbours.entries.push_back(edge.to);
+  run.neighbours = run_neighbours(piece, vertex_count, run.first, size);
   return run;
 }
 
@@ -160,55 +194,67 @@ void grow_rings(std::vector<Stencil>& stencils, const RunGraph<D>& run, Index ve
   }
 }
 
-// Collective: the fit of every stencil (each id's sample asked of its run's process); the fitted
-// ones leave `stencils` for `hessians`.
+// Collective: the samples of the `wanted` ids, each asked of its run's process, looked up by id.
 template <int D>
-void fit_stencils(std::vector<Stencil>& stencils, const std::vector<Sample<D>>& held, Index first,
-                  std::vector<std::optional<SymMat<D>>>& hessians) {
-  std::vector<Index> wanted;
-  for (const Stencil& s : stencils) wanted.insert(wanted.end(), s.ids.begin(), s.ids.end());
-  const std::vector<Index> ids = ascending_unique(std::move(wanted));
-  long long bytes_sent = 0;
-  const std::vector<Sample<D>> samples = values_by_global_id<Sample<D>>(ids, first, held, bytes_sent);
-  std::vector<Vec<D>> points;
-  std::vector<double> values;
-  std::erase_if(stencils, [&](const Stencil& s) {
-    points.clear();
-    values.clear();
-    for (Index id : s.ids) {
-      const Sample<D>& sample = samples[static_cast<std::size_t>(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin())];
-      points.push_back(sample.point);
-      values.push_back(sample.value);
-    }
-    hessians[s.vertex] = fit_hessian<D>(held[s.vertex].point, held[s.vertex].value, points, values);
-    return hessians[s.vertex].has_value();
-  });
-}
+class SampleTable {
+ public:
+  SampleTable(std::vector<Index> wanted, const std::vector<Sample<D>>& held, Index first) : ids_(ascending_unique(std::move(wanted))) {
+    long long bytes_sent = 0;
+    samples_ = values_by_global_id<Sample<D>>(ids_, first, held, bytes_sent);
+  }
 
-// Collective: recover_hessians' Hessians at the run's vertices, from the field's `values` there.
+  // The fit at `at` on the stencil `ids` (fit_hessian).
+  std::optional<SymMat<D>> fit(const Sample<D>& at, std::span<const Index> ids) {
+    points_.clear();
+    values_.clear();
+    for (Index id : ids) {
+      const Sample<D>& sample = samples_[static_cast<std::size_t>(std::lower_bound(ids_.begin(), ids_.end(), id) - ids_.begin())];
+      points_.push_back(sample.point);
+      values_.push_back(sample.value);
+    }
+    return fit_hessian<D>(at.point, at.value, points_, values_);
+  }
+
+ private:
+  std::vector<Index> ids_;
+  std::vector<Sample<D>> samples_;
+  std::vector<Vec<D>> points_;  // a stencil's, reused
+  std::vector<double> values_;
+};
+
+// Collective: recover_hessians' Hessians at the run's vertices, from the field's `values` there:
+// the 1-ring's fit of every vertex, then the 2- and 3-ring's of the vertices left.
 template <int D>
 std::vector<SymMat<D>> recovered_hessians(const RunGraph<D>& run, const std::vector<double>& values, Index vertex_count,
                                           const std::string& path) {
   std::vector<Sample<D>> held;
   for (std::size_t i = 0; i < values.size(); ++i) held.push_back({run.points[i], values[i]});
-  std::vector<std::optional<SymMat<D>>> hessians(values.size());
-  std::vector<Stencil> stencils;
+  std::vector<SymMat<D>> hessians(values.size());
+  std::vector<Stencil> left;
+  SampleTable<D> ring_one(run.neighbours.entries, held, run.first);
   for (std::size_t i = 0; i < values.size(); ++i) {
-    const std::span<const Index> ring = run.neighbours.of(i);
-    stencils.push_back({i, std::vector<Index>(ring.begin(), ring.end())});
+    const std::optional<SymMat<D>> fitted = ring_one.fit(held[i], run.neighbours.of(i));
+    if (fitted)
+      hessians[i] = *fitted;
+    else
+      left.push_back({i, std::vector<Index>(run.neighbours.of(i).begin(), run.neighbours.of(i).end())});
   }
-  for (int rings = 1; rings <= kHessianMaxRings; ++rings) {
-    if (rings > 1) grow_rings(stencils, run, vertex_count);
-    fit_stencils(stencils, held, run.first, hessians);
-    if (max_over_processes(static_cast<Index>(stencils.size())) == 0) break;
+  for (int rings = 2; rings <= kHessianMaxRings && max_over_processes(static_cast<Index>(left.size())) > 0; ++rings) {
+    grow_rings(left, run, vertex_count);
+    std::vector<Index> wanted;
+    for (const Stencil& s : left) wanted.insert(wanted.end(), s.ids.begin(), s.ids.end());
+    SampleTable<D> table(std::move(wanted), held, run.first);
+    std::erase_if(left, [&](const Stencil& s) {
+      const std::optional<SymMat<D>> fitted = table.fit(held[s.vertex], s.ids);
+      if (fitted) hessians[s.vertex] = *fitted;
+      return fitted.has_value();
+    });
   }
-  if (!stencils.empty())
+  if (!left.empty())
     throw Error(path + ": hessian recovery: the neighbours of vertex " +
-                std::to_string(run.first + static_cast<Index>(stencils[0].vertex) + 1) + " within " + std::to_string(kHessianMaxRings) +
+                std::to_string(run.first + static_cast<Index>(left[0].vertex) + 1) + " within " + std::to_string(kHessianMaxRings) +
                 " edges do not determine a quadratic");
-  std::vector<SymMat<D>> out;
-  for (const std::optional<SymMat<D>>& hessian : hessians) out.push_back(*hessian);
-  return out;
+  return hessians;
 }
 
 // Collective: the source's Hessians at the run's vertices: exact for an analytic field, else
