@@ -22,15 +22,22 @@
 #include "io/gamma_mesh.hpp"
 #include "io/node_metrics.hpp"
 #include "io/output_set.hpp"
+#include "io/record_run.hpp"
 #include "metric/analytic_field.hpp"
 #include "metric/analytic_metric.hpp"
 #include "metric/gradation.hpp"
 #include "metric/hessian_metric.hpp"
 #include "metric/implied_metric.hpp"
+#include "metric/surface_metric.hpp"
+#include "parallel/boundary_of_parts.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/distributed_gradation.hpp"
 #include "parallel/hessian_metric_runs.hpp"
 #include "parallel/implied_metric_runs.hpp"
 #include "parallel/mesh_file_pieces.hpp"
+#include "parallel/metrics_by_global_id.hpp"
+#include "parallel/piece_input_check.hpp"
+#include "parallel/piece_metric_runs.hpp"
 #include "parallel/solution_file_runs.hpp"
 #include "report/mesh_summary.hpp"
 
@@ -218,17 +225,55 @@ void write_metric(const Mesh<D>& mesh, const MeshFileContent& file, const Metric
             << " (" << mesh_summary(mesh) << ")\n";
 }
 
+// Under mpirun: the surface metric at the piece's vertices, made on the whole boundary every process
+// gathers, the piece's facets oriented outward first. Refused for a mesh with facets inside the
+// domain, which one piece cannot orient (pieces_have_inner_facets).
+template <int D>
+std::vector<SymMat<D>> surface_metric_of_piece(MeshPart<D>& piece, const MetricOptions& options) {
+  if (!piece.mesh.has_topology()) piece.mesh.build_topology();
+  if (pieces_have_inner_facets(piece))
+    throw Error(options.mesh + ": under mpirun, --surface needs a mesh without facets inside the domain (run it on one process)");
+  piece.mesh.orient_boundary_facets_outward();
+  const MeshPart<D> boundary = boundary_of_parts(piece);
+  const SurfaceSizes sizes{options.surface[0], options.surface[1], options.h_max.value_or(whole_diagonal(piece.mesh))};
+  return values_from_boundary(piece, boundary.global_ids, surface_metric_at_boundary(boundary.mesh, sizes),
+                              surface_interior_metric<D>(sizes));
+}
+
+// Under mpirun: the metric at this process's run of the file's vertices, from its piece: the implied
+// metric (the serial one bit for bit) or the Hessian's (hessian_metric_by_runs) made by runs; a
+// metric file's rows, the analytic or the surface metric at the piece's vertices; graded across the
+// pieces (grade_piece_metrics) with --gradation.
+template <int D>
+VertexRunMetrics<D> metric_by_runs(MeshFilePiece<D>& piece, const MetricOptions& options, Source source) {
+  MeshPart<D>& part = piece.part;
+  const Index count = piece.vertex_count;
+  std::optional<VertexRunMetrics<D>> run;
+  std::vector<SymMat<D>> at_piece;
+  long long bytes_sent = 0;
+  if (source == Source::kImplied) run = implied_metric_by_runs(part, count, options.mesh);
+  if (source == Source::kHessian)
+    run = hessian_metric_by_runs(part, count, hessian_source<D>(options), whole_diagonal(part.mesh), options.mesh);
+  if (source == Source::kInput) {
+    const RecordRun rows{process_rank(), process_count()};
+    at_piece = metrics_by_global_id(part.global_ids, rows.of(count).first,
+                                    metrics_of_rows<D>(read_metric_run(options.input, D, count, rows)), bytes_sent);
+  }
+  if (source == Source::kAnalytic) at_piece = analytic_metric_at_vertices(analytic_metric_spec<D>(options), part.mesh);
+  if (source == Source::kSurface) at_piece = surface_metric_of_piece(part, options);
+  if (run && !options.gradation) return *run;
+  if (run) at_piece = metrics_by_global_id(part.global_ids, run->first, run->metrics, bytes_sent);
+  if (options.gradation) grade_piece_metrics(part, at_piece, {*options.gradation});
+  return runs_of_piece_metrics(part, count, at_piece);
+}
+
 // Under mpirun (docs/distributed.md §Reading in pieces): each process reads its piece of the mesh,
-// computes the implied metric (the serial command's file byte for byte) or the Hessian's Lp metric
-// (its scale's sum over the processes may change the last bits) of its run of the file's vertices
-// and writes it in place; no process holds the whole mesh. Returns the summary line.
+// computes the metric of its run of the file's vertices (metric_by_runs) and writes it in place; no
+// process holds the whole mesh. Returns the summary line.
 template <int D>
 std::string write_metric_in_pieces(const MetricOptions& options, Source source) {
-  const MeshFilePiece<D> piece = read_mesh_file_piece<D>(options.mesh);
-  const VertexRunMetrics<D> run = source == Source::kImplied
-                                      ? implied_metric_by_runs(piece.part, piece.vertex_count, options.mesh)
-                                      : hessian_metric_by_runs(piece.part, piece.vertex_count, hessian_source<D>(options),
-                                                               whole_diagonal(piece.part.mesh), options.mesh);
+  MeshFilePiece<D> piece = read_mesh_file_piece<D>(options.mesh);
+  const VertexRunMetrics<D> run = metric_by_runs(piece, options, source);
   write_solution_runs(options.output, rows_of_metrics(run.metrics), run.first, piece.vertex_count);
   std::vector<double> volumes;  // vertex_volumes' (to the last bits): each element's measure shared among its vertices
   for (double measure : run.measures) volumes.push_back(measure / (D + 1));
@@ -240,9 +285,8 @@ std::string write_metric_in_pieces(const MetricOptions& options, Source source) 
 }
 
 void run_metric_in_pieces(const MetricOptions& options, Source source) {
-  if ((source != Source::kImplied && source != Source::kHessian) || options.gradation)
-    throw Error(
-        "under mpirun, hocav metric computes --implied or --hessian only, without --gradation (docs/distributed.md §Reading in pieces)");
+  if (source == Source::kInterpolated)
+    throw Error("under mpirun, hocav metric does not interpolate (--from): run it on one process (docs/distributed.md §Reading in pieces)");
   const std::string extension = file_extension(options.mesh);
   if (extension != ".mesh" && extension != ".meshb")
     throw Error(options.mesh + ": under mpirun, hocav metric reads Gamma meshes (.mesh, .meshb) in pieces, not '" + extension + "'");
@@ -252,6 +296,7 @@ void run_metric_in_pieces(const MetricOptions& options, Source source) {
   if (process_rank() == 0) {
     outputs.emplace();
     outputs->add_input(options.mesh, "the input mesh");
+    if (source == Source::kInput) outputs->add_input(options.input, "--input");
     if (source == Source::kHessian && !is_analytic_field(options.hessian)) outputs->add_input(options.hessian, "--hessian");
     outputs->add_output(options.output, "-o");
   }

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <vector>
 
 #include "mesh/mesh.hpp"
 
@@ -40,6 +42,17 @@ double total_measure(const Mesh<D>& mesh) {
   double sum = 0;
   for (Index k = 0; k < mesh.element_count(); ++k) sum += element_measure(mesh, k);
   return sum;
+}
+
+// Per vertex, the summed absolute measure of its elements.
+template <int D>
+std::vector<double> vertex_element_measures(const Mesh<D>& mesh) {
+  std::vector<double> sums(static_cast<std::size_t>(mesh.vertex_count()), 0.0);
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    const double measure = std::abs(element_measure(mesh, k));
+    for (Index v : mesh.element(k)) sums[static_cast<std::size_t>(v)] += measure;
+  }
+  return sums;
 }
 
 // The length of the diagonal of the vertices' axis-aligned bounding box (0 for no vertex).

@@ -136,9 +136,7 @@ GivenMetric<D> given_metric(const MeshPart<D>& piece, const AdaptationJob<D>& jo
     if (in.geometry) out.at_boundary = analytic_metric_at_vertices(*job.analytic, in.boundary.mesh);
   } else if (in.surface) {
     out.at_boundary = surface_metric_at_boundary(in.boundary.mesh, *in.surface);
-    const SymMat<D> interior = surface_interior_metric<D>(*in.surface);
-    for (Index b : boundary_indices(piece, in.boundary.global_ids))
-      out.at_piece.push_back(b == kNoIndex ? interior : out.at_boundary[static_cast<std::size_t>(b)]);
+    out.at_piece = values_from_boundary(piece, in.boundary.global_ids, out.at_boundary, surface_interior_metric<D>(*in.surface));
   } else {
     out.at_piece = rows.of(piece.global_ids);
     if (in.geometry) out.at_boundary = rows.of(in.boundary.global_ids);

@@ -24,4 +24,15 @@ MeshPart<D> boundary_of_parts(const MeshPart<D>& part, long long* bytes_sent = n
 template <int D>
 std::vector<Index> boundary_indices(const MeshPart<D>& part, std::span<const Index> boundary_ids);
 
+// Per vertex of `part`: its value in `at_boundary` (per vertex of the boundary of sorted global ids
+// `boundary_ids`), or `elsewhere` when it is not on the boundary.
+template <int D, typename T>
+std::vector<T> values_from_boundary(const MeshPart<D>& part, std::span<const Index> boundary_ids, const std::vector<T>& at_boundary,
+                                    const T& elsewhere) {
+  std::vector<T> values;
+  for (Index b : boundary_indices(part, boundary_ids))
+    values.push_back(b == kNoIndex ? elsewhere : at_boundary[static_cast<std::size_t>(b)]);
+  return values;
+}
+
 }  // namespace hocav

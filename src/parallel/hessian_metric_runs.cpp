@@ -110,9 +110,7 @@ Lists run_neighbours(const MeshPart<D>& piece, Index vertex_count, Index first, 
 // Collective: the run's points, measures and neighbours from every piece.
 template <int D>
 RunGraph<D> run_graph(const MeshPart<D>& piece, Index vertex_count) {
-  std::vector<double> measure(piece.global_ids.size(), 0.0);
-  for (Index k = 0; k < piece.mesh.element_count(); ++k)
-    for (Index v : piece.mesh.element(k)) measure[static_cast<std::size_t>(v)] += std::abs(element_measure(piece.mesh, k));
+  const std::vector<double> measure = vertex_element_measures(piece.mesh);
   std::vector<std::vector<PieceVertex<D>>> vertices(static_cast<std::size_t>(process_count()));
   for (Index v = 0; v < piece.mesh.vertex_count(); ++v) {
     const Index id = piece.global_ids[static_cast<std::size_t>(v)];

@@ -25,7 +25,7 @@ import os
 import re
 import sys
 
-from mpi_test_support import check_same_refs, check_valid, check_vtu_in_runs, distributed_test, keywords, refused, run, same_bytes, stats, write_field
+from mpi_test_support import check_same_refs, check_valid, check_vtu_in_runs, distributed_test, keywords, refused, run, same_bytes, stats, with_materials, write_field
 
 TOLERANCE = 0.01
 MIN_QUALITY = 0.05
@@ -196,28 +196,6 @@ def untagged_copy(work, source, target):
         kept.append(lines[i])
         i += 1
     open(os.path.join(work, target), "w").write("\n".join(kept) + "\n")
-
-
-def with_materials(work, source, target):
-    """`source` (a text 3D .mesh) written to `target` with the elements of x < 0.5 of ref 2 and a
-    facet of ref 9 on every face between the two materials."""
-    mesh = keywords(os.path.join(work, source))
-    points = [[float(x) for x in record[:3]] for record in mesh["Vertices"]]
-    tetrahedra = [list(record[:4]) + ["2" if sum(points[int(v) - 1][0] for v in record[:4]) < 2 else "1"]
-                  for record in mesh["Tetrahedra"]]
-    sides = {}
-    for tetrahedron in tetrahedra:
-        for skip in range(4):
-            face = tuple(sorted(int(v) for i, v in enumerate(tetrahedron[:4]) if i != skip))
-            sides.setdefault(face, set()).add(tetrahedron[4])
-    inner = [face for face, refs in sides.items() if len(refs) == 2]
-    assert inner, "no face between the materials"
-    lines = ["MeshVersionFormatted 2", "Dimension 3", "Vertices", str(len(points))]
-    lines += [" ".join(record) for record in mesh["Vertices"]]
-    lines += ["Tetrahedra", str(len(tetrahedra))] + [" ".join(t) for t in tetrahedra]
-    triangles = [" ".join(record) for record in mesh["Triangles"]] + [f"{a} {b} {c} 9" for a, b, c in inner]
-    lines += ["Triangles", str(len(triangles))] + triangles + ["End"]
-    open(os.path.join(work, target), "w").write("\n".join(lines) + "\n")
 
 
 def check_from_pieces(hocav, mpirun, work):
