@@ -26,9 +26,12 @@ struct Box {
       upper[i] = std::max(upper[i], point[i]);
     }
   }
+  // The union: an empty box adds nothing.
   void add(const Box& box) {
-    add(box.lower);
-    add(box.upper);
+    for (int i = 0; i < D; ++i) {
+      lower[i] = std::min(lower[i], box.lower[i]);
+      upper[i] = std::max(upper[i], box.upper[i]);
+    }
   }
   double distance2(const Vec<D>& x) const {
     double sum = 0;
