@@ -74,36 +74,45 @@ std::vector<std::vector<Index>> piece_rows(const MeshPart<D>& piece, Index verte
   return rows;
 }
 
-// Collective: the run's rows of the whole mesh's vertex graph: the pieces' rows of each vertex
-// merged, ascending, each neighbour once.
-template <int D>
-Lists run_neighbours(const MeshPart<D>& piece, Index vertex_count, Index first, std::size_t size) {
-  std::vector<Index> arrived = exchange_values_joined(piece_rows(piece, vertex_count));
+// The rows (id, count, ids) that arrived for the run of vertices from `first`, joined per vertex.
+Lists joined_rows(const std::vector<Index>& arrived, Index first, std::size_t size) {
   Lists lists;
-  lists.offsets.assign(size + 1, 0);  // first each vertex's rows joined, then merged in place
+  lists.offsets.assign(size + 1, 0);
   for (std::size_t at = 0; at < arrived.size(); at += static_cast<std::size_t>(arrived[at + 1]) + 2)
     lists.offsets[static_cast<std::size_t>(arrived[at] - first) + 1] += arrived[at + 1];
   for (std::size_t i = 0; i < size; ++i) lists.offsets[i + 1] += lists.offsets[i];
-  std::vector<Index>& joined = lists.entries;
-  joined.resize(static_cast<std::size_t>(lists.offsets[size]));
+  lists.entries.resize(static_cast<std::size_t>(lists.offsets[size]));
   std::vector<Index> filled(lists.offsets.begin(), lists.offsets.end() - 1);
   for (std::size_t at = 0; at < arrived.size(); at += static_cast<std::size_t>(arrived[at + 1]) + 2) {
     const auto vertex = static_cast<std::size_t>(arrived[at] - first);
     for (Index k = 0; k < arrived[at + 1]; ++k)
-      joined[static_cast<std::size_t>(filled[vertex]++)] = arrived[at + 2 + static_cast<std::size_t>(k)];
+      lists.entries[static_cast<std::size_t>(filled[vertex]++)] = arrived[at + 2 + static_cast<std::size_t>(k)];
   }
-  arrived = {};
+  return lists;
+}
+
+// Each list sorted and its repeats dropped, in place.
+void sort_unique_in_place(Lists& lists) {
+  const std::size_t size = lists.offsets.size() - 1;
   Index kept = 0;
   for (std::size_t i = 0; i < size; ++i) {
-    Index* begin = joined.data() + lists.offsets[i];
-    Index* end = joined.data() + lists.offsets[i + 1];
+    Index* begin = lists.entries.data() + lists.offsets[i];
+    Index* end = lists.entries.data() + lists.offsets[i + 1];
     std::sort(begin, end);
     end = std::unique(begin, end);
     lists.offsets[i] = kept;  // (offsets[i + 1] is read before it is overwritten)
-    kept = static_cast<Index>(std::copy(begin, end, joined.data() + kept) - joined.data());
+    kept = static_cast<Index>(std::copy(begin, end, lists.entries.data() + kept) - lists.entries.data());
   }
   lists.offsets[size] = kept;
-  joined.resize(static_cast<std::size_t>(kept));
+  lists.entries.resize(static_cast<std::size_t>(kept));
+}
+
+// Collective: the run's rows of the whole mesh's vertex graph: the pieces' rows of each vertex
+// merged, ascending, each neighbour once.
+template <int D>
+Lists run_neighbours(const MeshPart<D>& piece, Index vertex_count, Index first, std::size_t size) {
+  Lists lists = joined_rows(exchange_values_joined(piece_rows(piece, vertex_count)), first, size);
+  sort_unique_in_place(lists);
   return lists;
 }
 
