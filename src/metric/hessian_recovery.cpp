@@ -53,8 +53,10 @@ bool solve_least_squares(std::vector<double>& a, std::vector<double>& b, int row
   return true;
 }
 
-// The vertices within `rings` edges of v (v excluded), appended to `stencil`; `mark` holds, per
-// vertex, the last v that collected it.
+// The vertices within `rings` edges of v (v excluded), appended to `stencil`; `mark` is kNoIndex
+// everywhere before and after, and v while the call collects. (Marks left from a call for fewer
+// rings of the same v would hide the inner rings from the outer ones: until the fifty-fifth
+// session no 3-ring fit ever succeeded.)
 void collect_rings(const VertexGraph& graph, Index v, int rings, std::vector<Index>& stencil, std::vector<Index>& mark) {
   stencil.clear();
   mark[static_cast<std::size_t>(v)] = v;
@@ -73,6 +75,8 @@ void collect_rings(const VertexGraph& graph, Index v, int rings, std::vector<Ind
         }
     ring_begin = ring_end;
   }
+  mark[static_cast<std::size_t>(v)] = kNoIndex;
+  for (Index u : stencil) mark[static_cast<std::size_t>(u)] = kNoIndex;
 }
 
 }  // namespace

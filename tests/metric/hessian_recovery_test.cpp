@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include "base/error.hpp"
@@ -41,6 +42,16 @@ TEST(HessianRecovery, RecoversAQuadraticExactlyAtEveryVertex) {
     x = Vec2{{1 + x[0], -2 + 0.01 * x[1]}};
   }
   expect_quadratic_recovered_exactly(stretched);
+}
+
+// Two strips along the axes joined at (2, 2): the corners (0, 0) and (2, 2) have 2 neighbours, their
+// 2-rings lie on two lines through them (xy = 0 there: no xy term), and only the 3-ring, 5 vertices
+// with (2, 2) or (0, 0), determines the quadratic.
+TEST(HessianRecovery, GrowsTheStencilToTheThirdRing) {
+  Mesh<2> cross;
+  for (Vec2 x : {Vec2{{0, 0}}, Vec2{{1, 0}}, Vec2{{2, 0}}, Vec2{{0, 1}}, Vec2{{0, 2}}, Vec2{{2, 2}}}) cross.add_vertex(x);
+  for (std::array<Index, 3> t : {std::array<Index, 3>{0, 1, 3}, {1, 2, 3}, {3, 2, 4}, {2, 5, 4}}) cross.add_element(t);
+  expect_quadratic_recovered_exactly(cross);
 }
 
 // The largest error of the recovered Hessian of u = exp(x) sin(2y) over the vertices away from the boundary.

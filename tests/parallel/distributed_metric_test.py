@@ -7,7 +7,8 @@ gmsh's unstructured shell and annulus when hocav has gmsh, with 2, 3 and 4 proce
 command's file byte for byte, with the same printed complexity; --gradation (after --surface, and
 after --implied) grades across the pieces to a fixed point of the serial grading, at least as fine
 as the metric it grades; the Lp metric of a field's Hessian (--hessian, a field file each process
-reads its run of, or an analytic field): the serial file's metrics to round-off. Refused under
+reads its run of, or an analytic field): the serial file's metrics to round-off, on a small mesh
+whose corners need the 3-ring too. Refused under
 mpirun, with exit 2, a one-line error and no output: interpolation (--from), --surface on a mesh
 with facets inside the domain, a .sol output, an input that is no Gamma mesh, a field file of
 another mesh, and a mesh whose Hessians no 3-ring fits (as the serial command refuses it).
@@ -99,6 +100,14 @@ def check(hocav, mpirun, work):
     with_materials(work, "cube.mesh", "materials.mesh")
     refused(mpirun, hocav, work, ["metric", "materials.mesh", "--surface", "0.02,0.1", "--gradation", "1.5", "-o", "m.solb"], "m.solb",
             "without facets inside the domain")
+    # Two strips joined at a corner, whose corners only the 3-ring fits (as
+    # HessianRecovery.GrowsTheStencilToTheThirdRing), each piece one triangle on 4 processes.
+    cross = ["0 0 0", "1 0 0", "2 0 0", "0 1 0", "0 2 0", "2 2 0"]
+    triangles = ["1 2 4 1", "2 3 4 1", "4 3 5 1", "3 6 5 1"]
+    with open(os.path.join(work, "cross.mesh"), "w") as file:
+        file.write("\n".join(["MeshVersionFormatted 2", "Dimension 2", "Vertices", "6"] + cross + ["Triangles", "4"] + triangles + ["End", ""]))
+    write_field(work, "cross.mesh", hocav, "cross.sol")
+    check_hessian(hocav, mpirun, work, "cross.mesh", "cross.sol")
     run([hocav, "generate", "cube", "--h", "0.25", "-o", "coarse.meshb"], work)
     write_field(work, "coarse.meshb", hocav, "coarse.sol")
     refused(mpirun, hocav, work, ["metric", "cube.meshb", "--hessian", "coarse.sol", "--complexity", "100", "-o", "m.solb"], "m.solb",
