@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "surface/surface_topology.hpp"
@@ -15,17 +16,26 @@ void tag_corner(std::vector<Index>& corners, std::vector<VertexClass>& classes, 
   if (std::find(corners.begin(), corners.end(), v) == corners.end()) corners.push_back(v);
 }
 
-// 3D: every ridge side becomes a tagged feature line; a vertex with two line edges is a ridge
-// vertex, with one or more than two a corner.
+// 3D: every ridge side becomes a tagged feature line, of the smallest ref of the facets along it
+// (whatever their order: a mesh read in pieces gathers its boundary in another); a vertex with two
+// line edges is a ridge vertex, with one or more than two a corner.
 void classify_features(Mesh<3>& mesh, const SurfaceTopology<3>& surface, std::vector<VertexClass>& classes) {
   std::unordered_set<std::uint64_t> lines;
   for (Index l = 0; l < mesh.line_count(); ++l) lines.insert(Mesh<3>::edge_key(mesh.line(l)[0], mesh.line(l)[1]));
+  std::vector<std::pair<Mesh<3>::Line, int>> found;      // the new lines with their refs, in the facets' order
+  std::unordered_map<std::uint64_t, std::size_t> place;  // per new line's edge key, its place in `found`
   for (Index f = 0; f < mesh.facet_count(); ++f)
     for (int side = 0; side < 3; ++side) {
       if (!surface.ridges[f][side]) continue;
       const Index a = mesh.facet(f)[(side + 1) % 3], b = mesh.facet(f)[(side + 2) % 3];
-      if (lines.insert(Mesh<3>::edge_key(a, b)).second) mesh.ridges().push_back(mesh.add_line({a, b}, mesh.facet_ref(f)));
+      const std::uint64_t key = Mesh<3>::edge_key(a, b);
+      if (lines.contains(key)) continue;
+      if (const auto [at, added] = place.try_emplace(key, found.size()); added)
+        found.push_back({{a, b}, mesh.facet_ref(f)});
+      else
+        found[at->second].second = std::min(found[at->second].second, mesh.facet_ref(f));
     }
+  for (const auto& [ends, ref] : found) mesh.ridges().push_back(mesh.add_line(ends, ref));
   std::vector<int> line_edges(static_cast<std::size_t>(mesh.vertex_count()), 0);
   for (Index l = 0; l < mesh.line_count(); ++l)
     for (Index v : mesh.line(l)) ++line_edges[v];

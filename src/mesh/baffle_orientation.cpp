@@ -70,12 +70,9 @@ std::vector<signed char> turns_by_patch(const std::vector<BaffleSide>& sides, co
 }  // namespace
 
 template <int D>
-std::vector<Index> baffle_facets_to_turn(const Mesh<D>& mesh) {
-  std::vector<Index> baffles;
-  for (Index f = 0; f < mesh.facet_count(); ++f)
-    if (is_baffle(mesh, f)) baffles.push_back(f);
+std::vector<char> baffle_turns(std::span<const typename Mesh<D>::Facet> baffles, std::span<const int> refs) {
   std::vector<BaffleSide> sides;
-  for (std::size_t b = 0; b < baffles.size(); ++b) append_sides<D>(mesh.facet(baffles[b]), mesh.facet_ref(baffles[b]), b, sides);
+  for (std::size_t b = 0; b < baffles.size(); ++b) append_sides<D>(baffles[b], refs[b], b, sides);
   std::stable_sort(sides.begin(), sides.end(), [](const BaffleSide& x, const BaffleSide& y) { return x.order() < y.order(); });
   // Per baffle, each side it shares with exactly one other baffle of its ref.
   SharedSides shared(baffles.size());
@@ -85,14 +82,32 @@ std::vector<Index> baffle_facets_to_turn(const Mesh<D>& mesh) {
     shared[sides[first].baffle].push_back({first, first + 1});
     shared[sides[first + 1].baffle].push_back({first + 1, first});
   }
-  const std::vector<signed char> turn = turns_by_patch(sides, shared);
+  std::vector<char> turns;
+  for (signed char turn : turns_by_patch(sides, shared)) turns.push_back(static_cast<char>(turn == 1));
+  return turns;
+}
+
+template <int D>
+std::vector<Index> baffle_facets_to_turn(const Mesh<D>& mesh) {
+  std::vector<Index> baffles;
+  std::vector<typename Mesh<D>::Facet> vertices;
+  std::vector<int> refs;
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    if (is_baffle(mesh, f)) {
+      baffles.push_back(f);
+      vertices.push_back(mesh.facet(f));
+      refs.push_back(mesh.facet_ref(f));
+    }
+  const std::vector<char> turns = baffle_turns<D>(vertices, refs);
   std::vector<Index> to_turn;
   for (std::size_t b = 0; b < baffles.size(); ++b)
-    if (turn[b] == 1) to_turn.push_back(baffles[b]);
+    if (turns[b]) to_turn.push_back(baffles[b]);
   return to_turn;
 }
 
 template std::vector<Index> baffle_facets_to_turn(const Mesh<2>&);
 template std::vector<Index> baffle_facets_to_turn(const Mesh<3>&);
+template std::vector<char> baffle_turns<2>(std::span<const Mesh<2>::Facet>, std::span<const int>);
+template std::vector<char> baffle_turns<3>(std::span<const Mesh<3>::Facet>, std::span<const int>);
 
 }  // namespace hocav

@@ -4,6 +4,7 @@
 // cancel in pairs: docs/mesh-model.md, "Boundary-aware cavities"). Files leave it free.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "mesh/mesh.hpp"
@@ -15,5 +16,11 @@ namespace hocav {
 // be oriented (a Möbius band) keeps its remaining facets as they are. Needs the topology.
 template <int D>
 std::vector<Index> baffle_facets_to_turn(const Mesh<D>& mesh);
+
+// The same rule on a list of baffle facets (their vertices, in the order the file gives them, and
+// their refs), in the order of their file ids: per baffle, whether to turn it (1) or not (0). A
+// mesh read in pieces gathers its baffles to orient them as the whole mesh's are.
+template <int D>
+std::vector<char> baffle_turns(std::span<const typename Mesh<D>::Facet> baffles, std::span<const int> refs);
 
 }  // namespace hocav

@@ -314,14 +314,7 @@ template <int D>
 void Mesh<D>::link_facets() {
   std::vector<Index> ball, stack;
   for (auto f = static_cast<Index>(facet_element_face_.size()); f < facet_count(); ++f) {
-    const Facet& facet = facets_[f];
-    // A vertex of a non-manifold place has balls the walk does not join: the facet's other vertices,
-    // then every element.
-    Index found = kNoIndex;
-    for (int i = 0; i < D && found == kNoIndex; ++i) found = facet_face_near(facet, facet[i], ball, stack);
-    for (Index k = 0; k < element_count() && found == kNoIndex; ++k)
-      if (const int face = local_face_of<D>(elements_[k], facet.data()); face >= 0) found = k * (D + 1) + face;
-    if (found == kNoIndex) throw Error("boundary facet " + std::to_string(f + 1) + " is not a face of any element");
+    const Index found = facet_face(f, ball, stack);
     // As build_topology links it: from the smaller of the two elements across it.
     Index k = found / (D + 1);
     auto face = static_cast<int>(found % (D + 1));
@@ -331,6 +324,32 @@ void Mesh<D>::link_facets() {
     }
     facet_element_face_.push_back(k * (D + 1) + face);
     link_face_facet(k, face, f);
+  }
+}
+
+template <int D>
+Index Mesh<D>::facet_face(Index f, std::vector<Index>& ball, std::vector<Index>& stack) const {
+  const Facet& facet = facets_[f];
+  // A vertex of a non-manifold place has balls the walk does not join: the facet's other vertices,
+  // then every element.
+  Index found = kNoIndex;
+  for (int i = 0; i < D && found == kNoIndex; ++i) found = facet_face_near(facet, facet[i], ball, stack);
+  for (Index k = 0; k < element_count() && found == kNoIndex; ++k)
+    if (const int face = local_face_of<D>(elements_[k], facet.data()); face >= 0) found = k * (D + 1) + face;
+  if (found == kNoIndex) throw Error("boundary facet " + std::to_string(f + 1) + " is not a face of any element");
+  return found;
+}
+
+template <int D>
+void Mesh<D>::relink_facets_off_their_faces() {
+  std::vector<Index> ball, stack;
+  for (Index f = 0; f < facet_count(); ++f) {
+    if (facet_removed(f)) continue;
+    const Index at = facet_element_face_[f];
+    const Index k = at == kNoIndex ? kNoIndex : at / (D + 1);
+    if (k != kNoIndex && k < element_count() && local_face_of<D>(elements_[k], facets_[f].data()) == static_cast<int>(at % (D + 1)))
+      continue;
+    facet_element_face_[f] = facet_face(f, ball, stack);
   }
 }
 
@@ -355,26 +374,26 @@ template <int D>
 void Mesh<D>::orient_boundary_facets_outward() {
   for (Index f = 0; f < facet_count(); ++f) {
     if (facet_removed(f)) continue;
-    Index k = facet_element_face_[f] / (D + 1);
-    int face = static_cast<int>(facet_element_face_[f] % (D + 1));
+    const Index k = facet_element_face_[f] / (D + 1);
+    const int face = static_cast<int>(facet_element_face_[f] % (D + 1));
     // An interface: as a face of the side with the smaller ref, so that its facets agree (the cavity
     // operator's surface cavity needs them to). A baffle (one ref): below.
-    if (const Index across = neighbor(k, face); across != kNoIndex) {
-      if (element_refs_[k] == element_refs_[across]) continue;
-      if (element_refs_[across] < element_refs_[k]) {
-        face = static_cast<int>(std::find(adjacency_[across].begin(), adjacency_[across].end(), k) - adjacency_[across].begin());
-        k = across;
-      }
-    }
-    Facet outward;
-    for (int i = 0; i < D; ++i) outward[i] = elements_[k][hocav::face_vertices<D>(face)[i]];
-    Facet& facet = facets_[f];
-    // The same orientation: 2D the same first vertex, 3D a rotation of the outward face.
-    const auto first = static_cast<int>(std::find(facet.begin(), facet.end(), outward[0]) - facet.begin());
-    const bool same = D == 2 ? first == 0 : facet[(first + 1) % D] == outward[1];
-    if (!same) std::swap(facet[0], facet[1]);
+    const Index across = neighbor(k, face);
+    if (across != kNoIndex && element_refs_[k] == element_refs_[across]) continue;
+    orient_facet_as_face(f, k, face, across != kNoIndex && element_refs_[across] < element_refs_[k]);
   }
-  for (Index f : baffle_facets_to_turn(*this)) std::swap(facets_[f][0], facets_[f][1]);
+  for (Index f : baffle_facets_to_turn(*this)) turn_facet(f);
+}
+
+template <int D>
+void Mesh<D>::orient_facet_as_face(Index f, Index k, int face, bool inward) {
+  Facet outward;
+  for (int i = 0; i < D; ++i) outward[i] = elements_[k][hocav::face_vertices<D>(face)[i]];
+  Facet& facet = facets_[f];
+  // The same orientation: 2D the same first vertex, 3D a rotation of the outward face.
+  const auto first = static_cast<int>(std::find(facet.begin(), facet.end(), outward[0]) - facet.begin());
+  const bool same = D == 2 ? first == 0 : facet[(first + 1) % D] == outward[1];
+  if (same == inward) turn_facet(f);
 }
 
 template <int D>
@@ -604,6 +623,7 @@ void rename_ids(Records& records, std::span<const Index> new_id) {
 
 template <int D>
 void Mesh<D>::renumber(std::span<const Index> new_vertex_id, std::span<const Index> new_element_id) {
+  if (has_topology() && facet_element_face_.size() == facets_.size()) relink_facets_off_their_faces();  // (their links are renamed below)
   permute_rows(vertices_, new_vertex_id);
   permute_rows(vertex_refs_, new_vertex_id);
   for (std::size_t a = 0; a < attributes_.size(); ++a)
@@ -641,6 +661,7 @@ void Mesh<D>::rekey_after_renumbering() {
     for (Index e = 0; e < edge_count(); ++e) edge_ids_.assign(edge_key(edge_vertices_[e][0], edge_vertices_[e][1]), e);
   }
   if (facet_element_face_.size() == facets_.size() && has_topology()) {
+    relink_facets_off_their_faces();
     element_face_facets_.clear();
     std::fill(faces_with_facet_.begin(), faces_with_facet_.end(), std::uint8_t{0});
     for (Index f = 0; f < facet_count(); ++f)

@@ -17,6 +17,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "base/index.hpp"
@@ -160,6 +161,11 @@ class Mesh {
   // they make the same way.
   // Needs the topology.
   void orient_boundary_facets_outward();
+  // Orders facet f as face `face` of element k (outward from k, the elements being positive), or the
+  // other way round when `inward`.
+  void orient_facet_as_face(Index f, Index k, int face, bool inward = false);
+  // Reverses facet f's orientation.
+  void turn_facet(Index f) { std::swap(facets_[f][0], facets_[f][1]); }
   // The element across face `face` of element k, or kNoIndex on the boundary of the domain.
   Index neighbor(Index k, int face) const { return adjacency_[k][face]; }
   // An element incident to vertex v (kNoIndex for a vertex no element uses).
@@ -261,6 +267,13 @@ class Mesh {
   // The element face (element * (D + 1) + face) of `facet` among the elements around its vertex
   // `center`, walked from that vertex's element across the faces that hold it; kNoIndex if none.
   Index facet_face_near(const Facet& facet, Index center, std::vector<Index>& ball, std::vector<Index>& stack) const;
+  // The element face of `facet` (as facet_face_near gives it), searched around each of its vertices,
+  // then among every element; Error naming facet f when no element has it.
+  Index facet_face(Index f, std::vector<Index>& ball, std::vector<Index>& stack) const;
+  // Links again, by their own records only, the facets whose element face no longer holds them: a
+  // facet that shares its face with another (an inner facet on a distributed part's interface) is
+  // reached from that face by the other one, so the operators that move its elements do not update it.
+  void relink_facets_off_their_faces();
   static std::uint64_t face_key(Index k, int face) { return static_cast<std::uint64_t>(k) * (D + 1) + static_cast<std::uint64_t>(face); }
   // The element-face -> facet map and its per-element bits change together.
   void link_face_facet(Index k, int face, Index f);

@@ -6,8 +6,11 @@
 #include <set>
 
 #include "../adapt/adapt_test_support.hpp"
+#include "../mesh/inner_facet_meshes.hpp"
+#include "adapt/adaptation_loop.hpp"
 #include "adapt/vertex_classes.hpp"
 #include "cases/structured.hpp"
+#include "parallel/face_key.hpp"
 #include "parallel/mesh_parts.hpp"
 
 namespace hocav {
@@ -68,6 +71,33 @@ TEST(PartAdaptation, SettlesAPartsBoundaryButItsInterfaces) {
   }
   EXPECT_FALSE(frozen.empty());
   EXPECT_EQ(settled + static_cast<Index>(frozen.size()), static_cast<Index>(off.size()));
+}
+
+// A facet between two materials on a part's interface shares its face with the interface facet,
+// which the face links; the loop moves and replaces the elements on that face, and each facet must
+// still name an element face that holds it after the loop (docs/distributed.md §Migration: the
+// migration ships a facet with that element).
+TEST(PartAdaptation, FacetsOnAnInterfaceFaceStayLinkedToIt) {
+  Mesh<3> mesh = mesh_test::two_refs_across_an_interface<3>(4);
+  std::vector<int> part_of;  // the two materials, whose facets are then the parts' interface
+  for (Index k = 0; k < mesh.element_count(); ++k) part_of.push_back(mesh.element_ref(k) == 1 ? 0 : 1);
+  Index shared_faces = 0;
+  for (MeshPart<3> part : split_mesh(mesh, part_of, 2)) {
+    part.mesh.build_topology();
+    AdaptationSettings settings = part_settings({});
+    settings.threads = 1;
+    adapt_part_measured<3>(part, adapt_test::uniform_metric<3>(0.08), nullptr, settings);
+    ASSERT_GT(part.mesh.element_count(), 4 * mesh.element_count() / 2);
+    for (Index f = 0; f < part.mesh.facet_count(); ++f) {
+      const Index k = part.mesh.facet_element_face(f) / 4;
+      const int face = static_cast<int>(part.mesh.facet_element_face(f) % 4);
+      EXPECT_TRUE(sorted_key<3>(mesh_test::element_face(part.mesh, k, face)) == sorted_key<3>(part.mesh.facet(f)))
+          << "facet " << f << " (ref " << part.mesh.facet_ref(f) << ") names face " << face << " of element " << k
+          << ", which does not hold it";
+      shared_faces += part.mesh.facet_ref(f) == 9;
+    }
+  }
+  EXPECT_GT(shared_faces, 0);  // the material facets went with one part, on its interface
 }
 
 }  // namespace
