@@ -328,14 +328,15 @@ bool adapts_from_pieces(const AdaptOptions& o) {
 
 // Every process of a run from pieces: its piece read and prepared, the run set up on the pieces
 // together, the distributed loop, and on rank 0 (`outputs` given) the report. False, with nothing
-// done but the reading, when the input has facets inside the domain (pieces_have_inner_facets):
-// rank 0 then reads it whole.
+// done but the reading, for the surface metric of an input with facets inside the domain
+// (pieces_have_inner_facets), whose serial normals there come from the element each facet is
+// linked to, which the pieces do not see: rank 0 then reads it whole.
 template <int D>
 bool adapt_from_pieces(const AdaptOptions& o, OutputSet* outputs) {
   AdaptationJob<D> job = adaptation_job<D>(o);
   if (!outputs) job.warn = {}, job.pass_progress = {};  // (rank 0 says them)
   MeshFilePiece<D> piece = read_mesh_file_piece<D>(o.input);
-  if (pieces_have_inner_facets(piece.part)) return false;
+  if (!o.surface_sizes.empty() && pieces_have_inner_facets(piece.part)) return false;
   prepare_input_piece(piece, o.input, job.warn);
   AdaptationReport report;
   report.input_read_in_pieces = true;

@@ -227,7 +227,8 @@ void write_metric(const Mesh<D>& mesh, const MeshFileContent& file, const Metric
 
 // Under mpirun: the surface metric at the piece's vertices, made on the whole boundary every process
 // gathers, the piece's facets oriented outward first. Refused for a mesh with facets inside the
-// domain, which one piece cannot orient (pieces_have_inner_facets).
+// domain (pieces_have_inner_facets): the serial normal of such a facet points away from the element
+// it is linked to, which the pieces do not see.
 template <int D>
 std::vector<SymMat<D>> surface_metric_of_piece(MeshPart<D>& piece, const MetricOptions& options) {
   if (!piece.mesh.has_topology()) piece.mesh.build_topology();

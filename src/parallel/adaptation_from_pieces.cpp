@@ -16,6 +16,7 @@
 #include "parallel/implied_metric_runs.hpp"
 #include "parallel/metrics_by_global_id.hpp"
 #include "parallel/piece_classification.hpp"
+#include "parallel/piece_facet_orientation.hpp"
 
 namespace hocav {
 namespace {
@@ -184,7 +185,7 @@ template <int D>
 PieceSetup<D> set_up_piece(MeshFilePiece<D> piece, const std::string& input, const PieceMetricSource& source, const AdaptationJob<D>& job) {
   Mesh<D>& mesh = piece.part.mesh;
   if (!mesh.has_topology()) mesh.build_topology();
-  mesh.orient_boundary_facets_outward();
+  orient_piece_facets(piece.part, piece.facet_ids);
   const MeshPart<D> boundary = boundary_of_parts(piece.part);
   PieceSetup<D> setup;
   setup.geometry = job.geometry(boundary.mesh);  // (of the input's boundary, before the classification tags it)

@@ -204,7 +204,9 @@ def check_from_pieces(hocav, mpirun, work):
     corners and ridges the classification finds across the pieces (with --surface none, with the
     metric 100 times finer than the input too: the gradual metric's steps from the pieces, and with
     --hgrad, graded across the pieces), and on a square, the checks of the module's docstring against
-    the serial run; with two materials and facets between them, rank 0 reads the input whole; a
+    the serial run; the same with two materials and facets between them, and with those facets a
+    baffle (one material on both sides), on 2 and 3 processes (the facets oriented across the pieces
+    as the serial run orients them; on 3 processes, parts whose interfaces hold such facets); a
     metric file that does not fit the mesh is refused as the serial run refuses it. On a cubed
     shell, an analytic metric from pieces with a Hausdorff bound that refines the walls: the same
     vertices bounded as in the serial run, and the checks above; the implied metric on the cube and on
@@ -219,7 +221,9 @@ def check_from_pieces(hocav, mpirun, work):
     compare_with_serial(hocav, mpirun, work, "fine.solb", process_counts=(3,), mesh="bare.mesh", options=["--surface", "none"], pieces=True)
     compare_with_serial(hocav, mpirun, work, "cube.solb", process_counts=(2,), mesh="bare.mesh", options=["--hgrad", "1.3"], pieces=True)
     with_materials(work, "cube.mesh", "materials.mesh")
-    compare_with_serial(hocav, mpirun, work, "cube.solb", process_counts=(2,), mesh="materials.mesh")
+    compare_with_serial(hocav, mpirun, work, "cube.solb", process_counts=(2, 3), mesh="materials.mesh", pieces=True)
+    with_materials(work, "cube.mesh", "baffle.mesh", baffle=True)
+    compare_with_serial(hocav, mpirun, work, "cube.solb", process_counts=(2, 3), mesh="baffle.mesh", pieces=True)
     run([hocav, "generate", "square", "--h", "0.1", "-o", "square.meshb"], work)
     run([hocav, "metric", "square.meshb", "--analytic", "linear", "-o", "square.solb"], work)
     compare_with_serial(hocav, mpirun, work, "square.solb", process_counts=(3,), mesh="square.meshb", options=["--surface", "none"],

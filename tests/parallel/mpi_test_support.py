@@ -137,9 +137,10 @@ def write_field(work, mesh, hocav, name):
         file.write("\n".join(repr(v) for v in values) + "\nEnd\n")
 
 
-def with_materials(work, source, target):
+def with_materials(work, source, target, baffle=False):
     """`source` (a text 3D .mesh) written to `target` with the elements of x < 0.5 of ref 2 and a
-    facet of ref 9 on every face between the two materials."""
+    facet of ref 9 on every face between the two materials; with `baffle`, every element of ref 1:
+    the facets between the two halves are then a baffle (one ref on both sides)."""
     mesh = keywords(os.path.join(work, source))
     points = [[float(x) for x in record[:3]] for record in mesh["Vertices"]]
     tetrahedra = [list(record[:4]) + ["2" if sum(points[int(v) - 1][0] for v in record[:4]) < 2 else "1"]
@@ -151,6 +152,8 @@ def with_materials(work, source, target):
             sides.setdefault(face, set()).add(tetrahedron[4])
     inner = [face for face, refs in sides.items() if len(refs) == 2]
     assert inner, "no face between the materials"
+    if baffle:
+        tetrahedra = [t[:4] + ["1"] for t in tetrahedra]
     lines = ["MeshVersionFormatted 2", "Dimension 3", "Vertices", str(len(points))]
     lines += [" ".join(record) for record in mesh["Vertices"]]
     lines += ["Tetrahedra", str(len(tetrahedra))] + [" ".join(t) for t in tetrahedra]

@@ -3,9 +3,13 @@
 // cube, the cube with its vertices renumbered across the file); every process reads its piece of
 // each, orients its facets and gathers the boundary:
 // 0. pieces_have_inner_facets finds none in them, and finds those of the cube with four materials
-//    and facets between them (the set-up from pieces then leaves the input to rank 0);
+//    and facets between them (the set-up from pieces then leaves a surface metric to rank 0);
+//    orient_piece_facets orders every facet of the pieces of that cube, of the square and cube with
+//    a baffle across their middle and of the cube, as orient_boundary_facets_outward orders the
+//    whole mesh's, facets between two pieces included;
 // 1. classify_piece_vertices: the corners and feature lines (with their refs) that the pieces carry
-//    together are those classify_vertices adds to the whole mesh, by file ids;
+//    together are those classify_vertices adds to the whole mesh, by file ids (on the cube with
+//    four materials and on the one with a baffle too);
 // 2. grade_piece_metrics, on a metric with a fine spot: every copy of a vertex ends with the same
 //    metric, every edge of every piece meets the gradation (the test of grade_metrics' fixed point),
 //    no metric is coarser than given, and each is within 1% of the serial grading's (the same
@@ -16,10 +20,15 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <numeric>
+#include <random>
 #include <set>
 #include <string>
+#include <unordered_set>
+#include <variant>
 #include <vector>
 
+#include "../mesh/inner_facet_meshes.hpp"
 #include "adapt/vertex_classes.hpp"
 #include "cases/structured.hpp"
 #include "geom/sym_eigen.hpp"
@@ -28,8 +37,10 @@
 #include "parallel/boundary_of_parts.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_gradation.hpp"
+#include "parallel/face_key.hpp"
 #include "parallel/mesh_file_pieces.hpp"
 #include "parallel/piece_classification.hpp"
+#include "parallel/piece_facet_orientation.hpp"
 #include "parallel/piece_input_check.hpp"
 #include "tagged_meshes.hpp"
 
@@ -92,8 +103,74 @@ MeshFilePiece<D> piece_of(const Mesh<D>& mesh, const std::string& path) {
   all_gather_value(0);  // the file is written
   MeshFilePiece<D> piece = read_mesh_file_piece<D>(path);
   if (!piece.part.mesh.has_topology()) piece.part.mesh.build_topology();
-  piece.part.mesh.orient_boundary_facets_outward();
+  orient_piece_facets(piece.part, piece.facet_ids);
   return piece;
+}
+
+// Whether two facets are one with the same orientation: the same first vertex in 2D, a rotation in 3D.
+template <int D>
+bool same_orientation(const typename Mesh<D>::Facet& a, const typename Mesh<D>::Facet& b) {
+  for (int shift = 0; shift < (D == 2 ? 1 : D); ++shift) {
+    bool same = true;
+    for (int i = 0; i < D; ++i) same &= a[(i + shift) % D] == b[i];
+    if (same) return true;
+  }
+  return false;
+}
+
+// `mesh` with its elements in a random order (the same on every process), and every other facet
+// turned: a file whose runs of elements are scattered over the domain, so that a baffle's patch
+// spans every piece, and whose baffle facets need turning.
+template <int D>
+Mesh<D> elements_shuffled(const Mesh<D>& mesh) {
+  std::vector<Index> order(static_cast<std::size_t>(mesh.element_count()));
+  std::iota(order.begin(), order.end(), Index{0});
+  std::shuffle(order.begin(), order.end(), std::mt19937(7));
+  Mesh<D> out;
+  for (Index v = 0; v < mesh.vertex_count(); ++v) out.add_vertex(mesh.vertex(v), mesh.vertex_ref(v));
+  for (Index k : order) out.add_element(mesh.element(k), mesh.element_ref(k));
+  for (Index f = 0; f < mesh.facet_count(); ++f) {
+    typename Mesh<D>::Facet facet = mesh.facet(f);
+    if (f % 2) std::swap(facet[0], facet[1]);
+    out.add_facet(facet, mesh.facet_ref(f));
+  }
+  out.build_topology();
+  return out;
+}
+
+// The interface facets of a part, by their sorted global ids.
+template <int D>
+std::unordered_set<FaceKey<D>, FaceKeyHash<D>> interface_keys(const MeshPart<D>& part) {
+  std::unordered_set<FaceKey<D>, FaceKeyHash<D>> keys;
+  for (Index f = 0; f < part.mesh.facet_count(); ++f)
+    if (part.mesh.facet_ref(f) == kInterfaceRef) {
+      FaceKey<D> key = part.mesh.facet(f);
+      for (Index& v : key) v = part.global_ids[v];
+      keys.insert(sorted_key<D>(key));
+    }
+  return keys;
+}
+
+template <int D>
+bool check_orientation(const Mesh<D>& mesh, const std::string& path) {
+  const MeshFilePiece<D> piece = piece_of(mesh, path);
+  Mesh<D> whole = std::get<Mesh<D>>(read_mesh_file(path).mesh);  // (with its topology)
+  whole.orient_boundary_facets_outward();
+  const Mesh<D>& own = piece.part.mesh;
+  const std::unordered_set<FaceKey<D>, FaceKeyHash<D>> between = interface_keys(piece.part);
+  long long crossing = 0;
+  for (Index f = 0; f < own.facet_count(); ++f) {
+    if (own.facet_ref(f) == kInterfaceRef) continue;
+    typename Mesh<D>::Facet global = own.facet(f);
+    for (Index& v : global) v = piece.part.global_ids[v];
+    if (!same_orientation<D>(global, whole.facet(piece.facet_ids[f])))
+      return fail(path + ": facet " + std::to_string(piece.facet_ids[f] + 1) + " oriented otherwise than in the whole mesh");
+    crossing += between.contains(sorted_key<D>(global));
+  }
+  crossing = sum_over_processes(crossing);
+  if (process_rank() == 0) std::cerr << path << ": every facet oriented as in the whole mesh, " << crossing << " between two pieces\n";
+  if (crossing == 0) return fail(path + ": no facet lies between two pieces");
+  return true;
 }
 
 template <int D>
@@ -195,9 +272,17 @@ int main(int argc, char** argv) {
     const hocav::Mesh<3> cube = hocav::untagged(hocav::generate_cube(6));
     bool ok = hocav::check_inner_facets(square, directory + "/plain.meshb", false);
     ok &= hocav::check_inner_facets(hocav::tagged_mesh(hocav::generate_cube(6)), directory + "/materials.meshb", true);
+    ok &= hocav::check_orientation(hocav::tagged_mesh(hocav::generate_cube(6)), directory + "/materials.meshb");
+    ok &= hocav::check_orientation(hocav::elements_shuffled(hocav::mesh_test::baffle_across_the_middle<2>(16)),
+                                   directory + "/baffle-square.meshb");
+    ok &= hocav::check_orientation(hocav::elements_shuffled(hocav::mesh_test::baffle_across_the_middle<3>(6)),
+                                   directory + "/baffle-cube.mesh");
     ok &= hocav::check_classification(square, directory + "/square.meshb");
     ok &= hocav::check_classification(cube, directory + "/cube.meshb");
     ok &= hocav::check_classification(hocav::untagged(hocav::shuffled(cube)), directory + "/shuffled-cube.mesh");
+    ok &= hocav::check_classification(hocav::untagged(hocav::tagged_mesh(hocav::generate_cube(6))), directory + "/materials.meshb");
+    ok &= hocav::check_classification(hocav::elements_shuffled(hocav::mesh_test::baffle_across_the_middle<3>(6)),
+                                      directory + "/baffle-cube.meshb");
     ok &= hocav::check_gradation(square, directory + "/square.meshb");
     ok &= hocav::check_gradation(hocav::untagged(hocav::shuffled(cube)), directory + "/shuffled-cube.meshb");
     hocav::all_gather_value(0);
