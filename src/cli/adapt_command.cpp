@@ -327,16 +327,12 @@ bool adapts_from_pieces(const AdaptOptions& o) {
 }
 
 // Every process of a run from pieces: its piece read and prepared, the run set up on the pieces
-// together, the distributed loop, and on rank 0 (`outputs` given) the report. False, with nothing
-// done but the reading, for the surface metric of an input with facets inside the domain
-// (pieces_have_inner_facets), whose serial normals there come from the element each facet is
-// linked to, which the pieces do not see: rank 0 then reads it whole.
+// together, the distributed loop, and on rank 0 (`outputs` given) the report.
 template <int D>
-bool adapt_from_pieces(const AdaptOptions& o, OutputSet* outputs) {
+void adapt_from_pieces(const AdaptOptions& o, OutputSet* outputs) {
   AdaptationJob<D> job = adaptation_job<D>(o);
   if (!outputs) job.warn = {}, job.pass_progress = {};  // (rank 0 says them)
   MeshFilePiece<D> piece = read_mesh_file_piece<D>(o.input);
-  if (!o.surface_sizes.empty() && pieces_have_inner_facets(piece.part)) return false;
   prepare_input_piece(piece, o.input, job.warn);
   AdaptationReport report;
   report.input_read_in_pieces = true;
@@ -355,15 +351,14 @@ bool adapt_from_pieces(const AdaptOptions& o, OutputSet* outputs) {
                                                 iteration_printer(o, report.distributed_iterations),
                                                 end_in_parts<D>(o, job, geometry, setup.settings, output));
   if (outputs) finish_in_parts(report, *output, geometry != nullptr, start, o, *outputs);
-  return true;
 }
 
 // The other processes: a run from pieces, or rank 0's distributed run from its input.
 void serve_adaptation(const AdaptOptions& o) {
   std::vector<int> plan;  // rank 0's: the dimension of a run from pieces, 0 for a run from its input
   broadcast_values(plan);
-  if (plan.at(0) == 2 && adapt_from_pieces<2>(o, nullptr)) return;
-  if (plan.at(0) == 3 && adapt_from_pieces<3>(o, nullptr)) return;
+  if (plan.at(0) == 2) return adapt_from_pieces<2>(o, nullptr);
+  if (plan.at(0) == 3) return adapt_from_pieces<3>(o, nullptr);
   std::vector<std::byte> input_boundary;
   broadcast_bytes(input_boundary);
   if (packed_dimension(input_boundary) == 2)
@@ -486,8 +481,8 @@ void add_adapt_command(CLI::App& app) {
     if (process_count() > 1) {
       std::vector<int> plan{adapts_from_pieces(*o) ? gamma_mesh_dimension(o->input) : 0};
       broadcast_values(plan);
-      if (plan[0] == 2 && adapt_from_pieces<2>(*o, &outputs)) return;
-      if (plan[0] == 3 && adapt_from_pieces<3>(*o, &outputs)) return;
+      if (plan[0] == 2) return adapt_from_pieces<2>(*o, &outputs);
+      if (plan[0] == 3) return adapt_from_pieces<3>(*o, &outputs);
     }
     MeshFileContent file = read_mesh_file(o->input);
     std::visit([&](auto& mesh) { adapt(mesh, file, *o, outputs); }, file.mesh);

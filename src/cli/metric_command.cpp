@@ -36,7 +36,7 @@
 #include "parallel/implied_metric_runs.hpp"
 #include "parallel/mesh_file_pieces.hpp"
 #include "parallel/metrics_by_global_id.hpp"
-#include "parallel/piece_input_check.hpp"
+#include "parallel/piece_facet_orientation.hpp"
 #include "parallel/piece_metric_runs.hpp"
 #include "parallel/solution_file_runs.hpp"
 #include "report/mesh_summary.hpp"
@@ -226,15 +226,13 @@ void write_metric(const Mesh<D>& mesh, const MeshFileContent& file, const Metric
 }
 
 // Under mpirun: the surface metric at the piece's vertices, made on the whole boundary every process
-// gathers, the piece's facets oriented outward first. Refused for a mesh with facets inside the
-// domain (pieces_have_inner_facets): the serial normal of such a facet points away from the element
-// it is linked to, which the pieces do not see.
+// gathers, the pieces' facets oriented first as the serial metric takes their normals
+// (orient_piece_facets).
 template <int D>
-std::vector<SymMat<D>> surface_metric_of_piece(MeshPart<D>& piece, const MetricOptions& options) {
+std::vector<SymMat<D>> surface_metric_of_piece(MeshFilePiece<D>& file_piece, const MetricOptions& options) {
+  MeshPart<D>& piece = file_piece.part;
   if (!piece.mesh.has_topology()) piece.mesh.build_topology();
-  if (pieces_have_inner_facets(piece))
-    throw Error(options.mesh + ": under mpirun, --surface needs a mesh without facets inside the domain (run it on one process)");
-  piece.mesh.orient_boundary_facets_outward();
+  orient_piece_facets(piece, file_piece.facet_ids);
   const MeshPart<D> boundary = boundary_of_parts(piece);
   const SurfaceSizes sizes{options.surface[0], options.surface[1], options.h_max.value_or(whole_diagonal(piece.mesh))};
   return values_from_boundary(piece, boundary.global_ids, surface_metric_at_boundary(boundary.mesh, sizes),
@@ -261,7 +259,7 @@ VertexRunMetrics<D> metric_by_runs(MeshFilePiece<D>& piece, const MetricOptions&
                                     metrics_of_rows<D>(read_metric_run(options.input, D, count, rows)), bytes_sent);
   }
   if (source == Source::kAnalytic) at_piece = analytic_metric_at_vertices(analytic_metric_spec<D>(options), part.mesh);
-  if (source == Source::kSurface) at_piece = surface_metric_of_piece(part, options);
+  if (source == Source::kSurface) at_piece = surface_metric_of_piece(piece, options);
   if (run && !options.gradation) return *run;
   if (run) at_piece = metrics_by_global_id(part.global_ids, run->first, run->metrics, bytes_sent);
   if (options.gradation) grade_piece_metrics(part, at_piece, {*options.gradation});

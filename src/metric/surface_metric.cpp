@@ -1,9 +1,11 @@
 #include "metric/surface_metric.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "base/error.hpp"
+#include "mesh/baffle_orientation.hpp"
 
 namespace hocav {
 namespace {
@@ -66,12 +68,22 @@ std::vector<SymMat<D>> metrics_of_normals(const Mesh<D>& mesh, const std::vector
 template <int D>
 std::vector<Vec<D>> boundary_vertex_normals(const Mesh<D>& mesh) {
   if (!mesh.has_topology() && mesh.facet_count() > 0) throw Error("boundary normals: the mesh has no topology (build_topology)");
-  return normals_of_facets(mesh, [&mesh](Index f) {
+  const std::vector<Index> turned = baffle_facets_to_turn(mesh);  // (ascending)
+  return normals_of_facets(mesh, [&](Index f) {
     const auto& facet = mesh.facet(f);
     const Vec<D> normal = facet_normal(mesh, facet);
-    // Outward whatever the facet's vertex order: away from the element vertex opposite the facet.
+    // Whatever the facet's vertex order, as Mesh::orient_boundary_facets_outward would orient it:
+    // away from its element on the domain's boundary, from the side of the smaller ref on an
+    // interface; a baffle like its patch's first facet.
     const Index element_face = mesh.facet_element_face(f);
-    const Index opposite = mesh.element(element_face / (D + 1))[element_face % (D + 1)];
+    Index k = element_face / (D + 1);
+    const Index across = mesh.neighbor(k, static_cast<int>(element_face % (D + 1)));
+    if (across != kNoIndex && mesh.element_ref(across) == mesh.element_ref(k))
+      return std::binary_search(turned.begin(), turned.end(), f) ? -normal : normal;
+    if (across != kNoIndex && mesh.element_ref(across) < mesh.element_ref(k)) k = across;
+    const auto& element = mesh.element(k);
+    const Index opposite = *std::find_if(element.begin(), element.end(),
+                                         [&](Index v) { return std::find(facet.begin(), facet.end(), v) == facet.end(); });
     return dot(normal, mesh.vertex(facet[0]) - mesh.vertex(opposite)) < 0 ? -normal : normal;
   });
 }

@@ -24,7 +24,11 @@ struct SurfaceSizes {
 };
 
 // Unit outward normals at the vertices of the boundary facets (zero elsewhere, and where the
-// facet normals cancel). Outward: away from the element the facet lies on. Needs the topology.
+// facet normals cancel). Outward: away from the element the facet lies on; on a facet inside the
+// domain, as Mesh::orient_boundary_facets_outward orients it (away from the side of the smaller
+// element ref; a baffle like its patch's first facet), so that the facets of an inner surface add
+// up instead of cancelling (until the fifty-sixth session, away from whichever element it was
+// linked to). Needs the topology.
 template <int D>
 std::vector<Vec<D>> boundary_vertex_normals(const Mesh<D>& mesh);
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <limits>
 #include <numeric>
-#include <unordered_set>
 
 #include "base/error.hpp"
 #include "io/gamma_mesh.hpp"
@@ -12,7 +11,6 @@
 #include "mesh/measure.hpp"
 #include "mesh/open_boundary.hpp"
 #include "parallel/communicator.hpp"
-#include "parallel/face_key.hpp"
 
 namespace hocav {
 namespace {
@@ -59,24 +57,6 @@ void prepare_input_piece(MeshFilePiece<D>& piece, const std::string& path, const
   if (say && total > 0) warn(open_boundary_warning(path, total));
 }
 
-template <int D>
-bool pieces_have_inner_facets(const MeshPart<D>& piece) {
-  const Mesh<D>& mesh = piece.mesh;
-  std::unordered_set<FaceKey<D>, FaceKeyHash<D>> borders;
-  for (Index f = 0; f < mesh.facet_count(); ++f)
-    if (mesh.facet_ref(f) == kInterfaceRef) borders.insert(sorted_key<D>(mesh.facet(f)));
-  int inner = 0;
-  for (Index f = 0; f < mesh.facet_count() && !inner; ++f) {
-    if (mesh.facet_ref(f) == kInterfaceRef) continue;
-    const Index element_face = mesh.facet_element_face(f);  // (k (D + 1) + face)
-    const Index across = mesh.neighbor(element_face / (D + 1), static_cast<int>(element_face % (D + 1)));
-    inner = across != kNoIndex || borders.contains(sorted_key<D>(mesh.facet(f)));
-  }
-  return max_over_processes(inner) != 0;
-}
-
-template bool pieces_have_inner_facets(const MeshPart<2>&);
-template bool pieces_have_inner_facets(const MeshPart<3>&);
 template void prepare_input_piece(MeshFilePiece<2>&, const std::string&, const std::function<void(const std::string&)>&);
 template void prepare_input_piece(MeshFilePiece<3>&, const std::string&, const std::function<void(const std::string&)>&);
 

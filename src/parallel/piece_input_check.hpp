@@ -21,11 +21,4 @@ namespace hocav {
 template <int D>
 void prepare_input_piece(MeshFilePiece<D>& piece, const std::string& path, const std::function<void(const std::string&)>& warn);
 
-// Every process at once, each with its piece (with its topology): whether a facet of the file lies
-// inside the domain (a material interface or a baffle: elements on both of its sides, in one piece
-// or in two). The serial preparation orients such a facet by the refs of both of its elements, and a
-// baffle by its whole sheet, which one piece may not hold.
-template <int D>
-bool pieces_have_inner_facets(const MeshPart<D>& piece);
-
 }  // namespace hocav

@@ -3,6 +3,10 @@
 #pragma once
 
 #include <algorithm>
+#include <numeric>
+#include <random>
+#include <utility>
+#include <vector>
 
 #include "../metric/metric_test_support.hpp"
 #include "mesh/mesh.hpp"
@@ -75,6 +79,27 @@ Mesh<D> baffle_across_the_middle(int cells_per_side) {
   for (Index k = 0; k < mesh.element_count(); ++k) mesh.set_element(k, mesh.element(k), 1);
   mesh.build_topology();
   return mesh;
+}
+
+// `mesh` with its elements in a random order (the same on every process of a distributed test) and
+// every other facet turned: the side an inner facet is linked from, and the orientation of a
+// baffle's facets, vary along the surface; a file of it has runs of elements scattered over the
+// domain, so that a baffle's patch spans every piece. With topology.
+template <int D>
+Mesh<D> elements_shuffled(const Mesh<D>& mesh) {
+  std::vector<Index> order(static_cast<std::size_t>(mesh.element_count()));
+  std::iota(order.begin(), order.end(), Index{0});
+  std::shuffle(order.begin(), order.end(), std::mt19937(7));
+  Mesh<D> out;
+  for (Index v = 0; v < mesh.vertex_count(); ++v) out.add_vertex(mesh.vertex(v), mesh.vertex_ref(v));
+  for (Index k : order) out.add_element(mesh.element(k), mesh.element_ref(k));
+  for (Index f = 0; f < mesh.facet_count(); ++f) {
+    typename Mesh<D>::Facet facet = mesh.facet(f);
+    if (f % 2) std::swap(facet[0], facet[1]);
+    out.add_facet(facet, mesh.facet_ref(f));
+  }
+  out.build_topology();
+  return out;
 }
 
 }  // namespace hocav::mesh_test

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "../mesh/inner_facet_meshes.hpp"
 #include "../mesh/turned_facets.hpp"
 #include "base/error.hpp"
 #include "mesh/boundary_mesh.hpp"
@@ -110,6 +111,26 @@ TEST(SurfaceMetric, TheBoundaryAloneGivesTheMeshsMetricOnceItsFacetsFaceOutward)
   EXPECT_EQ(boundary_metric_differences(mesh_test::with_facets_turned(generate_cube(3), 3), true), 0);
   // Facets that face either way cancel in the sums of the boundary alone.
   EXPECT_GT(boundary_metric_differences(mesh_test::with_facets_turned(generate_cube(3), 3), false), 0);
+}
+
+// An inner surface's facets add up to its normal whichever element each is linked to and however it
+// is turned: the interface's as the faces of the smaller ref's side (x < 0.5: the normal +x), a
+// baffle's all one way (fails with each facet's normal taken away from its linked element).
+TEST(SurfaceMetric, AnInnerSurfacesNormalsAgree) {
+  for (const bool baffle : {false, true}) {
+    const Mesh<3> mesh = mesh_test::elements_shuffled(baffle ? mesh_test::baffle_across_the_middle<3>(4)
+                                                             : mesh_test::two_refs_across_an_interface<3>(4));
+    const std::vector<Vec3> normals = boundary_vertex_normals(mesh);
+    std::vector<double> signs;
+    for (Index v = 0; v < mesh.vertex_count(); ++v) {
+      const Vec3& x = mesh.vertex(v);
+      if (x[0] != 0.5 || x[1] <= 0 || x[1] >= 1 || x[2] <= 0 || x[2] >= 1) continue;  // inside the surface
+      EXPECT_NEAR(std::abs(normals[v][0]), 1, 1e-12) << "vertex " << v << (baffle ? " of the baffle" : " of the interface");
+      signs.push_back(normals[v][0]);
+    }
+    ASSERT_EQ(signs.size(), 9u);
+    for (double sign : signs) EXPECT_EQ(sign, baffle ? signs.front() : 1.0);
+  }
 }
 
 TEST(SurfaceMetric, RefusesNonPositiveSizes) {

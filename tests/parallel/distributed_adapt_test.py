@@ -206,7 +206,8 @@ def check_from_pieces(hocav, mpirun, work):
     --hgrad, graded across the pieces), and on a square, the checks of the module's docstring against
     the serial run; the same with two materials and facets between them, and with those facets a
     baffle (one material on both sides), on 2 and 3 processes (the facets oriented across the pieces
-    as the serial run orients them; on 3 processes, parts whose interfaces hold such facets); a
+    as the serial run orients them; on 3 processes, parts whose interfaces hold such facets), and the
+    two materials with the surface metric, whose normals take that orientation; a
     metric file that does not fit the mesh is refused as the serial run refuses it. On a cubed
     shell, an analytic metric from pieces with a Hausdorff bound that refines the walls: the same
     vertices bounded as in the serial run, and the checks above; the implied metric on the cube and on
@@ -224,6 +225,8 @@ def check_from_pieces(hocav, mpirun, work):
     compare_with_serial(hocav, mpirun, work, "cube.solb", process_counts=(2, 3), mesh="materials.mesh", pieces=True)
     with_materials(work, "cube.mesh", "baffle.mesh", baffle=True)
     compare_with_serial(hocav, mpirun, work, "cube.solb", process_counts=(2, 3), mesh="baffle.mesh", pieces=True)
+    compare_with_serial(hocav, mpirun, work, ["--surface-sizes", "0.05,0.2", "--hgrad", "1.5"], process_counts=(2,), mesh="materials.mesh",
+                        pieces=True, cube_steps=False)
     run([hocav, "generate", "square", "--h", "0.1", "-o", "square.meshb"], work)
     run([hocav, "metric", "square.meshb", "--analytic", "linear", "-o", "square.solb"], work)
     compare_with_serial(hocav, mpirun, work, "square.solb", process_counts=(3,), mesh="square.meshb", options=["--surface", "none"],

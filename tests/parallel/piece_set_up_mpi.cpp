@@ -2,11 +2,10 @@
 // run by ctest under `mpirun -np N` (N = 2, 3, 4). Rank 0 writes meshes without tags (a square, a
 // cube, the cube with its vertices renumbered across the file); every process reads its piece of
 // each, orients its facets and gathers the boundary:
-// 0. pieces_have_inner_facets finds none in them, and finds those of the cube with four materials
-//    and facets between them (the set-up from pieces then leaves a surface metric to rank 0);
-//    orient_piece_facets orders every facet of the pieces of that cube, of the square and cube with
-//    a baffle across their middle and of the cube, as orient_boundary_facets_outward orders the
-//    whole mesh's, facets between two pieces included;
+// 0. orient_piece_facets orders every facet of the pieces of the cube with four materials and
+//    facets between them, and of a square and a cube with a baffle across their middle (their
+//    elements shuffled across the file, every other facet turned), as orient_boundary_facets_outward
+//    orders the whole mesh's, facets between two pieces included;
 // 1. classify_piece_vertices: the corners and feature lines (with their refs) that the pieces carry
 //    together are those classify_vertices adds to the whole mesh, by file ids (on the cube with
 //    four materials and on the one with a baffle too);
@@ -20,8 +19,6 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
-#include <numeric>
-#include <random>
 #include <set>
 #include <string>
 #include <unordered_set>
@@ -118,26 +115,6 @@ bool same_orientation(const typename Mesh<D>::Facet& a, const typename Mesh<D>::
   return false;
 }
 
-// `mesh` with its elements in a random order (the same on every process), and every other facet
-// turned: a file whose runs of elements are scattered over the domain, so that a baffle's patch
-// spans every piece, and whose baffle facets need turning.
-template <int D>
-Mesh<D> elements_shuffled(const Mesh<D>& mesh) {
-  std::vector<Index> order(static_cast<std::size_t>(mesh.element_count()));
-  std::iota(order.begin(), order.end(), Index{0});
-  std::shuffle(order.begin(), order.end(), std::mt19937(7));
-  Mesh<D> out;
-  for (Index v = 0; v < mesh.vertex_count(); ++v) out.add_vertex(mesh.vertex(v), mesh.vertex_ref(v));
-  for (Index k : order) out.add_element(mesh.element(k), mesh.element_ref(k));
-  for (Index f = 0; f < mesh.facet_count(); ++f) {
-    typename Mesh<D>::Facet facet = mesh.facet(f);
-    if (f % 2) std::swap(facet[0], facet[1]);
-    out.add_facet(facet, mesh.facet_ref(f));
-  }
-  out.build_topology();
-  return out;
-}
-
 // The interface facets of a part, by their sorted global ids.
 template <int D>
 std::unordered_set<FaceKey<D>, FaceKeyHash<D>> interface_keys(const MeshPart<D>& part) {
@@ -171,12 +148,6 @@ bool check_orientation(const Mesh<D>& mesh, const std::string& path) {
   if (process_rank() == 0) std::cerr << path << ": every facet oriented as in the whole mesh, " << crossing << " between two pieces\n";
   if (crossing == 0) return fail(path + ": no facet lies between two pieces");
   return true;
-}
-
-template <int D>
-bool check_inner_facets(const Mesh<D>& mesh, const std::string& path, bool expected) {
-  if (pieces_have_inner_facets(piece_of(mesh, path).part) == expected) return true;
-  return fail(path + (expected ? ": its inner facets not found" : ": inner facets found where there are none"));
 }
 
 template <int D>
@@ -270,18 +241,16 @@ int main(int argc, char** argv) {
     const std::string directory = hocav::shared_directory("hocav-piece-set-up-");
     const hocav::Mesh<2> square = hocav::untagged(hocav::generate_square(16));
     const hocav::Mesh<3> cube = hocav::untagged(hocav::generate_cube(6));
-    bool ok = hocav::check_inner_facets(square, directory + "/plain.meshb", false);
-    ok &= hocav::check_inner_facets(hocav::tagged_mesh(hocav::generate_cube(6)), directory + "/materials.meshb", true);
-    ok &= hocav::check_orientation(hocav::tagged_mesh(hocav::generate_cube(6)), directory + "/materials.meshb");
-    ok &= hocav::check_orientation(hocav::elements_shuffled(hocav::mesh_test::baffle_across_the_middle<2>(16)),
+    bool ok = hocav::check_orientation(hocav::tagged_mesh(hocav::generate_cube(6)), directory + "/materials.meshb");
+    ok &= hocav::check_orientation(hocav::mesh_test::elements_shuffled(hocav::mesh_test::baffle_across_the_middle<2>(16)),
                                    directory + "/baffle-square.meshb");
-    ok &= hocav::check_orientation(hocav::elements_shuffled(hocav::mesh_test::baffle_across_the_middle<3>(6)),
+    ok &= hocav::check_orientation(hocav::mesh_test::elements_shuffled(hocav::mesh_test::baffle_across_the_middle<3>(6)),
                                    directory + "/baffle-cube.mesh");
     ok &= hocav::check_classification(square, directory + "/square.meshb");
     ok &= hocav::check_classification(cube, directory + "/cube.meshb");
     ok &= hocav::check_classification(hocav::untagged(hocav::shuffled(cube)), directory + "/shuffled-cube.mesh");
     ok &= hocav::check_classification(hocav::untagged(hocav::tagged_mesh(hocav::generate_cube(6))), directory + "/materials.meshb");
-    ok &= hocav::check_classification(hocav::elements_shuffled(hocav::mesh_test::baffle_across_the_middle<3>(6)),
+    ok &= hocav::check_classification(hocav::mesh_test::elements_shuffled(hocav::mesh_test::baffle_across_the_middle<3>(6)),
                                       directory + "/baffle-cube.meshb");
     ok &= hocav::check_gradation(square, directory + "/square.meshb");
     ok &= hocav::check_gradation(hocav::untagged(hocav::shuffled(cube)), directory + "/shuffled-cube.meshb");
