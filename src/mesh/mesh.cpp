@@ -374,15 +374,20 @@ template <int D>
 void Mesh<D>::orient_boundary_facets_outward() {
   for (Index f = 0; f < facet_count(); ++f) {
     if (facet_removed(f)) continue;
-    const Index k = facet_element_face_[f] / (D + 1);
-    const int face = static_cast<int>(facet_element_face_[f] % (D + 1));
-    // An interface: as a face of the side with the smaller ref, so that its facets agree (the cavity
-    // operator's surface cavity needs them to). A baffle (one ref): below.
-    const Index across = neighbor(k, face);
-    if (across != kNoIndex && element_refs_[k] == element_refs_[across]) continue;
-    orient_facet_as_face(f, k, face, across != kNoIndex && element_refs_[across] < element_refs_[k]);
+    const Index k = outward_element(f);
+    if (k != kNoIndex) orient_facet_as_face(f, k, local_face_of<D>(elements_[k], facets_[f].data()));
   }
   for (Index f : baffle_facets_to_turn(*this)) turn_facet(f);
+}
+
+template <int D>
+Index Mesh<D>::outward_element(Index f) const {
+  const Index k = facet_element_face_[f] / (D + 1);
+  const Index across = neighbor(k, static_cast<int>(facet_element_face_[f] % (D + 1)));
+  // An interface: as a face of the side with the smaller ref, so that its facets agree (the cavity
+  // operator's surface cavity needs them to).
+  if (across == kNoIndex || element_refs_[k] < element_refs_[across]) return k;
+  return element_refs_[across] < element_refs_[k] ? across : kNoIndex;
 }
 
 template <int D>
@@ -588,6 +593,7 @@ std::vector<Index> Mesh<D>::compact() {
   renumber_list(required_edges_, D == 2 ? facet_id : line_id);
   renumber_list(required_triangles_, facet_id);
 
+  if (has_topology() && facet_element_face_.size() == facets_.size()) relink_facets_off_their_faces();
   rekey_after_renumbering();
   return vertex_id;
 }
@@ -661,7 +667,6 @@ void Mesh<D>::rekey_after_renumbering() {
     for (Index e = 0; e < edge_count(); ++e) edge_ids_.assign(edge_key(edge_vertices_[e][0], edge_vertices_[e][1]), e);
   }
   if (facet_element_face_.size() == facets_.size() && has_topology()) {
-    relink_facets_off_their_faces();
     element_face_facets_.clear();
     std::fill(faces_with_facet_.begin(), faces_with_facet_.end(), std::uint8_t{0});
     for (Index f = 0; f < facet_count(); ++f)

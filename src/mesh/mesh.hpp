@@ -161,6 +161,9 @@ class Mesh {
   // they make the same way.
   // Needs the topology.
   void orient_boundary_facets_outward();
+  // The element facet f faces away from under that rule: its element on the domain's boundary, the
+  // side of the smaller ref on an interface; kNoIndex on a baffle (its patch decides). Needs the topology.
+  Index outward_element(Index f) const;
   // Orders facet f as face `face` of element k (outward from k, the elements being positive), or the
   // other way round when `inward`.
   void orient_facet_as_face(Index f, Index k, int face, bool inward = false);

@@ -75,12 +75,8 @@ std::vector<Vec<D>> boundary_vertex_normals(const Mesh<D>& mesh) {
     // Whatever the facet's vertex order, as Mesh::orient_boundary_facets_outward would orient it:
     // away from its element on the domain's boundary, from the side of the smaller ref on an
     // interface; a baffle like its patch's first facet.
-    const Index element_face = mesh.facet_element_face(f);
-    Index k = element_face / (D + 1);
-    const Index across = mesh.neighbor(k, static_cast<int>(element_face % (D + 1)));
-    if (across != kNoIndex && mesh.element_ref(across) == mesh.element_ref(k))
-      return std::binary_search(turned.begin(), turned.end(), f) ? -normal : normal;
-    if (across != kNoIndex && mesh.element_ref(across) < mesh.element_ref(k)) k = across;
+    const Index k = mesh.outward_element(f);
+    if (k == kNoIndex) return std::binary_search(turned.begin(), turned.end(), f) ? -normal : normal;
     const auto& element = mesh.element(k);
     const Index opposite = *std::find_if(element.begin(), element.end(),
                                          [&](Index v) { return std::find(facet.begin(), facet.end(), v) == facet.end(); });

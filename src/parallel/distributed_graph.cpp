@@ -8,7 +8,7 @@
 
 #include "base/error.hpp"
 #include "parallel/communicator.hpp"
-#include "parallel/face_key.hpp"
+#include "parallel/interface_sides.hpp"
 
 namespace hocav {
 namespace {
@@ -23,39 +23,12 @@ struct FaceSide {
   std::int32_t process, near_old_interface;
 };
 
-// Every process's interface sides to their meeting processes and back: per face of this process's
-// interfaces (by global vertex ids), the side across it.
-template <int D>
-std::unordered_map<FaceKey<D>, FaceSide<D>, FaceKeyHash<D>> sides_across(const std::vector<FaceSide<D>>& own) {
-  std::vector<std::vector<FaceSide<D>>> outgoing(static_cast<std::size_t>(process_count()));
-  for (const FaceSide<D>& side : own) outgoing[meeting_process<D>(side.face, process_count())].push_back(side);
-  std::unordered_map<FaceKey<D>, std::vector<FaceSide<D>>, FaceKeyHash<D>> met;
-  for (const FaceSide<D>& side : exchange_values_joined(outgoing)) met[side.face].push_back(side);
-  std::vector<std::vector<FaceSide<D>>> answers(outgoing.size());
-  for (const auto& [face, sides] : met) {
-    if (sides.size() != 2) throw Error("distributed graph: an interface face has " + std::to_string(sides.size()) + " sides, not 2");
-    answers[sides[0].process].push_back(sides[1]);
-    answers[sides[1].process].push_back(sides[0]);
-  }
-  std::unordered_map<FaceKey<D>, FaceSide<D>, FaceKeyHash<D>> across;
-  for (const FaceSide<D>& side : exchange_values_joined(answers)) across.emplace(side.face, side);
-  return across;
-}
-
 // A face's vertices, in the element's order.
 template <int D>
 FaceKey<D> face_vertices_of(const typename Mesh<D>::Element& element, int face) {
   FaceKey<D> vertices{};
   for (int i = 0; i < D; ++i) vertices[i] = element[face_vertices<D>(face)[i]];
   return vertices;
-}
-
-// A face (by local vertex ids) by its sorted global vertex ids.
-template <int D>
-FaceKey<D> global_key(const MeshPart<D>& part, const FaceKey<D>& local) {
-  FaceKey<D> key{};
-  for (int i = 0; i < D; ++i) key[i] = part.global_ids[local[i]];
-  return sorted_key<D>(key);
 }
 
 // A graph row's arcs with their weights, those to the same neighbour summed, by neighbour.
@@ -117,7 +90,7 @@ DistributedGraph distributed_element_graph(const MeshPart<D>& part, std::span<co
     interface_face[at] = 1;
     own.push_back({graph.first + groups.group_of[k], global_key<D>(part, mesh.facet(f)), process_rank(), near[k]});
   }
-  const auto across = sides_across(own);
+  const auto across = sides_across<D>(own);
 
   const GroupMembers members = members_of(groups);
   std::vector<std::pair<std::int64_t, std::int64_t>> arcs;  // a group's: neighbour, weight

@@ -2,26 +2,19 @@
 
 #include <algorithm>
 #include <optional>
-#include <unordered_map>
 
 #include "mesh/baffle_orientation.hpp"
 #include "parallel/communicator.hpp"
-#include "parallel/face_key.hpp"
+#include "parallel/interface_sides.hpp"
 
 namespace hocav {
 namespace {
 
-// One side of a face between two pieces, sent to where the two sides meet: the ref of its element.
+// One side of a face between two pieces: the ref of its element.
 template <int D>
-struct FaceSide {
-  FaceKey<D> key;
-  std::int32_t ref;
-};
-
-// The meeting's answer to a side: the other side's ref, when the other side came.
-struct RefAcross {
-  std::int32_t ref;
-  std::int32_t found;
+struct RefSide {
+  FaceKey<D> face;
+  std::int32_t process, ref;
 };
 
 // A baffle sent to every process: its file id, its vertices' global ids in its order, its ref.
@@ -33,59 +26,25 @@ struct BaffleRecord {
 };
 
 template <int D>
-FaceKey<D> global_key(const MeshPart<D>& piece, Index f) {
-  FaceKey<D> key;
-  for (int i = 0; i < D; ++i) key[i] = piece.global_ids[piece.mesh.facet(f)[i]];
-  return sorted_key<D>(key);
-}
-
-template <int D>
 Index element_of_facet(const Mesh<D>& mesh, Index f) {
   return mesh.facet_element_face(f) / (D + 1);
 }
 
-// Per process that sent sides to this one, per side in its order: the other side's ref.
-template <int D>
-std::vector<std::vector<RefAcross>> meet_sides(const std::vector<std::vector<FaceSide<D>>>& arrived) {
-  std::unordered_map<FaceKey<D>, std::vector<std::int32_t>, FaceKeyHash<D>> refs;
-  for (const std::vector<FaceSide<D>>& sides : arrived)
-    for (const FaceSide<D>& side : sides) refs[side.key].push_back(side.ref);
-  std::vector<std::vector<RefAcross>> answers;
-  for (const std::vector<FaceSide<D>>& sides : arrived) {
-    answers.emplace_back();
-    for (const FaceSide<D>& side : sides) {
-      const std::vector<std::int32_t>& both = refs.at(side.key);
-      const bool paired = both.size() == 2;
-      answers.back().push_back({paired ? (both[0] == side.ref ? both[1] : both[0]) : 0, paired});
-    }
-  }
-  return answers;
-}
-
 // Collective: per facet of the piece, the ref of the element across it when that element lies in
-// another piece.
+// another piece (learnt from the other side of the interface facet on its face).
 template <int D>
 std::vector<std::optional<int>> refs_across_pieces(const MeshPart<D>& piece) {
   const Mesh<D>& mesh = piece.mesh;
-  std::vector<std::vector<FaceSide<D>>> outgoing(static_cast<std::size_t>(process_count()));
-  std::vector<std::vector<Index>> sent(outgoing.size());  // per message, its sides' interface facets
+  std::vector<RefSide<D>> own;
   for (Index f = 0; f < mesh.facet_count(); ++f)
-    if (mesh.facet_ref(f) == kInterfaceRef) {
-      const FaceKey<D> key = global_key(piece, f);
-      const auto to = static_cast<std::size_t>(meeting_process<D>(key, process_count()));
-      outgoing[to].push_back({key, mesh.element_ref(element_of_facet(mesh, f))});
-      sent[to].push_back(f);
-    }
-  const std::vector<std::vector<RefAcross>> answers = exchange_values(meet_sides(exchange_values(outgoing)));
-  std::unordered_map<FaceKey<D>, int, FaceKeyHash<D>> across_of_key;
-  for (std::size_t from = 0; from < answers.size(); ++from)
-    for (std::size_t j = 0; j < answers[from].size(); ++j)
-      if (answers[from][j].found) across_of_key[global_key(piece, sent[from][j])] = answers[from][j].ref;
-  std::vector<std::optional<int>> across(static_cast<std::size_t>(mesh.facet_count()));
+    if (mesh.facet_ref(f) == kInterfaceRef)
+      own.push_back({global_key<D>(piece, mesh.facet(f)), process_rank(), mesh.element_ref(element_of_facet(mesh, f))});
+  const auto across = sides_across<D>(own);
+  std::vector<std::optional<int>> refs(static_cast<std::size_t>(mesh.facet_count()));
   for (Index f = 0; f < mesh.facet_count(); ++f)
     if (mesh.facet_ref(f) != kInterfaceRef)
-      if (const auto found = across_of_key.find(global_key(piece, f)); found != across_of_key.end()) across[f] = found->second;
-  return across;
+      if (const auto side = across.find(global_key<D>(piece, mesh.facet(f))); side != across.end()) refs[f] = side->second.ref;
+  return refs;
 }
 
 // Collective: turns the piece's baffles (facets `baffles`, of file ids `facet_ids`) that
