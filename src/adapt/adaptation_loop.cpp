@@ -155,7 +155,7 @@ AdaptationRun adapt_to_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, 
   limits.collapse_new_length = kOpenCollapseLength;
   limits.cos_feature_angle = std::cos(settings.feature_angle_degrees * std::numbers::pi / 180);
   limits.hausd = settings.hausd;
-  limits.split_at_required_vertices = settings.split_at_required_vertices;
+  limits.splits_at_required_vertices = settings.splits_at_required_vertices;
   AdaptationRun run;
   int closed_passes = 0;
   for (int pass = 1; pass <= settings.max_passes && !run.converged && closed_passes != settings.passes_after_window_closes; ++pass) {

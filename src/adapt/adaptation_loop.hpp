@@ -26,9 +26,11 @@ struct AdaptationSettings {
   // Stops this many passes after the loop's window closes (the distributed loop's early iterations,
   // whose frozen interfaces leave only ping-pong next to them: docs/distributed.md); negative: never.
   int passes_after_window_closes = -1;
-  // False: no edge with a required vertex is split. A distributed part's interface is required, and
-  // splits toward an interface coarser than the metric would never end (docs/distributed.md).
-  bool split_at_required_vertices = true;
+  // Which edges at a required vertex a split may cut. A distributed part's required vertices are
+  // mostly its frozen interface's, refined first (docs/distributed.md §Interfaces refined first):
+  // splits toward an interface coarser than the metric would never end, and at its vertices on the
+  // domain's boundary they left vertices off the geometry, and creases.
+  SplitsAtRequiredVertices splits_at_required_vertices = SplitsAtRequiredVertices::kEvery;
   // False: the loop's classification takes its ridges from the mesh's tags and refs only, not from
   // its shape (kRidgesFromTagsOnly). A distributed part's loop: the whole mesh's shape was classified
   // once, as the serial loop classifies it, and a crease a part passes through on its way (a facet

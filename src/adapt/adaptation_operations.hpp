@@ -13,6 +13,14 @@
 
 namespace hocav {
 
+// Which edges at a required vertex the split may cut (AdaptationSettings::splits_at_required_vertices).
+enum class SplitsAtRequiredVertices {
+  kEvery,
+  // Not an edge between two required vertices, nor one at a required vertex on the domain's boundary
+  // (a facet that is not required) or on a required facet's edge longer than 2.
+  kNextToFineRequiredFacets,
+};
+
 struct AdaptationLimits {
   double split_length = std::sqrt(2.0);         // edges longer are split
   double collapse_length = 1 / std::sqrt(2.0);  // edges shorter are collapsed
@@ -21,7 +29,8 @@ struct AdaptationLimits {
   double collapse_new_length = std::sqrt(2.0);
   double cos_feature_angle = 0.7071067811865476;  // cos 45°: boundary changes may turn a facet by less
   double hausd = 0;                               // > 0 with a geometry: new boundary facets stay within it
-  bool split_at_required_vertices = true;         // AdaptationSettings::split_at_required_vertices
+  // AdaptationSettings::splits_at_required_vertices
+  SplitsAtRequiredVertices splits_at_required_vertices = SplitsAtRequiredVertices::kEvery;
 };
 
 // Why a candidate operation was refused.

@@ -15,6 +15,10 @@
 namespace hocav {
 namespace {
 
+// A required facet's edge longer than this (its halves longer than the unit) bars splits at its ends
+// (SplitsAtRequiredVertices::kNextToFineRequiredFacets): toward a frozen surface coarser than the
+// metric the splits would not end (docs/distributed.md).
+constexpr double kCoarseRequiredEdge = 2;
 // The share of the long edges longer than 2 above which a pass splits only those.
 constexpr double kCoarsePhaseShare = 0.1;
 // With more than one thread, the candidates previewed at once (docs/adaptation.md §Threads): small
@@ -289,6 +293,31 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const SplitPreview<D
   return refusal;
 }
 
+// Per vertex, for SplitsAtRequiredVertices::kNextToFineRequiredFacets: kBarredEnd for a required
+// vertex on a facet that is not required (the domain's boundary) or on a required facet's edge
+// longer than 2, kRequiredEnd for another required vertex, 0 otherwise.
+constexpr char kRequiredEnd = 1, kBarredEnd = 2;
+template <int D>
+std::vector<char> barred_split_ends(const AdaptationMesh<D>& am) {
+  const Mesh<D>& mesh = am.mesh();
+  std::vector<char> ends(static_cast<std::size_t>(mesh.vertex_count()), 0);
+  for (Index v : mesh.required_vertices()) ends[v] = kRequiredEnd;
+  const std::vector<Index>& listed = D == 3 ? mesh.required_triangles() : mesh.required_edges();
+  std::vector<char> required_facet(static_cast<std::size_t>(mesh.facet_count()), 0);
+  for (Index f : listed) required_facet[f] = 1;
+  for (Index f = 0; f < mesh.facet_count(); ++f) {
+    if (mesh.facet_removed(f)) continue;
+    const auto& facet = mesh.facet(f);
+    for (int i = 0; i < D; ++i) {
+      const Index a = facet[i], b = facet[(i + 1) % D];
+      if (!required_facet[f] || am.edge_length(a, b) > kCoarseRequiredEdge)
+        for (Index v : {a, b})
+          if (ends[v] != 0) ends[v] = kBarredEnd;
+    }
+  }
+  return ends;
+}
+
 }  // namespace
 
 template <int D>
@@ -302,13 +331,12 @@ SplitSweep split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limit
   OperationCount& count = sweep.count;
   // (Before the coarse phase is judged: a distributed part's frozen interface edges, long and many
   // next to a coarse interface, would keep it in its coarse phase.)
-  if (!limits.split_at_required_vertices) {
-    std::vector<char> required(static_cast<std::size_t>(am.mesh().vertex_count()), 0);
-    for (Index v : am.mesh().required_vertices()) required[v] = 1;
+  if (limits.splits_at_required_vertices == SplitsAtRequiredVertices::kNextToFineRequiredFacets) {
+    const std::vector<char> barred = barred_split_ends(am);
     std::erase_if(candidates, [&](const EdgeCandidate& c) {
-      const bool at_required = required[c.a] || required[c.b];
-      if (at_required) count.add(Refusal::kClasses);
-      return at_required;
+      const bool barred_edge = (barred[c.a] && barred[c.b]) || barred[c.a] == kBarredEnd || barred[c.b] == kBarredEnd;
+      if (barred_edge) count.add(Refusal::kClasses);
+      return barred_edge;
     });
   }
   const auto beyond_two = std::partition_point(candidates.begin(), candidates.end(), [](const EdgeCandidate& c) { return c.length > 2; });

@@ -161,10 +161,11 @@ void print_iteration(const DistributedIteration& figures) {
     return;
   }
   line << "distributed: iteration " << figures.iteration << " of " << kDistributedIterations << ": metric " << figures.metric_fraction
-       << " of the way, " << process_count() << " parts, " << figures.interface_faces << " interface faces, " << figures.interface_vertices
-       << " of " << figures.vertices << " vertices on the interfaces, " << figures.bytes_sent << " bytes sent, " << figures.seconds
-       << " s (partition " << figures.seconds_partition << " s; parts " << rank_range(figures.part_seconds, 1) << " s, peak memory "
-       << rank_range(figures.peak_memory_bytes, 1 << 20) << " MiB per rank)\n";
+       << " of the way, " << process_count() << " parts (their interfaces refined first: " << figures.interface_edges_split
+       << " edges split, " << figures.interface_faces_turned << " faces turned), " << figures.interface_faces << " interface faces, "
+       << figures.interface_vertices << " of " << figures.vertices << " vertices on the interfaces, " << figures.bytes_sent
+       << " bytes sent, " << figures.seconds << " s (partition " << figures.seconds_partition << " s; parts "
+       << rank_range(figures.part_seconds, 1) << " s, peak memory " << rank_range(figures.peak_memory_bytes, 1 << 20) << " MiB per rank)\n";
   std::cerr << line.str();
 }
 

@@ -16,7 +16,10 @@ struct DistributedIteration {
   Index vertices = 0, elements = 0;  // of the whole mesh after it
   Index interface_vertices = 0;      // shared by parts in the iteration
   Index interface_faces = 0;         // between parts, each counted once
-  Index region_elements = 0;         // the last runs': the elements gathered on rank 0 for them
+  // Before the parts' loops: the interface edges split, and the faces turned into the four triangles
+  // of a uniform refinement (docs/distributed.md §Interfaces refined first).
+  Index interface_edges_split = 0, interface_faces_turned = 0;
+  Index region_elements = 0;  // the last runs': the elements gathered on rank 0 for them
   // What the processes sent one another, without the input's broadcast: the migrations (the whole-mesh
   // iterations; the last runs' region to rank 0, then every element to rank 0).
   long long bytes_sent = 0;

@@ -12,10 +12,9 @@
 namespace hocav {
 namespace {
 
-// Every iteration's parts split no edge at an interface vertex and stop this many passes after their
-// loop's window closes: next to a frozen interface much coarser than the metric, splits toward it
-// never end, and what a part would do there a later iteration (with that interface inside a part),
-// or the last serial runs do better (docs/distributed.md).
+// Every iteration's parts stop this many passes after their loop's window closes: what a part would
+// do next to its frozen interface a later iteration (with that interface inside a part), or the last
+// serial runs do better (docs/distributed.md).
 constexpr int kEarlyPassesAfterWindowCloses = 2;
 
 // Attribute columns of a part's vertices through its loop: 0 for a new vertex, else the global id + 1
@@ -92,7 +91,7 @@ AdaptationRun adapt_part(MeshPart<D>& part, const AdaptationMetric<D>& metric, c
 AdaptationSettings part_settings(const AdaptationSettings& settings) {
   AdaptationSettings part = settings;
   part.passes_after_window_closes = kEarlyPassesAfterWindowCloses;
-  part.split_at_required_vertices = false;
+  part.splits_at_required_vertices = SplitsAtRequiredVertices::kNextToFineRequiredFacets;
   part.ridges_from_shape = false;
   return part;
 }

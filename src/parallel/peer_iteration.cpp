@@ -7,6 +7,7 @@
 
 #include "base/stopwatch.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/interface_refinement.hpp"
 #include "parallel/part_adaptation.hpp"
 #include "parallel/part_migration.hpp"
 
@@ -69,6 +70,9 @@ template <int D>
 PeerIterationResult run_peer_iteration(MeshPart<D>& part, Index& next_global_id, const PeerIteration<D>& iteration,
                                        DistributedIteration& figures) {
   const auto start = std::chrono::steady_clock::now();
+  const InterfaceRefinement refined = refine_interfaces(part, iteration.metric, next_global_id);
+  figures.interface_edges_split = refined.edges_split;
+  figures.interface_faces_turned = refined.faces_turned;
   const auto [run, own] = adapt_part_measured(part, iteration.metric, iteration.geometry, iteration.settings);
   number_new_vertices(part, next_global_id);
   const std::vector<char> on_interface = interface_vertex_flags(part.mesh);

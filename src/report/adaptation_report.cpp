@@ -89,6 +89,7 @@ void write_distributed_iterations(JsonWriter& json, const std::vector<Distribute
     json.begin_object().member("iteration", it.iteration).member("metric_fraction", it.metric_fraction);
     json.member("vertices", it.vertices).member("elements", it.elements);
     json.member("interface_vertices", it.interface_vertices).member("interface_faces", it.interface_faces);
+    json.member("interface_edges_split", it.interface_edges_split).member("interface_faces_turned", it.interface_faces_turned);
     json.member("region_elements", it.region_elements);
     json.member("bytes_sent", it.bytes_sent)
         .member("back_mesh_bytes", it.back_mesh_bytes)
