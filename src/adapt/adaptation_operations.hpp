@@ -16,6 +16,9 @@ namespace hocav {
 // Which edges at a required vertex the split may cut (AdaptationSettings::splits_at_required_vertices).
 enum class SplitsAtRequiredVertices {
   kEvery,
+  // None at a required vertex (the distributed loop's last runs, whose frozen border is not refined
+  // first: splits next to it kept them from converging).
+  kNone,
   // Not an edge between two required vertices, nor one at a required vertex on the domain's boundary
   // (a facet that is not required) or on a required facet's edge longer than 2.
   kNextToFineRequiredFacets,

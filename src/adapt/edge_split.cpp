@@ -293,15 +293,15 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const SplitPreview<D
   return refusal;
 }
 
-// Per vertex, for SplitsAtRequiredVertices::kNextToFineRequiredFacets: kBarredEnd for a required
-// vertex on a facet that is not required (the domain's boundary) or on a required facet's edge
-// longer than 2, kRequiredEnd for another required vertex, 0 otherwise.
+// Per vertex, as `splits` bars edges at it: kBarredEnd for a required vertex (kNextToFineRequiredFacets:
+// one on a facet that is not required, the domain's boundary, or on a required facet's edge longer
+// than 2), kRequiredEnd for another required vertex (an edge between two is barred), 0 otherwise.
 constexpr char kRequiredEnd = 1, kBarredEnd = 2;
 template <int D>
-std::vector<char> barred_split_ends(const AdaptationMesh<D>& am) {
+std::vector<char> barred_split_ends(const AdaptationMesh<D>& am, SplitsAtRequiredVertices splits) {
   const Mesh<D>& mesh = am.mesh();
   std::vector<char> ends(static_cast<std::size_t>(mesh.vertex_count()), 0);
-  for (Index v : mesh.required_vertices()) ends[v] = kRequiredEnd;
+  for (Index v : mesh.required_vertices()) ends[v] = splits == SplitsAtRequiredVertices::kNone ? kBarredEnd : kRequiredEnd;
   const std::vector<Index>& listed = D == 3 ? mesh.required_triangles() : mesh.required_edges();
   std::vector<char> required_facet(static_cast<std::size_t>(mesh.facet_count()), 0);
   for (Index f : listed) required_facet[f] = 1;
@@ -331,8 +331,8 @@ SplitSweep split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limit
   OperationCount& count = sweep.count;
   // (Before the coarse phase is judged: a distributed part's frozen interface edges, long and many
   // next to a coarse interface, would keep it in its coarse phase.)
-  if (limits.splits_at_required_vertices == SplitsAtRequiredVertices::kNextToFineRequiredFacets) {
-    const std::vector<char> barred = barred_split_ends(am);
+  if (limits.splits_at_required_vertices != SplitsAtRequiredVertices::kEvery) {
+    const std::vector<char> barred = barred_split_ends(am, limits.splits_at_required_vertices);
     std::erase_if(candidates, [&](const EdgeCandidate& c) {
       const bool barred_edge = (barred[c.a] && barred[c.b]) || barred[c.a] == kBarredEnd || barred[c.b] == kBarredEnd;
       if (barred_edge) count.add(Refusal::kClasses);

@@ -177,6 +177,7 @@ AdaptationRun last_serial_runs(MeshPart<D>& part, const AdaptationMetric<D>& met
                                const AdaptationSettings& settings, const std::vector<char>& seeds) {
   AdaptationSettings last = part_settings(settings);  // a part's loop, the last word: no early stop
   last.passes_after_window_closes = -1;
+  last.splits_at_required_vertices = SplitsAtRequiredVertices::kNone;
   last.first_pass_vertices = around_interfaces(part.mesh, seeds);
   last.first_pass_unfinished_edges = true;
   AdaptationRun run = adapt_part_measured(part, metric, geometry, last).first;
