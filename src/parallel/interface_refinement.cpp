@@ -65,6 +65,18 @@ std::vector<Index> facets_through(const Mesh<D>& mesh, std::span<const Index> el
   return facets;
 }
 
+// Plans the star of `shell`, the elements around edge (a, b), from `vertex`, the facets through the
+// edge re-starred with it: a split from its middle, a face's turn from another middle.
+template <int D>
+bool star_planned(const Mesh<D>& mesh, std::span<const Index> shell, Index a, Index b, Index vertex, CavityOperator<D>& op,
+                  double min_relative_measure = CavityOptions{}.min_relative_measure) {
+  const std::vector<Index> facets = facets_through(mesh, shell, a, b);
+  CavityOptions options;
+  options.removed_facets = facets;
+  options.min_relative_measure = min_relative_measure;
+  return op.plan(mesh, shell, vertex, options) == CavityStatus::kAccepted;
+}
+
 // The edges (local ids, a < b) of the part's interface facets.
 template <int D>
 std::vector<std::array<Index, 2>> interface_edges(const Mesh<D>& mesh) {
@@ -138,11 +150,8 @@ bool one_fan_of_one_ref(const Mesh<D>& mesh, std::span<const Index> shell, Index
 // is valid, but may be too flat for the operator's measure floor).
 template <int D>
 bool split_accepted(Mesh<D>& mesh, Index a, Index b, std::span<const Index> shell, CavityOperator<D>& op) {
-  const std::vector<Index> facets = facets_through<D>(mesh, shell, a, b);
-  CavityOptions options;
-  options.removed_facets = facets;
   const Index m = mesh.add_vertex(0.5 * (mesh.vertex(a) + mesh.vertex(b)));
-  const bool accepted = op.plan(mesh, shell, m, options) == CavityStatus::kAccepted;
+  const bool accepted = star_planned(mesh, shell, a, b, m, op);
   mesh.pop_vertex();
   return accepted;
 }
@@ -211,14 +220,10 @@ template <int D>
 Index split_interface_edge(MeshPart<D>& part, Index a, Index b, Index global_id, CavityOperator<D>& op, std::vector<Index>& shell) {
   Mesh<D>& mesh = part.mesh;
   collect_shell(mesh, a, b, shell);
-  const std::vector<Index> facets = facets_through(mesh, shell, a, b);
-  CavityOptions options;
-  options.removed_facets = facets;
+  const Index m = mesh.add_vertex(0.5 * (mesh.vertex(a) + mesh.vertex(b)));
   // (Every side agreed on the split when its plan passed the measure floor; bisections since may
   // have thinned the shell, and halves of a positive element are positive.)
-  options.min_relative_measure = 0;
-  const Index m = mesh.add_vertex(0.5 * (mesh.vertex(a) + mesh.vertex(b)));
-  if (op.plan(mesh, shell, m, options) != CavityStatus::kAccepted)
+  if (!star_planned(mesh, std::span<const Index>(shell), a, b, m, op, 0))
     throw Error("distributed adaptation: the agreed split of an interface edge was refused");
   op.commit(mesh);
   mesh.required_vertices().push_back(m);
@@ -257,16 +262,13 @@ Turn median_of(const Mesh<3>& mesh, const SplitFace& face) {
 // middle one); `turn.apex` is that middle, kNoIndex where it cannot.
 void plan_turn(const Mesh<3>& mesh, const MeshPart<3>& part, const SplitFace& face, Index holders, Turn& turn, CavityOperator<3>& op) {
   if (turn.shell.empty()) return;
-  const std::vector<Index> facets = facets_through(mesh, turn.shell, turn.middle, turn.corner);
-  if (!one_fan_of_one_ref(mesh, turn.shell, holders) || facets.size() != 2) return;
+  if (!one_fan_of_one_ref(mesh, turn.shell, holders) || facets_through(mesh, turn.shell, turn.middle, turn.corner).size() != 2) return;
   std::vector<Index> apexes;
   for (Index m : face.middles)
     if (m != turn.middle) apexes.push_back(m);
   std::sort(apexes.begin(), apexes.end(), [&](Index x, Index y) { return part.global_ids[x] < part.global_ids[y]; });
-  CavityOptions options;
-  options.removed_facets = facets;
   for (Index apex : apexes)
-    if (op.plan(mesh, turn.shell, apex, options) == CavityStatus::kAccepted) {
+    if (star_planned(mesh, std::span<const Index>(turn.shell), turn.middle, turn.corner, apex, op)) {
       turn.apex = apex;
       return;
     }
@@ -337,10 +339,7 @@ Index turn_split_faces(MeshPart<3>& part, std::vector<SplitFace> faces, CavityOp
         continue;
       }
       collect_shell(mesh, turns[t].middle, turns[t].corner, turns[t].shell);
-      const std::vector<Index> facets = facets_through(mesh, turns[t].shell, turns[t].middle, turns[t].corner);
-      CavityOptions options;
-      options.removed_facets = facets;
-      if (op.plan(mesh, turns[t].shell, turns[t].apex, options) != CavityStatus::kAccepted)
+      if (!star_planned(mesh, std::span<const Index>(turns[t].shell), turns[t].middle, turns[t].corner, turns[t].apex, op))
         throw Error("distributed adaptation: an agreed turn of an interface face was refused");
       op.commit(mesh);
       ++turned_now;
