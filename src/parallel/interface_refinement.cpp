@@ -10,6 +10,7 @@
 #include "base/error.hpp"
 #include "cavity/cavity_operator.hpp"
 #include "mesh/ball_and_shell.hpp"
+#include "mesh/mesh_defects.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/entity_tags.hpp"
 #include "parallel/interface_sides.hpp"
@@ -121,21 +122,12 @@ std::unordered_map<std::uint64_t, Index> holder_counts(const Mesh<D>& mesh, std:
   return counts;
 }
 
-// Per vertex, whether the walk around it reaches every element that holds it (asked of the ends of
-// `edges` only; false for the others): a part may hold a vertex of its interface in separate fans,
-// and the walks (collect_shell) see one of them only.
+// Per vertex, whether the walks around it (collect_ball, collect_shell) reach every element that
+// holds it: not so at the mesh's non-manifold places, such as a vertex a part holds in separate fans.
 template <int D>
-std::vector<char> whole_balls(const Mesh<D>& mesh, std::span<const std::array<Index, 2>> edges) {
-  std::vector<Index> holders(static_cast<std::size_t>(mesh.vertex_count()), 0);
-  for (const auto& element : mesh.elements())
-    for (Index v : element) ++holders[v];
-  std::vector<char> whole(holders.size(), 0);
-  std::vector<Index> ball;
-  for (const auto& edge : edges)
-    for (Index v : edge) {
-      collect_ball(mesh, v, ball);
-      whole[v] = static_cast<Index>(ball.size()) == holders[v];
-    }
+std::vector<char> whole_balls(const Mesh<D>& mesh) {
+  std::vector<char> whole(static_cast<std::size_t>(mesh.vertex_count()), 1);
+  for (Index v : non_manifold_places(mesh).every_vertex()) whole[v] = 0;
   return whole;
 }
 
@@ -163,7 +155,7 @@ std::vector<EdgeSide> edge_sides(MeshPart<D>& part, const AdaptationMetric<D>& m
   Mesh<D>& mesh = part.mesh;
   const std::unordered_set<std::uint64_t> kept = kept_edges(mesh);
   const std::unordered_map<std::uint64_t, Index> holders = holder_counts(mesh, edges);
-  const std::vector<char> whole = whole_balls(mesh, edges);
+  const std::vector<char> whole = whole_balls(mesh);
   std::unordered_map<Index, SymMat<D>> metrics;
   Index hint = kNoIndex;
   const auto metric_of = [&](Index v) -> const SymMat<D>& {
@@ -284,7 +276,7 @@ std::vector<Turn> planned_turns(const MeshPart<3>& part, std::span<const SplitFa
       medians.push_back({std::min(turns.back().middle, turns.back().corner), std::max(turns.back().middle, turns.back().corner)});
   }
   const std::unordered_map<std::uint64_t, Index> holders = holder_counts(part.mesh, medians);
-  const std::vector<char> whole = whole_balls(part.mesh, medians);
+  const std::vector<char> whole = whole_balls(part.mesh);
   for (std::size_t t = 0; t < turns.size(); ++t)
     if (!turns[t].shell.empty() && whole[turns[t].middle] && whole[turns[t].corner])
       plan_turn(part.mesh, part, faces[t], holders.at(Mesh<3>::edge_key(turns[t].middle, turns[t].corner)), turns[t], op);
