@@ -153,10 +153,19 @@ std::string rank_range(const std::vector<T>& values, double unit) {
 void print_iteration(const DistributedIteration& figures) {
   std::ostringstream line;  // figures to 3 digits: "metric 0.333 of the way", "0.0586 s"
   line << std::setprecision(3);
-  if (figures.iteration > kDistributedIterations) {
-    line << "distributed: the last runs on rank 0: " << figures.region_elements << " elements near the interfaces and the poor ones, "
-         << figures.elements << " elements after them, " << figures.bytes_sent << " bytes sent, " << figures.seconds << " s (runs "
-         << figures.part_seconds.at(0) << " s, peak memory " << rank_range(figures.peak_memory_bytes, 1 << 20) << " MiB per rank)\n";
+  if (figures.iteration == kLastRunsInParts) {
+    line << "distributed: the last runs in the parts: " << figures.region_elements
+         << " elements near the interfaces, each interface's with one of its processes, " << figures.elements << " elements after them, "
+         << figures.bytes_sent << " bytes sent, " << figures.seconds << " s (runs " << rank_range(figures.part_seconds, 1)
+         << " s, peak memory " << rank_range(figures.peak_memory_bytes, 1 << 20) << " MiB per rank)\n";
+    std::cerr << line.str();
+    return;
+  }
+  if (figures.iteration == kLastRunsOnRoot) {
+    line << "distributed: the last runs on rank 0: " << figures.region_elements
+         << " elements where the parts' regions met and around the poor ones left, " << figures.elements << " elements after them, "
+         << figures.bytes_sent << " bytes sent, " << figures.seconds << " s (runs " << figures.part_seconds.at(0) << " s, peak memory "
+         << rank_range(figures.peak_memory_bytes, 1 << 20) << " MiB per rank)\n";
     std::cerr << line.str();
     return;
   }

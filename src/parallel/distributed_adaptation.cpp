@@ -16,6 +16,7 @@
 #include "parallel/communicator.hpp"
 #include "parallel/element_partition.hpp"
 #include "parallel/gradual_metric.hpp"
+#include "parallel/last_run_region.hpp"
 #include "parallel/part_adaptation.hpp"
 #include "parallel/part_migration.hpp"
 #include "parallel/peer_iteration.hpp"
@@ -82,11 +83,10 @@ void partition_first(MeshPart<D>& part, std::span<const double> loads, std::int6
   figures.seconds += seconds_since(start);
 }
 
-// Per vertex of a part: on its interfaces, or on an element of quality below kPoorQuality in
-// `metric`: where the last runs start.
+// Per vertex of a part, `seeds` with those of its elements of quality below kPoorQuality in `metric`
+// flagged too.
 template <int D>
-std::vector<char> last_run_seeds(const Mesh<D>& mesh, const AdaptationMetric<D>& metric) {
-  std::vector<char> seeds = interface_vertex_flags(mesh);
+std::vector<char> with_poor_elements(const Mesh<D>& mesh, const AdaptationMetric<D>& metric, std::vector<char> seeds) {
   const std::vector<SymMat<D>> at = metrics_at_vertices(mesh, metric, 1);
   for (Index k = 0; k < mesh.element_count(); ++k) {
     const auto& element = mesh.element(k);
@@ -99,11 +99,9 @@ std::vector<char> last_run_seeds(const Mesh<D>& mesh, const AdaptationMetric<D>&
   return seeds;
 }
 
-// What the whole-mesh iterations leave: on rank 0 their runs; on every process its part's seeds of
-// the last runs, and the next global id.
+// What the whole-mesh iterations leave: on rank 0 their runs; on every process the next global id.
 struct WholeMeshResult {
   AdaptationRun run;
-  std::vector<char> seeds;
   Index next_global_id = 0;
 };
 
@@ -149,7 +147,6 @@ struct WholeMeshIterations {
       const PeerIterationResult result = run_peer_iteration(part, all.next_global_id, step, figures);
       all.run.passes.insert(all.run.passes.end(), result.run.passes.begin(), result.run.passes.end());
       all.run.caps_removed += result.run.caps_removed;
-      if (iteration == kDistributedIterations) all.seeds = last_run_seeds(part.mesh, iteration_metric);
       if (process_rank() == 0 && on_iteration) on_iteration(figures);
     }
     return all;
@@ -166,12 +163,11 @@ std::vector<char> flags_of_global_ids(const MeshPart<D>& part, const std::vector
   return flags;
 }
 
-// The last runs, serial on rank 0's part: the elements within kInterfaceBandRings rings of every
-// part's seeds (their interfaces, poor elements and unfinished edges). The first tries first the
-// seeds' region, the second what the first left (its poor elements and edges outside the unit
-// window) with its window open again: a run that closed its window early cannot collapse what it made
-// later. The part's border with the others' parts stays frozen. Their passes, in order; the
-// second's flags.
+// The last runs, serial on a part that holds a region of the last runs (docs/distributed.md §The
+// last runs). The first tries first the seeds' neighbours, the second what the first left (its poor
+// elements and edges outside the unit window) with its window open again: a run that closed its
+// window early cannot collapse what it made later. The part's border with the others' parts stays
+// frozen. Their passes, in order; the second's flags.
 template <int D>
 AdaptationRun last_serial_runs(MeshPart<D>& part, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                                const AdaptationSettings& settings, const std::vector<char>& seeds) {
@@ -200,23 +196,75 @@ struct RootRuns {
   const AdaptationSettings& settings;
 };
 
-// Collective, after the whole-mesh iterations (docs/distributed.md §The last runs): the elements
-// within kInterfaceBandRings rings of each part's seeds (`whole`'s) go to rank 0 (the others stay),
-// rank 0 runs the last serial runs there, then, when `gather`, every element goes to rank 0.
-// Returns rank 0's runs; their figures in rank 0's `figures`.
+// What the last runs in the parts leave for those on rank 0: per vertex of a part, whether it is a
+// seam's (a face between two processes' regions) or a poor element's, and the next global id.
+struct RootSeeds {
+  std::vector<char> seeds;
+  Index next_global_id = 0;
+};
+
+// Collective, after the whole-mesh iterations (docs/distributed.md §The scheme, step 5): the elements
+// within kInterfaceBandRings rings of the last interfaces go, interface by interface, to one of its
+// two processes (cut_last_run_region), and every process runs the last serial runs on its part so
+// made, from the interfaces' vertices it took. Returns rank 0's runs (the processes' combined) and
+// the seeds of the runs on rank 0 (the seams and the poor elements left); the figures in rank 0's
+// `figures`.
 template <int D>
-AdaptationRun last_runs_on_root(MeshPart<D>& part, const WholeMeshResult& whole, const RootRuns<D>* root,
+std::pair<AdaptationRun, RootSeeds> last_runs_in_parts(MeshPart<D>& part, const WholeMeshResult& whole, const RootRuns<D>* root,
+                                                       const WholeMeshIterations<D>& iterations, const BackMeshShare<D>& home,
+                                                       DistributedIteration& figures) {
+  const auto start = std::chrono::steady_clock::now();
+  const RegionCut cut = cut_last_run_region(part, kInterfaceBandRings);
+  figures.region_elements = sum_over_processes(cut.region_elements);
+  const std::vector<Index> seed_ids = exchange_values_joined(cut.seeds_to);
+  long long bytes_sent = 0;
+  part = migrate_part(part, cut.destination, &bytes_sent);
+  figures.bytes_sent += sum_over_processes(bytes_sent);
+  const std::unique_ptr<ShareMetric<D>> near = gathered_metric(home, iterations.recipe, iterations.whole_metric ? Mesh<D>{} : part.mesh,
+                                                               figures);
+  const auto runs_start = std::chrono::steady_clock::now();
+  const AdaptationMetric<D> metric = root && root->metric ? *root->metric : near->partway(1);
+  const AdaptationRun run = last_serial_runs(part, metric, iterations.geometry, iterations.settings, flags_of_global_ids(part, seed_ids));
+  const PartFigures own{seconds_since(runs_start), peak_resident_bytes()};
+  for (const PartFigures& each : all_gather_value(own)) {
+    figures.part_seconds.push_back(each.seconds);
+    figures.peak_memory_bytes.push_back(each.peak_memory_bytes);
+  }
+  RootSeeds next{{}, whole.next_global_id};
+  number_new_vertices(part, next.next_global_id);
+  count_whole_mesh(part, figures);
+  // Every process learns every seed: a poor element's neighbours across a border are another's.
+  std::vector<Index> own_seeds = cut.seams;
+  const std::vector<char> poor = with_poor_elements(part.mesh, metric, std::vector<char>(part.global_ids.size(), 0));
+  for (Index v = 0; v < part.mesh.vertex_count(); ++v)
+    if (poor[v]) own_seeds.push_back(part.global_ids[v]);
+  std::vector<Index> seeds;
+  for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(own_seeds))) {
+    const std::vector<Index> ids = values_of_bytes<Index>(bytes);
+    seeds.insert(seeds.end(), ids.begin(), ids.end());
+  }
+  next.seeds = flags_of_global_ids(part, seeds);
+  figures.seconds += seconds_since(start);
+  return {runs_combined_on_root(run), std::move(next)};
+}
+
+// Collective, after the last runs in the parts (docs/distributed.md §The scheme, step 5): the elements
+// within kInterfaceBandRings rings of the seams (`seeds`) go to rank 0 (the others stay), rank 0
+// runs the last serial runs there, then, when `gather`, every element goes to rank 0. Returns rank
+// 0's runs; their figures in rank 0's `figures`.
+template <int D>
+AdaptationRun last_runs_on_root(MeshPart<D>& part, const RootSeeds& seeds, const RootRuns<D>* root,
                                 const WholeMeshIterations<D>& iterations, const BackMeshShare<D>& home, bool gather,
                                 DistributedIteration& figures) {
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<char> near = elements_near(part.mesh, whole.seeds, kInterfaceBandRings);
+  const std::vector<char> near = elements_near(part.mesh, seeds.seeds, kInterfaceBandRings);
   std::vector<int> destination(near.size(), process_rank());
   for (std::size_t k = 0; k < near.size(); ++k)
     if (near[k]) destination[k] = 0;
   figures.region_elements = sum_over_processes(static_cast<Index>(std::count(near.begin(), near.end(), 1)));
   std::vector<std::vector<Index>> seed_ids(static_cast<std::size_t>(process_count()));
   for (Index v = 0; v < part.mesh.vertex_count(); ++v)
-    if (whole.seeds[v]) seed_ids[0].push_back(part.global_ids[v]);
+    if (seeds.seeds[v]) seed_ids[0].push_back(part.global_ids[v]);
   const std::vector<Index> ids = exchange_values_joined(seed_ids);
   long long bytes_sent = 0;
   part = migrate_part(part, destination, &bytes_sent);
@@ -229,7 +277,7 @@ AdaptationRun last_runs_on_root(MeshPart<D>& part, const WholeMeshResult& whole,
     const AdaptationMetric<D> metric = region_metric ? region_metric->partway(1) : *root->metric;
     run = last_serial_runs(part, metric, root->geometry, root->settings, flags_of_global_ids(part, ids));
     own = {seconds_since(runs_start), peak_resident_bytes()};
-    Index next_global_id = whole.next_global_id;
+    Index next_global_id = seeds.next_global_id;
     for (Index& global : part.global_ids)
       if (global == kNoIndex) global = next_global_id++;
   }
@@ -243,10 +291,10 @@ AdaptationRun last_runs_on_root(MeshPart<D>& part, const WholeMeshResult& whole,
   return run;
 }
 
-// The figures of the last runs, before them.
-DistributedIteration last_runs_figures() {
+// The figures of the last runs (`iteration`: kLastRunsInParts or kLastRunsOnRoot), before them.
+DistributedIteration last_runs_figures(int iteration) {
   DistributedIteration figures;
-  figures.iteration = kDistributedIterations + 1;
+  figures.iteration = iteration;
   figures.metric_fraction = 1;
   return figures;
 }
@@ -310,10 +358,13 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   first.seconds_partition = first.seconds = seconds_since(start);
   partition_first(part, scattered_by_part(loads, part_of), partition_seed, first);
   const WholeMeshResult whole_result = whole.run(part, home, first, on_iteration);
-  DistributedIteration last_figures = last_runs_figures();
   const RootRuns<D> root{&metric, geometry, settings};
+  DistributedIteration in_parts = last_runs_figures(kLastRunsInParts);
+  const auto [parts_run, seams] = last_runs_in_parts(part, whole_result, &root, whole, home, in_parts);
+  if (on_iteration) on_iteration(in_parts);
+  DistributedIteration last_figures = last_runs_figures(kLastRunsOnRoot);
   const bool gather = !end;
-  const AdaptationRun last = last_runs_on_root(part, whole_result, &root, whole, home, gather, last_figures);
+  const AdaptationRun last = last_runs_on_root(part, seams, &root, whole, home, gather, last_figures);
   if (gather) {
     mesh = whole_mesh_of(std::move(part));
     mesh.build_topology();
@@ -327,7 +378,7 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
     last_figures.elements = written.elements;
   }
   if (on_iteration) on_iteration(last_figures);
-  return joined_runs(whole_result.run, last);
+  return joined_runs(joined_runs(whole_result.run, parts_run), last);
 }
 
 template <int D>
@@ -343,7 +394,8 @@ void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>& analy
   DistributedIteration unused;  // (rank 0 keeps the figures)
   partition_first(part, scattered_by_part({}, {}), whole.partition_seed, unused);
   const WholeMeshResult whole_result = whole.run(part, home, {}, {});
-  last_runs_on_root<D>(part, whole_result, nullptr, whole, home, !end, unused);
+  const RootSeeds seams = last_runs_in_parts<D>(part, whole_result, nullptr, whole, home, unused).second;
+  last_runs_on_root<D>(part, seams, nullptr, whole, home, !end, unused);
   if (end) end_in_every_part(part, home, recipe, end, unused);
 }
 
@@ -357,13 +409,16 @@ AdaptationRun adapt_distributed_from_pieces(PiecesStart<D> start, const Boundary
   partition_first(part, start.loads, partition_seed, first);
   start.loads = {};
   const WholeMeshResult whole_result = whole.run(part, start.home, first, on_iteration);
-  DistributedIteration last_figures = last_runs_figures();
   const RootRuns<D> root{nullptr, geometry, settings};
-  const AdaptationRun last = last_runs_on_root(part, whole_result, process_rank() == 0 ? &root : nullptr, whole, start.home, false,
-                                               last_figures);
+  const RootRuns<D>* own_root = process_rank() == 0 ? &root : nullptr;
+  DistributedIteration in_parts = last_runs_figures(kLastRunsInParts);
+  const auto [parts_run, seams] = last_runs_in_parts(part, whole_result, own_root, whole, start.home, in_parts);
+  if (process_rank() == 0 && on_iteration) on_iteration(in_parts);
+  DistributedIteration last_figures = last_runs_figures(kLastRunsOnRoot);
+  const AdaptationRun last = last_runs_on_root(part, seams, own_root, whole, start.home, false, last_figures);
   end_in_every_part(part, start.home, whole.recipe, end, last_figures);
   if (process_rank() == 0 && on_iteration) on_iteration(last_figures);
-  return joined_runs(whole_result.run, last);
+  return joined_runs(joined_runs(whole_result.run, parts_run), last);
 }
 
 template AdaptationRun adapt_distributed(Mesh<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*, const AdaptationSettings&,

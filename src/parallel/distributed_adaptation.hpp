@@ -24,6 +24,11 @@ namespace hocav {
 // so that the last one's interfaces fall inside parts (docs/distributed.md §The scheme).
 constexpr int kDistributedIterations = 4;
 
+// The report's entries after the whole-mesh iterations (docs/distributed.md §The scheme, step 5): the
+// last runs in the parts, then on rank 0.
+constexpr int kLastRunsInParts = kDistributedIterations + 1;
+constexpr int kLastRunsOnRoot = kDistributedIterations + 2;
+
 // The region of the last runs: the elements within this many rings of the last interfaces' vertices
 // and of the poor elements' (one ring holds every element of a frozen vertex's ball; a second gives
 // the loop room), whose own frozen border lies in the adapted region.

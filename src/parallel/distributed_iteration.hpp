@@ -8,8 +8,8 @@
 
 namespace hocav {
 
-// The whole-mesh iterations are 1 to kDistributedIterations; the entry after them is the last runs
-// on rank 0 (docs/distributed.md §The last runs).
+// The whole-mesh iterations are 1 to kDistributedIterations; the two entries after them are the
+// last runs in the parts and on rank 0 (docs/distributed.md §The scheme, step 5).
 struct DistributedIteration {
   int iteration = 0;                 // 1-based
   double metric_fraction = 1;        // of the way from the input's own metric to the target
@@ -19,9 +19,9 @@ struct DistributedIteration {
   // Before the parts' loops: the interface edges split, and the faces turned into the four triangles
   // of a uniform refinement (docs/distributed.md §Interfaces refined first).
   Index interface_edges_split = 0, interface_faces_turned = 0;
-  Index region_elements = 0;  // the last runs': the elements gathered on rank 0 for them
+  Index region_elements = 0;  // the last runs': the elements near their seeds (that moved to rank 0 for its runs)
   // What the processes sent one another, without the input's broadcast: the migrations (the whole-mesh
-  // iterations; the last runs' region to rank 0, then every element to rank 0).
+  // iterations; the last runs' regions to their processes and to rank 0, then every element to rank 0).
   long long bytes_sent = 0;
   // The shares of the metric's back mesh the processes sent one another for their parts.
   long long back_mesh_bytes = 0;

@@ -14,17 +14,6 @@
 namespace hocav {
 namespace {
 
-// Numbers the part's new vertices (global id kNoIndex) from next_global_id, process after process.
-template <int D>
-void number_new_vertices(MeshPart<D>& part, Index& next_global_id) {
-  const auto fresh = static_cast<Index>(std::count(part.global_ids.begin(), part.global_ids.end(), kNoIndex));
-  const std::vector<Index> counts = all_gather_value(fresh);
-  Index id = next_global_id + std::accumulate(counts.begin(), counts.begin() + process_rank(), Index{0});
-  for (Index& global : part.global_ids)
-    if (global == kNoIndex) global = id++;
-  next_global_id += std::accumulate(counts.begin(), counts.end(), Index{0});
-}
-
 // The global ids of the flagged vertices.
 template <int D>
 std::vector<Index> global_ids_of(const MeshPart<D>& part, const std::vector<char>& flagged) {
@@ -54,9 +43,17 @@ std::vector<std::vector<std::byte>> gathered_on_root(std::vector<std::byte> byte
   return incoming;
 }
 
-// The whole mesh's figures from the parts: vertices (those on interfaces once), elements, interfaces.
+}  // namespace
+
+AdaptationRun runs_combined_on_root(const AdaptationRun& run) {
+  std::vector<AdaptationRun> unpacked;
+  for (const std::vector<std::byte>& bytes : gathered_on_root(pack_run(run))) unpacked.push_back(unpack_run(bytes));
+  return process_rank() == 0 ? combined(unpacked) : AdaptationRun{};
+}
+
 template <int D>
-void count_parts(const MeshPart<D>& part, const std::vector<Index>& shared, DistributedIteration& figures) {
+void count_whole_mesh(const MeshPart<D>& part, DistributedIteration& figures) {
+  const std::vector<Index> shared = global_ids_of(part, interface_vertex_flags(part.mesh));
   figures.interface_vertices = distinct_count(shared);
   figures.vertices = sum_over_processes(part.mesh.vertex_count() - static_cast<Index>(shared.size())) + figures.interface_vertices;
   figures.elements = sum_over_processes(part.mesh.element_count());
@@ -64,7 +61,15 @@ void count_parts(const MeshPart<D>& part, const std::vector<Index>& shared, Dist
   figures.interface_faces = sum_over_processes(static_cast<Index>(interface_facets)) / 2;
 }
 
-}  // namespace
+template <int D>
+void number_new_vertices(MeshPart<D>& part, Index& next_global_id) {
+  const auto fresh = static_cast<Index>(std::count(part.global_ids.begin(), part.global_ids.end(), kNoIndex));
+  const std::vector<Index> counts = all_gather_value(fresh);
+  Index id = next_global_id + std::accumulate(counts.begin(), counts.begin() + process_rank(), Index{0});
+  for (Index& global : part.global_ids)
+    if (global == kNoIndex) global = id++;
+  next_global_id += std::accumulate(counts.begin(), counts.end(), Index{0});
+}
 
 template <int D>
 PeerIterationResult run_peer_iteration(MeshPart<D>& part, Index& next_global_id, const PeerIteration<D>& iteration,
@@ -75,30 +80,28 @@ PeerIterationResult run_peer_iteration(MeshPart<D>& part, Index& next_global_id,
   figures.interface_faces_turned = refined.faces_turned;
   const auto [run, own] = adapt_part_measured(part, iteration.metric, iteration.geometry, iteration.settings);
   number_new_vertices(part, next_global_id);
-  const std::vector<char> on_interface = interface_vertex_flags(part.mesh);
-  const std::vector<Index> shared = global_ids_of(part, on_interface);
-  count_parts(part, shared, figures);
+  count_whole_mesh(part, figures);
   for (const PartFigures& each : all_gather_value(own)) {
     figures.part_seconds.push_back(each.seconds);
     figures.peak_memory_bytes.push_back(each.peak_memory_bytes);
   }
-  PeerIterationResult result;
-  const std::vector<std::vector<std::byte>> runs = gathered_on_root(pack_run(run));
-  std::vector<AdaptationRun> unpacked;
-  for (const std::vector<std::byte>& bytes : runs) unpacked.push_back(unpack_run(bytes));
-  if (process_rank() == 0) result.run = combined(unpacked);
+  const PeerIterationResult result{runs_combined_on_root(run)};
 
   const auto moving = std::chrono::steady_clock::now();
   long long bytes_sent = 0;
   if (iteration.next_metric)
-    part = repartition(part, expected_element_counts(part.mesh, *iteration.next_metric), on_interface, iteration.partition_seed,
-                       &bytes_sent);
+    part = repartition(part, expected_element_counts(part.mesh, *iteration.next_metric), interface_vertex_flags(part.mesh),
+                       iteration.partition_seed, &bytes_sent);
   figures.bytes_sent += sum_over_processes(bytes_sent);
   figures.seconds_partition += seconds_since(moving);
   figures.seconds += seconds_since(start);
   return result;
 }
 
+template void count_whole_mesh(const MeshPart<2>&, DistributedIteration&);
+template void count_whole_mesh(const MeshPart<3>&, DistributedIteration&);
+template void number_new_vertices(MeshPart<2>&, Index&);
+template void number_new_vertices(MeshPart<3>&, Index&);
 template PeerIterationResult run_peer_iteration(MeshPart<2>&, Index&, const PeerIteration<2>&, DistributedIteration&);
 template PeerIterationResult run_peer_iteration(MeshPart<3>&, Index&, const PeerIteration<3>&, DistributedIteration&);
 

@@ -30,6 +30,20 @@ struct PeerIterationResult {
   AdaptationRun run;  // the parts' runs, combined
 };
 
+// Every process at once: the processes' runs combined (part_adaptation.hpp), on rank 0 (empty
+// elsewhere).
+AdaptationRun runs_combined_on_root(const AdaptationRun& run);
+
+// Every process at once: the whole mesh's figures from the parts in `figures` (its vertices, those on
+// interfaces once, its elements, its interface vertices and faces).
+template <int D>
+void count_whole_mesh(const MeshPart<D>& part, DistributedIteration& figures);
+
+// Every process at once: numbers the part's new vertices (global id kNoIndex) from `next_global_id`,
+// process after process, and advances it past every process's new vertices.
+template <int D>
+void number_new_vertices(MeshPart<D>& part, Index& next_global_id);
+
 // Every process at once: adapts `part` (with global ids and pinned flags, no topology), numbers its
 // new vertices from `next_global_id` (the same on every process, advanced past every process's new
 // vertices), then migrates the elements as `iteration.next_metric` says. On rank 0, `figures` gets

@@ -64,14 +64,15 @@ def report(path):
 def check_iterations(path, processes, cube_steps=True):
     """The report's distributed iterations: one per whole-mesh iteration, each with every rank's time
     and peak memory and its metric's fraction of the way to the target (the first 1/steps; on the
-    test's cube, `cube_steps`, one step or at least three), then the last runs on rank 0
-    (docs/distributed.md §The last runs) with their region; the last whole-mesh iteration's mesh
-    within 20% of the output's size (the parts do the work, the last runs mend)."""
+    test's cube, `cube_steps`, one step or at least three), then the last runs in the parts and on
+    rank 0 (docs/distributed.md §The scheme, step 5), rank 0's region smaller than the parts' (it holds
+    only where their regions meet); the last whole-mesh iteration's mesh within 20% of the output's
+    size (the parts do the work, the last runs mend)."""
     with open(path) as file:
         data = json.load(file)
     entries, output_elements = data["distributed_iterations"], data["output_elements"]
     assert [it["iteration"] for it in entries] == list(range(1, len(entries) + 1)), entries
-    iterations, last_runs = entries[:-1], entries[-1]
+    iterations, in_parts, last_runs = entries[:-2], entries[-2], entries[-1]
     for it in entries:
         assert len(it["part_seconds"]) == processes, it
         assert len(it["peak_memory_bytes"]) == processes, it
@@ -86,20 +87,24 @@ def check_iterations(path, processes, cube_steps=True):
     # first iteration sends the home shares at least.
     assert iterations[0]["back_mesh_bytes"] > 0, iterations[0]
     fractions = [it["metric_fraction"] for it in entries]
-    assert fractions == sorted(fractions) and fractions[-2:] == [1, 1], fractions
+    assert fractions == sorted(fractions) and fractions[-3:] == [1, 1, 1], fractions
     # The gradual metric (docs/distributed.md): 100 times finer than the input takes three steps,
     # about 3 times (h-min 0.03) one.
     fine = fractions[0] < 1
     assert abs(1 / fractions[0] - round(1 / fractions[0])) < 1e-9, fractions
     if cube_steps:
         assert (fractions[0] < 0.34) if fine else (fractions[0] == 1), fractions
-    # The last runs: a region of the mesh to rank 0, then every element; rank 0 ran them.
-    assert 0 < last_runs["region_elements"] < iterations[-1]["elements"], last_runs
-    assert last_runs["bytes_sent"] > 0 and last_runs["part_seconds"][0] > 0, last_runs
+    # The last runs: the region around the interfaces cut among the processes, which ran them;
+    # then what is left where two processes' regions meet to rank 0, which ran its own.
+    assert 0 < in_parts["region_elements"] < iterations[-1]["elements"], in_parts
+    assert in_parts["bytes_sent"] > 0 and sum(in_parts["part_seconds"]) > 0, in_parts
+    assert last_runs["region_elements"] < in_parts["region_elements"], (in_parts, last_runs)
+    assert last_runs["part_seconds"][0] > 0, last_runs
+    assert last_runs["region_elements"] == 0 or last_runs["bytes_sent"] > 0, last_runs
     assert last_runs["elements"] == output_elements, last_runs
     last = iterations[-1]["elements"]
-    print(f"  the last iteration's mesh: {last} elements, the output {output_elements}, the last runs' region "
-          f"{last_runs['region_elements']}")
+    print(f"  the last iteration's mesh: {last} elements, the output {output_elements}, the last runs' regions "
+          f"{in_parts['region_elements']} in the parts, {last_runs['region_elements']} on rank 0")
     assert abs(last - output_elements) <= 0.2 * output_elements, f"last iteration {last} elements, output {output_elements}"
 
 

@@ -1,0 +1,149 @@
+#include "parallel/last_run_region.hpp"
+
+#include <algorithm>
+#include <unordered_map>
+
+#include "mesh/simplex.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/interface_sides.hpp"
+
+namespace hocav {
+namespace {
+
+// One side's view of an interface face: the process that holds it and the process that takes the
+// side's element (-1 before the region is cut).
+template <int D>
+struct RegionSide {
+  FaceKey<D> face;
+  int process;
+  int taker;
+};
+
+constexpr int kNoProcess = -1;
+constexpr int kSeveralProcesses = -2;
+
+// The ids of a part's interface facets.
+template <int D>
+std::vector<Index> interface_facets(const MeshPart<D>& part) {
+  std::vector<Index> facets;
+  for (Index f = 0; f < part.mesh.facet_count(); ++f)
+    if (!part.mesh.facet_removed(f) && part.mesh.facet_ref(f) == kInterfaceRef) facets.push_back(f);
+  return facets;
+}
+
+// A facet's vertices (local ids), sorted.
+template <int D>
+FaceKey<D> local_facet_key(const MeshPart<D>& part, Index f) {
+  FaceKey<D> local;
+  std::copy(part.mesh.facet(f).begin(), part.mesh.facet(f).end(), local.begin());
+  return sorted_key<D>(local);
+}
+
+// Collective: per interface facet (in `facets`' order), the record of its side across, from each
+// side's `taker`.
+template <int D>
+std::vector<RegionSide<D>> across_facets(const MeshPart<D>& part, const std::vector<Index>& facets, const std::vector<int>& taker) {
+  std::vector<RegionSide<D>> own;
+  for (std::size_t i = 0; i < facets.size(); ++i)
+    own.push_back({global_key<D>(part, local_facet_key(part, facets[i])), process_rank(), taker[i]});
+  const auto across = sides_across<D, RegionSide<D>>(own);
+  std::vector<RegionSide<D>> sides;
+  for (const RegionSide<D>& side : own) sides.push_back(across.at(side.face));
+  return sides;
+}
+
+// Per interface vertex the process that takes its elements (kNoProcess for the others): one whose
+// facets all face one process, region_taker of the two; one where more parts meet, its own process.
+template <int D>
+std::vector<int> seed_takers(const MeshPart<D>& part, const std::vector<Index>& facets) {
+  const std::vector<RegionSide<D>> across = across_facets(part, facets, std::vector<int>(facets.size(), kNoProcess));
+  std::vector<int> partner(static_cast<std::size_t>(part.mesh.vertex_count()), kNoProcess);
+  for (std::size_t i = 0; i < facets.size(); ++i)
+    for (Index v : part.mesh.facet(facets[i])) {
+      int& p = partner[static_cast<std::size_t>(v)];
+      p = p == kNoProcess || p == across[i].process ? across[i].process : kSeveralProcesses;
+    }
+  std::vector<int> taker(partner.size(), kNoProcess);
+  for (std::size_t v = 0; v < partner.size(); ++v)
+    if (partner[v] != kNoProcess) taker[v] = partner[v] >= 0 ? region_taker(process_rank(), partner[v]) : process_rank();
+  return taker;
+}
+
+// The smaller of two takers, kNoProcess counting as none.
+int smaller_taker(int a, int b) { return a == kNoProcess ? b : b == kNoProcess ? a : std::min(a, b); }
+
+// Per element, the taker of its nearest seeds within `rings` rings (the smallest of them), or
+// kNoProcess: the rings grow as elements_near's do.
+template <int D>
+std::vector<int> element_takers(const Mesh<D>& mesh, std::vector<int> vertex_taker, int rings) {
+  std::vector<int> taker(static_cast<std::size_t>(mesh.element_count()), kNoProcess);
+  for (int ring = 1; ring <= rings; ++ring) {
+    for (Index k = 0; k < mesh.element_count(); ++k)
+      if (taker[k] == kNoProcess)
+        for (Index v : mesh.element(k)) taker[k] = smaller_taker(taker[k], vertex_taker[v]);
+    std::vector<int> next = vertex_taker;
+    for (Index k = 0; k < mesh.element_count(); ++k)
+      if (taker[k] != kNoProcess)
+        for (Index v : mesh.element(k))
+          if (vertex_taker[v] == kNoProcess) next[v] = smaller_taker(next[v], taker[k]);
+    vertex_taker = std::move(next);
+  }
+  return taker;
+}
+
+// The part's faces between elements of two takers, each by its local vertices; with them the
+// interface facets whose two sides' elements have two takers (collective).
+template <int D>
+std::vector<FaceKey<D>> seam_faces(const MeshPart<D>& part, const std::vector<int>& taker, const std::vector<Index>& facets) {
+  std::unordered_map<FaceKey<D>, int, FaceKeyHash<D>> taker_of_face;  // of the region's faces, by sorted local key
+  std::vector<FaceKey<D>> seams;
+  for (Index k = 0; k < part.mesh.element_count(); ++k) {
+    if (taker[k] == kNoProcess) continue;
+    for (int face = 0; face <= D; ++face) {
+      FaceKey<D> key;
+      for (int i = 0; i < D; ++i) key[i] = part.mesh.element(k)[face_vertices<D>(face)[i]];
+      key = sorted_key<D>(key);
+      const auto [at, added] = taker_of_face.emplace(key, taker[k]);
+      if (!added && at->second != taker[k]) seams.push_back(key);
+    }
+  }
+  std::vector<int> facet_taker;
+  for (Index f : facets) facet_taker.push_back(taker_of_face.at(local_facet_key(part, f)));  // an interface face's element is a seed's
+  const std::vector<RegionSide<D>> across = across_facets(part, facets, facet_taker);
+  for (std::size_t i = 0; i < facets.size(); ++i)
+    if (across[i].taker != facet_taker[i]) std::copy_n(part.mesh.facet(facets[i]).begin(), D, seams.emplace_back().begin());
+  return seams;
+}
+
+void unique_sorted(std::vector<Index>& ids) {
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+}
+
+}  // namespace
+
+template <int D>
+RegionCut cut_last_run_region(const MeshPart<D>& part, int rings) {
+  const std::vector<Index> facets = interface_facets(part);
+  const std::vector<int> seed_taker = seed_takers(part, facets);
+  const std::vector<int> taker = element_takers(part.mesh, seed_taker, rings);
+  RegionCut cut;
+  cut.seeds_to.resize(static_cast<std::size_t>(process_count()));
+  for (Index k = 0; k < part.mesh.element_count(); ++k) {
+    cut.destination.push_back(taker[k] == kNoProcess ? process_rank() : taker[k]);
+    if (taker[k] == kNoProcess) continue;
+    ++cut.region_elements;
+    for (Index v : part.mesh.element(k))
+      if (seed_taker[v] != kNoProcess) cut.seeds_to[static_cast<std::size_t>(taker[k])].push_back(part.global_ids[v]);
+  }
+  for (const FaceKey<D>& face : seam_faces(part, taker, facets))
+    for (Index v : face) cut.seams.push_back(part.global_ids[v]);
+  for (std::vector<Index>& ids : cut.seeds_to) unique_sorted(ids);
+  unique_sorted(cut.seams);
+  return cut;
+}
+
+template RegionCut cut_last_run_region(const MeshPart<2>&, int);
+template RegionCut cut_last_run_region(const MeshPart<3>&, int);
+
+}  // namespace hocav
