@@ -83,10 +83,10 @@ void partition_first(MeshPart<D>& part, std::span<const double> loads, std::int6
   figures.seconds += seconds_since(start);
 }
 
-// Per vertex of a part, `seeds` with those of its elements of quality below kPoorQuality in `metric`
-// flagged too.
+// Per vertex of a part: on an element of quality below kPoorQuality in `metric`.
 template <int D>
-std::vector<char> with_poor_elements(const Mesh<D>& mesh, const AdaptationMetric<D>& metric, std::vector<char> seeds) {
+std::vector<char> poor_element_vertices(const Mesh<D>& mesh, const AdaptationMetric<D>& metric) {
+  std::vector<char> seeds(static_cast<std::size_t>(mesh.vertex_count()), 0);
   const std::vector<SymMat<D>> at = metrics_at_vertices(mesh, metric, 1);
   for (Index k = 0; k < mesh.element_count(); ++k) {
     const auto& element = mesh.element(k);
@@ -164,7 +164,7 @@ std::vector<char> flags_of_global_ids(const MeshPart<D>& part, const std::vector
 }
 
 // The last runs, serial on a part that holds a region of the last runs (docs/distributed.md §The
-// last runs). The first tries first the seeds' neighbours, the second what the first left (its poor
+// scheme, step 5). The first tries first the seeds' neighbours, the second what the first left (its poor
 // elements and edges outside the unit window) with its window open again: a run that closed its
 // window early cannot collapse what it made later. The part's border with the others' parts stays
 // frozen. Their passes, in order; the second's flags.
@@ -203,6 +203,22 @@ struct RootSeeds {
   Index next_global_id = 0;
 };
 
+// Collective: per vertex of `part`, whether a process names it as a seed of the last runs on rank 0:
+// its `seams`' vertices (global ids) and its poor elements' in `metric`. Every process learns every
+// seed: a poor element's neighbours across a part's border are another process's.
+template <int D>
+std::vector<char> root_seeds(const MeshPart<D>& part, std::vector<Index> seams, const AdaptationMetric<D>& metric) {
+  const std::vector<char> poor = poor_element_vertices(part.mesh, metric);
+  for (Index v = 0; v < part.mesh.vertex_count(); ++v)
+    if (poor[v]) seams.push_back(part.global_ids[v]);
+  std::vector<Index> seeds;
+  for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(seams))) {
+    const std::vector<Index> ids = values_of_bytes<Index>(bytes);
+    seeds.insert(seeds.end(), ids.begin(), ids.end());
+  }
+  return flags_of_global_ids(part, seeds);
+}
+
 // Collective, after the whole-mesh iterations (docs/distributed.md §The scheme, step 5): the elements
 // within kInterfaceBandRings rings of the last interfaces go, interface by interface, to one of its
 // two processes (cut_last_run_region), and every process runs the last serial runs on its part so
@@ -233,17 +249,7 @@ std::pair<AdaptationRun, RootSeeds> last_runs_in_parts(MeshPart<D>& part, const 
   RootSeeds next{{}, whole.next_global_id};
   number_new_vertices(part, next.next_global_id);
   count_whole_mesh(part, figures);
-  // Every process learns every seed: a poor element's neighbours across a border are another's.
-  std::vector<Index> own_seeds = cut.seams;
-  const std::vector<char> poor = with_poor_elements(part.mesh, metric, std::vector<char>(part.global_ids.size(), 0));
-  for (Index v = 0; v < part.mesh.vertex_count(); ++v)
-    if (poor[v]) own_seeds.push_back(part.global_ids[v]);
-  std::vector<Index> seeds;
-  for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(own_seeds))) {
-    const std::vector<Index> ids = values_of_bytes<Index>(bytes);
-    seeds.insert(seeds.end(), ids.begin(), ids.end());
-  }
-  next.seeds = flags_of_global_ids(part, seeds);
+  next.seeds = root_seeds(part, cut.seams, metric);
   figures.seconds += seconds_since(start);
   return {runs_combined_on_root(run), std::move(next)};
 }
