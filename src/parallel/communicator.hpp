@@ -113,6 +113,17 @@ std::vector<T> all_gather_value(const T& value) {
   return values;
 }
 
+// Every process's `values` put end to end in rank order, on every process.
+template <typename T>
+std::vector<T> all_gather_values_joined(const std::vector<T>& values) {
+  std::vector<T> joined;
+  for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(values))) {
+    const std::vector<T> from = values_of_bytes<T>(bytes);
+    joined.insert(joined.end(), from.begin(), from.end());
+  }
+  return joined;
+}
+
 // The number of entities the processes before this one count, and the sum over all, of every
 // process's `count`.
 struct CountOffset {

@@ -12,6 +12,9 @@ double sum_of(std::span<const double> loads) {
   return total;
 }
 
+// The smaller of two labels, kNoLabel counting as none.
+int smaller_label(int a, int b) { return a == kNoLabel ? b : b == kNoLabel ? a : std::min(a, b); }
+
 }  // namespace
 
 std::vector<std::int64_t> integer_loads(std::span<const double> loads, double total) {
@@ -72,21 +75,37 @@ WeightedGraph member_graph(const Mesh<D>& mesh, std::span<const char> members, s
 
 template <int D>
 std::vector<char> elements_near(const Mesh<D>& mesh, std::vector<char> marked, int rings) {
-  std::vector<char> near(static_cast<std::size_t>(mesh.element_count()), 0);
+  std::vector<int> labels(marked.size(), kNoLabel);
+  for (std::size_t v = 0; v < marked.size(); ++v)
+    if (marked[v]) labels[v] = 0;
+  std::vector<char> near;
+  for (int label : nearest_labels(mesh, std::move(labels), rings)) near.push_back(label != kNoLabel);
+  return near;
+}
+
+template <int D>
+std::vector<int> nearest_labels(const Mesh<D>& mesh, std::vector<int> labels, int rings) {
+  std::vector<int> nearest(static_cast<std::size_t>(mesh.element_count()), kNoLabel);
   for (int ring = 1; ring <= rings; ++ring) {
     for (Index k = 0; k < mesh.element_count(); ++k)
-      for (Index v : mesh.element(k)) near[k] = near[k] || marked[v];
+      if (nearest[k] == kNoLabel)
+        for (Index v : mesh.element(k)) nearest[k] = smaller_label(nearest[k], labels[v]);
+    std::vector<int> grown = labels;  // (this ring's elements label the next ring's vertices)
     for (Index k = 0; k < mesh.element_count(); ++k)
-      if (near[k])
-        for (Index v : mesh.element(k)) marked[v] = 1;
+      if (nearest[k] != kNoLabel)
+        for (Index v : mesh.element(k))
+          if (labels[v] == kNoLabel) grown[v] = smaller_label(grown[v], nearest[k]);
+    labels = std::move(grown);
   }
-  return near;
+  return nearest;
 }
 
 template WeightedGraph member_graph(const Mesh<2>&, std::span<const char>, std::span<const double>, std::vector<Index>&);
 template WeightedGraph member_graph(const Mesh<3>&, std::span<const char>, std::span<const double>, std::vector<Index>&);
 template std::vector<char> elements_near(const Mesh<2>&, std::vector<char>, int);
 template std::vector<char> elements_near(const Mesh<3>&, std::vector<char>, int);
+template std::vector<int> nearest_labels(const Mesh<2>&, std::vector<int>, int);
+template std::vector<int> nearest_labels(const Mesh<3>&, std::vector<int>, int);
 template WeightedGraph element_graph(const Mesh<2>&, std::span<const double>, std::span<const char>);
 template WeightedGraph element_graph(const Mesh<3>&, std::span<const double>, std::span<const char>);
 

@@ -50,6 +50,13 @@ WeightedGraph member_graph(const Mesh<D>& mesh, std::span<const char> members, s
 template <int D>
 std::vector<char> elements_near(const Mesh<D>& mesh, std::vector<char> marked, int rings);
 
+// Per element, the label of its nearest labelled vertices within `rings` rings (the smallest when
+// several are as near), or kNoLabel beyond them; `labels` per vertex, kNoLabel for none, the others
+// non-negative. The elements so labelled are elements_near's.
+constexpr int kNoLabel = -1;
+template <int D>
+std::vector<int> nearest_labels(const Mesh<D>& mesh, std::vector<int> labels, int rings);
+
 // Scotch's partition of `graph` into `part_count` parts of balanced vertex weight and small cut
 // weight; the part of each vertex. The same graph and seed give the same parts; seed 0 is Scotch's
 // own fixed seed, and another seed makes another partition as good (bench/distributed_draws.py

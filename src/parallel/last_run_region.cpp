@@ -5,6 +5,7 @@
 
 #include "mesh/simplex.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/element_partition.hpp"
 #include "parallel/interface_sides.hpp"
 
 namespace hocav {
@@ -19,17 +20,8 @@ struct RegionSide {
   int taker;
 };
 
-constexpr int kNoProcess = -1;
+constexpr int kNoProcess = kNoLabel;
 constexpr int kSeveralProcesses = -2;
-
-// The ids of a part's interface facets.
-template <int D>
-std::vector<Index> interface_facets(const MeshPart<D>& part) {
-  std::vector<Index> facets;
-  for (Index f = 0; f < part.mesh.facet_count(); ++f)
-    if (!part.mesh.facet_removed(f) && part.mesh.facet_ref(f) == kInterfaceRef) facets.push_back(f);
-  return facets;
-}
 
 // A facet's vertices (local ids), sorted.
 template <int D>
@@ -69,28 +61,6 @@ std::vector<int> seed_takers(const MeshPart<D>& part, const std::vector<Index>& 
   return taker;
 }
 
-// The smaller of two takers, kNoProcess counting as none.
-int smaller_taker(int a, int b) { return a == kNoProcess ? b : b == kNoProcess ? a : std::min(a, b); }
-
-// Per element, the taker of its nearest seeds within `rings` rings (the smallest of them), or
-// kNoProcess: the rings grow as elements_near's do.
-template <int D>
-std::vector<int> element_takers(const Mesh<D>& mesh, std::vector<int> vertex_taker, int rings) {
-  std::vector<int> taker(static_cast<std::size_t>(mesh.element_count()), kNoProcess);
-  for (int ring = 1; ring <= rings; ++ring) {
-    for (Index k = 0; k < mesh.element_count(); ++k)
-      if (taker[k] == kNoProcess)
-        for (Index v : mesh.element(k)) taker[k] = smaller_taker(taker[k], vertex_taker[v]);
-    std::vector<int> next = vertex_taker;
-    for (Index k = 0; k < mesh.element_count(); ++k)
-      if (taker[k] != kNoProcess)
-        for (Index v : mesh.element(k))
-          if (vertex_taker[v] == kNoProcess) next[v] = smaller_taker(next[v], taker[k]);
-    vertex_taker = std::move(next);
-  }
-  return taker;
-}
-
 // The part's faces between elements of two takers, each by its local vertices; with them the
 // interface facets whose two sides' elements have two takers (collective).
 template <int D>
@@ -124,9 +94,9 @@ void unique_sorted(std::vector<Index>& ids) {
 
 template <int D>
 RegionCut cut_last_run_region(const MeshPart<D>& part, int rings) {
-  const std::vector<Index> facets = interface_facets(part);
+  const std::vector<Index> facets = interface_facets(part.mesh);
   const std::vector<int> seed_taker = seed_takers(part, facets);
-  const std::vector<int> taker = element_takers(part.mesh, seed_taker, rings);
+  const std::vector<int> taker = nearest_labels(part.mesh, seed_taker, rings);
   RegionCut cut;
   cut.seeds_to.resize(static_cast<std::size_t>(process_count()));
   for (Index k = 0; k < part.mesh.element_count(); ++k) {

@@ -44,12 +44,7 @@ std::vector<Index> line_ids_among(const MeshPart<D>& part, std::vector<KnownLine
 
 template <int D>
 std::vector<Index> line_ids_by_ends(const MeshPart<D>& part, const std::vector<KnownLine>& known) {
-  std::vector<KnownLine> every;
-  for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(known))) {
-    const std::vector<KnownLine> from = values_of_bytes<KnownLine>(bytes);
-    every.insert(every.end(), from.begin(), from.end());
-  }
-  return line_ids_among(part, std::move(every));
+  return line_ids_among(part, all_gather_values_joined(known));
 }
 
 template std::vector<KnownLine> known_lines(const MeshPart<2>&, const std::vector<Index>&);

@@ -177,20 +177,26 @@ Index interface_facet_count(const Mesh<D>& part_mesh) {
 }
 
 template <int D>
+std::vector<Index> interface_facets(const Mesh<D>& mesh) {
+  std::vector<Index> facets;
+  for (Index f = 0; f < mesh.facet_count(); ++f)
+    if (!mesh.facet_removed(f) && mesh.facet_ref(f) == kInterfaceRef) facets.push_back(f);
+  return facets;
+}
+
+template <int D>
 std::vector<char> interface_vertex_flags(const Mesh<D>& mesh) {
   std::vector<char> on(static_cast<std::size_t>(mesh.vertex_count()), 0);
-  for (Index f = 0; f < mesh.facet_count(); ++f)
-    if (!mesh.facet_removed(f) && mesh.facet_ref(f) == kInterfaceRef)
-      for (Index v : mesh.facet(f)) on[v] = 1;
+  for (Index f : interface_facets(mesh))
+    for (Index v : mesh.facet(f)) on[v] = 1;
   return on;
 }
 
 template <int D>
 std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<D>& mesh) {
   std::unordered_set<std::uint64_t> edges;
-  for (Index f = 0; f < mesh.facet_count(); ++f)
-    if (!mesh.facet_removed(f) && mesh.facet_ref(f) == kInterfaceRef)
-      for (int i = 0; i < (D == 3 ? 3 : 1); ++i) edges.insert(Mesh<D>::edge_key(mesh.facet(f)[i], mesh.facet(f)[(i + 1) % D]));
+  for (Index f : interface_facets(mesh))
+    for (int i = 0; i < (D == 3 ? 3 : 1); ++i) edges.insert(Mesh<D>::edge_key(mesh.facet(f)[i], mesh.facet(f)[(i + 1) % D]));
   return edges;
 }
 
@@ -226,6 +232,8 @@ void write_back_nodes(Mesh<D>& mesh, std::span<const EdgeNodeRecord<D>> nodes, s
   }
 }
 
+template std::vector<Index> interface_facets(const Mesh<2>&);
+template std::vector<Index> interface_facets(const Mesh<3>&);
 template std::vector<char> interface_vertex_flags(const Mesh<2>&);
 template std::vector<char> interface_vertex_flags(const Mesh<3>&);
 template std::unordered_map<Index, Index> local_ids_of(const MeshPart<2>&);

@@ -57,6 +57,10 @@ void split_mesh_part_by_part(const Mesh<D>& mesh, std::span<const int> part_of, 
 // then its own, so that it holds its own only once the others are gone.
 std::vector<int> own_part_last(int count);
 
+// The ids of a part's interface facets (ref kInterfaceRef), ascending.
+template <int D>
+std::vector<Index> interface_facets(const Mesh<D>& mesh);
+
 // Per vertex of a part's mesh: on one of its interface facets.
 template <int D>
 std::vector<char> interface_vertex_flags(const Mesh<D>& mesh);

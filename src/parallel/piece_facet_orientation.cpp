@@ -57,11 +57,7 @@ void turn_baffles(MeshPart<D>& piece, const std::vector<Index>& baffles, std::sp
     for (Index& v : record.vertices) v = piece.global_ids[v];
     own.push_back(record);
   }
-  std::vector<BaffleRecord<D>> all;
-  for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(own))) {
-    const std::vector<BaffleRecord<D>> theirs = values_of_bytes<BaffleRecord<D>>(bytes);
-    all.insert(all.end(), theirs.begin(), theirs.end());
-  }
+  std::vector<BaffleRecord<D>> all = all_gather_values_joined(own);
   if (all.empty()) return;
   std::sort(all.begin(), all.end(), [](const BaffleRecord<D>& a, const BaffleRecord<D>& b) { return a.id < b.id; });
   std::vector<typename Mesh<D>::Facet> vertices;

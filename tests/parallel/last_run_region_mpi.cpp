@@ -93,10 +93,8 @@ std::vector<FaceKey<D>> split_faces(const MeshPart<D>& part, const std::vector<i
 }
 
 std::unordered_set<Index> gathered(const std::vector<Index>& ids) {
-  std::unordered_set<Index> all;
-  for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(ids)))
-    for (Index id : values_of_bytes<Index>(bytes)) all.insert(id);
-  return all;
+  const std::vector<Index> all = all_gather_values_joined(ids);
+  return {all.begin(), all.end()};
 }
 
 template <int D>
