@@ -196,27 +196,23 @@ struct RootRuns {
   const AdaptationSettings& settings;
 };
 
-// What the last runs in the parts leave for those on rank 0: per vertex of a part, whether it is a
-// seam's (a face between two processes' regions) or a poor element's, and the next global id.
+// What the last runs in the parts leave for those on rank 0: the global ids of the seams' vertices
+// (of faces between two processes' regions) and of the poor elements', every process's, and the
+// next global id.
 struct RootSeeds {
-  std::vector<char> seeds;
+  std::vector<Index> ids;
   Index next_global_id = 0;
 };
 
-// Collective: per vertex of `part`, whether a process names it as a seed of the last runs on rank 0:
-// its `seams`' vertices (global ids) and its poor elements' in `metric`. Every process learns every
-// seed: a poor element's neighbours across a part's border are another process's.
+// Collective: the global ids that the processes name as seeds of the last runs on rank 0, their
+// `seams`' and their poor elements' in `metric`, every process's on every process: a poor element's
+// neighbours across a part's border are another process's.
 template <int D>
-std::vector<char> root_seeds(const MeshPart<D>& part, std::vector<Index> seams, const AdaptationMetric<D>& metric) {
+std::vector<Index> root_seeds(const MeshPart<D>& part, std::vector<Index> seams, const AdaptationMetric<D>& metric) {
   const std::vector<char> poor = poor_element_vertices(part.mesh, metric);
   for (Index v = 0; v < part.mesh.vertex_count(); ++v)
     if (poor[v]) seams.push_back(part.global_ids[v]);
-  std::vector<Index> seeds;
-  for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(seams))) {
-    const std::vector<Index> ids = values_of_bytes<Index>(bytes);
-    seeds.insert(seeds.end(), ids.begin(), ids.end());
-  }
-  return flags_of_global_ids(part, seeds);
+  return all_gather_values_joined(seams);
 }
 
 // Collective, after the whole-mesh iterations (docs/distributed.md §The scheme, step 5): the elements
@@ -249,39 +245,37 @@ std::pair<AdaptationRun, RootSeeds> last_runs_in_parts(MeshPart<D>& part, const 
   RootSeeds next{{}, whole.next_global_id};
   number_new_vertices(part, next.next_global_id);
   count_whole_mesh(part, figures);
-  next.seeds = root_seeds(part, cut.seams, metric);
+  next.ids = root_seeds(part, cut.seams, metric);
   figures.seconds += seconds_since(start);
   return {runs_combined_on_root(run), std::move(next)};
 }
 
 // Collective, after the last runs in the parts (docs/distributed.md §The scheme, step 5): the elements
 // within kInterfaceBandRings rings of the seams (`seeds`) go to rank 0 (the others stay), rank 0
-// runs the last serial runs there, then, when `gather`, every element goes to rank 0. Returns rank
-// 0's runs; their figures in rank 0's `figures`.
+// runs the last serial runs there (none when no element is near a seed), then, when `gather`, every
+// element goes to rank 0. Returns rank 0's runs; their figures in rank 0's `figures`.
 template <int D>
 AdaptationRun last_runs_on_root(MeshPart<D>& part, const RootSeeds& seeds, const RootRuns<D>* root,
                                 const WholeMeshIterations<D>& iterations, const BackMeshShare<D>& home, bool gather,
                                 DistributedIteration& figures) {
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<char> near = elements_near(part.mesh, seeds.seeds, kInterfaceBandRings);
+  const std::vector<char> near = elements_near(part.mesh, flags_of_global_ids(part, seeds.ids), kInterfaceBandRings);
   std::vector<int> destination(near.size(), process_rank());
   for (std::size_t k = 0; k < near.size(); ++k)
     if (near[k]) destination[k] = 0;
   figures.region_elements = sum_over_processes(static_cast<Index>(std::count(near.begin(), near.end(), 1)));
-  std::vector<std::vector<Index>> seed_ids(static_cast<std::size_t>(process_count()));
-  for (Index v = 0; v < part.mesh.vertex_count(); ++v)
-    if (seeds.seeds[v]) seed_ids[0].push_back(part.global_ids[v]);
-  const std::vector<Index> ids = exchange_values_joined(seed_ids);
+  // (Without a region, rank 0's part had its last runs in the parts' already.)
+  const bool runs = root && figures.region_elements > 0;
   long long bytes_sent = 0;
   part = migrate_part(part, destination, &bytes_sent);
   std::unique_ptr<ShareMetric<D>> region_metric;  // rank 0's, in a run from pieces
-  if (iterations.shares_only) region_metric = gathered_metric(home, iterations.recipe, root ? part.mesh : Mesh<D>{}, figures);
+  if (iterations.shares_only) region_metric = gathered_metric(home, iterations.recipe, runs ? part.mesh : Mesh<D>{}, figures);
   AdaptationRun run;
   PartFigures own{0, peak_resident_bytes()};
-  if (root) {
+  if (runs) {
     const auto runs_start = std::chrono::steady_clock::now();
     const AdaptationMetric<D> metric = region_metric ? region_metric->partway(1) : *root->metric;
-    run = last_serial_runs(part, metric, root->geometry, root->settings, flags_of_global_ids(part, ids));
+    run = last_serial_runs(part, metric, root->geometry, root->settings, flags_of_global_ids(part, seeds.ids));
     own = {seconds_since(runs_start), peak_resident_bytes()};
     Index next_global_id = seeds.next_global_id;
     for (Index& global : part.global_ids)
@@ -316,8 +310,10 @@ void end_in_every_part(MeshPart<D>& part, const BackMeshShare<D>& home, const Me
   figures.elements = written.elements;
 }
 
-// The whole-mesh iterations' runs, then the last runs'.
+// The whole-mesh iterations' runs, then the last runs' (whose flags are the joined run's, unless
+// they made no pass: rank 0 without a region).
 AdaptationRun joined_runs(AdaptationRun run, const AdaptationRun& last) {
+  if (last.passes.empty()) return run;
   run.passes.insert(run.passes.end(), last.passes.begin(), last.passes.end());
   run.converged = last.converged;
   run.stopped_with_window_open = last.stopped_with_window_open;
