@@ -57,8 +57,16 @@ bool flat(const AdaptationPass& before, const AdaptationPass& last) {
   return std::abs(static_cast<double>(last.vertices - before.vertices)) < kPingPongShare * static_cast<double>(changes(last));
 }
 
+// Whether a pass left as many vertices and elements as the pass two before: a few splits undone by
+// collapses every other pass (a part's last run on the linear-metric cube: 5 splits of face diagonals
+// exactly √2 long, their halves collapsed back, 36 passes to the cap), too few for `flat`.
+bool back_where_it_was(const AdaptationPass& two_before, const AdaptationPass& last) {
+  return changes(last) > 0 && last.vertices == two_before.vertices && last.elements == two_before.elements;
+}
+
 bool ping_pong(const std::vector<AdaptationPass>& passes) {
   const std::size_t n = passes.size();
+  if (n > 2 && back_where_it_was(passes[n - 3], passes[n - 1])) return true;
   const auto changed = static_cast<double>(changes(passes[n - 1]));
   if (changed > kPingPongFall * static_cast<double>(changes(passes[n - 2])) && flat(passes[n - 2], passes[n - 1])) return true;
   if (n <= kFlatPasses) return false;
