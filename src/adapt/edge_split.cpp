@@ -19,6 +19,9 @@ namespace {
 // (SplitsAtRequiredVertices::kNextToFineRequiredFacets): toward a frozen surface coarser than the
 // metric the splits would not end (docs/distributed.md).
 constexpr double kCoarseRequiredEdge = 2;
+// A boundary split's point within this share of the edge's length from its middle is taken for the
+// middle: the boundary is flat there.
+constexpr double kStraightTolerance = 1e-9;
 // The share of the long edges longer than 2 above which a pass splits only those.
 constexpr double kCoarsePhaseShare = 0.1;
 // With more than one thread, the candidates previewed at once (docs/adaptation.md §Threads): small
@@ -294,9 +297,10 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const SplitPreview<D
 }
 
 // Per vertex, as `splits` bars edges at it: kBarredEnd for a required vertex (kNextToFineRequiredFacets:
-// one on a facet that is not required, the domain's boundary, or on a required facet's edge longer
-// than 2), kRequiredEnd for another required vertex (an edge between two is barred), 0 otherwise.
-constexpr char kRequiredEnd = 1, kBarredEnd = 2;
+// one on a required facet's edge longer than 2), kBoundaryEnd for a required vertex on the domain's
+// boundary (a facet that is not required), kRequiredEnd for another required vertex (an edge between
+// two is barred), 0 otherwise.
+constexpr char kRequiredEnd = 1, kBoundaryEnd = 2, kBarredEnd = 3;
 template <int D>
 std::vector<char> barred_split_ends(const AdaptationMesh<D>& am, SplitsAtRequiredVertices splits) {
   const Mesh<D>& mesh = am.mesh();
@@ -310,12 +314,20 @@ std::vector<char> barred_split_ends(const AdaptationMesh<D>& am, SplitsAtRequire
     const auto& facet = mesh.facet(f);
     for (int i = 0; i < D; ++i) {
       const Index a = facet[i], b = facet[(i + 1) % D];
-      if (!required_facet[f] || am.edge_length(a, b) > kCoarseRequiredEdge)
-        for (Index v : {a, b})
-          if (ends[v] != 0) ends[v] = kBarredEnd;
+      const char end = !required_facet[f] ? kBoundaryEnd : am.edge_length(a, b) > kCoarseRequiredEdge ? kBarredEnd : kRequiredEnd;
+      for (Index v : {a, b})
+        if (ends[v] != 0) ends[v] = std::max(ends[v], end);
     }
   }
   return ends;
+}
+
+// Whether the split of boundary edge (a, b) puts its point at the edge's straight middle: the
+// boundary there is flat.
+template <int D>
+bool splits_flat_boundary(const Mesh<D>& mesh, Index a, Index b, const SplitPreview<D>& p) {
+  const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
+  return p.surfaces.boundary && norm(p.point - middle) <= kStraightTolerance * norm(mesh.vertex(b) - mesh.vertex(a));
 }
 
 }  // namespace
@@ -329,6 +341,10 @@ SplitSweep split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limit
   // split triangle makes 4 and not 8 children, it lowered the annulus's mean quality.)
   SplitSweep sweep;
   OperationCount& count = sweep.count;
+  // At a required vertex on the domain's boundary, only boundary edges where it is flat: on a
+  // curved wall the points put on the geometry beside the frozen edges there made creases, and the
+  // inner edges' splits left vertices off the geometry (docs/distributed.md §Interfaces refined first).
+  std::vector<char> flat_boundary_only;
   // (Before the coarse phase is judged: a distributed part's frozen interface edges, long and many
   // next to a coarse interface, would keep it in its coarse phase.)
   if (limits.splits_at_required_vertices != SplitsAtRequiredVertices::kEvery) {
@@ -338,6 +354,9 @@ SplitSweep split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limit
       if (barred_edge) count.add(Refusal::kClasses);
       return barred_edge;
     });
+    flat_boundary_only.resize(candidates.size());
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+      flat_boundary_only[i] = barred[candidates[i].a] == kBoundaryEnd || barred[candidates[i].b] == kBoundaryEnd;
   }
   const auto beyond_two = std::partition_point(candidates.begin(), candidates.end(), [](const EdgeCandidate& c) { return c.length > 2; });
   sweep.coarse_phase = D == 3 &&
@@ -360,6 +379,10 @@ SplitSweep split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limit
       if (chunk_size > 1 && (!previews[i].current(am.mesh()) || !same_boundary(am, c.a, c.b, previews[i], fresh)))
         preview_split(am, c.a, c.b, limits, SplitPurpose::kLength, previews[i], scratch.front());
       if (!previews[i].made || am.edge_length(c.a, c.b) <= limits.split_length) continue;  // gone, or no longer long
+      if (!flat_boundary_only.empty() && flat_boundary_only[start + i] && !splits_flat_boundary(am.mesh(), c.a, c.b, previews[i])) {
+        count.add(Refusal::kClasses);
+        continue;
+      }
       count.add(split_edge(am, c.a, c.b, previews[i], limits, SplitPurpose::kLength, scratch.front()));
     }
   }

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -10,6 +11,7 @@
 #include "adapt/adaptation_loop.hpp"
 #include "adapt/vertex_classes.hpp"
 #include "cases/structured.hpp"
+#include "metric/analytic_metric.hpp"
 #include "parallel/face_key.hpp"
 #include "parallel/mesh_parts.hpp"
 
@@ -98,6 +100,49 @@ TEST(PartAdaptation, FacetsOnAnInterfaceFaceStayLinkedToIt) {
     }
   }
   EXPECT_GT(shared_faces, 0);  // the material facets went with one part, on its interface
+}
+
+// Where an interface meets a flat side of the domain in the metric's fine layer, a part cuts the
+// side's edges at the interface vertices (docs/distributed.md §Interfaces refined first): left
+// long, they kept the splits next to them cutting inner edges ever nearer the side, without end.
+TEST(PartAdaptation, SplitsAFlatSidesEdgesAtItsInterfaceVertices) {
+  Mesh<3> mesh = generate_cube(4);
+  mesh.build_topology();
+  classify_vertices(mesh, 45);
+  std::vector<int> part_of;  // two halves across z = 0.5, the metric's finest plane
+  for (Index k = 0; k < mesh.element_count(); ++k) {
+    double z = 0;
+    for (Index v : mesh.element(k)) z += mesh.vertex(v)[2];
+    part_of.push_back(z < 2 ? 0 : 1);
+  }
+  AnalyticMetricSpec spec;
+  spec.name = "linear";  // sizes along z from 0.02 at z = 0.5; the interface's own edges are not long
+  spec.h_min = 0.02;
+  spec.h_max = 0.5;
+  const AdaptationMetric<3> metric(spec, {});
+  for (MeshPart<3> part : split_mesh(mesh, part_of, 2)) {
+    part.mesh.build_topology();
+    AdaptationSettings settings = part_settings({});
+    settings.threads = 1;
+    adapt_part_measured<3>(part, metric, nullptr, settings);
+    adapt_test::expect_closed_and_consistent(part.mesh);
+    EXPECT_TRUE(adapt_test::every_element_positive(part.mesh));
+    const std::vector<char> on_interface = interface_vertex_flags(part.mesh);
+    double longest = 0;  // across z, of the sides' edges at an interface vertex
+    Index edges = 0;
+    for (Index f = 0; f < part.mesh.facet_count(); ++f) {
+      if (part.mesh.facet_removed(f) || part.mesh.facet_ref(f) == kInterfaceRef) continue;
+      const auto& facet = part.mesh.facet(f);
+      for (int i = 0; i < 3; ++i) {
+        const Index a = facet[i], b = facet[(i + 1) % 3];
+        if (on_interface[a] == on_interface[b]) continue;
+        longest = std::max(longest, std::abs(part.mesh.vertex(a)[2] - part.mesh.vertex(b)[2]));
+        ++edges;
+      }
+    }
+    EXPECT_GT(edges, 0);
+    EXPECT_LT(longest, 0.1) << "a side's edge at an interface vertex left " << longest << " long across the fine layer (0.25 at the start)";
+  }
 }
 
 }  // namespace
