@@ -344,19 +344,19 @@ SplitSweep split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limit
   // At a required vertex on the domain's boundary, only boundary edges where it is flat: on a
   // curved wall the points put on the geometry beside the frozen edges there made creases, and the
   // inner edges' splits left vertices off the geometry (docs/distributed.md §Interfaces refined first).
-  std::vector<char> flat_boundary_only;
+  std::vector<char> barred;
+  const auto flat_boundary_only = [&](const EdgeCandidate& c) {
+    return !barred.empty() && (barred[c.a] == kBoundaryEnd || barred[c.b] == kBoundaryEnd);
+  };
   // (Before the coarse phase is judged: a distributed part's frozen interface edges, long and many
   // next to a coarse interface, would keep it in its coarse phase.)
   if (limits.splits_at_required_vertices != SplitsAtRequiredVertices::kEvery) {
-    const std::vector<char> barred = barred_split_ends(am, limits.splits_at_required_vertices);
+    barred = barred_split_ends(am, limits.splits_at_required_vertices);
     std::erase_if(candidates, [&](const EdgeCandidate& c) {
       const bool barred_edge = (barred[c.a] && barred[c.b]) || barred[c.a] == kBarredEnd || barred[c.b] == kBarredEnd;
       if (barred_edge) count.add(Refusal::kClasses);
       return barred_edge;
     });
-    flat_boundary_only.resize(candidates.size());
-    for (std::size_t i = 0; i < candidates.size(); ++i)
-      flat_boundary_only[i] = barred[candidates[i].a] == kBoundaryEnd || barred[candidates[i].b] == kBoundaryEnd;
   }
   const auto beyond_two = std::partition_point(candidates.begin(), candidates.end(), [](const EdgeCandidate& c) { return c.length > 2; });
   sweep.coarse_phase = D == 3 &&
@@ -379,7 +379,7 @@ SplitSweep split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limit
       if (chunk_size > 1 && (!previews[i].current(am.mesh()) || !same_boundary(am, c.a, c.b, previews[i], fresh)))
         preview_split(am, c.a, c.b, limits, SplitPurpose::kLength, previews[i], scratch.front());
       if (!previews[i].made || am.edge_length(c.a, c.b) <= limits.split_length) continue;  // gone, or no longer long
-      if (!flat_boundary_only.empty() && flat_boundary_only[start + i] && !splits_flat_boundary(am.mesh(), c.a, c.b, previews[i])) {
+      if (flat_boundary_only(c) && !splits_flat_boundary(am.mesh(), c.a, c.b, previews[i])) {
         count.add(Refusal::kClasses);
         continue;
       }
