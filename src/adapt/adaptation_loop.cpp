@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "adapt/adaptation_mesh.hpp"
 #include "adapt/boundary_settling.hpp"
@@ -57,16 +58,18 @@ bool flat(const AdaptationPass& before, const AdaptationPass& last) {
   return std::abs(static_cast<double>(last.vertices - before.vertices)) < kPingPongShare * static_cast<double>(changes(last));
 }
 
-// Whether a pass left as many vertices and elements as the pass two before: a few splits undone by
-// collapses every other pass (a part's last run on the linear-metric cube: 5 splits of face diagonals
-// exactly √2 long, their halves collapsed back, 36 passes to the cap), too few for `flat`.
-bool back_where_it_was(const AdaptationPass& two_before, const AdaptationPass& last) {
-  return changes(last) > 0 && last.vertices == two_before.vertices && last.elements == two_before.elements;
+// Whether a pass took the vertex and element counts back to those of the pass two before, from
+// others: a few splits undone by collapses every other pass (a part's last run on the linear-metric
+// cube: 5 splits of face diagonals exactly √2 long, their halves collapsed back, 36 passes to the
+// cap), too few for `flat`.
+bool back_where_it_was(const AdaptationPass& two_before, const AdaptationPass& before, const AdaptationPass& last) {
+  const auto counts = [](const AdaptationPass& pass) { return std::pair(pass.vertices, pass.elements); };
+  return counts(last) == counts(two_before) && counts(last) != counts(before);
 }
 
 bool ping_pong(const std::vector<AdaptationPass>& passes) {
   const std::size_t n = passes.size();
-  if (n > 2 && back_where_it_was(passes[n - 3], passes[n - 1])) return true;
+  if (n > 2 && back_where_it_was(passes[n - 3], passes[n - 2], passes[n - 1])) return true;
   const auto changed = static_cast<double>(changes(passes[n - 1]));
   if (changed > kPingPongFall * static_cast<double>(changes(passes[n - 2])) && flat(passes[n - 2], passes[n - 1])) return true;
   if (n <= kFlatPasses) return false;
