@@ -13,12 +13,12 @@
 namespace hocav {
 namespace {
 
-constexpr int kCellsPerSide = 55;  // 6 * 55^3 = 998,250 tetrahedra
+constexpr int kFileCubeCellsPerSide = 55;  // 6 * 55^3 = 998,250 tetrahedra
 
 // Edge nodes moved off their midpoints, so the ASCII reals need their full 17 digits.
 const Mesh<3>& curved_cube() {
   static const Mesh<3> mesh = [] {
-    Mesh<3> cube = generate_cube(kCellsPerSide);
+    Mesh<3> cube = generate_cube(kFileCubeCellsPerSide);
     cube.make_p2();
     for (Index e = 0; e < cube.edge_count(); ++e)
       for (int i = 0; i < 3; ++i) cube.edge_node(e)[i] += 1e-3 * std::sin(1.7 * e + i);

@@ -8,10 +8,10 @@
 namespace hocav {
 namespace {
 
-constexpr int kCellsPerSide = 55;  // 6 * 55^3 = 998,250 tetrahedra
+constexpr int kMeshCubeCellsPerSide = 55;  // 6 * 55^3 = 998,250 tetrahedra
 
 const Mesh<3>& cube() {
-  static const Mesh<3> mesh = generate_cube(kCellsPerSide);
+  static const Mesh<3> mesh = generate_cube(kMeshCubeCellsPerSide);
   return mesh;
 }
 

@@ -49,7 +49,7 @@ constexpr double kPoorQuality = 0.5;
 constexpr double kStraightQualityFloor = 0.1;
 // As the P1 loop (docs/adaptation.md §The loop): a pass that splits and collapses fewer than this
 // share of the vertices ends the loop.
-constexpr double kConvergedChange = 2.5e-3;
+constexpr double kCurvedConvergedChange = 2.5e-3;
 
 struct EdgeToFix {
   double length;
@@ -379,7 +379,8 @@ CurvedAdaptationRun adapt_curved(Mesh<D>& mesh, const MetricField<D>& field, con
     const CurvedPass& last = run.passes.emplace_back(
         run_curved_pass(mesh, field, options, boundary ? &*boundary : nullptr, run.counters, measures, refusals, pool));
     run.seconds += last.seconds;
-    run.converged = static_cast<double>(last.splits.done + last.collapses.done) <= kConvergedChange * static_cast<double>(last.vertices);
+    run.converged = static_cast<double>(last.splits.done + last.collapses.done) <=
+                    kCurvedConvergedChange * static_cast<double>(last.vertices);
   }
   return run;
 }

@@ -25,7 +25,7 @@ constexpr std::size_t kLargestSwappedShell = 6;
 // whatever the mesh's size (a chunk's batches still hold hundreds of cavities each).
 constexpr std::size_t kSweepChunk = 16384;
 // Smaller batches are judged on the calling thread alone.
-constexpr std::size_t kSmallestThreadedBatch = 256;
+constexpr std::size_t kSmallestSwapBatch = 256;
 
 // A swap must beat the worst quality it replaces by this factor: no swap undoes another.
 constexpr double kSwapGain = 1.05;
@@ -279,7 +279,7 @@ void swap_batch(AdaptationMesh<D>& am, std::span<const SwapCandidate<N>> candida
   }
   const std::vector<Index>& judged = round.batch;
   round.chosen.assign(judged.size(), kNoIndex);
-  run_in_blocks(pool, judged.size(), kSmallestThreadedBatch, [&](std::size_t worker, std::size_t i) {
+  run_in_blocks(pool, judged.size(), kSmallestSwapBatch, [&](std::size_t worker, std::size_t i) {
     round.chosen[i] = best_apex(am, round.cavities[static_cast<std::size_t>(judged[i])], round.scratch[worker], limits);
   });
   auto& work = am.workspace();
@@ -311,7 +311,7 @@ void swap_all(AdaptationMesh<D>& am, std::span<const SwapCandidate<N>> candidate
     // Gathering reads the mesh and writes only the candidate's own cavity: on the pool's threads.
     round.gathered.assign(pending.size(), Refusal::kNone);
     round.unchanged.assign(pending.size(), 0);
-    run_in_blocks(pool, pending.size(), kSmallestThreadedBatch, [&](std::size_t, std::size_t i) {
+    run_in_blocks(pool, pending.size(), kSmallestSwapBatch, [&](std::size_t, std::size_t i) {
       const auto item = static_cast<std::size_t>(pending[i]);
       SwapCavity<D>& cavity = round.cavities[item];
       if (!cavity.current(mesh)) round.gathered[i] = gather(mesh, candidates[item], round.line_edges, cavity);

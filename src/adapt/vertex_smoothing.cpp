@@ -24,7 +24,7 @@ namespace {
 // A move must raise the ball's worst quality by this factor (mmg asks 1.02): no move undoes another.
 constexpr double kSmoothingGain = 1.01;
 // Smaller batches are tried on the calling thread alone.
-constexpr std::size_t kSmallestThreadedBatch = 32;
+constexpr std::size_t kSmallestSmoothingBatch = 32;
 
 // The mean over the ball's elements of w + (v − w)/l(v, w) for each other vertex w (a neighbour
 // counts once per element it shares with v), with `lengths` those of v's edges to its neighbours
@@ -237,7 +237,7 @@ std::vector<Index> smooth_round(AdaptationMesh<D>& am, const SmoothingCandidates
   for (const std::vector<Index>& batch : batches.batches()) {
     am.tick();  // a refusal in this batch comes after the moves of the earlier ones
     moved.assign(batch.size(), 0);
-    run_in_blocks(pool, batch.size(), kSmallestThreadedBatch, [&](std::size_t worker, std::size_t n) {
+    run_in_blocks(pool, batch.size(), kSmallestSmoothingBatch, [&](std::size_t worker, std::size_t n) {
       const auto i = static_cast<std::size_t>(batch[n]);
       moved[n] = smooth_vertex(am, candidates.vertices[i], candidates.ball(i), scratch[worker], limits);
     });

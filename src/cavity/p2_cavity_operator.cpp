@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "base/bisection.hpp"
+#include "base/stopwatch.hpp"
 #include "bezier/jacobian_bounds.hpp"
 #include "curve/curved_quality.hpp"
 #include "mesh/ball_and_shell.hpp"
@@ -15,8 +16,6 @@ namespace hocav {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // Sorts the vertices of an element; true when that takes an odd permutation (so two elements with
 // the same sorted vertices and parity are one element, with one orientation).

@@ -78,7 +78,7 @@ void run_bench(const BenchOptions& options) {
   write_bench_markdown(std::cout, machine, rows);
 }
 
-std::string cases_footer() {
+std::string bench_cases_footer() {
   std::string footer = "Cases:\n";
   for (const BenchCase& bench_case : bench_cases()) footer += "  " + bench_case.name + ": " + bench_case.description + "\n";
   return footer;
@@ -103,7 +103,7 @@ void add_bench_command(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--markdown", options->markdown, "also write the table to this file");
   command->add_option("--json", options->json, "write the rows, every run's time and the machine as JSON");
-  command->footer(cases_footer());
+  command->footer(bench_cases_footer());
   command->callback([options] { run_bench(*options); });
 }
 

@@ -29,7 +29,7 @@ std::string format_default(double value) {
 }
 
 // "  annulus       --r-in 0.5  --r-out 1  --h 0.1" for every case, for the help of `generate`.
-std::string cases_footer() {
+std::string generate_cases_footer() {
   std::ostringstream footer;
   footer << "Cases and their options (defaults), see `hocav generate CASE --help`:\n";
   for (const CaseDefinition& definition : case_definitions()) {
@@ -76,7 +76,7 @@ void add_generate_command(CLI::App& app) {
   command->add_option("--cad-out", options->cad_output,
                       "also write the CAD model of the case's curved boundary (.brep, .step) for curve --surface cad:FILE");
   command->require_subcommand(1);
-  command->footer(cases_footer());
+  command->footer(generate_cases_footer());
   for (const CaseDefinition& definition : case_definitions()) {
     auto values = std::make_shared<CaseValues>();
     CLI::App* case_command = command->add_subcommand(definition.name,

@@ -101,7 +101,7 @@ std::string_view unsupported_type_name(std::int64_t gmsh_type) {
 
 // Everything hocav keeps from a .msh file: nodes in file order, and per dimension one list of
 // elements of a single type, with node file ids in hocav's local order and their refs.
-struct ElementList {
+struct MshElementBlock {
   const ElementType* type = nullptr;
   std::vector<Index> nodes;
   std::vector<int> refs;
@@ -109,7 +109,7 @@ struct ElementList {
 
 struct MshContent {
   std::vector<Vec3> nodes;
-  std::array<ElementList, 4> lists;  // by dimension: points, lines, triangles, tetrahedra
+  std::array<MshElementBlock, 4> lists;  // by dimension: points, lines, triangles, tetrahedra
   std::size_t first_nonzero_z_line = 0;
   double first_nonzero_z = 0;
 };
@@ -274,7 +274,7 @@ class MshReader {
                               ") is not supported; hocav reads " + std::string(kSupportedTypes));
       if (type->dimension != entity_dimension)
         in_.fail(section, std::string(type->name) + " elements in a block of dimension " + std::to_string(entity_dimension));
-      ElementList& list = content_.lists[type->dimension];
+      MshElementBlock& list = content_.lists[type->dimension];
       if (list.type != nullptr && list.type != type)
         in_.fail(section, "mixes " + std::string(list.type->name) + " and " + std::string(type->name) +
                               " elements (P1 and P2 elements of one dimension cannot be mixed)");
@@ -328,7 +328,7 @@ int mesh_dimension(const MshContent& content, const std::string& path) {
   return 2;
 }
 
-std::string list_keyword(const ElementList& list) {
+std::string list_keyword(const MshElementBlock& list) {
   return list.type == nullptr ? "$Elements" : "$Elements (" + std::string(list.type->name) + ")";
 }
 
@@ -342,12 +342,12 @@ MeshFileContent assemble(MshContent&& content, const std::string& path) {
     for (const Vec3& node : content.nodes) raw.nodes.push_back({{node[0], node[1]}});
   }
   raw.node_refs.assign(raw.nodes.size(), 0);
-  ElementList &elements = content.lists[D], &facets = content.lists[D - 1], &points = content.lists[0];
+  MshElementBlock &elements = content.lists[D], &facets = content.lists[D - 1], &points = content.lists[0];
   raw.order = elements.type->order;
   raw.element_keyword = list_keyword(elements);
   raw.element_nodes = std::move(elements.nodes);
   raw.element_refs = std::move(elements.refs);
-  auto order_of = [&](const ElementList& list) {
+  auto order_of = [&](const MshElementBlock& list) {
     int order = list.type == nullptr ? 1 : list.type->order;
     if (order > raw.order)
       throw Error(path + ": " + list_keyword(list) + ": P2 elements of lower dimension in a P1 mesh of " +
@@ -359,7 +359,7 @@ MeshFileContent assemble(MshContent&& content, const std::string& path) {
   raw.facet_nodes = std::move(facets.nodes);
   raw.facet_refs = std::move(facets.refs);
   if constexpr (D == 3) {
-    ElementList& lines = content.lists[1];
+    MshElementBlock& lines = content.lists[1];
     raw.line_order = order_of(lines);
     raw.line_keyword = list_keyword(lines);
     raw.line_nodes = std::move(lines.nodes);

@@ -14,7 +14,7 @@ namespace {
 
 // The conjugate gradients stop when the residual falls below this share of the right-hand side.
 constexpr double kRelativeResidual = 1e-10;
-constexpr int kMaxIterations = 20000;
+constexpr int kMaxConjugateGradientSteps = 20000;
 
 // Per vertex, the least over moving fixed vertices s of (path length from s − reach_factor × |move
 // of s|): negative within the reach of some moving vertex (a multi-source Dijkstra from them, along
@@ -132,7 +132,7 @@ int conjugate_gradients(const FreeSystem<D>& system, const std::vector<double>& 
   double rz = dot_product(r, z);
   const double stop = kRelativeResidual * std::sqrt(dot_product(b, b));
   int iteration = 0;
-  while (iteration < kMaxIterations && std::sqrt(dot_product(r, r)) > stop) {
+  while (iteration < kMaxConjugateGradientSteps && std::sqrt(dot_product(r, r)) > stop) {
     ++iteration;
     multiply(system, p, q);
     const double alpha = rz / dot_product(p, q);

@@ -1,7 +1,6 @@
 #include "parallel/adaptation_from_pieces.hpp"
 
 #include <span>
-#include <unordered_set>
 
 #include "adapt/hausdorff_metric.hpp"
 #include "io/node_metrics.hpp"
@@ -10,6 +9,7 @@
 #include "metric/surface_metric.hpp"
 #include "parallel/boundary_of_parts.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/distinct_ids.hpp"
 #include "parallel/distributed_gradation.hpp"
 #include "parallel/gradual_metric.hpp"
 #include "parallel/hessian_metric_runs.hpp"
@@ -52,15 +52,6 @@ BackMeshShare<D> home_of_piece(const MeshPart<D>& piece, const AdaptationMetric<
   home.global_ids = piece.global_ids;
   home.log_metrics = share_log_metrics(metric, input_metric);
   return home;
-}
-
-// Collective: how many distinct vertices `ids` (global ids, a vertex listed by each process that
-// holds it) name over every process.
-Index distinct_count(const std::vector<Index>& ids) {
-  std::vector<std::vector<Index>> outgoing(static_cast<std::size_t>(process_count()));
-  for (Index id : ids) outgoing[static_cast<std::size_t>(id % process_count())].push_back(id);
-  const std::vector<Index> arrived = exchange_values_joined(outgoing);
-  return sum_over_processes(static_cast<Index>(std::unordered_set<Index>(arrived.begin(), arrived.end()).size()));
 }
 
 // Collective: the Hausdorff bound at the piece's vertices, as hausdorff_metrics makes it on the whole

@@ -16,7 +16,7 @@ struct VertexCopy {
 };
 
 // The process where the copies of the vertex with global id `id` meet.
-int meeting_process(Index id) { return static_cast<int>(id % process_count()); }
+int vertex_meeting_process(Index id) { return static_cast<int>(id % process_count()); }
 
 // At a meeting process: per sender, the intersection of every copy of each vertex it sent, the
 // copies taken in rank order.
@@ -39,13 +39,13 @@ bool meet_interface_copies(const MeshPart<D>& piece, const std::vector<Index>& s
   std::vector<std::vector<VertexCopy<D>>> outgoing(static_cast<std::size_t>(process_count()));
   for (Index v : shared) {
     const Index id = piece.global_ids[v];
-    outgoing[static_cast<std::size_t>(meeting_process(id))].push_back({id, metrics[v]});
+    outgoing[static_cast<std::size_t>(vertex_meeting_process(id))].push_back({id, metrics[v]});
   }
   const std::vector<std::vector<SymMat<D>>> answers = exchange_values(met_copies(exchange_values(outgoing)));
   std::vector<std::size_t> next(answers.size(), 0);
   bool changed = false;
   for (Index v : shared) {
-    const auto meeting = static_cast<std::size_t>(meeting_process(piece.global_ids[v]));
+    const auto meeting = static_cast<std::size_t>(vertex_meeting_process(piece.global_ids[v]));
     const SymMat<D>& met = answers[meeting][next[meeting]++];
     changed |= met != metrics[v];
     metrics[v] = met;

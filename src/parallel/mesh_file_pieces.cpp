@@ -20,7 +20,7 @@ namespace {
 
 // A vertex as the process that read it answers for it.
 template <int D>
-struct VertexRecord {
+struct VertexAnswer {
   Vec<D> point;
   std::int32_t ref;
   std::int32_t on_facet;  // a facet of the file uses it
@@ -66,11 +66,11 @@ std::vector<char> facet_vertex_flags(const GammaMeshSlice<D>& slice) {
 
 // The vertices `ids` (sorted file ids), from the processes whose runs hold them.
 template <int D>
-std::vector<VertexRecord<D>> fetched_vertices(const GammaMeshSlice<D>& slice, const std::vector<char>& on_facet,
+std::vector<VertexAnswer<D>> fetched_vertices(const GammaMeshSlice<D>& slice, const std::vector<char>& on_facet,
                                               const std::vector<Index>& ids) {
   std::vector<std::vector<Index>> asked(static_cast<std::size_t>(process_count()));
   for (Index v : ids) asked[slice_holding(v, slice.vertex_count, process_count())].push_back(v);
-  std::vector<std::vector<VertexRecord<D>>> answers;
+  std::vector<std::vector<VertexAnswer<D>>> answers;
   for (const std::vector<Index>& ids_asked : exchange_values(asked)) {
     answers.emplace_back();
     for (Index v : ids_asked) {
@@ -113,10 +113,10 @@ class LocalIds {
 // The run's elements by their vertices' places in `ids`, with their topology: which faces another
 // element of the run has.
 template <int D>
-Mesh<D> run_mesh(const GammaMeshSlice<D>& slice, const std::vector<Index>& ids, const std::vector<VertexRecord<D>>& vertices,
+Mesh<D> run_mesh(const GammaMeshSlice<D>& slice, const std::vector<Index>& ids, const std::vector<VertexAnswer<D>>& vertices,
                  const std::string& path) {
   Mesh<D> mesh;
-  for (const VertexRecord<D>& vertex : vertices) mesh.add_vertex(vertex.point, vertex.ref);
+  for (const VertexAnswer<D>& vertex : vertices) mesh.add_vertex(vertex.point, vertex.ref);
   const LocalIds local_of(ids);
   for (const auto& element : slice.elements) {
     typename Mesh<D>::Element local{};
@@ -133,7 +133,7 @@ Mesh<D> run_mesh(const GammaMeshSlice<D>& slice, const std::vector<Index>& ids, 
 }
 
 template <int D>
-RunFaces<D> run_faces(const GammaMeshSlice<D>& slice, const std::vector<Index>& ids, const std::vector<VertexRecord<D>>& vertices,
+RunFaces<D> run_faces(const GammaMeshSlice<D>& slice, const std::vector<Index>& ids, const std::vector<VertexAnswer<D>>& vertices,
                       const std::string& path) {
   const Mesh<D> mesh = run_mesh(slice, ids, vertices, path);
   RunFaces<D> faces{std::vector<char>(slice.elements.size() * (D + 1), 0), {}, {}};
@@ -263,7 +263,7 @@ void add_run_lines(Shipment<D>& s, const GammaMeshSlice<D>& slice, const SortedT
 
 // The run's own shipment: its elements (moved out of `slice`) with what the part needs around them.
 template <int D>
-Shipment<D> run_shipment(GammaMeshSlice<D>& slice, const std::vector<Index>& ids, const std::vector<VertexRecord<D>>& vertices,
+Shipment<D> run_shipment(GammaMeshSlice<D>& slice, const std::vector<Index>& ids, const std::vector<VertexAnswer<D>>& vertices,
                          const RunFaces<D>& faces, const Met<D>& met) {
   const SortedTags tags(slice);
   Shipment<D> s;
@@ -307,7 +307,7 @@ Shipment<D> own_shipment(GammaMeshSlice<D>& slice, const std::string& path, std:
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   ids.shrink_to_fit();
-  const std::vector<VertexRecord<D>> vertices = fetched_vertices(slice, on_facet, ids);
+  const std::vector<VertexAnswer<D>> vertices = fetched_vertices(slice, on_facet, ids);
   const RunFaces<D> faces = run_faces(slice, ids, vertices, path);
   const Met<D> met = meet(slice, faces, path);
   for (const FacetRecord<D>& facet : met.facets) facet_ids.push_back(facet.id);

@@ -25,7 +25,7 @@ constexpr Index kElementWindow = Index{1} << 16;
 
 // A vertex on its way to the process of its run of global ids.
 template <int D>
-struct VertexRecord {
+struct VertexToRun {
   Index id;
   Vec<D> point;
   int ref;
@@ -181,7 +181,7 @@ class RunsWriter {
     const Index id_space = max_over_processes(
         part_.global_ids.empty() ? Index{0} : *std::max_element(part_.global_ids.begin(), part_.global_ids.end()) + 1);
     const EntityTags<D> tags(mesh_);
-    std::vector<std::vector<VertexRecord<D>>> outgoing(static_cast<std::size_t>(process_count()));
+    std::vector<std::vector<VertexToRun<D>>> outgoing(static_cast<std::size_t>(process_count()));
     std::vector<std::vector<Index>> sent(outgoing.size());  // the part's vertices, as sent to each process
     for (Index v = 0; v < mesh_.vertex_count(); ++v) {
       const auto run = static_cast<std::size_t>(slice_holding(part_.global_ids[v], id_space, process_count()));
@@ -189,17 +189,17 @@ class RunsWriter {
       outgoing[run].push_back({part_.global_ids[v], mesh_.vertex(v), mesh_.vertex_ref(v), flags});
       sent[run].push_back(v);
     }
-    const std::vector<std::vector<VertexRecord<D>>> arrived = exchange_values(outgoing);
-    const ArrivalGroups groups = grouped(arrived, [](const VertexRecord<D>& r) { return r.id; });
+    const std::vector<std::vector<VertexToRun<D>>> arrived = exchange_values(outgoing);
+    const ArrivalGroups groups = grouped(arrived, [](const VertexToRun<D>& r) { return r.id; });
     const CountOffset offset = offset_over_processes(static_cast<Index>(groups.count()));
     counts_.vertices = offset.total;
     first_vertex_ = offset.before;
     std::vector<std::vector<VertexNumber>> answers = answers_for<VertexNumber>(arrived);
     for (std::size_t g = 0; g < groups.count(); ++g) {
       const Arrival first = groups.order[groups.starts[g]];
-      VertexRecord<D> row = arrived[static_cast<std::size_t>(first.from)][first.at];
+      VertexToRun<D> row = arrived[static_cast<std::size_t>(first.from)][first.at];
       for (std::size_t i = groups.starts[g]; i < groups.starts[g + 1]; ++i) {
-        const VertexRecord<D>& other = arrived[static_cast<std::size_t>(groups.order[i].from)][groups.order[i].at];
+        const VertexToRun<D>& other = arrived[static_cast<std::size_t>(groups.order[i].from)][groups.order[i].at];
         if (!(other.point == row.point))
           throw Error(path_ + ": vertex " + std::to_string(row.id + 1) + " has different points in two parts of the distributed mesh");
         row.flags = static_cast<char>(row.flags | other.flags);
@@ -275,9 +275,9 @@ class RunsWriter {
 
   void encode_vertices() {
     vertices_ = corners_ = required_vertices_ = records();
-    for (const VertexRecord<D>& row : vertex_rows_) write_point(vertices_, row.point, row.ref);
+    for (const VertexToRun<D>& row : vertex_rows_) write_point(vertices_, row.point, row.ref);
     Index next = first_vertex_;
-    for (const VertexRecord<D>& row : vertex_rows_) {
+    for (const VertexToRun<D>& row : vertex_rows_) {
       if (row.flags & kCornerFlag) write_id(corners_, next);
       if (row.flags & kRequiredFlag) write_id(required_vertices_, next);
       ++next;
@@ -487,12 +487,12 @@ class RunsWriter {
   std::span<const Index> element_order_, facet_order_, line_order_;
   int version_ = 0;
   MeshFileCounts counts_;
-  std::vector<Index> number_;                 // per part vertex, its file number (from 0)
-  std::vector<char> shared_;                  // per part vertex, whether another part holds it
-  std::vector<Index> node_number_;            // per part edge (P2), its node's file number (from 0)
-  std::vector<VertexRecord<D>> vertex_rows_;  // the vertices this process writes, in order
-  Index first_vertex_ = 0;                    // the file number (from 0) of the first of them
-  std::vector<Vec<D>> shared_nodes_;          // the nodes of shared edges this process writes
+  std::vector<Index> number_;                // per part vertex, its file number (from 0)
+  std::vector<char> shared_;                 // per part vertex, whether another part holds it
+  std::vector<Index> node_number_;           // per part edge (P2), its node's file number (from 0)
+  std::vector<VertexToRun<D>> vertex_rows_;  // the vertices this process writes, in order
+  Index first_vertex_ = 0;                   // the file number (from 0) of the first of them
+  std::vector<Vec<D>> shared_nodes_;         // the nodes of shared edges this process writes
   ChunkRecords vertices_ = records(), nodes_ = records(), lines_ = records(), facets_ = records();
   std::vector<ChunkRecords> element_runs_;  // the elements' records: one run, or one per window of an element order
   ChunkRecords corners_ = records(), ridges_ = records(), required_vertices_ = records(), required_edges_ = records(),

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <numeric>
-#include <unordered_set>
 
 #include "base/stopwatch.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/distinct_ids.hpp"
 #include "parallel/interface_refinement.hpp"
 #include "parallel/part_adaptation.hpp"
 #include "parallel/part_migration.hpp"
@@ -21,17 +21,6 @@ std::vector<Index> global_ids_of(const MeshPart<D>& part, const std::vector<char
   for (Index v = 0; v < part.mesh.vertex_count(); ++v)
     if (flagged[v]) ids.push_back(part.global_ids[v]);
   return ids;
-}
-
-// How many distinct ids all processes' `ids` hold together: each id is counted by the process it
-// hashes to.
-Index distinct_count(const std::vector<Index>& ids) {
-  std::vector<std::vector<Index>> outgoing(static_cast<std::size_t>(process_count()));
-  for (Index id : ids) outgoing[static_cast<std::size_t>(id) % outgoing.size()].push_back(id);
-  std::unordered_set<Index> met;
-  for (const std::vector<std::byte>& message : exchange_bytes(bytes_of_messages(outgoing)))
-    for (Index id : values_of_bytes<Index>(message)) met.insert(id);
-  return sum_over_processes(static_cast<Index>(met.size()));
 }
 
 // Every process's `bytes` to rank 0 (empty elsewhere).

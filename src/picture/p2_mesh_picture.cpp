@@ -21,10 +21,10 @@ SvgCanvas p2_mesh_picture(const Mesh<2>& mesh, std::span<const double> element_v
     elements.push_back(gather_p2_element(mesh, k));
     all_points.insert(all_points.end(), elements.back().nodes.begin(), elements.back().nodes.end());
   }
-  return mesh_figure(bounding_box(all_points), options, [&](SvgCanvas& canvas, const PanelView& view) {
+  return mesh_figure(bounding_rect(all_points), options, [&](SvgCanvas& canvas, const PanelView& view) {
     for (std::size_t k = 0; k < elements.size(); ++k) {
       // The Lagrange nodes' box is close enough to the triangle's for skipping what is far outside.
-      if (!view.visible.intersects(bounding_box(elements[k].nodes))) continue;
+      if (!view.visible.intersects(bounding_rect(elements[k].nodes))) continue;
       canvas.path(p2_triangle_path(elements[k], view.transform), {options.colors(element_values[k]).hex(), "#1a1a1a", view.line_width});
     }
   });

@@ -6,9 +6,9 @@
 
 namespace hocav {
 
-Box bounding_box(std::span<const Vec2> points) {
+PageRect bounding_rect(std::span<const Vec2> points) {
   if (points.empty()) return {};
-  Box box{points.front(), points.front()};
+  PageRect box{points.front(), points.front()};
   for (const Vec2& p : points)
     for (int i = 0; i < 2; ++i) {
       box.lower[i] = std::min(box.lower[i], p[i]);
@@ -17,7 +17,7 @@ Box bounding_box(std::span<const Vec2> points) {
   return box;
 }
 
-PageTransform::PageTransform(const Box& world, const Box& page)
+PageTransform::PageTransform(const PageRect& world, const PageRect& page)
     : world_center_(0.5 * (world.lower + world.upper)), page_center_(0.5 * (page.lower + page.upper)) {
   if (!(world.width() > 0 || world.height() > 0)) throw Error("internal error: a picture of an empty world box");
   scale_ = std::min(world.width() > 0 ? page.width() / world.width() : page.height() / world.height(),

@@ -8,25 +8,25 @@
 
 namespace hocav {
 
-struct Box {
+struct PageRect {
   Vec2 lower, upper;  // lower.x ≤ upper.x, lower.y ≤ upper.y
 
   double width() const { return upper[0] - lower[0]; }
   double height() const { return upper[1] - lower[1]; }
   bool contains(const Vec2& p) const { return p[0] >= lower[0] && p[0] <= upper[0] && p[1] >= lower[1] && p[1] <= upper[1]; }
-  bool intersects(const Box& other) const {
+  bool intersects(const PageRect& other) const {
     return other.lower[0] <= upper[0] && lower[0] <= other.upper[0] && other.lower[1] <= upper[1] && lower[1] <= other.upper[1];
   }
 };
 
 // The smallest box holding every point (a box at the origin for none).
-Box bounding_box(std::span<const Vec2> points);
+PageRect bounding_rect(std::span<const Vec2> points);
 
 class PageTransform {
  public:
   // `world` must have a positive width or height; `page` is in page units (its lower corner is the
   // top left of the page area).
-  PageTransform(const Box& world, const Box& page);
+  PageTransform(const PageRect& world, const PageRect& page);
 
   Vec2 operator()(const Vec2& world) const;
   // Page units per world unit.

@@ -10,7 +10,7 @@
 namespace hocav {
 namespace {
 
-constexpr int kMaxIterations = 40;
+constexpr int kMaxNewtonSteps = 40;
 constexpr int kNewtonHalvings = 8, kGradientHalvings = 30;
 constexpr double kParameterTolerance = 1e-14;
 // Newton converges quadratically: after a step this small the parameters are exact to rounding.
@@ -114,7 +114,7 @@ PatchClosestPoint<D> closest_point_on_patch(const CubicPatch<D>& patch, const Ve
     f = dot(jet.point - x, jet.point - x);
   };
 
-  for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
+  for (int iteration = 0; iteration < kMaxNewtonSteps; ++iteration) {
     // f/2 = |S − x|²/2: gradient g_a = r·S_a, Hessian H_ab = S_a·S_b + r·S_ab (Gauss–Newton part G).
     const Vec<D> r = jet.point - x;
     Parameters descent{};  // −∇(f/2)

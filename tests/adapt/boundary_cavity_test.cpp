@@ -22,9 +22,9 @@ namespace hocav {
 namespace {
 
 #if defined(__SANITIZE_ADDRESS__)
-constexpr int kOperations = 3000;
+constexpr int kBoundaryOperations = 3000;
 #else
-constexpr int kOperations = 30000;
+constexpr int kBoundaryOperations = 30000;
 #endif
 
 template <int D>
@@ -258,7 +258,7 @@ void run_random_boundary_operations(unsigned seed) {
   CavityWorkspace<D> work;
   std::mt19937 random(seed);
   int accepted[2] = {};
-  for (int operation = 0; operation < kOperations; ++operation) {
+  for (int operation = 0; operation < kBoundaryOperations; ++operation) {
     const Index k = static_cast<Index>(random() % static_cast<unsigned>(mesh.element_count()));
     const auto element = mesh.element(k);
     const Index a = element[random() % (D + 1)];
@@ -305,8 +305,8 @@ void run_random_boundary_operations(unsigned seed) {
     }
   }
   adapt_test::expect_closed_and_consistent(mesh);
-  EXPECT_GT(accepted[0], kOperations / 20);
-  EXPECT_GT(accepted[1], kOperations / 50);
+  EXPECT_GT(accepted[0], kBoundaryOperations / 20);
+  EXPECT_GT(accepted[1], kBoundaryOperations / 50);
 }
 
 TEST(BoundaryCavity, RandomBoundarySplitsAndCollapses2D) { run_random_boundary_operations<2>(11); }

@@ -32,12 +32,12 @@ constexpr double kFloor = 0.01;
 
 // A shell whose boundary nodes lie on its circles or spheres, in an isotropic metric of size h.
 template <int D>
-struct CurvedShell {
+struct ConcentricShell {
   Mesh<D> mesh;
   AnalyticBoundary<D> geometry = concentric_shell_boundary<D>(kRadii.front(), kRadii.back());
   std::unique_ptr<MetricField<D>> field;
   // `cells`: around the circle (2D), or along each cube face's side (3D).
-  explicit CurvedShell(double h, int cells = D == 2 ? 24 : 8) {
+  explicit ConcentricShell(double h, int cells = D == 2 ? 24 : 8) {
     if constexpr (D == 2)
       mesh = generate_polar_annulus(cells, kRadii);
     else
@@ -99,7 +99,7 @@ std::array<Index, 2> wall_edge(const Mesh<D>& mesh) {
 
 template <int D>
 void check_boundary_split() {
-  CurvedShell<D> shell(0.02);
+  ConcentricShell<D> shell(0.02);
   Mesh<D>& mesh = shell.mesh;
   ASSERT_TRUE(every_element_certified(mesh));
   CurvedBoundary<D> boundary(mesh, shell.geometry, 45);
@@ -131,7 +131,7 @@ void check_boundary_split() {
 template <int D>
 void check_boundary_collapse() {
   // A metric of size 0.5: the wall's edges are short, and its vertices may go.
-  CurvedShell<D> shell(0.5);
+  ConcentricShell<D> shell(0.5);
   Mesh<D>& mesh = shell.mesh;
   CurvedBoundary<D> boundary(mesh, shell.geometry, 45);
   P2Operations<D> operations(mesh, *shell.field, nullptr, {.jacobian_floor = kFloor});
@@ -163,7 +163,7 @@ void check_boundary_collapse() {
 // its node on the sphere, the facets as many as before and of the wall's ref. (The structured shell's
 // first wall edges fold their shell when flipped: the first flip the certificate accepts is checked.)
 TEST(CurvedBoundary, ABoundaryEdgeSwappedInP2IsFlippedOnTheGeometry) {
-  CurvedShell<3> shell(0.05);
+  ConcentricShell<3> shell(0.05);
   Mesh<3>& mesh = shell.mesh;
   CurvedBoundary<3> boundary(mesh, shell.geometry, 45);
   P2Operations<3> operations(mesh, *shell.field, nullptr, {.jacobian_floor = kFloor});
@@ -203,7 +203,7 @@ TEST(CurvedBoundary, ABoundaryEdgeSwappedInP2IsFlippedOnTheGeometry) {
 // whose nodes on the sphere would fold their elements: the certification pulls them off the
 // geometry, so the collapse is refused and the mesh left as it was.
 TEST(CurvedBoundary, AnOperationWhoseBoundaryNodesCannotReachTheGeometryIsRefused) {
-  CurvedShell<3> shell(0.5, 4);
+  ConcentricShell<3> shell(0.5, 4);
   Mesh<3>& mesh = shell.mesh;
   CurvedBoundary<3> boundary(mesh, shell.geometry, 45);
   P2Operations<3> operations(mesh, *shell.field, nullptr, {.jacobian_floor = kFloor});

@@ -16,16 +16,16 @@ namespace hocav {
 namespace {
 
 // A shell whose first layer (0.005) is thinner than its inner wall edges' sag (about 0.01).
-constexpr std::array<double, 6> kRadii{0.5, 0.505, 0.52, 0.56, 0.7, 1.0};
-constexpr double kFloor = 0.01;
+constexpr std::array<double, 6> kThinLayerRadii{0.5, 0.505, 0.52, 0.56, 0.7, 1.0};
+constexpr double kLayerFloor = 0.01;
 
 template <int D>
 Mesh<D> thin_layered_shell() {
   Mesh<D> mesh;
   if constexpr (D == 2)
-    mesh = generate_polar_annulus(16, kRadii);
+    mesh = generate_polar_annulus(16, kThinLayerRadii);
   else
-    mesh = generate_cubed_sphere_shell(4, kRadii);
+    mesh = generate_cubed_sphere_shell(4, kThinLayerRadii);
   mesh.build_topology();
   mesh.make_p2();
   return mesh;
@@ -34,7 +34,7 @@ Mesh<D> thin_layered_shell() {
 template <int D>
 bool certified(const Mesh<D>& mesh, std::span<const Index> elements) {
   for (Index k : elements)
-    if (!certify_min_normalized_jacobian_above(gather_p2_element(mesh, k), kFloor)) return false;
+    if (!certify_min_normalized_jacobian_above(gather_p2_element(mesh, k), kLayerFloor)) return false;
   return true;
 }
 
@@ -63,7 +63,7 @@ std::vector<Index> wall_edges(const Mesh<D>& mesh) {
 template <int D>
 void check_layers_bend_with_their_wall() {
   Mesh<D> mesh = thin_layered_shell<D>();
-  const AnalyticBoundary<D> geometry = concentric_shell_boundary<D>(kRadii.front(), kRadii.back());
+  const AnalyticBoundary<D> geometry = concentric_shell_boundary<D>(kThinLayerRadii.front(), kThinLayerRadii.back());
   BoundaryProposals<D> proposals(mesh, geometry);
   const std::vector<Index> wall = wall_edges(mesh);
 
@@ -78,11 +78,11 @@ void check_layers_bend_with_their_wall() {
   }
 
   const std::vector<Vec<D>> straight(mesh.edge_nodes().begin(), mesh.edge_nodes().end());
-  const ProposalCompletion completion = complete_boundary_proposals(mesh, proposals, {.jacobian_floor = kFloor});
+  const ProposalCompletion completion = complete_boundary_proposals(mesh, proposals, {.jacobian_floor = kLayerFloor});
   EXPECT_GT(completion.bends, 0);
   EXPECT_GT(completion.volume_nodes_bent, 0);
   EXPECT_EQ(proposals.size(), 0u) << completion.blocked << " blocked, " << completion.pulled_back << " pulled back";
-  for (Index e : wall) EXPECT_NEAR(norm(mesh.edge_node(e)), kRadii.front(), 1e-12);
+  for (Index e : wall) EXPECT_NEAR(norm(mesh.edge_node(e)), kThinLayerRadii.front(), 1e-12);
   EXPECT_TRUE(certified(mesh, all_elements(mesh)));
 
   // The volume moves only near the wall: edges whose ends both lie at radius 0.7 or more (the
@@ -91,7 +91,7 @@ void check_layers_bend_with_their_wall() {
   for (Index e = 0; e < mesh.edge_count(); ++e) {
     const auto& ends = mesh.edge_vertices(e);
     const bool far = norm(mesh.vertex(ends[0])) > 0.69 && norm(mesh.vertex(ends[1])) > 0.69;
-    if (!far || std::abs(norm(mesh.edge_node(e)) - kRadii.back()) < 1e-9) continue;
+    if (!far || std::abs(norm(mesh.edge_node(e)) - kThinLayerRadii.back()) < 1e-9) continue;
     ++(mesh.edge_node(e) == straight[static_cast<std::size_t>(e)] ? kept_far : moved_far);
   }
   EXPECT_EQ(moved_far, 0);

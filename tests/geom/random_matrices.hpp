@@ -5,12 +5,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "geom/mat.hpp"
 #include "geom/sym_mat.hpp"
 
 namespace hocav::geom_test {
+
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 
 // log(1e8): log-eigenvalues in [−18.4, 18.4] give metric sizes h = e^{−θ/2} with ratios up to 1e8.
 constexpr double kLogEigenvalueBound = 18.42;

@@ -16,8 +16,6 @@ namespace {
 
 using namespace geom_test;
 
-constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
-
 // ‖M − V Λ Vᵀ‖_F / ‖M‖_F, computed on M scaled by a power of two so that 1e±300 entries neither overflow nor
 // underflow when squared.
 template <int D>

@@ -15,8 +15,6 @@ namespace {
 
 using namespace geom_test;
 
-constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
-
 template <class Dimension>
 class SymFunctionsTest : public ::testing::Test {};
 using Dimensions = ::testing::Types<std::integral_constant<int, 2>, std::integral_constant<int, 3>>;

@@ -16,10 +16,10 @@
 namespace hocav {
 namespace {
 
-std::string temporary_path(const std::string& name) { return ::testing::TempDir() + "hocav_gmsh_msh_" + name; }
+std::string msh_temporary_path(const std::string& name) { return ::testing::TempDir() + "hocav_gmsh_msh_" + name; }
 
 std::string write_text(const std::string& name, const std::string& text) {
-  std::string path = temporary_path(name);
+  std::string path = msh_temporary_path(name);
   std::ofstream(path, std::ios::binary) << text;
   return path;
 }
@@ -43,7 +43,7 @@ std::vector<Index> order_by_ref(Index count, RefOf ref_of) {
 // Exact equality of everything .msh carries: coordinates, elements, facets, lines, corners, refs
 // and P2 nodes (compared per element edge, since the edge table follows the element order).
 template <int D>
-void expect_same_mesh(const Mesh<D>& original, const MeshFileContent& content) {
+void expect_msh_content(const Mesh<D>& original, const MeshFileContent& content) {
   ASSERT_TRUE(std::holds_alternative<Mesh<D>>(content.mesh));
   const Mesh<D>& read = std::get<Mesh<D>>(content.mesh);
   ASSERT_EQ(read.vertex_count(), original.vertex_count());
@@ -93,13 +93,13 @@ void curve(Mesh<D>& mesh) {
 
 template <int D>
 void expect_round_trip(const Mesh<D>& mesh, const std::string& name) {
-  std::string path = temporary_path(name + ".msh");
+  std::string path = msh_temporary_path(name + ".msh");
   write_gmsh_msh(path, mesh);
   MeshFileContent content = read_gmsh_msh(path);
-  expect_same_mesh(mesh, content);
+  expect_msh_content(mesh, content);
   EXPECT_EQ(gmsh_msh_dimension(path), D);
   // Once grouped by ref (as any mesh read from .msh is), a mesh goes through .msh byte for byte.
-  std::string again = temporary_path(name + "_again.msh"), third = temporary_path(name + "_third.msh");
+  std::string again = msh_temporary_path(name + "_again.msh"), third = msh_temporary_path(name + "_third.msh");
   write_gmsh_msh(again, std::get<Mesh<D>>(content.mesh));
   write_gmsh_msh(third, std::get<Mesh<D>>(read_gmsh_msh(again).mesh));
   EXPECT_EQ(read_text(third), read_text(again));
@@ -353,11 +353,11 @@ TEST(GmshMsh, RefusesBadInputWithClearMessages) {
 TEST(GmshMsh, DimensionOfASurfaceMeshIsAnError) {
   std::string path = write_text("surface.msh", tet_file("1 1 1 1\n2 1 2 1\n1 1 2 4"));
   EXPECT_THROW(gmsh_msh_dimension(path), Error);
-  EXPECT_THROW(gmsh_msh_dimension(temporary_path("does_not_exist.msh")), Error);
+  EXPECT_THROW(gmsh_msh_dimension(msh_temporary_path("does_not_exist.msh")), Error);
 }
 
 TEST(GmshMsh, FailedWriteLeavesNoFile) {
-  std::string path = temporary_path("no_such_directory/out.msh");
+  std::string path = msh_temporary_path("no_such_directory/out.msh");
   EXPECT_THROW(write_gmsh_msh(path, generate_square(1)), Error);
   EXPECT_FALSE(std::ifstream(path).good());
 }

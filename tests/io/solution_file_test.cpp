@@ -238,7 +238,7 @@ TEST(SolutionFile, PicksTheFirstSymmetricMatrixField) {
 
 // ---- malformed input ----
 
-void expect_read_error(const std::string& name, const std::string& bytes, std::initializer_list<std::string> parts) {
+void expect_solution_read_error(const std::string& name, const std::string& bytes, std::initializer_list<std::string> parts) {
   std::string path = write_file(name, bytes);
   ::testing::internal::CaptureStderr();
   std::string message = error_of([&] { read_solution_file(path); });
@@ -249,13 +249,13 @@ void expect_read_error(const std::string& name, const std::string& bytes, std::i
 
 TEST(SolutionFile, RefusesMalformedFiles) {
   const std::string header = "MeshVersionFormatted 2\nDimension 2\n";
-  expect_read_error("missing.sol", header + "Time\n0.5\n", {"SolAtVertices: missing"});
-  expect_read_error("no_dimension.sol", "SolAtVertices\n1\n1 1\n2\n", {"SolAtVertices: ", "no Dimension"});
-  expect_read_error("type.sol", header + "SolAtVertices\n1\n1 7\n2\n", {"SolAtVertices: ", "unknown solution type 7"});
-  expect_read_error("fields.sol", header + "SolAtVertices\n1\n0\n", {"SolAtVertices: ", "field count 0"});
-  expect_read_error("truncated.sol", header + "SolAtVertices\n2\n1 3\n1 0 1\n1 0\n", {"SolAtVertices: ", "end of file"});
-  expect_read_error("twice.sol", header + "SolAtVertices\n1\n1 1\n2\nSolAtVertices\n1\n1 1\n2\n", {"appears twice"});
-  expect_read_error("negative.sol", header + "SolAtVertices\n-1\n1 1\n", {"SolAtVertices: ", "negative count"});
+  expect_solution_read_error("missing.sol", header + "Time\n0.5\n", {"SolAtVertices: missing"});
+  expect_solution_read_error("no_dimension.sol", "SolAtVertices\n1\n1 1\n2\n", {"SolAtVertices: ", "no Dimension"});
+  expect_solution_read_error("type.sol", header + "SolAtVertices\n1\n1 7\n2\n", {"SolAtVertices: ", "unknown solution type 7"});
+  expect_solution_read_error("fields.sol", header + "SolAtVertices\n1\n0\n", {"SolAtVertices: ", "field count 0"});
+  expect_solution_read_error("truncated.sol", header + "SolAtVertices\n2\n1 3\n1 0 1\n1 0\n", {"SolAtVertices: ", "end of file"});
+  expect_solution_read_error("twice.sol", header + "SolAtVertices\n1\n1 1\n2\nSolAtVertices\n1\n1 1\n2\n", {"appears twice"});
+  expect_solution_read_error("negative.sol", header + "SolAtVertices\n-1\n1 1\n", {"SolAtVertices: ", "negative count"});
 
   GammaBinaryBuilder truncated(3);
   truncated.dimension(2);
@@ -264,7 +264,7 @@ TEST(SolutionFile, RefusesMalformedFiles) {
   truncated.int32(1);
   truncated.int32(1);
   truncated.real(1.0);
-  expect_read_error("truncated.solb", truncated.bytes(), {"SolAtVertices: truncated file, entity 2"});
+  expect_solution_read_error("truncated.solb", truncated.bytes(), {"SolAtVertices: truncated file, entity 2"});
   GammaBinaryBuilder infinite(2);
   infinite.dimension(2);
   infinite.begin_keyword(62);
@@ -275,7 +275,7 @@ TEST(SolutionFile, RefusesMalformedFiles) {
   infinite.real(std::numeric_limits<double>::infinity());
   infinite.end_keyword();
   infinite.end();
-  expect_read_error("infinite.solb", infinite.bytes(), {"SolAtVertices: ", "not finite", "entity 2"});
+  expect_solution_read_error("infinite.solb", infinite.bytes(), {"SolAtVertices: ", "not finite", "entity 2"});
 }
 
 TEST(SolutionFile, RefusesToWriteInconsistentContent) {

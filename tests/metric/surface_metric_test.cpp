@@ -16,29 +16,29 @@ namespace {
 using metric_test::vertex_at;
 
 template <int D>
-void expect_near(const Vec<D>& actual, const Vec<D>& expected) {
+void expect_near_vector(const Vec<D>& actual, const Vec<D>& expected) {
   for (int i = 0; i < D; ++i) EXPECT_NEAR(actual[i], expected[i], 1e-14);
 }
 
 TEST(SurfaceMetric, NormalsOfTheSquareAreOutwardAndAreaWeighted) {
   Mesh<2> mesh = generate_square(4);
   auto normals = boundary_vertex_normals(mesh);
-  expect_near(normals[vertex_at(mesh, Vec2{{0.5, 0}})], Vec2{{0, -1}});
-  expect_near(normals[vertex_at(mesh, Vec2{{1, 0.25}})], Vec2{{1, 0}});
-  expect_near(normals[vertex_at(mesh, Vec2{{0.75, 1}})], Vec2{{0, 1}});
-  expect_near(normals[vertex_at(mesh, Vec2{{0, 0.5}})], Vec2{{-1, 0}});
-  expect_near(normals[vertex_at(mesh, Vec2{{1, 1}})], Vec2{{std::sqrt(0.5), std::sqrt(0.5)}});
-  expect_near(normals[vertex_at(mesh, Vec2{{0.5, 0.5}})], Vec2{});
+  expect_near_vector(normals[vertex_at(mesh, Vec2{{0.5, 0}})], Vec2{{0, -1}});
+  expect_near_vector(normals[vertex_at(mesh, Vec2{{1, 0.25}})], Vec2{{1, 0}});
+  expect_near_vector(normals[vertex_at(mesh, Vec2{{0.75, 1}})], Vec2{{0, 1}});
+  expect_near_vector(normals[vertex_at(mesh, Vec2{{0, 0.5}})], Vec2{{-1, 0}});
+  expect_near_vector(normals[vertex_at(mesh, Vec2{{1, 1}})], Vec2{{std::sqrt(0.5), std::sqrt(0.5)}});
+  expect_near_vector(normals[vertex_at(mesh, Vec2{{0.5, 0.5}})], Vec2{});
 }
 
 TEST(SurfaceMetric, NormalsOfTheCubeAreOutwardWhateverTheFacetOrientation) {
   // Every third facet of the cube listed in the other orientation.
   Mesh<3> mesh = mesh_test::with_facets_turned(generate_cube(2), 3);
   auto normals = boundary_vertex_normals(mesh);
-  expect_near(normals[vertex_at(mesh, Vec3{{0.5, 0.5, 0}})], Vec3{{0, 0, -1}});
-  expect_near(normals[vertex_at(mesh, Vec3{{1, 0.5, 0.5}})], Vec3{{1, 0, 0}});
-  expect_near(normals[vertex_at(mesh, Vec3{{0.5, 1, 0.5}})], Vec3{{0, 1, 0}});
-  expect_near(normals[vertex_at(mesh, Vec3{{0.5, 0.5, 0.5}})], Vec3{});
+  expect_near_vector(normals[vertex_at(mesh, Vec3{{0.5, 0.5, 0}})], Vec3{{0, 0, -1}});
+  expect_near_vector(normals[vertex_at(mesh, Vec3{{1, 0.5, 0.5}})], Vec3{{1, 0, 0}});
+  expect_near_vector(normals[vertex_at(mesh, Vec3{{0.5, 1, 0.5}})], Vec3{{0, 1, 0}});
+  expect_near_vector(normals[vertex_at(mesh, Vec3{{0.5, 0.5, 0.5}})], Vec3{});
   // On a cube edge, the two faces count by their facets' areas around the vertex.
   Vec3 edge_normal = normals[vertex_at(mesh, Vec3{{0.5, 0, 0}})];
   EXPECT_LT(edge_normal[0], 1e-14);
@@ -83,7 +83,7 @@ TEST(SurfaceMetric, OpposedFacetsLeaveTheSmallSizeInEveryDirection) {
   auto metrics = surface_metric_at_vertices(mesh, SurfaceSizes{0.5, 1, 1});
   EXPECT_EQ(boundary_vertex_normals(mesh)[0], Vec2{});
   EXPECT_EQ(metrics[0], 4 * SymMat2::identity());
-  expect_near(boundary_vertex_normals(mesh)[1], Vec2{{-std::sqrt(0.5), -std::sqrt(0.5)}});
+  expect_near_vector(boundary_vertex_normals(mesh)[1], Vec2{{-std::sqrt(0.5), -std::sqrt(0.5)}});
 }
 
 // The metric from the boundary alone (its facets oriented outward) against the mesh's, vertex by

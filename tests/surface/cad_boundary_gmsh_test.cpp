@@ -18,14 +18,14 @@
 namespace hocav {
 namespace {
 
-std::string temporary_path(const std::string& name) { return (std::filesystem::path(::testing::TempDir()) / name).string(); }
+std::string cad_temporary_path(const std::string& name) { return (std::filesystem::path(::testing::TempDir()) / name).string(); }
 
 // OpenCASCADE's projections onto its spheres are accurate to about this.
 constexpr double kCadTolerance = 1e-9;
 
 TEST(SurfaceCad, SphereShellBrepWithRefsAsTags) {
   HOCAV_SKIP_WITHOUT_GMSH();
-  const std::string path = temporary_path("hocav_shell.brep");
+  const std::string path = cad_temporary_path("hocav_shell.brep");
   write_shell_cad<3>(0.5, 1.0, path);
   const CadBoundary<3> cad(path);
   // Read back, OpenCASCADE numbers the outer sphere 1 and the inner one 2.
@@ -47,7 +47,7 @@ TEST(SurfaceCad, SphereShellRefsMapByProximity) {
   HOCAV_SKIP_WITHOUT_GMSH();
   const ShellParameters parameters{0.5, 1.0, 0.5};
   const Mesh<3> mesh = generate_sphere_shell(parameters);
-  const std::string path = temporary_path("hocav_shell.step");
+  const std::string path = cad_temporary_path("hocav_shell.step");
   write_shell_cad<3>(parameters.inner_radius, parameters.outer_radius, path);
   const CadBoundary<3> cad(path, mesh);
   EXPECT_EQ(cad.entity_of_ref(1), 2);  // the mesh's inner sphere is the CAD's surface 2
@@ -65,7 +65,7 @@ TEST(SurfaceCad, AnnulusCurves) {
   HOCAV_SKIP_WITHOUT_GMSH();
   const ShellParameters parameters{0.5, 1.0, 0.2};
   const Mesh<2> mesh = generate_annulus(parameters);
-  const std::string path = temporary_path("hocav_annulus.brep");
+  const std::string path = cad_temporary_path("hocav_annulus.brep");
   write_shell_cad<2>(parameters.inner_radius, parameters.outer_radius, path);
   const CadBoundary<2> cad(path, mesh);
   const Vec2 x{{0.3, 0.4}};
@@ -78,7 +78,7 @@ TEST(SurfaceCad, AnnulusCurves) {
 // A cylinder's side and top meet along a circle: edges across them are projected onto it.
 TEST(SurfaceCad, RidgeCurveBetweenTwoSurfaces) {
   HOCAV_SKIP_WITHOUT_GMSH();
-  const std::string path = temporary_path("hocav_cylinder.brep");
+  const std::string path = cad_temporary_path("hocav_cylinder.brep");
 #if HOCAV_WITH_GMSH
   {
     GmshSession session("cylinder");
@@ -106,8 +106,8 @@ TEST(SurfaceCad, RidgeCurveBetweenTwoSurfaces) {
 
 TEST(SurfaceCad, Errors) {
   HOCAV_SKIP_WITHOUT_GMSH();
-  EXPECT_THROW(CadBoundary<3>(temporary_path("no_such_file.brep")), Error);
-  const std::string path = temporary_path("hocav_shell_errors.brep");
+  EXPECT_THROW(CadBoundary<3>(cad_temporary_path("no_such_file.brep")), Error);
+  const std::string path = cad_temporary_path("hocav_shell_errors.brep");
   write_shell_cad<3>(0.5, 1.0, path);
   {
     const CadBoundary<3> cad(path);
@@ -117,7 +117,7 @@ TEST(SurfaceCad, Errors) {
   // A mesh that lies on no surface of the model.
   Mesh<3> far_away = generate_sphere_shell({2.0, 3.0, 1.0});
   EXPECT_THROW(CadBoundary<3>(path, far_away), Error);
-  EXPECT_THROW(write_shell_cad<3>(0.5, 1.0, temporary_path("shell.iges")), Error);
+  EXPECT_THROW(write_shell_cad<3>(0.5, 1.0, cad_temporary_path("shell.iges")), Error);
   std::filesystem::remove(path);
 }
 
