@@ -16,23 +16,25 @@ namespace hocav {
 class ElementList {
  public:
   // Ids added through push_back go into `ids` too.
-  explicit ElementList(std::vector<Index>& ids) : ids_(ids) {
-    if (ids_.size() > kScannedIds) hash_all();
-  }
+  explicit ElementList(std::vector<Index>& ids) : ids_(ids), hashed_(hashed_when_long(ids)) {}
   bool holds(Index k) const { return hashed_ ? hashed_->find(static_cast<std::uint64_t>(k)) != kNoIndex : small_set_holds(ids_, k); }
   void push_back(Index k) {
     ids_.push_back(k);
     if (hashed_)
       hashed_->insert(static_cast<std::uint64_t>(k), 0);
     else if (ids_.size() > kScannedIds)
-      hash_all();
+      hashed_ = hashed_when_long(ids_);
   }
 
  private:
   static constexpr std::size_t kScannedIds = 64;
-  void hash_all() {
-    hashed_.emplace(2 * ids_.size());
-    for (Index k : ids_) hashed_->insert(static_cast<std::uint64_t>(k), 0);
+  // (Made whole and then moved in, not emplaced: GCC 12's sanitizer build took the emplace's reset of
+  // the member it had just constructed empty for a read of uninitialized memory.)
+  static std::optional<IndexHashMap> hashed_when_long(const std::vector<Index>& ids) {
+    if (ids.size() <= kScannedIds) return std::nullopt;
+    IndexHashMap hashed(2 * ids.size());
+    for (Index k : ids) hashed.insert(static_cast<std::uint64_t>(k), 0);
+    return hashed;
   }
   std::vector<Index>& ids_;
   std::optional<IndexHashMap> hashed_;  // none while the list is short (no allocation)
