@@ -151,30 +151,26 @@ std::string rank_range(const std::vector<T>& values, double unit) {
 }
 
 void print_iteration(const DistributedIteration& figures) {
-  std::ostringstream line;  // figures to 3 digits: "metric 0.333 of the way", "0.0586 s"
-  line << std::setprecision(3);
+  std::ostringstream line, timing;  // figures to 3 digits: "metric 0.333 of the way", "0.0586 s"
+  line << std::setprecision(3) << "distributed: ";
+  timing << std::setprecision(3);
   if (figures.iteration == kLastRunsInParts) {
-    line << "distributed: the last runs in the parts: " << figures.region_elements
-         << " elements near the interfaces, each interface's with one of its processes, " << figures.elements << " elements after them, "
-         << figures.bytes_sent << " bytes sent, " << figures.seconds << " s (runs " << rank_range(figures.part_seconds, 1)
-         << " s, peak memory " << rank_range(figures.peak_memory_bytes, 1 << 20) << " MiB per rank)\n";
-    std::cerr << line.str();
-    return;
+    line << "the last runs in the parts: " << figures.region_elements
+         << " elements near the interfaces, each interface's with one of its processes, " << figures.elements << " elements after them, ";
+    timing << "runs " << rank_range(figures.part_seconds, 1) << " s";
+  } else if (figures.iteration == kLastRunsOnRoot) {
+    line << "the last runs on rank 0: " << figures.region_elements
+         << " elements where the parts' regions met and around the poor ones left, " << figures.elements << " elements after them, ";
+    timing << "runs " << figures.part_seconds.at(0) << " s";
+  } else {
+    line << "iteration " << figures.iteration << " of " << kDistributedIterations << ": metric " << figures.metric_fraction
+         << " of the way, " << process_count() << " parts (their interfaces refined first: " << figures.interface_edges_split
+         << " edges split, " << figures.interface_faces_turned << " faces turned), " << figures.interface_faces << " interface faces, "
+         << figures.interface_vertices << " of " << figures.vertices << " vertices on the interfaces, ";
+    timing << "partition " << figures.seconds_partition << " s; parts " << rank_range(figures.part_seconds, 1) << " s";
   }
-  if (figures.iteration == kLastRunsOnRoot) {
-    line << "distributed: the last runs on rank 0: " << figures.region_elements
-         << " elements where the parts' regions met and around the poor ones left, " << figures.elements << " elements after them, "
-         << figures.bytes_sent << " bytes sent, " << figures.seconds << " s (runs " << figures.part_seconds.at(0) << " s, peak memory "
-         << rank_range(figures.peak_memory_bytes, 1 << 20) << " MiB per rank)\n";
-    std::cerr << line.str();
-    return;
-  }
-  line << "distributed: iteration " << figures.iteration << " of " << kDistributedIterations << ": metric " << figures.metric_fraction
-       << " of the way, " << process_count() << " parts (their interfaces refined first: " << figures.interface_edges_split
-       << " edges split, " << figures.interface_faces_turned << " faces turned), " << figures.interface_faces << " interface faces, "
-       << figures.interface_vertices << " of " << figures.vertices << " vertices on the interfaces, " << figures.bytes_sent
-       << " bytes sent, " << figures.seconds << " s (partition " << figures.seconds_partition << " s; parts "
-       << rank_range(figures.part_seconds, 1) << " s, peak memory " << rank_range(figures.peak_memory_bytes, 1 << 20) << " MiB per rank)\n";
+  line << figures.bytes_sent << " bytes sent, " << figures.seconds << " s (" << timing.str() << ", peak memory "
+       << rank_range(figures.peak_memory_bytes, 1 << 20) << " MiB per rank)\n";
   std::cerr << line.str();
 }
 
