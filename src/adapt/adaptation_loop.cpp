@@ -15,10 +15,6 @@
 namespace hocav {
 namespace {
 
-// A pass that splits and collapses fewer than this share of the vertices ends the loop (0.1% ran
-// one or two more passes for 0.02–0.34 points of unit share: docs/adaptation.md §The loop).
-constexpr double kConvergedChange = 2.5e-3;
-
 // The loop's window (docs/adaptation.md §The loop): while it is open, a collapse may make edges up
 // to kOpenCollapseLength, which the next split cuts; short edges that no collapse within √2 can
 // remove then go. It closes for good when a pass after the busiest one changes more than

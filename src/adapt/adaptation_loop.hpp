@@ -18,6 +18,11 @@ constexpr double kRelativeHausd = 0.01;
 // Elements below this quality are poor (the report's "below 0.1" share).
 constexpr double kPoorQuality = 0.1;
 
+// A pass that splits and collapses fewer than this share of the vertices ends the loop, the P1 one
+// and the curved one (0.1% ran one or two more passes for 0.02–0.34 points of unit share:
+// docs/adaptation.md §The loop).
+constexpr double kConvergedChange = 2.5e-3;
+
 struct AdaptationSettings {
   int max_passes = 20;
   double feature_angle_degrees = 45;  // boundary sides meeting at more are ridges (2D: corners)

@@ -8,6 +8,7 @@
 #include <numeric>
 #include <optional>
 
+#include "adapt/adaptation_loop.hpp"
 #include "adapt/curved_boundary.hpp"
 #include "adapt/reinsertion_curving.hpp"
 #include "base/thread_pool.hpp"
@@ -47,9 +48,6 @@ constexpr double kPoorQuality = 0.5;
 // Without it the curved passes left straight simplices down to 0.001 there, valid curved elements
 // with normalized Jacobians up to 4,046; 0.2 and 0.3 cost unit share (docs/benchmarks.md).
 constexpr double kStraightQualityFloor = 0.1;
-// As the P1 loop (docs/adaptation.md §The loop): a pass that splits and collapses fewer than this
-// share of the vertices ends the loop.
-constexpr double kCurvedConvergedChange = 2.5e-3;
 
 struct EdgeToFix {
   double length;
@@ -379,8 +377,7 @@ CurvedAdaptationRun adapt_curved(Mesh<D>& mesh, const MetricField<D>& field, con
     const CurvedPass& last = run.passes.emplace_back(
         run_curved_pass(mesh, field, options, boundary ? &*boundary : nullptr, run.counters, measures, refusals, pool));
     run.seconds += last.seconds;
-    run.converged = static_cast<double>(last.splits.done + last.collapses.done) <=
-                    kCurvedConvergedChange * static_cast<double>(last.vertices);
+    run.converged = static_cast<double>(last.splits.done + last.collapses.done) <= kConvergedChange * static_cast<double>(last.vertices);
   }
   return run;
 }

@@ -67,6 +67,9 @@ void run_in_blocks(ThreadPool& pool, std::size_t count, std::size_t serial_below
   });
 }
 
+// Elements or edges measured per range of run_chunked: enough work to outweigh a task's start.
+inline constexpr std::size_t kMeasuredChunk = 1024;
+
 // Calls work(begin, end) for consecutive ranges of `chunk` indices covering [0, count) on the pool's
 // threads. The ranges do not depend on the thread count, so work that fills per-index or per-range
 // results gives the same results for any count.

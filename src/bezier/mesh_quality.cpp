@@ -9,10 +9,6 @@
 #include "bezier/p2_element.hpp"
 
 namespace hocav {
-namespace {
-// Elements measured per task of the pool.
-constexpr std::size_t kMeasuredChunk = 1024;
-}  // namespace
 
 template <int D>
 std::vector<JacobianQuality> mesh_jacobian_quality(const Mesh<D>& mesh, const RefinementOptions& options, int threads) {

@@ -6,7 +6,6 @@
 #include <numbers>
 #include <string>
 
-#include "base/memory_budget.hpp"
 #include "base/quiet_stdout.hpp"
 #include "cases/gmsh_model.hpp"
 #include "cases/parameter_checks.hpp"
@@ -14,8 +13,6 @@
 
 namespace hocav {
 namespace {
-
-constexpr double kMaximumElements = 5e7;
 
 template <int D>
 double shell_measure(const ShellParameters& p) {
@@ -32,9 +29,7 @@ void check_parameters(const ShellParameters& p) {
   // Measure of an equilateral triangle / regular tetrahedron of edge h.
   double element_measure = D == 2 ? std::sqrt(3.0) / 4 * p.size * p.size : std::pow(p.size, 3) / (6 * std::sqrt(2.0));
   const double elements = shell_measure<D>(p) / element_measure;
-  if (elements > kMaximumElements)
-    throw Error("size h = " + number_text(p.size) + " is too small: the mesh would exceed 50 million elements");
-  check_memory_fits("size h = " + number_text(p.size), elements, kMeshBytesPerElement);
+  check_case_size(p.size, elements);
 }
 
 }  // namespace

@@ -9,7 +9,6 @@
 #include <numbers>
 #include <set>
 
-#include "base/memory_budget.hpp"
 #include "base/quiet_stdout.hpp"
 #include "cases/concentric_shell.hpp"
 #include "cases/parameter_checks.hpp"
@@ -21,7 +20,6 @@ constexpr double kLength = 1.0, kWidth = 0.6, kHeight = 0.4;
 constexpr double kCornerRadius = 0.06, kHoleRadius = 0.1, kPocketRadius = 0.15, kFloorFilletRadius = 0.04;
 constexpr double kSlantDegrees = 20;
 constexpr double kPocketFloor = 0.12;  // height of the rectangular pocket's floor
-constexpr double kMaximumPartElements = 5e7;
 // OpenCASCADE pads bounding boxes by 1e-7; entities are picked with a margin above that.
 constexpr double kMargin = 1e-5;
 
@@ -31,9 +29,7 @@ void check_parameters(const MachinedPartParameters& p) {
   if (p.wall > 0.1) throw Error("wall = " + number_text(p.wall) + " is too thick for the part (at most 0.1)");
   // A regular tetrahedron of edge h has volume h³ / (6√2); the part's volume is below the block's.
   const double elements = kLength * kWidth * kHeight / (std::pow(p.size, 3) / (6 * std::sqrt(2.0)));
-  if (elements > kMaximumPartElements)
-    throw Error("size h = " + number_text(p.size) + " is too small: the mesh would exceed 50 million elements");
-  check_memory_fits("size h = " + number_text(p.size), elements, kMeshBytesPerElement);
+  check_case_size(p.size, elements);
 }
 
 // The curves of the current model lying inside a box.

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "base/error.hpp"
+#include "base/memory_budget.hpp"
 
 namespace hocav {
 
@@ -28,6 +29,17 @@ inline void check_shell_radii(double inner_radius, double outer_radius) {
 // Throws Error naming `what` unless value > 0 and finite.
 inline void check_positive(const std::string& what, double value) {
   if (!(std::isfinite(value) && value > 0)) throw Error(what + " must be positive, got " + number_text(value));
+}
+
+// The most elements a generated case may have.
+inline constexpr double kMaximumCaseElements = 5e7;
+
+// Throws Error unless a case meshed at size h = `size`, with about `elements` elements, stays within
+// kMaximumCaseElements and fits in memory.
+inline void check_case_size(double size, double elements) {
+  if (elements > kMaximumCaseElements)
+    throw Error("size h = " + number_text(size) + " is too small: the mesh would exceed 50 million elements");
+  check_memory_fits("size h = " + number_text(size), elements, kMeshBytesPerElement);
 }
 
 // Throws Error unless there are at least two layer radii, finite and increasing from a positive one.

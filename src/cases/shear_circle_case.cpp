@@ -21,10 +21,10 @@ Mesh<2> generate_shear_circle_annulus(double inner_radius, double outer_radius, 
   auto radial_size = [&metric](double r) { return 1 / std::sqrt(analytic_metric<2>(metric, Vec2{{r, 0}})(0, 0)); };
   const double tangential_size = 1 / std::sqrt(analytic_metric<2>(metric, Vec2{{metric.radius, 0}})(1, 1));
   const double sectors = std::ceil(2 * std::numbers::pi * metric.radius / tangential_size);
-  if (!(sectors <= kMaximumTargetElements)) throw Error("the shear-circle metric's tangential size is too small");
+  if (!(sectors <= kMaximumCaseElements)) throw Error("the shear-circle metric's tangential size is too small");
   const std::vector<double> radii = unit_layer_radii(inner_radius, outer_radius, radial_size);
-  if (polar_annulus_triangle_count(static_cast<int>(sectors), radii.size()) > kMaximumTargetElements)
-    throw Error("the shear-circle mesh would exceed " + number_text(kMaximumTargetElements) + " triangles: h-min or h-max is too small");
+  if (polar_annulus_triangle_count(static_cast<int>(sectors), radii.size()) > kMaximumCaseElements)
+    throw Error("the shear-circle mesh would exceed " + number_text(kMaximumCaseElements) + " triangles: h-min or h-max is too small");
   return generate_polar_annulus(std::max(3, static_cast<int>(sectors)), radii);
 }
 

@@ -8,8 +8,8 @@
 namespace hocav {
 
 int resolution_for_target(const char* what, double target, int minimum, const std::function<double(int)>& elements) {
-  if (!(std::isfinite(target) && target >= 1 && target <= kMaximumTargetElements))
-    throw Error(std::string(what) + " must be between 1 and " + number_text(kMaximumTargetElements) + ", got " + number_text(target));
+  if (!(std::isfinite(target) && target >= 1 && target <= kMaximumCaseElements))
+    throw Error(std::string(what) + " must be between 1 and " + number_text(kMaximumCaseElements) + ", got " + number_text(target));
   // The smallest n reaching the target: doubling, then bisection.
   int low = minimum, high = minimum;
   while (elements(high) < target) {

@@ -5,16 +5,14 @@
 #include <functional>
 #include <vector>
 
+#include "cases/parameter_checks.hpp"
 #include "cases/radial_layers.hpp"
 
 namespace hocav {
 
-// The largest element count a target may ask for.
-inline constexpr double kMaximumTargetElements = 5e7;
-
 // The resolution n >= minimum whose element count elements(n) is nearest `target` in ratio,
 // elements being non-decreasing in n. Throws Error naming `what` (e.g. "target-tets") for a
-// target below 1 or above kMaximumTargetElements.
+// target below 1 or above kMaximumCaseElements.
 int resolution_for_target(const char* what, double target, int minimum, const std::function<double(int)>& elements);
 
 // A layered shell's resolution and layer radii for a target element count, given the grid's

@@ -9,12 +9,7 @@
 #include "report/curving_report.hpp"
 
 namespace hocav {
-namespace {
-
-// Edges measured per task of the pool.
-constexpr std::size_t kPartMeasuredChunk = 1024;
-
-}  // namespace
+namespace {}  // namespace
 
 template <int D>
 PartOutline outline_of(const MeshPart<D>& part) {
@@ -96,7 +91,7 @@ PartMeasures measure_part(MeshPart<D>& part, const MetricField<D>& field, std::s
   measures.elements = mesh_jacobian_quality(mesh, kReportedRefinement, threads);
   std::vector<EdgeGain> gains(edges.size());
   ThreadPool pool(std::max(1, threads));
-  run_chunked(pool, edges.size(), kPartMeasuredChunk, [&](std::size_t begin, std::size_t end) {
+  run_chunked(pool, edges.size(), kMeasuredChunk, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) gains[i] = edge_gain(mesh, field, edges[i]);
   });
   for (std::size_t i = 0; i < edges.size(); ++i) {

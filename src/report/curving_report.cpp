@@ -16,8 +16,6 @@
 namespace hocav {
 
 namespace {
-// Edges measured per task of the pool.
-constexpr std::size_t kReportedChunk = 1024;
 
 // Vertex v of `mesh` with its metric, and a back element near it to start the field's searches
 // from: the back mesh's own vertex v when the mesh keeps it where it was (`hocav curve`'s output keeps
@@ -56,7 +54,7 @@ std::vector<double> volume_edge_gains(const Mesh<D>& mesh, const MetricField<D>&
   std::vector<char> measured(edge_count, 0);
   std::vector<double> per_edge(edge_count, 0);
   ThreadPool pool(std::max(1, threads));
-  run_chunked(pool, edge_count, kReportedChunk, [&](std::size_t begin, std::size_t end) {
+  run_chunked(pool, edge_count, kMeasuredChunk, [&](std::size_t begin, std::size_t end) {
     for (auto e = static_cast<Index>(begin); e < static_cast<Index>(end); ++e) {
       auto [a, b] = mesh.edge_vertices(e);
       measured[e] = a != kNoIndex && !(on_boundary[a] && on_boundary[b]);
