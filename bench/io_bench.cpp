@@ -8,17 +8,16 @@
 #include <string>
 
 #include "cases/structured.hpp"
+#include "cube_sizes.hpp"
 #include "io/gamma_mesh.hpp"
 
 namespace hocav {
 namespace {
 
-constexpr int kFileCubeCellsPerSide = 55;  // 6 * 55^3 = 998,250 tetrahedra
-
 // Edge nodes moved off their midpoints, so the ASCII reals need their full 17 digits.
 const Mesh<3>& curved_cube() {
   static const Mesh<3> mesh = [] {
-    Mesh<3> cube = generate_cube(kFileCubeCellsPerSide);
+    Mesh<3> cube = generate_cube(kMillionCubeCellsPerSide);
     cube.make_p2();
     for (Index e = 0; e < cube.edge_count(); ++e)
       for (int i = 0; i < 3; ++i) cube.edge_node(e)[i] += 1e-3 * std::sin(1.7 * e + i);

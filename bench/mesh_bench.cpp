@@ -3,15 +3,14 @@
 #include <benchmark/benchmark.h>
 
 #include "cases/structured.hpp"
+#include "cube_sizes.hpp"
 #include "mesh/vertex_graph.hpp"
 
 namespace hocav {
 namespace {
 
-constexpr int kMeshCubeCellsPerSide = 55;  // 6 * 55^3 = 998,250 tetrahedra
-
 const Mesh<3>& cube() {
-  static const Mesh<3> mesh = generate_cube(kMeshCubeCellsPerSide);
+  static const Mesh<3> mesh = generate_cube(kMillionCubeCellsPerSide);
   return mesh;
 }
 

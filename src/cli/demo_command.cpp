@@ -142,7 +142,7 @@ AdaptationReport run_sphere_shell(const DemoOptions& options, Written& written) 
                 "element's min normalized Jacobian",
                 kShellNormalRatio * options.h, options.h);
   const JacobianPictureOptions figure{"Adapted and curved sphere shell, cut by the plane z = 0", subtitle,
-                                      PageRect{{{0.28, 0.28}}, {{0.58, 0.58}}},  // the detail: where the inner sphere meets x = y
+                                      Rect{{{0.28, 0.28}}, {{0.58, 0.58}}},  // the detail: where the inner sphere meets x = y
                                       CutPlane{}};
   write_svg(written.path(options, "sphere-shell-cut.svg"), jacobian_picture(mesh, jacobians, figure));
   write_histograms(volume_edge_gains(mesh, field, options.threads), jacobians, options, written);
@@ -164,7 +164,7 @@ CurvingReport run_shear_circle(const DemoOptions& options, Written& written) {
   const JacobianPictureOptions figure{"Shear-circle case (the paper's Fig. 1), curved",
                                       "P2 triangles drawn exactly (quadratic Bézier edges), filled by their min normalized Jacobian; "
                                       "sizes 0.001 across the circle r = 0.75, 0.1 along it",
-                                      PageRect{{{-0.06, 0.69}}, {{0.06, 0.81}}},  // the detail: the layer at its top
+                                      Rect{{{-0.06, 0.69}}, {{0.06, 0.81}}},  // the detail: the layer at its top
                                       CutPlane{}};
   write_svg(written.path(options, "shear-circle-p2.svg"), jacobian_picture(mesh, min_normalized_jacobians(mesh), figure));
   return report;

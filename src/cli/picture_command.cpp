@@ -42,10 +42,10 @@ CutPlane cut_plane(const std::string& cut) {
   return plane;
 }
 
-std::optional<PageRect> detail_box(const std::vector<double>& detail) {
+std::optional<Rect> detail_box(const std::vector<double>& detail) {
   if (detail.empty()) return std::nullopt;
   if (!(detail[0] < detail[2] && detail[1] < detail[3])) throw Error("--detail: XMIN YMIN XMAX YMAX with XMIN < XMAX and YMIN < YMAX");
-  return PageRect{{{detail[0], detail[1]}}, {{detail[2], detail[3]}}};
+  return Rect{{{detail[0], detail[1]}}, {{detail[2], detail[3]}}};
 }
 
 template <int D>

@@ -4,7 +4,7 @@
 
 namespace hocav {
 
-void draw_color_bar(SvgCanvas& canvas, const PageRect& bar, const ColorScale& scale, std::string_view title) {
+void draw_color_bar(SvgCanvas& canvas, const Rect& bar, const ColorScale& scale, std::string_view title) {
   constexpr int kSteps = 64;  // bands, each a shade: fine enough to look continuous
   const double band = bar.height() / kSteps;
   for (int step = 0; step < kSteps; ++step) {

@@ -10,6 +10,6 @@
 namespace hocav {
 
 // Draws the bar in `bar` (page units): `scale.upper` at the top, `scale.lower` at the bottom.
-void draw_color_bar(SvgCanvas& canvas, const PageRect& bar, const ColorScale& scale, std::string_view title);
+void draw_color_bar(SvgCanvas& canvas, const Rect& bar, const ColorScale& scale, std::string_view title);
 
 }  // namespace hocav

@@ -11,7 +11,7 @@ namespace {
 
 constexpr double kWidth = 720, kHeight = 440;
 // The plot area: room on the left for the count labels, below for the value labels.
-constexpr PageRect kPlot{{{90, 60}}, {{kWidth - 30, kHeight - 90}}};
+constexpr Rect kPlot{{{90, 60}}, {{kWidth - 30, kHeight - 90}}};
 const ShapeStyle kAxisStyle{"none", "#444444", 1};
 
 std::string figures_line(const ValueSummary& summary) {

@@ -23,8 +23,8 @@ inline constexpr int kCutSubdivisions = 8;
 
 struct JacobianPictureOptions {
   std::string title, subtitle;
-  std::optional<PageRect> detail;  // an enlarged view of this box (in the picture's coordinates)
-  CutPlane cut;                    // 3D: the plane drawn (default z = 0)
+  std::optional<Rect> detail;  // an enlarged view of this box (in the picture's coordinates)
+  CutPlane cut;                // 3D: the plane drawn (default z = 0)
 };
 
 // The min normalized Jacobian of each element, refined as the reports refine it.

@@ -10,27 +10,27 @@ namespace {
 constexpr double kPanel = 540, kMargin = 24, kTop = 78, kLegend = 120;
 const ShapeStyle kDetailStyle{"none", "#d62728", 1.6};
 
-PageRect panel_box(int column) {
+Rect panel_box(int column) {
   const double left = kMargin + column * (kPanel + kMargin);
   return {{{left, kTop}}, {{left + kPanel, kTop + kPanel}}};
 }
 
 }  // namespace
 
-SvgCanvas mesh_figure(const PageRect& world, const MeshFigureOptions& options, const PanelDrawing& draw) {
+SvgCanvas mesh_figure(const Rect& world, const MeshFigureOptions& options, const PanelDrawing& draw) {
   const int panels = options.detail ? 2 : 1;
   SvgCanvas canvas(kMargin + panels * (kPanel + kMargin) + kLegend, kTop + kPanel + kMargin);
   canvas.text({{kMargin, 32}}, options.title, {20, "start", true});
   canvas.text({{kMargin, 56}}, options.subtitle, {14, "start", false, 0, "#555555"});
 
-  const PageRect main = panel_box(0);
+  const Rect main = panel_box(0);
   const PageTransform whole(world, {main.lower + Vec2{{6, 6}}, main.upper - Vec2{{6, 6}}});
   draw(canvas, {whole, world, 0.35});
   if (options.detail) {
     canvas.rect(
         {whole({{options.detail->lower[0], options.detail->upper[1]}}), whole({{options.detail->upper[0], options.detail->lower[1]}})},
         kDetailStyle);
-    const PageRect side = panel_box(1);
+    const Rect side = panel_box(1);
     const PageTransform enlarged(*options.detail, side);
     canvas.begin_clip(side);
     draw(canvas, {enlarged, *options.detail, 0.9});

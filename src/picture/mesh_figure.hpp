@@ -17,20 +17,20 @@ struct MeshFigureOptions {
   std::string title, subtitle;
   ColorScale colors;
   std::string color_title;
-  std::optional<PageRect> detail;  // world box of the enlarged view
+  std::optional<Rect> detail;  // world box of the enlarged view
 };
 
 // One panel: where the world lands on the page, the part of the world it shows (what lies outside
 // needs not be drawn), and the stroke width of a cell edge there (page units).
 struct PanelView {
   PageTransform transform;
-  PageRect visible;
+  Rect visible;
   double line_width = 1;
 };
 
 // Draws the world content of a panel.
 using PanelDrawing = std::function<void(SvgCanvas& canvas, const PanelView& view)>;
 
-SvgCanvas mesh_figure(const PageRect& world, const MeshFigureOptions& options, const PanelDrawing& draw);
+SvgCanvas mesh_figure(const Rect& world, const MeshFigureOptions& options, const PanelDrawing& draw);
 
 }  // namespace hocav

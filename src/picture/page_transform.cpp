@@ -6,9 +6,9 @@
 
 namespace hocav {
 
-PageRect bounding_rect(std::span<const Vec2> points) {
+Rect bounding_rect(std::span<const Vec2> points) {
   if (points.empty()) return {};
-  PageRect box{points.front(), points.front()};
+  Rect box{points.front(), points.front()};
   for (const Vec2& p : points)
     for (int i = 0; i < 2; ++i) {
       box.lower[i] = std::min(box.lower[i], p[i]);
@@ -17,7 +17,7 @@ PageRect bounding_rect(std::span<const Vec2> points) {
   return box;
 }
 
-PageTransform::PageTransform(const PageRect& world, const PageRect& page)
+PageTransform::PageTransform(const Rect& world, const Rect& page)
     : world_center_(0.5 * (world.lower + world.upper)), page_center_(0.5 * (page.lower + page.upper)) {
   if (!(world.width() > 0 || world.height() > 0)) throw Error("internal error: a picture of an empty world box");
   scale_ = std::min(world.width() > 0 ? page.width() / world.width() : page.height() / world.height(),

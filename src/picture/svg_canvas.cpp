@@ -27,7 +27,7 @@ void SvgCanvas::path(const SvgPath& path, const ShapeStyle& style) {
   if (!path.empty()) body_ << "<path d=\"" << path.data() << '"' << style_attributes(style) << "/>\n";
 }
 
-void SvgCanvas::rect(const PageRect& box, const ShapeStyle& style) {
+void SvgCanvas::rect(const Rect& box, const ShapeStyle& style) {
   body_ << "<rect x=\"" << box.lower[0] << "\" y=\"" << box.lower[1] << "\" width=\"" << box.width() << "\" height=\"" << box.height()
         << '"' << style_attributes(style) << "/>\n";
 }
@@ -45,7 +45,7 @@ void SvgCanvas::text(const Vec2& at, std::string_view text, const TextStyle& sty
   body_ << '>' << xml_escaped(text) << "</text>\n";
 }
 
-void SvgCanvas::begin_clip(const PageRect& box) {
+void SvgCanvas::begin_clip(const Rect& box) {
   ++clips_;
   definitions_ << "<clipPath id=\"clip" << clips_ << "\"><rect x=\"" << box.lower[0] << "\" y=\"" << box.lower[1] << "\" width=\""
                << box.width() << "\" height=\"" << box.height() << "\"/></clipPath>\n";

@@ -33,12 +33,12 @@ class SvgCanvas {
   double height() const { return height_; }
 
   void path(const SvgPath& path, const ShapeStyle& style);
-  void rect(const PageRect& box, const ShapeStyle& style);
+  void rect(const Rect& box, const ShapeStyle& style);
   void line(const Vec2& from, const Vec2& to, const ShapeStyle& style);
   // `text` is escaped for XML (xml_escape.hpp).
   void text(const Vec2& at, std::string_view text, const TextStyle& style);
   // What is drawn until end_clip() shows only inside `box`.
-  void begin_clip(const PageRect& box);
+  void begin_clip(const Rect& box);
   void end_clip();
 
   // The complete document.

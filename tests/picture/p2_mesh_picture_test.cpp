@@ -27,7 +27,7 @@ TEST(P2MeshPicture, OnePathPerTriangleInEachPanelItShows) {
   const std::string outline = picture_test::parsed_svg_outline(p2_mesh_picture(mesh, values, options).document());
   EXPECT_NE(outline.find(" path=8 "), std::string::npos) << outline;
   // The detail shows the lower left cell's two triangles: only those are drawn again.
-  options.detail = PageRect{{{0, 0}}, {{0.4, 0.4}}};
+  options.detail = Rect{{{0, 0}}, {{0.4, 0.4}}};
   const std::string with_detail = picture_test::parsed_svg_outline(p2_mesh_picture(mesh, values, options).document());
   EXPECT_NE(with_detail.find(" path=10 "), std::string::npos) << with_detail;
   EXPECT_NE(with_detail.find("clipPath=1"), std::string::npos) << with_detail;

@@ -30,7 +30,7 @@ TEST(PageTransform, TallWorldIsLimitedByItsHeight) {
 
 TEST(PageTransform, BoundingBoxHoldsEveryPoint) {
   const std::vector<Vec2> points{{{1, -2}}, {{-3, 4}}, {{0.5, 0.5}}};
-  const PageRect box = bounding_rect(points);
+  const Rect box = bounding_rect(points);
   EXPECT_EQ(box.lower, (Vec2{{-3, -2}}));
   EXPECT_EQ(box.upper, (Vec2{{1, 4}}));
   for (const Vec2& p : points) EXPECT_TRUE(box.contains(p));
