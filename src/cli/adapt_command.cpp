@@ -166,7 +166,8 @@ void print_iteration(const DistributedIteration& figures) {
     line << "iteration " << figures.iteration << " of " << kDistributedIterations << ": metric " << figures.metric_fraction
          << " of the way, " << process_count() << " parts (their interfaces refined first: " << figures.interface_edges_split
          << " edges split, " << figures.interface_faces_turned << " faces turned), " << figures.interface_faces << " interface faces, "
-         << figures.interface_vertices << " of " << figures.vertices << " vertices on the interfaces, ";
+         << figures.interface_vertices << " of " << figures.vertices << " vertices on the interfaces, " << figures.unsettled_vertices
+         << " at edges left longer than 3, ";
     timing << "partition " << figures.seconds_partition << " s; parts " << rank_range(figures.part_seconds, 1) << " s";
   }
   line << figures.bytes_sent << " bytes sent, " << figures.seconds << " s (" << timing.str() << ", peak memory "

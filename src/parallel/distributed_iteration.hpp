@@ -19,6 +19,9 @@ struct DistributedIteration {
   // Before the parts' loops: the interface edges split, and the faces turned into the four triangles
   // of a uniform refinement (docs/distributed.md §Interfaces refined first).
   Index interface_edges_split = 0, interface_faces_turned = 0;
+  // After the parts' loops: the vertices at an edge they left unadapted (longer than
+  // kUnsettledEdgeLength in their metric), which the next partition keeps inside its parts.
+  Index unsettled_vertices = 0;
   Index region_elements = 0;  // the last runs': the elements near their seeds (that moved to rank 0 for its runs)
   // What the processes sent one another, without the input's broadcast: the migrations (the whole-mesh
   // iterations; the last runs' regions to their processes and to rank 0, then every element to rank 0).

@@ -10,6 +10,7 @@
 #include "parallel/interface_refinement.hpp"
 #include "parallel/part_adaptation.hpp"
 #include "parallel/part_migration.hpp"
+#include "parallel/unsettled_vertices.hpp"
 
 namespace hocav {
 namespace {
@@ -30,6 +31,15 @@ std::vector<std::vector<std::byte>> gathered_on_root(std::vector<std::byte> byte
   std::vector<std::vector<std::byte>> incoming = exchange_bytes(outgoing);
   if (process_rank() != 0) incoming.clear();
   return incoming;
+}
+
+// Per vertex: on the part's interfaces, or `unsettled`: the next partition cuts elsewhere, so that
+// its parts adapt them (docs/distributed.md §The scheme, step 4).
+template <int D>
+std::vector<char> zone_to_keep_inside(const Mesh<D>& mesh, std::vector<char> unsettled) {
+  const std::vector<char> interface = interface_vertex_flags(mesh);
+  for (std::size_t v = 0; v < unsettled.size(); ++v) unsettled[v] = unsettled[v] || interface[v];
+  return unsettled;
 }
 
 }  // namespace
@@ -77,10 +87,12 @@ PeerIterationResult run_peer_iteration(MeshPart<D>& part, Index& next_global_id,
   const PeerIterationResult result{runs_combined_on_root(run)};
 
   const auto moving = std::chrono::steady_clock::now();
+  std::vector<char> unsettled = unsettled_vertex_flags(part.mesh, iteration.metric, iteration.settings.threads);
+  figures.unsettled_vertices = distinct_count(global_ids_of(part, unsettled));
   long long bytes_sent = 0;
   if (iteration.next_metric)
-    part = repartition(part, expected_element_counts(part.mesh, *iteration.next_metric), interface_vertex_flags(part.mesh),
-                       iteration.partition_seed, &bytes_sent);
+    part = repartition(part, expected_element_counts(part.mesh, *iteration.next_metric),
+                       zone_to_keep_inside(part.mesh, std::move(unsettled)), iteration.partition_seed, &bytes_sent);
   figures.bytes_sent += sum_over_processes(bytes_sent);
   figures.seconds_partition += seconds_since(moving);
   figures.seconds += seconds_since(start);

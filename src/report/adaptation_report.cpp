@@ -90,7 +90,7 @@ void write_distributed_iterations(JsonWriter& json, const std::vector<Distribute
     json.member("vertices", it.vertices).member("elements", it.elements);
     json.member("interface_vertices", it.interface_vertices).member("interface_faces", it.interface_faces);
     json.member("interface_edges_split", it.interface_edges_split).member("interface_faces_turned", it.interface_faces_turned);
-    json.member("region_elements", it.region_elements);
+    json.member("unsettled_vertices", it.unsettled_vertices).member("region_elements", it.region_elements);
     json.member("bytes_sent", it.bytes_sent)
         .member("back_mesh_bytes", it.back_mesh_bytes)
         .member("seconds", it.seconds)
