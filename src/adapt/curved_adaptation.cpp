@@ -42,7 +42,7 @@ constexpr double kQualityGain = 1.01;
 // Swaps and moves are tried on the elements below this curved quality: each try optimizes and
 // certifies a whole shell or ball, and better elements gain little (docs/adaptation.md §Curved
 // passes: moving every inner vertex took the sphere shell's curved run to 2.3x adapt-then-curve).
-constexpr double kPoorQuality = 0.5;
+constexpr double kTryBelowQuality = 0.5;
 // No operation makes a straight simplex of metric mean ratio below min(this, the worst it replaces):
 // the P1 loop's collapse floor, which its output respects (min 0.093 on the boundary-layer shell).
 // Without it the curved passes left straight simplices down to 0.001 there, valid curved elements
@@ -236,11 +236,11 @@ double worst_element_quality(const Mesh<D>& mesh, const P2Operations<D>& operati
   return std::accumulate(worst.begin(), worst.end(), INFINITY, [](double x, double y) { return std::min(x, y); });
 }
 
-// The poor elements: below kPoorQuality, in order (their qualities measured on the pool's threads).
+// The poor elements: below kTryBelowQuality, in order (their qualities measured on the pool's threads).
 template <int D>
 std::vector<Index> poor_elements(const Mesh<D>& mesh, const P2Operations<D>& operations, ThreadPool& pool) {
   return scan_in_chunks<Index>(pool, mesh.element_count(), [&](Index k, std::vector<Index>& out) {
-    if (operations.quality(k) < kPoorQuality) out.push_back(k);
+    if (operations.quality(k) < kTryBelowQuality) out.push_back(k);
   });
 }
 
