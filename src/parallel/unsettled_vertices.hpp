@@ -10,7 +10,8 @@
 namespace hocav {
 
 // An edge this long in the metric its loop adapted to was left unadapted: the loop's converged
-// residue outside the unit window is spread everywhere but stays below it.
+// residue outside the unit window is spread everywhere but stays below it (up to about 2.3), and a
+// bound of 6 let the 1M cube on 4 processes run away (docs/benchmarks.md "Sixty-second session").
 constexpr double kUnsettledEdgeLength = 3;
 
 // Per vertex of `mesh`: an end of an element edge longer than kUnsettledEdgeLength in `metric`.
