@@ -20,7 +20,7 @@ template <int D>
 struct FaceSide {
   std::int64_t group;
   FaceKey<D> face;
-  std::int32_t process, near_old_interface;
+  std::int32_t process, near_kept_inside;
 };
 
 // A face's vertices, in the element's order.
@@ -64,7 +64,7 @@ GroupMembers members_of(const ElementGroups& groups) {
 }  // namespace
 
 template <int D>
-DistributedGraph distributed_element_graph(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> old_interface,
+DistributedGraph distributed_element_graph(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> kept_inside,
                                            const ElementGroups& groups) {
   const Mesh<D>& mesh = part.mesh;
   if (loads.size() != static_cast<std::size_t>(mesh.element_count()) || groups.group_of.size() != loads.size())
@@ -79,7 +79,7 @@ DistributedGraph distributed_element_graph(const MeshPart<D>& part, std::span<co
   for (Index k = 0; k < mesh.element_count(); ++k) group_loads[groups.group_of[k]] += loads[k];
   graph.rows.vertex_weights = integer_loads(group_loads, total);
   std::vector<char> near(static_cast<std::size_t>(mesh.element_count()));
-  for (Index k = 0; k < mesh.element_count(); ++k) near[k] = touches<D>(mesh.element(k), old_interface);
+  for (Index k = 0; k < mesh.element_count(); ++k) near[k] = touches<D>(mesh.element(k), kept_inside);
 
   // This side of each interface facet, by its element face.
   std::vector<char> interface_face(static_cast<std::size_t>(mesh.element_count()) * (D + 1), 0);
@@ -102,10 +102,10 @@ DistributedGraph distributed_element_graph(const MeshPart<D>& part, std::span<co
       for (int face = 0; face <= D; ++face) {
         if (const Index other = mesh.neighbor(k, face); other != kNoIndex) {
           if (groups.group_of[other] != g)
-            arcs.emplace_back(graph.first + groups.group_of[other], near[k] && near[other] ? kOldInterfaceFaceWeight : 1);
+            arcs.emplace_back(graph.first + groups.group_of[other], near[k] && near[other] ? kKeptInsideFaceWeight : 1);
         } else if (interface_face[static_cast<std::size_t>(k) * (D + 1) + face]) {
           const FaceSide<D>& side = across.at(global_key<D>(part, face_vertices_of<D>(mesh.element(k), face)));
-          arcs.emplace_back(side.group, near[k] && side.near_old_interface ? kOldInterfaceFaceWeight : 1);
+          arcs.emplace_back(side.group, near[k] && side.near_kept_inside ? kKeptInsideFaceWeight : 1);
         }
       }
     }
@@ -115,10 +115,10 @@ DistributedGraph distributed_element_graph(const MeshPart<D>& part, std::span<co
 }
 
 template <int D>
-std::vector<int> partition_distributed_part(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> old_interface,
+std::vector<int> partition_distributed_part(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> kept_inside,
                                             std::int64_t seed) {
   const ElementGroups groups = neighbouring_element_groups(part.mesh);
-  const std::vector<int> group_parts = partition_distributed_graph(distributed_element_graph(part, loads, old_interface, groups),
+  const std::vector<int> group_parts = partition_distributed_graph(distributed_element_graph(part, loads, kept_inside, groups),
                                                                    process_count(), seed);
   std::vector<int> parts(groups.group_of.size());
   for (std::size_t k = 0; k < parts.size(); ++k) parts[k] = group_parts[static_cast<std::size_t>(groups.group_of[k])];

@@ -22,11 +22,11 @@ struct DistributedGraph {
 // Every process at once: the rows of its part's groups of elements (the part with its topology;
 // `groups` within the part), weighted as element_graph weighs elements: a group's load is its
 // elements' `loads` (their sum over every process scales the weights), and an arc between two groups
-// weighs the faces between them, each as element_graph's (`old_interface` per vertex of the part, may
+// weighs the faces between them, each as element_graph's (`kept_inside` per vertex of the part, may
 // be empty). A neighbour across an interface facet is found by meeting the other side's request at
 // the process that the facet's global vertex ids hash to.
 template <int D>
-DistributedGraph distributed_element_graph(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> old_interface,
+DistributedGraph distributed_element_graph(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> kept_inside,
                                            const ElementGroups& groups);
 
 // PT-Scotch's partition of the distributed `graph` into `part_count` parts of balanced weight and
@@ -36,7 +36,7 @@ std::vector<int> partition_distributed_graph(const DistributedGraph& graph, int 
 // Every process at once: the process each element of its part (with its topology) goes to, PT-Scotch
 // cutting the graph of neighbouring_element_groups (arguments as distributed_element_graph's).
 template <int D>
-std::vector<int> partition_distributed_part(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> old_interface,
+std::vector<int> partition_distributed_part(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> kept_inside,
                                             std::int64_t seed);
 
 }  // namespace hocav

@@ -25,18 +25,18 @@ std::vector<std::int64_t> integer_loads(std::span<const double> loads, double to
 }
 
 template <int D>
-WeightedGraph element_graph(const Mesh<D>& mesh, std::span<const double> loads, std::span<const char> old_interface) {
+WeightedGraph element_graph(const Mesh<D>& mesh, std::span<const double> loads, std::span<const char> kept_inside) {
   WeightedGraph graph;
   graph.vertex_weights = integer_loads(loads, sum_of(loads));
   graph.offsets.push_back(0);
   for (Index k = 0; k < mesh.element_count(); ++k) {
-    const bool near_old_interface = touches<D>(mesh.element(k), old_interface);
+    const bool near_kept_inside = touches<D>(mesh.element(k), kept_inside);
     for (int face = 0; face <= D; ++face) {
       const Index other = mesh.neighbor(k, face);
       if (other == kNoIndex) continue;
       graph.neighbours.push_back(other);
-      const bool heavy = near_old_interface && touches<D>(mesh.element(other), old_interface);
-      graph.edge_weights.push_back(heavy ? kOldInterfaceFaceWeight : 1);
+      const bool heavy = near_kept_inside && touches<D>(mesh.element(other), kept_inside);
+      graph.edge_weights.push_back(heavy ? kKeptInsideFaceWeight : 1);
     }
     graph.offsets.push_back(static_cast<std::int64_t>(graph.neighbours.size()));
   }

@@ -25,9 +25,10 @@ std::vector<std::int64_t> integer_loads(std::span<const double> loads, double to
 // The largest load imbalance a part may have, in Scotch's and PT-Scotch's partitions.
 constexpr double kPartImbalance = 0.05;
 
-// A face joining two elements that both touch a vertex of the last interfaces weighs this many
-// ordinary faces: the partitioner then cuts elsewhere, and the old interfaces fall inside parts.
-constexpr std::int64_t kOldInterfaceFaceWeight = 100;
+// A face joining two elements that both touch a vertex to keep inside the parts (of the last
+// interfaces, or at an edge their loops left unadapted) weighs this many ordinary faces: the
+// partitioner then cuts elsewhere (docs/distributed.md §The scheme, step 4).
+constexpr std::int64_t kKeptInsideFaceWeight = 100;
 
 // Whether `element` has a vertex marked in `marked` (per vertex; none when it is empty).
 template <int D>
@@ -36,9 +37,9 @@ bool touches(const typename Mesh<D>::Element& element, std::span<const char> mar
 }
 
 // The dual graph of `mesh` (with topology): element k weighs in proportion to `loads[k]` (at least
-// 1); `old_interface` (per vertex, may be empty) marks the vertices of the last interfaces.
+// 1); `kept_inside` (per vertex, may be empty) marks the vertices to keep inside parts.
 template <int D>
-WeightedGraph element_graph(const Mesh<D>& mesh, std::span<const double> loads, std::span<const char> old_interface);
+WeightedGraph element_graph(const Mesh<D>& mesh, std::span<const double> loads, std::span<const char> kept_inside);
 
 // The dual graph of the elements marked in `members` (per element), joined across the faces they
 // share with other members; graph vertex i is element `elements[i]` (in mesh order), weighing in

@@ -85,10 +85,10 @@ template std::vector<Index> migrated_facet_values(const MeshPart<2>&, std::span<
 template std::vector<Index> migrated_facet_values(const MeshPart<3>&, std::span<const Index>, std::span<const int>, long long*);
 
 template <int D>
-MeshPart<D> repartition(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> old_interface,
+MeshPart<D> repartition(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> kept_inside,
                         std::int64_t partition_seed, long long* bytes_sent) {
   // (The graph is a temporary: freed before the migration, which holds the old part and the new.)
-  const std::vector<int> destination = partition_distributed_part(part, loads, old_interface, partition_seed);
+  const std::vector<int> destination = partition_distributed_part(part, loads, kept_inside, partition_seed);
   return migrate_part(part, destination, bytes_sent);
 }
 

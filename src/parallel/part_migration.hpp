@@ -41,10 +41,10 @@ std::vector<Index> migrated_facet_values(const MeshPart<D>& part, std::span<cons
                                          long long* bytes_sent = nullptr);
 
 // Every process at once: the parts cut again by PT-Scotch (the distributed graph of the parts, weighed
-// by `loads` per element and heavy across faces near `old_interface` vertices, which may be empty:
+// by `loads` per element and heavy across faces near the `kept_inside` vertices, which may be empty:
 // distributed_element_graph) and the elements migrated to the new parts.
 template <int D>
-MeshPart<D> repartition(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> old_interface,
+MeshPart<D> repartition(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> kept_inside,
                         std::int64_t partition_seed, long long* bytes_sent = nullptr);
 
 }  // namespace hocav
