@@ -100,7 +100,6 @@ def check_iterations(path, processes, cube_steps=True):
     # then what is left where two processes' regions meet to rank 0, which ran its own.
     assert 0 < in_parts["region_elements"] < iterations[-1]["elements"], in_parts
     assert in_parts["bytes_sent"] > 0 and sum(in_parts["part_seconds"]) > 0, in_parts
-    assert in_parts["unsettled_vertices"] == 0 and last_runs["unsettled_vertices"] == 0, (in_parts, last_runs)
     assert last_runs["region_elements"] < in_parts["region_elements"], (in_parts, last_runs)
     # Rank 0 runs only with a region (without, its part had its last runs in the parts').
     assert (last_runs["part_seconds"][0] > 0) == (last_runs["region_elements"] > 0), last_runs
