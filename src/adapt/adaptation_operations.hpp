@@ -19,9 +19,9 @@ enum class SplitsAtRequiredVertices {
   // None at a required vertex (the distributed loop's last runs, whose frozen border is not refined
   // first: splits next to it kept them from converging).
   kNone,
-  // Not an edge between two required vertices, nor one at a required vertex on a required facet's
-  // edge longer than 2; at a required vertex on the domain's boundary (a facet that is not required)
-  // only a boundary edge where the boundary is flat (its point on the geometry its middle).
+  // Not one at a required vertex on a required facet's edge longer than 2; at a required vertex on
+  // the domain's boundary (a facet that is not required) only a boundary edge where the boundary is
+  // flat (its point on the geometry its middle). (A required facet's own edges are kept as ever.)
   kNextToFineRequiredFacets,
 };
 

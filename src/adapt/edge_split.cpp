@@ -298,8 +298,7 @@ Refusal split_edge(AdaptationMesh<D>& am, Index a, Index b, const SplitPreview<D
 
 // Per vertex, as `splits` bars edges at it: kBarredEnd for a required vertex (kNextToFineRequiredFacets:
 // one on a required facet's edge longer than 2), kBoundaryEnd for a required vertex on the domain's
-// boundary (a facet that is not required), kRequiredEnd for another required vertex (an edge between
-// two is barred), 0 otherwise.
+// boundary (a facet that is not required), kRequiredEnd for another required vertex, 0 otherwise.
 constexpr char kRequiredEnd = 1, kBoundaryEnd = 2, kBarredEnd = 3;
 template <int D>
 std::vector<char> barred_split_ends(const AdaptationMesh<D>& am, SplitsAtRequiredVertices splits) {
@@ -353,7 +352,7 @@ SplitSweep split_long_edges(AdaptationMesh<D>& am, const AdaptationLimits& limit
   if (limits.splits_at_required_vertices != SplitsAtRequiredVertices::kEvery) {
     barred = barred_split_ends(am, limits.splits_at_required_vertices);
     std::erase_if(candidates, [&](const EdgeCandidate& c) {
-      const bool barred_edge = (barred[c.a] && barred[c.b]) || barred[c.a] == kBarredEnd || barred[c.b] == kBarredEnd;
+      const bool barred_edge = barred[c.a] == kBarredEnd || barred[c.b] == kBarredEnd;
       if (barred_edge) count.add(Refusal::kClasses);
       return barred_edge;
     });

@@ -1,6 +1,7 @@
 #include "parallel/interface_refinement.hpp"
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <numbers>
 #include <unordered_map>
@@ -24,6 +25,9 @@ namespace {
 // (SplitsAtRequiredVertices::kNextToFineRequiredFacets; docs/distributed.md §Interfaces refined first).
 constexpr double kSplitLength = std::numbers::sqrt2;
 constexpr int kMostTurnRounds = 4;
+// A side is flat at an edge when the geometry puts its middle within this share of its length (the
+// parts' loop splits a flat side's edges by the same bound, edge_split.cpp).
+constexpr double kFlatTolerance = 1e-9;
 
 using EdgeKey = FaceKey<2>;
 
@@ -67,13 +71,16 @@ std::vector<Index> facets_through(const Mesh<D>& mesh, std::span<const Index> el
 }
 
 // Plans the star of `shell`, the elements around edge (a, b), from `vertex`, the facets through the
-// edge re-starred with it: a split from its middle, a face's turn from another middle.
+// edge re-starred with it (and `line`, on the edge, when not kNoIndex): a split from its middle, a
+// face's turn from another middle.
 template <int D>
 bool star_planned(const Mesh<D>& mesh, std::span<const Index> shell, Index a, Index b, Index vertex, CavityOperator<D>& op,
-                  double min_relative_measure = CavityOptions{}.min_relative_measure) {
+                  double min_relative_measure = CavityOptions{}.min_relative_measure, Index line = kNoIndex) {
   const std::vector<Index> facets = facets_through(mesh, shell, a, b);
   CavityOptions options;
   options.removed_facets = facets;
+  const Index lines[1] = {line};
+  if (line != kNoIndex) options.removed_lines = lines;
   options.min_relative_measure = min_relative_measure;
   return op.plan(mesh, shell, vertex, options) == CavityStatus::kAccepted;
 }
@@ -94,20 +101,57 @@ std::vector<std::array<Index, 2>> interface_edges(const Mesh<D>& mesh) {
   return edges;
 }
 
-// The edges of the part's other facets and of its feature lines, which the refinement keeps.
+// The part's edges that are no interface's alone: those of its feature lines, those of its other
+// facets (the domain's boundary, or a facet between materials) with the ref of such a facet, and
+// those of its faces that hold two facets (an interface face with a facet of the mesh's own on it,
+// of which the elements' faces link one).
+struct BoundaryEdges {
+  std::unordered_set<std::uint64_t> on_lines, on_doubled_faces;
+  std::unordered_map<std::uint64_t, int> on_facets;
+};
+
 template <int D>
-std::unordered_set<std::uint64_t> kept_edges(const Mesh<D>& mesh) {
-  std::unordered_set<std::uint64_t> kept;
+BoundaryEdges boundary_edges(const Mesh<D>& mesh) {
+  BoundaryEdges edges;
+  std::map<typename Mesh<D>::Facet, Index> faces;
   for (Index f = 0; f < mesh.facet_count(); ++f) {
-    if (mesh.facet_removed(f) || mesh.facet_ref(f) == kInterfaceRef) continue;
-    const auto& facet = mesh.facet(f);
+    if (mesh.facet_removed(f)) continue;
+    auto facet = mesh.facet(f);
+    std::sort(facet.begin(), facet.end());
+    const bool doubled = ++faces[facet] > 1;
     for (int i = 0; i < D; ++i)
-      for (int j = 0; j < i; ++j) kept.insert(Mesh<D>::edge_key(facet[i], facet[j]));
+      for (int j = 0; j < i; ++j) {
+        const std::uint64_t key = Mesh<D>::edge_key(facet[i], facet[j]);
+        if (doubled) edges.on_doubled_faces.insert(key);
+        if (mesh.facet_ref(f) != kInterfaceRef) edges.on_facets.emplace(key, mesh.facet_ref(f));
+      }
   }
   if constexpr (D == 3)
     for (Index l = 0; l < mesh.line_count(); ++l)
-      if (!mesh.line_removed(l)) kept.insert(Mesh<D>::edge_key(mesh.line(l)[0], mesh.line(l)[1]));
-  return kept;
+      if (!mesh.line_removed(l)) edges.on_lines.insert(Mesh<D>::edge_key(mesh.line(l)[0], mesh.line(l)[1]));
+  return edges;
+}
+
+// Whether the domain's boundary lets interface edge (a, b), its shell `shell`, be split at its
+// middle: the edge is off it, or it is where the interface meets a side (the shell's two facets
+// through the edge one of the interface and one of the side) and the side's geometry puts the
+// middle where it is (a flat side: both sides of the interface then hold the new vertex on the
+// geometry). A feature line's edge, and a curved side's, are kept: their middles would need the
+// geometry on both sides.
+template <int D>
+bool boundary_lets_split(const Mesh<D>& mesh, const BoundaryEdges& edges, const BoundaryGeometry<D>* geometry, std::span<const Index> shell,
+                         Index a, Index b) {
+  const std::uint64_t key = Mesh<D>::edge_key(a, b);
+  if (edges.on_lines.contains(key) || edges.on_doubled_faces.contains(key)) return false;
+  const auto side = edges.on_facets.find(key);
+  if (side == edges.on_facets.end()) return true;
+  if (!geometry) return false;
+  const std::vector<Index> facets = facets_through(mesh, shell, a, b);
+  if (facets.size() != 2) return false;
+  const std::array<int, 2> refs{mesh.facet_ref(facets[0]), mesh.facet_ref(facets[1])};
+  if (std::minmax(refs[0], refs[1]) != std::minmax(kInterfaceRef, side->second)) return false;
+  const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
+  return norm(geometry->project(middle, {side->second}).point - middle) <= kFlatTolerance * norm(mesh.vertex(b) - mesh.vertex(a));
 }
 
 // Per edge, how many of the mesh's elements hold it (a shell walk finds only the fan it starts in).
@@ -138,22 +182,45 @@ bool one_fan_of_one_ref(const Mesh<D>& mesh, std::span<const Index> shell, Index
   return std::all_of(shell.begin(), shell.end(), [&](Index k) { return mesh.element_ref(k) == mesh.element_ref(shell.front()); });
 }
 
+// Where an interface meets a side of the domain along edge (a, b) (its facets there of two refs), a
+// line on the edge for the time of its split: the operator re-stars each ref's facets within that
+// ref, and where two refs meet it needs the line between them. kNoIndex elsewhere.
+template <int D>
+Index junction_line(Mesh<D>& mesh, std::span<const Index> shell, Index a, Index b) {
+  if constexpr (D == 3) {
+    const std::vector<Index> facets = facets_through(mesh, shell, a, b);
+    for (Index f : facets)
+      if (mesh.facet_ref(f) != mesh.facet_ref(facets.front())) return mesh.add_line({a, b});
+  }
+  return kNoIndex;
+}
+
+// Removes the lines at vertex m: a junction line's halves after its split (the part had no line there).
+template <int D>
+void remove_lines_at(Mesh<D>& mesh, Index m) {
+  if constexpr (D == 3)
+    for (Index l = 0; l < mesh.line_count(); ++l)
+      if (!mesh.line_removed(l) && (mesh.line(l)[0] == m || mesh.line(l)[1] == m)) mesh.remove_line(l);
+}
+
 // Whether the split of edge (a, b) at its middle, its shell `shell`, would be accepted (a bisection
 // is valid, but may be too flat for the operator's measure floor).
 template <int D>
 bool split_accepted(Mesh<D>& mesh, Index a, Index b, std::span<const Index> shell, CavityOperator<D>& op) {
+  const Index line = junction_line(mesh, shell, a, b);
   const Index m = mesh.add_vertex(0.5 * (mesh.vertex(a) + mesh.vertex(b)));
-  const bool accepted = star_planned(mesh, shell, a, b, m, op);
+  const bool accepted = star_planned(mesh, shell, a, b, m, op, CavityOptions{}.min_relative_measure, line);
   mesh.pop_vertex();
+  if (line != kNoIndex) mesh.remove_line(line);
   return accepted;
 }
 
 // This process's view of each interface edge: whether it may split it, and its length.
 template <int D>
-std::vector<EdgeSide> edge_sides(MeshPart<D>& part, const AdaptationMetric<D>& metric, std::span<const std::array<Index, 2>> edges,
-                                 CavityOperator<D>& op) {
+std::vector<EdgeSide> edge_sides(MeshPart<D>& part, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
+                                 std::span<const std::array<Index, 2>> edges, CavityOperator<D>& op) {
   Mesh<D>& mesh = part.mesh;
-  const std::unordered_set<std::uint64_t> kept = kept_edges(mesh);
+  const BoundaryEdges on_boundary = boundary_edges(mesh);
   const std::unordered_map<std::uint64_t, Index> holders = holder_counts(mesh, edges);
   const std::vector<char> whole = whole_balls(mesh);
   std::unordered_map<Index, SymMat<D>> metrics;
@@ -168,8 +235,8 @@ std::vector<EdgeSide> edge_sides(MeshPart<D>& part, const AdaptationMetric<D>& m
   for (const auto& [a, b] : edges) {
     collect_shell(mesh, a, b, shell);
     const std::uint64_t key = Mesh<D>::edge_key(a, b);
-    const bool splittable = whole[a] && whole[b] && !kept.contains(key) && one_fan_of_one_ref(mesh, shell, holders.at(key)) &&
-                            split_accepted(mesh, a, b, shell, op);
+    const bool splittable = whole[a] && whole[b] && boundary_lets_split(mesh, on_boundary, geometry, std::span<const Index>(shell), a, b) &&
+                            one_fan_of_one_ref(mesh, shell, holders.at(key)) && split_accepted(mesh, a, b, shell, op);
     const double length = metric_edge_length<D>(mesh.vertex(a), mesh.vertex(b), metric_of(a), metric_of(b));
     sides.push_back({global_edge(part, a, b), process_rank(), splittable ? 1 : 0, length});
   }
@@ -212,12 +279,14 @@ template <int D>
 Index split_interface_edge(MeshPart<D>& part, Index a, Index b, Index global_id, CavityOperator<D>& op, std::vector<Index>& shell) {
   Mesh<D>& mesh = part.mesh;
   collect_shell(mesh, a, b, shell);
+  const Index line = junction_line(mesh, std::span<const Index>(shell), a, b);
   const Index m = mesh.add_vertex(0.5 * (mesh.vertex(a) + mesh.vertex(b)));
   // (Every side agreed on the split when its plan passed the measure floor; bisections since may
   // have thinned the shell, and halves of a positive element are positive.)
-  if (!star_planned(mesh, std::span<const Index>(shell), a, b, m, op, 0))
+  if (!star_planned(mesh, std::span<const Index>(shell), a, b, m, op, 0, line))
     throw Error("distributed adaptation: the agreed split of an interface edge was refused");
   op.commit(mesh);
+  if (line != kNoIndex) remove_lines_at(mesh, m);
   mesh.required_vertices().push_back(m);
   part.global_ids.push_back(global_id);
   if (!part.pinned.empty()) part.pinned.push_back(0);
@@ -376,13 +445,14 @@ void require_interface_facets(Mesh<D>& mesh) {
 // The agreed splits are made in the order of their keys, the same on every side, so that an
 // interface face is cut alike on both; then the 3D faces are turned.
 template <int D>
-InterfaceRefinement refine_interfaces(MeshPart<D>& part, const AdaptationMetric<D>& metric, Index& next_global_id) {
+InterfaceRefinement refine_interfaces(MeshPart<D>& part, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
+                                      Index& next_global_id) {
   InterfaceRefinement out;
   if (!part.mesh.has_topology() && part.mesh.element_count() > 0) part.mesh.build_topology();
   const std::vector<std::array<Index, 2>> edges = interface_edges(part.mesh);
   CavityOperator<D> op;
   const Index first_id = next_global_id;
-  const std::map<EdgeKey, Index> splits = agreed_splits(edge_sides(part, metric, edges, op), kSplitLength, next_global_id);
+  const std::map<EdgeKey, Index> splits = agreed_splits(edge_sides(part, metric, geometry, edges, op), kSplitLength, next_global_id);
   out.edges_split = next_global_id - first_id;
   std::vector<SplitFace> faces = faces_of_splits(part, splits);
   const std::unordered_map<Index, Index> local = local_ids_of(part);
@@ -402,7 +472,7 @@ InterfaceRefinement refine_interfaces(MeshPart<D>& part, const AdaptationMetric<
   return out;
 }
 
-template InterfaceRefinement refine_interfaces(MeshPart<2>&, const AdaptationMetric<2>&, Index&);
-template InterfaceRefinement refine_interfaces(MeshPart<3>&, const AdaptationMetric<3>&, Index&);
+template InterfaceRefinement refine_interfaces(MeshPart<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*, Index&);
+template InterfaceRefinement refine_interfaces(MeshPart<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*, Index&);
 
 }  // namespace hocav

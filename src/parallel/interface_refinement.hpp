@@ -8,6 +8,7 @@
 
 #include "adapt/adaptation_metric.hpp"
 #include "parallel/mesh_parts.hpp"
+#include "surface/boundary_geometry.hpp"
 
 namespace hocav {
 
@@ -18,14 +19,16 @@ struct InterfaceRefinement {
 };
 
 // Every process at once: the part's interface edges longer than √2 in `metric` split at their
-// middles on every side that holds them; an edge is kept when a side holds it on another facet or a
-// feature line, in elements of two refs or in separate fans, at a vertex it holds in separate fans,
-// or when the operator would refuse its split. The new vertices are interface vertices (required),
+// middles on every side that holds them; an edge is kept when a side holds it on a feature line, on
+// a facet of the domain's boundary where `geometry` (null: none) does not put its middle where it is
+// (a curved side, or no geometry), in elements of two refs or in separate fans, at a vertex it holds
+// in separate fans, or when the operator would refuse its split. The new vertices are interface vertices (required),
 // numbered from `next_global_id` (which advances by as many on every process). Then (3D) each
 // interface face whose three edges were split has the median its bisections left turned, where both
 // sides can (their stars valid, no other turn next to them): its corner triangles and its middle
 // one. Throws Error if the sides' meshes disagree.
 template <int D>
-InterfaceRefinement refine_interfaces(MeshPart<D>& part, const AdaptationMetric<D>& metric, Index& next_global_id);
+InterfaceRefinement refine_interfaces(MeshPart<D>& part, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
+                                      Index& next_global_id);
 
 }  // namespace hocav

@@ -74,7 +74,7 @@ template <int D>
 PeerIterationResult run_peer_iteration(MeshPart<D>& part, Index& next_global_id, const PeerIteration<D>& iteration,
                                        DistributedIteration& figures) {
   const auto start = std::chrono::steady_clock::now();
-  const InterfaceRefinement refined = refine_interfaces(part, iteration.metric, next_global_id);
+  const InterfaceRefinement refined = refine_interfaces(part, iteration.metric, iteration.geometry, next_global_id);
   figures.interface_edges_split = refined.edges_split;
   figures.interface_faces_turned = refined.faces_turned;
   const auto [run, own] = adapt_part_measured(part, iteration.metric, iteration.geometry, iteration.settings);

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <tuple>
 #include <utility>
 
 #include "../mesh/inner_facet_meshes.hpp"
@@ -16,6 +17,7 @@
 #include "adapt/adaptation_mesh.hpp"
 #include "adapt_test_support.hpp"
 #include "mesh/measure.hpp"
+#include "metric/metric_field.hpp"
 #include "report/mesh_statistics.hpp"
 
 namespace hocav {
@@ -400,6 +402,52 @@ TEST(AdaptationPasses, SplitAndCollapseEachDoWhatTheySay) {
   mesh.compact();
   adapt_test::expect_closed_and_consistent(mesh);
   EXPECT_NEAR(total_measure(mesh), 1, 1e-12);
+}
+
+// A distributed part's split rule (SplitsAtRequiredVertices::kNextToFineRequiredFacets) cuts an edge
+// between two required vertices that lies on no required facet: such an edge crosses the part from
+// one interface vertex to another, and left long it kept the splits beside it cutting ever thinner
+// elements (docs/distributed.md §Interfaces refined first). A metric fine across the square's
+// diagonals makes them the only long edges.
+TEST(AdaptationPasses, ADistributedPartSplitsAnEdgeBetweenTwoRequiredVertices) {
+  Mesh<2> mesh = adapt_test::unit_mesh<2>(4);
+  const auto interior = [&](Index v) {
+    return mesh.vertex(v)[0] > 0 && mesh.vertex(v)[0] < 1 && mesh.vertex(v)[1] > 0 && mesh.vertex(v)[1] < 1;
+  };
+  Index a = kNoIndex, b = kNoIndex;  // a diagonal between two inner vertices
+  for (const auto& element : mesh.elements())
+    for (int i = 0; i < 3 && a == kNoIndex; ++i) {
+      const Index x = element[i], y = element[(i + 1) % 3];
+      if (interior(x) && interior(y) && norm(mesh.vertex(y) - mesh.vertex(x)) > 0.3)
+        std::tie(a, b) = std::pair(std::min(x, y), std::max(x, y));
+    }
+  ASSERT_NE(a, kNoIndex);
+  const Vec2 along = (1 / norm(mesh.vertex(b) - mesh.vertex(a))) * (mesh.vertex(b) - mesh.vertex(a));
+  SymMat<2> metric;  // size 0.2 along the diagonals (they are 1.77 long), 1 across
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) metric(i, j) = (i == j ? 1.0 : 0.0) + (1 / 0.04 - 1) * along[i] * along[j];
+  const Mesh<2> back = mesh;
+  const MetricField<2> field(back, std::vector<SymMat<2>>(static_cast<std::size_t>(back.vertex_count()), metric));
+  const AdaptationMetric<2> adaptation_metric(field, SizeBounds{});
+  mesh.required_vertices() = {a, b};
+  AdaptationMesh<2> am(mesh, adaptation_metric, nullptr, 45);
+  AdaptationLimits limits;
+  limits.splits_at_required_vertices = SplitsAtRequiredVertices::kNextToFineRequiredFacets;
+  ThreadPool pool(1);
+  EXPECT_GT(split_long_edges(am, limits, pool).count.done, 0);
+  adapt_test::expect_closed_and_consistent(mesh);
+  for (const auto& element : mesh.elements())
+    EXPECT_FALSE(std::count(element.begin(), element.end(), a) && std::count(element.begin(), element.end(), b))
+        << "the edge between the required vertices " << a << " and " << b << " is still there";
+  limits.splits_at_required_vertices = SplitsAtRequiredVertices::kNone;  // the last runs': none at a required vertex
+  Mesh<2> again = adapt_test::unit_mesh<2>(4);
+  again.required_vertices() = {a, b};
+  AdaptationMesh<2> am_again(again, adaptation_metric, nullptr, 45);
+  split_long_edges(am_again, limits, pool);
+  bool kept = false;
+  for (const auto& element : again.elements())
+    kept = kept || (std::count(element.begin(), element.end(), a) && std::count(element.begin(), element.end(), b));
+  EXPECT_TRUE(kept);
 }
 
 // A boundary split whose point on the geometry would turn its facets past the feature angle goes

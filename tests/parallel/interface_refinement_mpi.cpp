@@ -1,13 +1,15 @@
 // The interfaces refined before the parts' loops (docs/distributed.md §Interfaces refined first),
 // run by ctest under `mpirun -np N` (N = 2, 3, 4). Every process makes the same Kuhn cube and square
 // and keeps its slab of x (on 2 and 3 processes the slabs meet on lattice planes; on 4 the cut is
-// jagged), then refines the interfaces in a metric finer than every edge:
+// jagged), then refines the interfaces in a metric finer than every edge, without a geometry and
+// with the P3 surrogate of the cube (whose sides are flat):
 // - the parts still meet face to face (each interface face has exactly two sides), a vertex has
 //   one point wherever it is held, no global id is given twice, every element is positive and the
-//   parts fill the domain;
-// - every interface edge off the domain's boundary is split once, and on a lattice plane every face
-//   with three such edges is turned into the four triangles of a uniform refinement (a quarter of
-//   its facets then has three new vertices; with the bisections alone none would);
+//   parts fill the domain, and no line is left where an interface meets a side;
+// - every interface edge off the domain's boundary is split once (with the geometry, every
+//   interface edge: those on the cube's flat sides too), and on a lattice plane every face with
+//   three such edges is turned into the four triangles of a uniform refinement (a quarter of its
+//   facets then has three new vertices; with the bisections alone none would);
 // - in 2D every interface edge off the boundary is split in two.
 // Exit code 0 when all holds on every process, 1 otherwise (with a message).
 #include <algorithm>
@@ -24,6 +26,7 @@
 #include "parallel/interface_refinement.hpp"
 #include "parallel/interface_sides.hpp"
 #include "parallel/mesh_parts.hpp"
+#include "surface/p3_surrogate.hpp"
 
 namespace hocav {
 namespace {
@@ -56,10 +59,16 @@ std::vector<std::array<Index, D>> interface_facets(const MeshPart<D>& part) {
   return facets;
 }
 
-// The edges of the part's facets on the domain's boundary, which the refinement keeps.
+// The edges the refinement keeps: without a geometry those of the part's facets on the domain's
+// boundary, with one (the cube's sides are flat) those of its feature lines.
 template <int D>
-std::unordered_set<std::uint64_t> boundary_edges(const MeshPart<D>& part) {
+std::unordered_set<std::uint64_t> kept_edges(const MeshPart<D>& part, bool with_geometry) {
   std::unordered_set<std::uint64_t> edges;
+  if (with_geometry) {
+    if constexpr (D == 3)
+      for (Index l = 0; l < part.mesh.line_count(); ++l) edges.insert(Mesh<D>::edge_key(part.mesh.line(l)[0], part.mesh.line(l)[1]));
+    return edges;
+  }
   for (Index f = 0; f < part.mesh.facet_count(); ++f)
     if (part.mesh.facet_ref(f) != kInterfaceRef) {
       const auto& facet = part.mesh.facet(f);
@@ -69,16 +78,16 @@ std::unordered_set<std::uint64_t> boundary_edges(const MeshPart<D>& part) {
   return edges;
 }
 
-// What the refinement should make of the part's interface: its edges off the domain's boundary (each
-// split once), the facets they cut the interface facets into, and the faces whose three edges are
-// split (each turned, on a lattice plane).
+// What the refinement should make of the part's interface: its edges but the kept ones (each split
+// once), the facets they cut the interface facets into, and the faces whose three edges are split
+// (each turned, on a lattice plane).
 struct Expected {
   Index edges = 0, facets = 0, faces = 0;
 };
 
 template <int D>
-Expected expected_refinement(const MeshPart<D>& part) {
-  const std::unordered_set<std::uint64_t> kept = boundary_edges(part);
+Expected expected_refinement(const MeshPart<D>& part, bool with_geometry) {
+  const std::unordered_set<std::uint64_t> kept = kept_edges(part, with_geometry);
   std::unordered_set<std::uint64_t> edges;
   Expected expected;
   for (const auto& facet : interface_facets(part)) {
@@ -162,23 +171,34 @@ Index all_new_facets(const MeshPart<D>& part, Index first_new) {
 }
 
 template <int D>
-bool check(Mesh<D> mesh) {
-  const std::string name = D == 3 ? "cube" : "square";
+Index line_count(const Mesh<D>& mesh) {
+  Index count = 0;
+  if constexpr (D == 3)
+    for (Index l = 0; l < mesh.line_count(); ++l) count += !mesh.line_removed(l);
+  return count;
+}
+
+template <int D>
+bool check(Mesh<D> mesh, bool with_geometry) {
+  const std::string name = std::string(D == 3 ? "cube" : "square") + (with_geometry ? " with its geometry" : "");
+  const P3Surrogate<D> surrogate(mesh);
   MeshPart<D> part = own_slab(std::move(mesh));
+  const Index lines_before = line_count(part.mesh);
   Index own_next = 0;
   for (Index id : part.global_ids) own_next = std::max(own_next, id + 1);
   const Index first_new = max_over_processes(own_next);
-  const Expected own = expected_refinement(part);  // each edge and face once per side
+  const Expected own = expected_refinement(part, with_geometry);  // each edge and face once per side
   const Expected expected{sum_over_processes(own.edges), sum_over_processes(own.facets), sum_over_processes(own.faces)};
   AnalyticMetricSpec uniform;
   uniform.h = 0.02;  // every edge of the 6-cell lattice is longer than √2
   const AdaptationMetric<D> metric(uniform, SizeBounds{});
   Index next_id = first_new;
-  const InterfaceRefinement refined = refine_interfaces(part, metric, next_id);
+  const InterfaceRefinement refined = refine_interfaces(part, metric, with_geometry ? &surrogate : nullptr, next_id);
   const std::vector<Index> next_ids = all_gather_value(next_id);
   bool ok = std::all_of(next_ids.begin(), next_ids.end(), [&](Index each) { return each == next_id; }) ||
             fail(name + ": the processes' next global ids differ");
   ok = faces_conform(part) && points_agree(part) && positive_and_filling(part) && ok;
+  if (line_count(part.mesh) != lines_before) ok = fail(name + ": the refinement left lines");
   if (next_id - first_new != refined.edges_split)
     ok = fail(name + ": " + std::to_string(refined.edges_split) + " edges split, ids for " + std::to_string(next_id - first_new));
   // On 2 processes every interface edge lies between exactly two parts; more may share one.
@@ -201,6 +221,10 @@ bool check(Mesh<D> mesh) {
 }  // namespace hocav
 
 int main(int argc, char** argv) {
-  return hocav::run_mpi_test(argc, argv, "interface refinement",
-                             [] { return hocav::check<3>(hocav::generate_cube(6)) & hocav::check<2>(hocav::generate_square(6)); });
+  return hocav::run_mpi_test(argc, argv, "interface refinement", [] {
+    bool ok = true;
+    for (const bool with_geometry : {false, true})
+      ok = hocav::check<3>(hocav::generate_cube(6), with_geometry) & hocav::check<2>(hocav::generate_square(6), with_geometry) & ok;
+    return ok;
+  });
 }
