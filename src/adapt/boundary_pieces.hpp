@@ -9,6 +9,15 @@
 
 namespace hocav {
 
+// Whether `point` (a boundary point the geometry gives for edge (a, b)) is the edge's straight
+// middle, within 1e-9 of the edge's length: the boundary is flat there. A distributed part splits a
+// side's edges only where it is (edge_split.cpp, parallel/interface_refinement.cpp), so that both
+// sides of an interface hold the new vertex at one point, on the geometry.
+template <int D>
+bool at_straight_middle(const Vec<D>& point, const Vec<D>& a, const Vec<D>& b) {
+  return norm(point - 0.5 * (a + b)) <= 1e-9 * norm(b - a);
+}
+
 // The boundary facets on faces of `elements` that contain every vertex of `through`.
 template <int D>
 void facets_through(const Mesh<D>& mesh, std::span<const Index> elements, std::span<const Index> through, std::vector<Index>& out);

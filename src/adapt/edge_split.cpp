@@ -19,9 +19,6 @@ namespace {
 // (SplitsAtRequiredVertices::kNextToFineRequiredFacets): toward a frozen surface coarser than the
 // metric the splits would not end (docs/distributed.md).
 constexpr double kCoarseRequiredEdge = 2;
-// A boundary split's point within this share of the edge's length from its middle is taken for the
-// middle: the boundary is flat there.
-constexpr double kStraightTolerance = 1e-9;
 // The share of the long edges longer than 2 above which a pass splits only those.
 constexpr double kCoarsePhaseShare = 0.1;
 // With more than one thread, the candidates previewed at once (docs/adaptation.md §Threads): small
@@ -325,8 +322,7 @@ std::vector<char> barred_split_ends(const AdaptationMesh<D>& am, SplitsAtRequire
 // boundary there is flat.
 template <int D>
 bool splits_flat_boundary(const Mesh<D>& mesh, Index a, Index b, const SplitPreview<D>& p) {
-  const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
-  return p.surfaces.boundary && norm(p.point - middle) <= kStraightTolerance * norm(mesh.vertex(b) - mesh.vertex(a));
+  return p.surfaces.boundary && at_straight_middle<D>(p.point, mesh.vertex(a), mesh.vertex(b));
 }
 
 }  // namespace

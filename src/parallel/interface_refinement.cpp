@@ -7,6 +7,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "adapt/boundary_pieces.hpp"
 #include "adapt/metric_measures.hpp"
 #include "base/error.hpp"
 #include "cavity/cavity_operator.hpp"
@@ -25,9 +26,6 @@ namespace {
 // (SplitsAtRequiredVertices::kNextToFineRequiredFacets; docs/distributed.md §Interfaces refined first).
 constexpr double kSplitLength = std::numbers::sqrt2;
 constexpr int kMostTurnRounds = 4;
-// A side is flat at an edge when the geometry puts its middle within this share of its length (the
-// parts' loop splits a flat side's edges by the same bound, edge_split.cpp).
-constexpr double kFlatTolerance = 1e-9;
 
 using EdgeKey = FaceKey<2>;
 
@@ -151,7 +149,7 @@ bool boundary_lets_split(const Mesh<D>& mesh, const BoundaryEdges& edges, const 
   const std::array<int, 2> refs{mesh.facet_ref(facets[0]), mesh.facet_ref(facets[1])};
   if (std::minmax(refs[0], refs[1]) != std::minmax(kInterfaceRef, side->second)) return false;
   const Vec<D> middle = 0.5 * (mesh.vertex(a) + mesh.vertex(b));
-  return norm(geometry->project(middle, {side->second}).point - middle) <= kFlatTolerance * norm(mesh.vertex(b) - mesh.vertex(a));
+  return at_straight_middle<D>(geometry->project(middle, {side->second}).point, mesh.vertex(a), mesh.vertex(b));
 }
 
 // Per edge, how many of the mesh's elements hold it (a shell walk finds only the fan it starts in).
