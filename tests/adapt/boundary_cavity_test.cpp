@@ -17,6 +17,7 @@
 #include "io/mesh_file.hpp"
 #include "mesh/ball_and_shell.hpp"
 #include "mesh/measure.hpp"
+#include "temporary_files.hpp"
 
 namespace hocav {
 namespace {
@@ -133,7 +134,7 @@ TEST(BoundaryCavity, CollapseOfASurfaceVertexAlongItsSurface3D) {
   adapt_test::expect_closed_and_consistent(mesh);
   EXPECT_TRUE(mesh.vertex_removed(center));
   // Until compacted, no writer takes it: the removed vertex would be written as if it were there.
-  const std::string path = (std::filesystem::temp_directory_path() / "hocav_uncompacted.meshb").string();
+  const std::string path = testing_support::temporary_path("uncompacted.meshb");
   EXPECT_THROW(write_mesh_file(path, mesh), Error);
   EXPECT_FALSE(std::filesystem::exists(path));
   const Index vertices = mesh.vertex_count();

@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -16,6 +15,7 @@
 #include <vector>
 
 #include "gmsh_requirement.hpp"
+#include "temporary_files.hpp"
 
 namespace hocav::cli_test {
 
@@ -101,12 +101,7 @@ inline std::string without_block(const std::string& text, const std::string& key
 
 class Cli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    directory_ = fs::temp_directory_path() / ("hocav_cli_" + std::to_string(::getpid()) + "_" + test->name());
-    fs::remove_all(directory_);
-    fs::create_directories(directory_);
-  }
+  void SetUp() override { directory_ = testing_support::temporary_folder(); }
   void TearDown() override {
     if (!HasFailure()) fs::remove_all(directory_);
   }

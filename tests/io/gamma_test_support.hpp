@@ -1,4 +1,4 @@
-// Helpers of the Gamma mesh and solution tests: scratch files, error messages, and a builder of binary files
+// Helpers of the Gamma mesh and solution tests: scratch files (temporary_files.hpp), error messages, and a builder of binary files
 // written independently of hocav's writer (it patches NextPos after the fact, the writer computes it
 // ahead), so the tests can check the layout against docs/formats.md ("Binary layout") byte by byte.
 #pragma once
@@ -16,10 +16,9 @@
 #include <vector>
 
 #include "base/error.hpp"
+#include "temporary_files.hpp"
 
 namespace hocav::testing_support {
-
-inline std::string temporary_path(const std::string& name) { return ::testing::TempDir() + "hocav_gamma_" + name; }
 
 // The message of the Error `action` throws, or "no error".
 inline std::string error_of(const std::function<void()>& action) {

@@ -12,14 +12,15 @@
 #include "base/error.hpp"
 #include "cases/structured.hpp"
 #include "mesh/consistency.hpp"
+#include "temporary_files.hpp"
 
 namespace hocav {
 namespace {
 
-std::string msh_temporary_path(const std::string& name) { return ::testing::TempDir() + "hocav_gmsh_msh_" + name; }
+using testing_support::temporary_path;
 
 std::string write_text(const std::string& name, const std::string& text) {
-  std::string path = msh_temporary_path(name);
+  std::string path = temporary_path(name);
   std::ofstream(path, std::ios::binary) << text;
   return path;
 }
@@ -93,13 +94,13 @@ void curve(Mesh<D>& mesh) {
 
 template <int D>
 void expect_round_trip(const Mesh<D>& mesh, const std::string& name) {
-  std::string path = msh_temporary_path(name + ".msh");
+  std::string path = temporary_path(name + ".msh");
   write_gmsh_msh(path, mesh);
   MeshFileContent content = read_gmsh_msh(path);
   expect_msh_content(mesh, content);
   EXPECT_EQ(gmsh_msh_dimension(path), D);
   // Once grouped by ref (as any mesh read from .msh is), a mesh goes through .msh byte for byte.
-  std::string again = msh_temporary_path(name + "_again.msh"), third = msh_temporary_path(name + "_third.msh");
+  std::string again = temporary_path(name + "_again.msh"), third = temporary_path(name + "_third.msh");
   write_gmsh_msh(again, std::get<Mesh<D>>(content.mesh));
   write_gmsh_msh(third, std::get<Mesh<D>>(read_gmsh_msh(again).mesh));
   EXPECT_EQ(read_text(third), read_text(again));
@@ -353,11 +354,11 @@ TEST(GmshMsh, RefusesBadInputWithClearMessages) {
 TEST(GmshMsh, DimensionOfASurfaceMeshIsAnError) {
   std::string path = write_text("surface.msh", tet_file("1 1 1 1\n2 1 2 1\n1 1 2 4"));
   EXPECT_THROW(gmsh_msh_dimension(path), Error);
-  EXPECT_THROW(gmsh_msh_dimension(msh_temporary_path("does_not_exist.msh")), Error);
+  EXPECT_THROW(gmsh_msh_dimension(temporary_path("does_not_exist.msh")), Error);
 }
 
 TEST(GmshMsh, FailedWriteLeavesNoFile) {
-  std::string path = msh_temporary_path("no_such_directory/out.msh");
+  std::string path = temporary_path("no_such_directory/out.msh");
   EXPECT_THROW(write_gmsh_msh(path, generate_square(1)), Error);
   EXPECT_FALSE(std::ifstream(path).good());
 }

@@ -14,6 +14,7 @@
 
 #include "base/error.hpp"
 #include "io/atomic_output.hpp"
+#include "temporary_files.hpp"
 
 namespace hocav {
 namespace {
@@ -22,12 +23,7 @@ namespace fs = std::filesystem;
 
 class OutputSetTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    folder_ = fs::path(::testing::TempDir()) / ("hocav_output_set_" + std::to_string(::getpid()) + "_" + test->name());
-    fs::remove_all(folder_);
-    fs::create_directories(folder_);
-  }
+  void SetUp() override { folder_ = testing_support::temporary_folder(); }
   void TearDown() override { fs::remove_all(folder_); }
 
   std::string path(const std::string& name) const { return (folder_ / name).string(); }

@@ -12,9 +12,12 @@
 
 #include "base/error.hpp"
 #include "cases/structured.hpp"
+#include "temporary_files.hpp"
 
 namespace hocav {
 namespace {
+
+using testing_support::temporary_path;
 
 struct VtuArray {
   std::string type;
@@ -33,8 +36,6 @@ struct VtuContent {
   std::string header;
   std::map<std::string, VtuArray> arrays;
 };
-
-std::string vtu_temporary_path(const std::string& name) { return ::testing::TempDir() + "hocav_vtu_" + name; }
 
 // The value of attribute `name` in an XML element's text, or "".
 std::string attribute(const std::string& element, const std::string& name) {
@@ -81,7 +82,7 @@ TEST(VtuFile, WritesCurvedTetrahedraWithFields) {
   data.point_fields.push_back({"metric", 9, std::vector<double>(static_cast<std::size_t>(node_count) * 9, 0.5)});
   data.point_fields.back().values[9 * (node_count - 1) + 8] = -3.25;
   data.cell_fields.push_back({"quality <&>", 1, std::vector<double>(static_cast<std::size_t>(mesh.element_count()), 1.0)});
-  std::string path = vtu_temporary_path("cube_p2.vtu");
+  std::string path = temporary_path("cube_p2.vtu");
   write_vtu(path, mesh, data);
 
   VtuContent content = read_vtu(path);
@@ -117,7 +118,7 @@ TEST(VtuFile, WritesCurvedTetrahedraWithFields) {
 
 TEST(VtuFile, WritesStraightTrianglesInThePlane) {
   Mesh<2> mesh = generate_square(3);
-  std::string path = vtu_temporary_path("square_p1.vtu");
+  std::string path = temporary_path("square_p1.vtu");
   write_vtu(path, mesh);
   VtuContent content = read_vtu(path);
   auto points = content.arrays.at("Points").values<double>();
@@ -136,14 +137,14 @@ TEST(VtuFile, WritesStraightTrianglesInThePlane) {
 TEST(VtuFile, WritesQuadraticTriangles) {
   Mesh<2> mesh = generate_square(2);
   mesh.make_p2();
-  VtuContent content = read_vtu((write_vtu(vtu_temporary_path("square_p2.vtu"), mesh), vtu_temporary_path("square_p2.vtu")));
+  VtuContent content = read_vtu((write_vtu(temporary_path("square_p2.vtu"), mesh), temporary_path("square_p2.vtu")));
   EXPECT_EQ(content.arrays.at("types").values<std::uint8_t>()[0], 22);  // VTK_QUADRATIC_TRIANGLE
   EXPECT_EQ(content.arrays.at("connectivity").values<std::int64_t>()[3], mesh.vertex_count() + mesh.element_edge(0, 0));
 }
 
 TEST(VtuFile, RefusesFieldsOfTheWrongSize) {
   Mesh<2> mesh = generate_square(2);
-  std::string path = vtu_temporary_path("bad_field.vtu");
+  std::string path = temporary_path("bad_field.vtu");
   VtuData data;
   data.point_fields.push_back({"size", 1, std::vector<double>(3, 1.0)});
   try {

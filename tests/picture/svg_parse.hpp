@@ -3,17 +3,18 @@
 #pragma once
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "temporary_files.hpp"
+
 namespace hocav::picture_test {
 
 inline std::string parsed_svg_outline(const std::string& document) {
-  const auto file = std::filesystem::temp_directory_path() / ("hocav_svg_" + std::to_string(::getpid()) + ".svg");
+  const std::filesystem::path file = testing_support::temporary_path("outline.svg");
   std::ofstream(file) << document;
   const std::string command =
       "/usr/bin/python3 -c 'import collections, sys, xml.etree.ElementTree as E\n"
