@@ -20,4 +20,10 @@ inline Index checked_index(std::size_t value, const char* what) {
   return static_cast<Index>(value);
 }
 
+// The number of an entity, a node or a row in messages: one-based, as in the mesh files (Gamma, gmsh).
+template <class Integer>
+std::string one_based(Integer i) {
+  return std::to_string(static_cast<long long>(i) + 1);
+}
+
 }  // namespace hocav

@@ -111,7 +111,7 @@ Mesh<D> extract(const std::vector<GmshBoundaryEntity>& boundary, int element_ref
     typename Mesh<D>::Element element;
     for (int i = 0; i <= D; ++i) element[i] = vertex_of_tag[element_node_tags[first + i]];
     double measure = signed_measure_of(mesh, element);
-    if (measure == 0.0 || !std::isfinite(measure)) throw Error("gmsh: element " + std::to_string(mesh.element_count() + 1) + " is flat");
+    if (measure == 0.0 || !std::isfinite(measure)) throw Error("gmsh: element " + one_based(mesh.element_count()) + " is flat");
     if (measure < 0) std::swap(element[D - 1], element[D]);
     mesh.add_element(element, element_ref);
   }
@@ -126,8 +126,7 @@ Mesh<D> extract(const std::vector<GmshBoundaryEntity>& boundary, int element_ref
       for (int i = 0; i < D; ++i) facet[i] = mesh.element(k)[face_vertices<D>(face)[i]];
       auto found = refs.find(sorted(facet));
       if (found == refs.end())
-        throw Error("gmsh: boundary face " + std::to_string(face + 1) + " of element " + std::to_string(k + 1) +
-                    " lies on no boundary entity");
+        throw Error("gmsh: boundary face " + one_based(face) + " of element " + one_based(k) + " lies on no boundary entity");
       mesh.add_facet(facet, found->second);
     }
   mesh.build_topology();

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "base/error.hpp"
+#include "base/index.hpp"
 #include "base/memory_budget.hpp"
 
 namespace hocav {
@@ -47,7 +48,7 @@ inline void check_layer_radii(std::span<const double> radii) {
   if (radii.size() < 2) throw Error("a layered shell needs at least two radii, got " + std::to_string(radii.size()));
   for (std::size_t i = 0; i < radii.size(); ++i)
     if (!(std::isfinite(radii[i]) && radii[i] > (i == 0 ? 0.0 : radii[i - 1])))
-      throw Error("the layer radii must increase from a positive one: radius " + std::to_string(i + 1) + " is " + number_text(radii[i]));
+      throw Error("the layer radii must increase from a positive one: radius " + one_based(i) + " is " + number_text(radii[i]));
 }
 
 }  // namespace hocav

@@ -205,8 +205,7 @@ SolutionField rows_in_file_order(const Mesh<D>& mesh, const MeshFileContent& fil
     }
   }
   for (std::size_t node = 0; node < filled.size(); ++node)
-    if (!filled[node])
-      throw Error("node " + std::to_string(node + 1) + " of the mesh file is neither a vertex nor a P2 node: it gets no metric");
+    if (!filled[node]) throw Error("node " + one_based(node) + " of the mesh file is neither a vertex nor a P2 node: it gets no metric");
   return rows_of_metrics(rows);
 }
 

@@ -124,7 +124,7 @@ int TextKeywordReader::read_header_integer() {
 
 void TextKeywordReader::fail(std::string_view what, Index entity) const {
   std::string message = path_ + ": " + (keyword_.empty() ? "" : keyword_ + ": ") + std::string(what);
-  if (entity != kNoIndex) message += ", entity " + std::to_string(static_cast<long long>(entity) + 1);
+  if (entity != kNoIndex) message += ", entity " + one_based(entity);
   throw Error(message + ", line " + std::to_string(scanner_.line()));
 }
 
@@ -201,7 +201,7 @@ void BinaryKeywordReader::skip_records(Index count, int integers, int reals) {
 
 void BinaryKeywordReader::fail(std::string_view what, Index entity) const {
   std::string message = path_ + ": " + (keyword_.empty() ? "" : keyword_ + ": ") + std::string(what);
-  if (entity != kNoIndex) message += ", entity " + std::to_string(static_cast<long long>(entity) + 1);
+  if (entity != kNoIndex) message += ", entity " + one_based(entity);
   throw Error(message);
 }
 

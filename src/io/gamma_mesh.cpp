@@ -329,7 +329,7 @@ void write_records(Writer& out, const Mesh<D>& mesh, const std::string& path) {
   // File node number (1-based) of the P2 node of an edge found from its vertices.
   auto edge_node_of = [&](Index a, Index b) {
     Index edge = mesh.find_edge(a, b);
-    if (edge == kNoIndex) throw Error(path + ": edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) + ") has no P2 node");
+    if (edge == kNoIndex) throw Error(path + ": edge (" + one_based(a) + ", " + one_based(b) + ") has no P2 node");
     return vertex_count + edge + 1;
   };
   // vertices_of(k): the entity's vertices; mid_node_of(k, vertices, local edge): its edge's node.
@@ -387,8 +387,7 @@ std::vector<std::array<Index, N>> checked_entities(const NodeTable& table, Index
       entities[k][i] = table.nodes[k * N + i];
       if (entities[k][i] >= vertex_count)
         throw Error(path + ": " + gamma::keyword_name(gamma::simplex_keyword(simplex_dimension, 1).code) + ": vertex " +
-                    std::to_string(entities[k][i] + 1) + " out of range, entity " +
-                    std::to_string(table.first + static_cast<Index>(k) + 1));
+                    one_based(entities[k][i]) + " out of range, entity " + std::to_string(table.first + static_cast<Index>(k) + 1));
     }
   return entities;
 }

@@ -83,14 +83,14 @@ class Assembler {
   }
 
   [[noreturn]] void fail(const std::string& keyword, const std::string& what, std::size_t entity) const {
-    throw Error(path_ + ": " + keyword + ": " + what + " " + std::to_string(entity + 1));
+    throw Error(path_ + ": " + keyword + ": " + what + " " + one_based(entity));
   }
 
   void check_sizes(const std::vector<Index>& nodes, int size, const std::string& keyword) const {
     if (nodes.size() % static_cast<std::size_t>(size) != 0) fail(keyword, "incomplete node list at entity", nodes.size() / size);
     for (std::size_t i = 0; i < nodes.size(); ++i)
       if (nodes[i] < 0 || static_cast<std::size_t>(nodes[i]) >= raw_.nodes.size())
-        fail(keyword, "node " + std::to_string(static_cast<long long>(nodes[i]) + 1) + " out of range in entity", i / size);
+        fail(keyword, "node " + one_based(nodes[i]) + " out of range in entity", i / size);
   }
 
   void mark_mid_nodes(const std::vector<Index>& nodes, int size, int corners) {
@@ -101,9 +101,9 @@ class Assembler {
   // The vertex of a file node used as a corner (or tagged); refuses a mid-edge node.
   Index vertex_of(Index node, const std::string& keyword, std::size_t entity) const {
     if (node < 0 || static_cast<std::size_t>(node) >= raw_.nodes.size())
-      fail(keyword, "vertex " + std::to_string(static_cast<long long>(node) + 1) + " out of range in entity", entity);
+      fail(keyword, "vertex " + one_based(node) + " out of range in entity", entity);
     if (file_to_vertex_[node] == kNoIndex)
-      fail(keyword, "node " + std::to_string(node + 1) + " is both a corner and a mid-edge node, in entity", entity);
+      fail(keyword, "node " + one_based(node) + " is both a corner and a mid-edge node, in entity", entity);
     return file_to_vertex_[node];
   }
 
@@ -116,7 +116,7 @@ class Assembler {
       if (edge == kNoIndex) fail(keyword, "names an edge no element has, in entity", entity);
       Index& known = content.edge_node_file_ids[edge];
       if (known != kNoIndex && known != node)
-        fail(keyword, "gives edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) + ") another mid node, in entity", entity);
+        fail(keyword, "gives edge (" + one_based(a) + ", " + one_based(b) + ") another mid node, in entity", entity);
       known = node;
       mesh.edge_node(edge) = raw_.nodes[node];
     };

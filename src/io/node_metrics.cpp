@@ -49,7 +49,7 @@ const SolutionField& checked_scalar_field(const SolutionFileContent& content, co
 
 double finite_value(const SolutionField& scalar, Index row, Index first_row, const std::string& path) {
   const double value = scalar.values[static_cast<std::size_t>(row - first_row)];
-  if (!std::isfinite(value)) throw Error(path + ": SolAtVertices: value at node " + std::to_string(row + 1) + " is not finite");
+  if (!std::isfinite(value)) throw Error(path + ": SolAtVertices: value at node " + one_based(row) + " is not finite");
   return value;
 }
 

@@ -132,8 +132,8 @@ void write_solution_file(const std::string& path, const SolutionFileContent& con
   for (std::size_t i = 0; i < content.fields.size(); ++i) {
     const SolutionField& field = content.fields[i];
     if (field.dimension != content.dimension || field.values.size() != static_cast<std::size_t>(content.count) * field.components())
-      throw Error(path + ": solution field " + std::to_string(i + 1) + " does not hold " + std::to_string(content.count) +
-                  " rows of dimension " + std::to_string(content.dimension));
+      throw Error(path + ": solution field " + one_based(i) + " does not hold " + std::to_string(content.count) + " rows of dimension " +
+                  std::to_string(content.dimension));
   }
   if (content.fields.empty()) throw Error(path + ": a solution file needs at least one field");
   if (extension == ".solb")

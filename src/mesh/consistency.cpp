@@ -11,8 +11,6 @@
 namespace hocav {
 namespace {
 
-std::string id(Index i) { return std::to_string(i + 1); }
-
 template <int D>
 std::array<Index, D> sorted_face(const typename Mesh<D>::Element& element, int face) {
   std::array<Index, D> out;
@@ -47,9 +45,9 @@ class Checker {
       auto e = mesh_.element(k);
       std::sort(e.begin(), e.end());
       if (std::adjacent_find(e.begin(), e.end()) != e.end())
-        report("element " + id(k) + " repeats a vertex");
+        report("element " + one_based(k) + " repeats a vertex");
       else if (options_.require_positive_orientation && !(element_measure(mesh_, k) > 0))
-        report("element " + id(k) + " has non-positive P1 measure " + std::to_string(element_measure(mesh_, k)));
+        report("element " + one_based(k) + " has non-positive P1 measure " + std::to_string(element_measure(mesh_, k)));
     }
     if (!mesh_.has_topology() && mesh_.element_count() > 0) report("topology was not built");
     return problems_.empty() || mesh_.has_topology();
@@ -61,22 +59,22 @@ class Checker {
         Index n = mesh_.neighbor(k, face);
         if (n == kNoIndex) {
           if (options_.require_boundary_facets && mesh_.element_face_facet(k, face) == kNoIndex)
-            report("boundary face " + std::to_string(face + 1) + " of element " + id(k) + " has no boundary facet");
+            report("boundary face " + one_based(face) + " of element " + one_based(k) + " has no boundary facet");
           continue;
         }
         if (n < 0 || n >= mesh_.element_count()) {
-          report("element " + id(k) + " has neighbor " + id(n) + " out of range");
+          report("element " + one_based(k) + " has neighbor " + one_based(n) + " out of range");
           continue;
         }
         int back = -1;
         for (int g = 0; g <= D; ++g)
           if (mesh_.neighbor(n, g) == k) back = g;
         if (back < 0)
-          report("adjacency is not symmetric between elements " + id(k) + " and " + id(n));
+          report("adjacency is not symmetric between elements " + one_based(k) + " and " + one_based(n));
         else if (sorted_face<D>(mesh_.element(k), face) != sorted_face<D>(mesh_.element(n), back))
-          report("elements " + id(k) + " and " + id(n) + " are neighbors but do not share the face");
+          report("elements " + one_based(k) + " and " + one_based(n) + " are neighbors but do not share the face");
         else if (!opposite_orientation(ordered_face(k, face), ordered_face(n, back)))
-          report("elements " + id(k) + " and " + id(n) + " are not consistently oriented across their face");
+          report("elements " + one_based(k) + " and " + one_based(n) + " are not consistently oriented across their face");
       }
   }
 
@@ -104,11 +102,11 @@ class Checker {
     for (Index v = 0; v < mesh_.vertex_count() && !full(); ++v) {
       Index k = mesh_.vertex_element(v);
       if (mesh_.vertex_removed(v)) {
-        if (used[v] || k != kNoIndex) report("removed vertex " + id(v) + " is still used");
+        if (used[v] || k != kNoIndex) report("removed vertex " + one_based(v) + " is still used");
       } else if (k == kNoIndex) {
-        if (used[v]) report("vertex " + id(v) + " is used but has no incident element");
+        if (used[v]) report("vertex " + one_based(v) + " is used but has no incident element");
       } else if (k < 0 || k >= mesh_.element_count() || local_vertex(mesh_, k, v) < 0) {
-        report("vertex " + id(v) + " points to element " + id(k) + " which does not contain it");
+        report("vertex " + one_based(v) + " points to element " + one_based(k) + " which does not contain it");
       }
     }
   }
@@ -118,7 +116,7 @@ class Checker {
       if (mesh_.facet_removed(f)) continue;
       Index slot = mesh_.facet_element_face(f);
       if (slot == kNoIndex) {
-        report("boundary facet " + id(f) + " lies on no element face");
+        report("boundary facet " + one_based(f) + " lies on no element face");
         continue;
       }
       Index k = slot / (D + 1);
@@ -126,9 +124,9 @@ class Checker {
       auto facet = mesh_.facet(f);
       std::sort(facet.begin(), facet.end());
       if (k >= mesh_.element_count() || sorted_face<D>(mesh_.element(k), face) != facet)
-        report("boundary facet " + id(f) + " does not match face " + std::to_string(face + 1) + " of element " + id(k));
+        report("boundary facet " + one_based(f) + " does not match face " + one_based(face) + " of element " + one_based(k));
       else if (mesh_.element_face_facet(k, face) != f)
-        report("face " + std::to_string(face + 1) + " of element " + id(k) + " does not lead back to boundary facet " + id(f));
+        report("face " + one_based(face) + " of element " + one_based(k) + " does not lead back to boundary facet " + one_based(f));
     }
   }
 
@@ -142,7 +140,7 @@ class Checker {
       if (mesh_.line_removed(l)) continue;
       const Index a = mesh_.line(l)[0], b = mesh_.line(l)[1];  // not a structured binding: the lambda below takes b
       if (a < 0 || a >= mesh_.vertex_count() || b < 0 || b >= mesh_.vertex_count() || mesh_.vertex_removed(a) || mesh_.vertex_removed(b)) {
-        report("edge (line) " + id(l) + " has a vertex out of range or removed");
+        report("edge (line) " + one_based(l) + " has a vertex out of range or removed");
         continue;
       }
       if (mesh_.vertex_element(a) == kNoIndex) continue;  // a line on a vertex no element uses is the file's business
@@ -153,7 +151,7 @@ class Checker {
           for (int e = 0; e < Simplex<D>::kEdges; ++e)
             element_edges.insert(Mesh<D>::edge_key(mesh_.element(k)[edge_vertices<D>(e)[0]], mesh_.element(k)[edge_vertices<D>(e)[1]]));
       if (!element_edges.contains(Mesh<D>::edge_key(a, b)))
-        report("edge (line) " + id(l) + " (" + id(a) + ", " + id(b) + ") is no element edge");
+        report("edge (line) " + one_based(l) + " (" + one_based(a) + ", " + one_based(b) + ") is no element edge");
     }
   }
 
@@ -163,15 +161,16 @@ class Checker {
         Index a = mesh_.element(k)[edge_vertices<D>(e)[0]], b = mesh_.element(k)[edge_vertices<D>(e)[1]];
         Index edge = mesh_.element_edge(k, e);
         if (edge < 0 || edge >= mesh_.edge_count()) {
-          report("element " + id(k) + " has edge id " + id(edge) + " out of range");
+          report("element " + one_based(k) + " has edge id " + one_based(edge) + " out of range");
           continue;
         }
         // Every element of an edge refers to the one edge record, hence to the one P2 node.
         const auto& ends = mesh_.edge_vertices(edge);
         if (ends[0] != std::min(a, b) || ends[1] != std::max(a, b))
-          report("local edge " + std::to_string(e + 1) + " of element " + id(k) + " refers to edge " + id(edge) + " of other vertices");
+          report("local edge " + one_based(e) + " of element " + one_based(k) + " refers to edge " + one_based(edge) +
+                 " of other vertices");
         else if (mesh_.find_edge(a, b) != edge)
-          report("edge (" + id(a) + ", " + id(b) + ") of element " + id(k) + " is not the one the edge table finds");
+          report("edge (" + one_based(a) + ", " + one_based(b) + ") of element " + one_based(k) + " is not the one the edge table finds");
       }
     std::vector<bool> used(static_cast<std::size_t>(mesh_.edge_count()), false);
     for (Index k = 0; k < mesh_.element_count(); ++k)
@@ -181,11 +180,11 @@ class Checker {
       auto [a, b] = mesh_.edge_vertices(edge);
       if (a == kNoIndex) continue;  // a removed edge's id, waiting for reuse
       if (!used[edge])
-        report("edge " + id(edge) + " (" + id(a) + ", " + id(b) + ") belongs to no element");
+        report("edge " + one_based(edge) + " (" + one_based(a) + ", " + one_based(b) + ") belongs to no element");
       else if (mesh_.find_edge(a, b) != edge)
-        report("edge " + id(edge) + " is not where the edge table finds it");
+        report("edge " + one_based(edge) + " is not where the edge table finds it");
       else if (mesh_.is_p2() && !is_finite(mesh_.edge_node(edge)))
-        report("the P2 node of edge " + id(edge) + " is not finite");
+        report("the P2 node of edge " + one_based(edge) + " is not finite");
     }
   }
 

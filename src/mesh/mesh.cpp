@@ -81,7 +81,7 @@ template <int D>
 Index Mesh<D>::add_element(const Element& vertices, int ref) {
   for (Index v : vertices)
     if (v < 0 || v >= vertex_count())
-      throw Error("element " + std::to_string(elements_.size() + 1) + " has vertex " + std::to_string(v + 1) + " out of range");
+      throw Error("element " + one_based(elements_.size()) + " has vertex " + one_based(v) + " out of range");
   Index id = checked_index(elements_.size(), "elements");
   elements_.push_back(vertices);
   element_refs_.push_back(ref);
@@ -99,7 +99,7 @@ template <int D>
 Index Mesh<D>::add_facet(const Facet& vertices, int ref) {
   for (Index v : vertices)
     if (v < 0 || v >= vertex_count())
-      throw Error("boundary facet " + std::to_string(facets_.size() + 1) + " has vertex " + std::to_string(v + 1) + " out of range");
+      throw Error("boundary facet " + one_based(facets_.size()) + " has vertex " + one_based(v) + " out of range");
   Index id = checked_index(facets_.size(), "boundary facets");
   facets_.push_back(vertices);
   facet_refs_.push_back(ref);
@@ -109,8 +109,7 @@ Index Mesh<D>::add_facet(const Facet& vertices, int ref) {
 template <int D>
 Index Mesh<D>::add_line(const Line& vertices, int ref) {
   for (Index v : vertices)
-    if (v < 0 || v >= vertex_count())
-      throw Error("edge " + std::to_string(lines_.size() + 1) + " has vertex " + std::to_string(v + 1) + " out of range");
+    if (v < 0 || v >= vertex_count()) throw Error("edge " + one_based(lines_.size()) + " has vertex " + one_based(v) + " out of range");
   Index id = checked_index(lines_.size(), "edges");
   lines_.push_back(vertices);
   line_refs_.push_back(ref);
@@ -281,8 +280,8 @@ void Mesh<D>::build_topology() {
       std::size_t j = i + 1;
       while (j < faces.size() && faces[j].others == faces[i].others) ++j;
       if (j - i > 2)
-        throw Error("non-manifold mesh: the face of element " + std::to_string(faces[i].element + 1) + " opposite its vertex " +
-                    std::to_string(faces[i].face + 1) + " is shared by more than two elements");
+        throw Error("non-manifold mesh: the face of element " + one_based(faces[i].element) + " opposite its vertex " +
+                    one_based(faces[i].face) + " is shared by more than two elements");
       Index across = j - i == 2 ? faces[i + 1].element : kNoIndex;
       adjacency_[faces[i].element][faces[i].face] = across;
       if (across != kNoIndex) adjacency_[across][faces[i + 1].face] = faces[i].element;
@@ -305,7 +304,7 @@ void Mesh<D>::build_topology() {
       int face = local_face_of<D>(elements_[incident[slot]], facet.data());
       if (face >= 0) facet_element_face_[f] = incident[slot] * (D + 1) + face;
     }
-    if (facet_element_face_[f] == kNoIndex) throw Error("boundary facet " + std::to_string(f + 1) + " is not a face of any element");
+    if (facet_element_face_[f] == kNoIndex) throw Error("boundary facet " + one_based(f) + " is not a face of any element");
     link_face_facet(facet_element_face_[f] / (D + 1), facet_element_face_[f] % (D + 1), f);
   }
 }
@@ -336,7 +335,7 @@ Index Mesh<D>::facet_face(Index f, std::vector<Index>& ball, std::vector<Index>&
   for (int i = 0; i < D && found == kNoIndex; ++i) found = facet_face_near(facet, facet[i], ball, stack);
   for (Index k = 0; k < element_count() && found == kNoIndex; ++k)
     if (const int face = local_face_of<D>(elements_[k], facet.data()); face >= 0) found = k * (D + 1) + face;
-  if (found == kNoIndex) throw Error("boundary facet " + std::to_string(f + 1) + " is not a face of any element");
+  if (found == kNoIndex) throw Error("boundary facet " + one_based(f) + " is not a face of any element");
   return found;
 }
 

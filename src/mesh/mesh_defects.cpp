@@ -14,8 +14,6 @@ namespace {
 // The margin leaves room for rounding without missing a second turn.
 constexpr double kOverlapAngleRatio = 1.5;
 
-std::string file_id(Index i) { return std::to_string(static_cast<long long>(i) + 1); }
-
 std::string counted(Index count, const std::string& singular, const std::string& plural) {
   return std::to_string(count) + " " + (count == 1 ? singular : plural);
 }
@@ -130,7 +128,7 @@ MeshDefects find_mesh_defects(const Mesh<D>& mesh, std::size_t max_examples) {
     for (int face = 0; face <= D; ++face) {
       if (mesh.neighbor(k, face) != kNoIndex) continue;
       if (mesh.element_face_facet(k, face) == kNoIndex)
-        finder.add(defects.open_faces, "face " + std::to_string(face + 1) + " of element " + file_id(k) + " has no boundary facet");
+        finder.add(defects.open_faces, "face " + one_based(face) + " of element " + one_based(k) + " has no boundary facet");
       for (int j = 0; j < D; ++j)
         on_boundary[element[static_cast<std::size_t>(face_vertices<D>(face)[static_cast<std::size_t>(j)])]] = true;
     }
@@ -141,14 +139,14 @@ MeshDefects find_mesh_defects(const Mesh<D>& mesh, std::size_t max_examples) {
   for (Index v = 0; v < mesh.vertex_count(); ++v) {
     if (pinched != places.vertices.end() && *pinched == v) {
       ++pinched;
-      finder.add(defects.non_manifold_vertices, "vertex " + file_id(v) + " joins parts that share no face");
+      finder.add(defects.non_manifold_vertices, "vertex " + one_based(v) + " joins parts that share no face");
     } else if (!on_boundary[v] && angle[v] > kOverlapAngleRatio * full_angle) {
-      finder.add(defects.overlap_vertices, "the elements around inner vertex " + file_id(v) + " overlap");
+      finder.add(defects.overlap_vertices, "the elements around inner vertex " + one_based(v) + " overlap");
     }
   }
   for (const std::uint64_t key : places.edges)
-    finder.add(defects.non_manifold_edges, "edge (" + file_id(static_cast<Index>(key >> 32)) + ", " +
-                                               file_id(static_cast<Index>(key & 0xffffffffu)) + ") has more than two boundary faces");
+    finder.add(defects.non_manifold_edges, "edge (" + one_based(static_cast<Index>(key >> 32)) + ", " +
+                                               one_based(static_cast<Index>(key & 0xffffffffu)) + ") has more than two boundary faces");
   return defects;
 }
 

@@ -60,7 +60,7 @@ GradationReport grade_metrics(const Mesh<D>& mesh, std::vector<SymMat<D>>& metri
   if (metrics.size() != static_cast<std::size_t>(mesh.vertex_count()))
     throw Error("gradation: " + std::to_string(metrics.size()) + " metrics for " + std::to_string(mesh.vertex_count()) + " vertices");
   for (std::size_t v = 0; v < metrics.size(); ++v)
-    if (!is_spd(metrics[v])) throw Error("gradation: the metric at vertex " + std::to_string(v + 1) + " is not positive definite");
+    if (!is_spd(metrics[v])) throw Error("gradation: the metric at vertex " + one_based(v) + " is not positive definite");
 
   const VertexGraph graph = vertex_graph(mesh);
   const double update_limit = 1000.0 * static_cast<double>(metrics.size());

@@ -132,7 +132,7 @@ std::vector<SymMat<D>> recover_hessians(const Mesh<D>& mesh, std::span<const dou
       fitted = fit_hessian<D>(mesh.vertex(v), vertex_values[static_cast<std::size_t>(v)], points, values);
     }
     if (!fitted)
-      throw Error("hessian recovery: the neighbours of vertex " + std::to_string(v + 1) + " within " + std::to_string(kHessianMaxRings) +
+      throw Error("hessian recovery: the neighbours of vertex " + one_based(v) + " within " + std::to_string(kHessianMaxRings) +
                   " edges do not determine a quadratic");
     hessians[static_cast<std::size_t>(v)] = *fitted;
   }

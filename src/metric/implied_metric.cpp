@@ -42,7 +42,7 @@ std::vector<SymMat<D>> implied_metric_at_vertices(const Mesh<D>& mesh) {
   }
   std::vector<SymMat<D>> metrics(sums.size());
   for (std::size_t v = 0; v < sums.size(); ++v) {
-    if (sums[v].weight == 0) throw Error("implied metric: vertex " + std::to_string(v + 1) + " belongs to no element, so it has no metric");
+    if (sums[v].weight == 0) throw Error("implied metric: vertex " + one_based(v) + " belongs to no element, so it has no metric");
     metrics[v] = implied_vertex_metric(sums[v]);
   }
   return metrics;

@@ -14,7 +14,7 @@ template <int D>
 void check_positive_elements(const Mesh<D>& back) {
   for (Index k = 0; k < back.element_count(); ++k)
     if (!(element_measure(back, k) > 0))
-      throw Error("back mesh: element " + std::to_string(k + 1) +
+      throw Error("back mesh: element " + one_based(k) +
                   " has non-positive straight (P1) measure; the metric's back mesh must be a valid P1 mesh");
 }
 
@@ -63,7 +63,7 @@ template <int D>
 std::vector<SymMat<D>> MetricField<D>::logarithms(const std::vector<SymMat<D>>& metrics) {
   std::vector<SymMat<D>> logs(metrics.size());
   for (std::size_t v = 0; v < metrics.size(); ++v) {
-    if (!is_spd(metrics[v])) throw Error("metric at vertex " + std::to_string(v + 1) + " is not positive definite");
+    if (!is_spd(metrics[v])) throw Error("metric at vertex " + one_based(v) + " is not positive definite");
     logs[v] = log_spd(metrics[v]);
   }
   return logs;

@@ -35,8 +35,7 @@ std::vector<Index> line_ids_among(const MeshPart<D>& part, std::vector<KnownLine
     const KnownLine wanted{ends_of(part, l), kNoIndex};
     const auto found = std::lower_bound(lines.begin(), lines.end(), wanted, by_ends);
     if (found == lines.end() || found->ends != wanted.ends)
-      throw Error("line ids: no known line joins vertices " + std::to_string(wanted.ends[0] + 1) + " and " +
-                  std::to_string(wanted.ends[1] + 1));
+      throw Error("line ids: no known line joins vertices " + one_based(wanted.ends[0]) + " and " + one_based(wanted.ends[1]));
     ids.push_back(found->id);
   }
   return ids;

@@ -126,8 +126,8 @@ Mesh<D> run_mesh(const GammaMeshSlice<D>& slice, const std::vector<Index>& ids, 
   try {
     mesh.build_topology();
   } catch (const Error& error) {
-    throw Error(path + ": " + p1_keyword(D) + ": " + error.what() + " (elements counted from entity " +
-                std::to_string(slice.first_element + 1) + ")");
+    throw Error(path + ": " + p1_keyword(D) + ": " + error.what() + " (elements counted from entity " + one_based(slice.first_element) +
+                ")");
   }
   return mesh;
 }
@@ -178,8 +178,7 @@ struct Meeting {
         sides.count += face.sides;
         sides.element = sides.count == face.sides ? face.element : std::min(sides.element, face.element);
         if (sides.count > 2)
-          throw Error(path + ": " + p1_keyword(D) + ": entity " + std::to_string(sides.element + 1) +
-                      " has a face two other elements have");
+          throw Error(path + ": " + p1_keyword(D) + ": entity " + one_based(sides.element) + " has a face two other elements have");
       }
     }
   }
@@ -215,7 +214,7 @@ Met<D> meet(const GammaMeshSlice<D>& slice, const RunFaces<D>& faces, const std:
   for (FacetRecord<D> facet : exchange_values_joined(facet_messages)) {
     const auto sides = meeting.by_key.find(sorted_key<D>(facet.vertices));
     if (sides == meeting.by_key.end())
-      throw Error(path + ": " + p1_keyword(D - 1) + ": entity " + std::to_string(facet.id + 1) + " is no face of the elements");
+      throw Error(path + ": " + p1_keyword(D - 1) + ": entity " + one_based(facet.id) + " is no face of the elements");
     facet.element = sides->second.element;
     placed[slice_holding(facet.element, slice.element_count, processes)].push_back(facet);
   }

@@ -201,7 +201,7 @@ class RunsWriter {
       for (std::size_t i = groups.starts[g]; i < groups.starts[g + 1]; ++i) {
         const VertexToRun<D>& other = arrived[static_cast<std::size_t>(groups.order[i].from)][groups.order[i].at];
         if (!(other.point == row.point))
-          throw Error(path_ + ": vertex " + std::to_string(row.id + 1) + " has different points in two parts of the distributed mesh");
+          throw Error(path_ + ": vertex " + one_based(row.id) + " has different points in two parts of the distributed mesh");
         row.flags = static_cast<char>(row.flags | other.flags);
         answers[static_cast<std::size_t>(groups.order[i].from)][groups.order[i].at] = {offset.before + static_cast<Index>(g),
                                                                                        groups.starts[g + 1] - groups.starts[g] > 1};
@@ -255,7 +255,7 @@ class RunsWriter {
       for (std::size_t i = groups.starts[g]; i < groups.starts[g + 1]; ++i) {
         const SharedEdge<D>& other = arrived[static_cast<std::size_t>(groups.order[i].from)][groups.order[i].at];
         if (!(other.node == edge.node))
-          throw Error(path_ + ": edge (" + std::to_string(edge.key[0] + 1) + ", " + std::to_string(edge.key[1] + 1) +
+          throw Error(path_ + ": edge (" + one_based(edge.key[0]) + ", " + one_based(edge.key[1]) +
                       ") has different P2 nodes in two parts of the distributed mesh");
         answers[static_cast<std::size_t>(groups.order[i].from)][groups.order[i].at] = next;
       }

@@ -220,14 +220,12 @@ void write_back_nodes(Mesh<D>& mesh, std::span<const EdgeNodeRecord<D>> nodes, s
     const auto [a, b] = record.ends;
     const Index whole = a == kNoIndex || b == kNoIndex ? kNoIndex : mesh.find_edge(a, b);
     if (whole == kNoIndex)
-      throw Error("distributed curving: a part has edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) +
-                  "), which the mesh lacks");
+      throw Error("distributed curving: a part has edge (" + one_based(a) + ", " + one_based(b) + "), which the mesh lacks");
     if (!record.frozen) {
       mesh.edge_node(whole) = record.node;
       if (written) (*written)[whole] = 1;
     } else if (!(record.node == mesh.edge_node(whole))) {
-      throw Error("distributed curving: interface edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) +
-                  ") came back with another node");
+      throw Error("distributed curving: interface edge (" + one_based(a) + ", " + one_based(b) + ") came back with another node");
     }
   }
 }

@@ -18,7 +18,7 @@ HeldRuns::HeldRuns(Index held_first, Index held_count) {
 int HeldRuns::holder(Index id) const {
   auto after = std::upper_bound(starts_.begin(), starts_.end(), id, [](Index value, const Run& run) { return value < run.first; });
   if (after == starts_.begin() || id >= std::prev(after)->end)
-    throw Error("values by vertex id: no process holds the value of vertex " + std::to_string(static_cast<long long>(id) + 1));
+    throw Error("values by vertex id: no process holds the value of vertex " + one_based(id));
   return std::prev(after)->process;
 }
 

@@ -108,7 +108,7 @@ struct Unpacker {
       for (std::size_t i = 0; i < arrived[s].vertex_ids.size(); ++i) {
         const auto [it, fresh] = source.emplace(arrived[s].vertex_ids[i], std::pair{s, i});
         if (!fresh && !(arrived[it->second.first].points[it->second.second] == arrived[s].points[i]))
-          throw Error("migrating parts: two processes give vertex " + std::to_string(arrived[s].vertex_ids[i] + 1) + " different points");
+          throw Error("migrating parts: two processes give vertex " + one_based(arrived[s].vertex_ids[i]) + " different points");
       }
     for (const auto& [global, where] : source) part.global_ids.push_back(global);
     std::sort(part.global_ids.begin(), part.global_ids.end());
@@ -200,7 +200,7 @@ std::vector<std::pair<Index, Index>> facets_by_element(const Mesh<D>& mesh) {
   std::vector<std::pair<Index, Index>> out;
   for (Index f = 0; f < mesh.facet_count(); ++f) {
     const Index at = mesh.facet_element_face(f);
-    if (at == kNoIndex) throw Error("migrating a part: its facet " + std::to_string(f + 1) + " is no face of its elements");
+    if (at == kNoIndex) throw Error("migrating a part: its facet " + one_based(f) + " is no face of its elements");
     if (mesh.facet_ref(f) != kInterfaceRef) out.emplace_back(at / (D + 1), f);
   }
   std::sort(out.begin(), out.end());

@@ -25,7 +25,7 @@ void refuse_first_bad_element(const Mesh<D>& mesh, Index bad, Index first, const
   const std::vector<long long> firsts = all_gather_value(own);
   const long long first_bad = *std::min_element(firsts.begin(), firsts.end());
   if (first_bad == kNone || own != first_bad) return;
-  throw Error(path + ": inconsistent mesh: element " + std::to_string(first_bad + 1) + " has non-positive P1 measure " +
+  throw Error(path + ": inconsistent mesh: element " + one_based(first_bad) + " has non-positive P1 measure " +
               std::to_string(element_measure(mesh, bad)) + " (see hocav stats)");
 }
 

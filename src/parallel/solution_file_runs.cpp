@@ -41,8 +41,7 @@ void write_solution_runs(const std::string& path, const SolutionField& run, Inde
       static_cast<std::streamoff>(skeleton.layout.first_row_offset + skeleton.layout.row_bytes * static_cast<std::uint64_t>(first_row)));
   out.write(reinterpret_cast<const char*>(run.values.data()), static_cast<std::streamsize>(run.values.size() * sizeof(double)));
   out.close();
-  if (!out)
-    throw Error(path + ": cannot write rows " + std::to_string(first_row + 1) + " on (rank " + std::to_string(process_rank()) + ")");
+  if (!out) throw Error(path + ": cannot write rows " + one_based(first_row) + " on (rank " + std::to_string(process_rank()) + ")");
   all_gather_value(0);  // every run is in place before rank 0 commits the file
 }
 

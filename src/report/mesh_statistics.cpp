@@ -278,7 +278,7 @@ std::string invalidity_summary(const MeshStatistics& s) {
   const JacobianStatistics& jacobian = s.jacobian;
   if (jacobian.invalid > 0)
     summary = std::to_string(jacobian.invalid) + (jacobian.invalid == 1 ? " element" : " elements") +
-              " with a non-positive Jacobian (first: element " + std::to_string(jacobian.first_invalid_element + 1) + ")";
+              " with a non-positive Jacobian (first: element " + one_based(jacobian.first_invalid_element) + ")";
   if (!s.consistency_problems.empty())
     summary += (summary.empty() ? "" : "; ") + std::string("consistency: ") + std::to_string(s.consistency_problems.size()) +
                " problems (first: " + s.consistency_problems.front() + ")";
@@ -431,7 +431,7 @@ void write_statistics_table(std::ostream& out, const MeshStatistics& s, const st
           (jacobian.straight ? "  (straight P1 elements: 1, or -1 when inverted)" : "  (per element: certified min of J / |J straight|)"));
   row("scaled Jacobian", figures_text(jacobian.scaled) + "  (per element: min J / max J)");
   row("invalid elements", std::to_string(jacobian.invalid) +
-                              (jacobian.invalid > 0 ? " (first: element " + std::to_string(jacobian.first_invalid_element + 1) + ")" : ""));
+                              (jacobian.invalid > 0 ? " (first: element " + one_based(jacobian.first_invalid_element) + ")" : ""));
   if (!jacobian.straight) {
     std::ostringstream header;
     header << std::right << std::setw(10) << "normalized" << std::setw(10) << "scaled";
