@@ -36,7 +36,7 @@ std::vector<SymMat<D>> metrics_of_array(const DoubleArray& array, Index rows, co
   constexpr auto kEntries = static_cast<py::ssize_t>(SymMat<D>::kEntryCount);
   if (array.ndim() != 2 || array.shape(0) != rows || array.shape(1) != kEntries) {
     std::string shape;
-    for (py::ssize_t i = 0; i < array.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(array.shape(i));
+    for (py::ssize_t i = 0; i < array.ndim(); ++i) shape.append(i ? ", " : "").append(std::to_string(array.shape(i)));
     throw Error(what + ": an array of shape (" + std::to_string(rows) + ", " + std::to_string(kEntries) +
                 ") expected (one symmetric matrix per vertex, its lower triangle row by row), not (" + shape + ")");
   }
