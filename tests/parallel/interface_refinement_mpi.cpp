@@ -10,7 +10,10 @@
 //   interface edge: those on the cube's flat sides too), and on a lattice plane every face with
 //   three such edges is turned into the four triangles of a uniform refinement (a quarter of its
 //   facets then has three new vertices; with the bisections alone none would);
-// - in 2D every interface edge off the boundary is split in two.
+// - in 2D every interface edge off the boundary is split in two;
+// - where the slabs meet on a facet between two materials (x = 0.5, on 2 and 4 processes), its
+//   edges are kept (a split would leave one of a face's two facets on no element's face: the
+//   refinement then throws), and the material facets stay whole.
 // Exit code 0 when all holds on every process, 1 otherwise (with a message).
 #include <algorithm>
 #include <cmath>
@@ -217,6 +220,74 @@ bool check(Mesh<D> mesh, bool with_geometry) {
   return ok;
 }
 
+// The mesh with two materials, x < 0.5 and x > 0.5, and facets of ref 9 between them: on 2 and 4
+// processes the slabs meet on that plane, so each interface face there holds a material facet too.
+template <int D>
+Mesh<D> two_materials(Mesh<D> mesh) {
+  const auto left = [&](Index k) {
+    double x = 0;
+    for (Index v : mesh.element(k)) x += mesh.vertex(v)[0] / (D + 1);
+    return x < 0.5;
+  };
+  for (Index k = 0; k < mesh.element_count(); ++k) mesh.set_element(k, mesh.element(k), left(k) ? 1 : 2);
+  mesh.build_topology();
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (int face = 0; face <= D; ++face)
+      if (const Index other = mesh.neighbor(k, face); other != kNoIndex && left(k) && !left(other)) {
+        typename Mesh<D>::Facet facet{};
+        for (int i = 0; i < D; ++i) facet[i] = mesh.element(k)[face_vertices<D>(face)[i]];
+        mesh.add_facet(facet, 9);
+      }
+  mesh.build_topology();
+  return mesh;
+}
+
+// The measure of the part's facets of `ref` (their length or area), over every process.
+template <int D>
+double facets_measure(const MeshPart<D>& part, int ref) {
+  double measure = 0;
+  for (Index f = 0; f < part.mesh.facet_count(); ++f) {
+    if (part.mesh.facet_removed(f) || part.mesh.facet_ref(f) != ref) continue;
+    const auto& facet = part.mesh.facet(f);
+    const Vec<D> u = part.mesh.vertex(facet[1]) - part.mesh.vertex(facet[0]);
+    if constexpr (D == 2)
+      measure += norm(u);
+    else
+      measure += 0.5 * norm(cross(u, part.mesh.vertex(facet[2]) - part.mesh.vertex(facet[0])));
+  }
+  return sum_over_processes(measure);
+}
+
+// An interface face that holds a material's facet keeps its edges (splitting one would leave one of
+// the face's two facets on no element's face), and the refinement of the other interfaces leaves the
+// part consistent with its material facets whole (their measure 1, each a face of an element).
+template <int D>
+bool check_material_interface(Mesh<D> mesh) {
+  const std::string name = std::string(D == 3 ? "cube" : "square") + " of two materials";
+  mesh = two_materials(std::move(mesh));
+  const P3Surrogate<D> surrogate(mesh);
+  MeshPart<D> part = own_slab(std::move(mesh));
+  const double material_before = facets_measure(part, 9);
+  Index next_id = 0;
+  for (Index id : part.global_ids) next_id = std::max(next_id, id + 1);
+  next_id = max_over_processes(next_id);
+  AnalyticMetricSpec uniform;
+  uniform.h = 0.02;
+  const AdaptationMetric<D> metric(uniform, SizeBounds{});
+  refine_interfaces(part, metric, &surrogate, next_id);
+  bool ok = true;
+  try {
+    Mesh<D>(part.mesh).build_topology();  // each facet a face of an element
+  } catch (const Error& error) {
+    ok = fail(name + ": " + error.what());
+  }
+  ok = faces_conform(part) && points_agree(part) && positive_and_filling(part) && ok;
+  const double material_after = facets_measure(part, 9);
+  if (std::abs(material_after - material_before) > 1e-12)
+    ok = fail(name + ": the material facets' measure became " + std::to_string(material_after));
+  return ok;
+}
+
 }  // namespace
 }  // namespace hocav
 
@@ -225,6 +296,6 @@ int main(int argc, char** argv) {
     bool ok = true;
     for (const bool with_geometry : {false, true})
       ok = hocav::check<3>(hocav::generate_cube(6), with_geometry) & hocav::check<2>(hocav::generate_square(6), with_geometry) & ok;
-    return ok;
+    return hocav::check_material_interface<3>(hocav::generate_cube(6)) & hocav::check_material_interface<2>(hocav::generate_square(6)) & ok;
   });
 }
