@@ -7,8 +7,8 @@
 // geometry), then, with --order 2, the curving of `hocav curve` in the same metric. Under
 // `mpirun -np N` (N > 1) the P1 loop and the curving are distributed (docs/distributed.md); every
 // process reads its piece of the input when adapts_from_pieces says so, else rank 0 reads it; a
-// Gamma output without --curved is curved and written in runs by the parts (its .vtu too), any other
-// by rank 0, which also runs the curved passes of --curved.
+// Gamma or .vtu output without --curved is curved and written in runs by the parts (its --vtu too),
+// a .msh by rank 0, which also runs the curved passes of --curved.
 #include <chrono>
 #include <cstdint>
 #include <iostream>
@@ -209,8 +209,8 @@ void distribute(AdaptationJob<D>& job, const AdaptOptions& o, std::vector<Distri
 }
 
 // Whether a distributed run ends in its parts, which curve it (--order 2) and write the output in
-// runs (docs/distributed.md §The end in the parts): a Gamma output (and its .vtu) without --curved;
-// else rank 0 gathers the mesh.
+// runs (docs/distributed.md §The end in the parts): a Gamma or .vtu output (and its --vtu) without
+// --curved; else rank 0 gathers the mesh.
 bool ends_in_parts(const AdaptOptions& o) { return !o.curved && writes_output_in_runs(o.output); }
 
 // With --order 2, the parts' curving: the geometry of the adapted boundary as the serial run makes
@@ -234,8 +234,7 @@ PartsEnd<D> end_in_parts(const AdaptOptions& o, const AdaptationJob<D>& job, con
                          const AdaptationSettings& settings, std::optional<OutputInParts>& output) {
   return
       [&o, geometry, &settings, &output, curving = parts_curving(o, job, geometry)](MeshPart<D>& part, const AdaptationMetric<D>& metric) {
-        output = finish_adaptation_in_parts(part, metric, geometry, settings, o.output, file_extension(o.output) == ".meshb", o.vtu,
-                                            curving ? &*curving : nullptr);
+        output = finish_adaptation_in_parts(part, metric, geometry, settings, o.output, o.vtu, curving ? &*curving : nullptr);
         return output->counts;
       };
 }

@@ -26,7 +26,9 @@ void CurvingProgress::complete() {
   if (line_) line_->complete();
 }
 
-bool writes_output_in_runs(const std::string& output) { return process_count() > 1 && is_gamma_path(output); }
+bool writes_output_in_runs(const std::string& output) {
+  return process_count() > 1 && (is_gamma_path(output) || file_extension(output) == ".vtu");
+}
 
 void print_curving_round(const DistributedCurvingRound& figures) {
   std::cerr << "distributed: round " << figures.round << " of " << figures.rounds << ": " << process_count() << " parts, "

@@ -40,7 +40,7 @@ class CurvingProgress {
 };
 
 // Whether a distributed run (several processes) writes `output` in runs from its parts: a Gamma file
-// (its .vtu, if any, is written in runs too).
+// or a .vtu (its --vtu, if any, is written in runs too).
 bool writes_output_in_runs(const std::string& output);
 
 // A round of a distributed curving (docs/distributed.md §Curving) on stderr.

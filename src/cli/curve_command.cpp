@@ -3,9 +3,9 @@
 // The paper's algorithm: propose boundary curvature, then reinsert every volume vertex with the P2
 // cavity operator, and write the curved P2 mesh with the Table-1 figures. Under `mpirun -np N`
 // (N > 1) the curving is distributed: every process reads its piece of a P1 Gamma input (else rank 0
-// reads the input and scatters it), the parts curve themselves and write a Gamma output in runs
-// (docs/distributed.md §Curving from pieces, §Curving in the parts), and a .vtu beside it (§A .vtu
-// in runs); for another format, rank 0 reads the input, gathers the curved mesh and writes it (§Curving).
+// reads the input and scatters it), the parts curve themselves and write a Gamma or .vtu output in
+// runs (docs/distributed.md §Curving from pieces, §Curving in the parts), and a .vtu beside it (§A
+// .vtu in runs); for a .msh, rank 0 reads the input, gathers the curved mesh and writes it (§Curving).
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -25,6 +25,7 @@
 #include "parallel/curving_in_parts.hpp"
 #include "parallel/distributed_curving.hpp"
 #include "parallel/mesh_file_pieces.hpp"
+#include "parallel/output_file_runs.hpp"
 #include "parallel/part_message.hpp"
 #include "parallel/piece_input_check.hpp"
 #include "parallel/pieces_into_parts.hpp"
@@ -60,8 +61,8 @@ CurvingReport curve_with_progress(Mesh<D>& mesh, const MetricField<D>& field, co
   return report;
 }
 
-// Whether a distributed curving ends in its parts, which write the output (and its .vtu) in runs: a
-// Gamma output; else rank 0 gathers the curved mesh.
+// Whether a distributed curving ends in its parts, which write the output (and its --vtu) in runs: a
+// Gamma or .vtu output; else rank 0 gathers the curved mesh.
 bool curves_in_parts(const CurveOptions& options) { return writes_output_in_runs(options.output); }
 
 // Whether a distributed curving in the parts reads its input in pieces, no process holding the
@@ -86,8 +87,8 @@ CurvingInParts curve_parts(ScatteredPart<D> scattered, const CurveOptions& optio
   curving.rounds[0].bytes_sent += sum_over_processes(scattered.bytes_sent);
   curving.rounds[0].seconds += scattered.seconds;
   // (The curving keeps the part's elements, facets and lines in their order.)
-  count_curved_output(curving.report, write_mesh_runs(options.output, scattered.part, file_extension(options.output) == ".meshb", 0,
-                                                      {scattered.element_ids, scattered.facet_ids, scattered.line_ids}));
+  count_curved_output(curving.report, write_mesh_file_runs(options.output, scattered.part,
+                                                           {scattered.element_ids, scattered.facet_ids, scattered.line_ids}));
   if (field) write_vtu_runs(options.vtu, scattered.part.mesh, curved_vtu_data(scattered.part.mesh, *field));
   return curving;
 }

@@ -7,6 +7,7 @@
 #include "base/stopwatch.hpp"
 #include "io/node_metrics.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/output_file_runs.hpp"
 #include "parallel/part_adaptation.hpp"
 #include "parallel/part_metric_statistics.hpp"
 #include "parallel/vtu_file_runs.hpp"
@@ -37,7 +38,7 @@ BoundarySettling summed_over_processes(const BoundarySettling& own) {
 
 template <int D>
 OutputInParts finish_adaptation_in_parts(MeshPart<D>& part, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
-                                         const AdaptationSettings& settings, const std::string& path, bool binary, const std::string& vtu,
+                                         const AdaptationSettings& settings, const std::string& path, const std::string& vtu,
                                          const PartsCurvingStep<D>* curving) {
   const auto start = std::chrono::steady_clock::now();
   OutputInParts out;
@@ -52,7 +53,7 @@ OutputInParts finish_adaptation_in_parts(MeshPart<D>& part, const AdaptationMetr
     out.curving = curve_in_parts(part, std::move(metrics), curving->geometry, curving->options, settings.measure_output);
     out.seconds_curve = max_over_processes(seconds_since(curving_start));
   }
-  out.counts = write_mesh_runs(path, part, binary);
+  out.counts = write_mesh_file_runs(path, part);
   if (field) write_vtu_runs(vtu, part.mesh, curved_vtu_data(part.mesh, *field));
   if (out.curving) count_curved_output(out.curving->report, out.counts);
   out.seconds = max_over_processes(seconds_since(start));
@@ -60,10 +61,10 @@ OutputInParts finish_adaptation_in_parts(MeshPart<D>& part, const AdaptationMetr
 }
 
 template OutputInParts finish_adaptation_in_parts(MeshPart<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*,
-                                                  const AdaptationSettings&, const std::string&, bool, const std::string&,
+                                                  const AdaptationSettings&, const std::string&, const std::string&,
                                                   const PartsCurvingStep<2>*);
 template OutputInParts finish_adaptation_in_parts(MeshPart<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*,
-                                                  const AdaptationSettings&, const std::string&, bool, const std::string&,
+                                                  const AdaptationSettings&, const std::string&, const std::string&,
                                                   const PartsCurvingStep<3>*);
 
 }  // namespace hocav

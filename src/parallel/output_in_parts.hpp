@@ -41,12 +41,13 @@ struct PartsCurvingStep {
 // and `metric` around it: the metric at its vertices, which they keep when the boundary settles onto
 // `geometry` (may be null; interface vertices frozen, settle_part_boundary), the output's figures in
 // it (distributed_metric_statistics), with `curving` the parts curved (curve_in_parts; their curved
-// measures with settings.measure_output), then the Gamma file `path` in runs (write_mesh_runs; .meshb
-// when `binary`; P2 when curved) and, unless `vtu` is empty, the .vtu `vtu` in runs (write_vtu_runs,
-// with the serial run's curved_vtu_data: the metric sampled from the part's vertices' metrics).
+// measures with settings.measure_output), then the mesh file `path` in runs (write_mesh_file_runs: a
+// Gamma file or a .vtu; P2 when curved) and, unless `vtu` is empty, the .vtu `vtu` in runs
+// (write_vtu_runs, with the serial run's curved_vtu_data: the metric sampled from the part's
+// vertices' metrics).
 template <int D>
 OutputInParts finish_adaptation_in_parts(MeshPart<D>& part, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
-                                         const AdaptationSettings& settings, const std::string& path, bool binary, const std::string& vtu,
+                                         const AdaptationSettings& settings, const std::string& path, const std::string& vtu,
                                          const PartsCurvingStep<D>* curving = nullptr);
 
 }  // namespace hocav

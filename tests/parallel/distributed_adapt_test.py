@@ -170,7 +170,8 @@ def entities_by_points(path):
 
 def check_end_in_parts(hocav, mpirun, work):
     """A P1 Gamma output is written in runs by the parts, measured there (docs/distributed.md §The
-    end in the parts), and so is its .vtu (§A .vtu in runs); another format (.msh) rank 0 gathers as
+    end in the parts), and so is its .vtu (§A .vtu in runs) and a .vtu output alone, whose report
+    counts the Gamma output's vertices and elements; another format (.msh) rank 0 gathers as
     before. The same partitions give the same mesh either way (but the Ridges keyword, which a .msh
     does not carry), and the same figures to rounding (both from rank 0's whole input, a .msh: a
     Gamma input read in pieces is cut otherwise)."""
@@ -178,6 +179,11 @@ def check_end_in_parts(hocav, mpirun, work):
     adapt = mpirun + ["-np", "2", hocav, "adapt", "cube.msh", "--metric", "cube.solb", "--order", "1", "--threads", "1", "-q"]
     run(adapt + ["-o", "parts.mesh", "--vtu", "parts.vtu", "--report", "parts.json"], work)
     check_vtu_in_runs(hocav, work, "parts.vtu", "parts.mesh", "the end in the parts")
+    run(adapt + ["-o", "alone.vtu", "--report", "alone.json"], work)
+    check_vtu_in_runs(hocav, work, "alone.vtu", "parts.mesh", "the end in the parts to a .vtu", metric=False, jacobians=False)
+    alone, beside = (json.load(open(os.path.join(work, name))) for name in ("alone.json", "parts.json"))
+    for key in ("output_vertices", "output_elements"):
+        assert alone[key] == beside[key], f"the end in the parts to a .vtu: {key} {alone[key]}, to a Gamma file {beside[key]}"
     run(adapt + ["-o", "gathered.msh", "--report", "gathered.json"], work)
     run([hocav, "convert", "gathered.msh", "gathered.mesh"], work)
     parts, gathered = (entities_by_points(os.path.join(work, name)) for name in ("parts.mesh", "gathered.mesh"))

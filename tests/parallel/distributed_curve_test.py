@@ -9,7 +9,7 @@ With one process the output must be the serial one byte for byte. With 2 and 3 p
 curve themselves and write the file in runs (§Curving from pieces, §Curving in the parts); from a
 .msh input rank 0 reads the whole and scatters it (on 2 processes); to a .msh output rank 0 gathers
 the curved mesh (§Curving; once per case, on 2 processes); on 3 processes a .vtu is written in runs
-beside the output and holds its cells (§A .vtu in runs). The output is
+beside the output and holds its cells, and so is a .vtu output alone (§A .vtu in runs). The output is
 consistent, P2, certified (every element's min normalized Jacobian above the floor, as `hocav stats`
 measures it), has the serial run's P1 mesh (its vertices, elements, facets and feature lines in their order) and
 refs; its gain and mean normalized Jacobian lie near the serial run's; the second round
@@ -111,6 +111,17 @@ def serial_error(hocav, work, args):
     return result.stderr.strip()
 
 
+def check_vtu_output(hocav, mpirun, work, given, name):
+    """The same run to a .vtu alone (`-o`): the parts write it in runs (docs/distributed.md §A .vtu in
+    runs), the cells of the Gamma output with their refs, and the report counts the mesh's elements
+    and points (each vertex and node once) as the Gamma output's."""
+    run(mpirun + ["-np", "3", hocav] + given + ["-o", name + "_alone.vtu", "--report", name + "_alone.json", "-q"], work)
+    check_vtu_in_runs(hocav, work, name + "_alone.vtu", name + ".meshb", name + " to a .vtu", metric=False, jacobians=False)
+    alone, beside = report(work, name + "_alone.json"), report(work, name + ".json")
+    for key in ("elements", "points_before", "points_after"):
+        assert alone[key] == beside[key], f"{name} to a .vtu: {key} {alone[key]}, to a Gamma file {beside[key]}"
+
+
 def check_refusals(hocav, mpirun, work):
     """The last element of the cubed shell inverted, then repeating a vertex, then the last metric row
     made indefinite: each in the last process's run, refused as the serial run refuses it."""
@@ -184,6 +195,7 @@ def check(hocav, mpirun, work):
                 run([hocav, "convert", output, name + ".meshb"], work)
             if processes == 3:
                 check_vtu_in_runs(hocav, work, name + ".vtu", name + ".meshb", name)
+                check_vtu_output(hocav, mpirun, work, given, name)
             assert len(found) in ((2, 3) if scheme == "gathered" else (2,)), f"{name}: rounds {found}"
             data = check_against_serial(hocav, work, name, serial, serial_report)
             assert p1_mesh(hocav, work, name) == serial_p1, f"{name}: not the serial run's P1 mesh"

@@ -64,11 +64,12 @@ def refused(mpirun, hocav, work, args, output, words):
     assert not os.path.exists(os.path.join(work, output)), f"{args}: {output} was written"
 
 
-def check_vtu_in_runs(hocav, work, vtu, mesh, what, metric=True):
+def check_vtu_in_runs(hocav, work, vtu, mesh, what, metric=True, jacobians=True):
     """A .vtu that the parts wrote in runs (docs/distributed.md §A .vtu in runs) against `mesh`, the
     run's Gamma output: meshio reads the same cells as in `hocav convert`'s .vtu of it (each by its
-    points' coordinates, with its ref and min normalized Jacobian), at least as many points (a vertex
-    of several parts is a point of each), and with `metric` a metric at every point."""
+    points' coordinates, with its ref and, with `jacobians`, its min normalized Jacobian), at least as
+    many points (a vertex of several parts is a point of each), and with `metric` a metric at every
+    point."""
     import meshio  # (only here: the other distributed tests run without it)
     import numpy
     run([hocav, "convert", mesh, "expected-of-runs.vtu"], work)
@@ -77,8 +78,8 @@ def check_vtu_in_runs(hocav, work, vtu, mesh, what, metric=True):
 
     def cells(grid):
         (block,) = grid.cells
-        jacobians = numpy.round(grid.cell_data["min_normalized_jacobian"][0], 9)
-        return sorted((tuple(grid.points[c].ravel()), int(r), j) for c, r, j in zip(block.data, grid.cell_data["ref"][0], jacobians))
+        values = numpy.round(grid.cell_data["min_normalized_jacobian"][0], 9) if jacobians else [None] * len(block.data)
+        return sorted((tuple(grid.points[c].ravel()), int(r), j) for c, r, j in zip(block.data, grid.cell_data["ref"][0], values))
 
     assert cells(got) == cells(expected), f"{what}: {vtu} holds other cells than {mesh}"
     assert len(got.points) >= len(expected.points), f"{what}: {len(got.points)} points, {mesh} {len(expected.points)}"

@@ -1,0 +1,41 @@
+#include "parallel/output_file_runs.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "io/mesh_file.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/distinct_ids.hpp"
+#include "parallel/vtu_file_runs.hpp"
+
+namespace hocav {
+
+template <int D>
+MeshFileCounts distinct_mesh_counts(const MeshPart<D>& part) {
+  MeshFileCounts counts;
+  counts.vertices = distinct_count(part.global_ids);
+  counts.elements = sum_over_processes(part.mesh.element_count());
+  std::vector<std::uint64_t> edges;
+  if (part.mesh.is_p2())
+    for (const auto& [a, b] : part.mesh.edges()) {
+      const auto [low, high] = std::minmax(part.global_ids[a], part.global_ids[b]);
+      edges.push_back(std::uint64_t{static_cast<std::uint32_t>(low)} << 32 | static_cast<std::uint32_t>(high));
+    }
+  counts.nodes = distinct_count(edges);
+  return counts;
+}
+
+template <int D>
+MeshFileCounts write_mesh_file_runs(const std::string& path, const MeshPart<D>& part, const EntityOrders& orders) {
+  if (file_extension(path) != ".vtu") return write_mesh_runs(path, part, file_extension(path) == ".meshb", 0, orders);
+  write_vtu_runs(path, part.mesh);
+  return distinct_mesh_counts(part);
+}
+
+template MeshFileCounts distinct_mesh_counts(const MeshPart<2>&);
+template MeshFileCounts distinct_mesh_counts(const MeshPart<3>&);
+template MeshFileCounts write_mesh_file_runs(const std::string&, const MeshPart<2>&, const EntityOrders&);
+template MeshFileCounts write_mesh_file_runs(const std::string&, const MeshPart<3>&, const EntityOrders&);
+
+}  // namespace hocav
