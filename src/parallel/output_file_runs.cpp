@@ -1,6 +1,5 @@
 #include "parallel/output_file_runs.hpp"
 
-#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -18,10 +17,7 @@ MeshFileCounts distinct_mesh_counts(const MeshPart<D>& part) {
   counts.elements = sum_over_processes(part.mesh.element_count());
   std::vector<std::uint64_t> edges;
   if (part.mesh.is_p2())
-    for (const auto& [a, b] : part.mesh.edges()) {
-      const auto [low, high] = std::minmax(part.global_ids[a], part.global_ids[b]);
-      edges.push_back(std::uint64_t{static_cast<std::uint32_t>(low)} << 32 | static_cast<std::uint32_t>(high));
-    }
+    for (const auto& [a, b] : part.mesh.edges()) edges.push_back(Mesh<D>::edge_key(part.global_ids[a], part.global_ids[b]));
   counts.nodes = distinct_count(edges);
   return counts;
 }

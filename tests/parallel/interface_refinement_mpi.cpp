@@ -181,22 +181,33 @@ Index line_count(const Mesh<D>& mesh) {
   return count;
 }
 
+// The first global id no process's part uses: the refinement numbers its new vertices from it.
+template <int D>
+Index first_new_id(const MeshPart<D>& part) {
+  Index own_next = 0;
+  for (Index id : part.global_ids) own_next = std::max(own_next, id + 1);
+  return max_over_processes(own_next);
+}
+
+// A uniform metric in which every edge of the 6-cell lattice is longer than √2.
+template <int D>
+AdaptationMetric<D> finer_than_the_lattice() {
+  AnalyticMetricSpec uniform;
+  uniform.h = 0.02;
+  return AdaptationMetric<D>(uniform, SizeBounds{});
+}
+
 template <int D>
 bool check(Mesh<D> mesh, bool with_geometry) {
   const std::string name = std::string(D == 3 ? "cube" : "square") + (with_geometry ? " with its geometry" : "");
   const P3Surrogate<D> surrogate(mesh);
   MeshPart<D> part = own_slab(std::move(mesh));
   const Index lines_before = line_count(part.mesh);
-  Index own_next = 0;
-  for (Index id : part.global_ids) own_next = std::max(own_next, id + 1);
-  const Index first_new = max_over_processes(own_next);
+  const Index first_new = first_new_id(part);
   const Expected own = expected_refinement(part, with_geometry);  // each edge and face once per side
   const Expected expected{sum_over_processes(own.edges), sum_over_processes(own.facets), sum_over_processes(own.faces)};
-  AnalyticMetricSpec uniform;
-  uniform.h = 0.02;  // every edge of the 6-cell lattice is longer than √2
-  const AdaptationMetric<D> metric(uniform, SizeBounds{});
   Index next_id = first_new;
-  const InterfaceRefinement refined = refine_interfaces(part, metric, with_geometry ? &surrogate : nullptr, next_id);
+  const InterfaceRefinement refined = refine_interfaces(part, finer_than_the_lattice<D>(), with_geometry ? &surrogate : nullptr, next_id);
   const std::vector<Index> next_ids = all_gather_value(next_id);
   bool ok = std::all_of(next_ids.begin(), next_ids.end(), [&](Index each) { return each == next_id; }) ||
             fail(name + ": the processes' next global ids differ");
@@ -258,9 +269,10 @@ double facets_measure(const MeshPart<D>& part, int ref) {
   return sum_over_processes(measure);
 }
 
-// An interface face that holds a material's facet keeps its edges (splitting one would leave one of
-// the face's two facets on no element's face), and the refinement of the other interfaces leaves the
-// part consistent with its material facets whole (their measure 1, each a face of an element).
+// An interface face that holds a material's facet keeps its edges (no new vertex on x = 0.5;
+// splitting one would leave one of the face's two facets on no element's face, and the refinement
+// throws), and the refinement of the other interfaces leaves the part consistent with its material
+// facets whole (their measure 1, each a face of an element).
 template <int D>
 bool check_material_interface(Mesh<D> mesh) {
   const std::string name = std::string(D == 3 ? "cube" : "square") + " of two materials";
@@ -268,14 +280,12 @@ bool check_material_interface(Mesh<D> mesh) {
   const P3Surrogate<D> surrogate(mesh);
   MeshPart<D> part = own_slab(std::move(mesh));
   const double material_before = facets_measure(part, 9);
-  Index next_id = 0;
-  for (Index id : part.global_ids) next_id = std::max(next_id, id + 1);
-  next_id = max_over_processes(next_id);
-  AnalyticMetricSpec uniform;
-  uniform.h = 0.02;
-  const AdaptationMetric<D> metric(uniform, SizeBounds{});
-  refine_interfaces(part, metric, &surrogate, next_id);
+  const Index first_new = first_new_id(part);
+  Index next_id = first_new;
+  refine_interfaces(part, finer_than_the_lattice<D>(), &surrogate, next_id);
   bool ok = true;
+  for (Index v = 0; v < part.mesh.vertex_count(); ++v)
+    if (part.global_ids[v] >= first_new && part.mesh.vertex(v)[0] == 0.5) ok = fail(name + ": an edge on the material facets split");
   try {
     Mesh<D>(part.mesh).build_topology();  // each facet a face of an element
   } catch (const Error& error) {
