@@ -18,6 +18,7 @@
 #include "base/error.hpp"
 #include "base/index_hash_map.hpp"
 #include "io/atomic_output.hpp"
+#include "io/gmsh_msh_text.hpp"
 #include "io/mesh_assembly.hpp"
 #include "io/printable_excerpt.hpp"
 #include "io/text_scanner.hpp"
@@ -28,39 +29,10 @@ namespace {
 constexpr std::string_view kConvertHint = "convert with: gmsh IN.msh -0 -format msh41 -save_all -o OUT.msh";
 constexpr std::string_view kSupportedTypes = "15 point, 1 line2, 8 line3, 2 tri3, 9 tri6, 4 tet4, 11 tet10";
 
-struct ElementType {
-  int gmsh_type;
-  int dimension;
-  int order;
-  int node_count;
-  std::string_view name;
-  // The hocav local position of the node at each Gmsh position. Only tet10 differs from hocav's
-  // order (Gmsh lists m23 before m13); a swap is its own inverse, so writing uses the same table.
-  std::array<int, 10> hocav_position;
-};
-
-constexpr std::array<int, 10> kSameOrder{0, 1, 2, 3, 4, 5, 6, 7, 8, 9};
-constexpr std::array<ElementType, 7> kElementTypes{{
-    {15, 0, 1, 1, "point", kSameOrder},
-    {1, 1, 1, 2, "line2", kSameOrder},
-    {8, 1, 2, 3, "line3", kSameOrder},
-    {2, 2, 1, 3, "tri3", kSameOrder},
-    {9, 2, 2, 6, "tri6", kSameOrder},
-    {4, 3, 1, 4, "tet4", kSameOrder},
-    {11, 3, 2, 10, "tet10", {0, 1, 2, 3, 4, 5, 6, 7, 9, 8}},
-}};
-
-const ElementType* find_element_type(std::int64_t gmsh_type) {
-  for (const ElementType& type : kElementTypes)
-    if (type.gmsh_type == gmsh_type) return &type;
-  return nullptr;
-}
-
-const ElementType& element_type(int dimension, int order) {
-  for (const ElementType& type : kElementTypes)
-    if (type.dimension == dimension && type.order == order) return type;
-  throw Error("no Gmsh element type of dimension " + std::to_string(dimension));
-}
+using gmsh_msh::element_type;
+using gmsh_msh::ElementType;
+using gmsh_msh::find_element_type;
+using gmsh_msh::TextWriter;
 
 // Shape names of the Gmsh element types hocav refuses, so the message says what was found.
 std::string_view unsupported_type_name(std::int64_t gmsh_type) {
@@ -371,41 +343,6 @@ MeshFileContent assemble(MshContent&& content, const std::string& path) {
   return assemble_mesh(std::move(raw), path);
 }
 
-// Buffered text output: numbers through std::to_chars (shortest form that reads back exactly).
-class TextWriter {
- public:
-  explicit TextWriter(std::ostream& out) : out_(out) { buffer_.reserve(kFlushSize + 256); }
-
-  TextWriter& operator<<(std::string_view text) {
-    buffer_ += text;
-    return flush_if_full();
-  }
-  TextWriter& operator<<(char c) {
-    buffer_ += c;
-    return flush_if_full();
-  }
-  template <typename Number>
-  requires std::is_arithmetic_v<Number> TextWriter& operator<<(Number value) {
-    char digits[32];
-    auto result = std::to_chars(digits, digits + sizeof digits, value);
-    buffer_.append(digits, result.ptr);
-    return flush_if_full();
-  }
-  void flush() {
-    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
-    buffer_.clear();
-  }
-
- private:
-  static constexpr std::size_t kFlushSize = 1 << 16;
-  TextWriter& flush_if_full() {
-    if (buffer_.size() >= kFlushSize) flush();
-    return *this;
-  }
-  std::ostream& out_;
-  std::string buffer_;
-};
-
 // One kind of entity written (points, lines, facets or elements), grouped by ref: Gmsh entity
 // i + 1 holds the entities by_ref[entity_begin[i] .. entity_begin[i + 1]), all of one ref, in
 // mesh order.
@@ -471,17 +408,8 @@ std::array<WrittenGroup, 4> written_groups(const Mesh<D>& mesh) {
   return groups;
 }
 
-template <int D>
-void write_point(TextWriter& out, const Vec<D>& point) {
-  out << point[0] << ' ' << point[1] << ' ';
-  if constexpr (D == 3)
-    out << point[2];
-  else
-    out << '0';
-}
-
-// Entity i + 1 of each dimension has physical tag = its ref. Every curve, surface and volume gets
-// the bounding box of all nodes: a valid bound, and neither gmsh nor meshio uses it for a mesh.
+// The entities of each dimension by ref, each point entity at its first point, in the bounding box
+// of every node.
 template <int D>
 void write_entities(TextWriter& out, const Mesh<D>& mesh, const std::array<WrittenGroup, 4>& groups) {
   Vec<D> low, high;
@@ -494,45 +422,33 @@ void write_entities(TextWriter& out, const Mesh<D>& mesh, const std::array<Writt
   };
   for (const auto& vertex : mesh.vertices()) extend(vertex);
   for (Index e = 0; mesh.is_p2() && e < mesh.edge_count(); ++e) extend(mesh.edge_node(e));
-  out << "$Entities\n";
-  for (int dimension = 0; dimension < 4; ++dimension) out << groups[dimension].entity_count() << (dimension < 3 ? ' ' : '\n');
+  std::array<std::vector<int>, 4> refs;
+  std::vector<Vec<D>> points;
   for (int dimension = 0; dimension < 4; ++dimension) {
     const WrittenGroup& group = groups[dimension];
     for (std::size_t entity = 0; entity < group.entity_count(); ++entity) {
-      out << entity + 1 << ' ';
-      if (dimension == 0) {
-        Index node;  // a point entity sits at its first point
-        group.nodes(group.by_ref[group.entity_begin[entity]], &node);
-        write_point(out, mesh.vertex(node));
-      } else {
-        write_point(out, low);
-        out << ' ';
-        write_point(out, high);
-      }
-      out << " 1 " << group.entity_ref(entity) << (dimension > 0 ? " 0\n" : "\n");
+      refs[dimension].push_back(group.entity_ref(entity));
+      if (dimension > 0) continue;
+      Index node;
+      group.nodes(group.by_ref[group.entity_begin[entity]], &node);
+      points.push_back(mesh.vertex(node));
     }
   }
-  out << "$EndEntities\n";
+  gmsh_msh::write_entities(out, refs, points, low, high);
 }
 
 template <int D>
 void write_nodes(TextWriter& out, const Mesh<D>& mesh) {
   const Index node_count = mesh.vertex_count() + (mesh.is_p2() ? mesh.edge_count() : 0);
-  out << "$Nodes\n";
-  if (node_count == 0) {
-    out << "0 0 0 0\n$EndNodes\n";
-    return;
-  }
-  // All nodes in one block on the first element entity: gmsh and meshio accept nodes classified on
-  // an entity of higher dimension than the elements that use them.
-  out << "1 " << node_count << " 1 " << node_count << '\n' << D << " 1 0 " << node_count << '\n';
+  gmsh_msh::write_nodes_head(out, D, node_count);
+  if (node_count == 0) return;
   for (Index node = 1; node <= node_count; ++node) out << node << '\n';
   for (const auto& vertex : mesh.vertices()) {
-    write_point(out, vertex);
+    gmsh_msh::write_point(out, vertex);
     out << '\n';
   }
   for (Index e = 0; mesh.is_p2() && e < mesh.edge_count(); ++e) {
-    write_point(out, mesh.edge_node(e));
+    gmsh_msh::write_point(out, mesh.edge_node(e));
     out << '\n';
   }
   out << "$EndNodes\n";
@@ -544,23 +460,18 @@ void write_elements(TextWriter& out, const std::array<WrittenGroup, 4>& groups) 
     block_count += group.entity_count();
     element_count += group.by_ref.size();
   }
-  out << "$Elements\n" << block_count << ' ' << element_count << ' ' << (element_count > 0 ? 1 : 0) << ' ' << element_count << '\n';
+  gmsh_msh::write_elements_head(out, block_count, element_count);
   std::size_t tag = 1;
   std::array<Index, 10> nodes;
-  for (int dimension = 0; dimension < 4; ++dimension) {
-    const WrittenGroup& group = groups[dimension];
+  for (const WrittenGroup& group : groups)
     for (std::size_t entity = 0; entity < group.entity_count(); ++entity) {
       std::size_t begin = group.entity_begin[entity], end = group.entity_begin[entity + 1];
-      out << dimension << ' ' << entity + 1 << ' ' << group.type->gmsh_type << ' ' << end - begin << '\n';
+      gmsh_msh::write_block_head(out, entity + 1, *group.type, end - begin);
       for (std::size_t i = begin; i < end; ++i) {
         group.nodes(group.by_ref[i], nodes.data());
-        out << tag++;
-        for (int position = 0; position < group.type->node_count; ++position)
-          out << ' ' << nodes[static_cast<std::size_t>(group.type->hocav_position[position])] + 1;
-        out << '\n';
+        gmsh_msh::write_element(out, tag++, *group.type, nodes.data());
       }
     }
-  }
   out << "$EndElements\n";
 }
 
@@ -578,7 +489,7 @@ void write_gmsh_msh(const std::string& path, const Mesh<D>& mesh) {
   std::array<WrittenGroup, 4> groups = written_groups(mesh);
   AtomicOutput output(path);
   TextWriter out(output.stream());
-  out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+  out << gmsh_msh::kMeshFormat;
   write_entities(out, mesh, groups);
   write_nodes(out, mesh);
   write_elements(out, groups);

@@ -13,87 +13,14 @@
 #include "mesh/simplex.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/entity_tags.hpp"
-#include "parallel/face_key.hpp"
 #include "parallel/file_in_runs.hpp"
+#include "parallel/file_numbers.hpp"
 
 namespace hocav {
 namespace {
 
-constexpr char kCornerFlag = 1, kRequiredFlag = 2, kRidgeFlag = 4;
 // The places of an element order sent at once (docs/distributed.md §Writing in runs).
 constexpr Index kElementWindow = Index{1} << 16;
-
-// A vertex on its way to the process of its run of global ids.
-template <int D>
-struct VertexToRun {
-  Index id;
-  Vec<D> point;
-  int ref;
-  char flags;  // kCornerFlag, kRequiredFlag
-};
-
-// What that process answers: the vertex's file number (from 0), and whether another part holds it.
-struct VertexNumber {
-  Index number;
-  std::int32_t shared;
-};
-
-// An element, facet or line on its way to the process of its run of places in the file (an
-// order's).
-template <std::size_t M>
-struct PlacedRow {
-  Index place;
-  int ref;
-  char flags;                    // a facet's or line's kRidgeFlag, kRequiredFlag
-  std::array<Index, M> numbers;  // its vertices' file numbers, then its nodes' (P2; kNoIndex for P1)
-};
-
-// A line's row: its ends' file numbers in its order, then its P2 node's.
-using LineRow = PlacedRow<3>;
-
-// An edge (P2 node) or a feature line that several parts may hold, on its way to the process its
-// ends' global ids hash to.
-template <int D>
-struct SharedEdge {
-  FaceKey<2> key;  // the sorted global ids of its ends
-  Vec<D> node;     // an edge's P2 node
-  LineRow line;    // a line's row (its place kNoIndex without a line order)
-};
-
-// Where an arrived record lies: its sender and its place in the sender's message.
-struct Arrival {
-  int from;
-  std::size_t at;
-};
-
-// The records that arrived, grouped by key: `order` sorted by key, rank order within a key, and
-// group g is order[starts[g], starts[g + 1]).
-struct ArrivalGroups {
-  std::vector<Arrival> order;
-  std::vector<std::size_t> starts;
-  std::size_t count() const { return starts.size() - 1; }
-};
-
-template <class Record, class KeyOf>
-ArrivalGroups grouped(const std::vector<std::vector<Record>>& arrived, KeyOf key_of) {
-  ArrivalGroups groups;
-  for (std::size_t from = 0; from < arrived.size(); ++from)
-    for (std::size_t at = 0; at < arrived[from].size(); ++at) groups.order.push_back({static_cast<int>(from), at});
-  const auto key = [&](const Arrival& a) { return key_of(arrived[static_cast<std::size_t>(a.from)][a.at]); };
-  std::stable_sort(groups.order.begin(), groups.order.end(), [&](const Arrival& a, const Arrival& b) { return key(a) < key(b); });
-  for (std::size_t i = 0; i < groups.order.size(); ++i)
-    if (i == 0 || key(groups.order[i - 1]) < key(groups.order[i])) groups.starts.push_back(i);
-  groups.starts.push_back(groups.order.size());
-  return groups;
-}
-
-// Empty answers shaped as the messages that arrived, one per record.
-template <class Answer, class Record>
-std::vector<std::vector<Answer>> answers_for(const std::vector<std::vector<Record>>& arrived) {
-  std::vector<std::vector<Answer>> answers(arrived.size());
-  for (std::size_t from = 0; from < arrived.size(); ++from) answers[from].resize(arrived[from].size());
-  return answers;
-}
 
 // One process's records of one keyword, encoded as the file's format writes them.
 class ChunkRecords {
@@ -128,23 +55,20 @@ class RunsWriter {
  public:
   RunsWriter(const std::string& path, const MeshPart<D>& part, bool binary, const EntityOrders& orders)
       : path_(path),
-        part_(part),
         mesh_(part.mesh),
         binary_(binary),
         element_order_(orders.elements),
         facet_order_(orders.facets),
-        line_order_(orders.lines) {
-    if (part.global_ids.size() != static_cast<std::size_t>(mesh_.vertex_count()) ||
-        part.pinned.size() != static_cast<std::size_t>(mesh_.vertex_count()) || !mesh_.is_compact())
-      throw std::logic_error("write_mesh_runs: a part without global ids or pinned flags, or not compact");
+        line_order_(orders.lines),
+        numbers_(path, part) {
     if (!element_order_.empty() && element_order_.size() != static_cast<std::size_t>(mesh_.element_count()))
       throw std::logic_error("write_mesh_runs: an element order that is not one place per element");
   }
 
   MeshFileCounts write(int requested_version) {
-    number_vertices();
-    const bool p2 = sum_over_processes(static_cast<int>(mesh_.is_p2())) > 0;
-    if (p2) number_nodes();
+    const bool p2 = numbers_.p2();
+    counts_.vertices = numbers_.vertex_count();
+    counts_.nodes = numbers_.node_count();
     version_ = gamma::resolve_version(path_, requested_version, std::int64_t{counts_.vertices} + counts_.nodes, binary_ ? 3 : 2);
     const int order = p2 ? 2 : 1;
     encode_vertices();
@@ -175,98 +99,6 @@ class RunsWriter {
     return {keyword.code, keyword.node_count + 1, 0, {&records}};
   }
 
-  // Every vertex to the process of its run of global ids, which numbers the vertices it gets in id
-  // order (after the runs before it) and answers each part its numbers.
-  void number_vertices() {
-    const Index id_space = max_over_processes(
-        part_.global_ids.empty() ? Index{0} : *std::max_element(part_.global_ids.begin(), part_.global_ids.end()) + 1);
-    const EntityTags<D> tags(mesh_);
-    std::vector<std::vector<VertexToRun<D>>> outgoing(static_cast<std::size_t>(process_count()));
-    std::vector<std::vector<Index>> sent(outgoing.size());  // the part's vertices, as sent to each process
-    for (Index v = 0; v < mesh_.vertex_count(); ++v) {
-      const auto run = static_cast<std::size_t>(slice_holding(part_.global_ids[v], id_space, process_count()));
-      const char flags = static_cast<char>((tags.corner[v] ? kCornerFlag : 0) | ((part_.pinned[v] & kPinnedByMesh) ? kRequiredFlag : 0));
-      outgoing[run].push_back({part_.global_ids[v], mesh_.vertex(v), mesh_.vertex_ref(v), flags});
-      sent[run].push_back(v);
-    }
-    const std::vector<std::vector<VertexToRun<D>>> arrived = exchange_values(outgoing);
-    const ArrivalGroups groups = grouped(arrived, [](const VertexToRun<D>& r) { return r.id; });
-    const CountOffset offset = offset_over_processes(static_cast<Index>(groups.count()));
-    counts_.vertices = offset.total;
-    first_vertex_ = offset.before;
-    std::vector<std::vector<VertexNumber>> answers = answers_for<VertexNumber>(arrived);
-    for (std::size_t g = 0; g < groups.count(); ++g) {
-      const Arrival first = groups.order[groups.starts[g]];
-      VertexToRun<D> row = arrived[static_cast<std::size_t>(first.from)][first.at];
-      for (std::size_t i = groups.starts[g]; i < groups.starts[g + 1]; ++i) {
-        const VertexToRun<D>& other = arrived[static_cast<std::size_t>(groups.order[i].from)][groups.order[i].at];
-        if (!(other.point == row.point))
-          throw Error(path_ + ": vertex " + one_based(row.id) + " has different points in two parts of the distributed mesh");
-        row.flags = static_cast<char>(row.flags | other.flags);
-        answers[static_cast<std::size_t>(groups.order[i].from)][groups.order[i].at] = {offset.before + static_cast<Index>(g),
-                                                                                       groups.starts[g + 1] - groups.starts[g] > 1};
-      }
-      vertex_rows_.push_back(row);
-    }
-    number_.assign(static_cast<std::size_t>(mesh_.vertex_count()), kNoIndex);
-    shared_.assign(number_.size(), 0);
-    const std::vector<std::vector<VertexNumber>> numbers = exchange_values(answers);
-    for (std::size_t run = 0; run < sent.size(); ++run)
-      for (std::size_t i = 0; i < sent[run].size(); ++i) {
-        number_[sent[run][i]] = numbers[run].at(i).number;
-        shared_[sent[run][i]] = static_cast<char>(numbers[run].at(i).shared);
-      }
-  }
-
-  bool shared_edge(Index a, Index b) const { return shared_[a] && shared_[b]; }
-  FaceKey<2> edge_key(Index a, Index b) const { return sorted_key<2>({part_.global_ids[a], part_.global_ids[b]}); }
-
-  // A P2 mesh's nodes: an edge with both ends shared may lie in several parts, and goes to the
-  // process its ends hash to, which numbers it once (after that process's other edges); every other
-  // edge is its part's own.
-  void number_nodes() {
-    std::vector<std::vector<SharedEdge<D>>> outgoing(static_cast<std::size_t>(process_count()));
-    std::vector<std::vector<Index>> sent(outgoing.size());
-    Index own = 0;
-    for (Index e = 0; e < mesh_.edge_count(); ++e) {
-      const auto [a, b] = mesh_.edge_vertices(e);
-      if (!shared_edge(a, b)) {
-        ++own;
-        continue;
-      }
-      const FaceKey<2> key = edge_key(a, b);
-      const auto to = static_cast<std::size_t>(meeting_process<2>(key, process_count()));
-      outgoing[to].push_back({key, mesh_.edge_node(e), {}});
-      sent[to].push_back(e);
-    }
-    const std::vector<std::vector<SharedEdge<D>>> arrived = exchange_values(outgoing);
-    const ArrivalGroups groups = grouped(arrived, [](const SharedEdge<D>& r) { return r.key; });
-    const CountOffset offset = offset_over_processes(own + static_cast<Index>(groups.count()));
-    counts_.nodes = offset.total;
-    const Index first = counts_.vertices + offset.before;  // this process's first node
-    node_number_.assign(static_cast<std::size_t>(mesh_.edge_count()), kNoIndex);
-    Index next = first;
-    for (Index e = 0; e < mesh_.edge_count(); ++e)
-      if (const auto [a, b] = mesh_.edge_vertices(e); !shared_edge(a, b)) node_number_[e] = next++;
-    std::vector<std::vector<Index>> answers = answers_for<Index>(arrived);
-    for (std::size_t g = 0; g < groups.count(); ++g) {
-      const Arrival head = groups.order[groups.starts[g]];
-      const SharedEdge<D>& edge = arrived[static_cast<std::size_t>(head.from)][head.at];
-      for (std::size_t i = groups.starts[g]; i < groups.starts[g + 1]; ++i) {
-        const SharedEdge<D>& other = arrived[static_cast<std::size_t>(groups.order[i].from)][groups.order[i].at];
-        if (!(other.node == edge.node))
-          throw Error(path_ + ": edge (" + one_based(edge.key[0]) + ", " + one_based(edge.key[1]) +
-                      ") has different P2 nodes in two parts of the distributed mesh");
-        answers[static_cast<std::size_t>(groups.order[i].from)][groups.order[i].at] = next;
-      }
-      shared_nodes_.push_back(edge.node);
-      ++next;
-    }
-    const std::vector<std::vector<Index>> numbers = exchange_values(answers);
-    for (std::size_t to = 0; to < sent.size(); ++to)
-      for (std::size_t i = 0; i < sent[to].size(); ++i) node_number_[sent[to][i]] = numbers[to].at(i);
-  }
-
   void write_point(ChunkRecords& out, const Vec<D>& point, int ref) const {
     for (int i = 0; i < D; ++i) out.write_real(point[i]);
     out.write_integer(ref);
@@ -275,9 +107,9 @@ class RunsWriter {
 
   void encode_vertices() {
     vertices_ = corners_ = required_vertices_ = records();
-    for (const VertexToRun<D>& row : vertex_rows_) write_point(vertices_, row.point, row.ref);
-    Index next = first_vertex_;
-    for (const VertexToRun<D>& row : vertex_rows_) {
+    for (const VertexToRun<D>& row : numbers_.vertex_rows()) write_point(vertices_, row.point, row.ref);
+    Index next = numbers_.first_vertex();
+    for (const VertexToRun<D>& row : numbers_.vertex_rows()) {
       if (row.flags & kCornerFlag) write_id(corners_, next);
       if (row.flags & kRequiredFlag) write_id(required_vertices_, next);
       ++next;
@@ -286,30 +118,12 @@ class RunsWriter {
 
   void encode_nodes() {
     nodes_ = records();
-    for (Index e = 0; e < mesh_.edge_count(); ++e)
-      if (const auto [a, b] = mesh_.edge_vertices(e); !shared_edge(a, b)) write_point(nodes_, mesh_.edge_node(e), 0);
-    for (const Vec<D>& node : shared_nodes_) write_point(nodes_, node, 0);
+    for (const Vec<D>& node : numbers_.written_nodes()) write_point(nodes_, node, 0);
   }
 
   static void write_id(ChunkRecords& out, Index id) {
     out.write_integer(std::int64_t{id} + 1);
     out.end_record();
-  }
-
-  // An entity's file numbers (from 0): its vertices', then its edges' nodes' (P2, in the local edge
-  // order of a simplex of its dimension; kNoIndex for P1).
-  template <std::size_t N>
-  std::array<Index, N + N*(N - 1) / 2> simplex_numbers(const std::array<Index, N>& vertices) const {
-    std::array<Index, N + N*(N - 1) / 2> numbers;
-    numbers.fill(kNoIndex);
-    for (std::size_t i = 0; i < N; ++i) numbers[i] = number_[vertices[i]];
-    if (mesh_.is_p2())
-      for (std::size_t e = 0; e < N * (N - 1) / 2; ++e) {
-        std::array<int, 2> ends{0, 1};
-        if constexpr (N > 2) ends = edge_vertices<static_cast<int>(N) - 1>(static_cast<int>(e));
-        numbers[N + e] = node_number_[mesh_.find_edge(vertices[ends[0]], vertices[ends[1]])];
-      }
-    return numbers;
   }
 
   // An entity's record: its file numbers (those of its nodes when P2) and its ref.
@@ -323,39 +137,17 @@ class RunsWriter {
 
   template <std::size_t N>
   void write_simplex(ChunkRecords& out, const std::array<Index, N>& vertices, int ref) const {
-    write_numbers(out, simplex_numbers(vertices), ref);
+    write_numbers(out, numbers_.simplex(vertices), ref);
   }
 
-  // 3D feature lines: a line with both ends shared may lie in several parts and goes to the process
-  // its ends hash to, which keeps it once (the first part's, in rank order); every other line is its
-  // part's own. Without a line order each process writes its own lines, then those it kept; with
-  // one (per line of the part, its place), each line goes on to the process of its run of places.
-  // Their ridge and required tags go with them.
+  // 3D feature lines, each once (FileNumbers::lines_once). Without a line order each process writes
+  // those it holds; with one (per line of the part, its place), each line goes on to the process of
+  // its run of places. Their ridge and required tags go with them.
   void encode_lines() {
-    const EntityTags<D> tags(mesh_);
     const bool ordered = sum_over_processes(static_cast<int>(!line_order_.empty())) > 0;
     if (ordered && line_order_.size() != static_cast<std::size_t>(mesh_.line_count()))
       throw std::logic_error("write_mesh_runs: a line order that is not one place per line");
-    std::vector<LineRow> rows;  // the lines this process writes or places
-    std::vector<std::vector<SharedEdge<D>>> outgoing(static_cast<std::size_t>(process_count()));
-    for (Index l = 0; l < mesh_.line_count(); ++l) {
-      const auto [a, b] = mesh_.line(l);
-      const char flags = static_cast<char>((tags.ridge_line[l] ? kRidgeFlag : 0) | (tags.required_line[l] ? kRequiredFlag : 0));
-      const LineRow row{ordered ? line_order_[static_cast<std::size_t>(l)] : kNoIndex, mesh_.line_ref(l), flags,
-                        simplex_numbers(mesh_.line(l))};
-      if (!shared_edge(a, b)) {
-        rows.push_back(row);
-        continue;
-      }
-      const FaceKey<2> key = edge_key(a, b);
-      outgoing[static_cast<std::size_t>(meeting_process<2>(key, process_count()))].push_back({key, {}, row});
-    }
-    const std::vector<std::vector<SharedEdge<D>>> arrived = exchange_values(outgoing);
-    const ArrivalGroups groups = grouped(arrived, [](const SharedEdge<D>& r) { return r.key; });
-    for (std::size_t g = 0; g < groups.count(); ++g) {
-      const Arrival head = groups.order[groups.starts[g]];
-      rows.push_back(arrived[static_cast<std::size_t>(head.from)][head.at].line);
-    }
+    const std::vector<LineRow> rows = numbers_.lines_once(line_order_);
     const CountOffset offset = offset_over_processes(static_cast<Index>(rows.size()));
     counts_.lines = offset.total;
     std::vector<char> flags;  // per line written here, in order
@@ -405,7 +197,7 @@ class RunsWriter {
       facets_ = std::move(
           encode_in_order<D + D*(D - 1) / 2>(facet_order_, offset.total, std::max<Index>(offset.total, 1), flags, [&](std::size_t i) {
             const Index f = written[i];
-            return PlacedRow<D + D*(D - 1) / 2>{0, mesh_.facet_ref(f), facet_flags(tags, f), simplex_numbers(mesh_.facet(f))};
+            return PlacedRow<D + D*(D - 1) / 2>{0, mesh_.facet_ref(f), facet_flags(tags, f), numbers_.simplex(mesh_.facet(f))};
           }).front());
     } else {
       facets_ = records();
@@ -432,7 +224,7 @@ class RunsWriter {
       element_runs_ = encode_in_order<D + 1 + Simplex<D>::kEdges>(
           element_order_, offset.total, kElementWindow, no_flags, [&](std::size_t k) {
             const auto element = static_cast<Index>(k);
-            return PlacedRow<D + 1 + Simplex<D>::kEdges>{0, mesh_.element_ref(element), 0, simplex_numbers(mesh_.element(element))};
+            return PlacedRow<D + 1 + Simplex<D>::kEdges>{0, mesh_.element_ref(element), 0, numbers_.simplex(mesh_.element(element))};
           });
       return;
     }
@@ -481,18 +273,12 @@ class RunsWriter {
   void write_keywords(const std::vector<Keyword>& keywords);
 
   const std::string& path_;
-  const MeshPart<D>& part_;
   const Mesh<D>& mesh_;
   bool binary_;
   std::span<const Index> element_order_, facet_order_, line_order_;
+  FileNumbers<D> numbers_;
   int version_ = 0;
   MeshFileCounts counts_;
-  std::vector<Index> number_;                // per part vertex, its file number (from 0)
-  std::vector<char> shared_;                 // per part vertex, whether another part holds it
-  std::vector<Index> node_number_;           // per part edge (P2), its node's file number (from 0)
-  std::vector<VertexToRun<D>> vertex_rows_;  // the vertices this process writes, in order
-  Index first_vertex_ = 0;                   // the file number (from 0) of the first of them
-  std::vector<Vec<D>> shared_nodes_;         // the nodes of shared edges this process writes
   ChunkRecords vertices_ = records(), nodes_ = records(), lines_ = records(), facets_ = records();
   std::vector<ChunkRecords> element_runs_;  // the elements' records: one run, or one per window of an element order
   ChunkRecords corners_ = records(), ridges_ = records(), required_vertices_ = records(), required_edges_ = records(),
