@@ -6,9 +6,9 @@
 // Metric-based adaptation to a unit mesh (split, collapse, swap, smooth; boundary points on the
 // geometry), then, with --order 2, the curving of `hocav curve` in the same metric. Under
 // `mpirun -np N` (N > 1) the P1 loop and the curving are distributed (docs/distributed.md); every
-// process reads its piece of the input when adapts_from_pieces says so, else rank 0 reads it; a
-// Gamma or .vtu output without --curved is curved and written in runs by the parts (its --vtu too),
-// a .msh by rank 0, which also runs the curved passes of --curved.
+// process reads its piece of the input when adapts_from_pieces says so, else rank 0 reads it; without
+// --curved the parts curve the output and write it in runs (its --vtu too); with --curved rank 0
+// gathers the mesh, runs the curved passes and writes it.
 #include <chrono>
 #include <cstdint>
 #include <iostream>
@@ -209,9 +209,9 @@ void distribute(AdaptationJob<D>& job, const AdaptOptions& o, std::vector<Distri
 }
 
 // Whether a distributed run ends in its parts, which curve it (--order 2) and write the output in
-// runs (docs/distributed.md §The end in the parts): a Gamma or .vtu output (and its --vtu) without
-// --curved; else rank 0 gathers the mesh.
-bool ends_in_parts(const AdaptOptions& o) { return !o.curved && writes_output_in_runs(o.output); }
+// runs (docs/distributed.md §The end in the parts): every run without --curved; with it rank 0
+// gathers the mesh.
+bool ends_in_parts(const AdaptOptions& o) { return !o.curved && process_count() > 1; }
 
 // With --order 2, the parts' curving: the geometry of the adapted boundary as the serial run makes
 // it, but a CAD model's, which is the adaptation's own `geometry` (one gmsh model is open at a time;
@@ -328,9 +328,7 @@ void adapt_in_parts(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptOp
 // Whether a distributed run reads its input in pieces, no process holding the whole
 // (docs/distributed.md §Adapting from pieces): one that ends in its parts, from a P1 Gamma file,
 // whatever its metric source. Else rank 0 reads the whole input and sets the run up.
-bool adapts_from_pieces(const AdaptOptions& o) {
-  return process_count() > 1 && ends_in_parts(o) && is_gamma_path(o.input) && !gamma_mesh_has_p2_keyword(o.input);
-}
+bool adapts_from_pieces(const AdaptOptions& o) { return ends_in_parts(o) && is_gamma_path(o.input) && !gamma_mesh_has_p2_keyword(o.input); }
 
 // Every process of a run from pieces: its piece read and prepared, the run set up on the pieces
 // together, the distributed loop, and on rank 0 (`outputs` given) the report.

@@ -26,10 +26,6 @@ void CurvingProgress::complete() {
   if (line_) line_->complete();
 }
 
-bool writes_output_in_runs(const std::string& output) {
-  return process_count() > 1 && (is_gamma_path(output) || file_extension(output) == ".vtu");
-}
-
 void print_curving_round(const DistributedCurvingRound& figures) {
   std::cerr << "distributed: round " << figures.round << " of " << figures.rounds << ": " << process_count() << " parts, "
             << figures.interface_faces << " interface faces, " << figures.interface_vertices << " vertices on the interfaces, "

@@ -39,10 +39,6 @@ class CurvingProgress {
   std::unique_ptr<ProgressLine> line_;
 };
 
-// Whether a distributed run (several processes) writes `output` in runs from its parts: a Gamma file
-// or a .vtu (its --vtu, if any, is written in runs too).
-bool writes_output_in_runs(const std::string& output);
-
 // A round of a distributed curving (docs/distributed.md §Curving) on stderr.
 void print_curving_round(const DistributedCurvingRound& figures);
 

@@ -2,8 +2,8 @@
 // Reads any supported mesh, writes it in the format of OUT's extension. A metric given with the
 // mesh is checked and carried to the output's node numbering; everything is validated before the
 // first byte is written, and the mesh and its metric replace their targets together or not at all.
-// Under mpirun a P1 Gamma mesh is read in pieces and written in runs, as a Gamma mesh or a .vtu
-// (docs/distributed.md §Writing in runs, §A .vtu in runs).
+// Under mpirun a P1 Gamma mesh is read in pieces and written in runs, as a Gamma mesh, a .msh or a
+// .vtu (docs/distributed.md §Writing in runs, §A .msh in runs, §A .vtu in runs).
 #include <algorithm>
 #include <iostream>
 #include <memory>
@@ -17,6 +17,7 @@
 #include "io/output_set.hpp"
 #include "io/vtu_file.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/gmsh_msh_runs.hpp"
 #include "parallel/mesh_file_pieces.hpp"
 #include "parallel/mesh_file_runs.hpp"
 #include "parallel/vtu_file_runs.hpp"
@@ -98,22 +99,25 @@ std::string convert_in_pieces(const ConvertOptions& options) {
   }
   const auto file_facets = static_cast<std::size_t>(std::find(piece.facet_ids.begin(), piece.facet_ids.end(), kNoIndex) -
                                                     piece.facet_ids.begin());
-  const MeshFileCounts counts = write_mesh_runs(
-      options.output, piece.part, file_extension(options.output) == ".meshb", options.gamma_version,
-      {{}, std::span(piece.facet_ids).first(file_facets), piece.line_ids});  // (the interface facets come last)
+  // (A .msh's blocks by ref keep the pieces' order within each ref: docs/distributed.md §A .msh in runs.)
+  const MeshFileCounts counts =
+      file_extension(options.output) == ".msh"
+          ? write_gmsh_msh_runs(options.output, piece.part)
+          : write_mesh_runs(options.output, piece.part, file_extension(options.output) == ".meshb", options.gamma_version,
+                            {{}, std::span(piece.facet_ids).first(file_facets), piece.line_ids});  // (the interface facets come last)
   return "wrote " + options.output + ": " + p1_mesh_summary(D, counts.vertices, counts.elements, counts.facets) + " (in " +
          std::to_string(process_count()) + " pieces)\n";
 }
 
 void run_convert_in_pieces(const ConvertOptions& options) {
   if (!options.metric.empty() || options.order == 2)
-    throw Error(
-        "under mpirun, hocav convert writes P1 Gamma meshes alone: no --metric, no --order 2 (docs/distributed.md §Writing in runs)");
+    throw Error("under mpirun, hocav convert writes P1 meshes alone: no --metric, no --order 2 (docs/distributed.md §Writing in runs)");
   if (const std::string extension = file_extension(options.input); extension != ".mesh" && extension != ".meshb")
     throw Error(options.input + ": under mpirun, hocav convert reads Gamma meshes (.mesh, .meshb) in pieces, not '" + extension + "'");
-  if (const std::string extension = file_extension(options.output); extension != ".mesh" && extension != ".meshb" && extension != ".vtu")
-    throw Error(options.output + ": under mpirun, hocav convert writes Gamma meshes (.mesh, .meshb) or a .vtu in runs, not '" + extension +
-                "'");
+  if (const std::string extension = file_extension(options.output);
+      extension != ".mesh" && extension != ".meshb" && extension != ".msh" && extension != ".vtu")
+    throw Error(options.output + ": under mpirun, hocav convert writes Gamma meshes (.mesh, .meshb), a .msh or a .vtu in runs, not '" +
+                extension + "'");
   std::optional<OutputSet> outputs;  // rank 0's, which checks the paths and writes the file's keywords
   if (process_rank() == 0) {
     outputs.emplace();

@@ -3,9 +3,9 @@
 // The paper's algorithm: propose boundary curvature, then reinsert every volume vertex with the P2
 // cavity operator, and write the curved P2 mesh with the Table-1 figures. Under `mpirun -np N`
 // (N > 1) the curving is distributed: every process reads its piece of a P1 Gamma input (else rank 0
-// reads the input and scatters it), the parts curve themselves and write a Gamma or .vtu output in
-// runs (docs/distributed.md §Curving from pieces, §Curving in the parts), and a .vtu beside it (§A
-// .vtu in runs); for a .msh, rank 0 reads the input, gathers the curved mesh and writes it (§Curving).
+// reads the input and scatters it), the parts curve themselves and write the output in runs
+// (docs/distributed.md §Curving from pieces, §Curving in the parts; §A .msh in runs), and a .vtu
+// beside it (§A .vtu in runs).
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -20,13 +20,11 @@
 #include "io/gamma_mesh.hpp"
 #include "io/node_metrics.hpp"
 #include "io/output_set.hpp"
-#include "mesh/boundary_mesh.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/curving_in_parts.hpp"
 #include "parallel/distributed_curving.hpp"
 #include "parallel/mesh_file_pieces.hpp"
 #include "parallel/output_file_runs.hpp"
-#include "parallel/part_message.hpp"
 #include "parallel/piece_input_check.hpp"
 #include "parallel/pieces_into_parts.hpp"
 #include "parallel/root_mesh_scatter.hpp"
@@ -60,10 +58,6 @@ CurvingReport curve_with_progress(Mesh<D>& mesh, const MetricField<D>& field, co
   progress.complete();
   return report;
 }
-
-// Whether a distributed curving ends in its parts, which write the output (and its --vtu) in runs: a
-// Gamma or .vtu output; else rank 0 gathers the curved mesh.
-bool curves_in_parts(const CurveOptions& options) { return writes_output_in_runs(options.output); }
 
 // Whether a distributed curving in the parts reads its input in pieces, no process holding the
 // whole (docs/distributed.md §Curving from pieces): a P1 Gamma file. Else rank 0 reads it and
@@ -112,42 +106,15 @@ CurvingInParts curve_in_parts_from(bool pieces, Mesh<D> mesh, std::vector<SymMat
   return curve_parts(scatter_from_root(std::move(mesh), std::move(metrics), kCurvingPartitionSeed), options);
 }
 
-// With several processes: the input's boundary to every process (their geometry is made from it:
-// docs/distributed.md §What each process holds), and the distributed curving in place of the serial one.
-template <int D>
-CurvingReport curve_on_every_process(Mesh<D>& mesh, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
-                                     const CurvingOptions& curving, bool quiet) {
-  std::vector<std::byte> boundary = pack_part(boundary_mesh_of(mesh), {});
-  broadcast_bytes(boundary);
-  std::function<void(const DistributedCurvingRound&)> on_round;
-  if (!quiet) on_round = print_curving_round;
-  return curve_distributed(mesh, field, geometry, curving, on_round);
-}
-
-// The other processes: the geometry of rank 0's input's boundary, and the parts rank 0 sends.
-template <int D>
-void serve_curving(const CurveOptions& options, const std::vector<std::byte>& input_boundary) {
-  const MeshPart<D> boundary = unpack_part<D>(input_boundary);
-  const auto geometry = make_boundary_geometry<D>(boundary_choice_named(options.surface), boundary.mesh);
-  serve_distributed_curving(geometry.get(), curving_options(options));
-}
-
+// The other processes of a curving in the parts: the plan rank 0 sends (the dimension, whether the
+// input is read in pieces), then their share of the curving.
 void serve_curving(const CurveOptions& options) {
-  if (curves_in_parts(options)) {
-    std::vector<int> plan;  // the dimension, and whether the input is read in pieces
-    broadcast_values(plan);
-    if (plan.at(0) == 2)
-      curve_in_parts_from<2>(plan.at(1) != 0, {}, {}, options);
-    else
-      curve_in_parts_from<3>(plan.at(1) != 0, {}, {}, options);
-    return;
-  }
-  std::vector<std::byte> input_boundary;
-  broadcast_bytes(input_boundary);
-  if (packed_dimension(input_boundary) == 2)
-    serve_curving<2>(options, input_boundary);
+  std::vector<int> plan;
+  broadcast_values(plan);
+  if (plan.at(0) == 2)
+    curve_in_parts_from<2>(plan.at(1) != 0, {}, {}, options);
   else
-    serve_curving<3>(options, input_boundary);
+    curve_in_parts_from<3>(plan.at(1) != 0, {}, {}, options);
 }
 
 // The report, then the outputs committed and the summary printed.
@@ -164,7 +131,7 @@ void finish_outputs(const CurveOptions& options, const CurvingReport& report, Ou
   }
 }
 
-// Rank 0 of a curving in the parts (curves_in_parts): the plan (the dimension, whether from pieces)
+// Rank 0 of a curving in the parts (several processes): the plan (the dimension, whether from pieces)
 // to every process, then its share of the curving from pieces or from its set-up `mesh` and
 // `metrics`; the report made of what the parts curved and wrote.
 template <int D>
@@ -184,12 +151,10 @@ void curve(Mesh<D>& mesh, const MeshFileContent& file, const CurveOptions& optio
   check_mesh_or_warn(mesh, options.input);
   check_memory_fits("curving " + options.input, mesh.element_count(), kCurvingBytesPerElement);
   std::vector<SymMat<D>> metrics = metrics_of_rows<D>(read_metric_for_mesh(options.metric, file, false));
-  if (curves_in_parts(options)) return curve_on_rank_0_of_parts(false, std::move(mesh), std::move(metrics), options, outputs);
+  if (process_count() > 1) return curve_on_rank_0_of_parts(false, std::move(mesh), std::move(metrics), options, outputs);
   const MetricField<D> field(mesh, std::exchange(metrics, {}));  // (the field keeps their logarithms)
   const auto geometry = make_boundary_geometry<D>(boundary_choice_named(options.surface), mesh);
-  const CurvingOptions curving = curving_options(options);
-  const CurvingReport report = process_count() > 1 ? curve_on_every_process(mesh, field, geometry.get(), curving, options.quiet)
-                                                   : curve_with_progress(mesh, field, geometry.get(), curving, options.quiet);
+  const CurvingReport report = curve_with_progress(mesh, field, geometry.get(), curving_options(options), options.quiet);
 
   write_mesh_file(options.output, mesh);
   if (!options.vtu.empty()) write_curved_vtu(options.vtu, mesh, field);
@@ -245,7 +210,7 @@ void add_curve_command(CLI::App& app) {
     if (process_rank() != 0) return serve_curving(*options);
     OutputSet outputs;
     declare_curve_files(outputs, *options);
-    if (curves_in_parts(*options) && reads_input_in_pieces(*options)) {
+    if (process_count() > 1 && reads_input_in_pieces(*options)) {
       if (gamma_mesh_dimension(options->input) == 2) return curve_on_rank_0_of_parts<2>(true, {}, {}, *options, outputs);
       return curve_on_rank_0_of_parts<3>(true, {}, {}, *options, outputs);
     }

@@ -6,6 +6,7 @@
 #include "io/mesh_file.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distinct_ids.hpp"
+#include "parallel/gmsh_msh_runs.hpp"
 #include "parallel/vtu_file_runs.hpp"
 
 namespace hocav {
@@ -24,7 +25,9 @@ MeshFileCounts distinct_mesh_counts(const MeshPart<D>& part) {
 
 template <int D>
 MeshFileCounts write_mesh_file_runs(const std::string& path, const MeshPart<D>& part, const EntityOrders& orders) {
-  if (file_extension(path) != ".vtu") return write_mesh_runs(path, part, file_extension(path) == ".meshb", 0, orders);
+  const std::string extension = file_extension(path);
+  if (extension == ".msh") return write_gmsh_msh_runs(path, part);
+  if (extension != ".vtu") return write_mesh_runs(path, part, extension == ".meshb", 0, orders);
   write_vtu_runs(path, part.mesh);
   return distinct_mesh_counts(part);
 }

@@ -15,9 +15,10 @@ template <int D>
 MeshFileCounts distinct_mesh_counts(const MeshPart<D>& part);
 
 // Every process at once: the mesh file `path` of the parts written in runs, a Gamma file
-// (write_mesh_runs: .meshb binary, the entities in `orders`) or a .vtu of the mesh alone, as
-// write_mesh_file writes one (write_vtu_runs: a vertex several parts hold is a point of each); the
-// Gamma file's counts, or the .vtu's mesh's (distinct_mesh_counts).
+// (write_mesh_runs: .meshb binary, the entities in `orders`), a gmsh .msh (write_gmsh_msh_runs: in
+// blocks by ref, part after part within a block) or a .vtu of the mesh alone, as write_mesh_file
+// writes one (write_vtu_runs: a vertex several parts hold is a point of each); the Gamma or .msh
+// file's counts, or the .vtu's mesh's (distinct_mesh_counts).
 template <int D>
 MeshFileCounts write_mesh_file_runs(const std::string& path, const MeshPart<D>& part, const EntityOrders& orders = {});
 

@@ -6,9 +6,10 @@ On a cube, a layered shell (a text .mesh) and a 2D annulus, and gmsh's unstructu
 annulus when hocav has gmsh, with 2, 3 and 4 processes (oversubscribed), to .mesh and .meshb: the
 output must be the serial command's mesh, every keyword's records in the same order (vertices,
 elements, facets, feature lines and tags), and meshio must read it to the same points and cells;
-to .vtu, meshio must read the serial .vtu's cells (with their refs and Jacobians). Refused under
-mpirun, with exit 2, a one-line error and no output: --metric, --order 2, an input that is no Gamma
-mesh, an output that is neither a Gamma mesh nor a .vtu.
+to .msh (§A .msh in runs), meshio must read the serial .msh's points in order and its cells with their
+refs, and gmsh must read it; to .vtu, meshio must read the serial .vtu's cells (with their refs and
+Jacobians). Refused under mpirun, with exit 2, a one-line error and no output: --metric, --order 2,
+an input that is no Gamma mesh, an output of no mesh format.
 
 Usage: /usr/bin/python3 distributed_convert_test.py <path-to-hocav>
 Exits 77 (skipped) when hocav was built without MPI.
@@ -40,10 +41,36 @@ def same_for_meshio(serial, pieces, what):
         assert sorted(map(tuple, cells_a[kind])) == sorted(map(tuple, cells_b[kind])), f"{what}: meshio reads other {kind}"
 
 
+def same_msh(serial, pieces, what):
+    """Two .msh files hold the same points in order and the same cells of each type with their refs."""
+    a, b = meshio.read(serial), meshio.read(pieces)
+    assert numpy.array_equal(a.points, b.points), f"{what}: meshio reads other points"
+
+    def cells(mesh):
+        found = {}
+        for block, refs in zip(mesh.cells, mesh.cell_data["gmsh:physical"]):
+            found.setdefault(block.type, []).extend((tuple(sorted(row)), int(ref)) for row, ref in zip(block.data, refs))
+        return {kind: sorted(rows) for kind, rows in found.items()}
+
+    assert cells(a) == cells(b), f"{what}: meshio reads other cells or refs"
+    try:
+        import gmsh
+    except ImportError:
+        return
+    gmsh.initialize(["-v", "0"])
+    try:
+        gmsh.open(pieces)
+        elements = sum(len(tags) for tags in gmsh.model.mesh.getElements()[1])
+        assert elements == sum(len(block.data) for block in b.cells), f"{what}: gmsh reads {elements} elements"
+    finally:
+        gmsh.finalize()
+
+
 def check(hocav, mpirun, work):
     for mesh, generate in pieces_cases():
         run([hocav, "generate"] + generate + ["-o", mesh], work)
         run([hocav, "convert", mesh, "serial.mesh"], work)
+        run([hocav, "convert", mesh, "serial.msh"], work)
         serial = keywords(os.path.join(work, "serial.mesh"))
         for processes in (2, 3, 4):
             for output in ("pieces.mesh", "pieces.meshb"):
@@ -55,12 +82,15 @@ def check(hocav, mpirun, work):
                     output = "pieces-back.mesh"
                 same_mesh(serial, keywords(os.path.join(work, output)), what)
                 same_for_meshio(os.path.join(work, "serial.mesh"), os.path.join(work, output), what)
+            printed = run(mpirun + ["-np", str(processes), hocav, "convert", mesh, "pieces.msh"], work)
+            assert f"(in {processes} pieces)" in printed, printed
+            same_msh(os.path.join(work, "serial.msh"), os.path.join(work, "pieces.msh"), f"{mesh} to .msh on {processes} processes")
             printed = run(mpirun + ["-np", str(processes), hocav, "convert", mesh, "pieces.vtu"], work)
             assert f"(in {processes} pieces" in printed, printed
             check_vtu_in_runs(hocav, work, "pieces.vtu", mesh, f"{mesh} to .vtu on {processes} processes", metric=False)
     refused(mpirun, hocav, work, ["convert", "cube.meshb", "out.mesh", "--metric", "m.solb"], "out.mesh", "no --metric")
     refused(mpirun, hocav, work, ["convert", "cube.meshb", "out.mesh", "--order", "2"], "out.mesh", "no --order 2")
-    refused(mpirun, hocav, work, ["convert", "cube.meshb", "out.msh"], "out.msh", "writes Gamma meshes (.mesh, .meshb) or a .vtu")
+    refused(mpirun, hocav, work, ["convert", "cube.meshb", "out.stl"], "out.stl", "writes Gamma meshes (.mesh, .meshb), a .msh or a .vtu")
     run([hocav, "convert", "cube.meshb", "cube.msh"], work)
     refused(mpirun, hocav, work, ["convert", "cube.msh", "out.mesh"], "out.mesh", "reads Gamma meshes")
 

@@ -7,18 +7,22 @@ across the spheres (interfaces meet the boundary); and on a 2D annulus with a bo
 With one process the output must be the serial one byte for byte. With 2 and 3 processes
 (oversubscribed) every process reads its piece of the .meshb input and of its metric, and the parts
 curve themselves and write the file in runs (§Curving from pieces, §Curving in the parts); from a
-.msh input rank 0 reads the whole and scatters it (on 2 processes); to a .msh output rank 0 gathers
-the curved mesh (§Curving; once per case, on 2 processes); on 3 processes a .vtu is written in runs
+.msh input rank 0 reads the whole and scatters it (on 2 processes); a .msh output is written in runs
+too (§A .msh in runs; once per case, on 2 processes); on 3 processes a .vtu is written in runs
 beside the output and holds its cells, and so is a .vtu output alone (§A .vtu in runs). The output is
 consistent, P2, certified (every element's min normalized Jacobian above the floor, as `hocav stats`
 measures it), has the serial run's P1 mesh (its vertices, elements, facets and feature lines in their order) and
-refs; its gain and mean normalized Jacobian lie near the serial run's; the second round
-curved the first round's interfaces, a third (gathered, in one part) the vertices the second froze
-again, if any, and the rounds together reinserted each volume vertex once (the serial run's count of
-cavities); no more boundary edges are left straight than in the serial run (an interface edge on the
-boundary gets its proposal in a later round). The merge and the writing in runs refuse parts that
-give an interface edge two different nodes, so a finished run has every interface edge's node from
-the one rank that curved it.
+refs (a .msh's in any order: its blocks by ref come part after part); its gain and mean normalized
+Jacobian lie near the serial run's; the second round
+curved the first round's interfaces, and the two rounds together reinserted each volume vertex once
+(the serial run's count of cavities); no more boundary edges are left straight than in the serial
+run (an interface edge on the boundary gets its proposal in a later round). The merge and the
+writing in runs refuse parts that give an interface edge two different nodes, so a finished run has
+every interface edge's node from the one rank that curved it.
+
+`mpirun -np 2 hocav adapt --curved` gathers its adapted mesh on rank 0, which curves it with the
+other processes (§Curving: a third round, in one part, for the vertices the second froze again, if
+any) before its curved passes: its output is valid, P2, certified and keeps the input's refs.
 
 Bad input read in pieces is refused as the serial command refuses it (exit 2, its message, no
 output), though another process than rank 0 read the bad entity: an inverted element, a metric row
@@ -77,6 +81,11 @@ def p1_mesh(hocav, work, name):
     for key in ("Tetrahedra", "Triangles", "Edges"):
         out[key] = [(tuple(sorted(r[:-1])), r[-1]) for r in mesh.get(key, [])]
     return out
+
+
+def in_any_order(p1):
+    """A P1 mesh of p1_mesh with its entities sorted (its vertices stay in order)."""
+    return {key: rows if key == "Vertices" else sorted(rows) for key, rows in p1.items()}
 
 
 def rounds(stderr):
@@ -185,27 +194,29 @@ def check(hocav, mpirun, work):
         serial_p1 = p1_mesh(hocav, work, serial_name)
 
         run([hocav, "convert", case + ".meshb", case + ".msh"], work)  # (the same vertices, in the same order)
-        for processes, scheme in ((2, ""), (3, ""), (2, "scattered"), (2, "gathered")):
+        for processes, scheme in ((2, ""), (3, ""), (2, "scattered"), (2, "to-msh")):
             name = f"{case}{processes}{scheme}"
             given = curve[:-1] if scheme != "scattered" else ["curve", case + ".msh"] + curve[2:-1]
-            output = name + (".msh" if scheme == "gathered" else ".meshb")
+            output = name + (".msh" if scheme == "to-msh" else ".meshb")
             args = mpirun + ["-np", str(processes), hocav] + given + ["-o", output, "--report", name + ".json"]
             found = rounds(completed(args + (["--vtu", name + ".vtu"] if processes == 3 else []), work).stderr)
-            if scheme == "gathered":
+            if scheme == "to-msh":
                 run([hocav, "convert", output, name + ".meshb"], work)
             if processes == 3:
                 check_vtu_in_runs(hocav, work, name + ".vtu", name + ".meshb", name)
                 check_vtu_output(hocav, mpirun, work, given, name)
-            assert len(found) in ((2, 3) if scheme == "gathered" else (2,)), f"{name}: rounds {found}"
+            assert len(found) == 2, f"{name}: rounds {found}"
             data = check_against_serial(hocav, work, name, serial, serial_report)
-            assert p1_mesh(hocav, work, name) == serial_p1, f"{name}: not the serial run's P1 mesh"
+            p1, expected = p1_mesh(hocav, work, name), serial_p1
+            if scheme == "to-msh":  # (a .msh's blocks by ref come part after part: its entities in any order)
+                p1, expected = in_any_order(p1), in_any_order(serial_p1)
+            assert p1 == expected, f"{name}: not the serial run's P1 mesh"
             cavities = [count for count, _ in found]
             frozen_again = [frozen for _, frozen in found[1:]]
             straight = straight_boundary_edges(hocav, work, name)
             print(f"{name}: cavities {' + '.join(map(str, cavities))} (serial {serial_cavities}), old interface vertices frozen "
                   f"again {frozen_again}, {straight} straight boundary edges (serial {serial_straight})")
             assert cavities[1] > 0, f"{name}: the second round curved nothing"
-            assert (len(found) == 3) == (frozen_again[0] > 0), f"{name}: a third round is run when the second froze vertices again"
             assert frozen_again[-1] == 0, f"{name}: the last round froze {frozen_again[-1]} vertices again"
             assert sum(cavities) == data["cavities"]["tried"]
             assert sum(cavities) == serial_cavities, f"{name}: {cavities} cavities, serial {serial_cavities}"
@@ -223,6 +234,19 @@ def check(hocav, mpirun, work):
     assert figures["order"] == "P2", figures["order"]
     assert min_normalized_jacobian(figures) >= FLOOR, f"adapted2: min normalized Jacobian {figures['normalized Jacobian']}"
     check_same_refs(figures, stats(hocav, "shell.meshb", work), "adapted2")
+
+    # --curved: the adapted mesh gathered on rank 0 and curved with the other processes.
+    found = rounds(completed(mpirun + ["-np", "2", hocav] + adapt[:-1] + ["--curved", "-o", "adapted2curved.meshb"], work).stderr)
+    frozen_again = [frozen for _, frozen in found[1:]]
+    print(f"adapt --curved on 2 processes: rounds {found}")
+    assert len(found) in (2, 3) and found[1][0] > 0, f"adapt --curved: rounds {found}"
+    assert (len(found) == 3) == (frozen_again[0] > 0), f"adapt --curved: a third round is run when the second froze vertices again"
+    assert frozen_again[-1] == 0, f"adapt --curved: the last round froze {frozen_again[-1]} vertices again"
+    figures = stats(hocav, "adapted2curved.meshb", work)
+    check_valid(figures, "adapted2curved.meshb")
+    assert figures["order"] == "P2", figures["order"]
+    assert min_normalized_jacobian(figures) >= FLOOR, f"adapt --curved: min normalized Jacobian {figures['normalized Jacobian']}"
+    check_same_refs(figures, stats(hocav, "shell.meshb", work), "adapted2curved")
 
 
 if __name__ == "__main__":

@@ -142,17 +142,7 @@ bool check(const Mesh<D>& mesh, const std::string& directory, const std::string&
 int main(int argc, char** argv) {
   return hocav::run_mpi_test(argc, argv, "mesh file runs", [] {
     const std::string directory = hocav::shared_directory("hocav-runs-");
-    const hocav::Mesh<2> square = hocav::tagged_mesh(hocav::generate_square(12));
-    const hocav::Mesh<3> cube = hocav::tagged_mesh(hocav::generate_cube(6));
-    bool ok = true;
-    for (const auto& [name, each] : {std::pair{"square", square}, {"shuffled-square", hocav::shuffled(square)}}) {
-      ok = hocav::check(each, directory, name) & ok;
-      ok = hocav::check(hocav::curved(each), directory, std::string(name) + "-p2") & ok;
-    }
-    for (const auto& [name, each] : {std::pair{"cube", cube}, {"shuffled-cube", hocav::shuffled(cube)}}) {
-      ok = hocav::check(each, directory, name) & ok;
-      ok = hocav::check(hocav::curved(each), directory, std::string(name) + "-p2") & ok;
-    }
+    bool ok = hocav::check_tagged_meshes([&](const auto& mesh, const std::string& name) { return hocav::check(mesh, directory, name); });
     // More elements than a window of an element order's messages (65,536): written window by window.
     ok = hocav::entities_in_mesh_order(hocav::generate_cube(24), directory, "large-cube") & ok;
     hocav::all_gather_value(0);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "adapt/vertex_classes.hpp"
+#include "cases/structured.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/part_migration.hpp"
 
@@ -84,6 +85,22 @@ Mesh<D> curved(Mesh<D> mesh) {
   mesh.make_p2();
   for (Index e = 0; e < mesh.edge_count(); ++e) mesh.edge_node(e)[e % D] += 1e-3 * static_cast<double>(e % 7 + 1);
   return mesh;
+}
+
+// `check(mesh, name)` on the writers' test meshes, true when it holds on each: the square and the
+// cube with their tags (tagged_mesh), each as it is and renumbered (shuffled), each P1 and P2 (curved).
+template <typename Check>
+bool check_tagged_meshes(Check check) {
+  bool ok = true;
+  const auto each_variant = [&](const auto& mesh, const std::string& name) {
+    for (const auto& [variant, label] : {std::pair{mesh, name}, std::pair{shuffled(mesh), "shuffled-" + name}}) {
+      ok = check(variant, label) & ok;
+      ok = check(curved(variant), label + "-p2") & ok;
+    }
+  };
+  each_variant(tagged_mesh(generate_square(12)), "square");
+  each_variant(tagged_mesh(generate_cube(6)), "cube");
+  return ok;
 }
 
 // A file's bytes, to compare two files.
