@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <numeric>
 #include <sstream>
 #include <vector>
@@ -16,19 +17,14 @@ namespace {
 
 using gmsh_msh::TextWriter;
 
-// The entities of one dimension this process writes: per entity its ref and file numbers (in
-// hocav's local order, from 0), and their order in the file's blocks (stable by ref).
+// The entities of one dimension this process writes: per entity its ref and, found when it is
+// written, its file numbers (in hocav's local order, from 0); and their order in the file's blocks
+// (stable by ref).
 struct WrittenRows {
   std::vector<int> refs;
-  std::vector<std::array<Index, 10>> numbers;
+  std::function<std::array<Index, 10>(std::size_t)> numbers;
   std::vector<std::size_t> by_ref;
 
-  template <std::size_t M>
-  void add(int ref, const std::array<Index, M>& entity) {
-    refs.push_back(ref);
-    std::array<Index, 10>& row = numbers.emplace_back();
-    std::copy(entity.begin(), entity.end(), row.begin());
-  }
   void sort_by_ref() {
     by_ref.resize(refs.size());
     std::iota(by_ref.begin(), by_ref.end(), std::size_t{0});
@@ -36,20 +32,41 @@ struct WrittenRows {
   }
 };
 
+template <std::size_t M>
+std::array<Index, 10> padded(const std::array<Index, M>& entity) {
+  std::array<Index, 10> row;
+  row.fill(kNoIndex);
+  std::copy(entity.begin(), entity.end(), row.begin());
+  return row;
+}
+
 // Per dimension (points, lines, facets, elements) what this process writes: the corners among its
 // vertices, its feature lines once (3D), its facets but the interfaces', its elements.
 template <int D>
 std::array<WrittenRows, 4> rows_written_here(const MeshPart<D>& part, const FileNumbers<D>& numbers) {
   const Mesh<D>& mesh = part.mesh;
   std::array<WrittenRows, 4> rows;
+  std::vector<Index> corners;  // their file numbers
   for (std::size_t i = 0; i < numbers.vertex_rows().size(); ++i)
-    if (numbers.vertex_rows()[i].flags & kCornerFlag)
-      rows[0].add(numbers.vertex_rows()[i].ref, std::array<Index, 1>{numbers.first_vertex() + static_cast<Index>(i)});
-  if constexpr (D == 3)
-    for (const LineRow& line : numbers.lines_once({})) rows[1].add(line.ref, line.numbers);
+    if (numbers.vertex_rows()[i].flags & kCornerFlag) {
+      rows[0].refs.push_back(numbers.vertex_rows()[i].ref);
+      corners.push_back(numbers.first_vertex() + static_cast<Index>(i));
+    }
+  rows[0].numbers = [corners](std::size_t i) { return padded(std::array<Index, 1>{corners[i]}); };
+  if constexpr (D == 3) {
+    std::vector<LineRow> lines = numbers.lines_once({});
+    for (const LineRow& line : lines) rows[1].refs.push_back(line.ref);
+    rows[1].numbers = [lines = std::move(lines)](std::size_t i) { return padded(lines[i].numbers); };
+  }
+  std::vector<Index> facets;  // the part's but the interfaces'
   for (Index f = 0; f < mesh.facet_count(); ++f)
-    if (mesh.facet_ref(f) != kInterfaceRef) rows[D - 1].add(mesh.facet_ref(f), numbers.simplex(mesh.facet(f)));
-  for (Index k = 0; k < mesh.element_count(); ++k) rows[D].add(mesh.element_ref(k), numbers.simplex(mesh.element(k)));
+    if (mesh.facet_ref(f) != kInterfaceRef) {
+      rows[D - 1].refs.push_back(mesh.facet_ref(f));
+      facets.push_back(f);
+    }
+  rows[D - 1].numbers = [&mesh, &numbers, facets](std::size_t i) { return padded(numbers.simplex(mesh.facet(facets[i]))); };
+  for (Index k = 0; k < mesh.element_count(); ++k) rows[D].refs.push_back(mesh.element_ref(k));
+  rows[D].numbers = [&mesh, &numbers](std::size_t k) { return padded(numbers.simplex(mesh.element(static_cast<Index>(k)))); };
   for (WrittenRows& dimension : rows) dimension.sort_by_ref();
   return rows;
 }
@@ -150,13 +167,16 @@ EntityPlaces<D> entity_places(const FileNumbers<D>& numbers, const WrittenRows& 
     const auto entity = static_cast<std::size_t>(std::lower_bound(corner_refs.begin(), corner_refs.end(), corners.refs[i]) -
                                                  corner_refs.begin());
     if (firsts[entity].any) continue;
-    firsts[entity] = {numbers.vertex_rows()[static_cast<std::size_t>(corners.numbers[i][0] - numbers.first_vertex())].point, 1};
+    firsts[entity] = {numbers.vertex_rows()[static_cast<std::size_t>(corners.numbers(i)[0] - numbers.first_vertex())].point, 1};
   }
   const std::vector<FirstPoint<D>> all = all_gather_values_joined(firsts);  // rank after rank
   places.points.resize(corner_refs.size());
   for (std::size_t entity = 0; entity < corner_refs.size(); ++entity)
-    for (std::size_t r = static_cast<std::size_t>(process_count()); r-- > 0;)
-      if (const FirstPoint<D>& first = all[r * corner_refs.size() + entity]; first.any) places.points[entity] = first.point;
+    for (std::size_t r = 0; r < static_cast<std::size_t>(process_count()); ++r)
+      if (const FirstPoint<D>& first = all[r * corner_refs.size() + entity]; first.any) {
+        places.points[entity] = first.point;  // the lowest rank's
+        break;
+      }
   return places;
 }
 
@@ -221,7 +241,7 @@ MeshFileCounts write_gmsh_msh_runs(const std::string& path, const MeshPart<D>& p
     segments.push_back(text_of([&](TextWriter& out) {
       const WrittenRows& written = rows[static_cast<std::size_t>(block.dimension)];
       for (std::size_t i = block.begin; i < block.end; ++i)
-        gmsh_msh::write_element(out, block.first_tag + (i - block.begin), type, written.numbers[written.by_ref[i]].data());
+        gmsh_msh::write_element(out, block.first_tag + (i - block.begin), type, written.numbers(written.by_ref[i]).data());
     }));
   }
   segments.push_back(head ? "$EndElements\n" : "");
