@@ -20,6 +20,7 @@
 #include "parallel/gmsh_msh_runs.hpp"
 #include "parallel/mesh_file_pieces.hpp"
 #include "parallel/mesh_file_runs.hpp"
+#include "parallel/output_file_runs.hpp"
 #include "parallel/vtu_file_runs.hpp"
 #include "report/curved_vtu.hpp"
 #include "report/mesh_summary.hpp"
@@ -94,8 +95,11 @@ std::string convert_in_pieces(const ConvertOptions& options) {
   const MeshFilePiece<D> piece = read_mesh_file_piece<D>(options.input);
   if (file_extension(options.output) == ".vtu") {  // (docs/distributed.md §A .vtu in runs)
     write_vtu_runs(options.output, piece.part.mesh, {{}, jacobian_cell_fields(piece.part.mesh)});
-    return "wrote " + options.output + ": " + std::to_string(sum_over_processes(piece.part.mesh.element_count())) + " elements (in " +
-           std::to_string(process_count()) + " pieces, a vertex of several once in each)\n";
+    const MeshFileCounts counts = distinct_mesh_counts(piece.part);
+    const auto facets = static_cast<Index>(std::count_if(piece.part.mesh.facet_refs().begin(), piece.part.mesh.facet_refs().end(),
+                                                         [](int ref) { return ref != kInterfaceRef; }));
+    return "wrote " + options.output + ": " + p1_mesh_summary(D, counts.vertices, counts.elements, sum_over_processes(facets)) + " (in " +
+           std::to_string(process_count()) + " pieces, a vertex of several a point of each)\n";
   }
   const auto file_facets = static_cast<std::size_t>(std::find(piece.facet_ids.begin(), piece.facet_ids.end(), kNoIndex) -
                                                     piece.facet_ids.begin());
