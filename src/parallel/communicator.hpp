@@ -113,6 +113,14 @@ std::vector<T> all_gather_value(const T& value) {
   return values;
 }
 
+// Every process's `values`, in rank order, on every process.
+template <typename T>
+std::vector<std::vector<T>> all_gather_values(const std::vector<T>& values) {
+  std::vector<std::vector<T>> all;
+  for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(values))) all.push_back(values_of_bytes<T>(bytes));
+  return all;
+}
+
 // Every process's `values` put end to end in rank order, on every process.
 template <typename T>
 std::vector<T> all_gather_values_joined(const std::vector<T>& values) {

@@ -16,8 +16,7 @@ namespace {
 std::vector<std::uint64_t> segment_starts(const std::vector<std::string>& segments) {
   std::vector<std::uint64_t> own;
   for (const std::string& segment : segments) own.push_back(segment.size());
-  std::vector<std::vector<std::uint64_t>> sizes;  // per process, per segment
-  for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(own))) sizes.push_back(values_of_bytes<std::uint64_t>(bytes));
+  const std::vector<std::vector<std::uint64_t>> sizes = all_gather_values(own);  // per process, per segment
   std::vector<std::uint64_t> starts;
   std::uint64_t at = 0;
   for (std::size_t i = 0; i < segments.size(); ++i)

@@ -106,11 +106,7 @@ std::vector<Block> blocks_of(const std::array<WrittenRows, 4>& rows, const std::
       own.push_back(static_cast<Index>(at - begin));
     }
   }
-  const std::vector<std::vector<Index>> counts = [&] {
-    std::vector<std::vector<Index>> per_process;
-    for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(own))) per_process.push_back(values_of_bytes<Index>(bytes));
-    return per_process;
-  }();
+  const std::vector<std::vector<Index>> counts = all_gather_values(own);  // per process
   std::size_t tag = 1;
   for (std::size_t b = 0; b < blocks.size(); ++b)
     for (int r = 0; r < process_count(); ++r) {

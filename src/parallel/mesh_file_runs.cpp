@@ -298,9 +298,8 @@ void RunsWriter<D>::write_keywords(const std::vector<Keyword>& keywords) {
       sizes.push_back(run->records());
       sizes.push_back(static_cast<std::int64_t>(run->bytes().size()));
     }
-  std::vector<std::vector<std::int64_t>> all;  // per process
-  for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(sizes))) all.push_back(values_of_bytes<std::int64_t>(bytes));
-  std::vector<std::uint64_t> starts(keywords.size(), 0);  // where each keyword's records begin
+  const std::vector<std::vector<std::int64_t>> all = all_gather_values(sizes);  // per process
+  std::vector<std::uint64_t> starts(keywords.size(), 0);                        // where each keyword's records begin
   if (process_rank() == 0) {
     const auto skeleton = [&](auto&& out) {
       std::size_t slot = 0;

@@ -14,10 +14,7 @@ namespace {
 std::vector<std::vector<std::uint64_t>> runs_bytes(const std::vector<VtuArray>& arrays) {
   std::vector<std::uint64_t> own;
   for (const VtuArray& array : arrays) own.push_back(array.bytes);
-  std::vector<std::vector<std::uint64_t>> by_process;
-  for (const std::vector<std::byte>& bytes : all_gather_bytes(bytes_of_values(own)))
-    by_process.push_back(values_of_bytes<std::uint64_t>(bytes));
-  return by_process;
+  return all_gather_values(own);
 }
 
 }  // namespace
