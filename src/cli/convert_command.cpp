@@ -103,12 +103,13 @@ std::string convert_in_pieces(const ConvertOptions& options) {
   }
   const auto file_facets = static_cast<std::size_t>(std::find(piece.facet_ids.begin(), piece.facet_ids.end(), kNoIndex) -
                                                     piece.facet_ids.begin());
-  // (A .msh's blocks by ref keep the pieces' order within each ref: docs/distributed.md §A .msh in runs.)
-  const MeshFileCounts counts =
-      file_extension(options.output) == ".msh"
-          ? write_gmsh_msh_runs(options.output, piece.part)
-          : write_mesh_runs(options.output, piece.part, file_extension(options.output) == ".meshb", options.gamma_version,
-                            {{}, std::span(piece.facet_ids).first(file_facets), piece.line_ids});  // (the interface facets come last)
+  // The file's facets and lines in their order (the interface facets come last); its elements are
+  // the pieces' runs.
+  const EntityOrders orders{{}, std::span(piece.facet_ids).first(file_facets), piece.line_ids};
+  const MeshFileCounts counts = file_extension(options.output) == ".msh"
+                                    ? write_gmsh_msh_runs(options.output, piece.part, orders)
+                                    : write_mesh_runs(options.output, piece.part, file_extension(options.output) == ".meshb",
+                                                      options.gamma_version, orders);
   return "wrote " + options.output + ": " + p1_mesh_summary(D, counts.vertices, counts.elements, counts.facets) + " (in " +
          std::to_string(process_count()) + " pieces)\n";
 }

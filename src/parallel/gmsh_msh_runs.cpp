@@ -7,7 +7,9 @@
 #include <sstream>
 #include <vector>
 
+#include "base/error.hpp"
 #include "io/gmsh_msh_text.hpp"
+#include "io/record_run.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/file_in_runs.hpp"
 #include "parallel/file_numbers.hpp"
@@ -16,20 +18,19 @@ namespace hocav {
 namespace {
 
 using gmsh_msh::TextWriter;
+using OrderedRow = PlacedRow<10>;
 
-// The entities of one dimension this process writes: per entity its ref and, found when it is
-// written, its file numbers (in hocav's local order, from 0); and their order in the file's blocks
-// (stable by ref).
+// The places of an entity order sent at once, as the Gamma writer sends them (docs/distributed.md
+// §Writing in runs): the messages never hold more than a window's rows.
+constexpr Index kOrderWindow = Index{1} << 16;
+
+// The entities of one dimension this process writes: per entity its ref, its file numbers (in
+// hocav's local order, from 0; found when it is written) and, when the dimension has an order, its
+// place among the file's entities of the dimension.
 struct WrittenRows {
   std::vector<int> refs;
   std::function<std::array<Index, 10>(std::size_t)> numbers;
-  std::vector<std::size_t> by_ref;
-
-  void sort_by_ref() {
-    by_ref.resize(refs.size());
-    std::iota(by_ref.begin(), by_ref.end(), std::size_t{0});
-    std::stable_sort(by_ref.begin(), by_ref.end(), [&](std::size_t a, std::size_t b) { return refs[a] < refs[b]; });
-  }
+  std::vector<Index> places;
 };
 
 template <std::size_t M>
@@ -41,9 +42,10 @@ std::array<Index, 10> padded(const std::array<Index, M>& entity) {
 }
 
 // Per dimension (points, lines, facets, elements) what this process writes: the corners among its
-// vertices, its feature lines once (3D), its facets but the interfaces', its elements.
+// vertices, its feature lines once (3D), its facets but the interfaces', its elements; with the
+// places `orders` gives the lines, facets and elements.
 template <int D>
-std::array<WrittenRows, 4> rows_written_here(const MeshPart<D>& part, const FileNumbers<D>& numbers) {
+std::array<WrittenRows, 4> rows_written_here(const MeshPart<D>& part, const FileNumbers<D>& numbers, const EntityOrders& orders) {
   const Mesh<D>& mesh = part.mesh;
   std::array<WrittenRows, 4> rows;
   std::vector<Index> corners;  // their file numbers
@@ -54,8 +56,11 @@ std::array<WrittenRows, 4> rows_written_here(const MeshPart<D>& part, const File
     }
   rows[0].numbers = [corners](std::size_t i) { return padded(std::array<Index, 1>{corners[i]}); };
   if constexpr (D == 3) {
-    std::vector<LineRow> lines = numbers.lines_once({});
-    for (const LineRow& line : lines) rows[1].refs.push_back(line.ref);
+    std::vector<LineRow> lines = numbers.lines_once(orders.lines);
+    for (const LineRow& line : lines) {
+      rows[1].refs.push_back(line.ref);
+      if (!orders.lines.empty()) rows[1].places.push_back(line.place);
+    }
     rows[1].numbers = [lines = std::move(lines)](std::size_t i) { return padded(lines[i].numbers); };
   }
   std::vector<Index> facets;  // the part's but the interfaces'
@@ -65,9 +70,13 @@ std::array<WrittenRows, 4> rows_written_here(const MeshPart<D>& part, const File
       facets.push_back(f);
     }
   rows[D - 1].numbers = [&mesh, &numbers, facets](std::size_t i) { return padded(numbers.simplex(mesh.facet(facets[i]))); };
+  rows[D - 1].places.assign(orders.facets.begin(), orders.facets.end());
   for (Index k = 0; k < mesh.element_count(); ++k) rows[D].refs.push_back(mesh.element_ref(k));
   rows[D].numbers = [&mesh, &numbers](std::size_t k) { return padded(numbers.simplex(mesh.element(static_cast<Index>(k)))); };
-  for (WrittenRows& dimension : rows) dimension.sort_by_ref();
+  rows[D].places.assign(orders.elements.begin(), orders.elements.end());
+  for (const WrittenRows& dimension : rows)
+    if (!dimension.places.empty() && dimension.places.size() != dimension.refs.size())
+      throw std::logic_error("write_gmsh_msh_runs: an order that is not one place per entity");
   return rows;
 }
 
@@ -85,37 +94,139 @@ std::array<std::vector<int>, 4> refs_over_processes(const std::array<WrittenRows
   return refs;
 }
 
-// The file's blocks (an entity: a dimension and a ref), in order, with what this process writes of
-// each: its rows (by_ref positions [begin, end)), the block's size and the tag of its first row.
-struct Block {
-  int dimension;
-  std::size_t entity;  // from 1
-  std::size_t begin, end, total, first_tag;
+// Where a dimension's entities go in the file. Without an order each process writes its own, in one
+// window; with one, window after window of its places, the process of a place's run within its
+// window writes the entity (as the Gamma writer's orders, docs/distributed.md §Writing in runs), so
+// that each ref's block holds its entities in the order's. `counts` holds how many entities of each
+// entity (ref) each process writes in each window; `first_tags` the tag of this process's first.
+struct DimensionLayout {
+  bool ordered = false;
+  Index total = 0;  // the dimension's entities over the file
+  int windows = 1;
+  std::vector<Index> counts;            // [(entity * windows + window) * processes + process]
+  std::vector<std::size_t> first_tags;  // [entity * windows + window]
+  std::vector<std::size_t> totals;      // per entity, its block's size
+
+  std::size_t at(std::size_t entity, int window, int process) const {
+    return (entity * static_cast<std::size_t>(windows) + static_cast<std::size_t>(window)) * static_cast<std::size_t>(process_count()) +
+           static_cast<std::size_t>(process);
+  }
+  // The window and the writing process of place `place`.
+  std::pair<int, int> holder(Index place) const {
+    const int window = slice_holding(place, total, windows);
+    const Index begin = slice_start(total, window, windows), size = slice_start(total, window + 1, windows) - begin;
+    return {window, slice_holding(place - begin, size, process_count())};
+  }
 };
 
-std::vector<Block> blocks_of(const std::array<WrittenRows, 4>& rows, const std::array<std::vector<int>, 4>& refs) {
-  std::vector<Block> blocks;
-  std::vector<Index> own;  // rows per block
-  for (int d = 0; d < 4; ++d) {
-    const WrittenRows& written = rows[static_cast<std::size_t>(d)];
-    std::size_t at = 0;
-    for (std::size_t entity = 0; entity < refs[static_cast<std::size_t>(d)].size(); ++entity) {
-      const std::size_t begin = at;
-      while (at < written.by_ref.size() && written.refs[written.by_ref[at]] == refs[static_cast<std::size_t>(d)][entity]) ++at;
-      blocks.push_back({d, entity + 1, begin, at, 0, 0});
-      own.push_back(static_cast<Index>(at - begin));
-    }
-  }
-  const std::vector<std::vector<Index>> counts = all_gather_values(own);  // per process
+Error no_permutation(const std::string& path) { return Error(path + ": the order of the entities written is no permutation of them"); }
+
+std::size_t entity_of(const std::vector<int>& refs, int ref) {
+  return static_cast<std::size_t>(std::lower_bound(refs.begin(), refs.end(), ref) - refs.begin());
+}
+
+// The layouts of the four dimensions, their tags numbered block after block (dimension, then ref),
+// window after window within a block, rank after rank within a window, from 1. Throws Error when an
+// order places an entity outside its dimension.
+std::array<DimensionLayout, 4> layouts_of(const std::array<WrittenRows, 4>& rows, const std::array<std::vector<int>, 4>& refs,
+                                          const std::string& path) {
+  std::array<DimensionLayout, 4> layouts;
   std::size_t tag = 1;
-  for (std::size_t b = 0; b < blocks.size(); ++b)
-    for (int r = 0; r < process_count(); ++r) {
-      if (r == process_rank()) blocks[b].first_tag = tag;
-      const auto count = static_cast<std::size_t>(counts[static_cast<std::size_t>(r)][b]);
-      blocks[b].total += count;
-      tag += count;
+  for (std::size_t d = 0; d < 4; ++d) {
+    DimensionLayout& layout = layouts[d];
+    layout.ordered = sum_over_processes(static_cast<int>(!rows[d].places.empty())) > 0;
+    layout.total = sum_over_processes(static_cast<Index>(rows[d].refs.size()));
+    if (layout.ordered) layout.windows = static_cast<int>(std::max<Index>(1, (layout.total + kOrderWindow - 1) / kOrderWindow));
+    std::vector<Index> own(refs[d].size() * static_cast<std::size_t>(layout.windows * process_count()), 0);
+    for (std::size_t i = 0; i < rows[d].refs.size(); ++i) {
+      if (layout.ordered && (rows[d].places[i] < 0 || rows[d].places[i] >= layout.total)) throw no_permutation(path);
+      const auto [window, process] = layout.ordered ? layout.holder(rows[d].places[i]) : std::pair{0, process_rank()};
+      ++own[layout.at(entity_of(refs[d], rows[d].refs[i]), window, process)];
     }
-  return blocks;
+    layout.counts.assign(own.size(), 0);
+    for (const std::vector<Index>& each : all_gather_values(own))
+      for (std::size_t i = 0; i < own.size(); ++i) layout.counts[i] += each[i];
+    layout.first_tags.assign(refs[d].size() * static_cast<std::size_t>(layout.windows), 0);
+    layout.totals.assign(refs[d].size(), 0);
+    for (std::size_t e = 0; e < refs[d].size(); ++e)
+      for (int w = 0; w < layout.windows; ++w)
+        for (int r = 0; r < process_count(); ++r) {
+          if (r == process_rank()) layout.first_tags[e * static_cast<std::size_t>(layout.windows) + static_cast<std::size_t>(w)] = tag;
+          const auto count = static_cast<std::size_t>(layout.counts[layout.at(e, w, r)]);
+          layout.totals[e] += count;
+          tag += count;
+        }
+  }
+  return layouts;
+}
+
+template <typename Write>
+std::string text_of(Write write) {
+  std::ostringstream stream;
+  TextWriter out(stream);
+  write(out);
+  out.flush();
+  return std::move(stream).str();
+}
+
+// The lines of `rows` (sorted by ref) of each entity in `refs`, tagged from `first_tag(entity)`,
+// into texts[entity * windows + window].
+void write_window(std::vector<std::string>& texts, int window, const DimensionLayout& layout, const std::vector<int>& refs,
+                  const gmsh_msh::ElementType& type, const std::vector<int>& row_refs, auto numbers_of) {
+  std::size_t at = 0;
+  for (std::size_t e = 0; e < refs.size(); ++e) {
+    const std::size_t slot = e * static_cast<std::size_t>(layout.windows) + static_cast<std::size_t>(window);
+    texts[slot] = text_of([&](TextWriter& out) {
+      for (std::size_t tag = layout.first_tags[slot]; at < row_refs.size() && row_refs[at] == refs[e]; ++at)
+        gmsh_msh::write_element(out, tag++, type, numbers_of(at).data());
+    });
+  }
+}
+
+// This process's rows of one window of an ordered dimension: each of its entities placed in the
+// window sent to the process of its place's run, which checks that its run's places came once each.
+std::vector<OrderedRow> window_rows(const WrittenRows& rows, const DimensionLayout& layout, int window, const std::string& path) {
+  std::vector<std::vector<OrderedRow>> outgoing(static_cast<std::size_t>(process_count()));
+  for (std::size_t i = 0; i < rows.places.size(); ++i)
+    if (const auto [w, process] = layout.holder(rows.places[i]); w == window)
+      outgoing[static_cast<std::size_t>(process)].push_back({rows.places[i], rows.refs[i], 0, rows.numbers(i)});
+  std::vector<OrderedRow> arrived = exchange_values_joined(outgoing);
+  std::vector<Index> places;
+  for (const OrderedRow& row : arrived) places.push_back(row.place);
+  std::sort(places.begin(), places.end());
+  const Index begin = slice_start(layout.total, window, layout.windows),
+              size = slice_start(layout.total, window + 1, layout.windows) - begin;
+  const Index first = begin + slice_start(size, process_rank(), process_count());
+  const Index end = begin + slice_start(size, process_rank() + 1, process_count());
+  if (static_cast<Index>(places.size()) != end - first ||
+      std::adjacent_find(places.begin(), places.end(), [](Index a, Index b) { return b != a + 1; }) != places.end() ||
+      (!places.empty() && places.front() != first))
+    throw no_permutation(path);
+  std::sort(arrived.begin(), arrived.end(),
+            [](const OrderedRow& a, const OrderedRow& b) { return std::pair(a.ref, a.place) < std::pair(b.ref, b.place); });
+  return arrived;
+}
+
+// This process's lines of every block and window of one dimension: texts[entity * windows + window].
+std::vector<std::string> dimension_texts(const WrittenRows& rows, const std::vector<int>& refs, const DimensionLayout& layout,
+                                         const gmsh_msh::ElementType& type, const std::string& path) {
+  std::vector<std::string> texts(refs.size() * static_cast<std::size_t>(layout.windows));
+  if (!layout.ordered) {
+    std::vector<std::size_t> by_ref(rows.refs.size());
+    std::iota(by_ref.begin(), by_ref.end(), std::size_t{0});
+    std::stable_sort(by_ref.begin(), by_ref.end(), [&](std::size_t a, std::size_t b) { return rows.refs[a] < rows.refs[b]; });
+    std::vector<int> sorted_refs;
+    for (std::size_t i : by_ref) sorted_refs.push_back(rows.refs[i]);
+    write_window(texts, 0, layout, refs, type, sorted_refs, [&](std::size_t at) { return rows.numbers(by_ref[at]); });
+    return texts;
+  }
+  for (int window = 0; window < layout.windows; ++window) {
+    const std::vector<OrderedRow> arrived = window_rows(rows, layout, window, path);
+    std::vector<int> sorted_refs;
+    for (const OrderedRow& row : arrived) sorted_refs.push_back(row.ref);
+    write_window(texts, window, layout, refs, type, sorted_refs, [&](std::size_t at) { return arrived[at].numbers; });
+  }
+  return texts;
 }
 
 // The bounding box of every node of the file, and the first point of each point entity (the first
@@ -159,9 +270,8 @@ EntityPlaces<D> entity_places(const FileNumbers<D>& numbers, const WrittenRows& 
   places.low = box.low;
   places.high = box.high;
   std::vector<FirstPoint<D>> firsts(corner_refs.size());
-  for (std::size_t i : corners.by_ref) {
-    const auto entity = static_cast<std::size_t>(std::lower_bound(corner_refs.begin(), corner_refs.end(), corners.refs[i]) -
-                                                 corner_refs.begin());
+  for (std::size_t i = 0; i < corners.refs.size(); ++i) {  // (in file order)
+    const std::size_t entity = entity_of(corner_refs, corners.refs[i]);
     if (firsts[entity].any) continue;
     firsts[entity] = {numbers.vertex_rows()[static_cast<std::size_t>(corners.numbers(i)[0] - numbers.first_vertex())].point, 1};
   }
@@ -174,15 +284,6 @@ EntityPlaces<D> entity_places(const FileNumbers<D>& numbers, const WrittenRows& 
         break;
       }
   return places;
-}
-
-template <typename Write>
-std::string text_of(Write write) {
-  std::ostringstream stream;
-  TextWriter out(stream);
-  write(out);
-  out.flush();
-  return std::move(stream).str();
 }
 
 template <int D>
@@ -200,17 +301,16 @@ void write_tags(TextWriter& out, Index first, std::size_t count) {
 }  // namespace
 
 template <int D>
-MeshFileCounts write_gmsh_msh_runs(const std::string& path, const MeshPart<D>& part) {
+MeshFileCounts write_gmsh_msh_runs(const std::string& path, const MeshPart<D>& part, const EntityOrders& orders) {
   const FileNumbers<D> numbers(path, part);
-  const std::array<WrittenRows, 4> rows = rows_written_here(part, numbers);
+  const std::array<WrittenRows, 4> rows = rows_written_here(part, numbers, orders);
   const std::array<std::vector<int>, 4> refs = refs_over_processes(rows);
-  const std::vector<Block> blocks = blocks_of(rows, refs);
+  const std::array<DimensionLayout, 4> layouts = layouts_of(rows, refs, path);
   const EntityPlaces<D> places = entity_places(numbers, rows[0], refs[0]);
   const Index node_count = numbers.vertex_count() + numbers.node_count();
   const bool head = process_rank() == 0;
-  std::size_t element_count = 0;
-  for (const Block& block : blocks) element_count += block.total;
-  const int order = numbers.p2() ? 2 : 1;
+  std::size_t blocks = 0, element_count = 0;
+  for (std::size_t d = 0; d < 4; ++d) blocks += refs[d].size(), element_count += static_cast<std::size_t>(layouts[d].total);
   std::vector<std::string> segments;
   segments.push_back(text_of([&](TextWriter& out) {
     if (!head) return;
@@ -227,31 +327,25 @@ MeshFileCounts write_gmsh_msh_runs(const std::string& path, const MeshPart<D>& p
   segments.push_back(text_of([&](TextWriter& out) {
     if (!head) return;
     if (node_count > 0) out << "$EndNodes\n";
-    gmsh_msh::write_elements_head(out, blocks.size(), element_count);
+    gmsh_msh::write_elements_head(out, blocks, element_count);
   }));
-  for (const Block& block : blocks) {
-    const gmsh_msh::ElementType& type = gmsh_msh::element_type(block.dimension, block.dimension == 0 ? 1 : order);
-    segments.push_back(text_of([&](TextWriter& out) {
-      if (head) gmsh_msh::write_block_head(out, block.entity, type, block.total);
-    }));
-    segments.push_back(text_of([&](TextWriter& out) {
-      const WrittenRows& written = rows[static_cast<std::size_t>(block.dimension)];
-      for (std::size_t i = block.begin; i < block.end; ++i)
-        gmsh_msh::write_element(out, block.first_tag + (i - block.begin), type, written.numbers(written.by_ref[i]).data());
-    }));
+  for (std::size_t d = 0; d < 4; ++d) {
+    const gmsh_msh::ElementType& type = gmsh_msh::element_type(static_cast<int>(d), d == 0 || !numbers.p2() ? 1 : 2);
+    std::vector<std::string> texts = dimension_texts(rows[d], refs[d], layouts[d], type, path);
+    for (std::size_t e = 0; e < refs[d].size(); ++e) {
+      segments.push_back(text_of([&](TextWriter& out) {
+        if (head) gmsh_msh::write_block_head(out, e + 1, type, layouts[d].totals[e]);
+      }));
+      for (int w = 0; w < layouts[d].windows; ++w)
+        segments.push_back(std::move(texts[e * static_cast<std::size_t>(layouts[d].windows) + static_cast<std::size_t>(w)]));
+    }
   }
   segments.push_back(head ? "$EndElements\n" : "");
   write_segments_in_runs(path, segments);
-  const auto total_of = [&](int dimension) {
-    std::size_t total = 0;
-    for (const Block& block : blocks)
-      if (block.dimension == dimension) total += block.total;
-    return static_cast<Index>(total);
-  };
-  return {numbers.vertex_count(), numbers.node_count(), total_of(D), total_of(D - 1), D == 3 ? total_of(1) : 0};
+  return {numbers.vertex_count(), numbers.node_count(), layouts[D].total, layouts[D - 1].total, D == 3 ? layouts[1].total : 0};
 }
 
-template MeshFileCounts write_gmsh_msh_runs(const std::string&, const MeshPart<2>&);
-template MeshFileCounts write_gmsh_msh_runs(const std::string&, const MeshPart<3>&);
+template MeshFileCounts write_gmsh_msh_runs(const std::string&, const MeshPart<2>&, const EntityOrders&);
+template MeshFileCounts write_gmsh_msh_runs(const std::string&, const MeshPart<3>&, const EntityOrders&);
 
 }  // namespace hocav

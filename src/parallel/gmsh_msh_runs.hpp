@@ -12,12 +12,14 @@ namespace hocav {
 // hold (each compact, with global ids and pinned flags, interface facets of ref kInterfaceRef not
 // written), as write_gmsh_msh writes a mesh: one entity per ref of each dimension, the corners as
 // points, the 3D feature lines, the facets and the elements in blocks by ref. Its vertices and P2
-// nodes are numbered as write_mesh_runs numbers them (FileNumbers), each once; within a block the
-// entities come part after part in rank order. One process holding a whole mesh (the others empty)
+// nodes are numbered as write_mesh_runs numbers them (FileNumbers), each once. Within a block the
+// entities come part after part in rank order, or, for a kind that `orders` orders (as
+// write_mesh_runs takes them), in the order's. One process holding a whole mesh (the others empty)
 // writes write_gmsh_msh's file byte for byte when its global ids are its vertex ids and its corners
-// are listed in increasing order. Returns the
-// file's counts; throws Error as FileNumbers does, or when the file cannot be written.
+// are listed in increasing order; so does a distributed P1 mesh given its entities' orders. Returns
+// the file's counts; throws Error as FileNumbers does, when the places of an order are no
+// permutation, or when the file cannot be written.
 template <int D>
-MeshFileCounts write_gmsh_msh_runs(const std::string& path, const MeshPart<D>& part);
+MeshFileCounts write_gmsh_msh_runs(const std::string& path, const MeshPart<D>& part, const EntityOrders& orders = {});
 
 }  // namespace hocav

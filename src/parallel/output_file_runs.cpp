@@ -26,7 +26,7 @@ MeshFileCounts distinct_mesh_counts(const MeshPart<D>& part) {
 template <int D>
 MeshFileCounts write_mesh_file_runs(const std::string& path, const MeshPart<D>& part, const EntityOrders& orders) {
   const std::string extension = file_extension(path);
-  if (extension == ".msh") return write_gmsh_msh_runs(path, part);
+  if (extension == ".msh") return write_gmsh_msh_runs(path, part, orders);
   if (extension != ".vtu") return write_mesh_runs(path, part, extension == ".meshb", 0, orders);
   write_vtu_runs(path, part.mesh);
   return distinct_mesh_counts(part);

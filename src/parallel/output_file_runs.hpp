@@ -16,7 +16,7 @@ MeshFileCounts distinct_mesh_counts(const MeshPart<D>& part);
 
 // Every process at once: the mesh file `path` of the parts written in runs, a Gamma file
 // (write_mesh_runs: .meshb binary, the entities in `orders`), a gmsh .msh (write_gmsh_msh_runs: in
-// blocks by ref, part after part within a block) or a .vtu of the mesh alone, as write_mesh_file
+// blocks by ref, in `orders` within a block) or a .vtu of the mesh alone, as write_mesh_file
 // writes one (write_vtu_runs: a vertex several parts hold is a point of each); the Gamma or .msh
 // file's counts, or the .vtu's mesh's (distinct_mesh_counts).
 template <int D>

@@ -6,8 +6,8 @@ On a cube, a layered shell (a text .mesh) and a 2D annulus, and gmsh's unstructu
 annulus when hocav has gmsh, with 2, 3 and 4 processes (oversubscribed), to .mesh and .meshb: the
 output must be the serial command's mesh, every keyword's records in the same order (vertices,
 elements, facets, feature lines and tags), and meshio must read it to the same points and cells;
-to .msh (§A .msh in runs), meshio must read the serial .msh's points in order and its cells with their
-refs, and gmsh must read it; to .vtu, meshio must read the serial .vtu's cells (with their refs and
+to .msh (§A .msh in runs), the file must be the serial one byte for byte (the facets and lines in
+their order; meshio reads the same points and cells with their refs, and gmsh reads it); to .vtu, meshio must read the serial .vtu's cells (with their refs and
 Jacobians). The summary line of a .msh or .vtu gives the serial command's counts (a vertex that
 several pieces hold counted once). Refused under mpirun, with exit 2, a one-line error and no output: --metric, --order 2,
 an input that is no Gamma mesh, an output of no mesh format.
@@ -23,7 +23,7 @@ import sys
 import meshio
 import numpy
 
-from mpi_test_support import check_vtu_in_runs, distributed_test, keywords, pieces_cases, refused, run
+from mpi_test_support import check_vtu_in_runs, distributed_test, keywords, pieces_cases, refused, run, same_bytes
 
 def same_mesh(serial, pieces, what):
     assert list(serial) == list(pieces), f"{what}: keywords {list(pieces)} vs {list(serial)}"
@@ -86,6 +86,7 @@ def check(hocav, mpirun, work):
             printed = run(mpirun + ["-np", str(processes), hocav, "convert", mesh, "pieces.msh"], work)
             assert f": {serial_summary} (in {processes} pieces)" in printed, f"{printed} (serially: {serial_summary})"
             same_msh(os.path.join(work, "serial.msh"), os.path.join(work, "pieces.msh"), f"{mesh} to .msh on {processes} processes")
+            assert same_bytes(work, "serial.msh", "pieces.msh"), f"{mesh} to .msh on {processes} processes: not the serial file"
             printed = run(mpirun + ["-np", str(processes), hocav, "convert", mesh, "pieces.vtu"], work)
             assert f": {serial_summary} (in {processes} pieces" in printed, f"{printed} (serially: {serial_summary})"
             check_vtu_in_runs(hocav, work, "pieces.vtu", mesh, f"{mesh} to .vtu on {processes} processes", metric=False)

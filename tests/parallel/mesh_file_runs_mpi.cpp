@@ -15,7 +15,6 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
-#include <numeric>
 #include <string>
 
 #include "cases/structured.hpp"
@@ -24,9 +23,7 @@
 #include "mpi_test_main.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/entity_tags.hpp"
-#include "parallel/line_ids_by_ends.hpp"
 #include "parallel/mesh_file_runs.hpp"
-#include "parallel/part_migration.hpp"
 #include "part_description.hpp"
 #include "tagged_meshes.hpp"
 
@@ -90,25 +87,11 @@ bool same_mesh_read_back(const Mesh<D>& mesh, const std::string& directory, cons
 // lines are the mesh's, in the mesh's order, with the mesh's tags.
 template <int D>
 bool entities_in_mesh_order(const Mesh<D>& mesh, const std::string& directory, const std::string& name) {
-  std::vector<int> destination;
-  std::vector<Index> element_ids, facet_ids;
-  MeshPart<D> whole;
-  if (process_rank() == 0) {
-    for (Index k = 0; k < mesh.element_count(); ++k) destination.push_back(spread(k)), element_ids.push_back(k);
-    for (Index f = 0; f < mesh.facet_count(); ++f) facet_ids.push_back(f);
-    whole = whole_mesh_part(Mesh<D>(mesh));
-  }
-  const std::vector<Index> element_order = migrated_element_values(element_ids, destination);
-  const std::vector<Index> facet_order = migrated_facet_values(whole, facet_ids, destination);
-  std::vector<Index> line_ids(static_cast<std::size_t>(whole.mesh.line_count()));
-  std::iota(line_ids.begin(), line_ids.end(), Index{0});
-  const std::vector<KnownLine> known = known_lines(whole, line_ids);
-  const MeshPart<D> part = migrate_part(whole, destination);
-  const std::vector<Index> line_order = line_ids_by_ends(part, known);
+  const OrderedPart<D> ordered = spread_in_mesh_order(mesh);
   bool ok = true;
   for (const bool binary : {true, false}) {
     const std::string path = directory + "/" + name + "-ordered" + (binary ? ".meshb" : ".mesh");
-    write_mesh_runs(path, part, binary, 0, {element_order, facet_order, line_order});
+    write_mesh_runs(path, ordered.part, binary, 0, ordered.orders());
     if (process_rank() != 0) continue;
     const Mesh<D> got = std::get<Mesh<D>>(read_mesh_file(path).mesh);
     const std::string what = name + " (" + path + ")";

@@ -10,12 +10,15 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <numeric>
 #include <string>
 #include <vector>
 
 #include "adapt/vertex_classes.hpp"
 #include "cases/structured.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/line_ids_by_ends.hpp"
+#include "parallel/mesh_file_runs.hpp"
 #include "parallel/part_migration.hpp"
 
 namespace hocav {
@@ -122,6 +125,38 @@ MeshPart<D> scattered(const Mesh<D>& mesh, int (*destination)(Index)) {
 // vertices, edges and lines.
 inline int to_rank_0(Index) { return 0; }
 inline int spread(Index k) { return static_cast<int>((7 * k + k / 5) % process_count()); }
+
+// Rank 0's mesh spread (as `spread` says) with each element's, facet's and line's id in the mesh as
+// its place, as the writers in runs take orders: the element and facet ids carried through the
+// migration, the lines' found by their ends after it.
+template <int D>
+struct OrderedPart {
+  MeshPart<D> part;
+  std::vector<Index> elements, facets, lines;
+
+  EntityOrders orders() const { return {elements, facets, lines}; }
+};
+
+template <int D>
+OrderedPart<D> spread_in_mesh_order(const Mesh<D>& mesh) {
+  std::vector<int> destination;
+  std::vector<Index> element_ids, facet_ids;
+  MeshPart<D> whole;
+  if (process_rank() == 0) {
+    for (Index k = 0; k < mesh.element_count(); ++k) destination.push_back(spread(k)), element_ids.push_back(k);
+    for (Index f = 0; f < mesh.facet_count(); ++f) facet_ids.push_back(f);
+    whole = whole_mesh_part(Mesh<D>(mesh));
+  }
+  OrderedPart<D> out;
+  out.elements = migrated_element_values(element_ids, destination);
+  out.facets = migrated_facet_values(whole, facet_ids, destination);
+  std::vector<Index> line_ids(static_cast<std::size_t>(whole.mesh.line_count()));
+  std::iota(line_ids.begin(), line_ids.end(), Index{0});
+  const std::vector<KnownLine> known = known_lines(whole, line_ids);
+  out.part = migrate_part(whole, destination);
+  out.lines = line_ids_by_ends(out.part, known);
+  return out;
+}
 
 // A directory every process sees, named by rank 0.
 inline std::string shared_directory(const std::string& prefix) {
