@@ -169,8 +169,9 @@ std::string text_of(Write write) {
   return std::move(stream).str();
 }
 
-// The lines of `rows` (sorted by ref) of each entity in `refs`, tagged from `first_tag(entity)`,
-// into texts[entity * windows + window].
+// The element lines of one window, its rows sorted by ref (`row_refs`, their numbers from
+// `numbers_of`), each entity's into texts[entity * windows + window], tagged from the layout's
+// first tag of that slot.
 void write_window(std::vector<std::string>& texts, int window, const DimensionLayout& layout, const std::vector<int>& refs,
                   const gmsh_msh::ElementType& type, const std::vector<int>& row_refs, auto numbers_of) {
   std::size_t at = 0;
