@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "base/error.hpp"
+#include "geom/box.hpp"
 #include "io/gmsh_msh_text.hpp"
 #include "io/record_run.hpp"
 #include "parallel/communicator.hpp"
@@ -19,10 +20,6 @@ namespace {
 
 using gmsh_msh::TextWriter;
 using OrderedRow = PlacedRow<10>;
-
-// The places of an entity order sent at once, as the Gamma writer sends them (docs/distributed.md
-// §Writing in runs): the messages never hold more than a window's rows.
-constexpr Index kOrderWindow = Index{1} << 16;
 
 // The entities of one dimension this process writes: per entity its ref, its file numbers (in
 // hocav's local order, from 0; found when it is written) and, when the dimension has an order, its
@@ -186,11 +183,14 @@ void write_window(std::vector<std::string>& texts, int window, const DimensionLa
 
 // This process's rows of one window of an ordered dimension: each of its entities placed in the
 // window sent to the process of its place's run, which checks that its run's places came once each.
-std::vector<OrderedRow> window_rows(const WrittenRows& rows, const DimensionLayout& layout, int window, const std::string& path) {
+// `by_place`: the rows by place, and `next` the first not sent yet (the windows come in order).
+std::vector<OrderedRow> window_rows(const WrittenRows& rows, const std::vector<std::size_t>& by_place, std::size_t& next,
+                                    const DimensionLayout& layout, int window, const std::string& path) {
   std::vector<std::vector<OrderedRow>> outgoing(static_cast<std::size_t>(process_count()));
-  for (std::size_t i = 0; i < rows.places.size(); ++i)
-    if (const auto [w, process] = layout.holder(rows.places[i]); w == window)
-      outgoing[static_cast<std::size_t>(process)].push_back({rows.places[i], rows.refs[i], 0, rows.numbers(i)});
+  for (; next < by_place.size() && layout.holder(rows.places[by_place[next]]).first == window; ++next) {
+    const std::size_t i = by_place[next];
+    outgoing[static_cast<std::size_t>(layout.holder(rows.places[i]).second)].push_back({rows.places[i], rows.refs[i], 0, rows.numbers(i)});
+  }
   std::vector<OrderedRow> arrived = exchange_values_joined(outgoing);
   std::vector<Index> places;
   for (const OrderedRow& row : arrived) places.push_back(row.place);
@@ -221,8 +221,12 @@ std::vector<std::string> dimension_texts(const WrittenRows& rows, const std::vec
     write_window(texts, 0, layout, refs, type, sorted_refs, [&](std::size_t at) { return rows.numbers(by_ref[at]); });
     return texts;
   }
+  std::vector<std::size_t> by_place(rows.places.size());
+  std::iota(by_place.begin(), by_place.end(), std::size_t{0});
+  std::sort(by_place.begin(), by_place.end(), [&](std::size_t a, std::size_t b) { return rows.places[a] < rows.places[b]; });
+  std::size_t next = 0;
   for (int window = 0; window < layout.windows; ++window) {
-    const std::vector<OrderedRow> arrived = window_rows(rows, layout, window, path);
+    const std::vector<OrderedRow> arrived = window_rows(rows, by_place, next, layout, window, path);
     std::vector<int> sorted_refs;
     for (const OrderedRow& row : arrived) sorted_refs.push_back(row.ref);
     write_window(texts, window, layout, refs, type, sorted_refs, [&](std::size_t at) { return arrived[at].numbers; });
@@ -239,21 +243,6 @@ struct EntityPlaces {
 };
 
 template <int D>
-struct OwnBox {
-  Vec<D> low, high;
-  int any = 0;
-
-  void extend(const Vec<D>& point) {
-    if (!any) low = high = point;
-    any = 1;
-    for (int c = 0; c < D; ++c) {
-      low[c] = std::min(low[c], point[c]);
-      high[c] = std::max(high[c], point[c]);
-    }
-  }
-};
-
-template <int D>
 struct FirstPoint {
   Vec<D> point;
   int any = 0;
@@ -261,15 +250,13 @@ struct FirstPoint {
 
 template <int D>
 EntityPlaces<D> entity_places(const FileNumbers<D>& numbers, const WrittenRows& corners, const std::vector<int>& corner_refs) {
-  OwnBox<D> own;
-  for (const VertexToRun<D>& row : numbers.vertex_rows()) own.extend(row.point);
-  for (const Vec<D>& node : numbers.written_nodes()) own.extend(node);
-  EntityPlaces<D> places;
-  OwnBox<D> box;
-  for (const OwnBox<D>& each : all_gather_value(own))
-    if (each.any) box.extend(each.low), box.extend(each.high);
-  places.low = box.low;
-  places.high = box.high;
+  Box<D> own = Box<D>::empty();
+  for (const VertexToRun<D>& row : numbers.vertex_rows()) own.add(row.point);
+  for (const Vec<D>& node : numbers.written_nodes()) own.add(node);
+  Box<D> box = Box<D>::empty();
+  for (const Box<D>& each : all_gather_value(own)) box.add(each);
+  EntityPlaces<D> places;  // (an empty mesh's box: zeros, as write_gmsh_msh writes it)
+  if (!box.is_empty()) places.low = box.lower, places.high = box.upper;
   std::vector<FirstPoint<D>> firsts(corner_refs.size());
   for (std::size_t i = 0; i < corners.refs.size(); ++i) {  // (in file order)
     const std::size_t entity = entity_of(corner_refs, corners.refs[i]);

@@ -19,9 +19,6 @@
 namespace hocav {
 namespace {
 
-// The places of an element order sent at once (docs/distributed.md §Writing in runs).
-constexpr Index kElementWindow = Index{1} << 16;
-
 // One process's records of one keyword, encoded as the file's format writes them.
 class ChunkRecords {
  public:
@@ -215,17 +212,16 @@ class RunsWriter {
     }
   }
 
-  // The elements part by part, or in element_order_, window after window of kElementWindow places.
+  // The elements part by part, or in element_order_, window after window of kOrderWindow places.
   void encode_elements() {
     const CountOffset offset = offset_over_processes(mesh_.element_count());
     counts_.elements = offset.total;
     if (sum_over_processes(static_cast<int>(!element_order_.empty())) > 0) {
       std::vector<char> no_flags;
-      element_runs_ = encode_in_order<D + 1 + Simplex<D>::kEdges>(
-          element_order_, offset.total, kElementWindow, no_flags, [&](std::size_t k) {
-            const auto element = static_cast<Index>(k);
-            return PlacedRow<D + 1 + Simplex<D>::kEdges>{0, mesh_.element_ref(element), 0, numbers_.simplex(mesh_.element(element))};
-          });
+      element_runs_ = encode_in_order<D + 1 + Simplex<D>::kEdges>(element_order_, offset.total, kOrderWindow, no_flags, [&](std::size_t k) {
+        const auto element = static_cast<Index>(k);
+        return PlacedRow<D + 1 + Simplex<D>::kEdges>{0, mesh_.element_ref(element), 0, numbers_.simplex(mesh_.element(element))};
+      });
       return;
     }
     element_runs_.assign(1, records());

@@ -12,6 +12,10 @@
 
 namespace hocav {
 
+// The places of an entity order a writer in runs sends at once (docs/distributed.md §Writing in
+// runs): the messages never hold more than a window's rows.
+constexpr Index kOrderWindow = Index{1} << 16;
+
 // The entities of a written mesh file.
 struct MeshFileCounts {
   Index vertices = 0, nodes = 0, elements = 0, facets = 0, lines = 0;  // nodes: a P2 file's, beyond its vertices

@@ -9,13 +9,15 @@
 //   file read back (vertices in order, each P2 node once, every element, facet, line and corner
 //   with its ref), and the counts returned must be the mesh's.
 // - Scattered so, given each element's, facet's and line's id in the mesh as the orders, a P1 file
-//   must be write_gmsh_msh's of the mesh byte for byte, and a P2 one hold its entities in order.
+//   must be write_gmsh_msh's of the mesh byte for byte, and a P2 one hold its entities in order;
+//   also for a cube of more elements than a window of an order's messages.
 // Exit code 0 when all holds on every process, 1 otherwise.
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <string>
 
+#include "cases/structured.hpp"
 #include "io/gmsh_msh.hpp"
 #include "io/mesh_file.hpp"
 #include "mpi_test_main.hpp"
@@ -103,8 +105,10 @@ bool check_all(const Mesh<D>& mesh, const std::string& directory, const std::str
 int main(int argc, char** argv) {
   return hocav::run_mpi_test(argc, argv, "gmsh .msh runs", [] {
     const std::string directory = hocav::shared_directory("hocav-msh-runs-");
-    const bool ok = hocav::check_tagged_meshes(
+    bool ok = hocav::check_tagged_meshes(
         [&](const auto& mesh, const std::string& name) { return hocav::check_all(mesh, directory, name); });
+    // More elements than a window of an order's messages (kOrderWindow): written window by window.
+    ok = hocav::in_mesh_order(hocav::generate_cube(24), directory, "large-cube") & ok;
     hocav::all_gather_value(0);
     if (hocav::process_rank() == 0) std::filesystem::remove_all(directory);
     return ok;
