@@ -27,12 +27,12 @@ AdaptationReport report_of_input(const Mesh<D>& input) {
 
 template <int D>
 AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
-                               const AdaptationSettings& settings, const AdaptationLoop<D>& loop) {
+                               const AdaptationSettings& settings) {
   AdaptedMesh<D> out;
   AdaptationReport& report = out.report;
   report = report_of_input(mesh);
   auto start = std::chrono::steady_clock::now();
-  report.run = loop ? loop(mesh, metric, geometry, settings) : adapt_to_metric(mesh, metric, geometry, settings);
+  report.run = adapt_to_metric(mesh, metric, geometry, settings);
   // The metric at the adapted vertices, which keep it when the boundary settles (it moves with the mesh).
   const std::vector<SymMat<D>> metrics = metrics_at_vertices(mesh, metric, settings.threads);
   if (geometry) report.settling = settle_boundary<D>(mesh, metrics, *geometry, settings.feature_angle_degrees);
@@ -47,11 +47,9 @@ AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric,
 }
 
 template <int D>
-void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGeometry<D>* geometry, const CurvingOptions& options,
-                        const CurvingStep<D>& curve) {
+void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGeometry<D>* geometry, const CurvingOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  adapted.report.curving = curve ? curve(mesh, *adapted.field, geometry, options)
-                                 : curve_in_metric(mesh, *adapted.field, geometry, options);
+  adapted.report.curving = curve_in_metric(mesh, *adapted.field, geometry, options);
   adapted.report.seconds_curve = seconds_since(start);
   adapted.report.peak_memory_bytes = peak_resident_bytes();
 }
@@ -188,14 +186,14 @@ AdaptedMesh<D> run_adaptation_job(Mesh<D>& mesh, std::vector<SymMat<D>> metrics,
   mesh.forget_edges();
   prepare_boundary(mesh, name, job.warn);  // before the geometry is made of it
   const auto setup = set_up_adaptation(mesh, std::move(metrics), job, name);
-  AdaptedMesh<D> adapted = adapt_in_metric(mesh, *setup->metric, setup->geometry.get(), setup->settings, job.loop);
+  AdaptedMesh<D> adapted = adapt_in_metric(mesh, *setup->metric, setup->geometry.get(), setup->settings);
   adapted.report.hausdorff_bounded_vertices = setup->hausdorff_bounded_vertices;
   if (job.curving) {
     CurvingOptions curving = *job.curving;
     if (job.before_curving) job.before_curving(mesh, curving);
     setup->geometry.reset();                           // a CAD model is open once at a time (gmsh's one model per thread)
     const auto curving_geometry = job.geometry(mesh);  // of the adapted boundary
-    curve_adapted_mesh(adapted, mesh, curving_geometry.get(), curving, job.curve);
+    curve_adapted_mesh(adapted, mesh, curving_geometry.get(), curving);
     if (job.curved) adapt_curved_mesh(adapted, mesh, curving, job.iterations, {curving_geometry.get(), job.angle});
     if (setup->settings.measure_output) adapted.report.curved_measures = measure_curved(mesh, *adapted.field, curving.threads);
   }
@@ -222,13 +220,11 @@ template std::unique_ptr<AdaptationSetup<3>> set_up_adaptation(const Mesh<3>&, s
                                                                const std::string&);
 template AdaptationReport report_of_input(const Mesh<2>&);
 template AdaptationReport report_of_input(const Mesh<3>&);
-template AdaptedMesh<2> adapt_in_metric(Mesh<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*, const AdaptationSettings&,
-                                        const AdaptationLoop<2>&);
-template AdaptedMesh<3> adapt_in_metric(Mesh<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*, const AdaptationSettings&,
-                                        const AdaptationLoop<3>&);
+template AdaptedMesh<2> adapt_in_metric(Mesh<2>&, const AdaptationMetric<2>&, const BoundaryGeometry<2>*, const AdaptationSettings&);
+template AdaptedMesh<3> adapt_in_metric(Mesh<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*, const AdaptationSettings&);
 template void adapt_curved_mesh(AdaptedMesh<2>&, Mesh<2>&, const CurvingOptions&, int, const CurvedPassGeometry<2>&);
 template void adapt_curved_mesh(AdaptedMesh<3>&, Mesh<3>&, const CurvingOptions&, int, const CurvedPassGeometry<3>&);
-template void curve_adapted_mesh(AdaptedMesh<2>&, Mesh<2>&, const BoundaryGeometry<2>*, const CurvingOptions&, const CurvingStep<2>&);
-template void curve_adapted_mesh(AdaptedMesh<3>&, Mesh<3>&, const BoundaryGeometry<3>*, const CurvingOptions&, const CurvingStep<3>&);
+template void curve_adapted_mesh(AdaptedMesh<2>&, Mesh<2>&, const BoundaryGeometry<2>*, const CurvingOptions&);
+template void curve_adapted_mesh(AdaptedMesh<3>&, Mesh<3>&, const BoundaryGeometry<3>*, const CurvingOptions&);
 
 }  // namespace hocav

@@ -24,32 +24,20 @@ struct AdaptedMesh {
   std::unique_ptr<MetricField<D>> field;
 };
 
-// The P1 loop a job runs: adapt_to_metric, or the distributed loop of src/parallel/ (docs/distributed.md).
-template <int D>
-using AdaptationLoop =
-    std::function<AdaptationRun(Mesh<D>&, const AdaptationMetric<D>&, const BoundaryGeometry<D>*, const AdaptationSettings&)>;
-
 // The report of an adaptation of `input`, before it runs: the dimension and the input's counts.
 template <int D>
 AdaptationReport report_of_input(const Mesh<D>& input);
 
-// Adapts `mesh` (P1, compact) to `metric` with `loop` (empty: adapt_to_metric), new boundary points on
-// `geometry` (may be null). Fills the report's figures from the input's and output's counts, and its
-// peak memory.
+// Adapts `mesh` (P1, compact) to `metric` (adapt_to_metric), new boundary points on `geometry` (may
+// be null). Fills the report's figures from the input's and output's counts, and its peak memory.
 template <int D>
 AdaptedMesh<D> adapt_in_metric(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
-                               const AdaptationSettings& settings, const AdaptationLoop<D>& loop = {});
+                               const AdaptationSettings& settings);
 
-// The curving a job runs: curve_in_metric, or the distributed curving of src/parallel/.
+// Then curves the adapted `mesh` in `adapted.field` (curve_in_metric; `geometry` is usually made from
+// the adapted mesh) and adds the curving's figures, time and the peak memory to the report.
 template <int D>
-using CurvingStep = std::function<CurvingReport(Mesh<D>&, const MetricField<D>&, const BoundaryGeometry<D>*, const CurvingOptions&)>;
-
-// Then curves the adapted `mesh` in `adapted.field` with `curve` (empty: curve_in_metric; `geometry`
-// is usually made from the adapted mesh) and adds the curving's figures, time and the peak memory to
-// the report.
-template <int D>
-void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGeometry<D>* geometry, const CurvingOptions& options,
-                        const CurvingStep<D>& curve = {});
+void curve_adapted_mesh(AdaptedMesh<D>& adapted, Mesh<D>& mesh, const BoundaryGeometry<D>* geometry, const CurvingOptions& options);
 
 // Then runs at most `max_passes` curved passes on the curved `mesh` (adapt_curved, in `adapted.field`,
 // its boundary operations on `geometry`), and measures the output again into the report.
@@ -82,8 +70,6 @@ struct AdaptationJob {
   std::function<void(const std::string&)> warn;
   // Called with the adapted mesh just before its curving, e.g. to set the curving's progress.
   std::function<void(const Mesh<D>&, CurvingOptions&)> before_curving;
-  AdaptationLoop<D> loop;  // empty: adapt_to_metric
-  CurvingStep<D> curve;    // empty: curve_in_metric
 };
 
 // The smallest size `metric` asks at the vertices of `input`.

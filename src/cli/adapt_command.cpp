@@ -6,9 +6,9 @@
 // Metric-based adaptation to a unit mesh (split, collapse, swap, smooth; boundary points on the
 // geometry), then, with --order 2, the curving of `hocav curve` in the same metric. Under
 // `mpirun -np N` (N > 1) the P1 loop and the curving are distributed (docs/distributed.md); every
-// process reads its piece of the input when adapts_from_pieces says so, else rank 0 reads it; without
-// --curved the parts curve the output and write it in runs (its --vtu too); with --curved rank 0
-// gathers the mesh, runs the curved passes and writes it.
+// process reads its piece of the input when adapts_from_pieces says so, else rank 0 reads it; the
+// parts curve the output (with --curved: and run the curved passes) and write it in runs (its --vtu
+// too).
 #include <chrono>
 #include <cstdint>
 #include <iostream>
@@ -32,7 +32,6 @@
 #include "parallel/adaptation_from_pieces.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_adaptation.hpp"
-#include "parallel/distributed_curving.hpp"
 #include "parallel/output_in_parts.hpp"
 #include "parallel/part_message.hpp"
 #include "parallel/piece_input_check.hpp"
@@ -191,28 +190,6 @@ void broadcast_boundary(const Mesh<D>& mesh) {
   broadcast_bytes(bytes);
 }
 
-// With several processes (docs/distributed.md): the distributed loop in place of the serial one, the
-// input's boundary sent first; its iterations' figures go to `iterations`.
-template <int D>
-void distribute(AdaptationJob<D>& job, const AdaptOptions& o, std::vector<DistributedIteration>& iterations) {
-  std::function<void(const DistributedIteration&)> on_iteration = iteration_printer(o, iterations);
-  job.loop = [on_iteration, seed = o.partition_seed](Mesh<D>& adapted, const AdaptationMetric<D>& metric,
-                                                     const BoundaryGeometry<D>* geometry, const AdaptationSettings& settings) {
-    broadcast_boundary(adapted);
-    return adapt_distributed(adapted, metric, geometry, settings, seed, on_iteration);
-  };
-  job.curve = [quiet = o.quiet](Mesh<D>& adapted, const MetricField<D>& field, const BoundaryGeometry<D>* geometry,
-                                const CurvingOptions& curving) {
-    broadcast_boundary(adapted);
-    return curve_distributed(adapted, field, geometry, curving, quiet ? nullptr : print_curving_round);
-  };
-}
-
-// Whether a distributed run ends in its parts, which curve it (--order 2) and write the output in
-// runs (docs/distributed.md §The end in the parts): every run without --curved; with it rank 0
-// gathers the mesh.
-bool ends_in_parts(const AdaptOptions& o) { return !o.curved && process_count() > 1; }
-
 // With --order 2, the parts' curving: the geometry of the adapted boundary as the serial run makes
 // it, but a CAD model's, which is the adaptation's own `geometry` (one gmsh model is open at a time;
 // the adapted mesh keeps the input's refs, which match it to the model).
@@ -225,6 +202,7 @@ std::optional<PartsCurvingStep<D>> parts_curving(const AdaptOptions& o, const Ad
   else
     step.geometry = [make = job.geometry](const Mesh<D>& boundary) { return std::shared_ptr<const BoundaryGeometry<D>>(make(boundary)); };
   step.options = *job.curving;
+  if (job.curved) step.passes = {job.iterations, job.angle};
   return step;
 }
 
@@ -240,24 +218,16 @@ PartsEnd<D> end_in_parts(const AdaptOptions& o, const AdaptationJob<D>& job, con
 }
 
 // The other processes: the same job, serving rank 0's distributed loop with the geometry of the
-// input's boundary, then (order 2) its distributed curving with the geometry of the adapted mesh's.
+// input's boundary, then ending in their parts.
 template <int D>
 void serve_adaptation(const AdaptOptions& o, const std::vector<std::byte>& input_boundary) {
   AdaptationJob<D> job = adaptation_job<D>(o);
   job.warn = {};  // rank 0 warns
   job.pass_progress = {};
-  {
-    const auto geometry = job.geometry(unpack_part<D>(input_boundary).mesh);
-    const AdaptationSettings settings = job_settings(job, 0);
-    std::optional<OutputInParts> output;
-    serve_distributed_adaptation(job.analytic, geometry.get(), settings,
-                                 ends_in_parts(o) ? end_in_parts<D>(o, job, geometry.get(), settings, output) : PartsEnd<D>{});
-  }  // one CAD model open at a time, as on rank 0
-  if (!job.curving || ends_in_parts(o)) return;
-  std::vector<std::byte> bytes;
-  broadcast_bytes(bytes);
-  const auto geometry = job.geometry(unpack_part<D>(bytes).mesh);
-  serve_distributed_curving(geometry.get(), *job.curving);
+  const auto geometry = job.geometry(unpack_part<D>(input_boundary).mesh);
+  const AdaptationSettings settings = job_settings(job, 0);
+  std::optional<OutputInParts> output;
+  serve_distributed_adaptation(job.analytic, geometry.get(), settings, end_in_parts<D>(o, job, geometry.get(), settings, output));
 }
 
 // The report, then the outputs committed and the summary printed.
@@ -276,13 +246,29 @@ void finish_outputs(const AdaptOptions& o, const AdaptationReport& report, Outpu
   }
 }
 
+void print_curved_pass_rounds(const CurvedPassesInParts& passes) {
+  static const char* const kWhere[] = {"every part, its interfaces frozen", "each interface's region with one of its processes",
+                                       "the regions' seams on rank 0"};
+  for (std::size_t r = 0; r < passes.rounds.size(); ++r) {
+    const CurvedPassRound& round = passes.rounds[r];
+    if (round.elements == 0) continue;  // (not run: no seams)
+    std::ostringstream line;
+    line << std::setprecision(3) << "distributed: curved passes, round " << r + 1 << " (" << kWhere[r] << "): " << round.elements
+         << " elements, " << round.moved_elements << " moved to another process, " << round.passes << " passes, " << round.bytes_sent
+         << " bytes sent, " << round.seconds << " s\n";
+    std::cerr << line.str();
+  }
+}
+
 // Rank 0 of a run that ends in its parts: the report made of what the parts measured, curved and
 // wrote (`output`; their boundary settled when `has_geometry`), the adaptation timed from `start`,
 // then the outputs committed.
 void finish_in_parts(AdaptationReport& report, const OutputInParts& output, bool has_geometry, std::chrono::steady_clock::time_point start,
                      const AdaptOptions& o, OutputSet& outputs) {
-  if (!o.quiet && output.curving)
+  if (!o.quiet && output.curving) {
     for (const DistributedCurvingRound& round : output.curving->rounds) print_curving_round(round);
+    if (output.curving->passes) print_curved_pass_rounds(*output.curving->passes);
+  }
   if (!o.quiet) {
     std::ostringstream line;
     line << std::setprecision(3) << "distributed: the end in the parts: " << output.counts.vertices << " vertices and "
@@ -300,13 +286,14 @@ void finish_in_parts(AdaptationReport& report, const OutputInParts& output, bool
   if (output.curving) {
     report.curving = output.curving->report;
     report.curved_measures = output.curving->curved;
+    if (output.curving->passes) report.curved_passes = output.curving->passes->run;
     report.seconds_curve = output.seconds_curve;
   }
   report.peak_memory_bytes = peak_resident_bytes();
   finish_outputs(o, report, outputs);
 }
 
-// Rank 0 of a run that ends in its parts (ends_in_parts): the job set up on the whole input as the
+// Rank 0 of a distributed run, which ends in its parts: the job set up on the whole input as the
 // serial run's, the distributed loop, and the report made of what the parts measured, curved and
 // wrote.
 template <int D>
@@ -328,7 +315,9 @@ void adapt_in_parts(Mesh<D>& mesh, std::vector<SymMat<D>> metrics, const AdaptOp
 // Whether a distributed run reads its input in pieces, no process holding the whole
 // (docs/distributed.md §Adapting from pieces): one that ends in its parts, from a P1 Gamma file,
 // whatever its metric source. Else rank 0 reads the whole input and sets the run up.
-bool adapts_from_pieces(const AdaptOptions& o) { return ends_in_parts(o) && is_gamma_path(o.input) && !gamma_mesh_has_p2_keyword(o.input); }
+bool adapts_from_pieces(const AdaptOptions& o) {
+  return process_count() > 1 && is_gamma_path(o.input) && !gamma_mesh_has_p2_keyword(o.input);
+}
 
 // Every process of a run from pieces: its piece read and prepared, the run set up on the pieces
 // together, the distributed loop, and on rank 0 (`outputs` given) the report.
@@ -376,10 +365,8 @@ void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, Ou
   prepare_boundary<D>(mesh, o.input, warn_on_stderr);
   check_mesh_or_warn(mesh, o.input);  // (prepared before the parts are cut: each rank's geometry is the serial run's)
   std::vector<SymMat<D>> metrics = vertex_metrics(mesh, file, o);
-  if (ends_in_parts(o)) return adapt_in_parts(mesh, std::move(metrics), o, outputs);
+  if (process_count() > 1) return adapt_in_parts(mesh, std::move(metrics), o, outputs);
   AdaptationJob<D> job = adaptation_job<D>(o);
-  std::vector<DistributedIteration> iterations;
-  if (process_count() > 1) distribute(job, o, iterations);
   std::optional<CurvingProgress> progress;  // drawn on a terminal, unless quiet
   job.before_curving = [&progress, &o](const Mesh<D>& adapted, CurvingOptions& curving) {
     progress.emplace(adapted, curving.passes, !o.quiet);
@@ -387,7 +374,6 @@ void adapt(Mesh<D>& mesh, const MeshFileContent& file, const AdaptOptions& o, Ou
   };
   AdaptedMesh<D> adapted = run_adaptation_job(mesh, std::move(metrics), job, o.input);
   if (progress) progress->complete();
-  adapted.report.distributed_iterations = std::move(iterations);
   write_mesh_file(o.output, mesh);
   if (!o.vtu.empty()) write_curved_vtu(o.vtu, mesh, *adapted.field);
   finish_outputs(o, adapted.report, outputs);

@@ -31,7 +31,7 @@ using EdgeEnds = std::array<Index, 2>;
 template <int D>
 std::vector<EdgeEnds> interface_edges_held_below(const MeshPart<D>& part) {
   std::vector<std::vector<FaceKey<2>>> outgoing(static_cast<std::size_t>(process_count()));
-  for (const EdgeEnds& edge : outline_of(part).interface_edges)
+  for (const EdgeEnds& edge : interface_edges_by_global_ends(part))
     outgoing[static_cast<std::size_t>(meeting_process<2>(edge, process_count()))].push_back(edge);
   const std::vector<std::vector<FaceKey<2>>> arrived = exchange_values(outgoing);
   std::unordered_map<FaceKey<2>, std::size_t, FaceKeyHash<2>> lowest;  // the lowest rank holding each
@@ -146,7 +146,7 @@ MeshJacobianSummary merged_over_processes(const MeshJacobianSummary& own) {
 template <int D>
 struct PartsRun {
   MeshPart<D>& part;
-  const MetricField<D>& field;  // on the part's mesh, whose vertices and elements the curving keeps
+  const MetricField<D>* field;  // on the part's mesh (the curving keeps its vertices and elements; after curved passes, a new one)
   const MeshPart<D>& boundary;
   const BoundaryGeometry<D>* geometry;
   const CurvingOptions& options;
@@ -159,7 +159,7 @@ struct PartsRun {
   PartCurving curve_parts() {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<Index> geometry_ids = boundary_indices(part, boundary.global_ids);
-    const PartCurving own = curve_part(part, field, {}, geometry_ids, geometry, options);
+    const PartCurving own = curve_part(part, *field, {}, geometry_ids, geometry, options);
     PartCurving round;
     for (const PartCurving& each : all_gather_value(own)) add_part(round, each);
     DistributedCurvingRound& figures = out.rounds[0];
@@ -182,7 +182,7 @@ struct PartsRun {
     for (Index k = 0; k < part.mesh.element_count(); ++k)
       if (near[k]) band_elements.push_back(k);
     std::vector<std::vector<std::byte>> outgoing(static_cast<std::size_t>(process_count()));
-    outgoing[0] = band_message(part, band_elements, field, pending);
+    outgoing[0] = band_message(part, band_elements, *field, pending);
     const long long bytes = process_rank() == 0 ? 0 : static_cast<long long>(outgoing[0].size());
     const std::vector<std::vector<std::byte>> arrived = exchange_bytes(outgoing);
     PartCurving round;
@@ -216,7 +216,7 @@ struct PartsRun {
     const std::vector<bool> on_boundary_mesh = boundary_vertex_flags(boundary.mesh);
     std::vector<char> on_boundary;
     for (Index id : boundary_indices(part, boundary.global_ids)) on_boundary.push_back(id != kNoIndex && on_boundary_mesh[id]);
-    const PartMeasures measures = measure_part(part, field, {}, on_boundary, held_below, options.threads);
+    const PartMeasures measures = measure_part(part, *field, on_boundary, held_below, options.threads);
     GainTally gains;
     for (double gain : measures.gains) gains.add(gain);
     std::unordered_set<std::uint64_t> band_edges;
@@ -263,7 +263,7 @@ struct PartsRun {
     }
     CurvedMeasures own;
     if (part.mesh.element_count() > 0) {
-      own = measure_curved(part.mesh, field, options.threads, skipped);
+      own = measure_curved(part.mesh, *field, options.threads, skipped);
     } else {
       own.length_min = own.quality_min = INFINITY;
     }
@@ -275,13 +275,26 @@ struct PartsRun {
     }
     out.curved = all;
   }
+
+  // The curved passes on the curved parts, which they change and move (the band's elements no
+  // longer those of the part); the field of the part they leave in `moved_field`.
+  void adapt_curved_parts(const CurvedPassesSettings& settings, std::optional<MetricField<D>>& moved_field) {
+    std::vector<SymMat<D>> log_metrics;
+    for (Index v = 0; v < part.mesh.vertex_count(); ++v) log_metrics.push_back(field->vertex_log_metric(v));
+    out.passes = adapt_curved_in_parts(part, log_metrics, geometry, cavity_options(options), settings, options.threads);
+    moved_field.emplace(MetricField<D>::from_log_metrics(part.mesh, std::move(log_metrics)));
+    field = &*moved_field;
+    band_elements.clear();
+    band.reset();
+    band_field.reset();
+  }
 };
 
 }  // namespace
 
 template <int D>
 CurvingInParts curve_in_parts(MeshPart<D>& part, std::vector<SymMat<D>> metrics, const PartsGeometryMaker<D>& make_geometry,
-                              const CurvingOptions& options, bool measure_curved) {
+                              const CurvingOptions& options, bool measure_curved, const CurvedPassesSettings& passes) {
   long long boundary_bytes = 0;
   const MeshPart<D> boundary = boundary_of_parts(part, &boundary_bytes);
   const std::shared_ptr<const BoundaryGeometry<D>> geometry = make_geometry ? make_geometry(boundary.mesh) : nullptr;
@@ -289,11 +302,13 @@ CurvingInParts curve_in_parts(MeshPart<D>& part, std::vector<SymMat<D>> metrics,
   if (!part.mesh.is_p2()) part.mesh.make_p2();                 // interface edges keep their straight nodes on both sides
   for (SymMat<D>& metric : metrics) metric = log_spd(metric);  // in place: no second copy
   const MetricField<D> field = MetricField<D>::from_log_metrics(part.mesh, std::move(metrics));
-  PartsRun<D> run{part, field, boundary, geometry.get(), options, {}, {}, {}, {}};
+  PartsRun<D> run{part, &field, boundary, geometry.get(), options, {}, {}, {}, {}};
   PartCurving total;
   add_round(total, run.curve_parts());
   run.out.rounds[0].bytes_sent += sum_over_processes(boundary_bytes);
   add_round(total, run.curve_band());
+  std::optional<MetricField<D>> moved_field;
+  if (passes.max_passes > 0) run.adapt_curved_parts(passes, moved_field);
   check_curved_consistency(part.mesh);
   const std::vector<EdgeEnds> held_below = interface_edges_held_below(part);
   ReinsertionResult result;
@@ -301,7 +316,7 @@ CurvingInParts curve_in_parts(MeshPart<D>& part, std::vector<SymMat<D>> metrics,
   result.seconds = total.seconds;
   result.vertices_reinserted = static_cast<Index>(total.counters.cavities);
   double anisotropy = 0;
-  for (Index v = 0; v < part.mesh.vertex_count(); ++v) anisotropy = std::max(anisotropy, anisotropy_of(field.vertex_log_metric(v)));
+  for (Index v = 0; v < part.mesh.vertex_count(); ++v) anisotropy = std::max(anisotropy, anisotropy_of(run.field->vertex_log_metric(v)));
   run.out.report = curving_run_report<D>(max_over_processes(anisotropy), 0, result, static_cast<Index>(total.proposals_left));
   run.out.report.boundary_completion = total.completion;
   run.out.report.threads = options.threads;
@@ -316,7 +331,9 @@ void count_curved_output(CurvingReport& report, const MeshFileCounts& counts) {
   report.points_after = counts.vertices + counts.nodes;
 }
 
-template CurvingInParts curve_in_parts(MeshPart<2>&, std::vector<SymMat<2>>, const PartsGeometryMaker<2>&, const CurvingOptions&, bool);
-template CurvingInParts curve_in_parts(MeshPart<3>&, std::vector<SymMat<3>>, const PartsGeometryMaker<3>&, const CurvingOptions&, bool);
+template CurvingInParts curve_in_parts(MeshPart<2>&, std::vector<SymMat<2>>, const PartsGeometryMaker<2>&, const CurvingOptions&, bool,
+                                       const CurvedPassesSettings&);
+template CurvingInParts curve_in_parts(MeshPart<3>&, std::vector<SymMat<3>>, const PartsGeometryMaker<3>&, const CurvingOptions&, bool,
+                                       const CurvedPassesSettings&);
 
 }  // namespace hocav

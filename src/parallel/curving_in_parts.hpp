@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "adapt/curved_adaptation.hpp"
+#include "adapt/curving_run.hpp"
+#include "parallel/curved_passes_in_parts.hpp"
 #include "parallel/distributed_curving.hpp"
 #include "parallel/mesh_file_runs.hpp"
 #include "parallel/mesh_parts.hpp"
@@ -26,6 +28,7 @@ struct CurvingInParts {
   std::optional<CurvedMeasures> curved;             // with measure_curved: the curved lengths and qualities
   std::array<DistributedCurvingRound, 2> rounds{};  // the parts, then the band on rank 0
   Index deferred_gains_in_parts = 0;                // edge gains measured in a part's own field past its border
+  std::optional<CurvedPassesInParts> passes;        // with curved passes (adapt --curved)
 };
 
 // The geometry the curving makes of the boundary gathered from the parts (boundary_of_parts), null
@@ -38,10 +41,11 @@ using PartsGeometryMaker = std::function<std::shared_ptr<const BoundaryGeometry<
 // makes of the whole mesh's boundary, gathered from the parts (its bytes in the first round's). The
 // second round reinserts the first round's interface vertices, on the elements within kBandRings
 // rings of them, in one part on rank 0, which sends every process the nodes of the edges it did not
-// freeze.
+// freeze. With `passes` (max_passes > 0), the curved passes follow (adapt_curved_in_parts, on the
+// same geometry), which move elements between processes; the figures are measured after them.
 template <int D>
 CurvingInParts curve_in_parts(MeshPart<D>& part, std::vector<SymMat<D>> metrics, const PartsGeometryMaker<D>& make_geometry,
-                              const CurvingOptions& options, bool measure_curved);
+                              const CurvingOptions& options, bool measure_curved, const CurvedPassesSettings& passes = {});
 
 // The report's counts (elements, points before and after) those of the file the parts wrote.
 void count_curved_output(CurvingReport& report, const MeshFileCounts& counts);

@@ -153,16 +153,6 @@ struct WholeMeshIterations {
   }
 };
 
-// Per vertex of the gathered `part`: whether its global id is listed in `ids`.
-template <int D>
-std::vector<char> flags_of_global_ids(const MeshPart<D>& part, const std::vector<Index>& ids) {
-  std::vector<char> flags(part.global_ids.size(), 0);
-  const std::unordered_map<Index, Index> local = local_ids_of(part);
-  for (Index id : ids)
-    if (const auto found = local.find(id); found != local.end()) flags[found->second] = 1;
-  return flags;
-}
-
 // The last runs, serial on a part that holds a region of the last runs (docs/distributed.md §The
 // scheme, step 5). The first tries first the seeds' neighbours, the second what the first left (its poor
 // elements and edges outside the unit window) with its window open again: a run that closed its
@@ -252,12 +242,11 @@ std::pair<AdaptationRun, RootSeeds> last_runs_in_parts(MeshPart<D>& part, const 
 
 // Collective, after the last runs in the parts (docs/distributed.md §The scheme, step 5): the elements
 // within kInterfaceBandRings rings of the seams (`seeds`) go to rank 0 (the others stay), rank 0
-// runs the last serial runs there (none when no element is near a seed), then, when `gather`, every
-// element goes to rank 0. Returns rank 0's runs; their figures in rank 0's `figures`.
+// runs the last serial runs there (none when no element is near a seed). Returns rank 0's runs;
+// their figures in rank 0's `figures`.
 template <int D>
 AdaptationRun last_runs_on_root(MeshPart<D>& part, const RootSeeds& seeds, const RootRuns<D>* root,
-                                const WholeMeshIterations<D>& iterations, const BackMeshShare<D>& home, bool gather,
-                                DistributedIteration& figures) {
+                                const WholeMeshIterations<D>& iterations, const BackMeshShare<D>& home, DistributedIteration& figures) {
   const auto start = std::chrono::steady_clock::now();
   const std::vector<char> near = elements_near(part.mesh, flags_of_global_ids(part, seeds.ids), kInterfaceBandRings);
   std::vector<int> destination(near.size(), process_rank());
@@ -285,7 +274,6 @@ AdaptationRun last_runs_on_root(MeshPart<D>& part, const RootSeeds& seeds, const
     figures.part_seconds.push_back(each.seconds);
     figures.peak_memory_bytes.push_back(each.peak_memory_bytes);
   }
-  if (gather) part = migrate_part(part, std::vector<int>(static_cast<std::size_t>(part.mesh.element_count()), 0), &bytes_sent);
   figures.bytes_sent += sum_over_processes(bytes_sent);
   figures.seconds = seconds_since(start);
   return run;
@@ -365,20 +353,11 @@ AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric
   const auto [parts_run, seams] = last_runs_in_parts(part, whole_result, &root, whole, home, in_parts);
   if (on_iteration) on_iteration(in_parts);
   DistributedIteration last_figures = last_runs_figures(kLastRunsOnRoot);
-  const bool gather = !end;
-  const AdaptationRun last = last_runs_on_root(part, seams, &root, whole, home, gather, last_figures);
-  if (gather) {
-    mesh = whole_mesh_of(std::move(part));
-    mesh.build_topology();
-    last_figures.vertices = mesh.vertex_count();
-    last_figures.elements = mesh.element_count();
-  } else {
-    mesh = Mesh<D>{};
-    gathered_metric(home, recipe, Mesh<D>{}, last_figures);  // (rank 0 holds the whole back mesh; the others gather their shares)
-    const MeshFileCounts written = end(part, metric);
-    last_figures.vertices = written.vertices;
-    last_figures.elements = written.elements;
-  }
+  const AdaptationRun last = last_runs_on_root(part, seams, &root, whole, home, last_figures);
+  gathered_metric(home, recipe, Mesh<D>{}, last_figures);  // (rank 0 holds the whole back mesh; the others gather their shares)
+  const MeshFileCounts written = end(part, metric);
+  last_figures.vertices = written.vertices;
+  last_figures.elements = written.elements;
   if (on_iteration) on_iteration(last_figures);
   return joined_runs(joined_runs(whole_result.run, parts_run), last);
 }
@@ -397,8 +376,8 @@ void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>& analy
   partition_first(part, scattered_by_part({}, {}), whole.partition_seed, unused);
   const WholeMeshResult whole_result = whole.run(part, home, {}, {});
   const RootSeeds seams = last_runs_in_parts<D>(part, whole_result, nullptr, whole, home, unused).second;
-  last_runs_on_root<D>(part, seams, nullptr, whole, home, !end, unused);
-  if (end) end_in_every_part(part, home, recipe, end, unused);
+  last_runs_on_root<D>(part, seams, nullptr, whole, home, unused);
+  end_in_every_part(part, home, recipe, end, unused);
 }
 
 template <int D>
@@ -417,7 +396,7 @@ AdaptationRun adapt_distributed_from_pieces(PiecesStart<D> start, const Boundary
   const auto [parts_run, seams] = last_runs_in_parts(part, whole_result, own_root, whole, start.home, in_parts);
   if (process_rank() == 0 && on_iteration) on_iteration(in_parts);
   DistributedIteration last_figures = last_runs_figures(kLastRunsOnRoot);
-  const AdaptationRun last = last_runs_on_root(part, seams, own_root, whole, start.home, false, last_figures);
+  const AdaptationRun last = last_runs_on_root(part, seams, own_root, whole, start.home, last_figures);
   end_in_every_part(part, start.home, whole.recipe, end, last_figures);
   if (process_rank() == 0 && on_iteration) on_iteration(last_figures);
   return joined_runs(joined_runs(whole_result.run, parts_run), last);

@@ -3,9 +3,10 @@
 // the metric's predicted output per element; each process adapts its part with the interfaces
 // frozen, and PT-Scotch cuts the distributed mesh again
 // so that the old interfaces fall inside parts, the elements migrating between processes. After the
-// fourth time the elements near the last interfaces and the poor elements go to rank 0, which runs
-// the serial loop there with the rest frozen; then rank 0 gathers the mesh, or every process ends
-// with its part (PartsEnd: the output settled, measured and written in runs from the parts).
+// fourth time the elements near the last interfaces go, interface by interface, to one of its two
+// processes, and those near the seams left and the poor elements to rank 0, which run the serial
+// loop there with the rest frozen; then every process ends with its part (PartsEnd: the output
+// settled, measured, curved and written in runs from the parts).
 #pragma once
 
 #include <functional>
@@ -34,8 +35,8 @@ constexpr int kLastRunsOnRoot = kDistributedIterations + 2;
 // the loop room), whose own frozen border lies in the adapted region.
 constexpr int kInterfaceBandRings = 2;
 
-// What every process does with its part at the end of the loop, in place of the gather onto rank 0
-// (docs/distributed.md §The end in the parts): its part after the last runs (compact, with topology,
+// What every process does with its part at the end of the loop (docs/distributed.md §The end in the
+// parts): its part after the last runs (compact, with topology,
 // global ids and pinned flags), and the target metric around it; it returns what it wrote.
 template <int D>
 using PartsEnd = std::function<MeshFileCounts(MeshPart<D>&, const AdaptationMetric<D>&)>;
@@ -45,22 +46,22 @@ using PartsEnd = std::function<MeshFileCounts(MeshPart<D>&, const AdaptationMetr
 // mesh, if it has one: the iterations' gradual metric starts from its own (docs/distributed.md). The mesh is compact and has
 // its topology on return; the run's passes are each iteration's, summed over the parts, then those
 // of the last serial runs near the last interfaces (docs/distributed.md). `partition_seed`: the
-// partitioner's (element_partition.hpp; 0: its own). With `end`, every process ends with it on its
-// part and `mesh` is left empty; the last runs' figures then count what it wrote.
+// partitioner's (element_partition.hpp; 0: its own). Every process ends with `end` on its part and
+// `mesh` is left empty; the last runs' figures count what it wrote.
 template <int D>
 AdaptationRun adapt_distributed(Mesh<D>& mesh, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                                 const AdaptationSettings& settings, std::int64_t partition_seed,
-                                const std::function<void(const DistributedIteration&)>& on_iteration, const PartsEnd<D>& end = {});
+                                const std::function<void(const DistributedIteration&)>& on_iteration, const PartsEnd<D>& end);
 
-// On the other ranks: adapts their parts in the whole-mesh iterations, then sends rank 0 the last
-// runs' region and every element after them (adapt_distributed), with the metric remade on
+// On the other ranks: adapts their parts in the whole-mesh iterations and the last runs, then ends
+// with `end` on their parts (adapt_distributed), with the metric remade on
 // the shares of the back mesh around them (docs/distributed.md §The back mesh in shares) from what
 // rank 0 broadcasts (the size bounds, the Hausdorff distance) and `analytic`, the job's analytic
 // metric if it has one. `geometry` is made from the input's boundary as rank 0's; `settings` is the
 // job's but for the Hausdorff distance, which rank 0 sends. `end` as rank 0's.
 template <int D>
 void serve_distributed_adaptation(const std::optional<AnalyticMetricSpec>& analytic, const BoundaryGeometry<D>* geometry,
-                                  AdaptationSettings settings, const PartsEnd<D>& end = {});
+                                  AdaptationSettings settings, const PartsEnd<D>& end);
 
 // What every process starts a run from pieces with (docs/distributed.md §Adapting from pieces): its
 // piece of the input (read in pieces, prepared and classified; global ids the file's), its

@@ -116,6 +116,15 @@ std::unordered_map<Index, Index> local_ids_of(const MeshPart<D>& part) {
 }
 
 template <int D>
+std::vector<char> flags_of_global_ids(const MeshPart<D>& part, const std::vector<Index>& ids) {
+  std::vector<char> flags(part.global_ids.size(), 0);
+  const std::unordered_map<Index, Index> local = local_ids_of(part);
+  for (Index id : ids)
+    if (const auto found = local.find(id); found != local.end()) flags[found->second] = 1;
+  return flags;
+}
+
+template <int D>
 void split_mesh_part_by_part(const Mesh<D>& mesh, std::span<const int> part_of, std::span<const int> order,
                              const std::function<void(int, MeshPart<D>)>& take) {
   std::vector<std::vector<Index>> elements(order.size()), facets(order.size());
@@ -162,16 +171,6 @@ MeshPart<D> whole_mesh_part(Mesh<D> mesh) {
 }
 
 template <int D>
-Mesh<D> whole_mesh_of(MeshPart<D> part) {
-  if (std::find(part.mesh.facet_refs().begin(), part.mesh.facet_refs().end(), kInterfaceRef) != part.mesh.facet_refs().end())
-    throw Error("a gathered mesh still has an interface facet");
-  part.mesh.required_vertices().clear();
-  for (Index v = 0; v < part.mesh.vertex_count(); ++v)
-    if (part.pinned[v] & kPinnedByMesh) part.mesh.required_vertices().push_back(v);
-  return std::move(part.mesh);
-}
-
-template <int D>
 Index interface_facet_count(const Mesh<D>& part_mesh) {
   return static_cast<Index>(std::count(part_mesh.facet_refs().begin(), part_mesh.facet_refs().end(), kInterfaceRef));
 }
@@ -214,34 +213,18 @@ std::vector<EdgeNodeRecord<D>> edge_node_records(const MeshPart<D>& part) {
   return records;
 }
 
-template <int D>
-void write_back_nodes(Mesh<D>& mesh, std::span<const EdgeNodeRecord<D>> nodes, std::vector<char>* written) {
-  for (const EdgeNodeRecord<D>& record : nodes) {
-    const auto [a, b] = record.ends;
-    const Index whole = a == kNoIndex || b == kNoIndex ? kNoIndex : mesh.find_edge(a, b);
-    if (whole == kNoIndex)
-      throw Error("distributed curving: a part has edge (" + one_based(a) + ", " + one_based(b) + "), which the mesh lacks");
-    if (!record.frozen) {
-      mesh.edge_node(whole) = record.node;
-      if (written) (*written)[whole] = 1;
-    } else if (!(record.node == mesh.edge_node(whole))) {
-      throw Error("distributed curving: interface edge (" + one_based(a) + ", " + one_based(b) + ") came back with another node");
-    }
-  }
-}
-
 template std::vector<Index> interface_facets(const Mesh<2>&);
 template std::vector<Index> interface_facets(const Mesh<3>&);
 template std::vector<char> interface_vertex_flags(const Mesh<2>&);
 template std::vector<char> interface_vertex_flags(const Mesh<3>&);
 template std::unordered_map<Index, Index> local_ids_of(const MeshPart<2>&);
 template std::unordered_map<Index, Index> local_ids_of(const MeshPart<3>&);
+template std::vector<char> flags_of_global_ids(const MeshPart<2>&, const std::vector<Index>&);
+template std::vector<char> flags_of_global_ids(const MeshPart<3>&, const std::vector<Index>&);
 template std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<2>&);
 template std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<3>&);
 template std::vector<EdgeNodeRecord<2>> edge_node_records(const MeshPart<2>&);
 template std::vector<EdgeNodeRecord<3>> edge_node_records(const MeshPart<3>&);
-template void write_back_nodes(Mesh<2>&, std::span<const EdgeNodeRecord<2>>, std::vector<char>*);
-template void write_back_nodes(Mesh<3>&, std::span<const EdgeNodeRecord<3>>, std::vector<char>*);
 template void split_mesh_part_by_part(const Mesh<2>&, std::span<const int>, std::span<const int>,
                                       const std::function<void(int, MeshPart<2>)>&);
 template void split_mesh_part_by_part(const Mesh<3>&, std::span<const int>, std::span<const int>,
@@ -250,8 +233,6 @@ template std::vector<MeshPart<2>> split_mesh(const Mesh<2>&, std::span<const int
 template std::vector<MeshPart<3>> split_mesh(const Mesh<3>&, std::span<const int>, int);
 template MeshPart<2> whole_mesh_part(Mesh<2>);
 template MeshPart<3> whole_mesh_part(Mesh<3>);
-template Mesh<2> whole_mesh_of(MeshPart<2>);
-template Mesh<3> whole_mesh_of(MeshPart<3>);
 template Index interface_facet_count(const Mesh<2>&);
 template Index interface_facet_count(const Mesh<3>&);
 

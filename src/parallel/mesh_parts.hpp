@@ -1,6 +1,6 @@
 // Parts of a mesh for the processes of a distributed adaptation (docs/distributed.md §Parts): the
 // split of a mesh along an element partition, with the faces between parts kept as required
-// facets; the whole mesh as a part and back; a curved part's nodes written back by global ids.
+// facets; the whole mesh as a part and back; a curved part's nodes by global ids.
 #pragma once
 
 #include <array>
@@ -40,6 +40,10 @@ struct MeshPart {
 template <int D>
 std::unordered_map<Index, Index> local_ids_of(const MeshPart<D>& part);
 
+// Per vertex of `part`: whether its global id is listed in `ids`.
+template <int D>
+std::vector<char> flags_of_global_ids(const MeshPart<D>& part, const std::vector<Index>& ids);
+
 // Splits `mesh` (with topology, compact) into `part_count` parts, element k going to part
 // `part_of[k]` (to none when negative). A part's vertices keep the mesh's order, its elements and
 // facets too; a P2 mesh gives P2 parts with the same nodes.
@@ -74,12 +78,6 @@ std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<D>& mesh);
 template <int D>
 MeshPart<D> whole_mesh_part(Mesh<D> mesh);
 
-// The mesh a part holds when it holds every element (migrate_part gathered it): its required
-// vertices those the mesh had (pinned by the mesh), without those pinned as non-manifold places.
-// Throws Error when the part has an interface facet left.
-template <int D>
-Mesh<D> whole_mesh_of(MeshPart<D> part);
-
 // A curved part's edge node by the edge's ends in the mesh the part came from, and whether the edge
 // lies on one of the part's interface facets (frozen on both sides: its node comes back unchanged).
 template <int D>
@@ -93,13 +91,6 @@ struct EdgeNodeRecord {
 // back, a curving changing no element (each ball is re-starred from its own vertex), only nodes.
 template <int D>
 std::vector<EdgeNodeRecord<D>> edge_node_records(const MeshPart<D>& part);
-
-// Writes a curved part's `nodes` back into the P2 `mesh` it came from: the mesh keeps its elements,
-// their order and its edge table. With `written`, marks there (per mesh edge) the edges whose node
-// was written (those not frozen). Throws Error when an edge is not the mesh's, or a frozen edge
-// comes back with a node other than the mesh's.
-template <int D>
-void write_back_nodes(Mesh<D>& mesh, std::span<const EdgeNodeRecord<D>> nodes, std::vector<char>* written = nullptr);
 
 // A part's interface facets: each face between two parts counts once in each.
 template <int D>

@@ -50,7 +50,7 @@ OutputInParts finish_adaptation_in_parts(MeshPart<D>& part, const AdaptationMetr
   const std::optional<MetricField<D>> field = vtu.empty() ? std::nullopt : std::optional<MetricField<D>>(std::in_place, part.mesh, metrics);
   if (curving) {
     const auto curving_start = std::chrono::steady_clock::now();
-    out.curving = curve_in_parts(part, std::move(metrics), curving->geometry, curving->options, settings.measure_output);
+    out.curving = curve_in_parts(part, std::move(metrics), curving->geometry, curving->options, settings.measure_output, curving->passes);
     out.seconds_curve = max_over_processes(seconds_since(curving_start));
   }
   out.counts = write_mesh_file_runs(path, part);

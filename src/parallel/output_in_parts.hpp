@@ -35,6 +35,7 @@ struct PartsCurvingStep {
   // is open at a time).
   PartsGeometryMaker<D> geometry;
   CurvingOptions options;
+  CurvedPassesSettings passes;  // adapt --curved's (none by default)
 };
 
 // Every process at once, each with its part after the loop (P1, compact, global ids, pinned flags)

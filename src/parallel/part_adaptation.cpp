@@ -17,7 +17,7 @@ namespace {
 // serial runs do better (docs/distributed.md).
 constexpr int kEarlyPassesAfterWindowCloses = 2;
 
-// Attribute columns of a part's vertices through its loop: 0 for a new vertex, else the global id + 1
+// Attribute columns of a part's vertices through a change: 0 for a new vertex, else the global id + 1
 // and the pinned flags.
 constexpr int kGlobalIdColumn = 0, kPinnedColumn = 1;
 
@@ -62,31 +62,39 @@ void drop_interface_tags(MeshPart<D>& part, const TagsBefore& before) {
 }
 
 // Adapts one part with its interfaces frozen (required facets and vertices); its global ids and
-// pinned flags follow the vertices through the loop as vertex attributes.
+// pinned flags follow the vertices through the loop.
 template <int D>
 AdaptationRun adapt_part(MeshPart<D>& part, const AdaptationMetric<D>& metric, const BoundaryGeometry<D>* geometry,
                          const AdaptationSettings& settings) {
   if (part.mesh.element_count() == 0) return {};
   const TagsBefore before = tags_before(part);
+  AdaptationRun run;
+  change_keeping_global_ids<D>(part, [&](Mesh<D>& mesh) {
+    if (!mesh.has_topology()) mesh.build_topology();  // a part from migrate_part has it
+    run = adapt_to_metric(mesh, metric, geometry, settings);
+  });
+  drop_interface_tags(part, before);
+  return run;
+}
+
+}  // namespace
+
+template <int D>
+void change_keeping_global_ids(MeshPart<D>& part, const std::function<void(Mesh<D>&)>& change) {
   const bool pinned = !part.pinned.empty();
   const int attribute = part.mesh.add_vertex_attribute(2);
   for (Index v = 0; v < part.mesh.vertex_count(); ++v) {
     part.mesh.vertex_attribute(attribute, v)[kGlobalIdColumn] = part.global_ids[v] + 1.0;
     part.mesh.vertex_attribute(attribute, v)[kPinnedColumn] = pinned ? part.pinned[v] : 0;
   }
-  if (!part.mesh.has_topology()) part.mesh.build_topology();  // a part from migrate_part has it
-  const AdaptationRun run = adapt_to_metric(part.mesh, metric, geometry, settings);
+  change(part.mesh);
   part.global_ids.resize(static_cast<std::size_t>(part.mesh.vertex_count()));
   part.pinned.resize(pinned ? part.global_ids.size() : 0);
   for (Index v = 0; v < part.mesh.vertex_count(); ++v) {
     part.global_ids[v] = static_cast<Index>(part.mesh.vertex_attribute(attribute, v)[kGlobalIdColumn]) - 1;
     if (pinned) part.pinned[v] = static_cast<char>(part.mesh.vertex_attribute(attribute, v)[kPinnedColumn]);
   }
-  drop_interface_tags(part, before);
-  return run;
 }
-
-}  // namespace
 
 AdaptationSettings part_settings(const AdaptationSettings& settings) {
   AdaptationSettings part = settings;
@@ -172,6 +180,9 @@ template std::pair<AdaptationRun, PartFigures> adapt_part_measured(MeshPart<2>&,
                                                                    const AdaptationSettings&);
 template std::pair<AdaptationRun, PartFigures> adapt_part_measured(MeshPart<3>&, const AdaptationMetric<3>&, const BoundaryGeometry<3>*,
                                                                    const AdaptationSettings&);
+
+template void change_keeping_global_ids(MeshPart<2>&, const std::function<void(Mesh<2>&)>&);
+template void change_keeping_global_ids(MeshPart<3>&, const std::function<void(Mesh<3>&)>&);
 
 template BoundarySettling settle_part_boundary(MeshPart<2>&, std::span<const SymMat<2>>, const BoundaryGeometry<2>&, double);
 template BoundarySettling settle_part_boundary(MeshPart<3>&, std::span<const SymMat<3>>, const BoundaryGeometry<3>&, double);

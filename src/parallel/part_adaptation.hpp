@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -25,6 +26,12 @@ struct PartFigures {
   double seconds = 0;
   long long peak_memory_bytes = 0;
 };
+
+// Runs `change` on the part's mesh with the part's global ids and pinned flags following its
+// vertices through every operation and compaction (vertex attributes): a new vertex gets kNoIndex
+// and 0.
+template <int D>
+void change_keeping_global_ids(MeshPart<D>& part, const std::function<void(Mesh<D>&)>& change);
 
 // Adapts `part` (without topology; with it on return) with `settings` as they are: its vertices keep
 // their global ids and pinned flags, new vertices get kNoIndex and 0. The corners and the feature

@@ -20,9 +20,12 @@ run (an interface edge on the boundary gets its proposal in a later round). The 
 writing in runs refuse parts that give an interface edge two different nodes, so a finished run has
 every interface edge's node from the one rank that curved it.
 
-`mpirun -np 2 hocav adapt --curved` gathers its adapted mesh on rank 0, which curves it with the
-other processes (§Curving: a third round, in one part, for the vertices the second froze again, if
-any) before its curved passes: its output is valid, P2, certified and keeps the input's refs.
+`mpirun -np N hocav adapt --curved` curves the adapted mesh in its parts and runs the curved passes
+there (§Curved passes in the parts): on 2 and 3 processes every part runs them with its interfaces
+frozen, then the interfaces' regions move to one of their processes and run again (and on 3, the
+regions' seams on rank 0); the output is valid, P2, certified, keeps the input's refs, and its
+curved unit share and mean curved quality are within 1% of the serial run's. With one process it is
+the serial output byte for byte.
 
 Bad input read in pieces is refused as the serial command refuses it (exit 2, its message, no
 output), though another process than rank 0 read the bad entity: an inverted element, a metric row
@@ -236,19 +239,43 @@ def check(hocav, mpirun, work):
     assert min_normalized_jacobian(figures) >= FLOOR, f"adapted2: min normalized Jacobian {figures['normalized Jacobian']}"
     check_same_refs(figures, stats(hocav, "shell.meshb", work), "adapted2")
 
-    # --curved: the adapted mesh gathered on rank 0 and curved with the other processes.
-    found = rounds(completed(mpirun + ["-np", "2", hocav] + adapt[:-1] + ["--curved", "-o", "adapted2curved.meshb"], work).stderr)
-    frozen_again = [frozen for _, frozen in found[1:]]
-    print(f"adapt --curved on 2 processes: rounds {found}")
-    assert len(found) in (2, 3) and found[1][0] > 0, f"adapt --curved: rounds {found}"
-    assert (len(found) == 3) == (frozen_again[0] > 0), f"adapt --curved: a third round is run when the second froze vertices again"
-    assert frozen_again[-1] == 0, f"adapt --curved: the last round froze {frozen_again[-1]} vertices again"
-    figures = stats(hocav, "adapted2curved.meshb", work)
-    check_valid(figures, "adapted2curved.meshb")
-    assert figures["order"] == "P2", figures["order"]
-    assert min_normalized_jacobian(figures) >= FLOOR, f"adapt --curved: min normalized Jacobian {figures['normalized Jacobian']}"
-    check_same_refs(figures, stats(hocav, "shell.meshb", work), "adapted2curved")
+    check_curved_passes_in_parts(hocav, mpirun, work, adapt[:-1] + ["--curved"])
 
+
+def curved_pass_rounds(stderr):
+    """(elements, elements moved, passes) per round of the curved passes, from their `distributed:` lines."""
+    found = re.findall(r"distributed: curved passes, round (\d) \(.*?\): (\d+) elements, (\d+) moved to another process, (\d+) passes", stderr)
+    return {int(number): (int(elements), int(moved), int(passes)) for number, elements, moved, passes in found}
+
+
+def check_curved_passes_in_parts(hocav, mpirun, work, adapt):
+    """`adapt --curved` under mpirun: the parts curve the adapted mesh and run the curved passes
+    (docs/distributed.md §Curved passes in the parts); with one process, the serial run."""
+    run([hocav] + adapt + ["-q", "-o", "curved1.meshb", "--report", "curved1.json"], work)
+    run(mpirun + ["-np", "1", hocav] + adapt + ["-q", "-o", "curved1np.meshb"], work)
+    assert same_bytes(work, "curved1np.meshb", "curved1.meshb"), "adapt --curved, mpirun -np 1: not the serial output byte for byte"
+    serial = report(work, "curved1.json")["curved_measures"]
+    for processes in (2, 3):
+        name = f"curved{processes}"
+        result = completed(mpirun + ["-np", str(processes), hocav] + adapt + ["-o", name + ".meshb", "--report", name + ".json"], work)
+        found = curved_pass_rounds(result.stderr)
+        print(f"adapt --curved on {processes} processes: rounds (elements, moved, passes) {found}")
+        assert 1 in found and found[1][1] == 0 and found[1][2] > 0, f"{name}: the first round in every part: {found}"
+        assert 2 in found and found[2][1] > 0 and found[2][2] > 0, f"{name}: the interfaces' regions moved and ran: {found}"
+        assert processes == 3 or 3 not in found, f"{name}: two parts leave no seams, yet a third round ran: {found}"
+        figures = stats(hocav, name + ".meshb", work)
+        check_valid(figures, name)
+        assert figures["order"] == "P2", figures["order"]
+        assert min_normalized_jacobian(figures) >= FLOOR, f"{name}: min normalized Jacobian {figures['normalized Jacobian']}"
+        check_same_refs(figures, stats(hocav, "shell.meshb", work), name)
+        measured = report(work, name + ".json")
+        assert measured["curved_passes"]["passes"], f"{name}: the report has no curved passes"
+        assert measured["output_elements"] == int(figures["elements"].split()[0]), f"{name}: report {measured['output_elements']}, file {figures['elements']}"
+        curved = measured["curved_measures"]
+        print(f"{name}: curved unit share {curved['unit_share']:.4f} (serial {serial['unit_share']:.4f}), mean quality "
+              f"{curved['quality_mean']:.4f} (serial {serial['quality_mean']:.4f})")
+        assert curved["unit_share"] >= serial["unit_share"] - 0.01, f"{name}: curved unit share {curved} against the serial {serial}"
+        assert curved["quality_mean"] >= 0.99 * serial["quality_mean"], f"{name}: curved mean quality {curved} against {serial}"
 
 if __name__ == "__main__":
     sys.exit(distributed_test(check))

@@ -14,6 +14,7 @@
 #include "parallel/mesh_parts.hpp"
 #include "parallel/part_message.hpp"
 #include "parallel/part_shipment.hpp"
+#include "whole_mesh_of.hpp"
 
 namespace hocav {
 namespace {

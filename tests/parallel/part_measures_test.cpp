@@ -1,7 +1,7 @@
 // The output figures of a distributed curving measured by its parts (src/parallel/part_measures.hpp),
 // without MPI: a curved cube cut into slabs, each slab measured in the field of its own vertices,
 // the edges it leaves measured in the whole field, gives the whole mesh's figures; nodes moved in
-// the whole mesh after the cut reach the parts as updates.
+// the whole mesh after the cut reach the parts as updates (apply_node_updates).
 #include "parallel/part_measures.hpp"
 
 #include <gtest/gtest.h>
@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <set>
 
 #include "bezier/mesh_quality.hpp"
 #include "cases/structured.hpp"
@@ -54,30 +55,31 @@ struct CurvedCube {
     return parts;
   }
 
-  // Every part measured (after `written` nodes of the whole mesh reach it), its deferred edges in
-  // the whole field: the figures rank 0 gathers.
+  // Every part measured (after the `written` nodes of the whole mesh reach it as updates), each
+  // interface edge by the first part that holds it, its deferred edges in the whole field: the
+  // figures the processes add up.
   PartMeasures measured_by(std::vector<MeshPart<3>>& parts, const std::vector<char>& written) const {
     const std::vector<bool> on_boundary = boundary_vertex_flags(mesh);
-    std::vector<PartOutline> outlines;
-    for (const MeshPart<3>& part : parts) outlines.push_back(outline_of(part));
-    const auto before = interface_edges_measured_before(outlines);
-    std::vector<Index> changed;
+    std::vector<NodeUpdate<3>> updates;  // (the parts' global ids are the mesh's vertex ids)
     for (Index e = 0; e < mesh.edge_count(); ++e)
-      if (written[e]) changed.push_back(e);
-    const auto updates = node_updates_by_part(mesh, changed, outlines);
+      if (written[e]) updates.push_back({mesh.edge_vertices(e), mesh.edge_node(e)});
+    std::set<std::array<Index, 2>> held;  // the interface edges of the parts before
     PartMeasures all;
-    for (std::size_t p = 0; p < parts.size(); ++p) {
+    for (MeshPart<3>& part : parts) {
+      apply_node_updates<3>(part, updates);
       std::vector<SymMat<3>> log_metrics;
       std::vector<char> boundary;
-      for (Index g : parts[p].global_ids) {
+      for (Index g : part.global_ids) {
         log_metrics.push_back(field->vertex_log_metric(g));
         boundary.push_back(on_boundary[g]);
       }
-      const PartMeasures part = measure_part<3>(parts[p], MetricField<3>::from_log_metrics(parts[p].mesh, log_metrics), updates[p],
-                                                boundary, before[p], 2);
-      all.elements.insert(all.elements.end(), part.elements.begin(), part.elements.end());
-      all.gains.insert(all.gains.end(), part.gains.begin(), part.gains.end());
-      all.deferred.insert(all.deferred.end(), part.deferred.begin(), part.deferred.end());
+      std::vector<std::array<Index, 2>> elsewhere;
+      for (const std::array<Index, 2>& edge : interface_edges_by_global_ends(part))
+        if (!held.insert(edge).second) elsewhere.push_back(edge);
+      const PartMeasures measured = measure_part<3>(part, MetricField<3>::from_log_metrics(part.mesh, log_metrics), boundary, elsewhere, 2);
+      all.elements.insert(all.elements.end(), measured.elements.begin(), measured.elements.end());
+      all.gains.insert(all.gains.end(), measured.gains.begin(), measured.gains.end());
+      all.deferred.insert(all.deferred.end(), measured.deferred.begin(), measured.deferred.end());
     }
     for (const auto& [a, b] : all.deferred) all.gains.push_back(edge_gain(mesh, *field, mesh.find_edge(a, b)).value);
     return all;
