@@ -286,8 +286,11 @@ void finish_in_parts(AdaptationReport& report, const OutputInParts& output, bool
   if (output.curving) {
     report.curving = output.curving->report;
     report.curved_measures = output.curving->curved;
-    if (output.curving->passes) report.curved_passes = output.curving->passes->run;
     report.seconds_curve = output.seconds_curve;
+    if (output.curving->passes) {
+      report.curved_passes = output.curving->passes->run;
+      for (const CurvedPassRound& round : output.curving->passes->rounds) report.seconds_curve -= round.seconds;  // (as serially: apart)
+    }
   }
   report.peak_memory_bytes = peak_resident_bytes();
   finish_outputs(o, report, outputs);

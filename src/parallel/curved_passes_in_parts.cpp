@@ -191,7 +191,8 @@ CurvedPassesInParts adapt_curved_in_parts(MeshPart<D>& part, std::vector<SymMat<
   rounds.run(0, true, std::chrono::steady_clock::now());  // every part, its interfaces frozen
   // Each interface's region with one of its two processes: the interface inside a part.
   auto start = std::chrono::steady_clock::now();
-  const RegionCut cut = cut_last_run_region(part, kBandRings);
+  // (Each region to the lighter of its two processes: the loop's last runs left them unbalanced.)
+  const RegionCut cut = cut_last_run_region(part, kBandRings, all_gather_value(part.mesh.element_count()));
   const std::vector<Index> seams = all_gather_values_joined(cut.seams);
   rounds.migrate(cut.destination, 1);
   rounds.run(1, true, start);

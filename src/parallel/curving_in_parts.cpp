@@ -146,7 +146,7 @@ MeshJacobianSummary merged_over_processes(const MeshJacobianSummary& own) {
 template <int D>
 struct PartsRun {
   MeshPart<D>& part;
-  const MetricField<D>* field;  // on the part's mesh (the curving keeps its vertices and elements; after curved passes, a new one)
+  std::optional<MetricField<D>> field;  // on the part's mesh (the curving keeps its vertices and elements; the curved passes do not)
   const MeshPart<D>& boundary;
   const BoundaryGeometry<D>* geometry;
   const CurvingOptions& options;
@@ -276,17 +276,18 @@ struct PartsRun {
     out.curved = all;
   }
 
-  // The curved passes on the curved parts, which they change and move (the band's elements no
-  // longer those of the part); the field of the part they leave in `moved_field`.
-  void adapt_curved_parts(const CurvedPassesSettings& settings, std::optional<MetricField<D>>& moved_field) {
+  // The curved passes on the curved parts, which they change and move: the band's elements are no
+  // longer the part's, and the field is remade on the part they leave. (The band and the curving's
+  // field are let go first: the passes hold copies of the part.)
+  void adapt_curved_parts(const CurvedPassesSettings& settings) {
     std::vector<SymMat<D>> log_metrics;
     for (Index v = 0; v < part.mesh.vertex_count(); ++v) log_metrics.push_back(field->vertex_log_metric(v));
-    out.passes = adapt_curved_in_parts(part, log_metrics, geometry, cavity_options(options), settings, options.threads);
-    moved_field.emplace(MetricField<D>::from_log_metrics(part.mesh, std::move(log_metrics)));
-    field = &*moved_field;
     band_elements.clear();
     band.reset();
     band_field.reset();
+    field.reset();
+    out.passes = adapt_curved_in_parts(part, log_metrics, geometry, cavity_options(options), settings, options.threads);
+    field.emplace(MetricField<D>::from_log_metrics(part.mesh, std::move(log_metrics)));
   }
 };
 
@@ -301,14 +302,12 @@ CurvingInParts curve_in_parts(MeshPart<D>& part, std::vector<SymMat<D>> metrics,
   if (!part.mesh.has_topology()) part.mesh.build_topology();
   if (!part.mesh.is_p2()) part.mesh.make_p2();                 // interface edges keep their straight nodes on both sides
   for (SymMat<D>& metric : metrics) metric = log_spd(metric);  // in place: no second copy
-  const MetricField<D> field = MetricField<D>::from_log_metrics(part.mesh, std::move(metrics));
-  PartsRun<D> run{part, &field, boundary, geometry.get(), options, {}, {}, {}, {}};
+  PartsRun<D> run{part, MetricField<D>::from_log_metrics(part.mesh, std::move(metrics)), boundary, geometry.get(), options, {}, {}, {}, {}};
   PartCurving total;
   add_round(total, run.curve_parts());
   run.out.rounds[0].bytes_sent += sum_over_processes(boundary_bytes);
   add_round(total, run.curve_band());
-  std::optional<MetricField<D>> moved_field;
-  if (passes.max_passes > 0) run.adapt_curved_parts(passes, moved_field);
+  if (passes.max_passes > 0) run.adapt_curved_parts(passes);
   check_curved_consistency(part.mesh);
   const std::vector<EdgeEnds> held_below = interface_edges_held_below(part);
   ReinsertionResult result;

@@ -45,9 +45,10 @@ std::vector<RegionSide<D>> across_facets(const MeshPart<D>& part, const std::vec
 }
 
 // Per interface vertex the process that takes its elements (kNoProcess for the others): one whose
-// facets all face one process, region_taker of the two; one where more parts meet, its own process.
+// facets all face one process, region_taker of the two (by `loads`); one where more parts meet, its
+// own process.
 template <int D>
-std::vector<int> seed_takers(const MeshPart<D>& part, const std::vector<Index>& facets) {
+std::vector<int> seed_takers(const MeshPart<D>& part, const std::vector<Index>& facets, std::span<const Index> loads) {
   const std::vector<RegionSide<D>> across = across_facets(part, facets, std::vector<int>(facets.size(), kNoProcess));
   std::vector<int> partner(static_cast<std::size_t>(part.mesh.vertex_count()), kNoProcess);
   for (std::size_t i = 0; i < facets.size(); ++i)
@@ -57,7 +58,7 @@ std::vector<int> seed_takers(const MeshPart<D>& part, const std::vector<Index>& 
     }
   std::vector<int> taker(partner.size(), kNoProcess);
   for (std::size_t v = 0; v < partner.size(); ++v)
-    if (partner[v] != kNoProcess) taker[v] = partner[v] >= 0 ? region_taker(process_rank(), partner[v]) : process_rank();
+    if (partner[v] != kNoProcess) taker[v] = partner[v] >= 0 ? region_taker(process_rank(), partner[v], loads) : process_rank();
   return taker;
 }
 
@@ -93,9 +94,9 @@ void unique_sorted(std::vector<Index>& ids) {
 }  // namespace
 
 template <int D>
-RegionCut cut_last_run_region(const MeshPart<D>& part, int rings) {
+RegionCut cut_last_run_region(const MeshPart<D>& part, int rings, std::span<const Index> loads) {
   const std::vector<Index> facets = interface_facets(part.mesh);
-  const std::vector<int> seed_taker = seed_takers(part, facets);
+  const std::vector<int> seed_taker = seed_takers(part, facets, loads);
   const std::vector<int> taker = nearest_labels(part.mesh, seed_taker, rings);
   RegionCut cut;
   cut.seeds_to.resize(static_cast<std::size_t>(process_count()));
@@ -113,7 +114,7 @@ RegionCut cut_last_run_region(const MeshPart<D>& part, int rings) {
   return cut;
 }
 
-template RegionCut cut_last_run_region(const MeshPart<2>&, int);
-template RegionCut cut_last_run_region(const MeshPart<3>&, int);
+template RegionCut cut_last_run_region(const MeshPart<2>&, int, std::span<const Index>);
+template RegionCut cut_last_run_region(const MeshPart<3>&, int, std::span<const Index>);
 
 }  // namespace hocav

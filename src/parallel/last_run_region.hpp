@@ -5,6 +5,7 @@
 // mend.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "parallel/mesh_parts.hpp"
@@ -15,6 +16,13 @@ namespace hocav {
 // parity of a + b, so that a process takes about half of the regions around its interfaces.
 inline int region_taker(int a, int b) { return (a + b) % 2 == 0 ? std::min(a, b) : std::max(a, b); }
 
+// The same by `loads` (per process): the lighter of the two, region_taker on a tie; region_taker
+// without loads.
+inline int region_taker(int a, int b, std::span<const Index> loads) {
+  if (loads.empty() || loads[a] == loads[b]) return region_taker(a, b);
+  return loads[a] < loads[b] ? a : b;
+}
+
 struct RegionCut {
   std::vector<int> destination;              // per element of the part: the process whose last run takes it
   Index region_elements = 0;                 // the part's elements within the rings of its interfaces
@@ -24,10 +32,10 @@ struct RegionCut {
 
 // Every process at once: each element of its part within `rings` rings of an interface vertex goes
 // where its nearest interface vertices say (one whose interface facets all face one other process:
-// region_taker of the two; one where more parts meet: its own process; the smallest process when
-// the nearest say several); the others stay. Poor elements are no seeds here: next to a seam, a
+// region_taker of the two, by `loads` when given, per process; one where more parts meet: its own
+// process; the smallest process when the nearest say several); the others stay. Poor elements are no seeds here: next to a seam, a
 // frozen poor element's coarse faces made one process's runs refine around them for 40 passes.
 template <int D>
-RegionCut cut_last_run_region(const MeshPart<D>& part, int rings);
+RegionCut cut_last_run_region(const MeshPart<D>& part, int rings, std::span<const Index> loads = {});
 
 }  // namespace hocav

@@ -5,7 +5,8 @@
 // quadrants of x and y on 4 (four parts meet along a line). Then:
 // - every element within the rings of an interface vertex is in the region and goes to a process,
 //   the others stay where they are;
-// - on slabs the region goes to region_taker of the interfaces' two processes;
+// - on slabs the region goes to region_taker of the interfaces' two processes, and with loads per
+//   process to the lighter;
 // - a face between two elements of the region that go to different processes (inside a part or
 //   across an interface) has every vertex among the seams, and every seam vertex is on such a face;
 // - on slabs there is no seam at all (each interface lies inside one part after the cut), on the
@@ -113,6 +114,16 @@ bool check(Mesh<D> mesh) {
     // On slabs the region goes to the interfaces' takers.
     if (near[k] && !quadrants() && to != region_taker(0, 1) && (process_count() == 2 || to != region_taker(1, 2)))
       ok = fail(name + ": element " + std::to_string(k) + " of the region goes to " + std::to_string(to) + ", no interface's taker");
+  }
+  if (!quadrants()) {  // by loads (rank 0 the lightest): each interface's region to its lower process
+    std::vector<Index> loads;
+    for (int p = 0; p < process_count(); ++p) loads.push_back(p + 1);
+    const RegionCut by_loads = cut_last_run_region(part, kRings, loads);
+    for (Index k = 0; k < part.mesh.element_count(); ++k) {
+      const int to = by_loads.destination[k];
+      if (near[k] && ((to != rank && to != rank - 1) || to == process_count() - 1))
+        ok = fail(name + ": by loads, element " + std::to_string(k) + " of the region goes to " + std::to_string(to));
+    }
   }
   if (cut.region_elements != static_cast<Index>(std::count(near.begin(), near.end(), 1)))
     ok = fail(name + ": " + std::to_string(cut.region_elements) + " region elements counted");
