@@ -15,6 +15,7 @@
 #include "parallel/communicator.hpp"
 #include "parallel/element_partition.hpp"
 #include "parallel/face_key.hpp"
+#include "parallel/field_with_neighbours.hpp"
 #include "parallel/part_curving.hpp"
 #include "parallel/part_measures.hpp"
 #include "parallel/part_shipment.hpp"
@@ -276,6 +277,16 @@ struct PartsRun {
     out.curved = all;
   }
 
+  // The field the figures are measured in: the part's with a ring of its neighbours' elements, so
+  // that what lies just past the part's border is sampled as in the whole mesh's field.
+  void measure_with_neighbours() {
+    std::vector<SymMat<D>> log_metrics;
+    for (Index v = 0; v < part.mesh.vertex_count(); ++v) log_metrics.push_back(field->vertex_log_metric(v));
+    long long bytes = 0;
+    field.emplace(field_with_neighbours(part, log_metrics, bytes));
+    out.rounds[1].bytes_sent += sum_over_processes(bytes);
+  }
+
   // The curved passes on the curved parts, which they change and move: the band's elements are no
   // longer the part's, and the field is remade on the part they leave. (The band and the curving's
   // field are let go first: the passes hold copies of the part.)
@@ -319,6 +330,7 @@ CurvingInParts curve_in_parts(MeshPart<D>& part, std::vector<SymMat<D>> metrics,
   run.out.report = curving_run_report<D>(max_over_processes(anisotropy), 0, result, static_cast<Index>(total.proposals_left));
   run.out.report.boundary_completion = total.completion;
   run.out.report.threads = options.threads;
+  run.measure_with_neighbours();
   run.measure(held_below);
   if (measure_curved) run.measure_curved_output(held_below);
   return std::move(run.out);
