@@ -32,6 +32,17 @@ void CurvedOperationCount::add(CavityStatus status) {
     ++refused;
 }
 
+CurvedOperationCount& CurvedOperationCount::operator+=(const CurvedOperationCount& other) {
+  done += other.done;
+  boundary_done += other.boundary_done;
+  on_boundary += other.on_boundary;
+  too_long += other.too_long;
+  no_gain += other.no_gain;
+  flat += other.flat;
+  refused += other.refused;
+  return *this;
+}
+
 namespace {
 
 const double kSplitLength = std::sqrt(2.0);

@@ -31,6 +31,7 @@ struct CurvedOperationCount {
   Index refused = 0;   // refused by the P2 operator otherwise (topology, or no certified curving)
 
   void add(CavityStatus status);
+  CurvedOperationCount& operator+=(const CurvedOperationCount& other);  // (the parts of a distributed run)
 };
 
 struct CurvedPass {

@@ -8,7 +8,9 @@
 #include "base/stopwatch.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/element_partition.hpp"
+#include "parallel/face_key.hpp"
 #include "parallel/last_run_region.hpp"
+#include "parallel/metrics_by_global_id.hpp"
 #include "parallel/part_adaptation.hpp"
 #include "parallel/part_curving.hpp"
 #include "parallel/part_migration.hpp"
@@ -25,8 +27,7 @@ struct GlobalLogMetric {
   SymMat<D> log_metric;
 };
 
-// The process where the holders of a vertex's log-metric meet.
-std::size_t meeting_process_of(Index id) { return static_cast<std::size_t>(id) % static_cast<std::size_t>(process_count()); }
+int meeting_process_of(Index id) { return vertex_meeting_process(id, process_count()); }
 
 // Collective: per vertex of `after`, the log-metric a process gave its global id in `before`
 // (`log_metrics`, per vertex of `before`), the lowest rank's where several hold it: the holders tell
@@ -34,32 +35,16 @@ std::size_t meeting_process_of(Index id) { return static_cast<std::size_t>(id) %
 template <int D>
 std::vector<SymMat<D>> log_metrics_by_global_id(const MeshPart<D>& before, const std::vector<SymMat<D>>& log_metrics,
                                                 const MeshPart<D>& after, long long& bytes_sent) {
-  const auto count = static_cast<std::size_t>(process_count()), self = static_cast<std::size_t>(process_rank());
-  std::vector<std::vector<GlobalLogMetric<D>>> told(count);
+  std::vector<std::vector<GlobalLogMetric<D>>> told(static_cast<std::size_t>(process_count()));
   for (std::size_t v = 0; v < before.global_ids.size(); ++v)
-    told[meeting_process_of(before.global_ids[v])].push_back({before.global_ids[v], log_metrics[v]});
+    told[static_cast<std::size_t>(meeting_process_of(before.global_ids[v]))].push_back({before.global_ids[v], log_metrics[v]});
+  for (std::size_t p = 0; p < told.size(); ++p)
+    if (p != static_cast<std::size_t>(process_rank())) bytes_sent += static_cast<long long>(told[p].size() * sizeof(GlobalLogMetric<D>));
   std::unordered_map<Index, SymMat<D>> known;
   for (const std::vector<GlobalLogMetric<D>>& from : exchange_values(told))
     for (const GlobalLogMetric<D>& each : from) known.emplace(each.id, each.log_metric);
-  std::vector<std::vector<Index>> asked(count);
-  for (Index id : after.global_ids) asked[meeting_process_of(id)].push_back(id);
-  const std::vector<std::vector<Index>> arrived = exchange_values(asked);
-  std::vector<std::vector<SymMat<D>>> answers(count);
-  for (std::size_t p = 0; p < count; ++p) {
-    for (Index id : arrived[p]) answers[p].push_back(known.at(id));
-    if (p != self)
-      bytes_sent += static_cast<long long>(told[p].size() * sizeof(GlobalLogMetric<D>) + asked[p].size() * sizeof(Index) +
-                                           answers[p].size() * sizeof(SymMat<D>));
-  }
-  const std::vector<std::vector<SymMat<D>>> replies = exchange_values(answers);
-  std::vector<std::size_t> next(count, 0);
-  std::vector<SymMat<D>> out;
-  out.reserve(after.global_ids.size());
-  for (Index id : after.global_ids) {
-    const std::size_t p = meeting_process_of(id);
-    out.push_back(replies[p].at(next[p]++));
-  }
-  return out;
+  return values_asked_of<SymMat<D>>(
+      after.global_ids, meeting_process_of, [&](Index id) { return known.at(id); }, bytes_sent);
 }
 
 // One part's passes in the field of its vertices' log-metrics, its global ids following its
@@ -82,16 +67,6 @@ CurvedAdaptationRun passes_on_part(MeshPart<D>& part, std::vector<SymMat<D>>& lo
     hint = sample.where.element;
   }
   return run;
-}
-
-void add_counts(CurvedOperationCount& sum, const CurvedOperationCount& count) {
-  sum.done += count.done;
-  sum.boundary_done += count.boundary_done;
-  sum.on_boundary += count.on_boundary;
-  sum.too_long += count.too_long;
-  sum.no_gain += count.no_gain;
-  sum.flat += count.flat;
-  sum.refused += count.refused;
 }
 
 // What a part's run says besides its passes.
@@ -118,8 +93,7 @@ int append_combined(CurvedAdaptationRun& total, const CurvedAdaptationRun& own) 
       sum.vertices += pass.vertices;
       sum.elements += pass.elements;
       if (i >= each.size()) continue;
-      for (auto kind : {&CurvedPass::collapses, &CurvedPass::splits, &CurvedPass::swaps, &CurvedPass::moves})
-        add_counts(sum.*kind, pass.*kind);
+      for (auto kind : {&CurvedPass::collapses, &CurvedPass::splits, &CurvedPass::swaps, &CurvedPass::moves}) sum.*kind += pass.*kind;
       sum.seconds = std::max(sum.seconds, pass.seconds);
     }
   double slowest = 0;

@@ -277,13 +277,19 @@ struct PartsRun {
     out.curved = all;
   }
 
-  // The field the figures are measured in: the part's with a ring of its neighbours' elements, so
-  // that what lies just past the part's border is sampled as in the whole mesh's field.
-  void measure_with_neighbours() {
+  // The log-metric of each of the part's vertices, from the field on the part.
+  std::vector<SymMat<D>> vertex_log_metrics() const {
     std::vector<SymMat<D>> log_metrics;
     for (Index v = 0; v < part.mesh.vertex_count(); ++v) log_metrics.push_back(field->vertex_log_metric(v));
+    return log_metrics;
+  }
+
+  // The field the figures are measured in: the part's with a ring of its neighbours' elements, so
+  // that what lies just past the part's border is sampled as in the whole mesh's field (its bytes
+  // counted in the band's round).
+  void widen_field_to_neighbours() {
     long long bytes = 0;
-    field.emplace(field_with_neighbours(part, log_metrics, bytes));
+    field.emplace(field_with_neighbours(part, vertex_log_metrics(), bytes));
     out.rounds[1].bytes_sent += sum_over_processes(bytes);
   }
 
@@ -291,8 +297,7 @@ struct PartsRun {
   // longer the part's, and the field is remade on the part they leave. (The band and the curving's
   // field are let go first: the passes hold copies of the part.)
   void adapt_curved_parts(const CurvedPassesSettings& settings) {
-    std::vector<SymMat<D>> log_metrics;
-    for (Index v = 0; v < part.mesh.vertex_count(); ++v) log_metrics.push_back(field->vertex_log_metric(v));
+    std::vector<SymMat<D>> log_metrics = vertex_log_metrics();
     band_elements.clear();
     band.reset();
     band_field.reset();
@@ -330,7 +335,7 @@ CurvingInParts curve_in_parts(MeshPart<D>& part, std::vector<SymMat<D>> metrics,
   run.out.report = curving_run_report<D>(max_over_processes(anisotropy), 0, result, static_cast<Index>(total.proposals_left));
   run.out.report.boundary_completion = total.completion;
   run.out.report.threads = options.threads;
-  run.measure_with_neighbours();
+  run.widen_field_to_neighbours();
   run.measure(held_below);
   if (measure_curved) run.measure_curved_output(held_below);
   return std::move(run.out);

@@ -21,7 +21,7 @@ struct DistributedCurvingRound {
   // too (not reinserted).
   Index old_interface_vertices_frozen_again = 0;
   long long cavities = 0;    // prepared, summed over the parts
-  long long bytes_sent = 0;  // the boundary and the band sent, the band's nodes broadcast
+  long long bytes_sent = 0;  // the boundary and the band sent, the band's nodes broadcast; then the rings measured with
   double seconds = 0;
 };
 

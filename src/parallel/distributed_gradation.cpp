@@ -4,6 +4,7 @@
 
 #include "adapt/hausdorff_metric.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/face_key.hpp"
 
 namespace hocav {
 namespace {
@@ -14,9 +15,6 @@ struct VertexCopy {
   Index id;
   SymMat<D> metric;
 };
-
-// The process where the copies of the vertex with global id `id` meet.
-int vertex_meeting_process(Index id) { return static_cast<int>(id % process_count()); }
 
 // At a meeting process: per sender, the intersection of every copy of each vertex it sent, the
 // copies taken in rank order.
@@ -39,13 +37,13 @@ bool meet_interface_copies(const MeshPart<D>& piece, const std::vector<Index>& s
   std::vector<std::vector<VertexCopy<D>>> outgoing(static_cast<std::size_t>(process_count()));
   for (Index v : shared) {
     const Index id = piece.global_ids[v];
-    outgoing[static_cast<std::size_t>(vertex_meeting_process(id))].push_back({id, metrics[v]});
+    outgoing[static_cast<std::size_t>(vertex_meeting_process(id, process_count()))].push_back({id, metrics[v]});
   }
   const std::vector<std::vector<SymMat<D>>> answers = exchange_values(met_copies(exchange_values(outgoing)));
   std::vector<std::size_t> next(answers.size(), 0);
   bool changed = false;
   for (Index v : shared) {
-    const auto meeting = static_cast<std::size_t>(vertex_meeting_process(piece.global_ids[v]));
+    const auto meeting = static_cast<std::size_t>(vertex_meeting_process(piece.global_ids[v], process_count()));
     const SymMat<D>& met = answers[meeting][next[meeting]++];
     changed |= met != metrics[v];
     metrics[v] = met;

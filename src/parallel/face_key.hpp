@@ -28,6 +28,9 @@ int meeting_process(const FaceKey<D>& key, int process_count) {
   return static_cast<int>(FaceKeyHash<D>{}(key) % static_cast<std::size_t>(process_count));
 }
 
+// The process where the copies of the vertex with global id `id` meet, of `process_count`.
+inline int vertex_meeting_process(Index id, int process_count) { return static_cast<int>(id % process_count); }
+
 template <int D>
 FaceKey<D> sorted_key(FaceKey<D> key) {
   std::sort(key.begin(), key.end());

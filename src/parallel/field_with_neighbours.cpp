@@ -5,6 +5,7 @@
 
 #include "parallel/byte_stream.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/face_key.hpp"
 
 namespace hocav {
 namespace {
@@ -22,7 +23,8 @@ std::unordered_map<Index, std::vector<int>> other_holders(const MeshPart<D>& par
   const std::vector<char> on_interface = interface_vertex_flags(part.mesh);
   std::vector<std::vector<Index>> told(count);
   for (Index v = 0; v < part.mesh.vertex_count(); ++v)
-    if (on_interface[v]) told[static_cast<std::size_t>(part.global_ids[v]) % count].push_back(part.global_ids[v]);
+    if (on_interface[v])
+      told[static_cast<std::size_t>(vertex_meeting_process(part.global_ids[v], process_count()))].push_back(part.global_ids[v]);
   const std::vector<std::vector<Index>> arrived = exchange_values(told);
   std::unordered_map<Index, std::vector<int>> holders;
   for (std::size_t r = 0; r < count; ++r)

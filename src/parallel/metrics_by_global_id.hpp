@@ -27,23 +27,22 @@ class HeldRuns {
   std::vector<Run> starts_;  // the non-empty runs, in order of first
 };
 
-// Collective. This process holds the values of ids [held_first, held_first + held.size()); returns
-// the value of each of `ids`, each asked of the process whose run holds it (throws Error for an id
-// that no run holds). `bytes_sent` grows by what this process sent to others.
-template <typename T>
-std::vector<T> values_by_global_id(std::span<const Index> ids, Index held_first, const std::vector<T>& held, long long& bytes_sent) {
-  const HeldRuns runs(held_first, static_cast<Index>(held.size()));
+// Collective: the value of each of `ids`, asked of the process `holder(id)` names, which answers
+// `answer(id)` (per process, in the order asked). `bytes_sent` grows by what this process sent to
+// others.
+template <typename T, typename Holder, typename Answer>
+std::vector<T> values_asked_of(std::span<const Index> ids, const Holder& holder, const Answer& answer, long long& bytes_sent) {
   const auto count = static_cast<std::size_t>(process_count()), self = static_cast<std::size_t>(process_rank());
   std::vector<std::vector<Index>> asked(count);
   std::vector<int> holder_of(ids.size());
   for (std::size_t i = 0; i < ids.size(); ++i) {
-    holder_of[i] = runs.holder(ids[i]);
+    holder_of[i] = holder(ids[i]);
     asked[static_cast<std::size_t>(holder_of[i])].push_back(ids[i]);
   }
   const std::vector<std::vector<Index>> arrived = exchange_values(asked);
   std::vector<std::vector<T>> answers(count);
   for (std::size_t p = 0; p < count; ++p) {
-    for (Index id : arrived[p]) answers[p].push_back(held.at(static_cast<std::size_t>(id - held_first)));
+    for (Index id : arrived[p]) answers[p].push_back(answer(id));
     if (p != self) bytes_sent += static_cast<long long>(asked[p].size() * sizeof(Index) + answers[p].size() * sizeof(T));
   }
   const std::vector<std::vector<T>> replies = exchange_values(answers);
@@ -52,6 +51,17 @@ std::vector<T> values_by_global_id(std::span<const Index> ids, Index held_first,
   values.reserve(ids.size());
   for (int p : holder_of) values.push_back(replies[static_cast<std::size_t>(p)][next[static_cast<std::size_t>(p)]++]);
   return values;
+}
+
+// Collective. This process holds the values of ids [held_first, held_first + held.size()); returns
+// the value of each of `ids`, each asked of the process whose run holds it (throws Error for an id
+// that no run holds). `bytes_sent` grows by what this process sent to others.
+template <typename T>
+std::vector<T> values_by_global_id(std::span<const Index> ids, Index held_first, const std::vector<T>& held, long long& bytes_sent) {
+  const HeldRuns runs(held_first, static_cast<Index>(held.size()));
+  return values_asked_of<T>(
+      ids, [&](Index id) { return runs.holder(id); }, [&](Index id) { return held.at(static_cast<std::size_t>(id - held_first)); },
+      bytes_sent);
 }
 
 // The same for metrics.
