@@ -29,15 +29,15 @@ struct GlobalLogMetric {
 
 int meeting_process_of(Index id) { return vertex_meeting_process(id, process_count()); }
 
-// Collective: per vertex of `after`, the log-metric a process gave its global id in `before`
-// (`log_metrics`, per vertex of `before`), the lowest rank's where several hold it: the holders tell
-// it where the id hashes to, and the new holders ask there. Adds the bytes sent to others.
+// Collective: per vertex of `after`, the log-metric a process gave its global id before (`log_metrics`,
+// per id of `before_ids`), the lowest rank's where several hold it: the holders tell it where the id
+// hashes to, and the new holders ask there. Adds the bytes sent to others.
 template <int D>
-std::vector<SymMat<D>> log_metrics_by_global_id(const MeshPart<D>& before, const std::vector<SymMat<D>>& log_metrics,
+std::vector<SymMat<D>> log_metrics_by_global_id(const std::vector<Index>& before_ids, const std::vector<SymMat<D>>& log_metrics,
                                                 const MeshPart<D>& after, long long& bytes_sent) {
   std::vector<std::vector<GlobalLogMetric<D>>> told(static_cast<std::size_t>(process_count()));
-  for (std::size_t v = 0; v < before.global_ids.size(); ++v)
-    told[static_cast<std::size_t>(meeting_process_of(before.global_ids[v]))].push_back({before.global_ids[v], log_metrics[v]});
+  for (std::size_t v = 0; v < before_ids.size(); ++v)
+    told[static_cast<std::size_t>(meeting_process_of(before_ids[v]))].push_back({before_ids[v], log_metrics[v]});
   for (std::size_t p = 0; p < told.size(); ++p)
     if (p != static_cast<std::size_t>(process_rank())) bytes_sent += static_cast<long long>(told[p].size() * sizeof(GlobalLogMetric<D>));
   std::unordered_map<Index, SymMat<D>> known;
@@ -126,9 +126,9 @@ struct PassRounds {
     for (int to : destination) moved += to != process_rank();
     round.moved_elements = sum_over_processes(moved);
     long long bytes_sent = 0;
-    MeshPart<D> next = migrate_part(part, destination, &bytes_sent);
-    log_metrics = log_metrics_by_global_id(part, log_metrics, next, bytes_sent);
-    part = std::move(next);
+    const std::vector<Index> before_ids = part.global_ids;
+    part = migrate_part(std::move(part), destination, &bytes_sent);
+    log_metrics = log_metrics_by_global_id(before_ids, log_metrics, part, bytes_sent);
     round.bytes_sent = sum_over_processes(bytes_sent);
   }
 

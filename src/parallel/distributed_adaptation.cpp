@@ -77,7 +77,7 @@ template <int D>
 void partition_first(MeshPart<D>& part, std::span<const double> loads, std::int64_t partition_seed, DistributedIteration& figures) {
   const auto start = std::chrono::steady_clock::now();
   long long bytes_sent = 0;
-  part = repartition(part, loads, {}, partition_seed, &bytes_sent);
+  part = repartition(std::move(part), loads, {}, partition_seed, &bytes_sent);
   figures.bytes_sent += sum_over_processes(bytes_sent);
   figures.seconds_partition += seconds_since(start);
   figures.seconds += seconds_since(start);
@@ -220,7 +220,7 @@ std::pair<AdaptationRun, RootSeeds> last_runs_in_parts(MeshPart<D>& part, const 
   figures.region_elements = sum_over_processes(cut.region_elements);
   const std::vector<Index> seed_ids = exchange_values_joined(cut.seeds_to);
   long long bytes_sent = 0;
-  part = migrate_part(part, cut.destination, &bytes_sent);
+  part = migrate_part(std::move(part), cut.destination, &bytes_sent);
   figures.bytes_sent += sum_over_processes(bytes_sent);
   const std::unique_ptr<ShareMetric<D>> near = gathered_metric(home, iterations.recipe, iterations.whole_metric ? Mesh<D>{} : part.mesh,
                                                                figures);
@@ -256,7 +256,7 @@ AdaptationRun last_runs_on_root(MeshPart<D>& part, const RootSeeds& seeds, const
   // (Without a region, rank 0's part had its last runs in the parts' already.)
   const bool runs = root && figures.region_elements > 0;
   long long bytes_sent = 0;
-  part = migrate_part(part, destination, &bytes_sent);
+  part = migrate_part(std::move(part), destination, &bytes_sent);
   std::unique_ptr<ShareMetric<D>> region_metric;  // rank 0's, in a run from pieces
   if (iterations.shares_only) region_metric = gathered_metric(home, iterations.recipe, runs ? part.mesh : Mesh<D>{}, figures);
   AdaptationRun run;

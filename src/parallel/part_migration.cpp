@@ -26,12 +26,44 @@ void check_part(const MeshPart<D>& part, std::span<const int> destination) {
     if (to < 0 || to >= process_count()) throw Error("migrating a part: process " + std::to_string(to) + " does not exist");
 }
 
-// The shipment of this process's part to every process, as bytes.
+// What a process ships: the shipment of the elements it keeps as it is, the others' as bytes (its
+// own slot empty): its kept elements are never serialized.
 template <int D>
-std::vector<std::vector<std::byte>> packed_shipments(const MeshPart<D>& part, std::span<const int> destination) {
-  std::vector<std::vector<std::byte>> out;
-  pack_shipments<D>(part, destination, process_count(), [&](int, const Shipment<D>& shipment) { out.push_back(shipment.bytes()); });
+struct Outgoing {
+  Shipment<D> own;
+  std::vector<std::vector<std::byte>> bytes;
+};
+
+template <int D>
+Outgoing<D> packed_shipments(const MeshPart<D>& part, std::span<const int> destination, long long* bytes_sent) {
+  Outgoing<D> out{{}, std::vector<std::vector<std::byte>>(static_cast<std::size_t>(process_count()))};
+  pack_shipments<D>(part, destination, process_count(), [&](int to, Shipment<D> shipment) {
+    if (to == process_rank()) {
+      out.own = std::move(shipment);
+      return;
+    }
+    out.bytes[static_cast<std::size_t>(to)] = shipment.bytes();
+    if (bytes_sent) *bytes_sent += static_cast<long long>(out.bytes[static_cast<std::size_t>(to)].size());
+  });
   return out;
+}
+
+// `outgoing` sent; the new part built from what arrives, in rank order. Each buffer is let go as soon
+// as it is read, so that at most one copy of the part's elements is held besides the part built.
+template <int D>
+MeshPart<D> part_of_outgoing(Outgoing<D> outgoing) {
+  std::vector<std::vector<std::byte>> incoming = exchange_bytes(outgoing.bytes);
+  outgoing.bytes = {};
+  std::vector<Shipment<D>> arrived(incoming.size());
+  for (std::size_t from = 0; from < incoming.size(); ++from) {
+    if (static_cast<int>(from) == process_rank()) {
+      arrived[from] = std::move(outgoing.own);
+      continue;
+    }
+    arrived[from] = Shipment<D>::read(incoming[from]);
+    incoming[from] = {};
+  }
+  return part_of_shipments(arrived);
 }
 
 }  // namespace
@@ -39,13 +71,15 @@ std::vector<std::vector<std::byte>> packed_shipments(const MeshPart<D>& part, st
 template <int D>
 MeshPart<D> migrate_part(const MeshPart<D>& part, std::span<const int> destination, long long* bytes_sent) {
   check_part(part, destination);
-  const std::vector<std::vector<std::byte>> outgoing = packed_shipments(part, destination);
-  if (bytes_sent)
-    for (std::size_t to = 0; to < outgoing.size(); ++to)
-      if (static_cast<int>(to) != process_rank()) *bytes_sent += static_cast<long long>(outgoing[to].size());
-  std::vector<Shipment<D>> arrived;
-  for (const std::vector<std::byte>& bytes : exchange_bytes(outgoing)) arrived.push_back(Shipment<D>::read(bytes));
-  return part_of_shipments(arrived);
+  return part_of_outgoing(packed_shipments(part, destination, bytes_sent));
+}
+
+template <int D>
+MeshPart<D> migrate_part(MeshPart<D>&& part, std::span<const int> destination, long long* bytes_sent) {
+  check_part(part, destination);
+  Outgoing<D> outgoing = packed_shipments(part, destination, bytes_sent);
+  part = {};  // (let go before the new part is built)
+  return part_of_outgoing(std::move(outgoing));
 }
 
 namespace {
@@ -85,16 +119,18 @@ template std::vector<Index> migrated_facet_values(const MeshPart<2>&, std::span<
 template std::vector<Index> migrated_facet_values(const MeshPart<3>&, std::span<const Index>, std::span<const int>, long long*);
 
 template <int D>
-MeshPart<D> repartition(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> kept_inside,
-                        std::int64_t partition_seed, long long* bytes_sent) {
+MeshPart<D> repartition(MeshPart<D>&& part, std::span<const double> loads, std::span<const char> kept_inside, std::int64_t partition_seed,
+                        long long* bytes_sent) {
   // (The graph is a temporary: freed before the migration, which holds the old part and the new.)
   const std::vector<int> destination = partition_distributed_part(part, loads, kept_inside, partition_seed);
-  return migrate_part(part, destination, bytes_sent);
+  return migrate_part(std::move(part), destination, bytes_sent);
 }
 
-template MeshPart<2> repartition(const MeshPart<2>&, std::span<const double>, std::span<const char>, std::int64_t, long long*);
-template MeshPart<3> repartition(const MeshPart<3>&, std::span<const double>, std::span<const char>, std::int64_t, long long*);
+template MeshPart<2> repartition(MeshPart<2>&&, std::span<const double>, std::span<const char>, std::int64_t, long long*);
+template MeshPart<3> repartition(MeshPart<3>&&, std::span<const double>, std::span<const char>, std::int64_t, long long*);
 template MeshPart<2> migrate_part(const MeshPart<2>&, std::span<const int>, long long*);
 template MeshPart<3> migrate_part(const MeshPart<3>&, std::span<const int>, long long*);
+template MeshPart<2> migrate_part(MeshPart<2>&&, std::span<const int>, long long*);
+template MeshPart<3> migrate_part(MeshPart<3>&&, std::span<const int>, long long*);
 
 }  // namespace hocav

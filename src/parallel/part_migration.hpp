@@ -26,6 +26,11 @@ namespace hocav {
 template <int D>
 MeshPart<D> migrate_part(const MeshPart<D>& part, std::span<const int> destination, long long* bytes_sent = nullptr);
 
+// The same, letting `part` go (left empty) once its shipments are packed, before the new part is
+// built: a process then holds its elements twice at most, not three times.
+template <int D>
+MeshPart<D> migrate_part(MeshPart<D>&& part, std::span<const int> destination, long long* bytes_sent = nullptr);
+
 // Every process at once, with the `destination` of a migrate_part call: per element of the part that
 // migration makes, in its order, the value `values` gives the element here (per element of `part`),
 // such as its place in an input's element order. Adds the bytes it sends other processes to
@@ -42,9 +47,9 @@ std::vector<Index> migrated_facet_values(const MeshPart<D>& part, std::span<cons
 
 // Every process at once: the parts cut again by PT-Scotch (the distributed graph of the parts, weighed
 // by `loads` per element and heavy across faces near the `kept_inside` vertices, which may be empty:
-// distributed_element_graph) and the elements migrated to the new parts.
+// distributed_element_graph) and the elements migrated to the new parts (`part` let go once packed).
 template <int D>
-MeshPart<D> repartition(const MeshPart<D>& part, std::span<const double> loads, std::span<const char> kept_inside,
-                        std::int64_t partition_seed, long long* bytes_sent = nullptr);
+MeshPart<D> repartition(MeshPart<D>&& part, std::span<const double> loads, std::span<const char> kept_inside, std::int64_t partition_seed,
+                        long long* bytes_sent = nullptr);
 
 }  // namespace hocav

@@ -17,14 +17,15 @@ struct Packer {
   std::vector<char> interface_face;                     // per element face: an interface facet lies on it
   std::vector<std::pair<Index, Index>> element_facets;  // (element, facet) of the mesh's facets, sorted
   std::unordered_map<std::uint64_t, Index> line_of_edge;
-  std::vector<int> vertex_stamp, line_stamp;  // the last destination that took each
+  std::vector<int> vertex_stamp, line_stamp, edge_stamp;  // the last destination that took each
 
   explicit Packer(const MeshPart<D>& p)
       : part(p),
         tags(p.mesh),
         interface_face(static_cast<std::size_t>(p.mesh.element_count()) * (D + 1), 0),
         vertex_stamp(static_cast<std::size_t>(p.mesh.vertex_count()), -1),
-        line_stamp(static_cast<std::size_t>(p.mesh.line_count()), -1) {
+        line_stamp(static_cast<std::size_t>(p.mesh.line_count()), -1),
+        edge_stamp(p.mesh.is_p2() ? static_cast<std::size_t>(p.mesh.edge_count()) : 0, -1) {
     const Mesh<D>& mesh = part.mesh;
     element_facets = facets_by_element(mesh);
     for (Index f = 0; f < mesh.facet_count(); ++f)
@@ -59,10 +60,19 @@ struct Packer {
             static_cast<char>((tags.required_facet[f] ? kShippedRequired : 0) | (tags.ridge_facet[f] ? kShippedRidge : 0)));
       }
       if constexpr (D == 3) add_lines(s, to, k);
-      if (mesh.is_p2())
-        for (int e = 0; e < Simplex<D>::kEdges; ++e) s.nodes.push_back(mesh.edge_node(mesh.element_edge(k, e)));
+      if (mesh.is_p2()) add_nodes(s, to, k);
     }
     return s;
+  }
+
+  // Element k's edge nodes that the shipment to `to` lacks (an edge's node once per shipment).
+  void add_nodes(Shipment<D>& s, int to, Index k) {
+    for (int e = 0; e < Simplex<D>::kEdges; ++e) {
+      const Index edge = part.mesh.element_edge(k, e);
+      if (edge_stamp[edge] == to) continue;
+      edge_stamp[edge] = to;
+      s.nodes.push_back(part.mesh.edge_node(edge));
+    }
   }
 
   void add_vertex(Shipment<D>& s, int to, Index v) {
@@ -178,12 +188,21 @@ struct Unpacker {
     const bool p2 = std::any_of(arrived.begin(), arrived.end(), [](const Shipment<D>& s) { return !s.nodes.empty(); });
     if (!p2) return;
     part.mesh.make_p2();
+    std::vector<std::size_t> stamp(static_cast<std::size_t>(part.mesh.edge_count()), arrived.size());  // the last shipment that gave each
     Index k = 0;
-    for (const Shipment<D>& s : arrived) {
+    for (std::size_t from = 0; from < arrived.size(); ++from) {
+      const Shipment<D>& s = arrived[from];
       if (s.nodes.empty() && !s.elements.empty()) throw Error("migrating parts: P1 and P2 elements arrive together");
+      std::size_t next = 0;  // the shipment's nodes in the order its elements first reach their edges (Packer::add_nodes)
       for (std::size_t i = 0; i < s.elements.size(); ++i, ++k)
-        for (int e = 0; e < Simplex<D>::kEdges; ++e)
-          part.mesh.edge_node(part.mesh.element_edge(k, e)) = s.nodes[i * Simplex<D>::kEdges + static_cast<std::size_t>(e)];
+        for (int e = 0; e < Simplex<D>::kEdges; ++e) {
+          const Index edge = part.mesh.element_edge(k, e);
+          if (stamp[edge] == from) continue;
+          stamp[edge] = from;
+          if (next == s.nodes.size()) throw Error("a migration message has fewer nodes than its elements have edges");
+          part.mesh.edge_node(edge) = s.nodes[next++];
+        }
+      if (next != s.nodes.size()) throw Error("a migration message has more nodes than its elements have edges");
     }
   }
 };
@@ -209,7 +228,7 @@ std::vector<std::pair<Index, Index>> facets_by_element(const Mesh<D>& mesh) {
 
 template <int D>
 void pack_shipments(const MeshPart<D>& part, std::span<const int> destination, int destinations,
-                    const std::function<void(int, const Shipment<D>&)>& take) {
+                    const std::function<void(int, Shipment<D>)>& take) {
   std::vector<std::vector<Index>> leaving(static_cast<std::size_t>(destinations));
   for (std::size_t k = 0; k < destination.size(); ++k) leaving[static_cast<std::size_t>(destination[k])].push_back(static_cast<Index>(k));
   Packer<D> packer(part);
@@ -229,8 +248,8 @@ MeshPart<D> part_of_shipments(const std::vector<Shipment<D>>& arrived) {
 
 template std::vector<std::pair<Index, Index>> facets_by_element(const Mesh<2>&);
 template std::vector<std::pair<Index, Index>> facets_by_element(const Mesh<3>&);
-template void pack_shipments(const MeshPart<2>&, std::span<const int>, int, const std::function<void(int, const Shipment<2>&)>&);
-template void pack_shipments(const MeshPart<3>&, std::span<const int>, int, const std::function<void(int, const Shipment<3>&)>&);
+template void pack_shipments(const MeshPart<2>&, std::span<const int>, int, const std::function<void(int, Shipment<2>)>&);
+template void pack_shipments(const MeshPart<3>&, std::span<const int>, int, const std::function<void(int, Shipment<3>)>&);
 template Shipment<2> shipment_of(const MeshPart<2>&, std::span<const Index>);
 template Shipment<3> shipment_of(const MeshPart<3>&, std::span<const Index>);
 template MeshPart<2> part_of_shipments(const std::vector<Shipment<2>>&);

@@ -21,7 +21,7 @@ constexpr char kShippedRequired = 1, kShippedRidge = 2;
 
 // What one process sends another (or reads for itself): its elements by global vertex ids, with per element the faces that
 // have a neighbour in the whole mesh (a bit per face), the vertices they use, the mesh's facets and
-// lines on them, and their P2 nodes (per element, per edge).
+// lines on them, and their P2 nodes (each edge's once, in the order the elements first reach it).
 template <int D>
 struct Shipment {
   std::vector<Index> vertex_ids;
@@ -60,8 +60,7 @@ struct Shipment {
     const std::size_t n = s.vertex_ids.size(), k = s.elements.size();
     if (!in.at_end() || s.points.size() != n || s.vertex_refs.size() != n || s.vertex_flags.size() != n || s.element_refs.size() != k ||
         s.inner_faces.size() != k || s.facet_refs.size() != s.facets.size() || s.facet_flags.size() != s.facets.size() ||
-        s.line_refs.size() != s.lines.size() || s.line_flags.size() != s.lines.size() ||
-        (!s.nodes.empty() && s.nodes.size() != k * Simplex<D>::kEdges))
+        s.line_refs.size() != s.lines.size() || s.line_flags.size() != s.lines.size() || s.nodes.size() > k * Simplex<D>::kEdges)
       throw Error("a migration message has arrays of different lengths");
     return s;
   }
@@ -78,7 +77,7 @@ std::vector<std::pair<Index, Index>> facets_by_element(const Mesh<D>& mesh);
 // destination order, one at a time (an empty one for a destination no element goes to).
 template <int D>
 void pack_shipments(const MeshPart<D>& part, std::span<const int> destination, int destinations,
-                    const std::function<void(int, const Shipment<D>&)>& take);
+                    const std::function<void(int, Shipment<D>)>& take);
 
 // The shipment of `elements` of `part` (with its topology, global ids and pinned flags), as
 // pack_shipments makes one: the part itself is left as it is (a copy of some of its elements).

@@ -91,7 +91,7 @@ PeerIterationResult run_peer_iteration(MeshPart<D>& part, Index& next_global_id,
   figures.unsettled_vertices = distinct_count(global_ids_of(part, unsettled));
   long long bytes_sent = 0;
   if (iteration.next_metric)
-    part = repartition(part, expected_element_counts(part.mesh, *iteration.next_metric),
+    part = repartition(std::move(part), expected_element_counts(part.mesh, *iteration.next_metric),
                        zone_to_keep_inside(part.mesh, std::move(unsettled)), iteration.partition_seed, &bytes_sent);
   figures.bytes_sent += sum_over_processes(bytes_sent);
   figures.seconds_partition += seconds_since(moving);

@@ -29,7 +29,7 @@ ScatteredPart<D> parts_of_pieces(MeshFilePiece<D> piece, const std::string& metr
   out.element_ids = migrated_element_values(element_ids, part_of, &out.bytes_sent);
   out.facet_ids = migrated_facet_values(piece.part, piece.facet_ids, part_of, &out.bytes_sent);
   const std::vector<KnownLine> known = known_lines(piece.part, piece.line_ids);
-  out.part = migrate_part(piece.part, part_of, &out.bytes_sent);
+  out.part = migrate_part(std::move(piece.part), part_of, &out.bytes_sent);
   piece = {};
   out.line_ids = line_ids_by_ends(out.part, known);
   out.metrics = metrics_by_global_id<D>(out.part.global_ids, held_first, held, out.bytes_sent);

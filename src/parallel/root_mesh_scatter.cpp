@@ -22,14 +22,14 @@ ScatteredPart<D> scatter_from_root(Mesh<D> mesh, std::vector<SymMat<D>> metrics,
   std::iota(element_ids.begin(), element_ids.end(), Index{0});
   out.element_ids = migrated_element_values(element_ids, part_of, &out.bytes_sent);
   {  // (rank 0's whole mesh freed once its elements have left)
-    const MeshPart<D> whole = process_rank() == 0 ? whole_mesh_part(std::move(mesh)) : MeshPart<D>{};
+    MeshPart<D> whole = process_rank() == 0 ? whole_mesh_part(std::move(mesh)) : MeshPart<D>{};
     std::vector<Index> facet_ids(static_cast<std::size_t>(whole.mesh.facet_count()));
     std::iota(facet_ids.begin(), facet_ids.end(), Index{0});
     out.facet_ids = migrated_facet_values(whole, facet_ids, part_of, &out.bytes_sent);
     std::vector<Index> line_ids(static_cast<std::size_t>(whole.mesh.line_count()));
     std::iota(line_ids.begin(), line_ids.end(), Index{0});
     const std::vector<KnownLine> known = known_lines(whole, line_ids);
-    out.part = migrate_part(whole, part_of, &out.bytes_sent);
+    out.part = migrate_part(std::move(whole), part_of, &out.bytes_sent);
     out.line_ids = line_ids_by_ends(out.part, known);
   }
   out.metrics = metrics_by_global_id<D>(out.part.global_ids, 0, metrics, out.bytes_sent);

@@ -65,7 +65,7 @@ Mesh<3> gathered(std::vector<MeshPart<3>> parts) {
   for (MeshPart<3>& part : parts) {
     part.mesh.build_topology();
     const std::vector<int> to_one(static_cast<std::size_t>(part.mesh.element_count()), 0);
-    pack_shipments<3>(part, to_one, 1, [&](int, const Shipment<3>& shipment) { shipments.push_back(shipment); });
+    pack_shipments<3>(part, to_one, 1, [&](int, Shipment<3> shipment) { shipments.push_back(std::move(shipment)); });
   }
   return whole_mesh_of(part_of_shipments(shipments));
 }
@@ -215,6 +215,24 @@ TEST(MeshParts, P2NodesGoThroughSplitMessagesAndGathering) {
     const auto [a, b] = whole.edge_vertices(e);
     EXPECT_EQ(whole.edge_node(e), mesh.edge_node(mesh.find_edge(a, b))) << a << ' ' << b;
   }
+}
+
+// A shipment carries each edge's node once (all a part's edges when all its elements go), and a
+// shipment whose nodes do not match its elements' edges is refused: one missing or one too many.
+TEST(MeshParts, AShipmentCarriesEachEdgeNodeOnce) {
+  SlicedCube cube(2);
+  MeshPart<3> part = split_mesh(curved_cube(cube), cube.part_of, 2).front();
+  part.mesh.build_topology();
+  std::vector<Shipment<3>> shipments;
+  const std::vector<int> to_one(static_cast<std::size_t>(part.mesh.element_count()), 0);
+  pack_shipments<3>(part, to_one, 1, [&](int, Shipment<3> shipment) { shipments.push_back(std::move(shipment)); });
+  ASSERT_EQ(shipments.front().nodes.size(), static_cast<std::size_t>(part.mesh.edge_count()));
+  EXPECT_NO_THROW(part_of_shipments(shipments));
+  std::vector<Shipment<3>> fewer = shipments, more = shipments;
+  fewer.front().nodes.pop_back();
+  more.front().nodes.push_back(more.front().nodes.front());
+  EXPECT_THROW(part_of_shipments(fewer), Error);
+  EXPECT_THROW(part_of_shipments(more), Error);
 }
 
 // Parts of the middle slab and of the last, the first slab in no part; each part moves the nodes of

@@ -54,7 +54,7 @@ bool run_root(int count) {
     part.mesh.build_topology();
     part.pinned.assign(part.global_ids.size(), 0);  // (a message carries none; the cube has no required vertex)
     const std::vector<int> to_root(static_cast<std::size_t>(part.mesh.element_count()), 0);
-    pack_shipments<3>(part, to_root, 1, [&](int, const Shipment<3>& shipment) { shipments.push_back(shipment); });
+    pack_shipments<3>(part, to_root, 1, [&](int, Shipment<3> shipment) { shipments.push_back(std::move(shipment)); });
   }
   const Mesh<3> merged = whole_mesh_of(part_of_shipments(shipments));
   const bool same = merged.vertex_count() == cube.vertex_count() && merged.element_count() == cube.element_count() &&
