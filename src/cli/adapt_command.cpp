@@ -266,7 +266,8 @@ void print_curved_pass_rounds(const CurvedPassesInParts& passes) {
 void finish_in_parts(AdaptationReport& report, const OutputInParts& output, bool has_geometry, std::chrono::steady_clock::time_point start,
                      const AdaptOptions& o, OutputSet& outputs) {
   if (!o.quiet && output.curving) {
-    for (const DistributedCurvingRound& round : output.curving->rounds) print_curving_round(round);
+    for (const DistributedCurvingRound& round : output.curving->rounds)
+      if (round.round > 0) print_curving_round(round);
     if (output.curving->passes) print_curved_pass_rounds(*output.curving->passes);
   }
   if (!o.quiet) {

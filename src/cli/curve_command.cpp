@@ -140,7 +140,8 @@ void curve_on_rank_0_of_parts(bool pieces, Mesh<D> mesh, std::vector<SymMat<D>> 
   broadcast_values(plan);
   const CurvingInParts curving = curve_in_parts_from(pieces, std::move(mesh), std::move(metrics), options);
   if (!options.quiet)
-    for (const DistributedCurvingRound& round : curving.rounds) print_curving_round(round);
+    for (const DistributedCurvingRound& round : curving.rounds)
+      if (round.round > 0) print_curving_round(round);
   finish_outputs(options, curving.report, outputs);
 }
 

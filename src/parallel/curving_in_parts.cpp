@@ -13,9 +13,11 @@
 #include "parallel/boundary_of_parts.hpp"
 #include "parallel/byte_stream.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/distinct_ids.hpp"
 #include "parallel/element_partition.hpp"
 #include "parallel/face_key.hpp"
 #include "parallel/field_with_neighbours.hpp"
+#include "parallel/last_run_region.hpp"
 #include "parallel/part_curving.hpp"
 #include "parallel/part_measures.hpp"
 #include "parallel/part_shipment.hpp"
@@ -25,6 +27,8 @@ namespace hocav {
 namespace {
 
 using EdgeEnds = std::array<Index, 2>;
+
+constexpr int kNoTaker = -1;
 
 // Collective: the part's interface edges (by global ends, low first) that a part of a lower rank
 // holds too. Each is measured once, by the lowest rank that holds it; the holders meet where the
@@ -49,18 +53,19 @@ std::vector<EdgeEnds> interface_edges_held_below(const MeshPart<D>& part) {
   return out;
 }
 
-// The elements near the interfaces, copied onto rank 0 from every part, with per vertex its
-// log-metric (until the band's field takes them) and whether it lies on a first-round interface
-// (pending: to reinsert).
+// The elements near some interfaces, copied onto the process that takes them from every part that
+// holds them, with per vertex its log-metric (until the band's field takes them) and whether it lies
+// on a first-round interface (pending: to reinsert), and per element the process it came from.
 template <int D>
 struct Band {
   MeshPart<D> part;
   std::vector<SymMat<D>> log_metrics;
   std::vector<char> pending;
+  std::vector<int> source;
 };
 
-// A process's message to rank 0: the shipment of its `elements`, then its vertices' log-metrics (in
-// `field`, on the part's mesh) and pending flags in the shipment's order.
+// A process's message to a band's taker: the shipment of its `elements`, then its vertices'
+// log-metrics (in `field`, on the part's mesh) and pending flags in the shipment's order.
 template <int D>
 std::vector<std::byte> band_message(const MeshPart<D>& part, std::span<const Index> elements, const MetricField<D>& field,
                                     const std::vector<char>& pending) {
@@ -77,18 +82,22 @@ std::vector<std::byte> band_message(const MeshPart<D>& part, std::span<const Ind
   return std::move(out.bytes);
 }
 
+// The band of the messages that came, by process (an empty message: none from that process).
 template <int D>
 Band<D> band_of_messages(const std::vector<std::vector<std::byte>>& messages) {
   std::vector<Shipment<D>> arrived;
   std::vector<std::vector<SymMat<D>>> logs;
   std::vector<std::vector<char>> flags;
-  for (const std::vector<std::byte>& message : messages) {
-    ByteReader in(message);
+  std::vector<int> source;
+  for (std::size_t from = 0; from < messages.size(); ++from) {
+    if (messages[from].empty()) continue;
+    ByteReader in(messages[from]);
     arrived.push_back(Shipment<D>::read(in.take<std::byte>()));
     logs.push_back(in.take<SymMat<D>>());
     flags.push_back(in.take<char>());
+    source.insert(source.end(), arrived.back().elements.size(), static_cast<int>(from));
   }
-  Band<D> band{part_of_shipments(arrived), {}, {}};
+  Band<D> band{part_of_shipments(arrived), {}, {}, std::move(source)};
   const std::unordered_map<Index, Index> local = local_ids_of(band.part);
   band.log_metrics.resize(band.part.global_ids.size());
   band.pending.assign(band.part.global_ids.size(), 0);
@@ -99,6 +108,47 @@ Band<D> band_of_messages(const std::vector<std::vector<std::byte>>& messages) {
       band.pending[v] = static_cast<char>(band.pending[v] | flags[s].at(i));
     }
   return band;
+}
+
+// A band's border (the faces towards the elements left behind) and its pending vertices.
+struct BandBorder {
+  Index faces = 0;
+  std::vector<Index> vertex_ids;   // on the border, by global id
+  std::vector<Index> pending_ids;  // pending, on the border or not
+  Index pending_inside = 0;        // pending, off the border: reinserted here
+};
+
+template <int D>
+BandBorder border_of(const Band<D>& band) {
+  BandBorder out;
+  const std::vector<char> border = interface_vertex_flags(band.part.mesh);
+  out.faces = interface_facet_count(band.part.mesh);
+  for (std::size_t v = 0; v < border.size(); ++v) {
+    if (border[v]) out.vertex_ids.push_back(band.part.global_ids[v]);
+    if (band.pending[v]) out.pending_ids.push_back(band.part.global_ids[v]);
+    out.pending_inside += band.pending[v] && !border[v];
+  }
+  return out;
+}
+
+// Per process, the nodes of the band's edges that its elements there hold, but the frozen ones (on the
+// band's border): what the band's curving wrote, for the parts.
+template <int D>
+std::vector<std::vector<NodeUpdate<D>>> updates_by_source(const Band<D>& band) {
+  const Mesh<D>& mesh = band.part.mesh;
+  const std::unordered_set<std::uint64_t> frozen = interface_edge_keys(mesh);
+  std::vector<std::pair<int, Index>> sent;  // (process, edge), each once
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (int e = 0; e < Simplex<D>::kEdges; ++e) sent.emplace_back(band.source[static_cast<std::size_t>(k)], mesh.element_edge(k, e));
+  std::sort(sent.begin(), sent.end());
+  sent.erase(std::unique(sent.begin(), sent.end()), sent.end());
+  std::vector<std::vector<NodeUpdate<D>>> out(static_cast<std::size_t>(process_count()));
+  for (const auto& [to, edge] : sent) {
+    const auto& ends = mesh.edge_vertices(edge);
+    if (frozen.contains(Mesh<D>::edge_key(ends[0], ends[1]))) continue;
+    out[static_cast<std::size_t>(to)].push_back({{band.part.global_ids[ends[0]], band.part.global_ids[ends[1]]}, mesh.edge_node(edge)});
+  }
+  return out;
 }
 
 // The volume-edge gains: summed, counted, the largest.
@@ -152,8 +202,8 @@ struct PartsRun {
   const BoundaryGeometry<D>* geometry;
   const CurvingOptions& options;
   CurvingInParts out;
-  std::vector<Index> band_elements;  // the part's elements in the band
-  std::optional<Band<D>> band;       // rank 0's
+  std::vector<int> band_taker;  // per element of the part: the process whose second-round band holds a copy (kNoTaker: none)
+  std::optional<Band<D>> band;  // the second round's band this process took, if any
   std::optional<MetricField<D>> band_field;
 
   // Round 1: every part with its interfaces frozen.
@@ -164,55 +214,102 @@ struct PartsRun {
     PartCurving round;
     for (const PartCurving& each : all_gather_value(own)) add_part(round, each);
     DistributedCurvingRound& figures = out.rounds[0];
-    figures.round = 1;
-    figures.rounds = 2;
     figures.interface_faces = sum_over_processes(interface_facet_count(part.mesh)) / 2;
     figures.cavities = round.counters.cavities;
     figures.seconds = max_over_processes(seconds_since(start));
     return round;
   }
 
-  // Round 2: the band copied onto rank 0, its pending vertices reinserted there, the nodes it wrote
-  // sent to every part.
-  PartCurving curve_band() {
-    const auto start = std::chrono::steady_clock::now();
-    DistributedCurvingRound& figures = out.rounds[1];
-    figures.round = figures.rounds = 2;
+  // Rounds 2 and 3: each interface's band (the elements within kBandRings rings of its vertices)
+  // copied onto one of its two processes, which reinserts the pending vertices there; then the
+  // bands' seams (where three or more parts met, none with two processes) on rank 0.
+  PartCurving curve_bands() {
     const std::vector<char> pending = interface_vertex_flags(part.mesh);
-    const std::vector<char> near = elements_near(part.mesh, pending, kBandRings);
-    for (Index k = 0; k < part.mesh.element_count(); ++k)
-      if (near[k]) band_elements.push_back(k);
-    std::vector<std::vector<std::byte>> outgoing(static_cast<std::size_t>(process_count()));
-    outgoing[0] = band_message(part, band_elements, *field, pending);
-    const long long bytes = process_rank() == 0 ? 0 : static_cast<long long>(outgoing[0].size());
-    const std::vector<std::vector<std::byte>> arrived = exchange_bytes(outgoing);
-    PartCurving round;
-    std::vector<NodeUpdate<D>> updates;
-    if (process_rank() == 0) {
-      band = band_of_messages<D>(arrived);
-      out.rounds[0].interface_vertices = static_cast<Index>(std::count(band->pending.begin(), band->pending.end(), 1));
-      figures.interface_faces = interface_facet_count(band->part.mesh);
-      const std::vector<char> border = interface_vertex_flags(band->part.mesh);
-      for (std::size_t v = 0; v < border.size(); ++v) figures.old_interface_vertices_frozen_again += border[v] && band->pending[v];
-      figures.interface_vertices = static_cast<Index>(std::count(border.begin(), border.end(), 1));
-      band_field = MetricField<D>::from_log_metrics(band->part.mesh, std::move(band->log_metrics));
-      round = curve_part(band->part, *band_field, band->pending, boundary_indices(band->part, boundary.global_ids), geometry, options);
-      for (const EdgeNodeRecord<D>& record : edge_node_records(band->part))
-        if (!record.frozen) updates.push_back({record.ends, record.node});
+    out.rounds[0].interface_vertices = distinct_count(global_ids_where(pending));
+    // (Each band to the lighter of its two processes, as the curved passes' regions.)
+    const RegionCut cut = cut_last_run_region(part, kBandRings, all_gather_value(part.mesh.element_count()));
+    band_taker.assign(cut.destination.size(), kNoTaker);
+    for (std::size_t k = 0; k < band_taker.size(); ++k)
+      if (cut.in_region[k]) band_taker[k] = cut.destination[k];
+    std::vector<char> left = flags_of_global_ids(part, all_gather_values_joined(cut.seams));
+    for (std::size_t v = 0; v < left.size(); ++v)
+      left[v] = static_cast<char>(left[v] && pending[v]);  // on the border of every band holding it
+    const int rounds = distinct_count(global_ids_where(left)) > 0 ? 3 : 2;
+    for (int r = 0; r < rounds; ++r)
+      out.rounds[static_cast<std::size_t>(r)].round = r + 1, out.rounds[static_cast<std::size_t>(r)].rounds = rounds;
+    PartCurving bands = curve_band_round(band_taker, pending, out.rounds[1], true);
+    if (rounds == 3) {
+      std::vector<int> to_root;
+      for (char near : elements_near(part.mesh, left, kBandRings)) to_root.push_back(near ? 0 : kNoTaker);
+      add_round(bands, curve_band_round(to_root, left, out.rounds[2], false));
     }
-    broadcast_values(updates);
-    apply_node_updates<D>(part, updates);
+    return bands;
+  }
+
+  // The global ids of the part's vertices flagged.
+  std::vector<Index> global_ids_where(const std::vector<char>& flags) const {
+    std::vector<Index> ids;
+    for (std::size_t v = 0; v < flags.size(); ++v)
+      if (flags[v]) ids.push_back(part.global_ids[v]);
+    return ids;
+  }
+
+  // Per process, the message of the part's elements that `taker` sends it (none for no element),
+  // and the bytes of those to other processes added to `bytes`.
+  std::vector<std::vector<std::byte>> band_messages(const std::vector<int>& taker, const std::vector<char>& pending,
+                                                    long long& bytes) const {
+    std::vector<std::vector<Index>> elements_to(static_cast<std::size_t>(process_count()));
+    for (Index k = 0; k < part.mesh.element_count(); ++k)
+      if (taker[k] != kNoTaker) elements_to[static_cast<std::size_t>(taker[k])].push_back(k);
+    std::vector<std::vector<std::byte>> outgoing(elements_to.size());
+    for (std::size_t to = 0; to < outgoing.size(); ++to) {
+      if (elements_to[to].empty()) continue;
+      outgoing[to] = band_message(part, elements_to[to], *field, pending);
+      if (static_cast<int>(to) != process_rank()) bytes += static_cast<long long>(outgoing[to].size());
+    }
+    return outgoing;
+  }
+
+  // One round of bands: element k of the part copied onto process taker[k] (none for kNoTaker); each
+  // process that takes a band reinserts its `pending` vertices but those on its border, and sends the
+  // nodes it wrote to the parts whose elements hold their edges. With `keep`, this process's band
+  // stays for the figures' measures.
+  PartCurving curve_band_round(const std::vector<int>& taker, const std::vector<char>& pending, DistributedCurvingRound& figures,
+                               bool keep) {
+    const auto start = std::chrono::steady_clock::now();
+    long long bytes = 0;
+    const std::vector<std::vector<std::byte>> arrived = exchange_bytes(band_messages(taker, pending, bytes));
+    PartCurving own;
+    BandBorder border;
+    std::vector<std::vector<NodeUpdate<D>>> updates(arrived.size());
+    std::optional<Band<D>> taken;
+    std::optional<MetricField<D>> taken_field;
+    if (std::any_of(arrived.begin(), arrived.end(), [](const std::vector<std::byte>& message) { return !message.empty(); })) {
+      taken = band_of_messages<D>(arrived);
+      border = border_of(*taken);
+      taken_field.emplace(MetricField<D>::from_log_metrics(taken->part.mesh, std::move(taken->log_metrics)));
+      own = curve_part(taken->part, *taken_field, taken->pending, boundary_indices(taken->part, boundary.global_ids), geometry, options);
+      updates = updates_by_source(*taken);
+    }
+    for (std::size_t to = 0; to < updates.size(); ++to)
+      if (static_cast<int>(to) != process_rank()) bytes += static_cast<long long>(updates[to].size() * sizeof(NodeUpdate<D>));
+    for (const std::vector<NodeUpdate<D>>& each : exchange_values(updates)) apply_node_updates<D>(part, each);
+    PartCurving round;
+    for (const PartCurving& each : all_gather_value(own)) add_part(round, each);
+    figures.interface_faces = sum_over_processes(border.faces);
+    figures.interface_vertices = distinct_count(border.vertex_ids);
+    // (A pending vertex on one band's border may lie inside another's: reinserted there, once.)
+    figures.old_interface_vertices_frozen_again = distinct_count(border.pending_ids) - sum_over_processes(border.pending_inside);
     figures.cavities = round.counters.cavities;
-    figures.bytes_sent = sum_over_processes(bytes) + static_cast<long long>(updates.size() * sizeof(NodeUpdate<D>)) * (process_count() - 1);
-    std::vector<PartCurving> shared{round};
-    broadcast_values(shared);
+    figures.bytes_sent = sum_over_processes(bytes);
     figures.seconds = max_over_processes(seconds_since(start));
-    return shared.at(0);
+    if (keep) band = std::move(taken), band_field = std::move(taken_field);
+    return round;
   }
 
   // The output's Jacobians and gains: each part measures its own elements and its volume edges
   // (an interface edge once, by the lowest rank holding it); an edge whose samples fall outside its
-  // part is measured by rank 0 in the band when the band holds it, else in the part's field.
+  // part is measured by the process whose band holds it when one does, else in the part's field.
   void measure(const std::vector<EdgeEnds>& held_below) {
     const std::vector<bool> on_boundary_mesh = boundary_vertex_flags(boundary.mesh);
     std::vector<char> on_boundary;
@@ -220,19 +317,23 @@ struct PartsRun {
     const PartMeasures measures = measure_part(part, *field, on_boundary, held_below, options.threads);
     GainTally gains;
     for (double gain : measures.gains) gains.add(gain);
-    std::unordered_set<std::uint64_t> band_edges;
-    for (Index k : band_elements)
+    std::unordered_map<std::uint64_t, int> band_edges;  // the part's edges in a second-round band, with its taker
+    for (Index k = 0; k < part.mesh.element_count(); ++k) {
+      if (band_taker.empty() || band_taker[k] == kNoTaker) continue;
       for (int e = 0; e < Simplex<D>::kEdges; ++e) {
         const auto& ends = part.mesh.edge_vertices(part.mesh.element_edge(k, e));
-        band_edges.insert(global_edge_key({part.global_ids[ends[0]], part.global_ids[ends[1]]}));
+        band_edges.emplace(global_edge_key({part.global_ids[ends[0]], part.global_ids[ends[1]]}), band_taker[k]);
       }
+    }
     std::vector<std::vector<EdgeEnds>> to_band(static_cast<std::size_t>(process_count()));
     Index in_part = 0;
-    for (std::size_t i = 0; i < measures.deferred.size(); ++i)
-      if (band_edges.contains(global_edge_key(measures.deferred[i])))
-        to_band[0].push_back(measures.deferred[i]);
+    for (std::size_t i = 0; i < measures.deferred.size(); ++i) {
+      const auto at = band_edges.find(global_edge_key(measures.deferred[i]));
+      if (at != band_edges.end())
+        to_band[static_cast<std::size_t>(at->second)].push_back(measures.deferred[i]);
       else
         gains.add(measures.deferred_in_part[i]), ++in_part;
+    }
     out.deferred_gains_in_parts = sum_over_processes(in_part);
     const std::vector<EdgeEnds> deferred = exchange_values_joined(to_band);
     if (band && !deferred.empty()) {
@@ -298,7 +399,7 @@ struct PartsRun {
   // field are let go first: the passes hold copies of the part.)
   void adapt_curved_parts(const CurvedPassesSettings& settings) {
     std::vector<SymMat<D>> log_metrics = vertex_log_metrics();
-    band_elements.clear();
+    band_taker.clear();
     band.reset();
     band_field.reset();
     field.reset();
@@ -322,7 +423,7 @@ CurvingInParts curve_in_parts(MeshPart<D>& part, std::vector<SymMat<D>> metrics,
   PartCurving total;
   add_round(total, run.curve_parts());
   run.out.rounds[0].bytes_sent += sum_over_processes(boundary_bytes);
-  add_round(total, run.curve_band());
+  add_round(total, run.curve_bands());
   if (passes.max_passes > 0) run.adapt_curved_parts(passes);
   check_curved_consistency(part.mesh);
   const std::vector<EdgeEnds> held_below = interface_edges_held_below(part);

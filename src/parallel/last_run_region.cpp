@@ -102,6 +102,7 @@ RegionCut cut_last_run_region(const MeshPart<D>& part, int rings, std::span<cons
   cut.seeds_to.resize(static_cast<std::size_t>(process_count()));
   for (Index k = 0; k < part.mesh.element_count(); ++k) {
     cut.destination.push_back(taker[k] == kNoProcess ? process_rank() : taker[k]);
+    cut.in_region.push_back(taker[k] != kNoProcess);
     if (taker[k] == kNoProcess) continue;
     ++cut.region_elements;
     for (Index v : part.mesh.element(k))

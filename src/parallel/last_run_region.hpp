@@ -25,6 +25,7 @@ inline int region_taker(int a, int b, std::span<const Index> loads) {
 
 struct RegionCut {
   std::vector<int> destination;              // per element of the part: the process whose last run takes it
+  std::vector<char> in_region;               // per element of the part: within the rings of an interface (its destination a taker)
   Index region_elements = 0;                 // the part's elements within the rings of its interfaces
   std::vector<std::vector<Index>> seeds_to;  // per process: the global ids of the interface vertices of the elements it takes
   std::vector<Index> seams;                  // the global ids of the vertices of faces between two regions' elements

@@ -209,7 +209,8 @@ def check(hocav, mpirun, work):
             if processes == 3:
                 check_vtu_in_runs(hocav, work, name + ".vtu", name + ".meshb", name)
                 check_vtu_output(hocav, mpirun, work, given, name)
-            assert len(found) == 2, f"{name}: rounds {found}"
+            # (A third round, on rank 0, only where three or more parts met around an interface vertex.)
+            assert len(found) in ((2,) if processes == 2 else (2, 3)), f"{name}: rounds {found}"
             data = check_against_serial(hocav, work, name, serial, serial_report)
             p1, expected = p1_mesh(hocav, work, name), serial_p1
             if scheme == "to-msh":  # (a .msh groups its facets and lines by ref: their order is not the Gamma file's)

@@ -127,6 +127,7 @@ bool check(Mesh<D> mesh) {
   }
   if (cut.region_elements != static_cast<Index>(std::count(near.begin(), near.end(), 1)))
     ok = fail(name + ": " + std::to_string(cut.region_elements) + " region elements counted");
+  if (cut.in_region != near) ok = fail(name + ": the region's elements are not those within the rings");
   const std::unordered_set<Index> seams = gathered(cut.seams);
   std::vector<Index> on_split_faces;
   for (const FaceKey<D>& face : split_faces(part, cut.destination, near))
