@@ -193,7 +193,7 @@ MeshJacobianSummary merged_over_processes(const MeshJacobianSummary& own) {
   return all;
 }
 
-// The run on every process: its part, its vertices' metric field, and rank 0's band with its own.
+// The run on every process: its part, its vertices' metric field, and the second round's band it took, if any.
 template <int D>
 struct PartsRun {
   MeshPart<D>& part;
