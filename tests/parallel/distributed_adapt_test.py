@@ -344,12 +344,12 @@ def p1_entities(hocav, work, name):
 def check_curving_in_parts(hocav, mpirun, work):
     """--order 2 ends in the parts too (docs/distributed.md §Curving in the parts): they curve
     themselves, then the bands near their interfaces (each on one of its processes), and they
-    write the P2 file in runs. On a shell with curved walls and a boundary-layer metric, on 2 and 3 processes: valid, its report's
-    Jacobians those `hocav stats` measures on the file (every element once), its counts the file's;
-    its .vtu, written in runs too, holds its cells; a .msh output of the same run (§A .msh in runs)
-    holds the same P1 mesh with the same report; and the serial `hocav curve` of its P1 mesh (in the
-    metric interpolated at its vertices) reaches the same gain and mean normalized Jacobian within
-    a few per cent."""
+    write the P2 file in runs. On a shell with curved walls and a boundary-layer metric, on 2 and 3
+    processes: valid, its report's Jacobians those `hocav stats` measures on the file (every element
+    once), its counts the file's; its .vtu, written in runs too, holds its cells; a .msh output of
+    the same run (§A .msh in runs) holds the same P1 mesh with the same report; and the serial
+    `hocav curve` of its P1 mesh (in the metric interpolated at its vertices) reaches the same gain
+    and mean normalized Jacobian within a few per cent."""
     run([hocav, "generate", "sphere-shell", "--h", "0.2", "-o", "shell.meshb"], work)
     run([hocav, "metric", "shell.meshb", "--surface", "0.04,0.2", "--gradation", "1.5", "-o", "shell.solb"], work)
     run([hocav, "convert", "shell.meshb", "shell.msh"], work)  # (both runs from rank 0's input: the same parts)
