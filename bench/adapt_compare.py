@@ -212,6 +212,14 @@ def available_tools(args, hocav):
     return tools
 
 
+def hocav_binary(path, script):
+    """The hocav binary, resolved; exits with a message when it is absent (it measures every output)."""
+    hocav = Path(path).resolve()
+    if not hocav.is_file():
+        sys.exit(f"{script}: no hocav binary at {hocav} (it measures every output)")
+    return hocav
+
+
 def parse_arguments():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--hocav", default="build/release/hocav", help="the hocav binary (build/release/hocav)")
@@ -230,9 +238,7 @@ def parse_arguments():
 
 def main():
     args = parse_arguments()
-    hocav = Path(args.hocav).resolve()
-    if not hocav.is_file():
-        sys.exit(f"adapt_compare: no hocav binary at {hocav} (it measures every output)")
+    hocav = hocav_binary(args.hocav, "adapt_compare")
     data = Path(args.data).resolve()
     out = Path(args.out).resolve() if args.out else Path(tempfile.mkdtemp(prefix="adapt-compare-"))
     wanted = set(args.cases.split(",")) if args.cases else None

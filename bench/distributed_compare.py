@@ -24,7 +24,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from adapt_compare import CommandFailed, run, stats
+from adapt_compare import CommandFailed, hocav_binary, run, stats
 
 
 @dataclass
@@ -110,9 +110,7 @@ def parse_arguments():
 
 def main():
     args = parse_arguments()
-    hocav = Path(args.hocav).resolve()
-    if not hocav.is_file():
-        raise SystemExit(f"distributed_compare: no hocav binary at {hocav} (it measures every output)")
+    hocav = hocav_binary(args.hocav, "distributed_compare")
     out = Path(args.out).resolve() if args.out else Path(tempfile.mkdtemp(prefix="distributed-compare-"))
     wanted = set(args.cases.split(",")) if args.cases else None
     counts = [1, *(int(n) for n in args.processes.split(","))]

@@ -123,31 +123,9 @@ BandBorder border_of(const Band<D>& band) {
   BandBorder out;
   const std::vector<char> border = interface_vertex_flags(band.part.mesh);
   out.faces = interface_facet_count(band.part.mesh);
-  for (std::size_t v = 0; v < border.size(); ++v) {
-    if (border[v]) out.vertex_ids.push_back(band.part.global_ids[v]);
-    if (band.pending[v]) out.pending_ids.push_back(band.part.global_ids[v]);
-    out.pending_inside += band.pending[v] && !border[v];
-  }
-  return out;
-}
-
-// Per process, the nodes of the band's edges that its elements there hold, but the frozen ones (on the
-// band's border): what the band's curving wrote, for the parts.
-template <int D>
-std::vector<std::vector<NodeUpdate<D>>> updates_by_source(const Band<D>& band) {
-  const Mesh<D>& mesh = band.part.mesh;
-  const std::unordered_set<std::uint64_t> frozen = interface_edge_keys(mesh);
-  std::vector<std::pair<int, Index>> sent;  // (process, edge), each once
-  for (Index k = 0; k < mesh.element_count(); ++k)
-    for (int e = 0; e < Simplex<D>::kEdges; ++e) sent.emplace_back(band.source[static_cast<std::size_t>(k)], mesh.element_edge(k, e));
-  std::sort(sent.begin(), sent.end());
-  sent.erase(std::unique(sent.begin(), sent.end()), sent.end());
-  std::vector<std::vector<NodeUpdate<D>>> out(static_cast<std::size_t>(process_count()));
-  for (const auto& [to, edge] : sent) {
-    const auto& ends = mesh.edge_vertices(edge);
-    if (frozen.contains(Mesh<D>::edge_key(ends[0], ends[1]))) continue;
-    out[static_cast<std::size_t>(to)].push_back({{band.part.global_ids[ends[0]], band.part.global_ids[ends[1]]}, mesh.edge_node(edge)});
-  }
+  out.vertex_ids = global_ids_of(band.part, border);
+  out.pending_ids = global_ids_of(band.part, band.pending);
+  for (std::size_t v = 0; v < border.size(); ++v) out.pending_inside += band.pending[v] && !border[v];
   return out;
 }
 
@@ -225,7 +203,7 @@ struct PartsRun {
   // bands' seams (where three or more parts met, none with two processes) on rank 0.
   PartCurving curve_bands() {
     const std::vector<char> pending = interface_vertex_flags(part.mesh);
-    out.rounds[0].interface_vertices = distinct_count(global_ids_where(pending));
+    out.rounds[0].interface_vertices = distinct_count(global_ids_of(part, pending));
     // (Each band to the lighter of its two processes, as the curved passes' regions.)
     const RegionCut cut = cut_last_run_region(part, kBandRings, all_gather_value(part.mesh.element_count()));
     band_taker.assign(cut.destination.size(), kNoTaker);
@@ -234,7 +212,7 @@ struct PartsRun {
     std::vector<char> left = flags_of_global_ids(part, all_gather_values_joined(cut.seams));
     for (std::size_t v = 0; v < left.size(); ++v)
       left[v] = static_cast<char>(left[v] && pending[v]);  // on the border of every band holding it
-    const int rounds = distinct_count(global_ids_where(left)) > 0 ? 3 : 2;
+    const int rounds = sum_over_processes(static_cast<Index>(std::count(left.begin(), left.end(), 1))) > 0 ? 3 : 2;
     for (int r = 0; r < rounds; ++r)
       out.rounds[static_cast<std::size_t>(r)].round = r + 1, out.rounds[static_cast<std::size_t>(r)].rounds = rounds;
     PartCurving bands = curve_band_round(band_taker, pending, out.rounds[1], true);
@@ -244,14 +222,6 @@ struct PartsRun {
       add_round(bands, curve_band_round(to_root, left, out.rounds[2], false));
     }
     return bands;
-  }
-
-  // The global ids of the part's vertices flagged.
-  std::vector<Index> global_ids_where(const std::vector<char>& flags) const {
-    std::vector<Index> ids;
-    for (std::size_t v = 0; v < flags.size(); ++v)
-      if (flags[v]) ids.push_back(part.global_ids[v]);
-    return ids;
   }
 
   // Per process, the message of the part's elements that `taker` sends it (none for no element),
@@ -289,7 +259,7 @@ struct PartsRun {
       border = border_of(*taken);
       taken_field.emplace(MetricField<D>::from_log_metrics(taken->part.mesh, std::move(taken->log_metrics)));
       own = curve_part(taken->part, *taken_field, taken->pending, boundary_indices(taken->part, boundary.global_ids), geometry, options);
-      updates = updates_by_source(*taken);
+      updates = node_updates_by_source(taken->part, taken->source, process_count());
     }
     for (std::size_t to = 0; to < updates.size(); ++to)
       if (static_cast<int>(to) != process_rank()) bytes += static_cast<long long>(updates[to].size() * sizeof(NodeUpdate<D>));

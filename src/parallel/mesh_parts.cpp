@@ -200,17 +200,11 @@ std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<D>& mesh) {
 }
 
 template <int D>
-std::vector<EdgeNodeRecord<D>> edge_node_records(const MeshPart<D>& part) {
-  const std::unordered_set<std::uint64_t> frozen = interface_edge_keys(part.mesh);
-  std::vector<EdgeNodeRecord<D>> records;
-  for (Index e = 0; e < part.mesh.edge_count(); ++e) {
-    const auto& ends = part.mesh.edge_vertices(e);
-    if (ends[0] == kNoIndex) continue;  // a removed edge
-    records.push_back({{part.global_ids[ends[0]], part.global_ids[ends[1]]},
-                       part.mesh.edge_node(e),
-                       frozen.contains(Mesh<D>::edge_key(ends[0], ends[1]))});
-  }
-  return records;
+std::vector<Index> global_ids_of(const MeshPart<D>& part, const std::vector<char>& flagged) {
+  std::vector<Index> ids;
+  for (Index v = 0; v < part.mesh.vertex_count(); ++v)
+    if (flagged[v]) ids.push_back(part.global_ids[v]);
+  return ids;
 }
 
 template std::vector<Index> interface_facets(const Mesh<2>&);
@@ -223,8 +217,8 @@ template std::vector<char> flags_of_global_ids(const MeshPart<2>&, const std::ve
 template std::vector<char> flags_of_global_ids(const MeshPart<3>&, const std::vector<Index>&);
 template std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<2>&);
 template std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<3>&);
-template std::vector<EdgeNodeRecord<2>> edge_node_records(const MeshPart<2>&);
-template std::vector<EdgeNodeRecord<3>> edge_node_records(const MeshPart<3>&);
+template std::vector<Index> global_ids_of(const MeshPart<2>&, const std::vector<char>&);
+template std::vector<Index> global_ids_of(const MeshPart<3>&, const std::vector<char>&);
 template void split_mesh_part_by_part(const Mesh<2>&, std::span<const int>, std::span<const int>,
                                       const std::function<void(int, MeshPart<2>)>&);
 template void split_mesh_part_by_part(const Mesh<3>&, std::span<const int>, std::span<const int>,

@@ -78,19 +78,9 @@ std::unordered_set<std::uint64_t> interface_edge_keys(const Mesh<D>& mesh);
 template <int D>
 MeshPart<D> whole_mesh_part(Mesh<D> mesh);
 
-// A curved part's edge node by the edge's ends in the mesh the part came from, and whether the edge
-// lies on one of the part's interface facets (frozen on both sides: its node comes back unchanged).
+// The global ids of the part's vertices `flagged` (per vertex), in vertex order.
 template <int D>
-struct EdgeNodeRecord {
-  std::array<Index, 2> ends;
-  Vec<D> node;
-  std::int32_t frozen;
-};
-
-// The edge nodes of a P2 part (with its edge table), by global ends: what a part's curving sends
-// back, a curving changing no element (each ball is re-starred from its own vertex), only nodes.
-template <int D>
-std::vector<EdgeNodeRecord<D>> edge_node_records(const MeshPart<D>& part);
+std::vector<Index> global_ids_of(const MeshPart<D>& part, const std::vector<char>& flagged);
 
 // A part's interface facets: each face between two parts counts once in each.
 template <int D>

@@ -38,6 +38,24 @@ void apply_node_updates(MeshPart<D>& part, std::span<const NodeUpdate<D>> update
 }
 
 template <int D>
+std::vector<std::vector<NodeUpdate<D>>> node_updates_by_source(const MeshPart<D>& part, std::span<const int> source, int processes) {
+  const Mesh<D>& mesh = part.mesh;
+  const std::unordered_set<std::uint64_t> frozen = interface_edge_keys(mesh);
+  std::vector<std::pair<int, Index>> held;  // (process, edge), each once
+  for (Index k = 0; k < mesh.element_count(); ++k)
+    for (int e = 0; e < Simplex<D>::kEdges; ++e) held.emplace_back(source[static_cast<std::size_t>(k)], mesh.element_edge(k, e));
+  std::sort(held.begin(), held.end());
+  held.erase(std::unique(held.begin(), held.end()), held.end());
+  std::vector<std::vector<NodeUpdate<D>>> out(static_cast<std::size_t>(processes));
+  for (const auto& [to, edge] : held) {
+    const auto& ends = mesh.edge_vertices(edge);
+    if (frozen.contains(Mesh<D>::edge_key(ends[0], ends[1]))) continue;
+    out[static_cast<std::size_t>(to)].push_back({{part.global_ids[ends[0]], part.global_ids[ends[1]]}, mesh.edge_node(edge)});
+  }
+  return out;
+}
+
+template <int D>
 PartMeasures measure_part(const MeshPart<D>& part, const MetricField<D>& field, const std::vector<char>& on_boundary,
                           std::span<const std::array<Index, 2>> measured_elsewhere, int threads) {
   const Mesh<D>& mesh = part.mesh;
@@ -68,10 +86,11 @@ PartMeasures measure_part(const MeshPart<D>& part, const MetricField<D>& field, 
   return measures;
 }
 
-#define HOCAV_INSTANTIATE(D)                                                                              \
-  template std::vector<std::array<Index, 2>> interface_edges_by_global_ends(const MeshPart<D>&);          \
-  template void apply_node_updates(MeshPart<D>&, std::span<const NodeUpdate<D>>);                         \
-  template PartMeasures measure_part(const MeshPart<D>&, const MetricField<D>&, const std::vector<char>&, \
+#define HOCAV_INSTANTIATE(D)                                                                                              \
+  template std::vector<std::array<Index, 2>> interface_edges_by_global_ends(const MeshPart<D>&);                          \
+  template void apply_node_updates(MeshPart<D>&, std::span<const NodeUpdate<D>>);                                         \
+  template std::vector<std::vector<NodeUpdate<D>>> node_updates_by_source(const MeshPart<D>&, std::span<const int>, int); \
+  template PartMeasures measure_part(const MeshPart<D>&, const MetricField<D>&, const std::vector<char>&,                 \
                                      std::span<const std::array<Index, 2>>, int);
 HOCAV_INSTANTIATE(2)
 HOCAV_INSTANTIATE(3)

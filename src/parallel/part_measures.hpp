@@ -30,6 +30,13 @@ inline std::uint64_t global_edge_key(const std::array<Index, 2>& ends) { return 
 template <int D>
 std::vector<std::array<Index, 2>> interface_edges_by_global_ends(const MeshPart<D>& part);
 
+// Per process p (of `processes`), the nodes of the part's edges that its elements from p hold
+// (`source`, per element: the process it came from), each once, but those of edges on the part's
+// interface facets, frozen: what a band's curving wrote, for the parts it came from. An edge off the
+// interface facets has all its elements in the part, so the updates touch only elements it curved.
+template <int D>
+std::vector<std::vector<NodeUpdate<D>>> node_updates_by_source(const MeshPart<D>& part, std::span<const int> source, int processes);
+
 // Writes each update's node into the part's edge with those global ends; an update whose edge the
 // part lacks is passed over.
 template <int D>

@@ -15,15 +15,6 @@
 namespace hocav {
 namespace {
 
-// The global ids of the flagged vertices.
-template <int D>
-std::vector<Index> global_ids_of(const MeshPart<D>& part, const std::vector<char>& flagged) {
-  std::vector<Index> ids;
-  for (Index v = 0; v < part.mesh.vertex_count(); ++v)
-    if (flagged[v]) ids.push_back(part.global_ids[v]);
-  return ids;
-}
-
 // Every process's `bytes` to rank 0 (empty elsewhere).
 std::vector<std::vector<std::byte>> gathered_on_root(std::vector<std::byte> bytes) {
   std::vector<std::vector<std::byte>> outgoing(static_cast<std::size_t>(process_count()));

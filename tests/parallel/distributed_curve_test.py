@@ -182,6 +182,7 @@ def check(hocav, mpirun, work):
     run([hocav, "generate", "cubed-shell-bl-inner", "--target-tets", "6000", "-o", "shell.meshb"], work)
     run([hocav, "generate", "cubed-shell", "--target-tets", "6000", "-o", "cubed.meshb"], work)
     run([hocav, "generate", "polar-annulus-bl-inner", "--target-triangles", "3000", "-o", "annulus.meshb"], work)
+    seams_rounds = 0  # runs with a third round, the bands' seams on rank 0
     for case in ("shell", "cubed", "annulus"):
         run([hocav, "metric", case + ".meshb", "--implied", "-o", case + ".solb"], work)
         curve = ["curve", case + ".meshb", "--metric", case + ".solb", "--threads", "1", "-q"]
@@ -211,6 +212,7 @@ def check(hocav, mpirun, work):
                 check_vtu_output(hocav, mpirun, work, given, name)
             # (A third round, on rank 0, only where three or more parts met around an interface vertex.)
             assert len(found) in ((2,) if processes == 2 else (2, 3)), f"{name}: rounds {found}"
+            seams_rounds += len(found) == 3
             data = check_against_serial(hocav, work, name, serial, serial_report)
             p1, expected = p1_mesh(hocav, work, name), serial_p1
             if scheme == "to-msh":  # (a .msh groups its facets and lines by ref: their order is not the Gamma file's)
@@ -226,6 +228,7 @@ def check(hocav, mpirun, work):
             assert sum(cavities) == data["cavities"]["tried"]
             assert sum(cavities) == serial_cavities, f"{name}: {cavities} cavities, serial {serial_cavities}"
             assert straight <= serial_straight, f"{name}: {straight} straight boundary edges, serial {serial_straight}"
+    assert seams_rounds > 0, "no 3-process curving met its bands' seams: the third round went untested"
 
     check_refusals(hocav, mpirun, work)
 

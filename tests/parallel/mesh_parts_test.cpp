@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <set>
+#include <unordered_set>
 
 #include "../mesh/pinched_mesh.hpp"
 #include "adapt/vertex_classes.hpp"
@@ -236,10 +237,11 @@ TEST(MeshParts, AShipmentCarriesEachEdgeNodeOnce) {
 }
 
 // Parts of the middle slab and of the last, the first slab in no part; each part moves the nodes of
-// its edges off the interfaces: their records, by global ends, have the moved nodes, and those of
-// the interface edges are the frozen ones; written into the whole mesh as updates, the mesh takes
-// exactly those moves and keeps every other node and its elements.
-TEST(MeshParts, CurvedNodesAreRecordedByGlobalIds) {
+// its edges off the interfaces, and its elements are said to come from two processes in turn. Each
+// process's updates are exactly the moved edges its elements hold (none on an interface facet), with
+// the moved nodes; written into the whole mesh, they make exactly those moves and keep every other
+// node and its elements.
+TEST(MeshParts, CurvedNodesGoBackToTheProcessesThatHoldTheirEdges) {
   SlicedCube cube(3);
   Mesh<3> mesh = curved_cube(cube);
   std::vector<int> part_of = cube.part_of;
@@ -249,25 +251,34 @@ TEST(MeshParts, CurvedNodesAreRecordedByGlobalIds) {
   Index moved = 0;
   std::vector<NodeUpdate<3>> updates;
   for (MeshPart<3>& part : parts) {
-    std::set<std::pair<Index, Index>> interface;
-    for (Index f = 0; f < part.mesh.facet_count(); ++f)
-      if (part.mesh.facet_ref(f) == kInterfaceRef) {
-        const auto& facet = part.mesh.facet(f);
-        for (int i = 0; i < 3; ++i) interface.insert(std::minmax(part.global_ids[facet[i]], part.global_ids[facet[(i + 1) % 3]]));
-      }
+    part.mesh.build_topology();
+    const std::unordered_set<std::uint64_t> interface = interface_edge_keys(part.mesh);
     for (Index e = 0; e < part.mesh.edge_count(); ++e) {
       const auto [a, b] = part.mesh.edge_vertices(e);
-      if (interface.contains(std::minmax(part.global_ids[a], part.global_ids[b]))) continue;
+      if (interface.contains(Mesh<3>::edge_key(a, b))) continue;
       part.mesh.edge_node(e)[0] += 1e-3;
       expected.edge_node(expected.find_edge(part.global_ids[a], part.global_ids[b]))[0] += 1e-3;
       ++moved;
     }
-    for (const EdgeNodeRecord<3>& record : edge_node_records(part)) {
-      EXPECT_EQ(record.frozen != 0, interface.contains(std::minmax(record.ends[0], record.ends[1])));
-      const Index e = expected.find_edge(record.ends[0], record.ends[1]);
-      ASSERT_NE(e, kNoIndex);
-      EXPECT_EQ(record.node, expected.edge_node(e));
-      if (!record.frozen) updates.push_back({record.ends, record.node});
+    std::vector<int> source;
+    std::vector<std::set<std::pair<Index, Index>>> held(2);  // per process, the moved edges its elements hold
+    for (Index k = 0; k < part.mesh.element_count(); ++k) {
+      source.push_back(static_cast<int>(k % 2));
+      for (int e = 0; e < 6; ++e) {
+        const auto [a, b] = part.mesh.edge_vertices(part.mesh.element_edge(k, e));
+        if (!interface.contains(Mesh<3>::edge_key(a, b))) held[k % 2].insert(std::minmax(part.global_ids[a], part.global_ids[b]));
+      }
+    }
+    const auto by_source = node_updates_by_source(part, source, 2);
+    ASSERT_EQ(by_source.size(), 2u);
+    for (int p = 0; p < 2; ++p) {
+      std::set<std::pair<Index, Index>> sent;
+      for (const NodeUpdate<3>& update : by_source[p]) {
+        EXPECT_TRUE(sent.insert(std::minmax(update.ends[0], update.ends[1])).second) << "an edge sent twice to " << p;
+        EXPECT_EQ(update.node, expected.edge_node(expected.find_edge(update.ends[0], update.ends[1])));
+        updates.push_back(update);
+      }
+      EXPECT_EQ(sent, held[p]) << "process " << p;
     }
   }
   ASSERT_GT(moved, 0);
